@@ -1,0 +1,32 @@
+// Entry point of `isoparm`: dispatches to the workstation, `render` or `geom`.
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "app/commands.hpp"
+
+int main(int argc, char** argv) {
+    CLI::App app{"isoparm: an interactive workstation for learning and designing NURBS surfaces"};
+    app.set_version_flag("--version", "isoparm 0.1.0");
+    const isoparm::app::Action geom = isoparm::app::register_geom_command(app);
+#ifdef ISOPARM_HAVE_GUI
+    const isoparm::app::Action render = isoparm::app::register_render_command(app);
+    const isoparm::app::Action gui = isoparm::app::register_gui_command(app);
+#endif
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    }
+    for (CLI::App* sub : app.get_subcommands()) {
+        if (sub->get_name() == "geom") return geom();
+#ifdef ISOPARM_HAVE_GUI
+        if (sub->get_name() == "render") return render();
+#endif
+    }
+#ifdef ISOPARM_HAVE_GUI
+    return gui();
+#else
+    std::cerr << "isoparm: built without the workstation (ISOPARM_GUI=OFF); try 'isoparm geom'\n";
+    return 2;
+#endif
+}

@@ -1,0 +1,60 @@
+// The command layer: every edit of the document, with undo and redo.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/doc/document.hpp"
+#include "core/geom/status.hpp"
+
+namespace isoparm::doc {
+
+class Command {
+public:
+    virtual ~Command() = default;
+    // Validates first and refuses without touching anything.
+    virtual geom::Status apply(Document& doc) = 0;
+    // Restores exactly the state before apply (bit-identical geometry).
+    virtual void revert(Document& doc) = 0;
+    virtual std::string label() const = 0;
+    // Absorb `next` (already applied) into this command, so a drag is one undo step.
+    virtual bool merge_with(const Command& /*next*/) { return false; }
+    // Approximate heap bytes held, for the history's memory bound.
+    virtual std::size_t memory_bytes() const { return sizeof(*this); }
+};
+
+class History {
+public:
+    explicit History(std::size_t memory_limit_bytes = 256u << 20) : limit_(memory_limit_bytes) {}
+
+    // Applies cmd; on success it joins the undo stack (merging with the top command unless
+    // sealed) and clears redo. On failure nothing changes and the error is returned.
+    geom::Status execute(Document& doc, std::unique_ptr<Command> cmd);
+    // The next command will not merge with the current top (end of a drag gesture).
+    void seal() { sealed_ = true; }
+
+    bool can_undo() const { return !undo_.empty(); }
+    bool can_redo() const { return !redo_.empty(); }
+    std::string undo_label() const;
+    std::string redo_label() const;
+    bool undo(Document& doc);
+    bool redo(Document& doc);
+
+    void mark_clean();
+    bool is_clean() const;
+    void clear();
+    std::size_t size() const { return undo_.size(); }
+
+private:
+    void enforce_limit();
+    std::vector<std::unique_ptr<Command>> undo_, redo_;
+    std::size_t limit_;
+    bool sealed_ = true;
+    // Position of the clean state in "commands applied" terms; -1 when unreachable.
+    long clean_index_ = 0;
+    long dropped_ = 0; // commands dropped from the bottom by the memory bound
+};
+
+} // namespace isoparm::doc

@@ -1,0 +1,53 @@
+// The concrete commands. Each validates in apply() and refuses without touching anything.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <optional>
+#include <utility>
+
+#include "core/doc/command.hpp"
+
+namespace isoparm::doc {
+
+std::unique_ptr<Command> add_object(Object object); // id assigned on apply if 0
+std::unique_ptr<Command> remove_object(std::uint64_t id);
+std::unique_ptr<Command> rename_object(std::uint64_t id, std::string name);
+// Replace an object's shape wholesale (type changes, constructions); label names the edit.
+std::unique_ptr<Command> replace_shape(std::uint64_t id, Shape shape, std::string label);
+
+// Drags: consecutive edits of the same point / weight / knot merge into one undo step.
+std::unique_ptr<Command> move_control_point(std::uint64_t id, int i, int j, glm::dvec3 position);
+std::unique_ptr<Command> set_weight(std::uint64_t id, int i, int j, double weight);
+// Knot k of direction dir (curves: Dir::u) moves to value; it must stay within its
+// neighbours and keep the knot vector valid (error `knots`).
+std::unique_ptr<Command> set_knot(std::uint64_t id, geom::Dir dir, int k, double value);
+// Affine map of every control point (the paper's translate / rotate sliders). The matrix
+// must be finite and affine (bottom row 0 0 0 1; error `schema`, path "/matrix"). Consecutive
+// transforms of the same object merge; redo restores exactly the points the drag produced.
+std::unique_ptr<Command> transform_object(std::uint64_t id, const glm::dmat4& m);
+// The same with the label the history shows ("Rotate hill", "Translate hill").
+std::unique_ptr<Command> transform_object(std::uint64_t id, const glm::dmat4& m,
+                                          std::string label);
+
+// Refinement: shape unchanged; the selection is remapped to the same control point where
+// it still exists (insertion at span k: indices up to k - p stay, indices from k - s on
+// shift by `times`; elevation and the points insertion replaces: the control point whose
+// Greville abscissa is nearest). Curves take Dir::u (Dir::v is a `schema` error at
+// "/direction"). Errors of the geometry pass through with their paths ("/knot", "/times").
+// `times` < 1 is `schema` at "/times"; a result above the size caps is `limit` at "/times".
+std::unique_ptr<Command> insert_knot(std::uint64_t id, geom::Dir dir, double t, int times = 1);
+std::unique_ptr<Command> elevate_degree(std::uint64_t id, geom::Dir dir, int times = 1);
+// Replaces the object with its two pieces (names "<name>.1", "<name>.2", fresh ids): the
+// first piece ([a, t]) takes the original's place in Document::objects and the second
+// ([t, b]) follows it immediately, so after a successful apply
+// objects[index] is ".1" and objects[index + 1] is ".2". split_piece_ids gives the ids too.
+// The selection follows its control point into the piece that holds it.
+std::unique_ptr<Command> split_object(std::uint64_t id, geom::Dir dir, double t);
+// The ids of the two pieces made by a split_object command after it applied ({0, 0} before,
+// or for any other command). Redo gives the pieces the same ids again.
+std::pair<std::uint64_t, std::uint64_t> split_piece_ids(const Command& split_command);
+
+std::unique_ptr<Command> set_colors(Colors colors);
+
+} // namespace isoparm::doc

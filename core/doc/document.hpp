@@ -1,0 +1,124 @@
+// The document: the scene every panel and `isoparm geom` edit through commands.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <glm/vec2.hpp>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "core/geom/types.hpp"
+
+namespace isoparm::doc {
+
+// Which plane a designed curve lives in (the curve designer edits it there).
+enum class CurvePlane { xy, xz, yz, free3d };
+
+struct CurveObject {
+    geom::Curve curve;
+    CurvePlane plane = CurvePlane::xy;
+};
+
+struct SurfaceObject {
+    geom::Surface surface;
+};
+
+// An implicit surface f(x, y, z) = 0 (issue 7 fills in its editing).
+struct ImplicitObject {
+    std::string expression;
+    std::vector<std::string> parameter_names;
+    std::vector<double> parameter_values;
+    glm::dvec3 lo{-1, -1, -1}, hi{1, 1, 1};
+    double cell = 0.05;
+};
+
+using Shape = std::variant<SurfaceObject, CurveObject, ImplicitObject>;
+
+struct Object {
+    std::uint64_t id = 0; // stable across undo/redo; assigned by the document
+    std::string name;
+    Shape shape;
+    bool visible = true;
+};
+
+struct Rgba {
+    float r = 0, g = 0, b = 0, a = 1;
+    bool operator==(const Rgba&) const = default;
+};
+
+// Saved with the scene, edited through commands (undoable).
+struct Colors {
+    Rgba background{0.13f, 0.14f, 0.17f, 1};
+    Rgba surface{0.30f, 0.55f, 0.85f, 1};
+    Rgba selected_surface{0.95f, 0.65f, 0.25f, 1};
+    Rgba control_net{0.75f, 0.75f, 0.75f, 1};
+    Rgba control_points{0.95f, 0.95f, 0.35f, 1};
+    Rgba selected_point{1.0f, 0.25f, 0.25f, 1};
+    Rgba knot_curves{0.20f, 0.85f, 0.45f, 1};
+    Rgba indicator{1.0f, 0.2f, 0.2f, 1};
+    bool operator==(const Colors&) const = default;
+};
+
+enum class DisplayStyle { shaded, wireframe, both };
+
+// View state: saved with the scene, but not part of undo.
+struct DisplaySettings {
+    DisplayStyle style = DisplayStyle::both;
+    bool control_points = true;
+    bool control_net = true;
+    bool point_ids = false;
+    bool knot_curves = false;
+    bool indicator_point = true;
+    bool deboor = false;
+    int density = 32; // tessellation samples per knot span direction (default density)
+    bool operator==(const DisplaySettings&) const = default;
+};
+
+struct Selection {
+    std::uint64_t object = 0; // object id; 0 = none
+    int i = -1, j = -1;       // control point (surface: P_ij; curve: P_i with j = -1)
+    bool has_point() const { return i >= 0; }
+    bool operator==(const Selection&) const = default;
+};
+
+struct Document {
+    std::vector<Object> objects;
+    Colors colors;
+    // View state (not undoable):
+    Selection selection;
+    glm::dvec2 indicator{0.5, 0.5}; // (u, v) normalized to [0,1]^2 over the current domain
+    DisplaySettings display;
+    std::uint64_t next_id = 1;
+
+    Object* find(std::uint64_t id);
+    const Object* find(std::uint64_t id) const;
+    int index_of(std::uint64_t id) const; // -1 if absent
+    const Object* selected() const { return find(selection.object); }
+    std::uint64_t allocate_id() { return next_id++; }
+};
+
+// Geometry that is bit-identical (undo tests compare with this): every object (id, name,
+// visibility, shape with all its numbers compared bit for bit) in the same order, and colours.
+bool same_geometry(const Document& a, const Document& b);
+// One object, bit for bit (as same_geometry compares them).
+bool same_object(const Object& a, const Object& b);
+// same_geometry plus the view state (selection, indicator, display settings), bit for bit.
+bool same_document(const Document& a, const Document& b);
+
+// The welcoming default scene: a shaped 5x5 bicubic NURBS surface.
+Document default_document();
+
+// A planar grid in the xy-plane the user then shapes (Surface > New): rows x cols control
+// points (rows along u, cols along v) evenly spaced on [-1, 1]^2, z = 0, unit weights, clamped
+// uniform knots of the given degrees on [0, 1]. Precondition: the arguments pass
+// make_planar_grid_checked (asserted).
+geom::Surface make_planar_grid(int rows, int cols, int degree_u, int degree_v,
+                               geom::SplineType type);
+// The same for user input: `degree` errors ("/degree_u", "/degree_v": degree < 1; "/rows",
+// "/cols": fewer points than degree + 1, or a Bezier type whose count is not degree + 1) and
+// `limit` errors ("/rows", "/cols": more than 4096 per direction or 1,000,000 in all).
+geom::Expected<geom::Surface> make_planar_grid_checked(int rows, int cols, int degree_u,
+                                                       int degree_v, geom::SplineType type);
+
+} // namespace isoparm::doc

@@ -1,0 +1,61 @@
+// De Boor's algorithm keeping every intermediate point (Piegl & Tiller eq. 5.10-5.12).
+#include "core/geom/deboor.hpp"
+
+#include "core/geom/knots.hpp"
+
+namespace isoparm::geom {
+
+std::optional<glm::dvec3> DeBoorTriangle::cartesian(const HPoint& h) {
+    if (h.w == 0.0) return std::nullopt;
+    return glm::dvec3(h) / h.w;
+}
+
+DeBoorTriangle deboor_homogeneous(const Knots& U, int p, const std::vector<HPoint>& Pw,
+                                  double t) {
+    const int n = static_cast<int>(Pw.size());
+    DeBoorTriangle tri;
+    tri.span = find_span(U, p, n, t);
+    tri.first_index = tri.span - p;
+    tri.levels.resize(p + 1);
+    tri.levels[0].assign(Pw.begin() + tri.first_index, Pw.begin() + tri.span + 1);
+    // Level k, entry r stands for P_i^k with i = s - p + k + r:
+    // P_i^k = (1 - a) P_{i-1}^{k-1} + a P_i^{k-1},  a = (t - U_i) / (U_{i+p+1-k} - U_i).
+    // On the span s the denominators are positive (U_{i+p+1-k} >= U_{s+1} > U_s >= U_i), so
+    // this is right at knots of any multiplicity.
+    for (int k = 1; k <= p; ++k) {
+        const auto& prev = tri.levels[k - 1];
+        auto& cur = tri.levels[k];
+        cur.resize(p + 1 - k);
+        for (int r = 0; r <= p - k; ++r) {
+            const int i = tri.span - p + k + r;
+            const double a = (t - U[i]) / (U[i + p + 1 - k] - U[i]);
+            cur[r] = (1.0 - a) * prev[r] + a * prev[r + 1];
+        }
+    }
+    return tri;
+}
+
+DeBoorTriangle deboor_curve(const Curve& c, double t) {
+    std::vector<HPoint> Pw(c.count());
+    for (int i = 0; i < c.count(); ++i) Pw[i] = c.hpoint(i);
+    return deboor_homogeneous(c.knots, c.degree, Pw, t);
+}
+
+DeBoorSurfaceTrace deboor_surface(const Surface& s, double u, double v) {
+    DeBoorSurfaceTrace trace;
+    trace.u_stage.reserve(s.n_v);
+    std::vector<HPoint> column(s.n_u), results(s.n_v);
+    for (int j = 0; j < s.n_v; ++j) {
+        for (int i = 0; i < s.n_u; ++i) column[i] = s.hpoint(i, j);
+        trace.u_stage.push_back(deboor_homogeneous(s.knots_u, s.degree_u, column, u));
+        results[j] = trace.u_stage.back().levels.back().front();
+    }
+    trace.v_stage = deboor_homogeneous(s.knots_v, s.degree_v, results, v);
+    return trace;
+}
+
+std::optional<glm::dvec3> DeBoorSurfaceTrace::point() const {
+    return DeBoorTriangle::cartesian(v_stage.levels.back().front());
+}
+
+} // namespace isoparm::geom

@@ -1,0 +1,58 @@
+// The implicit-surface expression language: parse once, compile to a flat instruction list,
+// evaluate f and its analytic gradient (forward-mode dual numbers) fast.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/geom/status.hpp"
+
+namespace isoparm::geom::implicit {
+
+// Numbers, x y z, + - * / ^ (right-associative, binds tighter than unary minus), parentheses,
+// sin cos tan exp log sqrt abs, and named parameters (e.g. a, b, c) whose values are given
+// at evaluation time. Errors are `parse` with a message that names the column (1-based),
+// e.g. "unexpected ')' at column 14". The grammar is in docs/implicit.md.
+class Program {
+public:
+    // f(x, y, z) with the given parameter values (same order as the names given to compile).
+    double value(const glm::dvec3& p, const double* params = nullptr) const;
+    // f and grad f together.
+    double value_and_gradient(const glm::dvec3& p, glm::dvec3& gradient,
+                              const double* params = nullptr) const;
+    const std::vector<std::string>& parameter_names() const { return parameter_names_; }
+
+    // Batch form for grid sampling: out[i] = f(xs[i], y, z) for i < n, bit-identical to value().
+    // scratch is resized on first use and can be reused across calls (no allocation once warm).
+    void values_along_x(const double* xs, std::size_t n, double y, double z, double* out,
+                        const double* params, std::vector<double>& scratch) const;
+
+    // Number of instructions after constant folding (for tests and diagnostics).
+    std::size_t instruction_count() const { return code_.size(); }
+
+    // One stack-machine instruction: an opcode and its immediate (a constant, an integer
+    // exponent or a parameter index). Internal; public only so helpers in the .cpp can see it.
+    struct Instruction {
+        std::uint8_t op = 0;
+        std::int32_t n = 0;
+        double c = 0.0;
+    };
+
+private:
+    friend Expected<Program> compile(std::string_view, const std::vector<std::string>&);
+    std::vector<Instruction> code_; // postfix code
+    std::vector<std::string> parameter_names_;
+    int max_stack_ = 0;
+};
+
+// Names not in parameter_names and not x, y, z are errors. Column-precise `parse` errors
+// (path ""; the protocol reports them under "/implicit"). Bad parameter names (not an
+// identifier, x/y/z, a function name, or a duplicate) are `schema` at "/parameters/<i>".
+Expected<Program> compile(std::string_view text,
+                          const std::vector<std::string>& parameter_names = {});
+
+} // namespace isoparm::geom::implicit

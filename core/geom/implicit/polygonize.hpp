@@ -1,0 +1,41 @@
+// Polygonization of f(x, y, z) = 0 inside a box (in the spirit of Bloomenthal's polygonizer).
+#pragma once
+
+#include <functional>
+#include <glm/vec3.hpp>
+#include <vector>
+
+#include "core/geom/implicit/expression.hpp"
+#include "core/geom/tessellate.hpp"
+
+namespace isoparm::geom::implicit {
+
+struct PolygonizeOptions {
+    glm::dvec3 lo{-1, -1, -1}, hi{1, 1, 1};
+    double cell = 0.1; // edge length; the grid has ceil(extent / cell) cells per axis,
+                       // shrunk to fit the bounds exactly (protocol convention 18)
+    std::vector<double> parameters; // values of the program's named parameters
+    // Progress in [0, 1], called from the calling thread; return false to cancel (the result
+    // is then a `limit` error without a path: "polygonization was cancelled").
+    std::function<bool(double)> progress;
+    // Worker threads; 0 = std::thread::hardware_concurrency(). The mesh does not depend on it.
+    int threads = 0;
+};
+
+// A consistently oriented mesh with shared vertices, unit normals grad f / |grad f|, triangles
+// counter-clockwise seen from the side the normals point to (towards f > 0). `exists` is all 1.
+// Errors (paths relative to the request):
+//   `schema` "/cell"       cell not finite or <= 0
+//   `schema` "/bounds"     a bound not finite, or min >= max on some axis
+//   `schema` "/parameters" wrong count of parameter values; "/parameters/<i>" a non-finite value
+//   `limit`  "/cell"       the grid has more than max_evaluation_points points (checked before
+//                          anything is allocated)
+//   `limit`  (no path)     cancelled through `progress`
+// An empty mesh (surface not found in the bounds) is not an error here; the caller reports it.
+Expected<Mesh> polygonize(const Program& f, const PolygonizeOptions& options);
+
+// Removes triangles that repeat a vertex (zero area by construction) and then the vertices no
+// triangle uses, keeping the order of everything else. Returns the number of triangles removed.
+std::size_t drop_degenerate_triangles(Mesh& mesh);
+
+} // namespace isoparm::geom::implicit
