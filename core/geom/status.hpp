@@ -71,6 +71,13 @@ private:
 struct Ok {};
 using Status = Expected<Ok>;
 
+// The JSON Pointer step "/k" for an array index.
+inline std::string pointer_step(long k) {
+    std::string s("/");
+    s.append(std::to_string(k));
+    return s;
+}
+
 // Shortest round-trip text of a double, for messages ("0.4", "1e-09").
 std::string format_number(double x);
 

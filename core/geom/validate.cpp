@@ -10,7 +10,7 @@ namespace isoparm::geom {
 
 namespace {
 
-std::string idx(long i) { return "/" + std::to_string(i); }
+std::string idx(long i) { return pointer_step(i); }
 
 Status check_degree(int p, int n, const std::string& path, const char* dir_name) {
     if (p < 1) return make_error(ErrorCode::degree, "the degree must be at least 1", path);

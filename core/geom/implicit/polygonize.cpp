@@ -1,0 +1,697 @@
+// Marching tetrahedra over a full grid (Bloomenthal's polygonizer, Graphics Gems IV, with the
+// cube split into six tetrahedra), with edge-refined vertices and analytic normals.
+#include "core/geom/implicit/polygonize.hpp"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cassert>
+#include <cmath>
+#include <cstdint>
+#include <exception>
+#include <limits>
+#include <mutex>
+#include <new>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "core/geom/validate.hpp"
+
+namespace isoparm::geom::implicit {
+namespace {
+
+using Index = std::uint32_t;
+
+// Triangles inside a chunk name vertices of three groups; the top two bits say which, and the
+// merge turns them into global indices.
+constexpr Index tag_local = 0u << 30;
+constexpr Index tag_bottom = 1u << 30; // the chunk's bottom boundary plane
+constexpr Index tag_top = 2u << 30;    // the chunk's top boundary plane
+constexpr Index tag_mask = 3u << 30;
+
+// The sign convention: NaN counts as positive ("outside"), zero counts as positive, so every
+// grid point is on exactly one side and a zero lies on the surface only through its edges.
+inline bool positive(double v) { return !(v < 0.0); }
+
+// ---------------------------------------------------------------------------------------------
+// The case table. Cube corner c sits at offset (c & 1, c >> 1 & 1, c >> 2 & 1). The Kuhn
+// (Freudenthal) triangulation splits the cube into six tetrahedra 0 -> e_a -> e_a + e_b -> 7,
+// one per axis order (a, b, c); all share the main diagonal 0-7, and each cube face is split by
+// the diagonal from its lowest to its highest corner, so neighbouring cubes agree on every face
+// and the surface has no cracks and no ambiguous faces (a tetrahedron has none).
+// Every tetrahedron edge joins corners c1 < c2 with c1's bits a subset of c2's: the edge is the
+// grid edge from the point at c1 in direction d = c1 ^ c2 (1..7), coded c1 * 8 + d.
+
+struct Polygon {
+    std::uint8_t n = 0;  // 3 or 4
+    std::uint8_t e[4]{}; // edge codes, counter-clockwise seen from f > 0
+};
+
+struct CubeCase {
+    std::uint8_t count = 0;
+    Polygon polygons[6];
+};
+
+glm::dvec3 corner_position(int c) { return {c & 1, (c >> 1) & 1, (c >> 2) & 1}; }
+
+std::uint8_t edge_code(int a, int b) {
+    if (a > b) std::swap(a, b);
+    assert((a & b) == a);
+    return static_cast<std::uint8_t>(a * 8 + (a ^ b));
+}
+
+glm::dvec3 edge_midpoint(std::uint8_t code) {
+    const int c1 = code >> 3;
+    const int c2 = c1 | (code & 7);
+    return 0.5 * (corner_position(c1) + corner_position(c2));
+}
+
+// One tetrahedron's polygon for the signs of its corners (bit k set = corner v[k] positive):
+// a triangle around a lone corner, or the quadrilateral between two and two. Its orientation is
+// fixed on the exact midpoint geometry: counter-clockwise seen from the positive corners.
+Polygon tetrahedron_polygon(const int v[4], int mask) {
+    Polygon poly;
+    int pos[4], neg[4], np = 0, nn = 0;
+    for (int k = 0; k < 4; ++k) (mask >> k & 1 ? pos[np++] : neg[nn++]) = v[k];
+    if (np == 0 || nn == 0) return poly;
+    if (np == 1 || nn == 1) {
+        const int lone = np == 1 ? pos[0] : neg[0];
+        const int* others = np == 1 ? neg : pos;
+        poly.n = 3;
+        for (int k = 0; k < 3; ++k) poly.e[k] = edge_code(lone, others[k]);
+    } else {
+        // The cycle ac, ad, bd, bc: consecutive edges share a corner.
+        const int a = pos[0], b = pos[1], c = neg[0], d = neg[1];
+        poly.n = 4;
+        poly.e[0] = edge_code(a, c);
+        poly.e[1] = edge_code(a, d);
+        poly.e[2] = edge_code(b, d);
+        poly.e[3] = edge_code(b, c);
+    }
+    glm::dvec3 toward_positive(0.0);
+    for (int k = 0; k < np; ++k) toward_positive += corner_position(pos[k]) / double(np);
+    for (int k = 0; k < nn; ++k) toward_positive -= corner_position(neg[k]) / double(nn);
+    const glm::dvec3 m0 = edge_midpoint(poly.e[0]), m1 = edge_midpoint(poly.e[1]),
+                     m2 = edge_midpoint(poly.e[2]);
+    const glm::dvec3 normal = poly.n == 3
+                                  ? glm::cross(m1 - m0, m2 - m0)
+                                  : glm::cross(m2 - m0, edge_midpoint(poly.e[3]) - m1);
+    assert(glm::dot(normal, toward_positive) != 0.0);
+    if (glm::dot(normal, toward_positive) < 0) std::reverse(poly.e + 1, poly.e + poly.n);
+    return poly;
+}
+
+std::array<CubeCase, 256> build_cube_cases() {
+    static const int axis_orders[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2},
+                                          {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+    std::array<CubeCase, 256> cases{};
+    for (int mask = 0; mask < 256; ++mask) {
+        CubeCase& cc = cases[mask];
+        for (const auto& order : axis_orders) {
+            const int v1 = 1 << order[0];
+            const int v2 = v1 | (1 << order[1]);
+            const int v[4] = {0, v1, v2, 7};
+            int m = 0;
+            for (int k = 0; k < 4; ++k) m |= (mask >> v[k] & 1) << k;
+            Polygon poly = tetrahedron_polygon(v, m);
+            if (poly.n != 0) cc.polygons[cc.count++] = poly;
+        }
+    }
+    return cases;
+}
+
+const std::array<CubeCase, 256>& cube_cases() {
+    static const std::array<CubeCase, 256> cases = build_cube_cases();
+    return cases;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Vertices.
+
+// The vertices one work unit makes. A normal of (0,0,0) means grad f vanished or was not finite
+// there; it is replaced by the average face normal at the end.
+struct VertexGroup {
+    std::vector<glm::dvec3> positions;
+    std::vector<glm::dvec3> normals;
+    // Vertices lying exactly on a grid point where f == 0, with that point's index: several
+    // edges meet there, and the vertices are welded into one at the end.
+    std::vector<std::pair<Index, std::uint64_t>> pinned;
+};
+
+struct Grid {
+    int nx = 0, ny = 0, nz = 0;
+    std::size_t row = 0;   // nx + 1
+    std::size_t plane = 0; // (nx + 1) * (ny + 1)
+    std::vector<double> xs, ys, zs;
+
+    glm::dvec3 point(int i, int j, int k) const { return {xs[i], ys[j], zs[k]}; }
+    std::uint64_t index(int i, int j, int k) const {
+        return (static_cast<std::uint64_t>(k) * (ny + 1) + j) * row + i;
+    }
+};
+
+// Coordinates lo + (hi - lo) i / n, exact at both ends.
+std::vector<double> grid_coordinates(double lo, double hi, int n) {
+    std::vector<double> c(n + 1);
+    for (int i = 0; i < n; ++i) c[i] = lo + (hi - lo) * (static_cast<double>(i) / n);
+    c[n] = hi;
+    return c;
+}
+
+struct Context {
+    const Program& f;
+    const double* params;
+    const Grid& grid;
+};
+
+// The vertex on the grid edge from a (value fa) to b (value fb), where the sign changes.
+// Safeguarded Newton on g(t) = f(p + t (q - p)) from the positive end p: the bracket [lo, hi]
+// always holds the sign change, a Newton step that leaves it becomes a bisection (as in
+// rtsafe, Numerical Recipes 9.4). It stops once |f| <= 1e-12 |grad f| |q - p|, i.e. the point
+// is within about 1e-12 edge lengths of the surface, and keeps the best point seen.
+Index make_vertex(const Context& ctx, VertexGroup& out, const glm::dvec3& a, double fa,
+                  std::uint64_t ga, const glm::dvec3& b, double fb, std::uint64_t gb) {
+    const bool a_positive = positive(fa);
+    const glm::dvec3& p = a_positive ? a : b;
+    const glm::dvec3& q = a_positive ? b : a;
+    const double fp = a_positive ? fa : fb;
+    const double fq = a_positive ? fb : fa;
+    const Index id = static_cast<Index>(out.positions.size());
+    glm::dvec3 gradient;
+    glm::dvec3 position;
+    if (fp == 0.0) {
+        position = p;
+        ctx.f.value_and_gradient(p, gradient, ctx.params);
+        out.pinned.emplace_back(id, a_positive ? ga : gb);
+    } else {
+        const glm::dvec3 d = q - p;
+        const double length = glm::length(d);
+        double lo = 0.0, hi = 1.0; // g(lo) positive, g(hi) negative
+        double t = std::isfinite(fp) && std::isfinite(fq) ? fp / (fp - fq) : 0.5;
+        if (!(t > lo && t < hi)) t = 0.5;
+        double best_abs = std::numeric_limits<double>::infinity();
+        double best_t = t;
+        glm::dvec3 best_gradient(0.0);
+        for (int iteration = 0; iteration < 60; ++iteration) {
+            glm::dvec3 g;
+            const double v = ctx.f.value_and_gradient(p + t * d, g, ctx.params);
+            if (std::fabs(v) < best_abs || iteration == 0) {
+                best_abs = std::fabs(v);
+                best_t = t;
+                best_gradient = g;
+            }
+            if (positive(v))
+                lo = t;
+            else
+                hi = t;
+            if (std::fabs(v) <= 1e-12 * length * glm::length(g)) break;
+            double next = t - v / glm::dot(g, d);
+            if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+            if (next == t || !(next > lo && next < hi)) break; // the bracket is one ulp wide
+            t = next;
+        }
+        position = p + best_t * d;
+        gradient = best_gradient;
+    }
+    const double norm = glm::length(gradient);
+    out.positions.push_back(position);
+    out.normals.push_back(std::isfinite(norm) && norm > 0 ? gradient / norm : glm::dvec3(0.0));
+    return id;
+}
+
+// In-plane edge directions (x, y, x+y) and the layer-crossing ones (z, x+z, y+z, x+y+z), as
+// offsets; d = 1..7 is the corner-offset bit pattern of the edge.
+constexpr int edge_dx(int d) { return d & 1; }
+constexpr int edge_dy(int d) { return (d >> 1) & 1; }
+
+// Values of layer k: one batch evaluation per row.
+void evaluate_layer(const Context& ctx, int k, double* values, std::vector<double>& scratch) {
+    const Grid& g = ctx.grid;
+    for (int j = 0; j <= g.ny; ++j)
+        ctx.f.values_along_x(g.xs.data(), g.row, g.ys[j], g.zs[k], values + j * g.row,
+                             ctx.params, scratch);
+}
+
+// Vertices on the in-plane edges (d = 1, 2, 3) of layer k; ids[point * 3 + d - 1].
+void make_plane_vertices(const Context& ctx, int k, const double* values, Index* ids,
+                         VertexGroup& out) {
+    const Grid& g = ctx.grid;
+    for (int j = 0; j <= g.ny; ++j)
+        for (int i = 0; i <= g.nx; ++i) {
+            const std::size_t pa = j * g.row + i;
+            const double fa = values[pa];
+            for (int d = 1; d <= 3; ++d) {
+                const int i2 = i + edge_dx(d), j2 = j + edge_dy(d);
+                if (i2 > g.nx || j2 > g.ny) continue;
+                const std::size_t pb = j2 * g.row + i2;
+                if (positive(fa) == positive(values[pb])) continue;
+                ids[pa * 3 + d - 1] = make_vertex(ctx, out, g.point(i, j, k), fa, g.index(i, j, k),
+                                                  g.point(i2, j2, k), values[pb],
+                                                  g.index(i2, j2, k));
+            }
+        }
+}
+
+// Vertices on the edges from layer k to layer k + 1 (d = 4..7); ids[point * 4 + d - 4].
+void make_vertical_vertices(const Context& ctx, int k, const double* bottom, const double* top,
+                            Index* ids, VertexGroup& out) {
+    const Grid& g = ctx.grid;
+    for (int j = 0; j <= g.ny; ++j)
+        for (int i = 0; i <= g.nx; ++i) {
+            const std::size_t pa = j * g.row + i;
+            const double fa = bottom[pa];
+            for (int d = 4; d <= 7; ++d) {
+                const int i2 = i + edge_dx(d), j2 = j + edge_dy(d);
+                if (i2 > g.nx || j2 > g.ny) continue;
+                const std::size_t pb = j2 * g.row + i2;
+                if (positive(fa) == positive(top[pb])) continue;
+                ids[pa * 4 + d - 4] =
+                    make_vertex(ctx, out, g.point(i, j, k), fa, g.index(i, j, k),
+                                g.point(i2, j2, k + 1), top[pb], g.index(i2, j2, k + 1));
+            }
+        }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Work units: the boundary planes (layers where chunks meet, and the first and last layer),
+// then the chunks of slabs between them. The split depends on the grid only, never on the
+// number of threads, so the mesh and its vertex order are the same for any thread count.
+
+struct BoundaryPlane {
+    int layer = 0;
+    std::vector<double> values;
+    std::vector<Index> ids; // in-plane edge vertex ids, 3 per point
+    VertexGroup vertices;
+};
+
+struct Chunk {
+    int first_slab = 0, end_slab = 0; // slabs [first, end): cells between layers k and k + 1
+    VertexGroup vertices;
+    std::vector<std::array<Index, 3>> triangles; // tagged ids
+};
+
+// A worker's reusable buffers.
+struct Workspace {
+    std::vector<double> scratch;
+    std::vector<double> values[2];
+    std::vector<Index> plane_ids[2];
+    std::vector<Index> vertical_ids;
+};
+
+struct Polygonizer {
+    Context ctx;
+    std::vector<BoundaryPlane> planes;
+    std::vector<Chunk> chunks;
+    std::atomic<int> next_plane{0};
+    std::atomic<int> next_chunk{0};
+    std::atomic<long> units_done{0};
+    long units_total = 0;
+    std::atomic<bool> stop{false};
+    std::atomic<std::size_t> planes_done{0};
+    bool cancelled = false; // written by the calling thread only
+    std::exception_ptr failure;
+    std::mutex failure_mutex;
+    const std::function<bool(double)>* progress = nullptr;
+
+    explicit Polygonizer(Context c) : ctx(c) {}
+
+    // Called after every unit; only the calling thread (worker 0) reports progress.
+    void unit_done(int worker) {
+        const long done = ++units_done;
+        if (worker == 0 && *progress && !(*progress)(static_cast<double>(done) / units_total)) {
+            cancelled = true;
+            halt();
+        }
+    }
+
+    void do_plane(BoundaryPlane& bp, Workspace& ws) {
+        const Grid& g = ctx.grid;
+        bp.values.resize(g.plane);
+        bp.ids.resize(g.plane * 3);
+        evaluate_layer(ctx, bp.layer, bp.values.data(), ws.scratch);
+        make_plane_vertices(ctx, bp.layer, bp.values.data(), bp.ids.data(), bp.vertices);
+    }
+
+    void do_chunk(int c, Workspace& ws, int worker) {
+        const Grid& g = ctx.grid;
+        Chunk& chunk = chunks[c];
+        const BoundaryPlane& below = planes[c];
+        const BoundaryPlane& above = planes[c + 1];
+        for (auto& v : ws.values) v.resize(g.plane);
+        for (auto& v : ws.plane_ids) v.resize(g.plane * 3);
+        ws.vertical_ids.resize(g.plane * 4);
+
+        const double* bottom = below.values.data();
+        const Index* bottom_ids = below.ids.data();
+        Index bottom_tag = tag_bottom;
+        int buffer = 0;
+        const CubeCase* cases = cube_cases().data();
+        for (int k = chunk.first_slab; k < chunk.end_slab; ++k) {
+            if (stop) return;
+            const double* top;
+            const Index* top_ids;
+            Index top_tag;
+            if (k + 1 == above.layer) {
+                top = above.values.data();
+                top_ids = above.ids.data();
+                top_tag = tag_top;
+            } else {
+                evaluate_layer(ctx, k + 1, ws.values[buffer].data(), ws.scratch);
+                make_plane_vertices(ctx, k + 1, ws.values[buffer].data(),
+                                    ws.plane_ids[buffer].data(), chunk.vertices);
+                top = ws.values[buffer].data();
+                top_ids = ws.plane_ids[buffer].data();
+                top_tag = tag_local;
+            }
+            make_vertical_vertices(ctx, k, bottom, top, ws.vertical_ids.data(), chunk.vertices);
+            emit_triangles(chunk, cases, bottom, top, bottom_ids, top_ids, bottom_tag, top_tag,
+                           ws.vertical_ids.data());
+            bottom = top;
+            bottom_ids = top_ids;
+            bottom_tag = top_tag;
+            buffer ^= 1;
+            unit_done(worker);
+        }
+    }
+
+    const glm::dvec3& position_of(const Chunk& chunk, int c, Index id) const {
+        const Index local = id & ~tag_mask;
+        switch (id & tag_mask) {
+        case tag_bottom: return planes[c].vertices.positions[local];
+        case tag_top: return planes[c + 1].vertices.positions[local];
+        default: return chunk.vertices.positions[local];
+        }
+    }
+
+    void emit_triangles(Chunk& chunk, const CubeCase* cases, const double* bottom,
+                        const double* top, const Index* bottom_ids, const Index* top_ids,
+                        Index bottom_tag, Index top_tag, const Index* vertical_ids) {
+        const Grid& g = ctx.grid;
+        const int c = static_cast<int>(&chunk - chunks.data());
+        // Where each edge code finds its vertex id, relative to the cell's first point.
+        struct EdgeSlot {
+            const Index* ids = nullptr;
+            std::size_t stride = 0, offset = 0;
+            Index tag = 0;
+        };
+        std::array<EdgeSlot, 64> slots{};
+        for (int c1 = 0; c1 < 8; ++c1)
+            for (int d = 1; d < 8; ++d) {
+                if ((c1 & d) != 0) continue;
+                EdgeSlot& s = slots[c1 * 8 + d];
+                const std::size_t point = ((c1 >> 1) & 1) * g.row + (c1 & 1);
+                if (d & 4) {
+                    s = EdgeSlot{vertical_ids, 4, point * 4 + d - 4, tag_local};
+                } else if (c1 & 4) {
+                    s = EdgeSlot{top_ids, 3, point * 3 + d - 1, top_tag};
+                } else {
+                    s = EdgeSlot{bottom_ids, 3, point * 3 + d - 1, bottom_tag};
+                }
+            }
+        for (int j = 0; j < g.ny; ++j) {
+            const double* b0 = bottom + j * g.row;
+            const double* b1 = b0 + g.row;
+            const double* t0 = top + j * g.row;
+            const double* t1 = t0 + g.row;
+            for (int i = 0; i < g.nx; ++i) {
+                const unsigned mask = positive(b0[i]) | positive(b0[i + 1]) << 1 |
+                                      positive(b1[i]) << 2 | positive(b1[i + 1]) << 3 |
+                                      positive(t0[i]) << 4 | positive(t0[i + 1]) << 5 |
+                                      positive(t1[i]) << 6 | positive(t1[i + 1]) << 7;
+                if (mask == 0 || mask == 255) continue;
+                const std::size_t point = j * g.row + i;
+                const CubeCase& cc = cases[mask];
+                for (int k = 0; k < cc.count; ++k) {
+                    const Polygon& poly = cc.polygons[k];
+                    Index v[4];
+                    for (int e = 0; e < poly.n; ++e) {
+                        const EdgeSlot& s = slots[poly.e[e]];
+                        v[e] = s.tag | s.ids[point * s.stride + s.offset];
+                    }
+                    if (poly.n == 3) {
+                        chunk.triangles.push_back({v[0], v[1], v[2]});
+                        continue;
+                    }
+                    // A quadrilateral: split along its shorter diagonal (the better-shaped
+                    // pair); either split keeps the orientation.
+                    const double d02 = glm::length(position_of(chunk, c, v[0]) -
+                                                   position_of(chunk, c, v[2]));
+                    const double d13 = glm::length(position_of(chunk, c, v[1]) -
+                                                   position_of(chunk, c, v[3]));
+                    if (d02 <= d13) {
+                        chunk.triangles.push_back({v[0], v[1], v[2]});
+                        chunk.triangles.push_back({v[0], v[2], v[3]});
+                    } else {
+                        chunk.triangles.push_back({v[1], v[2], v[3]});
+                        chunk.triangles.push_back({v[1], v[3], v[0]});
+                    }
+                }
+            }
+        }
+    }
+
+    void work(int worker) {
+        try {
+            Workspace ws;
+            for (int b; !stop && (b = next_plane++) < static_cast<int>(planes.size());) {
+                do_plane(planes[b], ws);
+                planes_done.fetch_add(1, std::memory_order_release);
+                planes_done.notify_all();
+                unit_done(worker);
+            }
+            // The chunks read the boundary planes, so every plane must be finished first.
+            for (std::size_t done; !stop && (done = planes_done.load(std::memory_order_acquire)) <
+                                                planes.size();)
+                planes_done.wait(done, std::memory_order_acquire);
+            for (int c; !stop && (c = next_chunk++) < static_cast<int>(chunks.size());)
+                do_chunk(c, ws, worker);
+        } catch (...) {
+            {
+                std::lock_guard<std::mutex> lock(failure_mutex);
+                if (!failure) failure = std::current_exception();
+            }
+            halt();
+        }
+    }
+
+    // Stops every worker at its next unit, including one waiting for the planes.
+    void halt() {
+        stop = true;
+        planes_done.fetch_add(planes.size(), std::memory_order_release);
+        planes_done.notify_all();
+    }
+};
+
+Status check_options(const Program& f, const PolygonizeOptions& o) {
+    if (!std::isfinite(o.cell) || o.cell <= 0)
+        return make_error(ErrorCode::schema,
+                          "cell " + format_number(o.cell) + " must be a finite number > 0",
+                          "/cell");
+    static const char* axes = "xyz";
+    for (int a = 0; a < 3; ++a) {
+        if (!std::isfinite(o.lo[a]) || !std::isfinite(o.hi[a]))
+            return make_error(ErrorCode::schema,
+                              std::string("bounds on ") + axes[a] + " must be finite numbers",
+                              "/bounds");
+        if (!(o.lo[a] < o.hi[a]))
+            return make_error(ErrorCode::schema,
+                              std::string("bounds on ") + axes[a] + " must have min < max, got " +
+                                  format_number(o.lo[a]) + " and " + format_number(o.hi[a]),
+                              "/bounds");
+        if (!std::isfinite(o.hi[a] - o.lo[a]))
+            return make_error(ErrorCode::schema,
+                              std::string("bounds on ") + axes[a] + " span more than a double",
+                              "/bounds");
+    }
+    const auto& names = f.parameter_names();
+    if (o.parameters.size() != names.size())
+        return make_error(ErrorCode::schema,
+                          "expected " + std::to_string(names.size()) +
+                              " parameter values, got " + std::to_string(o.parameters.size()),
+                          "/parameters");
+    for (std::size_t k = 0; k < o.parameters.size(); ++k)
+        if (!std::isfinite(o.parameters[k]))
+            return make_error(ErrorCode::schema,
+                              "parameter '" + names[k] + "' must be a finite number, got " +
+                                  format_number(o.parameters[k]),
+                              "/parameters/" + std::to_string(k));
+    return Ok{};
+}
+
+// Unit normals for vertices whose gradient vanished: the area-weighted average of the normals
+// of the triangles around them.
+void repair_normals(Mesh& mesh) {
+    std::vector<char> needs(mesh.positions.size(), 0);
+    bool any = false;
+    for (std::size_t v = 0; v < mesh.normals.size(); ++v)
+        if (mesh.normals[v] == glm::dvec3(0.0)) needs[v] = 1, any = true;
+    if (!any) return;
+    std::vector<glm::dvec3> sum(mesh.positions.size(), glm::dvec3(0.0));
+    for (const auto& t : mesh.triangles) {
+        if (!needs[t[0]] && !needs[t[1]] && !needs[t[2]]) continue;
+        const glm::dvec3 n = glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]],
+                                        mesh.positions[t[2]] - mesh.positions[t[0]]);
+        for (Index v : t) sum[v] += n;
+    }
+    for (std::size_t v = 0; v < mesh.normals.size(); ++v) {
+        if (!needs[v]) continue;
+        const double len = glm::length(sum[v]);
+        mesh.normals[v] =
+            std::isfinite(len) && len > 0 ? sum[v] / len : glm::dvec3(0.0, 0.0, 1.0);
+    }
+}
+
+} // namespace
+
+std::size_t drop_degenerate_triangles(Mesh& mesh) {
+    const std::size_t before = mesh.triangles.size();
+    std::erase_if(mesh.triangles, [](const std::array<Index, 3>& t) {
+        return t[0] == t[1] || t[1] == t[2] || t[2] == t[0];
+    });
+    const std::size_t removed = before - mesh.triangles.size();
+    std::vector<Index> remap(mesh.positions.size(), 0);
+    for (const auto& t : mesh.triangles)
+        for (Index v : t) remap[v] = 1;
+    if (std::all_of(remap.begin(), remap.end(), [](Index r) { return r != 0; })) return removed;
+    Index next = 0;
+    for (std::size_t v = 0; v < remap.size(); ++v) {
+        if (!remap[v]) continue;
+        remap[v] = next;
+        mesh.positions[next] = mesh.positions[v];
+        if (v < mesh.normals.size()) mesh.normals[next] = mesh.normals[v];
+        if (v < mesh.exists.size()) mesh.exists[next] = mesh.exists[v];
+        ++next;
+    }
+    mesh.positions.resize(next);
+    if (mesh.normals.size() > next) mesh.normals.resize(next);
+    if (mesh.exists.size() > next) mesh.exists.resize(next);
+    for (auto& t : mesh.triangles)
+        for (Index& v : t) v = remap[v];
+    return removed;
+}
+
+Expected<Mesh> polygonize(const Program& f, const PolygonizeOptions& options) {
+    if (Status s = check_options(f, options); !s) return s.error();
+
+    // The grid: ceil(extent / cell) cells per axis, the cell shrunk to fit (convention 18).
+    // Counted in double first so a tiny cell cannot overflow an int before the check.
+    double n[3], points = 1.0;
+    for (int a = 0; a < 3; ++a) {
+        n[a] = std::max(1.0, std::ceil((options.hi[a] - options.lo[a]) / options.cell));
+        points *= n[a] + 1.0;
+    }
+    if (points > static_cast<double>(max_evaluation_points))
+        return make_error(ErrorCode::limit,
+                          "cell " + format_number(options.cell) + " gives a grid of " +
+                              format_number(n[0] + 1) + " x " + format_number(n[1] + 1) + " x " +
+                              format_number(n[2] + 1) + " points, more than the " +
+                              std::to_string(max_evaluation_points) + " allowed",
+                          "/cell");
+    Grid grid;
+    grid.nx = static_cast<int>(n[0]);
+    grid.ny = static_cast<int>(n[1]);
+    grid.nz = static_cast<int>(n[2]);
+    grid.row = static_cast<std::size_t>(grid.nx) + 1;
+    grid.plane = grid.row * (static_cast<std::size_t>(grid.ny) + 1);
+    grid.xs = grid_coordinates(options.lo.x, options.hi.x, grid.nx);
+    grid.ys = grid_coordinates(options.lo.y, options.hi.y, grid.ny);
+    grid.zs = grid_coordinates(options.lo.z, options.hi.z, grid.nz);
+
+    Polygonizer pz(Context{f, options.parameters.data(), grid});
+    pz.progress = &options.progress;
+    // About eight slabs per chunk, at most 32 chunks: enough to balance two to eight threads.
+    const int chunk_count = std::clamp(grid.nz / 8, 1, 32);
+    pz.planes.resize(chunk_count + 1);
+    pz.chunks.resize(chunk_count);
+    for (int c = 0; c <= chunk_count; ++c)
+        pz.planes[c].layer = static_cast<int>(static_cast<long>(grid.nz) * c / chunk_count);
+    for (int c = 0; c < chunk_count; ++c) {
+        pz.chunks[c].first_slab = pz.planes[c].layer;
+        pz.chunks[c].end_slab = pz.planes[c + 1].layer;
+    }
+    pz.units_total = static_cast<long>(pz.planes.size()) + grid.nz;
+
+    int threads = options.threads > 0 ? options.threads
+                                      : static_cast<int>(std::thread::hardware_concurrency());
+    threads = std::clamp(threads, 1, chunk_count);
+    {
+        std::vector<std::jthread> helpers;
+        for (int w = 1; w < threads; ++w) helpers.emplace_back([&pz, w] { pz.work(w); });
+        pz.work(0);
+    }
+    if (pz.failure) {
+        try {
+            std::rethrow_exception(pz.failure);
+        } catch (const std::bad_alloc&) {
+            return make_error(ErrorCode::limit, "not enough memory to polygonize this grid",
+                              "/cell");
+        } catch (const std::exception& e) {
+            return make_error_nopath(ErrorCode::internal,
+                                     std::string("polygonization failed: ") + e.what());
+        }
+    }
+    if (pz.cancelled) return make_error_nopath(ErrorCode::limit, "polygonization was cancelled");
+
+    // Merge in a fixed order: plane 0, chunk 0, plane 1, chunk 1, ..., the last plane.
+    Mesh mesh;
+    std::vector<std::size_t> plane_offset(pz.planes.size()), chunk_offset(pz.chunks.size());
+    std::vector<std::pair<std::uint64_t, Index>> pinned;
+    auto append = [&](const VertexGroup& g) {
+        const std::size_t offset = mesh.positions.size();
+        mesh.positions.insert(mesh.positions.end(), g.positions.begin(), g.positions.end());
+        mesh.normals.insert(mesh.normals.end(), g.normals.begin(), g.normals.end());
+        for (const auto& [id, point] : g.pinned)
+            pinned.emplace_back(point, static_cast<Index>(offset + id));
+        return offset;
+    };
+    std::size_t triangle_count = 0;
+    for (std::size_t c = 0; c < pz.chunks.size(); ++c) {
+        plane_offset[c] = append(pz.planes[c].vertices);
+        chunk_offset[c] = append(pz.chunks[c].vertices);
+        triangle_count += pz.chunks[c].triangles.size();
+    }
+    plane_offset.back() = append(pz.planes.back().vertices);
+    if (mesh.positions.size() >= static_cast<std::size_t>(tag_bottom))
+        return make_error(ErrorCode::limit, "the mesh has too many vertices", "/cell");
+    mesh.triangles.reserve(triangle_count);
+    for (std::size_t c = 0; c < pz.chunks.size(); ++c) {
+        const Index offsets[3] = {static_cast<Index>(chunk_offset[c]),
+                                  static_cast<Index>(plane_offset[c]),
+                                  static_cast<Index>(plane_offset[c + 1])};
+        for (const auto& t : pz.chunks[c].triangles) {
+            std::array<Index, 3> r;
+            for (int k = 0; k < 3; ++k) r[k] = (t[k] & ~tag_mask) + offsets[t[k] >> 30];
+            mesh.triangles.push_back(r);
+        }
+    }
+    pz.chunks.clear();
+    pz.planes.clear();
+
+    // Weld the vertices that sit on the same zero grid point, then drop the triangles that
+    // collapsed (they repeat a vertex).
+    if (!pinned.empty()) {
+        std::sort(pinned.begin(), pinned.end());
+        std::vector<Index> remap(mesh.positions.size());
+        for (std::size_t v = 0; v < remap.size(); ++v) remap[v] = static_cast<Index>(v);
+        for (std::size_t s = 0; s < pinned.size();) {
+            std::size_t e = s;
+            while (e < pinned.size() && pinned[e].first == pinned[s].first) ++e;
+            for (std::size_t k = s + 1; k < e; ++k) remap[pinned[k].second] = pinned[s].second;
+            s = e;
+        }
+        for (auto& t : mesh.triangles)
+            for (Index& v : t) v = remap[v];
+        drop_degenerate_triangles(mesh);
+    }
+    repair_normals(mesh);
+    mesh.exists.assign(mesh.positions.size(), 1);
+    if (options.progress && !options.progress(1.0))
+        return make_error_nopath(ErrorCode::limit, "polygonization was cancelled");
+    return mesh;
+}
+
+} // namespace isoparm::geom::implicit
