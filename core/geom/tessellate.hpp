@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -13,9 +14,11 @@ struct Mesh {
     std::vector<glm::dvec3> positions;
     std::vector<glm::dvec3> normals;
     std::vector<std::array<std::uint32_t, 3>> triangles; // counter-clockwise about the normal
-    // Per vertex: false where the surface point does not exist (zero denominator); such
-    // vertices hold (0,0,0) and no triangle touches them.
+    // Per vertex: 0 where the surface point does not exist (zero denominator); such vertices
+    // hold (0,0,0) and no triangle touches them. Empty when every vertex exists (the usual
+    // case), so a mesh costs positions + normals + indices.
     std::vector<std::uint8_t> exists;
+    bool vertex_exists(size_t k) const { return exists.empty() || exists[k] != 0; }
 };
 
 // Vertices u-major: vertex i * n_v + j at u_i = a + (b - a) i / (n_u - 1), v_j likewise.

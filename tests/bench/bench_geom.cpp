@@ -5,6 +5,7 @@
 #include <glm/vec2.hpp>
 
 #include "core/geom/evaluate.hpp"
+#include "core/geom/grid_tessellator.hpp"
 #include "core/geom/refine.hpp"
 #include "core/geom/tessellate.hpp"
 #include "tests/support/random_geometry.hpp"
@@ -72,5 +73,38 @@ void BM_ElevateDegree32(benchmark::State& state) {
     for (auto _ : state) benchmark::DoNotOptimize(elevate_degree(s, Dir::u, 1));
 }
 BENCHMARK(BM_ElevateDegree32)->Unit(benchmark::kMicrosecond);
+
+} // namespace
+
+namespace {
+
+void BM_GridTwoThreads256(benchmark::State& state) {
+    const Surface s = bicubic_nurbs(static_cast<int>(state.range(0)));
+    const GridTessellator t(s, 256, 256);
+    Mesh m;
+    for (auto _ : state) {
+        t.evaluate(s, m, 2);
+        benchmark::DoNotOptimize(m.positions.data());
+    }
+    state.counters["points/s"] =
+        benchmark::Counter(256.0 * 256.0, benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_GridTwoThreads256)->Arg(32)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// One drag step on a 32x32 bicubic NURBS at a 256x256 grid: only the support of the moved
+// point is re-tessellated (compare with BM_GridPositionsNormals256/32).
+void BM_DragStepLocalUpdate(benchmark::State& state) {
+    Surface s = bicubic_nurbs(32);
+    const GridTessellator t(s, 256, 256);
+    Mesh m;
+    t.evaluate(s, m);
+    double z = 0;
+    for (auto _ : state) {
+        s.point(16, 16).z = (z += 1e-3);
+        t.update_control_point(s, m, 16, 16);
+        benchmark::DoNotOptimize(m.positions.data());
+    }
+}
+BENCHMARK(BM_DragStepLocalUpdate)->Unit(benchmark::kMicrosecond);
 
 } // namespace

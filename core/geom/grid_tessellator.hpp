@@ -1,0 +1,60 @@
+// The interactive tessellation engine: basis tables cached per surface layout, a vectorized
+// row kernel, both cores for full passes, and local updates for single control points.
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include "core/geom/tessellate.hpp"
+#include "core/geom/types.hpp"
+
+namespace isoparm::geom {
+
+class GridTessellator {
+public:
+    // Tabulates spans, basis values and first derivatives for the sample grid of s.
+    GridTessellator(const Surface& s, int samples_u, int samples_v);
+
+    // True when s has the layout these tables were built for (degrees, knots, counts), so
+    // only control points or weights changed and the tables can be reused.
+    bool fits(const Surface& s, int samples_u, int samples_v) const;
+
+    // All vertices and the triangles. threads > 1 splits the rows; results are bit-identical
+    // to threads == 1 (every vertex is computed by the same instructions).
+    void evaluate(const Surface& s, Mesh& mesh, int threads = 1) const;
+
+    // After control point (i, j) moved or changed weight: recompute only the vertices its
+    // basis function's support touches (local support). Rebuilds the triangles only when a
+    // vertex starts or stops existing.
+    void update_control_point(const Surface& s, Mesh& mesh, int i, int j) const;
+
+    // The block of sample rows / columns whose values depend on control row i / column j.
+    std::pair<int, int> rows_touching(int i) const;
+    std::pair<int, int> columns_touching(int j) const;
+
+    int samples_u() const { return static_cast<int>(us_.size()); }
+    int samples_v() const { return static_cast<int>(vs_.size()); }
+    const std::vector<double>& params_u() const { return us_; }
+    const std::vector<double>& params_v() const { return vs_; }
+
+    struct Table {
+        int p = 0;
+        std::vector<int> first;    // span - p for each sample
+        std::vector<double> N, dN; // (p + 1) per sample
+    };
+
+private:
+    void evaluate_block(const Surface& s, const std::vector<double>& Pw, Mesh& mesh, int i0,
+                        int i1, int j0, int j1) const;
+
+    int degree_u_ = 0, degree_v_ = 0, n_u_ = 0, n_v_ = 0;
+    Knots knots_u_, knots_v_;
+    std::vector<double> us_, vs_;
+    Table tu_, tv_;
+};
+
+// Triangles of the grid (k, k + n_v, k + n_v + 1), (k, k + n_v + 1, k + 1), skipping cells
+// that touch a vertex that does not exist.
+void build_grid_triangles(Mesh& mesh, int samples_u, int samples_v);
+
+} // namespace isoparm::geom

@@ -1,0 +1,80 @@
+// The interactive tessellator: threads give bit-identical meshes; a local update after moving
+// one control point equals a full re-tessellation; gaps where points do not exist.
+#include <gtest/gtest.h>
+
+#include "core/geom/grid_tessellator.hpp"
+#include "core/geom/knots.hpp"
+#include "tests/support/random_geometry.hpp"
+
+using namespace isoparm::geom;
+using isoparm::testing::RandomGeometry;
+
+TEST(GridTessellator, ThreadsAreBitIdentical) {
+    RandomGeometry g(61);
+    const Surface s = g.surface(3, 3, 12, 9, true);
+    const GridTessellator t(s, 65, 47);
+    Mesh one, two;
+    t.evaluate(s, one, 1);
+    t.evaluate(s, two, 2);
+    EXPECT_EQ(one.positions, two.positions);
+    EXPECT_EQ(one.normals, two.normals);
+    EXPECT_EQ(one.triangles, two.triangles);
+}
+
+TEST(GridTessellator, LocalUpdateEqualsFullPass) {
+    RandomGeometry g(62);
+    for (int trial = 0; trial < 10; ++trial) {
+        Surface s = g.surface(g.integer(1, 4), g.integer(1, 4), 10, 8, trial % 2 == 0);
+        const GridTessellator t(s, 41, 33);
+        Mesh mesh;
+        t.evaluate(s, mesh);
+        const int i = g.integer(0, s.n_u - 1), j = g.integer(0, s.n_v - 1);
+        s.point(i, j) += glm::dvec3(0.3, -0.2, 0.7);
+        if (trial % 2 == 0) s.weight(i, j) *= 1.7;
+        t.update_control_point(s, mesh, i, j);
+        Mesh full;
+        t.evaluate(s, full);
+        EXPECT_EQ(mesh.positions, full.positions);
+        EXPECT_EQ(mesh.normals, full.normals);
+        const auto [r0, r1] = t.rows_touching(i);
+        EXPECT_LE(r0, r1);
+        EXPECT_LT(r1 - r0 + 1, t.samples_u()); // local: not every row (10 points, degree <= 4)
+    }
+}
+
+TEST(GridTessellator, FitsOnlyTheSameLayout) {
+    RandomGeometry g(63);
+    Surface s = g.surface(2, 3, 6, 7, true);
+    const GridTessellator t(s, 10, 10);
+    EXPECT_TRUE(t.fits(s, 10, 10));
+    s.points[3] += glm::dvec3(1.0);
+    EXPECT_TRUE(t.fits(s, 10, 10)); // control points do not change the tables
+    EXPECT_FALSE(t.fits(s, 11, 10));
+    s.knots_u[3] += 1e-9;
+    EXPECT_FALSE(t.fits(s, 10, 10));
+}
+
+TEST(GridTessellator, PointsThatDoNotExistLeaveGaps) {
+    // Weights (1, -1) in u: the denominator vanishes along u = 0.5.
+    Surface s;
+    s.type = SplineType::nurbs;
+    s.degree_u = s.degree_v = 1;
+    s.n_u = s.n_v = 2;
+    s.knots_u = s.knots_v = {0, 0, 1, 1};
+    s.points = {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}};
+    s.weights = {1, 1, -1, -1};
+    const GridTessellator t(s, 3, 3);
+    Mesh m;
+    t.evaluate(s, m);
+    ASSERT_FALSE(m.exists.empty());
+    EXPECT_FALSE(m.vertex_exists(3)); // (u, v) = (0.5, 0)
+    EXPECT_TRUE(m.vertex_exists(0));
+    for (const auto& tri : m.triangles)
+        for (auto k : tri) EXPECT_TRUE(m.vertex_exists(k));
+    // Making the weight positive again closes the gap through a local update.
+    s.weight(1, 0) = s.weight(1, 1) = 1;
+    t.update_control_point(s, m, 1, 0);
+    t.update_control_point(s, m, 1, 1);
+    EXPECT_TRUE(m.exists.empty());
+    EXPECT_EQ(m.triangles.size(), 8u);
+}
