@@ -1,6 +1,7 @@
 // Curve and surface points, derivatives and normals (Piegl & Tiller A3.2, A3.6, A4.2, A4.4).
 #include "core/geom/evaluate.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -18,8 +19,10 @@ double binomial(int n, int k) {
     return r;
 }
 
-// Relative size below which a cross product counts as degenerate (sine of the angle).
-constexpr double degenerate_sine = 1e-12;
+// |S_u x S_v| below this fraction of max(|S_u|, |S_v|)^2 counts as degenerate. Measured
+// against the larger derivative, not |S_u| |S_v|: at a pole one derivative is rounding noise
+// (1e-17, not 0) and its cross product with the other has a meaningless direction.
+constexpr double degenerate_ratio = 1e-10;
 
 } // namespace
 
@@ -105,8 +108,8 @@ std::optional<glm::dvec3> normal_from_derivatives(const SurfaceDerivatives& d) {
     const glm::dvec3& Sv = d.D[0][1];
     const glm::dvec3 n = glm::cross(Su, Sv);
     const double len = glm::length(n);
-    const double scale = glm::length(Su) * glm::length(Sv);
-    if (!(len > degenerate_sine * scale) || !std::isfinite(len) || len == 0.0) return std::nullopt;
+    const double big = std::max(glm::length(Su), glm::length(Sv));
+    if (!(len > degenerate_ratio * big * big) || !std::isfinite(len)) return std::nullopt;
     return n / len;
 }
 
@@ -122,7 +125,7 @@ std::optional<glm::dvec3> limit_normal_from_derivatives(const SurfaceDerivatives
     const double len = glm::length(n);
     const double scale = glm::length(Suu) * glm::length(Sv) + glm::length(Su) * glm::length(Suv) +
                          glm::length(Suv) * glm::length(Sv) + glm::length(Su) * glm::length(Svv);
-    if (!(len > degenerate_sine * scale) || !std::isfinite(len) || len == 0.0) return std::nullopt;
+    if (!(len > degenerate_ratio * scale) || !std::isfinite(len)) return std::nullopt;
     return n / len;
 }
 

@@ -26,7 +26,7 @@ std::optional<SurfaceDerivatives> surface_derivatives(const Surface& s, double u
 std::optional<glm::dvec3> surface_point(const Surface& s, double u, double v);
 
 // (S_u x S_v) / |S_u x S_v|; nullopt where the point does not exist or the cross product
-// degenerates (|S_u x S_v| negligible against |S_u| |S_v|). The protocol's `evaluate`.
+// degenerates (|S_u x S_v| below 1e-10 max(|S_u|, |S_v|)^2). The protocol's `evaluate`.
 std::optional<glm::dvec3> surface_normal(const Surface& s, double u, double v);
 
 // A normal a renderer can always use: the strict normal where it exists; at a degenerate

@@ -31,7 +31,7 @@ inline void contract(const isoparm::geom::kernel::RowArgs& a, int j, v4d& A, v4d
 }
 
 // S = A / w, S_u = (A_u - w_u S) / w, S_v likewise (A4.4 to first order); the normal is
-// degenerate where the sine between S_u and S_v is below 1e-12 (as normal_from_derivatives).
+// degenerate where |S_u x S_v| < 1e-10 max(|S_u|, |S_v|)^2 (as normal_from_derivatives).
 template <int Cols> void row_impl(const isoparm::geom::kernel::RowArgs& a) {
     using namespace isoparm::geom::kernel;
     for (int j = a.j0; j <= a.j1; ++j) {
@@ -50,12 +50,13 @@ template <int Cols> void row_impl(const isoparm::geom::kernel::RowArgs& a) {
                      vz = (Av[2] - Av[3] * sz) * inv;
         const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
         const double len2 = nx * nx + ny * ny + nz * nz;
-        const double scale2 = (ux * ux + uy * uy + uz * uz) * (vx * vx + vy * vy + vz * vz);
+        const double su2 = ux * ux + uy * uy + uz * uz, sv2 = vx * vx + vy * vy + vz * vz;
+        const double big2 = su2 > sv2 ? su2 : sv2;
         double* P = a.positions + 3L * j;
         P[0] = sx;
         P[1] = sy;
         P[2] = sz;
-        if (len2 > 1e-24 * scale2 && len2 != 0.0 && __builtin_isfinite(len2)) {
+        if (len2 > 1e-20 * big2 * big2 && __builtin_isfinite(len2)) {
             const double r = 1.0 / __builtin_sqrt(len2);
             double* n = a.normals + 3L * j;
             n[0] = nx * r;

@@ -58,3 +58,24 @@ TEST(Tessellate, TriangleLayoutIsUMajor) {
     EXPECT_EQ(m.triangles[0], (std::array<std::uint32_t, 3>{0, 6, 7}));
     EXPECT_EQ(m.triangles[1], (std::array<std::uint32_t, 3>{0, 7, 1}));
 }
+
+TEST(Tessellate, PoleNormalIsTheLimitFromInside) {
+    // Shared example 0066: a sphere octant whose row u = 0 collapses to the pole (0, 0, 1);
+    // rounding leaves S_v ~ 1e-17 there, not 0, which must still count as degenerate.
+    Surface s;
+    s.type = SplineType::nurbs;
+    s.degree_u = s.degree_v = 2;
+    s.n_u = s.n_v = 3;
+    s.knots_u = s.knots_v = bezier_knots(2);
+    s.points = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1},
+                {0, 1, 1}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    const double r = 0.7071067811865476;
+    s.weights = {1, r, 1, r, 0.5000000000000001, r, 1, r, 1};
+    const Mesh m = tessellate(s, 5, 4);
+    for (int j = 0; j < 4; ++j) {
+        EXPECT_NEAR(m.normals[j].x, 0.0, 1e-9);
+        EXPECT_NEAR(m.normals[j].y, 0.0, 1e-9);
+        EXPECT_NEAR(m.normals[j].z, 1.0, 1e-9);
+    }
+    EXPECT_FALSE(surface_normal(s, 0.0, 2.0 / 3).has_value()); // strictly: no normal at a pole
+}
