@@ -10,6 +10,12 @@
 
 namespace isoparm::doc {
 
+// Refusals name the argument at fault as a JSON Pointer: "/id" (no such object, or an object
+// of the wrong kind), "/i", "/j" (control point index; curves take j = -1), "/position/0..2",
+// "/weight", "/k" and "/value" (set_knot), "/direction", "/name", "/matrix", "/times",
+// "/shape/..." (the geometry given to add_object / replace_shape, as validate_* reports it),
+// "/<colour>/<channel>" (set_colors). Codes as in the geometry protocol.
+
 std::unique_ptr<Command> add_object(Object object); // id assigned on apply if 0
 std::unique_ptr<Command> remove_object(std::uint64_t id);
 std::unique_ptr<Command> rename_object(std::uint64_t id, std::string name);
@@ -27,8 +33,7 @@ std::unique_ptr<Command> set_knot(std::uint64_t id, geom::Dir dir, int k, double
 // transforms of the same object merge; redo restores exactly the points the drag produced.
 std::unique_ptr<Command> transform_object(std::uint64_t id, const glm::dmat4& m);
 // The same with the label the history shows ("Rotate hill", "Translate hill").
-std::unique_ptr<Command> transform_object(std::uint64_t id, const glm::dmat4& m,
-                                          std::string label);
+std::unique_ptr<Command> transform_object(std::uint64_t id, const glm::dmat4& m, std::string label);
 
 // Refinement: shape unchanged; the selection is remapped to the same control point where
 // it still exists (insertion at span k: indices up to k - p stay, indices from k - s on

@@ -8,6 +8,7 @@
 #include <variant>
 #include <vector>
 
+#include "core/geom/status.hpp"
 #include "core/geom/types.hpp"
 
 namespace isoparm::doc {

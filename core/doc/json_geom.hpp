@@ -17,7 +17,7 @@ geom::Expected<geom::Surface> surface_from_json(const nlohmann::json& j);
 nlohmann::json curve_to_json(const geom::Curve& c);
 nlohmann::json surface_to_json(const geom::Surface& s);
 
-// A point that may not exist: [x, y, z] or null.
+// A point that may not exist: [x, y, z], or null when any coordinate is not finite.
 nlohmann::json point_to_json(const glm::dvec3& p);
 
 } // namespace isoparm::doc

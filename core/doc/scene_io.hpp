@@ -3,19 +3,36 @@
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 
 #include "core/doc/document.hpp"
 #include "core/geom/status.hpp"
 
 namespace isoparm::doc {
 
+// The scene format's name and the newest version this build reads and writes.
+inline constexpr const char* scene_format_name = "isoparm-scene";
+inline constexpr int scene_format_version = 1;
+
 nlohmann::json scene_to_json(const Document& doc);
 // Errors name the offending value with a JSON Pointer into the scene.
 geom::Expected<Document> scene_from_json(const nlohmann::json& j);
 
+// The text save_scene writes: indented for people, every number in shortest round-trip form
+// (so a load gives back the same bits, -0.0 included), ending with a newline.
+std::string scene_to_text(const Document& doc);
+// Parses scene text: not JSON (`parse`, message with line and column), duplicate keys
+// (`schema`), nesting too deep (`limit`), then scene_from_json. Never throws, never crashes:
+// this is the entry point the scene fuzzer drives.
+geom::Expected<Document> scene_from_text(std::string_view text);
+
+// Reads and parses a scene file. A file that cannot be read is `internal` without a path
+// (the message names the file and the reason); files above 256 MiB are `limit`.
 geom::Expected<Document> load_scene(const std::string& path);
-// Writes a temporary file beside the target, flushes it, then renames it over the target:
-// a crash never leaves a half-written scene.
+// Writes a temporary file beside the target ("<path>.tmp-<pid>"), flushes and fsyncs it, then
+// renames it over the target: a crash never leaves a half-written scene, and on any failure
+// (`internal`, message naming the file and the reason) the old file is intact and the
+// temporary file is removed. A symbolic link is followed: the file it points to is replaced.
 geom::Status save_scene(const Document& doc, const std::string& path);
 
 } // namespace isoparm::doc

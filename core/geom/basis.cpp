@@ -5,6 +5,7 @@
 #include <cassert>
 
 #include "core/geom/knots.hpp"
+#include "core/geom/small_buffer.hpp"
 
 namespace isoparm::geom {
 
@@ -39,8 +40,9 @@ void basis_funs(int span, double t, int p, const Knots& U, double* N) {
 void ders_basis_funs(int span, double t, int p, int d, const Knots& U, double* ders) {
     // Piegl & Tiller A2.3 DersBasisFuns.
     const int w = p + 1;
-    std::vector<double> ndu(static_cast<size_t>(w) * w), left(w), right(w);
-    std::vector<double> arow(2 * static_cast<size_t>(w)); // two alternating rows of a_{k,j}
+    SmallBuffer<double, 256> ndu(static_cast<size_t>(w) * w);
+    SmallBuffer<double, 16> left(w), right(w);
+    SmallBuffer<double, 32> arow(2 * static_cast<size_t>(w)); // two rows of a_{k,j}, alternating
     auto NDU = [&](int r, int c) -> double& { return ndu[static_cast<size_t>(r) * w + c]; };
     NDU(0, 0) = 1.0;
     for (int j = 1; j <= p; ++j) {
@@ -61,7 +63,7 @@ void ders_basis_funs(int span, double t, int p, int d, const Knots& U, double* d
     const int dmax = std::min(d, p);
     for (int r = 0; r <= p; ++r) {
         int s1 = 0, s2 = 1;
-        std::fill(arow.begin(), arow.end(), 0.0);
+        std::fill(arow.data(), arow.data() + 2 * w, 0.0);
         auto AR = [&](int row, int col) -> double& { return arow[static_cast<size_t>(row) * w + col]; };
         AR(0, 0) = 1.0;
         for (int k = 1; k <= dmax; ++k) {

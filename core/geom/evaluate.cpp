@@ -8,6 +8,7 @@
 
 #include "core/geom/basis.hpp"
 #include "core/geom/knots.hpp"
+#include "core/geom/small_buffer.hpp"
 
 namespace isoparm::geom {
 
@@ -29,7 +30,7 @@ constexpr double degenerate_ratio = 1e-10;
 std::optional<std::vector<glm::dvec3>> curve_derivatives(const Curve& c, double t, int d) {
     const int p = c.degree, n = c.count();
     const int span = find_span(c.knots, p, n, t);
-    std::vector<double> ders(static_cast<size_t>(d + 1) * (p + 1));
+    SmallBuffer<double, 64> ders(static_cast<size_t>(d + 1) * (p + 1));
     ders_basis_funs(span, t, p, d, c.knots, ders.data());
     // A3.2 on homogeneous points: A^(k) and w^(k).
     std::vector<HPoint> Aw(d + 1, HPoint(0.0));
@@ -58,13 +59,13 @@ std::optional<SurfaceDerivatives> surface_derivatives(const Surface& s, double u
     const int p = s.degree_u, q = s.degree_v;
     const int su = find_span(s.knots_u, p, s.n_u, u);
     const int sv = find_span(s.knots_v, q, s.n_v, v);
-    std::vector<double> Nu(static_cast<size_t>(d + 1) * (p + 1)),
+    SmallBuffer<double, 64> Nu(static_cast<size_t>(d + 1) * (p + 1)),
         Nv(static_cast<size_t>(d + 1) * (q + 1));
     ders_basis_funs(su, u, p, d, s.knots_u, Nu.data());
     ders_basis_funs(sv, v, q, d, s.knots_v, Nv.data());
     // A3.6 on homogeneous points.
     HPoint Aw[max_derivative_order + 1][max_derivative_order + 1] = {};
-    std::vector<HPoint> temp(q + 1);
+    SmallBuffer<HPoint, 16> temp(static_cast<size_t>(q) + 1);
     for (int k = 0; k <= d; ++k) {
         for (int b = 0; b <= q; ++b) {
             temp[b] = HPoint(0.0);

@@ -19,7 +19,7 @@ struct RowArgs {
     // The row's vertices as x, y, z triples, indexed by sample column. Plain doubles: the
     // AVX2 build must not instantiate inline library code (an ODR hazard across builds).
     double* positions;
-    double* normals;
+    double* normals; // null: positions only (no derivatives are formed)
     std::uint8_t* status; // out: 0 done, 1 degenerate normal, 2 point does not exist
 };
 

@@ -10,6 +10,20 @@ typedef double v4d __attribute__((vector_size(32)));
 inline void load4(v4d& v, const double* p) { __builtin_memcpy(&v, p, sizeof v); }
 
 template <int Cols>
+inline void contract_point(const isoparm::geom::kernel::RowArgs& a, int j, v4d& A) {
+    const int cols = Cols > 0 ? Cols : a.q + 1;
+    const double* N = a.N + static_cast<long>(j) * cols;
+    const double* Q = a.Q + 4L * a.first[j];
+    v4d s = {0, 0, 0, 0};
+    for (int r = 0; r < cols; ++r) {
+        v4d q;
+        load4(q, Q + 4 * r);
+        s += N[r] * q;
+    }
+    A = s;
+}
+
+template <int Cols>
 inline void contract(const isoparm::geom::kernel::RowArgs& a, int j, v4d& A, v4d& Au, v4d& Av) {
     const int cols = Cols > 0 ? Cols : a.q + 1;
     const double* N = a.N + static_cast<long>(j) * cols;
@@ -32,8 +46,27 @@ inline void contract(const isoparm::geom::kernel::RowArgs& a, int j, v4d& A, v4d
 
 // S = A / w, S_u = (A_u - w_u S) / w, S_v likewise (A4.4 to first order); the normal is
 // degenerate where |S_u x S_v| < 1e-10 max(|S_u|, |S_v|)^2 (as normal_from_derivatives).
+template <int Cols> void positions_impl(const isoparm::geom::kernel::RowArgs& a) {
+    using namespace isoparm::geom::kernel;
+    for (int j = a.j0; j <= a.j1; ++j) {
+        v4d A;
+        contract_point<Cols>(a, j, A);
+        if (A[3] == 0.0) {
+            a.status[j] = vertex_missing;
+            continue;
+        }
+        const double inv = 1.0 / A[3];
+        double* P = a.positions + 3L * j;
+        P[0] = A[0] * inv;
+        P[1] = A[1] * inv;
+        P[2] = A[2] * inv;
+        a.status[j] = vertex_ok;
+    }
+}
+
 template <int Cols> void row_impl(const isoparm::geom::kernel::RowArgs& a) {
     using namespace isoparm::geom::kernel;
+    if (!a.normals) return positions_impl<Cols>(a);
     for (int j = a.j0; j <= a.j1; ++j) {
         v4d A, Au, Av;
         contract<Cols>(a, j, A, Au, Av);

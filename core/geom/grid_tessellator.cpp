@@ -43,22 +43,21 @@ std::pair<int, int> touching(const GridTessellator::Table& t, int i) {
     return {lo, hi};
 }
 
+// Q_j = sum_r N_r Pw[row0 + r][j] (and dQ with N'_r when derivatives are wanted).
 void contract_rows(const double* Nu, const double* dNu, const double* Pw, int p, int n_v, int j0,
-              int j1, double* Q, double* dQ) {
+                   int j1, double* Q, double* dQ) {
     // Pw rows are n_v * 4 doubles; row r of the span starts at Pw + r * n_v * 4.
     for (int j = j0; j <= j1; ++j) {
         double a[4] = {0, 0, 0, 0}, b[4] = {0, 0, 0, 0};
         for (int r = 0; r <= p; ++r) {
             const double* P = Pw + (static_cast<size_t>(r) * n_v + j) * 4;
-            for (int c = 0; c < 4; ++c) {
-                a[c] += Nu[r] * P[c];
-                b[c] += dNu[r] * P[c];
-            }
+            for (int c = 0; c < 4; ++c) a[c] += Nu[r] * P[c];
+            if (dQ)
+                for (int c = 0; c < 4; ++c) b[c] += dNu[r] * P[c];
         }
-        for (int c = 0; c < 4; ++c) {
-            Q[4 * j + c] = a[c];
-            dQ[4 * j + c] = b[c];
-        }
+        for (int c = 0; c < 4; ++c) Q[4 * j + c] = a[c];
+        if (dQ)
+            for (int c = 0; c < 4; ++c) dQ[4 * j + c] = b[c];
     }
 }
 
@@ -95,10 +94,13 @@ bool GridTessellator::fits(const Surface& s, int samples_u, int samples_v) const
 std::pair<int, int> GridTessellator::rows_touching(int i) const { return touching(tu_, i); }
 std::pair<int, int> GridTessellator::columns_touching(int j) const { return touching(tv_, j); }
 
-void GridTessellator::evaluate_block(const Surface& s, const std::vector<double>& Pw, Mesh& mesh,
-                                     int i0, int i1, int j0, int j1) const {
+void GridTessellator::evaluate_block(const Surface& s, const std::vector<double>& Pw,
+                                     glm::dvec3* positions, glm::dvec3* normals,
+                                     std::vector<std::uint8_t>& exists, int i0, int i1, int j0,
+                                     int j1) const {
     const int p = degree_u_, q = degree_v_;
     const int sv = samples_v();
+    const size_t count = static_cast<size_t>(samples_u()) * sv;
     // Control columns the sample columns j0..j1 need.
     const int c0 = tv_.first[j0], c1 = tv_.first[j1] + q;
     std::vector<double> Q(static_cast<size_t>(n_v_) * 4), dQ(static_cast<size_t>(n_v_) * 4);
@@ -108,52 +110,75 @@ void GridTessellator::evaluate_block(const Surface& s, const std::vector<double>
         const double* Nu = &tu_.N[static_cast<size_t>(i) * (p + 1)];
         const double* dNu = &tu_.dN[static_cast<size_t>(i) * (p + 1)];
         contract_rows(Nu, dNu, &Pw[static_cast<size_t>(tu_.first[i]) * n_v_ * 4], p, n_v_, c0, c1,
-                      Q.data(), dQ.data());
+                      Q.data(), normals ? dQ.data() : nullptr);
         const size_t row = static_cast<size_t>(i) * sv;
         const kernel::RowArgs args{tv_.N.data(), tv_.dN.data(), tv_.first.data(), Q.data(),
-                                   dQ.data(), q, j0, j1,
-                                   &mesh.positions[row].x, &mesh.normals[row].x, status.data()};
+                                   dQ.data(), q, j0, j1, &positions[row].x,
+                                   normals ? &normals[row].x : nullptr, status.data()};
         kernel::row(args);
         for (int j = j0; j <= j1; ++j) {
             const size_t k = row + j;
             if (status[j] == kernel::vertex_missing) {
-                if (mesh.exists.empty()) mesh.exists.assign(mesh.positions.size(), 1);
-                mesh.exists[k] = 0;
-                mesh.positions[k] = glm::dvec3(0.0);
-                mesh.normals[k] = glm::dvec3(0.0, 0.0, 1.0);
+                if (exists.empty()) exists.assign(count, 1);
+                exists[k] = 0;
+                positions[k] = glm::dvec3(0.0);
+                if (normals) normals[k] = glm::dvec3(0.0, 0.0, 1.0);
                 continue;
             }
-            if (!mesh.exists.empty()) mesh.exists[k] = 1;
+            if (!exists.empty()) exists[k] = 1;
             if (status[j] == kernel::vertex_degenerate)
-                mesh.normals[k] = surface_normal_or_limit(s, us_[i], vs_[j]);
+                normals[k] = surface_normal_or_limit(s, us_[i], vs_[j]);
         }
     }
 }
 
-void GridTessellator::evaluate(const Surface& s, Mesh& mesh, int threads) const {
+void GridTessellator::run_rows(const Surface& s, glm::dvec3* positions, glm::dvec3* normals,
+                               std::vector<std::uint8_t>& exists, int threads) const {
     const int su = samples_u(), sv = samples_v();
     const size_t count = static_cast<size_t>(su) * sv;
-    mesh.positions.resize(count);
-    mesh.normals.resize(count);
-    mesh.exists.clear();
+    exists.clear();
     const std::vector<double> Pw = homogeneous_net(s);
-    // Threads write disjoint rows; `exists` is allocated up front when any thread may need it.
     threads = std::clamp(threads, 1, su);
     if (threads == 1) {
-        evaluate_block(s, Pw, mesh, 0, su - 1, 0, sv - 1);
-    } else {
-        mesh.exists.assign(count, 1);
+        evaluate_block(s, Pw, positions, normals, exists, 0, su - 1, 0, sv - 1);
+        return;
+    }
+    // Threads write disjoint rows; `exists` is allocated up front so no thread resizes it.
+    exists.assign(count, 1);
+    {
         std::vector<std::jthread> pool;
         for (int t = 0; t < threads; ++t) {
             const int i0 = su * t / threads, i1 = su * (t + 1) / threads - 1;
             if (i0 > i1) continue;
-            pool.emplace_back([&, i0, i1] { evaluate_block(s, Pw, mesh, i0, i1, 0, sv - 1); });
+            pool.emplace_back([&, i0, i1] {
+                evaluate_block(s, Pw, positions, normals, exists, i0, i1, 0, sv - 1);
+            });
         }
-        pool.clear(); // joins
-        if (std::all_of(mesh.exists.begin(), mesh.exists.end(), [](auto e) { return e != 0; }))
-            mesh.exists.clear();
-    }
-    build_grid_triangles(mesh, su, sv);
+    } // joins
+    if (std::all_of(exists.begin(), exists.end(), [](auto e) { return e != 0; })) exists.clear();
+}
+
+void GridTessellator::evaluate(const Surface& s, Mesh& mesh, int threads) const {
+    const size_t count = static_cast<size_t>(samples_u()) * samples_v();
+    mesh.positions.resize(count);
+    mesh.normals.resize(count);
+    run_rows(s, mesh.positions.data(), mesh.normals.data(), mesh.exists, threads);
+    build_grid_triangles(mesh, samples_u(), samples_v());
+}
+
+void GridTessellator::evaluate_vertices(const Surface& s, std::vector<glm::dvec3>& positions,
+                                        std::vector<glm::dvec3>& normals,
+                                        std::vector<std::uint8_t>& exists, int threads) const {
+    const size_t count = static_cast<size_t>(samples_u()) * samples_v();
+    positions.resize(count);
+    normals.resize(count);
+    run_rows(s, positions.data(), normals.data(), exists, threads);
+}
+
+void GridTessellator::evaluate_positions(const Surface& s, std::vector<glm::dvec3>& positions,
+                                         std::vector<std::uint8_t>& exists, int threads) const {
+    positions.resize(static_cast<size_t>(samples_u()) * samples_v());
+    run_rows(s, positions.data(), nullptr, exists, threads);
 }
 
 void GridTessellator::update_control_point(const Surface& s, Mesh& mesh, int i, int j) const {
@@ -164,7 +189,7 @@ void GridTessellator::update_control_point(const Surface& s, Mesh& mesh, int i, 
     std::vector<std::uint8_t> before;
     if (had_gaps) before = mesh.exists;
     const std::vector<double> Pw = homogeneous_net(s);
-    evaluate_block(s, Pw, mesh, i0, i1, j0, j1);
+    evaluate_block(s, Pw, mesh.positions.data(), mesh.normals.data(), mesh.exists, i0, i1, j0, j1);
     if (mesh.exists != before) {
         if (std::all_of(mesh.exists.begin(), mesh.exists.end(), [](auto e) { return e != 0; }))
             mesh.exists.clear();

@@ -23,6 +23,17 @@ public:
     // to threads == 1 (every vertex is computed by the same instructions).
     void evaluate(const Surface& s, Mesh& mesh, int threads = 1) const;
 
+    // Positions and unit normals without the triangles (what a renderer re-uploads when only
+    // control points changed; also the benchmark's positions + normals case).
+    void evaluate_vertices(const Surface& s, std::vector<glm::dvec3>& positions,
+                           std::vector<glm::dvec3>& normals, std::vector<std::uint8_t>& exists,
+                           int threads = 1) const;
+
+    // Positions only (no derivatives, no normals, no triangles): exists gets 0 where the
+    // point does not exist (and is left empty when every point exists).
+    void evaluate_positions(const Surface& s, std::vector<glm::dvec3>& positions,
+                            std::vector<std::uint8_t>& exists, int threads = 1) const;
+
     // After control point (i, j) moved or changed weight: recompute only the vertices its
     // basis function's support touches (local support). Rebuilds the triangles only when a
     // vertex starts or stops existing.
@@ -44,8 +55,12 @@ public:
     };
 
 private:
-    void evaluate_block(const Surface& s, const std::vector<double>& Pw, Mesh& mesh, int i0,
-                        int i1, int j0, int j1) const;
+    // Rows i0..i1, columns j0..j1; normals == nullptr evaluates positions only.
+    void evaluate_block(const Surface& s, const std::vector<double>& Pw, glm::dvec3* positions,
+                        glm::dvec3* normals, std::vector<std::uint8_t>& exists, int i0, int i1,
+                        int j0, int j1) const;
+    void run_rows(const Surface& s, glm::dvec3* positions, glm::dvec3* normals,
+                  std::vector<std::uint8_t>& exists, int threads) const;
 
     int degree_u_ = 0, degree_v_ = 0, n_u_ = 0, n_v_ = 0;
     Knots knots_u_, knots_v_;

@@ -186,6 +186,24 @@ HCurve elevate_clamped(const HCurve& in, int t) {
     return out;
 }
 
+// A5.9 needs interior multiplicities <= p. At a knot of multiplicity p + 1 (where the curve
+// may jump) the curve is cut, the pieces are elevated alone and joined again with the knot at
+// the new full multiplicity p + t + 1.
+HCurve elevate_any(const HCurve& in, int t) {
+    const int n = in.n();
+    for (const KnotRun& run : knot_runs(in.U)) {
+        const bool interior = run.value > in.U[in.p] && run.value < in.U[n];
+        if (!interior || run.multiplicity <= in.p) continue;
+        const HCurve left = elevate_any(part_before(in, run.value), t);
+        const HCurve right = elevate_any(part_after(in, run.value), t);
+        HCurve out = left;
+        out.U.insert(out.U.end(), right.U.begin() + (right.p + 1), right.U.end());
+        out.Pw.insert(out.Pw.end(), right.Pw.begin(), right.Pw.end());
+        return out;
+    }
+    return elevate_clamped(in, t);
+}
+
 // Runs `algorithm` on the curve in homogeneous form and converts back; a zero homogeneous
 // point takes its position from the same algorithm on unit weights.
 template <class Algorithm> Expected<Curve> run_homogeneous(const Curve& c, Algorithm algorithm) {
@@ -310,7 +328,7 @@ Expected<Curve> clamp(const Curve& c) {
 Expected<Curve> elevate_degree(const Curve& c, int times) {
     if (Status s = check_times(times); !s) return s.error();
     return run_homogeneous(
-        c, [&](HCurve h) { return elevate_clamped(clamp_homogeneous(std::move(h)), times); });
+        c, [&](HCurve h) { return elevate_any(clamp_homogeneous(std::move(h)), times); });
 }
 
 Expected<Surface> elevate_degree(const Surface& s, Dir dir, int times) {

@@ -78,3 +78,16 @@ TEST(GridTessellator, PointsThatDoNotExistLeaveGaps) {
     EXPECT_TRUE(m.exists.empty());
     EXPECT_EQ(m.triangles.size(), 8u);
 }
+
+TEST(GridTessellator, PositionsOnlyEqualTheFullPass) {
+    RandomGeometry g(64);
+    const Surface s = g.surface(3, 2, 9, 7, true);
+    const GridTessellator t(s, 33, 21);
+    Mesh full;
+    t.evaluate(s, full);
+    std::vector<glm::dvec3> positions;
+    std::vector<std::uint8_t> exists;
+    t.evaluate_positions(s, positions, exists, 2);
+    EXPECT_EQ(positions, full.positions);
+    EXPECT_TRUE(exists.empty());
+}

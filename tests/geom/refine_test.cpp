@@ -117,7 +117,7 @@ TEST(Refine, ElevationKeepsShapeClampedAndUnclamped) {
     for (int trial = 0; trial < 120; ++trial) {
         const int p = g.integer(1, 6);
         const bool clamped = trial % 3 != 0;
-        const Curve c = g.curve(p, g.integer(p + 1, p + 7), trial % 2 == 0, clamped, p);
+        const Curve c = g.curve(p, g.integer(p + 1, p + 7), trial % 2 == 0, clamped, p + 1);
         const int times = g.integer(1, 3);
         auto r = elevate_degree(c, times);
         ASSERT_TRUE(r.ok()) << r.error().message;
@@ -236,4 +236,24 @@ TEST(Refine, PointAtInfinityIsAWeightsError) {
     auto r = insert_knot(c, 0.5);
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.error().code, ErrorCode::weights);
+}
+
+TEST(Refine, ElevationAcrossAKnotOfFullMultiplicity) {
+    // Found by the constructions work: an interior knot at multiplicity p + 1 overflowed A5.9.
+    Curve c;
+    c.degree = 1;
+    c.knots = {0, 0, 0.5, 0.5, 1, 1};
+    c.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {2, 1, 0}};
+    c.weights.assign(4, 1.0);
+    auto r = elevate_degree(c, 2);
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    EXPECT_EQ(r->degree, 3);
+    EXPECT_EQ(multiplicity(r->knots, 0.5), 4);
+    ASSERT_TRUE(validate_curve(*r).ok());
+    for (double t : {0.0, 0.2, 0.49, 0.5, 0.7, 1.0}) {
+        EXPECT_LT(glm::length(*curve_point(*r, t) - *curve_point(c, t)), 1e-14) << t;
+    }
+    // Left limit at the jump is the first piece's end point.
+    const auto left = *curve_point(*r, 0.5 - 1e-12);
+    EXPECT_LT(glm::length(left - glm::dvec3(1, 0, 0)), 1e-9);
 }

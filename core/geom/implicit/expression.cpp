@@ -1,5 +1,4 @@
-// Hand-written recursive-descent parser for implicit-surface expressions, compiled to postfix
-// stack-machine code with constant folding; scalar, batch and dual-number (gradient) evaluators.
+// The expression parser (recursive descent) and its value, batch and dual-number evaluators.
 #include "core/geom/implicit/expression.hpp"
 
 #include <algorithm>
@@ -67,26 +66,43 @@ inline double powi(double a, int n) {
 
 inline double apply_unary(std::uint8_t op, double a) {
     switch (op) {
-    case op_neg: return -a;
-    case op_sin: return std::sin(a);
-    case op_cos: return std::cos(a);
-    case op_tan: return std::tan(a);
-    case op_exp: return std::exp(a);
-    case op_log: return std::log(a);
-    case op_sqrt: return std::sqrt(a);
-    case op_abs: return std::fabs(a);
-    default: assert(false && "not a unary op"); return a;
+    case op_neg:
+        return -a;
+    case op_sin:
+        return std::sin(a);
+    case op_cos:
+        return std::cos(a);
+    case op_tan:
+        return std::tan(a);
+    case op_exp:
+        return std::exp(a);
+    case op_log:
+        return std::log(a);
+    case op_sqrt:
+        return std::sqrt(a);
+    case op_abs:
+        return std::fabs(a);
+    default:
+        assert(false && "not a unary op");
+        return a;
     }
 }
 
 inline double apply_binary(std::uint8_t op, double a, double b) {
     switch (op) {
-    case op_add: return a + b;
-    case op_sub: return a - b;
-    case op_mul: return a * b;
-    case op_div: return a / b;
-    case op_pow: return std::pow(a, b);
-    default: assert(false && "not a binary op"); return a;
+    case op_add:
+        return a + b;
+    case op_sub:
+        return a - b;
+    case op_mul:
+        return a * b;
+    case op_div:
+        return a / b;
+    case op_pow:
+        return std::pow(a, b);
+    default:
+        assert(false && "not a binary op");
+        return a;
     }
 }
 
@@ -109,9 +125,15 @@ const FunctionName* find_function(std::string_view name) {
     return nullptr;
 }
 
-bool is_name_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
-bool is_name_char(char c) { return is_name_start(c) || (c >= '0' && c <= '9'); }
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
+bool is_name_start(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+}
+bool is_name_char(char c) {
+    return is_name_start(c) || (c >= '0' && c <= '9');
+}
+bool is_digit(char c) {
+    return c >= '0' && c <= '9';
+}
 
 struct Token {
     enum Kind { number, name, plus, minus, star, slash, caret, lparen, rparen, other, end };
@@ -159,8 +181,8 @@ private:
 
     void next() {
         std::size_t i = pos_;
-        while (i < text_.size() && (text_[i] == ' ' || text_[i] == '\t' || text_[i] == '\n' ||
-                                    text_[i] == '\r'))
+        while (i < text_.size() &&
+               (text_[i] == ' ' || text_[i] == '\t' || text_[i] == '\n' || text_[i] == '\r'))
             ++i;
         Token t;
         t.begin = i;
@@ -178,13 +200,27 @@ private:
         } else {
             t.end_ = i + 1;
             switch (text_[i]) {
-            case '+': t.kind = Token::plus; break;
-            case '-': t.kind = Token::minus; break;
-            case '*': t.kind = Token::star; break;
-            case '/': t.kind = Token::slash; break;
-            case '^': t.kind = Token::caret; break;
-            case '(': t.kind = Token::lparen; break;
-            case ')': t.kind = Token::rparen; break;
+            case '+':
+                t.kind = Token::plus;
+                break;
+            case '-':
+                t.kind = Token::minus;
+                break;
+            case '*':
+                t.kind = Token::star;
+                break;
+            case '/':
+                t.kind = Token::slash;
+                break;
+            case '^':
+                t.kind = Token::caret;
+                break;
+            case '(':
+                t.kind = Token::lparen;
+                break;
+            case ')':
+                t.kind = Token::rparen;
+                break;
             default: {
                 // One whole UTF-8 character, so the message shows what the user typed.
                 t.kind = Token::other;
@@ -227,7 +263,8 @@ private:
         // from_chars is locale-independent, unlike strtod; it does not accept a leading '.'.
         std::string buffer;
         if (*first == '.') {
-            buffer = "0" + std::string(first, last);
+            buffer.push_back('0');
+            buffer.append(first, last);
             first = buffer.data();
             last = buffer.data() + buffer.size();
         }
@@ -323,7 +360,8 @@ private:
             if (name == "z") return push(op_z);
             for (std::size_t k = 0; k < params_.size(); ++k)
                 if (name == params_[k]) return push(op_param, static_cast<std::int32_t>(k));
-            if (tok_.kind == Token::lparen) fail("unknown function '" + std::string(name) + "'", at);
+            if (tok_.kind == Token::lparen)
+                fail("unknown function '" + std::string(name) + "'", at);
             fail("unknown name '" + std::string(name) + "'", at);
         }
         case Token::lparen: {
@@ -334,7 +372,8 @@ private:
             --depth_;
             return;
         }
-        default: fail_unexpected();
+        default:
+            fail_unexpected();
         }
     }
 
@@ -345,8 +384,7 @@ private:
 
     void enter(std::size_t at) {
         if (++depth_ > max_nesting)
-            fail("expression nested more than " + std::to_string(max_nesting) + " levels deep",
-                 at);
+            fail("expression nested more than " + std::to_string(max_nesting) + " levels deep", at);
     }
 
     void push(Op op, std::int32_t n = 0, double c = 0.0) {
@@ -383,10 +421,14 @@ private:
             double c = code_.back().c;
             code_.pop_back();
             switch (op) {
-            case op_add: return push(op_add_c, 0, c);
-            case op_sub: return push(op_sub_c, 0, c);
-            case op_mul: return push(op_mul_c, 0, c);
-            case op_div: return push(op_div_c, 0, c);
+            case op_add:
+                return push(op_add_c, 0, c);
+            case op_sub:
+                return push(op_sub_c, 0, c);
+            case op_mul:
+                return push(op_mul_c, 0, c);
+            case op_div:
+                return push(op_div_c, 0, c);
             default:
                 if (is_small_integer(c)) return push(op_pow_int, static_cast<std::int32_t>(c), c);
                 return push(op_pow_c, 0, c);
@@ -396,10 +438,14 @@ private:
             double c = code_[lhs].c;
             code_.erase(code_.begin() + static_cast<std::ptrdiff_t>(lhs));
             switch (op) {
-            case op_add: return push(op_add_c, 0, c); // c + a == a + c exactly
-            case op_sub: return push(op_rsub_c, 0, c);
-            case op_mul: return push(op_mul_c, 0, c);
-            default: return push(op_rdiv_c, 0, c);
+            case op_add:
+                return push(op_add_c, 0, c); // c + a == a + c exactly
+            case op_sub:
+                return push(op_rsub_c, 0, c);
+            case op_mul:
+                return push(op_mul_c, 0, c);
+            default:
+                return push(op_rdiv_c, 0, c);
             }
         }
         push(op);
@@ -420,26 +466,326 @@ int stack_delta(std::uint8_t op) {
     case op_x:
     case op_y:
     case op_z:
-    case op_param: return 1;
+    case op_param:
+        return 1;
     case op_add:
     case op_sub:
     case op_mul:
     case op_div:
-    case op_pow: return -1;
-    default: return 0;
+    case op_pow:
+        return -1;
+    default:
+        return 0;
     }
 }
 
-// Forward-mode dual number: a value and its gradient with respect to (x, y, z).
-struct Dual {
+// One unary or constant-operand instruction on a value (the same arithmetic everywhere).
+inline double apply_instruction(const Program::Instruction& in, double a) {
+    switch (in.op) {
+    case op_add_c:
+        return a + in.c;
+    case op_sub_c:
+        return a - in.c;
+    case op_rsub_c:
+        return in.c - a;
+    case op_mul_c:
+        return a * in.c;
+    case op_div_c:
+        return a / in.c;
+    case op_rdiv_c:
+        return in.c / a;
+    case op_pow_int:
+        return powi(a, in.n);
+    case op_pow_c:
+        return std::pow(a, in.c);
+    default:
+        return apply_unary(in.op, a);
+    }
+}
+
+// The batch kernels: one switch, then a loop over the lanes. m is a multiple of 4 (the lanes
+// are padded) and each step handles four independent lanes, which GCC's -O2 turns into SIMD
+// instructions (straight-line vectorization) with no remainder loop.
+template <class F> inline void for_lanes(std::size_t m, F f) {
+    for (std::size_t i = 0; i < m; i += 4) {
+        f(i);
+        f(i + 1);
+        f(i + 2);
+        f(i + 3);
+    }
+}
+
+void binary_lanes(std::uint8_t op, double* __restrict a, const double* __restrict b,
+                  std::size_t m) {
+    switch (op) {
+    case op_add:
+        for_lanes(m, [=](std::size_t i) { a[i] += b[i]; });
+        break;
+    case op_sub:
+        for_lanes(m, [=](std::size_t i) { a[i] -= b[i]; });
+        break;
+    case op_mul:
+        for_lanes(m, [=](std::size_t i) { a[i] *= b[i]; });
+        break;
+    case op_div:
+        for_lanes(m, [=](std::size_t i) { a[i] /= b[i]; });
+        break;
+    default:
+        for_lanes(m, [=](std::size_t i) { a[i] = std::pow(a[i], b[i]); });
+        break;
+    }
+}
+
+void binary_lane_value(std::uint8_t op, double* __restrict a, double b, std::size_t m) {
+    switch (op) {
+    case op_add:
+        for_lanes(m, [=](std::size_t i) { a[i] += b; });
+        break;
+    case op_sub:
+        for_lanes(m, [=](std::size_t i) { a[i] -= b; });
+        break;
+    case op_mul:
+        for_lanes(m, [=](std::size_t i) { a[i] *= b; });
+        break;
+    case op_div:
+        for_lanes(m, [=](std::size_t i) { a[i] /= b; });
+        break;
+    default:
+        for_lanes(m, [=](std::size_t i) { a[i] = std::pow(a[i], b); });
+        break;
+    }
+}
+
+void binary_value_lane(std::uint8_t op, double a, const double* __restrict b,
+                       double* __restrict out, std::size_t m) {
+    switch (op) {
+    case op_add:
+        for_lanes(m, [=](std::size_t i) { out[i] = a + b[i]; });
+        break;
+    case op_sub:
+        for_lanes(m, [=](std::size_t i) { out[i] = a - b[i]; });
+        break;
+    case op_mul:
+        for_lanes(m, [=](std::size_t i) { out[i] = a * b[i]; });
+        break;
+    case op_div:
+        for_lanes(m, [=](std::size_t i) { out[i] = a / b[i]; });
+        break;
+    default:
+        for_lanes(m, [=](std::size_t i) { out[i] = std::pow(a, b[i]); });
+        break;
+    }
+}
+
+void unary_lane(const Program::Instruction& in, double* __restrict a, std::size_t m) {
+    const double c = in.c;
+    switch (in.op) {
+    case op_add_c:
+        for_lanes(m, [=](std::size_t i) { a[i] += c; });
+        break;
+    case op_sub_c:
+        for_lanes(m, [=](std::size_t i) { a[i] -= c; });
+        break;
+    case op_rsub_c:
+        for_lanes(m, [=](std::size_t i) { a[i] = c - a[i]; });
+        break;
+    case op_mul_c:
+        for_lanes(m, [=](std::size_t i) { a[i] *= c; });
+        break;
+    case op_div_c:
+        for_lanes(m, [=](std::size_t i) { a[i] /= c; });
+        break;
+    case op_rdiv_c:
+        for_lanes(m, [=](std::size_t i) { a[i] = c / a[i]; });
+        break;
+    case op_neg:
+        for_lanes(m, [=](std::size_t i) { a[i] = -a[i]; });
+        break;
+    case op_pow_int:
+        if (in.n == 2)
+            for_lanes(m, [=](std::size_t i) { a[i] = a[i] * a[i]; });
+        else if (in.n == 3)
+            for_lanes(m, [=](std::size_t i) { a[i] = a[i] * (a[i] * a[i]); });
+        else
+            for_lanes(m, [=](std::size_t i) { a[i] = powi(a[i], in.n); });
+        break;
+    default:
+        for_lanes(m, [=](std::size_t i) { a[i] = apply_instruction(in, a[i]); });
+        break;
+    }
+}
+
+// Forward-mode automatic differentiation: a value and N tangent components carried through
+// every operation by the chain rule (N = 3: the gradient; N = 1: a directional derivative).
+// The value part uses exactly the arithmetic of value(), so both give the same bits.
+// Three tangents are stored as four (the last is always 0) so that every operation handles the
+// tangents as whole SIMD pairs; mixing pair and single accesses to the same memory makes the
+// CPU stall on store forwarding, which at -O3 cost more than the arithmetic.
+template <int N> constexpr int lanes_for = N == 3 ? 4 : N;
+
+template <int N> struct Dual {
+    double d[lanes_for<N>];
     double v;
-    double dx, dy, dz;
 };
 
-inline void scale(Dual& a, double s) {
-    a.dx *= s;
-    a.dy *= s;
-    a.dz *= s;
+template <int N>
+double evaluate_dual(const std::vector<Program::Instruction>& code, const glm::dvec3& p,
+                     const double (&seed)[3][N], const double* params, double (&tangent)[N]) {
+    constexpr int L = lanes_for<N>;
+    Dual<N> stack[stack_capacity];
+    Dual<N>* end = stack; // one past the top of the stack
+    auto push_constant = [&](double v) {
+        end->v = v;
+        for (int i = 0; i < L; ++i) end->d[i] = 0.0;
+        ++end;
+    };
+    auto push_variable = [&](double v, const double(&d)[N]) {
+        end->v = v;
+        for (int i = 0; i < L; ++i) end->d[i] = i < N ? d[i] : 0.0;
+        ++end;
+    };
+    auto scale = [&](double k) {
+        for (int i = 0; i < L; ++i) end[-1].d[i] *= k;
+    };
+    for (const Program::Instruction& in : code) {
+        switch (in.op) {
+        case op_const:
+            push_constant(in.c);
+            break;
+        case op_x:
+            push_variable(p.x, seed[0]);
+            break;
+        case op_y:
+            push_variable(p.y, seed[1]);
+            break;
+        case op_z:
+            push_variable(p.z, seed[2]);
+            break;
+        case op_param:
+            push_constant(params[in.n]);
+            break;
+        case op_add: {
+            const Dual<N>& r = *--end;
+            for (int i = 0; i < L; ++i) end[-1].d[i] += r.d[i];
+            end[-1].v += r.v;
+            break;
+        }
+        case op_sub: {
+            const Dual<N>& r = *--end;
+            for (int i = 0; i < L; ++i) end[-1].d[i] -= r.d[i];
+            end[-1].v -= r.v;
+            break;
+        }
+        case op_mul: {
+            const Dual<N>& r = *--end;
+            for (int i = 0; i < L; ++i) end[-1].d[i] = end[-1].d[i] * r.v + end[-1].v * r.d[i];
+            end[-1].v *= r.v;
+            break;
+        }
+        case op_div: {
+            const Dual<N>& r = *--end;
+            const double v = end[-1].v / r.v;
+            for (int i = 0; i < L; ++i) end[-1].d[i] = (end[-1].d[i] - v * r.d[i]) / r.v;
+            end[-1].v = v;
+            break;
+        }
+        case op_pow: {
+            // d(a^b) = b a^(b-1) da + a^b log(a) db; the log term only where b varies, so a
+            // constant exponent does not turn the derivative into NaN for a <= 0.
+            const Dual<N>& r = *--end;
+            const double v = std::pow(end[-1].v, r.v);
+            const double da = r.v * std::pow(end[-1].v, r.v - 1.0);
+            bool varies = false;
+            for (int i = 0; i < L; ++i) varies = varies || r.d[i] != 0.0;
+            const double db = varies ? v * std::log(end[-1].v) : 0.0;
+            for (int i = 0; i < L; ++i)
+                end[-1].d[i] = end[-1].d[i] * da + (varies ? r.d[i] * db : 0.0);
+            end[-1].v = v;
+            break;
+        }
+        case op_add_c:
+            end[-1].v += in.c;
+            break;
+        case op_sub_c:
+            end[-1].v -= in.c;
+            break;
+        case op_rsub_c:
+            end[-1].v = in.c - end[-1].v;
+            scale(-1.0);
+            break;
+        case op_mul_c:
+            end[-1].v *= in.c;
+            scale(in.c);
+            break;
+        case op_div_c:
+            end[-1].v /= in.c;
+            for (int i = 0; i < L; ++i) end[-1].d[i] /= in.c;
+            break;
+        case op_rdiv_c: {
+            const double v = in.c / end[-1].v;
+            scale(-v / end[-1].v);
+            end[-1].v = v;
+            break;
+        }
+        case op_pow_int:
+            if (in.n == 2) {
+                scale(2.0 * end[-1].v);
+                end[-1].v = end[-1].v * end[-1].v;
+            } else {
+                scale(in.n == 0 ? 0.0 : in.n * powi(end[-1].v, in.n - 1));
+                end[-1].v = powi(end[-1].v, in.n);
+            }
+            break;
+        case op_pow_c:
+            scale(in.c * std::pow(end[-1].v, in.c - 1.0));
+            end[-1].v = std::pow(end[-1].v, in.c);
+            break;
+        case op_neg:
+            end[-1].v = -end[-1].v;
+            scale(-1.0);
+            break;
+        case op_sin:
+            scale(std::cos(end[-1].v));
+            end[-1].v = std::sin(end[-1].v);
+            break;
+        case op_cos:
+            scale(-std::sin(end[-1].v));
+            end[-1].v = std::cos(end[-1].v);
+            break;
+        case op_tan: {
+            const double t = std::tan(end[-1].v);
+            scale(1.0 + t * t);
+            end[-1].v = t;
+            break;
+        }
+        case op_exp: {
+            const double e = std::exp(end[-1].v);
+            scale(e);
+            end[-1].v = e;
+            break;
+        }
+        case op_log:
+            scale(1.0 / end[-1].v);
+            end[-1].v = std::log(end[-1].v);
+            break;
+        case op_sqrt: {
+            const double r = std::sqrt(end[-1].v);
+            scale(0.5 / r);
+            end[-1].v = r;
+            break;
+        }
+        case op_abs:
+            // The derivative of |a| is sign(a), and 0 at a = 0 (a subgradient).
+            scale(end[-1].v > 0 ? 1.0 : (end[-1].v < 0 ? -1.0 : 0.0));
+            end[-1].v = std::fabs(end[-1].v);
+            break;
+        default:
+            assert(false && "unknown opcode");
+        }
+    }
+    assert(end == stack + 1);
+    for (int i = 0; i < N; ++i) tangent[i] = stack[0].d[i];
+    return stack[0].v;
 }
 
 } // namespace
@@ -487,25 +833,68 @@ double Program::value(const glm::dvec3& p, const double* params) const {
     int sp = 0;
     for (const Instruction& in : code_) {
         switch (in.op) {
-        case op_const: s[sp++] = in.c; break;
-        case op_x: s[sp++] = p.x; break;
-        case op_y: s[sp++] = p.y; break;
-        case op_z: s[sp++] = p.z; break;
-        case op_param: s[sp++] = params[in.n]; break;
-        case op_add: --sp; s[sp - 1] += s[sp]; break;
-        case op_sub: --sp; s[sp - 1] -= s[sp]; break;
-        case op_mul: --sp; s[sp - 1] *= s[sp]; break;
-        case op_div: --sp; s[sp - 1] /= s[sp]; break;
-        case op_pow: --sp; s[sp - 1] = std::pow(s[sp - 1], s[sp]); break;
-        case op_add_c: s[sp - 1] += in.c; break;
-        case op_sub_c: s[sp - 1] -= in.c; break;
-        case op_rsub_c: s[sp - 1] = in.c - s[sp - 1]; break;
-        case op_mul_c: s[sp - 1] *= in.c; break;
-        case op_div_c: s[sp - 1] /= in.c; break;
-        case op_rdiv_c: s[sp - 1] = in.c / s[sp - 1]; break;
-        case op_pow_int: s[sp - 1] = powi(s[sp - 1], in.n); break;
-        case op_pow_c: s[sp - 1] = std::pow(s[sp - 1], in.c); break;
-        default: s[sp - 1] = apply_unary(in.op, s[sp - 1]); break;
+        case op_const:
+            s[sp++] = in.c;
+            break;
+        case op_x:
+            s[sp++] = p.x;
+            break;
+        case op_y:
+            s[sp++] = p.y;
+            break;
+        case op_z:
+            s[sp++] = p.z;
+            break;
+        case op_param:
+            s[sp++] = params[in.n];
+            break;
+        case op_add:
+            --sp;
+            s[sp - 1] += s[sp];
+            break;
+        case op_sub:
+            --sp;
+            s[sp - 1] -= s[sp];
+            break;
+        case op_mul:
+            --sp;
+            s[sp - 1] *= s[sp];
+            break;
+        case op_div:
+            --sp;
+            s[sp - 1] /= s[sp];
+            break;
+        case op_pow:
+            --sp;
+            s[sp - 1] = std::pow(s[sp - 1], s[sp]);
+            break;
+        case op_add_c:
+            s[sp - 1] += in.c;
+            break;
+        case op_sub_c:
+            s[sp - 1] -= in.c;
+            break;
+        case op_rsub_c:
+            s[sp - 1] = in.c - s[sp - 1];
+            break;
+        case op_mul_c:
+            s[sp - 1] *= in.c;
+            break;
+        case op_div_c:
+            s[sp - 1] /= in.c;
+            break;
+        case op_rdiv_c:
+            s[sp - 1] = in.c / s[sp - 1];
+            break;
+        case op_pow_int:
+            s[sp - 1] = powi(s[sp - 1], in.n);
+            break;
+        case op_pow_c:
+            s[sp - 1] = std::pow(s[sp - 1], in.c);
+            break;
+        default:
+            s[sp - 1] = apply_unary(in.op, s[sp - 1]);
+            break;
         }
     }
     return s[0];
@@ -514,157 +903,21 @@ double Program::value(const glm::dvec3& p, const double* params) const {
 double Program::value_and_gradient(const glm::dvec3& p, glm::dvec3& gradient,
                                    const double* params) const {
     assert(params != nullptr || parameter_names_.empty());
-    Dual s[stack_capacity];
-    int sp = 0;
-    for (const Instruction& in : code_) {
-        switch (in.op) {
-        case op_const: s[sp++] = Dual{in.c, 0, 0, 0}; break;
-        case op_x: s[sp++] = Dual{p.x, 1, 0, 0}; break;
-        case op_y: s[sp++] = Dual{p.y, 0, 1, 0}; break;
-        case op_z: s[sp++] = Dual{p.z, 0, 0, 1}; break;
-        case op_param: s[sp++] = Dual{params[in.n], 0, 0, 0}; break;
-        case op_add: {
-            --sp;
-            Dual& a = s[sp - 1];
-            const Dual& b = s[sp];
-            a = Dual{a.v + b.v, a.dx + b.dx, a.dy + b.dy, a.dz + b.dz};
-            break;
-        }
-        case op_sub: {
-            --sp;
-            Dual& a = s[sp - 1];
-            const Dual& b = s[sp];
-            a = Dual{a.v - b.v, a.dx - b.dx, a.dy - b.dy, a.dz - b.dz};
-            break;
-        }
-        case op_mul: {
-            --sp;
-            Dual& a = s[sp - 1];
-            const Dual& b = s[sp];
-            a = Dual{a.v * b.v, a.dx * b.v + a.v * b.dx, a.dy * b.v + a.v * b.dy,
-                     a.dz * b.v + a.v * b.dz};
-            break;
-        }
-        case op_div: {
-            --sp;
-            Dual& a = s[sp - 1];
-            const Dual& b = s[sp];
-            const double v = a.v / b.v;
-            a = Dual{v, (a.dx - v * b.dx) / b.v, (a.dy - v * b.dy) / b.v, (a.dz - v * b.dz) / b.v};
-            break;
-        }
-        case op_pow: {
-            // d(a^b) = b a^(b-1) da + a^b log(a) db; the log term only where b varies, so a
-            // constant-like exponent does not turn the gradient into NaN for a <= 0.
-            --sp;
-            Dual& a = s[sp - 1];
-            const Dual& b = s[sp];
-            const double v = std::pow(a.v, b.v);
-            const double da = b.v * std::pow(a.v, b.v - 1.0);
-            Dual r{v, a.dx * da, a.dy * da, a.dz * da};
-            if (b.dx != 0.0 || b.dy != 0.0 || b.dz != 0.0) {
-                const double db = v * std::log(a.v);
-                r.dx += b.dx * db;
-                r.dy += b.dy * db;
-                r.dz += b.dz * db;
-            }
-            a = r;
-            break;
-        }
-        case op_add_c: s[sp - 1].v += in.c; break;
-        case op_sub_c: s[sp - 1].v -= in.c; break;
-        case op_rsub_c: {
-            Dual& a = s[sp - 1];
-            a = Dual{in.c - a.v, -a.dx, -a.dy, -a.dz};
-            break;
-        }
-        case op_mul_c: {
-            Dual& a = s[sp - 1];
-            a = Dual{a.v * in.c, a.dx * in.c, a.dy * in.c, a.dz * in.c};
-            break;
-        }
-        case op_div_c: {
-            Dual& a = s[sp - 1];
-            a = Dual{a.v / in.c, a.dx / in.c, a.dy / in.c, a.dz / in.c};
-            break;
-        }
-        case op_rdiv_c: {
-            Dual& a = s[sp - 1];
-            const double v = in.c / a.v;
-            scale(a, -v / a.v);
-            a.v = v;
-            break;
-        }
-        case op_pow_int: {
-            Dual& a = s[sp - 1];
-            const double d = in.n == 0 ? 0.0 : in.n * powi(a.v, in.n - 1);
-            a.v = powi(a.v, in.n);
-            scale(a, d);
-            break;
-        }
-        case op_pow_c: {
-            Dual& a = s[sp - 1];
-            const double d = in.c * std::pow(a.v, in.c - 1.0);
-            a.v = std::pow(a.v, in.c);
-            scale(a, d);
-            break;
-        }
-        case op_neg: {
-            Dual& a = s[sp - 1];
-            a = Dual{-a.v, -a.dx, -a.dy, -a.dz};
-            break;
-        }
-        case op_sin: {
-            Dual& a = s[sp - 1];
-            scale(a, std::cos(a.v));
-            a.v = std::sin(a.v);
-            break;
-        }
-        case op_cos: {
-            Dual& a = s[sp - 1];
-            scale(a, -std::sin(a.v));
-            a.v = std::cos(a.v);
-            break;
-        }
-        case op_tan: {
-            Dual& a = s[sp - 1];
-            const double t = std::tan(a.v);
-            scale(a, 1.0 + t * t);
-            a.v = t;
-            break;
-        }
-        case op_exp: {
-            Dual& a = s[sp - 1];
-            const double e = std::exp(a.v);
-            scale(a, e);
-            a.v = e;
-            break;
-        }
-        case op_log: {
-            Dual& a = s[sp - 1];
-            scale(a, 1.0 / a.v);
-            a.v = std::log(a.v);
-            break;
-        }
-        case op_sqrt: {
-            Dual& a = s[sp - 1];
-            const double r = std::sqrt(a.v);
-            scale(a, 0.5 / r);
-            a.v = r;
-            break;
-        }
-        case op_abs: {
-            // The derivative of |a| is sign(a); 0 at a = 0 (a subgradient).
-            Dual& a = s[sp - 1];
-            scale(a, a.v > 0 ? 1.0 : (a.v < 0 ? -1.0 : 0.0));
-            a.v = std::fabs(a.v);
-            break;
-        }
-        default: assert(false && "unknown opcode");
-        }
-    }
-    gradient = glm::dvec3(s[0].dx, s[0].dy, s[0].dz);
-    return s[0].v;
+    static constexpr double seeds[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    double tangent[3];
+    const double v = evaluate_dual<3>(code_, p, seeds, params, tangent);
+    gradient = glm::dvec3(tangent[0], tangent[1], tangent[2]);
+    return v;
+}
+
+double Program::value_and_derivative(const glm::dvec3& p, const glm::dvec3& direction,
+                                     double& derivative, const double* params) const {
+    assert(params != nullptr || parameter_names_.empty());
+    const double seeds[3][1] = {{direction.x}, {direction.y}, {direction.z}};
+    double tangent[1];
+    const double v = evaluate_dual<1>(code_, p, seeds, params, tangent);
+    derivative = tangent[0];
+    return v;
 }
 
 void Program::values_along_x(const double* xs, std::size_t n, double y, double z, double* out,
@@ -672,92 +925,66 @@ void Program::values_along_x(const double* xs, std::size_t n, double y, double z
     assert(params != nullptr || parameter_names_.empty());
     const std::size_t need = static_cast<std::size_t>(max_stack_) * batch_block;
     if (scratch.size() < need) scratch.resize(need);
-    // The stack is max_stack_ rows of batch_block lanes; each instruction runs over a whole
-    // block, so dispatch is paid once per block instead of once per point.
+    // The stack holds, per slot, either one value shared by every point (anything that does
+    // not depend on x: y, z, parameters, constants and what is computed from them) or a lane
+    // of batch_block values. Each instruction runs once per block, so dispatch is paid once per
+    // block, and x-independent work once per block instead of once per point.
+    double uniform[stack_capacity];
+    bool varying[stack_capacity];
     for (std::size_t first = 0; first < n; first += batch_block) {
         const std::size_t m = std::min(batch_block, n - first);
-        double* row = scratch.data();
+        const std::size_t padded = (m + 3) & ~std::size_t{3}; // batch_block is a multiple of 4
+        auto lanes = [&](int slot) {
+            return scratch.data() + static_cast<std::size_t>(slot) * batch_block;
+        };
         int sp = 0;
-        auto top = [&](int k) { return row + static_cast<std::size_t>(sp - k) * batch_block; };
         for (const Instruction& in : code_) {
             switch (in.op) {
-            case op_const: std::fill_n(top(0), m, in.c), ++sp; break;
-            case op_x: std::copy_n(xs + first, m, top(0)), ++sp; break;
-            case op_y: std::fill_n(top(0), m, y), ++sp; break;
-            case op_z: std::fill_n(top(0), m, z), ++sp; break;
-            case op_param: std::fill_n(top(0), m, params[in.n]), ++sp; break;
+            case op_const:
+                uniform[sp] = in.c, varying[sp++] = false;
+                break;
+            case op_x:
+                std::copy_n(xs + first, m, lanes(sp)), varying[sp++] = true;
+                break;
+            case op_y:
+                uniform[sp] = y, varying[sp++] = false;
+                break;
+            case op_z:
+                uniform[sp] = z, varying[sp++] = false;
+                break;
+            case op_param:
+                uniform[sp] = params[in.n], varying[sp++] = false;
+                break;
             case op_add:
             case op_sub:
             case op_mul:
             case op_div:
             case op_pow: {
-                double* __restrict a = top(2);
-                const double* __restrict b = top(1);
-                switch (in.op) {
-                case op_add:
-                    for (std::size_t i = 0; i < m; ++i) a[i] += b[i];
-                    break;
-                case op_sub:
-                    for (std::size_t i = 0; i < m; ++i) a[i] -= b[i];
-                    break;
-                case op_mul:
-                    for (std::size_t i = 0; i < m; ++i) a[i] *= b[i];
-                    break;
-                case op_div:
-                    for (std::size_t i = 0; i < m; ++i) a[i] /= b[i];
-                    break;
-                default:
-                    for (std::size_t i = 0; i < m; ++i) a[i] = std::pow(a[i], b[i]);
-                    break;
-                }
+                const int a = sp - 2, b = sp - 1;
                 --sp;
+                if (!varying[a] && !varying[b])
+                    uniform[a] = apply_binary(in.op, uniform[a], uniform[b]);
+                else if (varying[a] && varying[b])
+                    binary_lanes(in.op, lanes(a), lanes(b), padded);
+                else if (varying[a])
+                    binary_lane_value(in.op, lanes(a), uniform[b], padded);
+                else
+                    binary_value_lane(in.op, uniform[a], lanes(b), lanes(a), padded);
+                varying[a] = varying[a] || varying[b];
                 break;
             }
-            default: {
-                double* __restrict a = top(1);
-                const double c = in.c;
-                switch (in.op) {
-                case op_add_c:
-                    for (std::size_t i = 0; i < m; ++i) a[i] += c;
-                    break;
-                case op_sub_c:
-                    for (std::size_t i = 0; i < m; ++i) a[i] -= c;
-                    break;
-                case op_rsub_c:
-                    for (std::size_t i = 0; i < m; ++i) a[i] = c - a[i];
-                    break;
-                case op_mul_c:
-                    for (std::size_t i = 0; i < m; ++i) a[i] *= c;
-                    break;
-                case op_div_c:
-                    for (std::size_t i = 0; i < m; ++i) a[i] /= c;
-                    break;
-                case op_rdiv_c:
-                    for (std::size_t i = 0; i < m; ++i) a[i] = c / a[i];
-                    break;
-                case op_pow_int:
-                    if (in.n == 2) {
-                        for (std::size_t i = 0; i < m; ++i) a[i] = a[i] * a[i];
-                    } else if (in.n == 3) {
-                        for (std::size_t i = 0; i < m; ++i) a[i] = a[i] * (a[i] * a[i]);
-                    } else {
-                        for (std::size_t i = 0; i < m; ++i) a[i] = powi(a[i], in.n);
-                    }
-                    break;
-                case op_pow_c:
-                    for (std::size_t i = 0; i < m; ++i) a[i] = std::pow(a[i], c);
-                    break;
-                case op_neg:
-                    for (std::size_t i = 0; i < m; ++i) a[i] = -a[i];
-                    break;
-                default:
-                    for (std::size_t i = 0; i < m; ++i) a[i] = apply_unary(in.op, a[i]);
-                    break;
-                }
-            }
+            default:
+                if (varying[sp - 1])
+                    unary_lane(in, lanes(sp - 1), padded);
+                else
+                    uniform[sp - 1] = apply_instruction(in, uniform[sp - 1]);
+                break;
             }
         }
-        std::copy_n(row, m, out + first);
+        if (varying[0])
+            std::copy_n(lanes(0), m, out + first);
+        else
+            std::fill_n(out + first, m, uniform[0]);
     }
 }
 

@@ -1,5 +1,4 @@
-// The implicit-surface expression language: parse once, compile to a flat instruction list,
-// evaluate f and its analytic gradient (forward-mode dual numbers) fast.
+// The implicit-surface expression language: compile once, evaluate f and grad f fast.
 #pragma once
 
 #include <cstddef>
@@ -24,6 +23,9 @@ public:
     // f and grad f together.
     double value_and_gradient(const glm::dvec3& p, glm::dvec3& gradient,
                               const double* params = nullptr) const;
+    // f and its derivative along direction (grad f . direction), cheaper than the gradient.
+    double value_and_derivative(const glm::dvec3& p, const glm::dvec3& direction,
+                                double& derivative, const double* params = nullptr) const;
     const std::vector<std::string>& parameter_names() const { return parameter_names_; }
 
     // Batch form for grid sampling: out[i] = f(xs[i], y, z) for i < n, bit-identical to value().

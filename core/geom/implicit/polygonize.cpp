@@ -1,5 +1,4 @@
-// Marching tetrahedra over a full grid (Bloomenthal's polygonizer, Graphics Gems IV, with the
-// cube split into six tetrahedra), with edge-refined vertices and analytic normals.
+// Marching tetrahedra over a full grid with refined, shared vertices (Bloomenthal-style).
 #include "core/geom/implicit/polygonize.hpp"
 
 #include <algorithm>
@@ -9,7 +8,6 @@
 #include <cmath>
 #include <cstdint>
 #include <exception>
-#include <limits>
 #include <mutex>
 #include <new>
 #include <string>
@@ -35,9 +33,14 @@ constexpr Index tag_mask = 3u << 30;
 
 // The sign convention: NaN counts as positive ("outside"), zero counts as positive, so every
 // grid point is on exactly one side and a zero lies on the surface only through its edges.
-inline bool positive(double v) { return !(v < 0.0); }
+inline bool positive(double v) {
+    return !(v < 0.0);
+}
 
 // ---------------------------------------------------------------------------------------------
+// After J. Bloomenthal, "An Implicit Surface Polygonizer", Graphics Gems IV (1994), in its
+// full-grid form with tetrahedral decomposition.
+//
 // The case table. Cube corner c sits at offset (c & 1, c >> 1 & 1, c >> 2 & 1). The Kuhn
 // (Freudenthal) triangulation splits the cube into six tetrahedra 0 -> e_a -> e_a + e_b -> 7,
 // one per axis order (a, b, c); all share the main diagonal 0-7, and each cube face is split by
@@ -56,7 +59,9 @@ struct CubeCase {
     Polygon polygons[6];
 };
 
-glm::dvec3 corner_position(int c) { return {c & 1, (c >> 1) & 1, (c >> 2) & 1}; }
+glm::dvec3 corner_position(int c) {
+    return {c & 1, (c >> 1) & 1, (c >> 2) & 1};
+}
 
 std::uint8_t edge_code(int a, int b) {
     if (a > b) std::swap(a, b);
@@ -97,9 +102,8 @@ Polygon tetrahedron_polygon(const int v[4], int mask) {
     for (int k = 0; k < nn; ++k) toward_positive -= corner_position(neg[k]) / double(nn);
     const glm::dvec3 m0 = edge_midpoint(poly.e[0]), m1 = edge_midpoint(poly.e[1]),
                      m2 = edge_midpoint(poly.e[2]);
-    const glm::dvec3 normal = poly.n == 3
-                                  ? glm::cross(m1 - m0, m2 - m0)
-                                  : glm::cross(m2 - m0, edge_midpoint(poly.e[3]) - m1);
+    const glm::dvec3 normal = poly.n == 3 ? glm::cross(m1 - m0, m2 - m0)
+                                          : glm::cross(m2 - m0, edge_midpoint(poly.e[3]) - m1);
     assert(glm::dot(normal, toward_positive) != 0.0);
     if (glm::dot(normal, toward_positive) < 0) std::reverse(poly.e + 1, poly.e + poly.n);
     return poly;
@@ -170,9 +174,11 @@ struct Context {
 
 // The vertex on the grid edge from a (value fa) to b (value fb), where the sign changes.
 // Safeguarded Newton on g(t) = f(p + t (q - p)) from the positive end p: the bracket [lo, hi]
-// always holds the sign change, a Newton step that leaves it becomes a bisection (as in
-// rtsafe, Numerical Recipes 9.4). It stops once |f| <= 1e-12 |grad f| |q - p|, i.e. the point
-// is within about 1e-12 edge lengths of the surface, and keeps the best point seen.
+// always holds the sign change, and a Newton step that leaves it becomes a bisection (as in
+// rtsafe, Numerical Recipes 9.4). It stops once the Newton step is below 1e-12 edge lengths,
+// so the point is that close to the surface along the edge, and |f| <= 1e-12 |grad f| |q - p|.
+// Steps use the cheap directional derivative g'(t) = grad f . (q - p); the full gradient (for
+// the normal) is computed where the next point is expected to be the last.
 Index make_vertex(const Context& ctx, VertexGroup& out, const glm::dvec3& a, double fa,
                   std::uint64_t ga, const glm::dvec3& b, double fb, std::uint64_t gb) {
     const bool a_positive = positive(fa);
@@ -181,7 +187,7 @@ Index make_vertex(const Context& ctx, VertexGroup& out, const glm::dvec3& a, dou
     const double fp = a_positive ? fa : fb;
     const double fq = a_positive ? fb : fa;
     const Index id = static_cast<Index>(out.positions.size());
-    glm::dvec3 gradient;
+    glm::dvec3 gradient(0.0);
     glm::dvec3 position;
     if (fp == 0.0) {
         position = p;
@@ -189,33 +195,40 @@ Index make_vertex(const Context& ctx, VertexGroup& out, const glm::dvec3& a, dou
         out.pinned.emplace_back(id, a_positive ? ga : gb);
     } else {
         const glm::dvec3 d = q - p;
-        const double length = glm::length(d);
         double lo = 0.0, hi = 1.0; // g(lo) positive, g(hi) negative
         double t = std::isfinite(fp) && std::isfinite(fq) ? fp / (fp - fq) : 0.5;
         if (!(t > lo && t < hi)) t = 0.5;
-        double best_abs = std::numeric_limits<double>::infinity();
-        double best_t = t;
-        glm::dvec3 best_gradient(0.0);
-        for (int iteration = 0; iteration < 60; ++iteration) {
-            glm::dvec3 g;
-            const double v = ctx.f.value_and_gradient(p + t * d, g, ctx.params);
-            if (std::fabs(v) < best_abs || iteration == 0) {
-                best_abs = std::fabs(v);
-                best_t = t;
-                best_gradient = g;
+        bool full = false, converged = false;
+        for (int iteration = 0; iteration < 100; ++iteration) {
+            const glm::dvec3 x = p + t * d;
+            double v, slope;
+            if (full) {
+                v = ctx.f.value_and_gradient(x, gradient, ctx.params);
+                slope = glm::dot(gradient, d);
+            } else {
+                v = ctx.f.value_and_derivative(x, d, slope, ctx.params);
             }
             if (positive(v))
                 lo = t;
             else
                 hi = t;
-            if (std::fabs(v) <= 1e-12 * length * glm::length(g)) break;
-            double next = t - v / glm::dot(g, d);
+            const double step = v / slope;
+            if (v == 0.0 || std::fabs(step) <= 1e-12) {
+                converged = true;
+                break;
+            }
+            double next = t - step;
             if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
             if (next == t || !(next > lo && next < hi)) break; // the bracket is one ulp wide
+            // Newton squares the error: after a step of 1e-4 the next one is tiny.
+            full = std::fabs(t - next) <= 1e-4;
             t = next;
         }
-        position = p + best_t * d;
-        gradient = best_gradient;
+        // Without convergence (a pole, an undefined region, a kink) the sign change is
+        // somewhere in the final bracket.
+        if (!converged) t = 0.5 * (lo + hi);
+        position = p + t * d;
+        if (!converged || !full) ctx.f.value_and_gradient(position, gradient, ctx.params);
     }
     const double norm = glm::length(gradient);
     out.positions.push_back(position);
@@ -225,55 +238,101 @@ Index make_vertex(const Context& ctx, VertexGroup& out, const glm::dvec3& a, dou
 
 // In-plane edge directions (x, y, x+y) and the layer-crossing ones (z, x+z, y+z, x+y+z), as
 // offsets; d = 1..7 is the corner-offset bit pattern of the edge.
-constexpr int edge_dx(int d) { return d & 1; }
-constexpr int edge_dy(int d) { return (d >> 1) & 1; }
-
-// Values of layer k: one batch evaluation per row.
-void evaluate_layer(const Context& ctx, int k, double* values, std::vector<double>& scratch) {
-    const Grid& g = ctx.grid;
-    for (int j = 0; j <= g.ny; ++j)
-        ctx.f.values_along_x(g.xs.data(), g.row, g.ys[j], g.zs[k], values + j * g.row,
-                             ctx.params, scratch);
+constexpr int edge_dx(int d) {
+    return d & 1;
+}
+constexpr int edge_dy(int d) {
+    return (d >> 1) & 1;
 }
 
-// Vertices on the in-plane edges (d = 1, 2, 3) of layer k; ids[point * 3 + d - 1].
-void make_plane_vertices(const Context& ctx, int k, const double* values, Index* ids,
-                         VertexGroup& out) {
+// Row summaries: every value of a row negative, every one positive, or both signs. Rows whose
+// neighbourhood has a single sign have no sign change to look at, which skips most of the grid.
+enum RowSign : std::uint8_t { row_negative = 0, row_positive = 1, row_mixed = 2 };
+
+// Values of layer k, one batch evaluation per row, and each row's sign summary.
+void evaluate_layer(const Context& ctx, int k, double* values, std::uint8_t* rows,
+                    std::vector<double>& scratch) {
     const Grid& g = ctx.grid;
-    for (int j = 0; j <= g.ny; ++j)
+    for (int j = 0; j <= g.ny; ++j) {
+        double* row = values + j * g.row;
+        ctx.f.values_along_x(g.xs.data(), g.row, g.ys[j], g.zs[k], row, ctx.params, scratch);
+        std::size_t count = 0;
+        for (std::size_t i = 0; i < g.row; ++i) count += positive(row[i]);
+        rows[j] = count == 0 ? row_negative : count == g.row ? row_positive : row_mixed;
+    }
+}
+
+// True when rows j and j + 1 (if any) of both row summaries are uniform with one sign.
+inline bool rows_uniform(const std::uint8_t* a, const std::uint8_t* b, int j, int last) {
+    const std::uint8_t s = a[j];
+    if (s == row_mixed || b[j] != s) return false;
+    return j == last || (a[j + 1] == s && b[j + 1] == s);
+}
+
+// One layer of the grid as a slab sees it: values, row summaries, and where the vertices on its
+// in-plane edges (d = 1, 2, 3) live (ids[point * 3 + d - 1], tagged with the owner group).
+struct Layer {
+    int k = 0;
+    const double* values = nullptr;
+    const std::uint8_t* rows = nullptr;
+    const Index* ids = nullptr;
+    Index tag = tag_local;
+};
+
+// Vertices on the in-plane edges (d = 1, 2, 3) of layer k; ids[point * 3 + d - 1].
+void make_plane_vertices(const Context& ctx, int k, const double* values, const std::uint8_t* rows,
+                         Index* ids, VertexGroup& out) {
+    const Grid& g = ctx.grid;
+    for (int j = 0; j <= g.ny; ++j) {
+        if (rows_uniform(rows, rows, j, g.ny)) continue;
+        const double* row = values + j * g.row;
+        const double* next = j < g.ny ? row + g.row : row; // no y edges from the last row
         for (int i = 0; i <= g.nx; ++i) {
-            const std::size_t pa = j * g.row + i;
-            const double fa = values[pa];
+            const bool s = positive(row[i]);
+            const int i1 = std::min(i + 1, g.nx);
+            const bool x = positive(row[i1]) != s, y = positive(next[i]) != s,
+                       xy = positive(next[i1]) != s;
+            if (!(x || y || xy)) continue;
             for (int d = 1; d <= 3; ++d) {
                 const int i2 = i + edge_dx(d), j2 = j + edge_dy(d);
                 if (i2 > g.nx || j2 > g.ny) continue;
-                const std::size_t pb = j2 * g.row + i2;
-                if (positive(fa) == positive(values[pb])) continue;
-                ids[pa * 3 + d - 1] = make_vertex(ctx, out, g.point(i, j, k), fa, g.index(i, j, k),
-                                                  g.point(i2, j2, k), values[pb],
-                                                  g.index(i2, j2, k));
+                const double fb = values[j2 * g.row + i2];
+                if (positive(fb) == s) continue;
+                ids[(j * g.row + i) * 3 + d - 1] =
+                    make_vertex(ctx, out, g.point(i, j, k), row[i], g.index(i, j, k),
+                                g.point(i2, j2, k), fb, g.index(i2, j2, k));
             }
         }
+    }
 }
 
 // Vertices on the edges from layer k to layer k + 1 (d = 4..7); ids[point * 4 + d - 4].
-void make_vertical_vertices(const Context& ctx, int k, const double* bottom, const double* top,
-                            Index* ids, VertexGroup& out) {
+void make_vertical_vertices(const Context& ctx, const Layer& bottom, const Layer& top, Index* ids,
+                            VertexGroup& out) {
     const Grid& g = ctx.grid;
-    for (int j = 0; j <= g.ny; ++j)
+    const int k = bottom.k;
+    for (int j = 0; j <= g.ny; ++j) {
+        if (rows_uniform(bottom.rows, top.rows, j, g.ny)) continue;
+        const double* row = bottom.values + j * g.row;
+        const double* up = top.values + j * g.row;
+        const double* up_next = j < g.ny ? up + g.row : up;
         for (int i = 0; i <= g.nx; ++i) {
-            const std::size_t pa = j * g.row + i;
-            const double fa = bottom[pa];
+            const bool s = positive(row[i]);
+            const int i1 = std::min(i + 1, g.nx);
+            if (positive(up[i]) == s && positive(up[i1]) == s && positive(up_next[i]) == s &&
+                positive(up_next[i1]) == s)
+                continue;
             for (int d = 4; d <= 7; ++d) {
                 const int i2 = i + edge_dx(d), j2 = j + edge_dy(d);
                 if (i2 > g.nx || j2 > g.ny) continue;
-                const std::size_t pb = j2 * g.row + i2;
-                if (positive(fa) == positive(top[pb])) continue;
-                ids[pa * 4 + d - 4] =
-                    make_vertex(ctx, out, g.point(i, j, k), fa, g.index(i, j, k),
-                                g.point(i2, j2, k + 1), top[pb], g.index(i2, j2, k + 1));
+                const double fb = top.values[j2 * g.row + i2];
+                if (positive(fb) == s) continue;
+                ids[(j * g.row + i) * 4 + d - 4] =
+                    make_vertex(ctx, out, g.point(i, j, k), row[i], g.index(i, j, k),
+                                g.point(i2, j2, k + 1), fb, g.index(i2, j2, k + 1));
             }
         }
+    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -284,8 +343,13 @@ void make_vertical_vertices(const Context& ctx, int k, const double* bottom, con
 struct BoundaryPlane {
     int layer = 0;
     std::vector<double> values;
+    std::vector<std::uint8_t> rows;
     std::vector<Index> ids; // in-plane edge vertex ids, 3 per point
     VertexGroup vertices;
+
+    Layer view(Index tag) const {
+        return Layer{layer, values.data(), rows.data(), ids.data(), tag};
+    }
 };
 
 struct Chunk {
@@ -298,6 +362,7 @@ struct Chunk {
 struct Workspace {
     std::vector<double> scratch;
     std::vector<double> values[2];
+    std::vector<std::uint8_t> rows[2];
     std::vector<Index> plane_ids[2];
     std::vector<Index> vertical_ids;
 };
@@ -331,67 +396,62 @@ struct Polygonizer {
     void do_plane(BoundaryPlane& bp, Workspace& ws) {
         const Grid& g = ctx.grid;
         bp.values.resize(g.plane);
+        bp.rows.resize(g.ny + 1);
         bp.ids.resize(g.plane * 3);
-        evaluate_layer(ctx, bp.layer, bp.values.data(), ws.scratch);
-        make_plane_vertices(ctx, bp.layer, bp.values.data(), bp.ids.data(), bp.vertices);
+        evaluate_layer(ctx, bp.layer, bp.values.data(), bp.rows.data(), ws.scratch);
+        make_plane_vertices(ctx, bp.layer, bp.values.data(), bp.rows.data(), bp.ids.data(),
+                            bp.vertices);
     }
 
     void do_chunk(int c, Workspace& ws, int worker) {
         const Grid& g = ctx.grid;
         Chunk& chunk = chunks[c];
-        const BoundaryPlane& below = planes[c];
-        const BoundaryPlane& above = planes[c + 1];
-        for (auto& v : ws.values) v.resize(g.plane);
-        for (auto& v : ws.plane_ids) v.resize(g.plane * 3);
         ws.vertical_ids.resize(g.plane * 4);
 
-        const double* bottom = below.values.data();
-        const Index* bottom_ids = below.ids.data();
-        Index bottom_tag = tag_bottom;
+        Layer bottom = planes[c].view(tag_bottom);
+        const BoundaryPlane& above = planes[c + 1];
         int buffer = 0;
-        const CubeCase* cases = cube_cases().data();
         for (int k = chunk.first_slab; k < chunk.end_slab; ++k) {
             if (stop) return;
-            const double* top;
-            const Index* top_ids;
-            Index top_tag;
+            Layer top;
             if (k + 1 == above.layer) {
-                top = above.values.data();
-                top_ids = above.ids.data();
-                top_tag = tag_top;
+                top = above.view(tag_top);
             } else {
-                evaluate_layer(ctx, k + 1, ws.values[buffer].data(), ws.scratch);
-                make_plane_vertices(ctx, k + 1, ws.values[buffer].data(),
-                                    ws.plane_ids[buffer].data(), chunk.vertices);
-                top = ws.values[buffer].data();
-                top_ids = ws.plane_ids[buffer].data();
-                top_tag = tag_local;
+                // Interior layers live in the worker's buffers (allocated on first use).
+                ws.values[buffer].resize(g.plane);
+                ws.rows[buffer].resize(g.ny + 1);
+                ws.plane_ids[buffer].resize(g.plane * 3);
+                double* values = ws.values[buffer].data();
+                std::uint8_t* rows = ws.rows[buffer].data();
+                Index* ids = ws.plane_ids[buffer].data();
+                evaluate_layer(ctx, k + 1, values, rows, ws.scratch);
+                make_plane_vertices(ctx, k + 1, values, rows, ids, chunk.vertices);
+                top = Layer{k + 1, values, rows, ids, tag_local};
             }
-            make_vertical_vertices(ctx, k, bottom, top, ws.vertical_ids.data(), chunk.vertices);
-            emit_triangles(chunk, cases, bottom, top, bottom_ids, top_ids, bottom_tag, top_tag,
-                           ws.vertical_ids.data());
+            make_vertical_vertices(ctx, bottom, top, ws.vertical_ids.data(), chunk.vertices);
+            emit_triangles(c, bottom, top, ws.vertical_ids.data());
             bottom = top;
-            bottom_ids = top_ids;
-            bottom_tag = top_tag;
             buffer ^= 1;
             unit_done(worker);
         }
     }
 
-    const glm::dvec3& position_of(const Chunk& chunk, int c, Index id) const {
+    const glm::dvec3& position_of(int c, Index id) const {
         const Index local = id & ~tag_mask;
         switch (id & tag_mask) {
-        case tag_bottom: return planes[c].vertices.positions[local];
-        case tag_top: return planes[c + 1].vertices.positions[local];
-        default: return chunk.vertices.positions[local];
+        case tag_bottom:
+            return planes[c].vertices.positions[local];
+        case tag_top:
+            return planes[c + 1].vertices.positions[local];
+        default:
+            return chunks[c].vertices.positions[local];
         }
     }
 
-    void emit_triangles(Chunk& chunk, const CubeCase* cases, const double* bottom,
-                        const double* top, const Index* bottom_ids, const Index* top_ids,
-                        Index bottom_tag, Index top_tag, const Index* vertical_ids) {
+    void emit_triangles(int c, const Layer& bottom, const Layer& top, const Index* vertical_ids) {
         const Grid& g = ctx.grid;
-        const int c = static_cast<int>(&chunk - chunks.data());
+        const CubeCase* cases = cube_cases().data();
+        std::vector<std::array<Index, 3>>& out = chunks[c].triangles;
         // Where each edge code finds its vertex id, relative to the cell's first point.
         struct EdgeSlot {
             const Index* ids = nullptr;
@@ -404,24 +464,27 @@ struct Polygonizer {
                 if ((c1 & d) != 0) continue;
                 EdgeSlot& s = slots[c1 * 8 + d];
                 const std::size_t point = ((c1 >> 1) & 1) * g.row + (c1 & 1);
-                if (d & 4) {
+                if (d & 4)
                     s = EdgeSlot{vertical_ids, 4, point * 4 + d - 4, tag_local};
-                } else if (c1 & 4) {
-                    s = EdgeSlot{top_ids, 3, point * 3 + d - 1, top_tag};
-                } else {
-                    s = EdgeSlot{bottom_ids, 3, point * 3 + d - 1, bottom_tag};
-                }
+                else if (c1 & 4)
+                    s = EdgeSlot{top.ids, 3, point * 3 + d - 1, top.tag};
+                else
+                    s = EdgeSlot{bottom.ids, 3, point * 3 + d - 1, bottom.tag};
             }
         for (int j = 0; j < g.ny; ++j) {
-            const double* b0 = bottom + j * g.row;
+            if (rows_uniform(bottom.rows, top.rows, j, g.ny)) continue;
+            const double* b0 = bottom.values + j * g.row;
             const double* b1 = b0 + g.row;
-            const double* t0 = top + j * g.row;
+            const double* t0 = top.values + j * g.row;
             const double* t1 = t0 + g.row;
+            // The four corners at x = x_i, carried along the row.
+            unsigned left = positive(b0[0]) << 0 | positive(b1[0]) << 2 | positive(t0[0]) << 4 |
+                            positive(t1[0]) << 6;
             for (int i = 0; i < g.nx; ++i) {
-                const unsigned mask = positive(b0[i]) | positive(b0[i + 1]) << 1 |
-                                      positive(b1[i]) << 2 | positive(b1[i + 1]) << 3 |
-                                      positive(t0[i]) << 4 | positive(t0[i + 1]) << 5 |
-                                      positive(t1[i]) << 6 | positive(t1[i + 1]) << 7;
+                const unsigned right = positive(b0[i + 1]) << 0 | positive(b1[i + 1]) << 2 |
+                                       positive(t0[i + 1]) << 4 | positive(t1[i + 1]) << 6;
+                const unsigned mask = left | right << 1;
+                left = right;
                 if (mask == 0 || mask == 255) continue;
                 const std::size_t point = j * g.row + i;
                 const CubeCase& cc = cases[mask];
@@ -433,21 +496,19 @@ struct Polygonizer {
                         v[e] = s.tag | s.ids[point * s.stride + s.offset];
                     }
                     if (poly.n == 3) {
-                        chunk.triangles.push_back({v[0], v[1], v[2]});
+                        out.push_back({v[0], v[1], v[2]});
                         continue;
                     }
                     // A quadrilateral: split along its shorter diagonal (the better-shaped
                     // pair); either split keeps the orientation.
-                    const double d02 = glm::length(position_of(chunk, c, v[0]) -
-                                                   position_of(chunk, c, v[2]));
-                    const double d13 = glm::length(position_of(chunk, c, v[1]) -
-                                                   position_of(chunk, c, v[3]));
+                    const double d02 = glm::length(position_of(c, v[0]) - position_of(c, v[2]));
+                    const double d13 = glm::length(position_of(c, v[1]) - position_of(c, v[3]));
                     if (d02 <= d13) {
-                        chunk.triangles.push_back({v[0], v[1], v[2]});
-                        chunk.triangles.push_back({v[0], v[2], v[3]});
+                        out.push_back({v[0], v[1], v[2]});
+                        out.push_back({v[0], v[2], v[3]});
                     } else {
-                        chunk.triangles.push_back({v[1], v[2], v[3]});
-                        chunk.triangles.push_back({v[1], v[3], v[0]});
+                        out.push_back({v[1], v[2], v[3]});
+                        out.push_back({v[1], v[3], v[0]});
                     }
                 }
             }
@@ -464,8 +525,8 @@ struct Polygonizer {
                 unit_done(worker);
             }
             // The chunks read the boundary planes, so every plane must be finished first.
-            for (std::size_t done; !stop && (done = planes_done.load(std::memory_order_acquire)) <
-                                                planes.size();)
+            for (std::size_t done;
+                 !stop && (done = planes_done.load(std::memory_order_acquire)) < planes.size();)
                 planes_done.wait(done, std::memory_order_acquire);
             for (int c; !stop && (c = next_chunk++) < static_cast<int>(chunks.size());)
                 do_chunk(c, ws, worker);
@@ -510,8 +571,8 @@ Status check_options(const Program& f, const PolygonizeOptions& o) {
     const auto& names = f.parameter_names();
     if (o.parameters.size() != names.size())
         return make_error(ErrorCode::schema,
-                          "expected " + std::to_string(names.size()) +
-                              " parameter values, got " + std::to_string(o.parameters.size()),
+                          "expected " + std::to_string(names.size()) + " parameter values, got " +
+                              std::to_string(o.parameters.size()),
                           "/parameters");
     for (std::size_t k = 0; k < o.parameters.size(); ++k)
         if (!std::isfinite(o.parameters[k]))
@@ -540,8 +601,7 @@ void repair_normals(Mesh& mesh) {
     for (std::size_t v = 0; v < mesh.normals.size(); ++v) {
         if (!needs[v]) continue;
         const double len = glm::length(sum[v]);
-        mesh.normals[v] =
-            std::isfinite(len) && len > 0 ? sum[v] / len : glm::dvec3(0.0, 0.0, 1.0);
+        mesh.normals[v] = std::isfinite(len) && len > 0 ? sum[v] / len : glm::dvec3(0.0, 0.0, 1.0);
     }
 }
 

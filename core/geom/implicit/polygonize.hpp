@@ -12,8 +12,8 @@ namespace isoparm::geom::implicit {
 
 struct PolygonizeOptions {
     glm::dvec3 lo{-1, -1, -1}, hi{1, 1, 1};
-    double cell = 0.1; // edge length; the grid has ceil(extent / cell) cells per axis,
-                       // shrunk to fit the bounds exactly (protocol convention 18)
+    double cell = 0.1;              // edge length; the grid has ceil(extent / cell) cells per axis,
+                                    // shrunk to fit the bounds exactly (protocol convention 18)
     std::vector<double> parameters; // values of the program's named parameters
     // Progress in [0, 1], called from the calling thread; return false to cancel (the result
     // is then a `limit` error without a path: "polygonization was cancelled").

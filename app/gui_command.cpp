@@ -1,0 +1,160 @@
+// `isoparm [SCENE]`: the workstation window (GLFW, OpenGL 3.3 core, Dear ImGui).
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "ui/render/gl.hpp"
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+
+#include "app/commands.hpp"
+#include "ui/actions.hpp"
+#include "ui/render/renderer.hpp"
+#include "ui/settings.hpp"
+#include "ui/workstation.hpp"
+
+namespace isoparm::app {
+
+namespace {
+
+constexpr const char* render_hint = "to make pictures without a display, use 'isoparm render [SCENE] -o OUT.png'";
+
+std::string& glfw_error() {
+    static std::string last;
+    return last;
+}
+
+// Frames are drawn while something happens; when idle the loop sleeps in glfwWaitEvents.
+int& pending_frames() {
+    static int n = 3;
+    return n;
+}
+void wake(GLFWwindow*) { pending_frames() = 3; }
+void on_cursor(GLFWwindow* w, double, double) { wake(w); }
+void on_button(GLFWwindow* w, int, int, int) { wake(w); }
+void on_scroll(GLFWwindow* w, double, double) { wake(w); }
+void on_key(GLFWwindow* w, int key, int, int action, int mods) {
+    wake(w);
+    if (action == GLFW_RELEASE) return;
+    auto* ctx = static_cast<ui::AppContext*>(glfwGetWindowUserPointer(w));
+    if (ctx)
+        ctx->ui.key_presses.push_back({key, (mods & GLFW_MOD_CONTROL) != 0, (mods & GLFW_MOD_SHIFT) != 0,
+                                       (mods & GLFW_MOD_ALT) != 0});
+}
+void on_char(GLFWwindow* w, unsigned) { wake(w); }
+void on_size(GLFWwindow* w, int, int) { wake(w); }
+void on_focus(GLFWwindow* w, int) { wake(w); }
+
+int run_window(const std::string& scene) {
+    const char* x11 = std::getenv("DISPLAY");
+    const char* wayland = std::getenv("WAYLAND_DISPLAY");
+    if ((!x11 || !*x11) && (!wayland || !*wayland)) {
+        std::cerr << "isoparm: no display (DISPLAY and WAYLAND_DISPLAY are unset); " << render_hint << "\n";
+        return 1;
+    }
+    glfwSetErrorCallback([](int, const char* text) { glfw_error() = text ? text : ""; });
+    if (!glfwInit()) {
+        std::cerr << "isoparm: cannot open the display (" << glfw_error() << "); " << render_hint << "\n";
+        return 1;
+    }
+    ui::Settings settings = ui::load_settings(ui::settings_path());
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
+    GLFWwindow* window = glfwCreateWindow(settings.window_width, settings.window_height, "isoparm", nullptr, nullptr);
+    if (!window) {
+        std::cerr << "isoparm: cannot create an OpenGL 3.3 core window (" << glfw_error() << "); " << render_hint
+                  << "\n";
+        glfwTerminate();
+        return 1;
+    }
+    glfwMakeContextCurrent(window);
+    glfwSwapInterval(1);
+    float xs = 1, ys = 1;
+    glfwGetWindowContentScale(window, &xs, &ys);
+
+    int status = 0;
+    {
+        // Multisampling costs ~5x on a CPU rasteriser: the window stays responsive without it
+        // (lines and points are antialiased in their shaders anyway).
+        const int msaa = ui::software_renderer() ? 0 : 4;
+        ui::Workstation ws({/*headless=*/false, std::max(xs, ys), ui::ViewMode::workstation, msaa});
+        ui::AppContext& ctx = ws.context();
+        if (!ws.renderer_error().empty()) {
+            std::cerr << "isoparm: OpenGL shaders failed: " << ws.renderer_error() << "\n";
+            status = 1;
+        } else {
+            ctx.settings = settings;
+            // Ours first, so ImGui's backend chains to them.
+            glfwSetCursorPosCallback(window, on_cursor);
+            glfwSetMouseButtonCallback(window, on_button);
+            glfwSetScrollCallback(window, on_scroll);
+            glfwSetKeyCallback(window, on_key);
+            glfwSetCharCallback(window, on_char);
+            glfwSetWindowFocusCallback(window, on_focus);
+            glfwSetFramebufferSizeCallback(window, on_size);
+            glfwSetWindowContentScaleCallback(window, [](GLFWwindow* w, float sx, float sy) {
+                auto* c = static_cast<ui::AppContext*>(glfwGetWindowUserPointer(w));
+                c->ui.content_scale = std::max(sx, sy);
+                wake(w);
+            });
+            glfwSetWindowUserPointer(window, &ctx);
+            ImGui_ImplGlfw_InitForOpenGL(window, true);
+
+            if (!scene.empty() && !ui::open_file(ctx, scene))
+                std::cerr << "isoparm: " << ctx.ui.error_message << "\n";
+
+            std::string title;
+            while (!ctx.ui.quit_now) {
+                if (pending_frames() > 0) glfwPollEvents();
+                else glfwWaitEventsTimeout(0.5);
+                if (pending_frames() > 0) --pending_frames();
+                if (glfwWindowShouldClose(window)) {
+                    glfwSetWindowShouldClose(window, GLFW_FALSE);
+                    ui::request_quit(ctx); // asks first when there are unsaved changes
+                    pending_frames() = 3;
+                }
+                // Keep drawing while a gesture is in progress.
+                if (ImGui::IsAnyItemActive()) pending_frames() = std::max(pending_frames(), 1);
+                const auto t0 = std::chrono::steady_clock::now();
+                ImGui_ImplGlfw_NewFrame();
+                ws.frame(0);
+                glfwSwapBuffers(window);
+                // The work of a frame, not the time between frames (idle waits excluded).
+                const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+                double& shown = ctx.ui.frame_ms;
+                shown = shown <= 0 ? ms : shown * 0.8 + ms * 0.2;
+                if (const std::string t = ctx.title(); t != title) {
+                    glfwSetWindowTitle(window, t.c_str());
+                    title = t;
+                }
+            }
+            int w = 0, h = 0;
+            glfwGetWindowSize(window, &w, &h);
+            ctx.settings.window_width = w;
+            ctx.settings.window_height = h;
+            ui::store_settings(ctx);
+            ImGui_ImplGlfw_Shutdown();
+        }
+    }
+    glfwDestroyWindow(window);
+    glfwTerminate();
+    return status;
+}
+
+} // namespace
+
+Action register_gui_command(CLI::App& app) {
+    auto scene = std::make_shared<std::string>();
+    app.add_option("SCENE", *scene, "scene to open in the workstation (default: a shaped 5x5 bicubic NURBS surface)");
+    return [scene]() -> int { return run_window(*scene); };
+}
+
+} // namespace isoparm::app

@@ -1,0 +1,582 @@
+// Object, control-point, weight, knot, transform and colour commands (refinement is in
+// commands_refine.cpp).
+#include "core/doc/commands.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include "core/doc/commands_common.hpp"
+#include "core/geom/knots.hpp"
+
+namespace isoparm::doc {
+
+namespace {
+
+using geom::Dir;
+using geom::ErrorCode;
+using geom::make_error;
+
+// After a command, a selection must name an object that exists and a point it has.
+bool selection_valid(const Document& doc, const Selection& sel) {
+    if (sel.object == 0) return !sel.has_point();
+    const Object* o = doc.find(sel.object);
+    if (!o) return false;
+    if (!sel.has_point()) return true;
+    if (auto* s = std::get_if<SurfaceObject>(&o->shape))
+        return sel.i < s->surface.n_u && sel.j >= 0 && sel.j < s->surface.n_v;
+    if (auto* c = std::get_if<CurveObject>(&o->shape)) return sel.i < c->curve.count() && sel.j < 0;
+    return false;
+}
+
+// Restores the selection a command found, unless the user selected something else since
+// (selection is view state, not undone); a selection left dangling is dropped.
+void restore_selection(Document& doc, const Selection& before, const Selection& after) {
+    if (doc.selection == after) doc.selection = before;
+    if (!selection_valid(doc, doc.selection)) {
+        if (doc.find(doc.selection.object))
+            doc.selection.i = doc.selection.j = -1;
+        else
+            doc.selection = Selection{};
+    }
+}
+
+// The control point (i, j) of a surface or curve object, checked (`schema`, "/i", "/j").
+struct PointRef {
+    geom::Surface* surface = nullptr;
+    geom::Curve* curve = nullptr;
+    std::size_t index = 0;
+    glm::dvec3& position() { return surface ? surface->points[index] : curve->points[index]; }
+    double& weight() { return surface ? surface->weights[index] : curve->weights[index]; }
+    geom::SplineType type() const { return surface ? surface->type : curve->type; }
+};
+
+geom::Expected<PointRef> control_point(Object& obj, int i, int j) {
+    auto out_of_range = [](const char* name, int value, int count, const char* path) {
+        return make_error(ErrorCode::schema,
+                          std::string("control point index ") + name + " = " +
+                              std::to_string(value) + " is outside 0.." + std::to_string(count - 1),
+                          path);
+    };
+    if (auto* s = std::get_if<SurfaceObject>(&obj.shape)) {
+        geom::Surface& g = s->surface;
+        if (i < 0 || i >= g.n_u) return out_of_range("i", i, g.n_u, "/i");
+        if (j < 0 || j >= g.n_v) return out_of_range("j", j, g.n_v, "/j");
+        return PointRef{&g, nullptr, static_cast<std::size_t>(g.index(i, j))};
+    }
+    if (auto* c = std::get_if<CurveObject>(&obj.shape)) {
+        geom::Curve& g = c->curve;
+        if (i < 0 || i >= g.count()) return out_of_range("i", i, g.count(), "/i");
+        if (j != -1 && j != 0)
+            return make_error(ErrorCode::schema,
+                              "a curve's control points have one index; j must be -1 (or 0), got " +
+                                  std::to_string(j),
+                              "/j");
+        return PointRef{nullptr, &g, static_cast<std::size_t>(i)};
+    }
+    return make_error(ErrorCode::schema,
+                      "object '" + obj.name + "' is an implicit surface; it has no control points",
+                      "/id");
+}
+
+std::string vec_text(const glm::dvec3& p) {
+    return "(" + geom::format_number(p.x) + ", " + geom::format_number(p.y) + ", " +
+           geom::format_number(p.z) + ")";
+}
+
+// ---------------------------------------------------------------------------------------
+class AddObject final : public Command {
+public:
+    explicit AddObject(Object object) : object_(std::move(object)) {}
+
+    geom::Status apply(Document& doc) override {
+        if (auto st = detail::validate_name(object_.name); !st) return st;
+        if (auto st = detail::validate_shape(object_.shape); !st) return st.error().under("/shape");
+        if (object_.id != 0 && doc.find(object_.id))
+            return make_error(ErrorCode::schema,
+                              "an object with id " + std::to_string(object_.id) + " already exists",
+                              "/id");
+        prev_next_id_ = doc.next_id;
+        if (object_.id == 0) object_.id = doc.allocate_id(); // redo keeps this id
+        doc.next_id = std::max(doc.next_id, object_.id + 1);
+        doc.objects.push_back(object_);
+        return geom::Ok{};
+    }
+
+    void revert(Document& doc) override {
+        assert(!doc.objects.empty() && doc.objects.back().id == object_.id);
+        doc.objects.pop_back();
+        doc.next_id = prev_next_id_;
+        if (doc.selection.object == object_.id) doc.selection = Selection{};
+    }
+
+    std::string label() const override { return "Add " + object_.name; }
+    std::size_t memory_bytes() const override {
+        return sizeof(*this) + object_.name.size() + detail::shape_bytes(object_.shape);
+    }
+
+private:
+    Object object_;
+    std::uint64_t prev_next_id_ = 0;
+};
+
+class RemoveObject final : public Command {
+public:
+    explicit RemoveObject(std::uint64_t id) : id_(id) {}
+
+    geom::Status apply(Document& doc) override {
+        auto found = detail::find_object(doc, id_);
+        if (!found) return found.error();
+        index_ = doc.index_of(id_);
+        object_ = std::move(**found);
+        doc.objects.erase(doc.objects.begin() + index_);
+        sel_before_ = doc.selection;
+        if (doc.selection.object == id_) doc.selection = Selection{};
+        sel_after_ = doc.selection;
+        return geom::Ok{};
+    }
+
+    void revert(Document& doc) override {
+        doc.objects.insert(doc.objects.begin() + index_, object_);
+        restore_selection(doc, sel_before_, sel_after_);
+    }
+
+    std::string label() const override { return "Delete " + object_.name; }
+    std::size_t memory_bytes() const override {
+        return sizeof(*this) + object_.name.size() + detail::shape_bytes(object_.shape);
+    }
+
+private:
+    std::uint64_t id_;
+    int index_ = -1;
+    Object object_;
+    Selection sel_before_, sel_after_;
+};
+
+class RenameObject final : public Command {
+public:
+    RenameObject(std::uint64_t id, std::string name) : id_(id), name_(std::move(name)) {}
+
+    geom::Status apply(Document& doc) override {
+        auto found = detail::find_object(doc, id_);
+        if (!found) return found.error();
+        if (auto st = detail::validate_name(name_); !st) return st;
+        old_name_ = (*found)->name;
+        (*found)->name = name_;
+        return geom::Ok{};
+    }
+
+    void revert(Document& doc) override {
+        Object* obj = doc.find(id_);
+        assert(obj);
+        obj->name = old_name_;
+    }
+
+    std::string label() const override { return "Rename " + old_name_ + " to " + name_; }
+    std::size_t memory_bytes() const override {
+        return sizeof(*this) + name_.size() + old_name_.size();
+    }
+
+private:
+    std::uint64_t id_;
+    std::string name_, old_name_;
+};
+
+class ReplaceShape final : public Command {
+public:
+    ReplaceShape(std::uint64_t id, Shape shape, std::string label)
+        : id_(id), shape_(std::move(shape)), label_(std::move(label)) {}
+
+    geom::Status apply(Document& doc) override {
+        auto found = detail::find_object(doc, id_);
+        if (!found) return found.error();
+        if (auto st = detail::validate_shape(shape_); !st) return st.error().under("/shape");
+        Object& obj = **found;
+        old_ = obj.shape;
+        obj.shape = shape_;
+        sel_before_ = doc.selection;
+        if (!selection_valid(doc, doc.selection)) doc.selection.i = doc.selection.j = -1;
+        sel_after_ = doc.selection;
+        return geom::Ok{};
+    }
+
+    void revert(Document& doc) override {
+        Object* obj = doc.find(id_);
+        assert(obj);
+        obj->shape = old_;
+        restore_selection(doc, sel_before_, sel_after_);
+    }
+
+    std::string label() const override { return label_; }
+    std::size_t memory_bytes() const override {
+        return sizeof(*this) + label_.size() + detail::shape_bytes(shape_) +
+               detail::shape_bytes(old_);
+    }
+
+private:
+    std::uint64_t id_;
+    Shape shape_, old_;
+    std::string label_;
+    Selection sel_before_, sel_after_;
+};
+
+// ---------------------------------------------------------------------------------------
+class MoveControlPoint final : public Command {
+public:
+    MoveControlPoint(std::uint64_t id, int i, int j, glm::dvec3 p) : id_(id), i_(i), j_(j), p_(p) {}
+
+    geom::Status apply(Document& doc) override {
+        auto found = detail::find_object(doc, id_);
+        if (!found) return found.error();
+        auto ref = control_point(**found, i_, j_);
+        if (!ref) return ref.error();
+        for (int a = 0; a < 3; ++a)
+            if (!std::isfinite(p_[a]))
+                return make_error(ErrorCode::schema,
+                                  "a control point needs finite coordinates, got " + vec_text(p_),
+                                  "/position/" + std::to_string(a));
+        curve_ = ref->curve != nullptr;
+        old_ = ref->position();
+        ref->position() = p_;
+        return geom::Ok{};
+    }
+
+    void revert(Document& doc) override {
+        Object* obj = doc.find(id_);
+        assert(obj);
+        control_point(*obj, i_, j_)->position() = old_;
+    }
+
+    bool merge_with(const Command& next) override {
+        auto* m = dynamic_cast<const MoveControlPoint*>(&next);
+        if (!m || m->id_ != id_ || m->i_ != i_ || m->j_ != j_) return false;
+        p_ = m->p_; // old_ stays: the position before the whole drag
+        return true;
+    }
+
+    std::string label() const override {
+        return "Move " + detail::point_label('P', i_, curve_ ? -1 : j_);
+    }
+
+private:
+    std::uint64_t id_;
+    int i_, j_;
+    glm::dvec3 p_, old_{0};
+    bool curve_ = false;
+};
+
+class SetWeight final : public Command {
+public:
+    SetWeight(std::uint64_t id, int i, int j, double w) : id_(id), i_(i), j_(j), w_(w) {}
+
+    geom::Status apply(Document& doc) override {
+        auto found = detail::find_object(doc, id_);
+        if (!found) return found.error();
+        auto ref = control_point(**found, i_, j_);
+        if (!ref) return ref.error();
+        curve_ = ref->curve != nullptr;
+        const std::string name = detail::point_label('w', i_, curve_ ? -1 : j_);
+        if (!std::isfinite(w_))
+            return make_error(ErrorCode::weights,
+                              "weight " + name + " must be a finite number, got " +
+                                  geom::format_number(w_),
+                              "/weight");
+        // The type tag is enforced: a non-rational object keeps unit weights.
+        if (!geom::is_rational(ref->type()) && w_ != 1.0)
+            return make_error(ErrorCode::weights,
+                              std::string("a ") + geom::spline_type_name(ref->type()) + " " +
+                                  (curve_ ? "curve" : "surface") +
+                                  " has unit weights; make it rational (nurbs or "
+                                  "rational_bezier) to set " +
+                                  name + " = " + geom::format_number(w_),
+                              "/weight");
+        old_ = ref->weight();
+        ref->weight() = w_;
+        return geom::Ok{};
+    }
+
+    void revert(Document& doc) override {
+        Object* obj = doc.find(id_);
+        assert(obj);
+        control_point(*obj, i_, j_)->weight() = old_;
+    }
+
+    bool merge_with(const Command& next) override {
+        auto* m = dynamic_cast<const SetWeight*>(&next);
+        if (!m || m->id_ != id_ || m->i_ != i_ || m->j_ != j_) return false;
+        w_ = m->w_;
+        return true;
+    }
+
+    std::string label() const override {
+        return "Set weight " + detail::point_label('w', i_, curve_ ? -1 : j_) + " = " +
+               geom::format_number(w_);
+    }
+
+private:
+    std::uint64_t id_;
+    int i_, j_;
+    double w_, old_ = 1;
+    bool curve_ = false;
+};
+
+class SetKnot final : public Command {
+public:
+    SetKnot(std::uint64_t id, Dir dir, int k, double value)
+        : id_(id), dir_(dir), k_(k), value_(value) {}
+
+    geom::Status apply(Document& doc) override {
+        auto found = detail::find_object(doc, id_);
+        if (!found) return found.error();
+        Object& obj = **found;
+        geom::Knots* U = nullptr;
+        int p = 0, n = 0;
+        if (auto* s = std::get_if<SurfaceObject>(&obj.shape)) {
+            U = dir_ == Dir::u ? &s->surface.knots_u : &s->surface.knots_v;
+            p = s->surface.degree(dir_);
+            n = s->surface.count(dir_);
+        } else if (auto* c = std::get_if<CurveObject>(&obj.shape)) {
+            if (dir_ != Dir::u)
+                return make_error(ErrorCode::schema, "a curve has only one direction (u)",
+                                  "/direction");
+            U = &c->curve.knots;
+            p = c->curve.degree;
+            n = c->curve.count();
+            curve_ = true;
+        } else {
+            return make_error(ErrorCode::schema,
+                              "object '" + obj.name + "' is an implicit surface; it has no knots",
+                              "/id");
+        }
+        const int m = static_cast<int>(U->size());
+        const std::string name = label_name();
+        if (k_ < 0 || k_ >= m)
+            return make_error(ErrorCode::schema,
+                              "knot index " + std::to_string(k_) + " is outside 0.." +
+                                  std::to_string(m - 1),
+                              "/k");
+        if (!std::isfinite(value_))
+            return make_error(ErrorCode::knots,
+                              "knot " + name + " must be a finite number, got " +
+                                  geom::format_number(value_),
+                              "/value");
+        const geom::Knots& K = *U;
+        const bool clamped_start = K[0] == K[p];
+        const bool clamped_end = K[n] == K[m - 1];
+        if ((clamped_start && k_ <= p) || (clamped_end && k_ >= n))
+            return make_error(ErrorCode::knots,
+                              "knot " + name + " is a clamped end knot and cannot move", "/value");
+        const double lo = k_ > 0 ? K[k_ - 1] : -INFINITY;
+        const double hi = k_ + 1 < m ? K[k_ + 1] : INFINITY;
+        if (value_ < lo || value_ > hi)
+            return make_error(ErrorCode::knots,
+                              "knot " + name + " must stay between its neighbours [" +
+                                  geom::format_number(lo) + ", " + geom::format_number(hi) +
+                                  "], got " + geom::format_number(value_),
+                              "/value");
+        geom::Knots moved = K;
+        moved[k_] = value_;
+        if (auto st = geom::validate_knots(moved, p, n); !st)
+            return make_error(ErrorCode::knots,
+                              "moving knot " + name + " to " + geom::format_number(value_) +
+                                  " is not allowed: " + st.error().message,
+                              "/value");
+        old_ = K[k_];
+        (*U)[k_] = value_;
+        return geom::Ok{};
+    }
+
+    void revert(Document& doc) override {
+        Object* obj = doc.find(id_);
+        assert(obj);
+        if (auto* s = std::get_if<SurfaceObject>(&obj->shape))
+            (dir_ == Dir::u ? s->surface.knots_u : s->surface.knots_v)[k_] = old_;
+        else
+            std::get<CurveObject>(obj->shape).curve.knots[k_] = old_;
+    }
+
+    bool merge_with(const Command& next) override {
+        auto* m = dynamic_cast<const SetKnot*>(&next);
+        if (!m || m->id_ != id_ || m->dir_ != dir_ || m->k_ != k_) return false;
+        value_ = m->value_;
+        return true;
+    }
+
+    std::string label() const override {
+        return "Set knot " + label_name() + " = " + geom::format_number(value_);
+    }
+
+private:
+    std::string label_name() const {
+        return std::string(curve_ ? "t" : dir_ == Dir::u ? "u" : "v") + std::to_string(k_);
+    }
+
+    std::uint64_t id_;
+    Dir dir_;
+    int k_;
+    double value_, old_ = 0;
+    bool curve_ = false;
+};
+
+class TransformObject final : public Command {
+public:
+    TransformObject(std::uint64_t id, const glm::dmat4& m, std::string label)
+        : id_(id), m_(m), label_(std::move(label)) {}
+
+    geom::Status apply(Document& doc) override {
+        auto found = detail::find_object(doc, id_);
+        if (!found) return found.error();
+        Object& obj = **found;
+        std::vector<glm::dvec3>* points = nullptr;
+        if (auto* s = std::get_if<SurfaceObject>(&obj.shape))
+            points = &s->surface.points;
+        else if (auto* c = std::get_if<CurveObject>(&obj.shape))
+            points = &c->curve.points;
+        else
+            return make_error(ErrorCode::schema,
+                              "object '" + obj.name +
+                                  "' is an implicit surface; it has no control points to transform",
+                              "/id");
+        if (label_.empty()) label_ = "Transform " + obj.name;
+        if (!redo_) {
+            // glm is column-major: m_[c][r]. The bottom row is m_[0..3][3].
+            for (int c = 0; c < 4; ++c)
+                for (int r = 0; r < 4; ++r)
+                    if (!std::isfinite(m_[c][r]))
+                        return make_error(ErrorCode::schema, "a transform needs finite entries",
+                                          "/matrix");
+            if (m_[0][3] != 0 || m_[1][3] != 0 || m_[2][3] != 0 || m_[3][3] != 1)
+                return make_error(ErrorCode::schema,
+                                  "a transform must be affine (bottom row 0 0 0 1)", "/matrix");
+            after_.resize(points->size());
+            for (std::size_t k = 0; k < points->size(); ++k) {
+                // Affine maps commute with the rational combination (Piegl & Tiller 4.2.3:
+                // affine invariance), so mapping the Cartesian points maps the surface.
+                after_[k] = glm::dvec3(m_ * glm::dvec4((*points)[k], 1.0));
+                for (int a = 0; a < 3; ++a)
+                    if (!std::isfinite(after_[k][a]))
+                        return make_error(ErrorCode::schema,
+                                          "the transform would move control point " +
+                                              std::to_string(k) + " to infinity",
+                                          "/matrix");
+            }
+        }
+        assert(after_.size() == points->size());
+        before_ = *points;
+        *points = after_;
+        redo_ = true; // a later apply is a redo: the exact points of the first time
+        return geom::Ok{};
+    }
+
+    void revert(Document& doc) override {
+        Object* obj = doc.find(id_);
+        assert(obj);
+        if (auto* s = std::get_if<SurfaceObject>(&obj->shape))
+            s->surface.points = before_;
+        else
+            std::get<CurveObject>(obj->shape).curve.points = before_;
+    }
+
+    bool merge_with(const Command& next) override {
+        auto* t = dynamic_cast<const TransformObject*>(&next);
+        if (!t || t->id_ != id_) return false;
+        after_ = t->after_;
+        m_ = t->m_ * m_;
+        label_ = t->label_;
+        return true;
+    }
+
+    std::string label() const override { return label_; }
+    std::size_t memory_bytes() const override {
+        return sizeof(*this) + label_.size() +
+               (before_.size() + after_.size()) * sizeof(glm::dvec3);
+    }
+
+private:
+    std::uint64_t id_;
+    glm::dmat4 m_;
+    std::string label_;
+    std::vector<glm::dvec3> before_, after_;
+    bool redo_ = false;
+};
+
+// ---------------------------------------------------------------------------------------
+class SetColors final : public Command {
+public:
+    explicit SetColors(Colors colors) : colors_(colors) {}
+
+    geom::Status apply(Document& doc) override {
+        const std::pair<const char*, const Rgba*> all[] = {
+            {"background", &colors_.background},
+            {"surface", &colors_.surface},
+            {"selected_surface", &colors_.selected_surface},
+            {"control_net", &colors_.control_net},
+            {"control_points", &colors_.control_points},
+            {"selected_point", &colors_.selected_point},
+            {"knot_curves", &colors_.knot_curves},
+            {"indicator", &colors_.indicator},
+        };
+        for (const auto& [name, c] : all) {
+            const float ch[4] = {c->r, c->g, c->b, c->a};
+            for (int k = 0; k < 4; ++k)
+                if (!(ch[k] >= 0.0f && ch[k] <= 1.0f))
+                    return make_error(ErrorCode::schema,
+                                      std::string("colour channels are between 0 and 1; ") + name +
+                                          " has " + geom::format_number(ch[k]),
+                                      std::string("/") + name + "/" + std::to_string(k));
+        }
+        old_ = doc.colors;
+        doc.colors = colors_;
+        return geom::Ok{};
+    }
+
+    void revert(Document& doc) override { doc.colors = old_; }
+
+    bool merge_with(const Command& next) override {
+        auto* c = dynamic_cast<const SetColors*>(&next);
+        if (!c) return false;
+        colors_ = c->colors_;
+        return true;
+    }
+
+    std::string label() const override { return "Change colours"; }
+
+private:
+    Colors colors_, old_;
+};
+
+} // namespace
+
+std::unique_ptr<Command> add_object(Object object) {
+    return std::make_unique<AddObject>(std::move(object));
+}
+std::unique_ptr<Command> remove_object(std::uint64_t id) {
+    return std::make_unique<RemoveObject>(id);
+}
+std::unique_ptr<Command> rename_object(std::uint64_t id, std::string name) {
+    return std::make_unique<RenameObject>(id, std::move(name));
+}
+std::unique_ptr<Command> replace_shape(std::uint64_t id, Shape shape, std::string label) {
+    return std::make_unique<ReplaceShape>(id, std::move(shape), std::move(label));
+}
+std::unique_ptr<Command> move_control_point(std::uint64_t id, int i, int j, glm::dvec3 position) {
+    return std::make_unique<MoveControlPoint>(id, i, j, position);
+}
+std::unique_ptr<Command> set_weight(std::uint64_t id, int i, int j, double weight) {
+    return std::make_unique<SetWeight>(id, i, j, weight);
+}
+std::unique_ptr<Command> set_knot(std::uint64_t id, geom::Dir dir, int k, double value) {
+    return std::make_unique<SetKnot>(id, dir, k, value);
+}
+std::unique_ptr<Command> transform_object(std::uint64_t id, const glm::dmat4& m) {
+    return std::make_unique<TransformObject>(id, m, std::string());
+}
+std::unique_ptr<Command> transform_object(std::uint64_t id, const glm::dmat4& m,
+                                          std::string label) {
+    return std::make_unique<TransformObject>(id, m, std::move(label));
+}
+std::unique_ptr<Command> set_colors(Colors colors) {
+    return std::make_unique<SetColors>(colors);
+}
+
+} // namespace isoparm::doc

@@ -1,0 +1,400 @@
+// Refinement commands (knot insertion, degree elevation, split) and their selection remapping.
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include "core/doc/commands.hpp"
+#include "core/doc/commands_common.hpp"
+#include "core/geom/knots.hpp"
+#include "core/geom/refine.hpp"
+#include "core/geom/validate.hpp"
+
+namespace isoparm::doc {
+
+namespace {
+
+using geom::Dir;
+using geom::ErrorCode;
+using geom::make_error;
+
+// The knot vector, degree and count of a shape along one direction (curves: their own).
+struct Line {
+    const geom::Knots* U = nullptr;
+    int p = 0;
+    int n = 0;
+};
+
+Line line_of(const Shape& shape, Dir dir) {
+    if (auto* s = std::get_if<SurfaceObject>(&shape))
+        return {&s->surface.knots(dir), s->surface.degree(dir), s->surface.count(dir)};
+    const geom::Curve& c = std::get<CurveObject>(shape).curve;
+    return {&c.knots, c.degree, c.count()};
+}
+
+// The Greville abscissa of control point i, (U[i+1] + ... + U[i+p]) / p: the parameter a
+// control point "belongs to" (Piegl & Tiller, sec. 9.3 and Farin). It is unchanged for the
+// control points that knot insertion and splitting keep, so the nearest Greville abscissa
+// finds "the same control point" in a new net. Summed as a running mean so that huge knots
+// cannot overflow.
+double greville(const Line& L, int i) {
+    double g = 0;
+    for (int k = 1; k <= L.p; ++k) g += ((*L.U)[i + k] - g) / k;
+    return g;
+}
+
+int nearest_greville(const Line& L, double g) {
+    int best = 0;
+    double best_d = std::abs(greville(L, 0) - g);
+    for (int i = 1; i < L.n; ++i) {
+        const double d = std::abs(greville(L, i) - g);
+        if (d < best_d) best = i, best_d = d; // ties keep the lower index
+    }
+    return best;
+}
+
+int clamp_index(int i, int n) {
+    return std::clamp(i, 0, std::max(n - 1, 0));
+}
+
+// The selection's index along dir if it is a control point of object id, else null.
+int* selected_index(Selection& sel, std::uint64_t id, bool curve, Dir dir) {
+    if (sel.object != id || !sel.has_point()) return nullptr;
+    if (curve || dir == Dir::u) return &sel.i;
+    return sel.j >= 0 ? &sel.j : nullptr;
+}
+
+bool is_curve(const Shape& shape) {
+    return std::holds_alternative<CurveObject>(shape);
+}
+
+// Shared checks of the refinement commands: the object exists, has knots, and a curve is
+// refined along its only direction.
+geom::Expected<Object*> refinable(Document& doc, std::uint64_t id, Dir dir, const char* what) {
+    auto found = detail::find_object(doc, id);
+    if (!found) return found.error();
+    Object* obj = *found;
+    if (std::holds_alternative<ImplicitObject>(obj->shape))
+        return make_error(ErrorCode::schema,
+                          "object '" + obj->name + "' is an implicit surface; " + what +
+                              " needs a curve or a surface",
+                          "/id");
+    if (is_curve(obj->shape) && dir != Dir::u)
+        return make_error(ErrorCode::schema, "a curve has only one direction (u)", "/direction");
+    return obj;
+}
+
+const char* dir_name(Dir d) {
+    return d == Dir::u ? "u" : "v";
+}
+
+// ---------------------------------------------------------------------------------------
+// Knot insertion (Boehm; Piegl & Tiller A5.1 through geom::insert_knot).
+class InsertKnot final : public Command {
+public:
+    InsertKnot(std::uint64_t id, Dir dir, double t, int times)
+        : id_(id), dir_(dir), t_(t), times_(times) {}
+
+    geom::Status apply(Document& doc) override {
+        auto found = refinable(doc, id_, dir_, "knot insertion");
+        if (!found) return found.error();
+        Object& obj = **found;
+        if (times_ < 1)
+            return make_error(ErrorCode::schema,
+                              "times must be at least 1, got " + std::to_string(times_), "/times");
+        Shape result;
+        if (auto* s = std::get_if<SurfaceObject>(&obj.shape)) {
+            auto r = geom::insert_knot(s->surface, dir_, t_, times_);
+            if (!r) return r.error();
+            result = SurfaceObject{std::move(r).value()};
+        } else {
+            const auto& c = std::get<CurveObject>(obj.shape);
+            auto r = geom::insert_knot(c.curve, t_, times_);
+            if (!r) return r.error();
+            result = CurveObject{std::move(r).value(), c.plane};
+        }
+        if (auto st = detail::check_size(result, "/times"); !st) return st;
+
+        curve_ = is_curve(obj.shape);
+        sel_before_ = doc.selection;
+        if (int* idx = selected_index(doc.selection, id_, curve_, dir_))
+            *idx = forward(line_of(obj.shape, dir_), line_of(result, dir_), *idx);
+        sel_after_ = doc.selection;
+        before_ = std::move(obj.shape);
+        obj.shape = std::move(result);
+        return geom::Ok{};
+    }
+
+    void revert(Document& doc) override {
+        Object* obj = doc.find(id_);
+        assert(obj);
+        if (doc.selection == sel_after_) {
+            doc.selection = sel_before_;
+        } else if (int* idx = selected_index(doc.selection, id_, curve_, dir_)) {
+            *idx = backward(line_of(before_, dir_), line_of(obj->shape, dir_), *idx);
+        }
+        obj->shape = before_;
+    }
+
+    std::string label() const override {
+        std::string s = std::string("Insert knot ") + (curve_ ? "t" : dir_name(dir_)) + " = " +
+                        geom::format_number(t_);
+        if (times_ > 1) s += " (" + std::to_string(times_) + " times)";
+        return s;
+    }
+
+    std::size_t memory_bytes() const override {
+        return sizeof(*this) + detail::shape_bytes(before_);
+    }
+
+private:
+    // Piegl & Tiller A5.1: with k the span of t (last knot <= t) and s its multiplicity,
+    // Q[i] = P[i] for i <= k - p and Q[i + r] = P[i] for i >= k - s; the points between are
+    // replaced, and go to the new point with the nearest Greville abscissa.
+    int forward(const Line& old_line, const Line& new_line, int i) const {
+        const geom::Knots& U = *old_line.U;
+        const int k = static_cast<int>(std::upper_bound(U.begin(), U.end(), t_) - U.begin()) - 1;
+        const int s = geom::multiplicity(U, t_);
+        if (i <= k - old_line.p) return clamp_index(i, new_line.n);
+        if (i >= k - s) return clamp_index(i + times_, new_line.n);
+        return nearest_greville(new_line, greville(old_line, i));
+    }
+    int backward(const Line& old_line, const Line& new_line, int i) const {
+        const geom::Knots& U = *old_line.U;
+        const int k = static_cast<int>(std::upper_bound(U.begin(), U.end(), t_) - U.begin()) - 1;
+        const int s = geom::multiplicity(U, t_);
+        if (i <= k - old_line.p) return clamp_index(i, old_line.n);
+        if (i >= k - s + times_) return clamp_index(i - times_, old_line.n);
+        return nearest_greville(old_line, greville(new_line, i));
+    }
+
+    std::uint64_t id_;
+    Dir dir_;
+    double t_;
+    int times_;
+    bool curve_ = false;
+    Shape before_;
+    Selection sel_before_, sel_after_;
+};
+
+// ---------------------------------------------------------------------------------------
+// Degree elevation (Piegl & Tiller A5.9 through geom::elevate_degree).
+class ElevateDegree final : public Command {
+public:
+    ElevateDegree(std::uint64_t id, Dir dir, int times) : id_(id), dir_(dir), times_(times) {}
+
+    geom::Status apply(Document& doc) override {
+        auto found = refinable(doc, id_, dir_, "degree elevation");
+        if (!found) return found.error();
+        Object& obj = **found;
+        if (times_ < 1)
+            return make_error(ErrorCode::schema,
+                              "times must be at least 1, got " + std::to_string(times_), "/times");
+        if (auto st = precheck_size(obj.shape); !st) return st;
+        Shape result;
+        if (auto* s = std::get_if<SurfaceObject>(&obj.shape)) {
+            auto r = geom::elevate_degree(s->surface, dir_, times_);
+            if (!r) return r.error();
+            result = SurfaceObject{std::move(r).value()};
+        } else {
+            const auto& c = std::get<CurveObject>(obj.shape);
+            auto r = geom::elevate_degree(c.curve, times_);
+            if (!r) return r.error();
+            result = CurveObject{std::move(r).value(), c.plane};
+        }
+        if (auto st = detail::check_size(result, "/times"); !st) return st;
+
+        curve_ = is_curve(obj.shape);
+        sel_before_ = doc.selection;
+        if (int* idx = selected_index(doc.selection, id_, curve_, dir_)) {
+            const Line old_line = line_of(obj.shape, dir_);
+            *idx = nearest_greville(line_of(result, dir_), greville(old_line, *idx));
+        }
+        sel_after_ = doc.selection;
+        before_ = std::move(obj.shape);
+        obj.shape = std::move(result);
+        return geom::Ok{};
+    }
+
+    void revert(Document& doc) override {
+        Object* obj = doc.find(id_);
+        assert(obj);
+        if (doc.selection == sel_after_) {
+            doc.selection = sel_before_;
+        } else if (int* idx = selected_index(doc.selection, id_, curve_, dir_)) {
+            *idx =
+                nearest_greville(line_of(before_, dir_), greville(line_of(obj->shape, dir_), *idx));
+        }
+        obj->shape = before_;
+    }
+
+    std::string label() const override {
+        std::string s =
+            curve_ ? "Elevate degree" : std::string("Elevate degree in ") + dir_name(dir_);
+        if (times_ > 1) s += " by " + std::to_string(times_);
+        return s;
+    }
+
+    std::size_t memory_bytes() const override {
+        return sizeof(*this) + detail::shape_bytes(before_);
+    }
+
+private:
+    // Refuse before allocating: on a clamped vector with `spans` non-empty spans, elevation
+    // by t adds exactly t * spans control points (each distinct knot's multiplicity rises by
+    // t); an unclamped vector is clamped first, which never adds points. So n + t * spans
+    // bounds the result.
+    geom::Status precheck_size(const Shape& shape) const {
+        const Line L = line_of(shape, dir_);
+        const geom::Knots& U = *L.U;
+        long long spans = 0;
+        for (int k = L.p; k < L.n; ++k)
+            if (U[k] < U[k + 1]) ++spans;
+        const long long est = L.n + static_cast<long long>(times_) * spans;
+        auto too_many = [&](long long count, long long cap) {
+            return make_error(ErrorCode::limit,
+                              "elevating the degree " + std::to_string(times_) +
+                                  " time(s) would give about " + std::to_string(count) +
+                                  " control points; at most " + std::to_string(cap) +
+                                  " are allowed",
+                              "/times");
+        };
+        if (times_ > geom::max_points_per_direction || est > geom::max_points_per_direction)
+            return too_many(est, geom::max_points_per_direction);
+        if (auto* s = std::get_if<SurfaceObject>(&shape)) {
+            const long long other = s->surface.count(dir_ == Dir::u ? Dir::v : Dir::u);
+            if (est * other > geom::max_points_per_surface)
+                return too_many(est * other, geom::max_points_per_surface);
+        }
+        return geom::Ok{};
+    }
+
+    std::uint64_t id_;
+    Dir dir_;
+    int times_;
+    bool curve_ = false;
+    Shape before_;
+    Selection sel_before_, sel_after_;
+};
+
+// ---------------------------------------------------------------------------------------
+// Split into two pieces that keep their original parameters (through geom::split).
+class SplitObject final : public Command {
+public:
+    SplitObject(std::uint64_t id, Dir dir, double t) : id_(id), dir_(dir), t_(t) {}
+
+    geom::Status apply(Document& doc) override {
+        auto found = refinable(doc, id_, dir_, "splitting");
+        if (!found) return found.error();
+        Object& obj = **found;
+        Shape first, second;
+        if (auto* s = std::get_if<SurfaceObject>(&obj.shape)) {
+            auto r = geom::split(s->surface, dir_, t_);
+            if (!r) return r.error();
+            first = SurfaceObject{std::move(r->first)};
+            second = SurfaceObject{std::move(r->second)};
+        } else {
+            const auto& c = std::get<CurveObject>(obj.shape);
+            auto r = geom::split(c.curve, t_);
+            if (!r) return r.error();
+            first = CurveObject{std::move(r->first), c.plane};
+            second = CurveObject{std::move(r->second), c.plane};
+        }
+
+        curve_ = is_curve(obj.shape);
+        index_ = doc.index_of(id_);
+        prev_next_id_ = doc.next_id;
+        if (ids_.first == 0) {
+            ids_.first = doc.allocate_id();
+            ids_.second = doc.allocate_id();
+        } else {
+            // Redo: the same ids as the first time, so later commands still find the pieces.
+            doc.next_id = std::max(doc.next_id, ids_.second + 1);
+        }
+
+        sel_before_ = doc.selection;
+        remap_forward(doc.selection, obj.shape, first, second);
+        sel_after_ = doc.selection;
+
+        Object a{ids_.first, obj.name + ".1", std::move(first), obj.visible};
+        Object b{ids_.second, obj.name + ".2", std::move(second), obj.visible};
+        before_ = std::move(obj);
+        doc.objects[index_] = std::move(a);
+        doc.objects.insert(doc.objects.begin() + index_ + 1, std::move(b));
+        return geom::Ok{};
+    }
+
+    void revert(Document& doc) override {
+        assert(index_ >= 0 && index_ + 1 < static_cast<int>(doc.objects.size()));
+        assert(doc.objects[index_].id == ids_.first && doc.objects[index_ + 1].id == ids_.second);
+        if (doc.selection == sel_after_) {
+            doc.selection = sel_before_;
+        } else if (doc.selection.object == ids_.first || doc.selection.object == ids_.second) {
+            const Object& piece =
+                doc.objects[doc.selection.object == ids_.first ? index_ : index_ + 1];
+            doc.selection.object = id_;
+            if (int* idx = selected_index(doc.selection, id_, curve_, dir_))
+                *idx = nearest_greville(line_of(before_.shape, dir_),
+                                        greville(line_of(piece.shape, dir_), *idx));
+        }
+        doc.objects.erase(doc.objects.begin() + index_ + 1);
+        doc.objects[index_] = before_;
+        doc.next_id = prev_next_id_;
+    }
+
+    std::string label() const override {
+        return std::string("Split at ") + (curve_ ? "t" : dir_name(dir_)) + " = " +
+               geom::format_number(t_);
+    }
+
+    std::size_t memory_bytes() const override {
+        return sizeof(*this) + before_.name.size() + detail::shape_bytes(before_.shape);
+    }
+
+    std::pair<std::uint64_t, std::uint64_t> ids() const { return ids_; }
+
+private:
+    // A selected control point goes to the piece on its side of t (by Greville abscissa; a
+    // point exactly at t, the shared border, stays with the first piece) and there to the
+    // point with the nearest Greville abscissa: the same point where the piece kept it.
+    void remap_forward(Selection& sel, const Shape& whole, const Shape& first,
+                       const Shape& second) const {
+        if (sel.object != id_) return;
+        sel.object = ids_.first;
+        int* idx = selected_index(sel, ids_.first, curve_, dir_);
+        if (!idx) return;
+        const double g = greville(line_of(whole, dir_), *idx);
+        if (g > t_) sel.object = ids_.second;
+        *idx = nearest_greville(line_of(g > t_ ? second : first, dir_), g);
+    }
+
+    std::uint64_t id_;
+    Dir dir_;
+    double t_;
+    bool curve_ = false;
+    int index_ = -1;
+    std::uint64_t prev_next_id_ = 0;
+    std::pair<std::uint64_t, std::uint64_t> ids_{0, 0};
+    Object before_;
+    Selection sel_before_, sel_after_;
+};
+
+} // namespace
+
+std::unique_ptr<Command> insert_knot(std::uint64_t id, geom::Dir dir, double t, int times) {
+    return std::make_unique<InsertKnot>(id, dir, t, times);
+}
+
+std::unique_ptr<Command> elevate_degree(std::uint64_t id, geom::Dir dir, int times) {
+    return std::make_unique<ElevateDegree>(id, dir, times);
+}
+
+std::unique_ptr<Command> split_object(std::uint64_t id, geom::Dir dir, double t) {
+    return std::make_unique<SplitObject>(id, dir, t);
+}
+
+std::pair<std::uint64_t, std::uint64_t> split_piece_ids(const Command& split_command) {
+    if (auto* s = dynamic_cast<const SplitObject*>(&split_command)) return s->ids();
+    return {0, 0};
+}
+
+} // namespace isoparm::doc

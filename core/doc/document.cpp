@@ -1,0 +1,227 @@
+// The document: object lookup, exact comparison, the default scene and new planar grids.
+#include "core/doc/document.hpp"
+
+#include <bit>
+#include <cassert>
+#include <cstring>
+#include <string>
+
+#include "core/geom/knots.hpp"
+#include "core/geom/validate.hpp"
+
+namespace isoparm::doc {
+
+Object* Document::find(std::uint64_t id) {
+    if (id == 0) return nullptr;
+    for (Object& o : objects)
+        if (o.id == id) return &o;
+    return nullptr;
+}
+
+const Object* Document::find(std::uint64_t id) const {
+    if (id == 0) return nullptr;
+    for (const Object& o : objects)
+        if (o.id == id) return &o;
+    return nullptr;
+}
+
+int Document::index_of(std::uint64_t id) const {
+    if (id == 0) return -1;
+    for (std::size_t k = 0; k < objects.size(); ++k)
+        if (objects[k].id == id) return static_cast<int>(k);
+    return -1;
+}
+
+namespace {
+
+// Bit for bit: 0.0 and -0.0 differ, a NaN equals the same NaN. Undo must restore exactly the
+// numbers it found, so `==` on doubles (which merges the zeros) is not enough.
+bool same_bits(double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+bool same_bits(float a, float b) {
+    return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b);
+}
+bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
+    return a.size() == b.size() &&
+           (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+}
+bool same_bits(const glm::dvec3& a, const glm::dvec3& b) {
+    return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z);
+}
+bool same_bits(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t k = 0; k < a.size(); ++k)
+        if (!same_bits(a[k], b[k])) return false;
+    return true;
+}
+bool same_bits(const Rgba& a, const Rgba& b) {
+    return same_bits(a.r, b.r) && same_bits(a.g, b.g) && same_bits(a.b, b.b) && same_bits(a.a, b.a);
+}
+
+bool same_curve(const geom::Curve& a, const geom::Curve& b) {
+    return a.type == b.type && a.degree == b.degree && same_bits(a.knots, b.knots) &&
+           same_bits(a.points, b.points) && same_bits(a.weights, b.weights);
+}
+
+bool same_surface(const geom::Surface& a, const geom::Surface& b) {
+    return a.type == b.type && a.degree_u == b.degree_u && a.degree_v == b.degree_v &&
+           a.n_u == b.n_u && a.n_v == b.n_v && same_bits(a.knots_u, b.knots_u) &&
+           same_bits(a.knots_v, b.knots_v) && same_bits(a.points, b.points) &&
+           same_bits(a.weights, b.weights);
+}
+
+bool same_implicit(const ImplicitObject& a, const ImplicitObject& b) {
+    return a.expression == b.expression && a.parameter_names == b.parameter_names &&
+           same_bits(a.parameter_values, b.parameter_values) && same_bits(a.lo, b.lo) &&
+           same_bits(a.hi, b.hi) && same_bits(a.cell, b.cell);
+}
+
+bool same_shape(const Shape& a, const Shape& b) {
+    if (a.index() != b.index()) return false;
+    if (auto* s = std::get_if<SurfaceObject>(&a))
+        return same_surface(s->surface, std::get<SurfaceObject>(b).surface);
+    if (auto* c = std::get_if<CurveObject>(&a)) {
+        const auto& d = std::get<CurveObject>(b);
+        return c->plane == d.plane && same_curve(c->curve, d.curve);
+    }
+    return same_implicit(std::get<ImplicitObject>(a), std::get<ImplicitObject>(b));
+}
+
+bool same_colors(const Colors& a, const Colors& b) {
+    return same_bits(a.background, b.background) && same_bits(a.surface, b.surface) &&
+           same_bits(a.selected_surface, b.selected_surface) &&
+           same_bits(a.control_net, b.control_net) &&
+           same_bits(a.control_points, b.control_points) &&
+           same_bits(a.selected_point, b.selected_point) &&
+           same_bits(a.knot_curves, b.knot_curves) && same_bits(a.indicator, b.indicator);
+}
+
+} // namespace
+
+bool same_object(const Object& a, const Object& b) {
+    return a.id == b.id && a.name == b.name && a.visible == b.visible &&
+           same_shape(a.shape, b.shape);
+}
+
+bool same_geometry(const Document& a, const Document& b) {
+    if (a.objects.size() != b.objects.size()) return false;
+    for (std::size_t k = 0; k < a.objects.size(); ++k)
+        if (!same_object(a.objects[k], b.objects[k])) return false;
+    return same_colors(a.colors, b.colors);
+}
+
+bool same_document(const Document& a, const Document& b) {
+    return same_geometry(a, b) && a.selection == b.selection &&
+           same_bits(a.indicator.x, b.indicator.x) && same_bits(a.indicator.y, b.indicator.y) &&
+           a.display == b.display;
+}
+
+Document default_document() {
+    // A gentle hill over [-2, 2]^2, a little off-centre so that it does not look like a
+    // textbook bump from every side. Heights are literals (not computed), so the scene is the
+    // same number for number on every machine.
+    // clang-format off
+    static constexpr double height[5][5] = {
+        {0.0, 0.1, 0.2, 0.1, 0.0},
+        {0.1, 0.6, 0.9, 0.6, 0.2},
+        {0.2, 0.9, 1.6, 1.0, 0.3},
+        {0.1, 0.6, 1.0, 0.7, 0.2},
+        {0.0, 0.2, 0.3, 0.2, 0.0},
+    };
+    // clang-format on
+    geom::Surface s;
+    s.type = geom::SplineType::nurbs;
+    s.degree_u = s.degree_v = 3;
+    s.n_u = s.n_v = 5;
+    s.knots_u = geom::clamped_uniform_knots(5, 3);
+    s.knots_v = s.knots_u;
+    s.points.resize(25);
+    s.weights.assign(25, 1.0);
+    for (int i = 0; i < 5; ++i)
+        for (int j = 0; j < 5; ++j) s.point(i, j) = {i - 2.0, j - 2.0, height[i][j]};
+    // Two weights that are not 1, so the rational side is visible from the start: the top
+    // pulls the surface up, a lighter shoulder lets it sag a little.
+    s.weight(2, 2) = 2.0;
+    s.weight(1, 3) = 0.5;
+
+    Document doc;
+    Object hill;
+    hill.id = doc.allocate_id();
+    hill.name = "hill";
+    hill.shape = SurfaceObject{std::move(s)};
+    doc.objects.push_back(std::move(hill));
+    doc.selection = Selection{doc.objects[0].id, 2, 2};
+    doc.indicator = {0.5, 0.5};
+    return doc;
+}
+
+geom::Expected<geom::Surface> make_planar_grid_checked(int rows, int cols, int degree_u,
+                                                       int degree_v, geom::SplineType type) {
+    using geom::ErrorCode;
+    using geom::make_error;
+    if (degree_u < 1)
+        return make_error(ErrorCode::degree,
+                          "the degree in u must be at least 1, got " + std::to_string(degree_u),
+                          "/degree_u");
+    if (degree_v < 1)
+        return make_error(ErrorCode::degree,
+                          "the degree in v must be at least 1, got " + std::to_string(degree_v),
+                          "/degree_v");
+    const bool bezier = geom::is_bezier(type);
+    auto check_count = [&](int count, int degree, const char* what, const char* dir,
+                           const char* path) -> geom::Status {
+        if (bezier && count != degree + 1)
+            return make_error(ErrorCode::degree,
+                              std::string("a Bezier surface of degree ") + std::to_string(degree) +
+                                  " in " + dir + " needs " + std::to_string(degree + 1) + " " +
+                                  what + ", got " + std::to_string(count),
+                              path);
+        if (count < degree + 1)
+            return make_error(ErrorCode::degree,
+                              std::string("degree ") + std::to_string(degree) + " in " + dir +
+                                  " needs at least " + std::to_string(degree + 1) + " " + what +
+                                  ", got " + std::to_string(count),
+                              path);
+        if (count > geom::max_points_per_direction)
+            return make_error(ErrorCode::limit,
+                              std::string("at most ") +
+                                  std::to_string(geom::max_points_per_direction) + " " + what +
+                                  " are allowed, got " + std::to_string(count),
+                              path);
+        return geom::Ok{};
+    };
+    if (auto st = check_count(rows, degree_u, "rows", "u", "/rows"); !st) return st.error();
+    if (auto st = check_count(cols, degree_v, "columns", "v", "/cols"); !st) return st.error();
+    if (static_cast<long>(rows) * cols > geom::max_points_per_surface)
+        return make_error(ErrorCode::limit,
+                          "at most " + std::to_string(geom::max_points_per_surface) +
+                              " control points are allowed, got " + std::to_string(rows) + " x " +
+                              std::to_string(cols),
+                          "/cols");
+
+    geom::Surface s;
+    s.type = type;
+    s.degree_u = degree_u;
+    s.degree_v = degree_v;
+    s.n_u = rows;
+    s.n_v = cols;
+    s.knots_u = bezier ? geom::bezier_knots(degree_u) : geom::clamped_uniform_knots(rows, degree_u);
+    s.knots_v = bezier ? geom::bezier_knots(degree_v) : geom::clamped_uniform_knots(cols, degree_v);
+    s.points.resize(static_cast<std::size_t>(rows) * cols);
+    s.weights.assign(s.points.size(), 1.0);
+    for (int i = 0; i < rows; ++i)
+        for (int j = 0; j < cols; ++j)
+            s.point(i, j) = {(2.0 * i - (rows - 1)) / (rows - 1),
+                             (2.0 * j - (cols - 1)) / (cols - 1), 0.0};
+    return s;
+}
+
+geom::Surface make_planar_grid(int rows, int cols, int degree_u, int degree_v,
+                               geom::SplineType type) {
+    auto s = make_planar_grid_checked(rows, cols, degree_u, degree_v, type);
+    assert(s.ok() && "make_planar_grid: invalid arguments (use make_planar_grid_checked)");
+    return std::move(s).value();
+}
+
+} // namespace isoparm::doc

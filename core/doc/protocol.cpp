@@ -1,0 +1,176 @@
+// `isoparm geom`: request dispatch through the op table, batches, exit statuses.
+#include "core/doc/protocol.hpp"
+
+#include <array>
+#include <iostream>
+#include <iterator>
+#include <new>
+#include <sstream>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "core/doc/json_read.hpp"
+#include "core/doc/json_write.hpp"
+#include "core/doc/protocol_construct.hpp"
+#include "core/doc/protocol_detail.hpp"
+
+namespace isoparm::doc {
+
+using geom::Error;
+using geom::ErrorCode;
+using protocol::json;
+
+namespace {
+
+struct OpEntry {
+    std::string_view name;
+    protocol::OpHandler handler;
+};
+
+// Adding an op is one line here and one file (see protocol_detail.hpp).
+constexpr std::array<OpEntry, 14> op_table = {{
+    {"evaluate", protocol::op_evaluate},
+    {"basis", protocol::op_basis},
+    {"deboor", protocol::op_deboor},
+    {"insert_knot", protocol::op_insert_knot},
+    {"elevate_degree", protocol::op_elevate_degree},
+    {"split", protocol::op_split},
+    {"tessellate", protocol::op_tessellate},
+    {"polygonize", protocol::op_polygonize},
+    {"make_compatible", protocol::op_make_compatible},
+    {"ruled", protocol::op_ruled},
+    {"revolve", protocol::op_revolve},
+    {"swing", protocol::op_swing},
+    {"sweep", protocol::op_sweep},
+    {"skin", protocol::op_skin},
+}};
+
+json error_response(const Error& e) {
+    json err = json::object();
+    err["code"] = geom::error_code_name(e.code);
+    err["message"] = e.message;
+    if (e.has_path) err["path"] = e.path;
+    return json{{"ok", false}, {"error", std::move(err)}};
+}
+
+std::string known_ops() {
+    std::string list;
+    for (const OpEntry& op : op_table) {
+        if (!list.empty()) list += ", ";
+        list += op.name;
+    }
+    return list;
+}
+
+protocol::OpResult dispatch(const json& request) {
+    if (!request.is_object())
+        return protocol::schema_error("a request is a JSON object with an \"op\" field", "");
+    const json* op = protocol::find_field(request, "op");
+    if (!op) return protocol::missing_field("op");
+    if (!op->is_string()) return protocol::schema_error("op must be a string", "/op");
+    const std::string& name = op->get_ref<const std::string&>();
+    for (const OpEntry& entry : op_table)
+        if (entry.name == name) return entry.handler(request);
+    return geom::make_error(
+        ErrorCode::unknown_op,
+        "unknown op '" + short_name(name) + "' (available: " + known_ops() + ")", "/op");
+}
+
+// One request with the reader's problems inside it (paths relative to the request).
+json respond(const json& request, const std::vector<Error>& problems) {
+    if (!problems.empty()) return error_response(problems.front());
+    try {
+        protocol::OpResult r = dispatch(request);
+        if (!r) return error_response(r.error());
+        json out = std::move(r).value();
+        out["ok"] = true;
+        return out;
+    } catch (const std::bad_alloc&) {
+        return error_response(geom::make_error_nopath(
+            ErrorCode::limit, "the request needs more memory than is available"));
+    } catch (const std::exception& e) {
+        // Exceptions stop here: a bug must still produce a well-formed answer.
+        return error_response(geom::make_error_nopath(ErrorCode::internal,
+                                                      std::string("internal error: ") + e.what()));
+    }
+}
+
+bool succeeded(const json& response) {
+    const auto it = response.find("ok");
+    return it != response.end() && it->is_boolean() && it->get<bool>();
+}
+
+// The reader's problems of a batch, grouped by element with paths relative to it, in one
+// pass (a hostile batch may hold a problem in each of a million elements).
+std::unordered_map<std::size_t, std::vector<Error>>
+problems_by_element(const std::vector<Error>& problems) {
+    std::unordered_map<std::size_t, std::vector<Error>> out;
+    for (const Error& p : problems) {
+        // "/12/x" -> element 12, path "/x".
+        std::size_t k = 1, index = 0;
+        while (k < p.path.size() && p.path[k] >= '0' && p.path[k] <= '9')
+            index = index * 10 + static_cast<std::size_t>(p.path[k++] - '0');
+        if (k == 1 || p.path.empty() || p.path[0] != '/') continue; // not inside an element
+        Error e = p;
+        e.path = p.path.substr(k);
+        out[index].push_back(std::move(e));
+    }
+    return out;
+}
+
+} // namespace
+
+json handle_request(const json& request) {
+    return respond(request, {});
+}
+
+int run_protocol(std::istream& in, std::ostream& out, std::ostream& err) {
+    std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (in.bad()) {
+        err << "isoparm geom: cannot read the input\n";
+        return 2;
+    }
+    geom::Expected<ReadJson> read = read_json(text);
+    text.clear();
+    text.shrink_to_fit();
+    if (!read) {
+        if (read.error().code == ErrorCode::parse) {
+            err << "isoparm geom: the input is not JSON: " << read.error().message << "\n";
+            return 2;
+        }
+        std::string s;
+        write_json(s, error_response(read.error()));
+        out << s << "\n";
+        return 1;
+    }
+    const json& value = read->value;
+    const std::vector<Error>& problems = read->problems;
+    std::string s;
+    int status = 0;
+    if (value.is_array()) {
+        // A batch: each element answered on its own, paths relative to the element.
+        const auto by_element = problems_by_element(problems);
+        static const std::vector<Error> none;
+        s += '[';
+        for (std::size_t i = 0; i < value.size(); ++i) {
+            const auto found = by_element.find(i);
+            const json response =
+                respond(value[i], found == by_element.end() ? none : found->second);
+            if (!succeeded(response)) status = 1;
+            if (i > 0) s += ", ";
+            write_json(s, response);
+        }
+        s += ']';
+    } else {
+        const json response = respond(value, problems);
+        if (!succeeded(response)) status = 1;
+        write_json(s, response);
+    }
+    s += '\n';
+    out << s;
+    out.flush();
+    return status;
+}
+
+} // namespace isoparm::doc

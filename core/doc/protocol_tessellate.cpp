@@ -1,0 +1,61 @@
+// The `tessellate` op: a surface over a uniform n_u x n_v parameter grid.
+#include "core/doc/json_geom.hpp"
+#include "core/doc/json_values.hpp"
+#include "core/doc/protocol_detail.hpp"
+#include "core/geom/tessellate.hpp"
+#include "core/geom/validate.hpp"
+
+namespace isoparm::doc::protocol {
+
+using geom::Expected;
+
+// positions / normals / triangles as the protocol writes meshes (shared with polygonize):
+// a vertex that does not exist is null in both positions and normals.
+json mesh_to_json(const geom::Mesh& mesh) {
+    json positions = json::array();
+    json normals = json::array();
+    for (std::size_t k = 0; k < mesh.positions.size(); ++k) {
+        const bool exists = mesh.exists.empty() || mesh.exists[k];
+        positions.push_back(exists ? point_to_json(mesh.positions[k]) : json(nullptr));
+        normals.push_back(exists ? point_to_json(mesh.normals[k]) : json(nullptr));
+    }
+    json triangles = json::array();
+    for (const auto& t : mesh.triangles) triangles.push_back(json::array({t[0], t[1], t[2]}));
+    return json{{"positions", std::move(positions)},
+                {"normals", std::move(normals)},
+                {"triangles", std::move(triangles)}};
+}
+
+OpResult op_tessellate(const json& request) {
+    if (find_field(request, "curve"))
+        return schema_error("tessellate takes a surface, not a curve", "/curve");
+    if (geom::Status s = check_fields(request, "tessellate", {"surface", "samples"}); !s)
+        return s.error();
+    Expected<Subject> subject = read_subject(request, false, true);
+    if (!subject) return subject.error();
+    const json* samples = find_field(request, "samples");
+    if (!samples) return missing_field("samples");
+    if (!samples->is_array() || samples->size() != 2)
+        return schema_error("samples is [n_u, n_v]", "/samples");
+    std::int64_t n[2];
+    for (int k = 0; k < 2; ++k) {
+        const std::optional<std::int64_t> v =
+            integer_value((*samples)[static_cast<std::size_t>(k)]);
+        if (!v || *v < 2)
+            return schema_error("samples are integers >= 2", "/samples/" + std::to_string(k));
+        n[k] = *v;
+    }
+    // The cap before any allocation (saturated values keep the product from overflowing).
+    const std::int64_t cap = geom::max_evaluation_points;
+    if (n[0] > cap || n[1] > cap || n[0] * n[1] > cap) {
+        return geom::make_error(geom::ErrorCode::limit,
+                                "too many grid points (" + std::to_string(n[0]) + " x " +
+                                    std::to_string(n[1]) + " > " + std::to_string(cap) + ")",
+                                "/samples");
+    }
+    const geom::Mesh mesh =
+        geom::tessellate(subject->surface, static_cast<int>(n[0]), static_cast<int>(n[1]));
+    return mesh_to_json(mesh);
+}
+
+} // namespace isoparm::doc::protocol

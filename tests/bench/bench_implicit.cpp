@@ -1,0 +1,85 @@
+// Benchmarks of the implicit-surface path: expression evaluation and torus polygonization.
+#include <benchmark/benchmark.h>
+
+#include <vector>
+
+#include "core/geom/implicit/polygonize.hpp"
+
+namespace {
+
+using namespace isoparm::geom;
+using namespace isoparm::geom::implicit;
+
+// R = 0.6, r = 0.25 in [-1, 1]^3, as parameters so the slider case is what is measured.
+const char* const torus_text = "(x^2 + y^2 + z^2 + R^2 - r^2)^2 - 4*R^2*(x^2 + y^2)";
+
+Program torus() {
+    return std::move(compile(torus_text, {"R", "r"})).value();
+}
+
+// Polygonize the torus on an n^3 grid; state.range(1) = threads (0 = all).
+void BM_PolygonizeTorus(benchmark::State& state) {
+    const Program f = torus();
+    const int n = static_cast<int>(state.range(0));
+    PolygonizeOptions o;
+    o.lo = glm::dvec3(-1);
+    o.hi = glm::dvec3(1);
+    o.cell = 2.0 / n;
+    o.parameters = {0.6, 0.25};
+    o.threads = static_cast<int>(state.range(1));
+    std::size_t triangles = 0, vertices = 0;
+    for (auto _ : state) {
+        auto mesh = polygonize(f, o);
+        if (!mesh) {
+            state.SkipWithError(mesh.error().message.c_str());
+            return;
+        }
+        triangles = mesh->triangles.size();
+        vertices = mesh->positions.size();
+        benchmark::DoNotOptimize(mesh->positions.data());
+    }
+    state.counters["triangles"] = static_cast<double>(triangles);
+    state.counters["vertices"] = static_cast<double>(vertices);
+    state.counters["grid_points"] = static_cast<double>((n + 1.0) * (n + 1.0) * (n + 1.0));
+    state.counters["points_per_s"] = benchmark::Counter(
+        (n + 1.0) * (n + 1.0) * (n + 1.0), benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_PolygonizeTorus)
+    ->ArgNames({"n", "threads"})
+    ->Args({128, 0})
+    ->Args({128, 1})
+    ->Args({64, 0})
+    ->Args({32, 0})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// Batch evaluation along grid rows (the polygonizer's sampling loop).
+void BM_TorusValuesAlongX(benchmark::State& state) {
+    const Program f = torus();
+    const double params[2] = {0.6, 0.25};
+    std::vector<double> xs(129), out(129), scratch;
+    for (int i = 0; i <= 128; ++i) xs[i] = -1 + 2.0 * i / 128;
+    for (auto _ : state) {
+        for (int j = 0; j <= 128; ++j)
+            f.values_along_x(xs.data(), xs.size(), -1 + 2.0 * j / 128, 0.1, out.data(), params,
+                             scratch);
+        benchmark::DoNotOptimize(out.data());
+    }
+    state.counters["points_per_s"] =
+        benchmark::Counter(129.0 * 129.0, benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_TorusValuesAlongX);
+
+// One value and gradient (the vertex refinement's step).
+void BM_TorusValueAndGradient(benchmark::State& state) {
+    const Program f = torus();
+    const double params[2] = {0.6, 0.25};
+    glm::dvec3 p(0.3, 0.5, 0.1), g;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(f.value_and_gradient(p, g, params));
+        benchmark::DoNotOptimize(g);
+    }
+}
+BENCHMARK(BM_TorusValueAndGradient);
+
+} // namespace

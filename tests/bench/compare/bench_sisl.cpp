@@ -1,0 +1,391 @@
+// isoparm against SISL (the SINTEF Spline Library), on the same surfaces in one run: grid
+// positions, grid positions + normals, single points, knot insertion and degree elevation.
+// Prints points per second for both, the ratio, the largest difference between their points,
+// and the machine's ceiling for the grid case (peak multiply-adds / multiply-adds per point).
+#include <benchmark/benchmark.h>
+#include <glm/geometric.hpp>
+#include <sisl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/geom/evaluate.hpp"
+#include "core/geom/grid_tessellator.hpp"
+#include "core/geom/knots.hpp"
+#include "core/geom/refine.hpp"
+#include "tests/bench/compare/peak_fma.hpp"
+#include "tests/support/random_geometry.hpp"
+
+using namespace isoparm::geom;
+
+namespace {
+
+constexpr int grid = 256;
+
+// A rational bicubic surface with random positive weights on clamped uniform knots, in both
+// libraries' forms. SISL stores homogeneous (wx, wy, wz, w) with the first direction fastest.
+struct Pair {
+    Surface ours;
+    SISLSurf* sisl = nullptr;
+    std::vector<double> knots_u, knots_v, coef; // SISL keeps pointers into these (icopy = 0)
+};
+
+Pair make_pair(int n) {
+    isoparm::testing::RandomGeometry g(20261122 + n);
+    Pair p;
+    p.ours = g.surface(3, 3, n, n, true);
+    p.ours.knots_u = p.ours.knots_v = clamped_uniform_knots(n, 3);
+    for (auto& w : p.ours.weights) w = g.uniform(0.5, 2.0);
+    p.knots_u = p.ours.knots_u;
+    p.knots_v = p.ours.knots_v;
+    p.coef.resize(static_cast<size_t>(n) * n * 4);
+    for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) {
+            const double w = p.ours.weight(i, j);
+            const glm::dvec3& P = p.ours.point(i, j);
+            double* c = &p.coef[(static_cast<size_t>(j) * n + i) * 4];
+            c[0] = P.x * w;
+            c[1] = P.y * w;
+            c[2] = P.z * w;
+            c[3] = w;
+        }
+    }
+    p.sisl = newSurf(n, n, 4, 4, p.knots_u.data(), p.knots_v.data(), p.coef.data(), 2, 3, 1);
+    return p;
+}
+
+Pair& pair_for(int n) {
+    static std::map<int, Pair> cache;
+    auto it = cache.find(n);
+    if (it == cache.end()) it = cache.emplace(n, make_pair(n)).first;
+    return it->second;
+}
+
+const std::vector<double>& grid_params() {
+    static const std::vector<double> t = uniform_params(0.0, 1.0, grid);
+    return t;
+}
+
+void set_rate(benchmark::State& state, double points) {
+    state.counters["points/s"] = benchmark::Counter(points, benchmark::Counter::kIsIterationInvariantRate);
+}
+
+// --- grid positions ---------------------------------------------------------------------
+
+void BM_GridPositions_isoparm(benchmark::State& state) {
+    const Surface& s = pair_for(static_cast<int>(state.range(0))).ours;
+    const GridTessellator t(s, grid, grid);
+    std::vector<glm::dvec3> pos;
+    std::vector<std::uint8_t> exists;
+    for (auto _ : state) {
+        t.evaluate_positions(s, pos, exists, 1);
+        benchmark::DoNotOptimize(pos.data());
+    }
+    set_rate(state, grid * grid);
+}
+
+void BM_GridPositions_sisl_pointwise(benchmark::State& state) {
+    SISLSurf* s = pair_for(static_cast<int>(state.range(0))).sisl;
+    const auto& t = grid_params();
+    std::vector<double> out(3 * grid * grid);
+    for (auto _ : state) {
+        int left1 = 0, left2 = 0, stat = 0;
+        for (int i = 0; i < grid; ++i) {
+            for (int j = 0; j < grid; ++j) {
+                double par[2] = {t[i], t[j]};
+                s1424(s, 0, 0, par, &left1, &left2, &out[3 * (i * grid + j)], &stat);
+            }
+        }
+        benchmark::DoNotOptimize(out.data());
+    }
+    set_rate(state, grid * grid);
+}
+
+void BM_GridPositions_sisl_grid(benchmark::State& state) {
+    SISLSurf* s = pair_for(static_cast<int>(state.range(0))).sisl;
+    std::vector<double> t = grid_params(), out(3 * grid * grid), norm(3 * grid * grid);
+    for (auto _ : state) {
+        int stat = 0;
+        s1506(s, 0, grid, t.data(), grid, t.data(), out.data(), norm.data(), &stat);
+        benchmark::DoNotOptimize(out.data());
+    }
+    set_rate(state, grid * grid);
+}
+
+// --- grid positions + unit normals --------------------------------------------------------
+
+void BM_GridNormals_isoparm(benchmark::State& state) {
+    const Surface& s = pair_for(static_cast<int>(state.range(0))).ours;
+    const GridTessellator t(s, grid, grid);
+    std::vector<glm::dvec3> pos, nrm;
+    std::vector<std::uint8_t> exists;
+    for (auto _ : state) {
+        t.evaluate_vertices(s, pos, nrm, exists, 1);
+        benchmark::DoNotOptimize(nrm.data());
+    }
+    set_rate(state, grid * grid);
+}
+
+void BM_GridNormals_isoparm_2threads(benchmark::State& state) {
+    const Surface& s = pair_for(static_cast<int>(state.range(0))).ours;
+    const GridTessellator t(s, grid, grid);
+    std::vector<glm::dvec3> pos, nrm;
+    std::vector<std::uint8_t> exists;
+    for (auto _ : state) {
+        t.evaluate_vertices(s, pos, nrm, exists, 2);
+        benchmark::DoNotOptimize(nrm.data());
+    }
+    set_rate(state, grid * grid);
+}
+
+void normalize3(double* n) {
+    const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (len > 0)
+        for (int c = 0; c < 3; ++c) n[c] /= len;
+}
+
+void BM_GridNormals_sisl_pointwise(benchmark::State& state) {
+    SISLSurf* s = pair_for(static_cast<int>(state.range(0))).sisl;
+    const auto& t = grid_params();
+    std::vector<double> der(9), nrm(3 * grid * grid), pos(3 * grid * grid);
+    for (auto _ : state) {
+        int left1 = 0, left2 = 0, stat = 0;
+        for (int i = 0; i < grid; ++i) {
+            for (int j = 0; j < grid; ++j) {
+                double par[2] = {t[i], t[j]};
+                double* n = &nrm[3 * (i * grid + j)];
+                s1421(s, 1, par, &left1, &left2, der.data(), n, &stat);
+                std::copy(der.begin(), der.begin() + 3, &pos[3 * (i * grid + j)]);
+                normalize3(n);
+            }
+        }
+        benchmark::DoNotOptimize(nrm.data());
+    }
+    set_rate(state, grid * grid);
+}
+
+void BM_GridNormals_sisl_grid(benchmark::State& state) {
+    SISLSurf* s = pair_for(static_cast<int>(state.range(0))).sisl;
+    std::vector<double> t = grid_params(), der(9 * grid * grid), nrm(3 * grid * grid);
+    for (auto _ : state) {
+        int stat = 0;
+        s1506(s, 1, grid, t.data(), grid, t.data(), der.data(), nrm.data(), &stat);
+        for (int k = 0; k < grid * grid; ++k) normalize3(&nrm[3 * k]);
+        benchmark::DoNotOptimize(nrm.data());
+    }
+    set_rate(state, grid * grid);
+}
+
+// --- single points at random parameters ------------------------------------------------
+
+std::vector<double> random_params() {
+    isoparm::testing::RandomGeometry g(7);
+    std::vector<double> p(2 * 4096);
+    for (double& x : p) x = g.uniform(0.0, 1.0);
+    return p;
+}
+
+void BM_SinglePoint_isoparm(benchmark::State& state) {
+    const Surface& s = pair_for(32).ours;
+    const auto params = random_params();
+    size_t k = 0;
+    for (auto _ : state) {
+        const double* p = &params[2 * (k++ & 4095)];
+        benchmark::DoNotOptimize(surface_point(s, p[0], p[1]));
+    }
+    set_rate(state, 1);
+}
+
+void BM_SinglePoint_sisl(benchmark::State& state) {
+    SISLSurf* s = pair_for(32).sisl;
+    const auto params = random_params();
+    size_t k = 0;
+    double out[3];
+    for (auto _ : state) {
+        double* p = const_cast<double*>(&params[2 * (k++ & 4095)]);
+        int left1 = 0, left2 = 0, stat = 0;
+        s1424(s, 0, 0, p, &left1, &left2, out, &stat);
+        benchmark::DoNotOptimize(out);
+    }
+    set_rate(state, 1);
+}
+
+// --- refinement on the 32 x 32 net ---------------------------------------------------------
+
+void BM_InsertKnot_isoparm(benchmark::State& state) {
+    const Surface& s = pair_for(32).ours;
+    for (auto _ : state) benchmark::DoNotOptimize(insert_knot(s, Dir::u, 0.51, 1));
+}
+
+void BM_InsertKnot_sisl(benchmark::State& state) {
+    SISLSurf* s = pair_for(32).sisl;
+    double knot = 0.51;
+    for (auto _ : state) {
+        SISLSurf* r = nullptr;
+        int stat = 0;
+        s1025(s, &knot, 1, nullptr, 0, &r, &stat);
+        benchmark::DoNotOptimize(r);
+        if (r) freeSurf(r);
+    }
+}
+
+void BM_ElevateDegree_isoparm(benchmark::State& state) {
+    const Surface& s = pair_for(32).ours;
+    for (auto _ : state) benchmark::DoNotOptimize(elevate_degree(s, Dir::u, 1));
+}
+
+void BM_ElevateDegree_sisl(benchmark::State& state) {
+    SISLSurf* s = pair_for(32).sisl;
+    for (auto _ : state) {
+        SISLSurf* r = nullptr;
+        int stat = 0;
+        s1387(s, 5, 4, &r, &stat);
+        benchmark::DoNotOptimize(r);
+        if (r && r != s) freeSurf(r);
+    }
+}
+
+// --- the ceiling ---------------------------------------------------------------------------
+
+void BM_PeakFma(benchmark::State& state) {
+    double sink = 0;
+    std::uint64_t fmas = 0;
+    for (auto _ : state) fmas += isoparm::bench::peak_fma_kernel(1 << 20, &sink);
+    benchmark::DoNotOptimize(sink);
+    state.counters["FMA/s"] = benchmark::Counter(static_cast<double>(fmas), benchmark::Counter::kIsRate);
+}
+
+BENCHMARK(BM_PeakFma);
+BENCHMARK(BM_GridPositions_isoparm)->Arg(8)->Arg(32)->Arg(128)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GridPositions_sisl_pointwise)->Arg(8)->Arg(32)->Arg(128)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GridPositions_sisl_grid)->Arg(8)->Arg(32)->Arg(128)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GridNormals_isoparm)->Arg(8)->Arg(32)->Arg(128)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GridNormals_isoparm_2threads)->Arg(32)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_GridNormals_sisl_pointwise)->Arg(8)->Arg(32)->Arg(128)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GridNormals_sisl_grid)->Arg(8)->Arg(32)->Arg(128)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SinglePoint_isoparm);
+BENCHMARK(BM_SinglePoint_sisl);
+BENCHMARK(BM_InsertKnot_isoparm)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_InsertKnot_sisl)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ElevateDegree_isoparm)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ElevateDegree_sisl)->Unit(benchmark::kMicrosecond);
+
+// Collects the (median, when repeated) CPU time per benchmark for the summary.
+class Collector : public benchmark::ConsoleReporter {
+public:
+    std::map<std::string, double> seconds; // per iteration
+    std::map<std::string, double> counters;
+    void ReportRuns(const std::vector<Run>& runs) override {
+        ConsoleReporter::ReportRuns(runs);
+        for (const Run& r : runs) {
+            if (r.run_type == Run::RT_Aggregate && r.aggregate_name != "median") continue;
+            std::string name = r.run_name.str();
+            const double t = r.real_accumulated_time / std::max<double>(1, static_cast<double>(r.iterations));
+            const double cpu = r.cpu_accumulated_time / std::max<double>(1, static_cast<double>(r.iterations));
+            seconds[name] = name.find("2threads") != std::string::npos ? t : cpu;
+            for (const auto& [k, c] : r.counters) counters[name + ":" + k] = c.value;
+        }
+    }
+};
+
+// The largest distance between the two libraries' grid points and unit normals.
+void print_agreement(int n) {
+    Pair& p = pair_for(n);
+    const GridTessellator t(p.ours, grid, grid);
+    std::vector<glm::dvec3> pos, nrm;
+    std::vector<std::uint8_t> exists;
+    t.evaluate_vertices(p.ours, pos, nrm, exists, 1);
+    const auto& u = grid_params();
+    double dp = 0, dn = 0, scale = 0;
+    int left1 = 0, left2 = 0, stat = 0;
+    for (int i = 0; i < grid; ++i) {
+        for (int j = 0; j < grid; ++j) {
+            double par[2] = {u[i], u[j]}, der[9], n3[3];
+            s1421(p.sisl, 1, par, &left1, &left2, der, n3, &stat);
+            normalize3(n3);
+            const glm::dvec3 a = pos[i * grid + j], b{der[0], der[1], der[2]};
+            dp = std::max(dp, glm::length(a - b));
+            scale = std::max(scale, glm::length(b));
+            dn = std::max(dn, glm::length(nrm[i * grid + j] - glm::dvec3(n3[0], n3[1], n3[2])));
+        }
+    }
+    std::printf("  %3dx%-3d  max |point difference| %.3g (net size %.3g), max |normal difference| %.3g\n",
+                n, n, dp, scale, dn);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    std::vector<char*> args(argv, argv + argc);
+    std::string reps = "--benchmark_repetitions=3", agg = "--benchmark_report_aggregates_only=true",
+                mintime = "--benchmark_min_time=0.2";
+    bool has_reps = false, has_min = false;
+    for (int k = 1; k < argc; ++k) {
+        has_reps |= std::string(argv[k]).rfind("--benchmark_repetitions", 0) == 0;
+        has_min |= std::string(argv[k]).rfind("--benchmark_min_time", 0) == 0;
+    }
+    if (!has_reps) {
+        args.push_back(reps.data());
+        args.push_back(agg.data());
+    }
+    if (!has_min) args.push_back(mintime.data());
+    int count = static_cast<int>(args.size());
+    benchmark::Initialize(&count, args.data());
+    Collector collector;
+    benchmark::RunSpecifiedBenchmarks(&collector);
+
+    auto rate = [&](const std::string& name) {
+        auto it = collector.seconds.find(name);
+        return it == collector.seconds.end() || it->second <= 0 ? 0.0 : 1.0 / it->second;
+    };
+    std::printf("\nSummary (medians; points per second = grid points / time per grid)\n");
+    std::printf("  %-28s %14s %14s %14s %10s %10s\n", "case", "isoparm pts/s", "SISL point", "SISL grid",
+                "vs point", "vs grid");
+    for (int n : {8, 32, 128}) {
+        for (const char* kind : {"GridPositions", "GridNormals"}) {
+            const std::string suffix = "/" + std::to_string(n);
+            const double ours = grid * grid * rate(std::string("BM_") + kind + "_isoparm" + suffix);
+            const double point = grid * grid * rate(std::string("BM_") + kind + "_sisl_pointwise" + suffix);
+            const double gridr = grid * grid * rate(std::string("BM_") + kind + "_sisl_grid" + suffix);
+            if (ours == 0) continue;
+            std::printf("  %-28s %14.4g %14.4g %14.4g %9.1fx %9.1fx\n",
+                        (std::string(kind) + " " + std::to_string(n) + "x" + std::to_string(n)).c_str(),
+                        ours, point, gridr, point > 0 ? ours / point : 0, gridr > 0 ? ours / gridr : 0);
+        }
+    }
+    const double sp_ours = rate("BM_SinglePoint_isoparm"), sp_sisl = rate("BM_SinglePoint_sisl");
+    if (sp_ours > 0)
+        std::printf("  %-28s %14.4g %14.4g %14s %9.1fx\n", "single point (random)", sp_ours, sp_sisl, "",
+                    sp_sisl > 0 ? sp_ours / sp_sisl : 0);
+    for (const char* op : {"InsertKnot", "ElevateDegree"}) {
+        const double a = rate(std::string("BM_") + op + "_isoparm"), b = rate(std::string("BM_") + op + "_sisl");
+        if (a > 0)
+            std::printf("  %-28s %11.1f us %11.1f us %14s %9.1fx\n", (std::string(op) + " 32x32").c_str(),
+                        1e6 / a, b > 0 ? 1e6 / b : 0.0, "", b > 0 ? a / b : 0);
+    }
+    const double peak = collector.counters["BM_PeakFma:FMA/s"];
+    if (peak > 0) {
+        std::printf("\nCeiling: peak %.3g double multiply-adds per second on one core (AVX2 FMA kernel)\n", peak);
+        for (int n : {8, 32, 128}) {
+            // Per grid point: (q+1) homogeneous (4-wide) multiply-adds in v, plus the row
+            // contraction in u amortized over the row: (p+1) * 4 * n_v / samples_v.
+            const double pos_fma = 4.0 * 4 + 4.0 * 4 * n / grid;
+            const double nrm_fma = 3 * 4.0 * 4 + 2 * 4.0 * 4 * n / grid;
+            const std::string suffix = "/" + std::to_string(n);
+            const double ours_pos = grid * grid * rate("BM_GridPositions_isoparm" + suffix);
+            const double ours_nrm = grid * grid * rate("BM_GridNormals_isoparm" + suffix);
+            std::printf("  %3dx%-3d positions: %.1f FMA/point, ceiling %.4g pts/s, isoparm %.4g (%.1fx below)\n",
+                        n, n, pos_fma, peak / pos_fma, ours_pos, ours_pos > 0 ? peak / pos_fma / ours_pos : 0);
+            std::printf("          + normals: %.1f FMA/point, ceiling %.4g pts/s, isoparm %.4g (%.1fx below)\n",
+                        nrm_fma, peak / nrm_fma, ours_nrm, ours_nrm > 0 ? peak / nrm_fma / ours_nrm : 0);
+        }
+    }
+    std::printf("\nAgreement with SISL (same parameters, s1421 point by point):\n");
+    for (int n : {8, 32, 128}) print_agreement(n);
+    benchmark::Shutdown();
+    return 0;
+}

@@ -1,0 +1,116 @@
+// Documents and checks shared by the document tests.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "core/doc/command.hpp"
+#include "core/doc/commands.hpp"
+#include "core/doc/document.hpp"
+#include "core/geom/knots.hpp"
+
+namespace isoparm::doc::testing {
+
+// A small NURBS curve in the xy-plane on clamped knots with one interior double knot.
+inline geom::Curve sample_curve() {
+    geom::Curve c;
+    c.type = geom::SplineType::nurbs;
+    c.degree = 3;
+    c.knots = {0, 0, 0, 0, 0.25, 0.5, 0.5, 1, 1, 1, 1};
+    c.points = {{0, 0, 0}, {1, 2, 0}, {2, 2.5, 0}, {3, 1, 0}, {4, -1, 0}, {5, 0.5, 0}, {6, 0, 0}};
+    c.weights = {1, 0.5, 2, 1, -0.25, 1, 1};
+    return c;
+}
+
+// The default scene plus a curve, a B-spline grid, a Bezier patch and an implicit sphere:
+// every kind of object and every type tag.
+inline Document sample_document() {
+    Document doc = default_document();
+    Object curve;
+    curve.id = doc.allocate_id();
+    curve.name = "profile";
+    curve.shape = CurveObject{sample_curve(), CurvePlane::xy};
+    doc.objects.push_back(curve);
+
+    Object grid;
+    grid.id = doc.allocate_id();
+    grid.name = "grid";
+    geom::Surface g = make_planar_grid(4, 5, 2, 3, geom::SplineType::bspline);
+    g.point(1, 2).z = 0.75;
+    grid.shape = SurfaceObject{g};
+    doc.objects.push_back(grid);
+
+    Object patch;
+    patch.id = doc.allocate_id();
+    patch.name = "patch";
+    patch.visible = false;
+    geom::Surface b = make_planar_grid(3, 4, 2, 3, geom::SplineType::bezier);
+    b.point(1, 1).z = -0.5;
+    patch.shape = SurfaceObject{b};
+    doc.objects.push_back(patch);
+
+    Object sphere;
+    sphere.id = doc.allocate_id();
+    sphere.name = "ball";
+    ImplicitObject f;
+    f.expression = "x^2 + y^2 + z^2 - r^2";
+    f.parameter_names = {"r"};
+    f.parameter_values = {0.8};
+    f.lo = {-1, -1, -1.5};
+    f.hi = {1, 1, 1.5};
+    f.cell = 0.1;
+    sphere.shape = f;
+    doc.objects.push_back(sphere);
+    return doc;
+}
+
+// Ids in sample_document().
+constexpr std::uint64_t hill_id = 1, curve_id = 2, grid_id = 3, patch_id = 4, ball_id = 5;
+
+inline const geom::Surface& surface_of(const Document& doc, std::uint64_t id) {
+    return std::get<SurfaceObject>(doc.find(id)->shape).surface;
+}
+inline const geom::Curve& curve_of(const Document& doc, std::uint64_t id) {
+    return std::get<CurveObject>(doc.find(id)->shape).curve;
+}
+
+// Executes cmd through a history and checks undo gives the state before, bit for bit, redo
+// the state after, and undo again the state before. Returns the state after.
+inline Document expect_undo_redo_exact(Document& doc, std::unique_ptr<Command> cmd) {
+    History history;
+    const Document before = doc;
+    const auto st = history.execute(doc, std::move(cmd));
+    EXPECT_TRUE(st.ok()) << (st.ok() ? "" : st.error().message);
+    const Document after = doc;
+    EXPECT_FALSE(same_geometry(before, after)) << "the command changed nothing";
+    EXPECT_TRUE(history.undo(doc));
+    EXPECT_TRUE(same_document(doc, before));
+    EXPECT_EQ(doc.next_id, before.next_id);
+    EXPECT_TRUE(history.redo(doc));
+    EXPECT_TRUE(same_document(doc, after));
+    EXPECT_EQ(doc.next_id, after.next_id);
+    EXPECT_TRUE(history.undo(doc));
+    EXPECT_TRUE(same_document(doc, before));
+    EXPECT_TRUE(history.redo(doc));
+    return after;
+}
+
+// Executes cmd, expects a refusal with this code and path, and an untouched document and
+// history.
+inline void expect_refused(Document& doc, std::unique_ptr<Command> cmd, geom::ErrorCode code,
+                           const std::string& path) {
+    History history;
+    const Document before = doc;
+    const auto st = history.execute(doc, std::move(cmd));
+    ASSERT_FALSE(st.ok());
+    EXPECT_EQ(geom::error_code_name(st.error().code), std::string(geom::error_code_name(code)))
+        << st.error().message;
+    EXPECT_EQ(st.error().path, path) << st.error().message;
+    EXPECT_FALSE(st.error().message.empty());
+    EXPECT_TRUE(same_document(doc, before));
+    EXPECT_EQ(doc.next_id, before.next_id);
+    EXPECT_FALSE(history.can_undo());
+}
+
+} // namespace isoparm::doc::testing

@@ -1,0 +1,160 @@
+// User actions: file handling with unsaved-change guards, undo/redo, view helpers.
+#include "ui/actions.hpp"
+
+#include <filesystem>
+
+#include "core/doc/scene_io.hpp"
+#include "ui/doc_access.hpp"
+#include "ui/scene_builder.hpp"
+
+namespace isoparm::ui {
+
+namespace {
+
+void guard(AppContext& ctx, PendingAction action) {
+    ctx.ui.pending = std::move(action);
+    if (ctx.dirty()) ctx.ui.confirm_unsaved = true;
+    else run_pending(ctx);
+}
+
+std::string error_text(const geom::Error& e) {
+    std::string s = e.message;
+    if (e.has_path && !e.path.empty()) s += "\n(at " + e.path + ")";
+    return s;
+}
+
+void adopt(AppContext& ctx, doc::Document d, const std::string& path) {
+    ctx.doc = std::move(d);
+    normalize_selection(ctx.doc);
+    ctx.history.clear();
+    ctx.history.mark_clean();
+    ctx.file_path = path;
+    ctx.ui.drag = {};
+    ctx.ui.sliders = {};
+    ctx.ui.plane_drag = {};
+    ctx.ui.camera_needs_fit = true;
+}
+
+} // namespace
+
+void request_new_document(AppContext& ctx) { guard(ctx, {PendingAction::Kind::new_document, {}}); }
+void request_open_dialog(AppContext& ctx) { guard(ctx, {PendingAction::Kind::open_dialog, {}}); }
+void request_open_file(AppContext& ctx, const std::string& path) {
+    guard(ctx, {PendingAction::Kind::open_file, path});
+}
+void request_quit(AppContext& ctx) { guard(ctx, {PendingAction::Kind::quit, {}}); }
+
+void run_pending(AppContext& ctx) {
+    const PendingAction a = std::move(ctx.ui.pending);
+    ctx.ui.pending = {};
+    switch (a.kind) {
+    case PendingAction::Kind::none: break;
+    case PendingAction::Kind::new_document: new_document(ctx); break;
+    case PendingAction::Kind::open_file: open_file(ctx, a.path); break;
+    case PendingAction::Kind::open_dialog: {
+        FileDialog& fd = ctx.ui.file_dialog;
+        fd.mode = FileDialog::Mode::open;
+        fd.just_opened = true;
+        fd.error.clear();
+        if (fd.directory.empty()) {
+            std::error_code ec;
+            fd.directory = ctx.file_path.empty()
+                               ? std::filesystem::current_path(ec).string()
+                               : std::filesystem::path(ctx.file_path).parent_path().string();
+        }
+        break;
+    }
+    case PendingAction::Kind::quit: ctx.ui.quit_now = true; break;
+    }
+}
+
+bool open_file(AppContext& ctx, const std::string& path) {
+    geom::Expected<doc::Document> loaded = doc::load_scene(path);
+    if (!loaded.ok()) {
+        show_error(ctx, "Could not open scene",
+                   "'" + path + "' was not opened; the current scene is unchanged.\n\n" +
+                       error_text(loaded.error()));
+        return false;
+    }
+    adopt(ctx, std::move(loaded).value(), path);
+    add_recent(ctx.settings.recent, std::filesystem::absolute(path).lexically_normal().string());
+    store_settings(ctx);
+    return true;
+}
+
+void new_document(AppContext& ctx) { adopt(ctx, doc::default_document(), ""); }
+
+bool save(AppContext& ctx) {
+    if (ctx.file_path.empty()) {
+        request_save_as(ctx);
+        return false;
+    }
+    return save_as(ctx, ctx.file_path);
+}
+
+void request_save_as(AppContext& ctx) {
+    FileDialog& fd = ctx.ui.file_dialog;
+    fd.mode = FileDialog::Mode::save;
+    fd.just_opened = true;
+    fd.error.clear();
+    std::error_code ec;
+    if (ctx.file_path.empty()) {
+        if (fd.directory.empty()) fd.directory = std::filesystem::current_path(ec).string();
+        fd.name = "scene.json";
+    } else {
+        const std::filesystem::path p(ctx.file_path);
+        fd.directory = p.parent_path().empty() ? std::filesystem::current_path(ec).string()
+                                               : p.parent_path().string();
+        fd.name = p.filename().string();
+    }
+}
+
+bool save_as(AppContext& ctx, const std::string& path) {
+    const geom::Status st = doc::save_scene(ctx.doc, path);
+    if (!st.ok()) {
+        show_error(ctx, "Could not save scene",
+                   "'" + path + "' was not written.\n\n" + error_text(st.error()));
+        return false;
+    }
+    ctx.file_path = path;
+    ctx.history.mark_clean();
+    add_recent(ctx.settings.recent, std::filesystem::absolute(path).lexically_normal().string());
+    store_settings(ctx);
+    ctx.ui.status = "Saved " + path;
+    return true;
+}
+
+void undo(AppContext& ctx) {
+    ctx.seal();
+    if (ctx.history.undo(ctx.doc)) normalize_selection(ctx.doc);
+}
+
+void redo(AppContext& ctx) {
+    ctx.seal();
+    if (ctx.history.redo(ctx.doc)) normalize_selection(ctx.doc);
+}
+
+void fit_view(AppContext& ctx) {
+    const std::vector<glm::dvec3> pts = scene_points(ctx.doc);
+    if (pts.empty()) return;
+    const double aspect = ctx.ui.view_rect.h > 0 ? static_cast<double>(ctx.ui.view_rect.w) / ctx.ui.view_rect.h : 1.6;
+    fit_to_points(ctx.ui.camera, pts, aspect);
+    ctx.ui.fit_distance = ctx.ui.camera.distance;
+}
+
+void toggle_presentation(AppContext& ctx) {
+    ctx.ui.presentation = !ctx.ui.presentation;
+    ctx.ui.camera_needs_fit = true; // the view changes size with the larger panels
+}
+
+void show_error(AppContext& ctx, const std::string& title, const std::string& message) {
+    ctx.ui.show_error = true;
+    ctx.ui.error_title = title;
+    ctx.ui.error_message = message;
+}
+
+void store_settings(AppContext& ctx) {
+    if (ctx.remember_settings) save_settings(ctx.settings, settings_path());
+}
+
+} // namespace isoparm::ui

@@ -1,0 +1,39 @@
+// User actions shared by menus, keyboard shortcuts and dialogs: files, undo/redo, view.
+#pragma once
+
+#include <string>
+
+#include "ui/app_context.hpp"
+
+namespace isoparm::ui {
+
+// File. Actions that would lose unsaved changes ask first (the unsaved-changes dialog
+// runs the action once the user has answered).
+void request_new_document(AppContext& ctx);
+void request_open_dialog(AppContext& ctx);
+void request_open_file(AppContext& ctx, const std::string& path);
+void request_quit(AppContext& ctx);
+// Runs a pending action without asking (the user chose to discard changes).
+void run_pending(AppContext& ctx);
+
+// Loads a scene; on error shows the error dialog and keeps the current document.
+bool open_file(AppContext& ctx, const std::string& path);
+void new_document(AppContext& ctx);
+// Saves to the current file, or opens the save dialog when untitled. Returns whether saved.
+bool save(AppContext& ctx);
+void request_save_as(AppContext& ctx);
+bool save_as(AppContext& ctx, const std::string& path);
+
+void undo(AppContext& ctx);
+void redo(AppContext& ctx);
+
+void fit_view(AppContext& ctx);
+void toggle_presentation(AppContext& ctx);
+
+// Shows a modal error dialog.
+void show_error(AppContext& ctx, const std::string& title, const std::string& message);
+
+// Persists settings (layout, recent files) unless running headless.
+void store_settings(AppContext& ctx);
+
+} // namespace isoparm::ui

@@ -1,0 +1,35 @@
+// Everything a panel works with: the document and its history, the file, settings and UI
+// state. Panels read the document and change it only through commands.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "core/doc/command.hpp"
+#include "core/doc/document.hpp"
+#include "ui/settings.hpp"
+#include "ui/ui_state.hpp"
+
+namespace isoparm::ui {
+
+class Renderer;
+
+struct AppContext {
+    doc::Document doc;
+    doc::History history;
+    std::string file_path; // empty: untitled
+    Settings settings;
+    bool remember_settings = false; // false in headless runs (deterministic, no side effects)
+    UiState ui;
+    Renderer* renderer = nullptr;
+
+    // Runs a command through the history; a refusal shows in the status bar and changes
+    // nothing. Returns whether it applied.
+    bool execute(std::unique_ptr<doc::Command> cmd);
+    // Ends the current gesture: the next command starts a new undo step.
+    void seal() { history.seal(); }
+    bool dirty() const { return !history.is_clean(); }
+    std::string title() const; // "name.json * - isoparm"
+};
+
+} // namespace isoparm::ui

@@ -1,0 +1,34 @@
+// Read helpers over the document for panels: the current surface, a valid selection, the
+// indicator in parameter space.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <glm/vec2.hpp>
+
+#include "core/doc/document.hpp"
+
+namespace isoparm::ui {
+
+const geom::Surface* surface_of(const doc::Object& o);
+// The surface the tracing and basis panels work on: the selected object when it is a
+// surface, else the first visible surface; its object in `object` when asked.
+const geom::Surface* current_surface(const doc::Document& d, const doc::Object** object = nullptr);
+// The selected control point when it exists in the current selection object.
+bool has_valid_point(const doc::Document& d);
+// Selection made consistent after undo, redo or loading (view state, not undoable): an
+// object that no longer exists or a point out of range is dropped.
+void normalize_selection(doc::Document& d);
+
+geom::Interval domain_u(const geom::Surface& s);
+geom::Interval domain_v(const geom::Surface& s);
+// "P22" as the paper writes it; "P26,11" once an index has two digits; "P3" for curves
+// (j < 0). prefix: 'P', 'w', 'R'.
+std::string point_name(char prefix, int i, int j, const doc::Document& d);
+std::string point_name(char prefix, int i, int j, int n_u, int n_v);
+
+// The indicator's (u, v) in the surface's own parameters.
+glm::dvec2 indicator_params(const doc::Document& d, const geom::Surface& s);
+
+} // namespace isoparm::ui

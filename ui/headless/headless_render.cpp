@@ -1,0 +1,107 @@
+// Headless rendering: EGL context, Workstation frames into an FBO, read back, PNG.
+#include "ui/headless/headless_render.hpp"
+
+#include <cfloat>
+#include <cstring>
+#include <imgui.h>
+#include <vector>
+
+#include "core/doc/scene_io.hpp"
+#include "ui/doc_access.hpp"
+#include "ui/headless/egl_context.hpp"
+#include "ui/headless/png_writer.hpp"
+#include "ui/render/gl.hpp"
+#include "ui/workstation.hpp"
+
+namespace isoparm::ui {
+
+namespace {
+
+// The picture's framebuffer: one RGBA8 colour renderbuffer.
+class Target {
+public:
+    Target(int w, int h) {
+        glGenRenderbuffers(1, &color_);
+        glBindRenderbuffer(GL_RENDERBUFFER, color_);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, w, h);
+        glGenFramebuffers(1, &fbo_);
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_);
+        complete_ = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    }
+    ~Target() {
+        glDeleteFramebuffers(1, &fbo_);
+        glDeleteRenderbuffers(1, &color_);
+    }
+    GLuint fbo() const { return fbo_; }
+    bool complete() const { return complete_; }
+
+private:
+    GLuint fbo_ = 0, color_ = 0;
+    bool complete_ = false;
+};
+
+} // namespace
+
+std::string render_headless(const HeadlessRequest& req) {
+    if (req.width < 16 || req.height < 16 || req.width > 8192 || req.height > 8192)
+        return "the size " + std::to_string(req.width) + "x" + std::to_string(req.height) +
+               " is outside 16x16 .. 8192x8192";
+    // Load first: a bad scene should not cost a GL context.
+    doc::Document document = doc::default_document();
+    if (!req.scene_path.empty()) {
+        geom::Expected<doc::Document> loaded = doc::load_scene(req.scene_path);
+        if (!loaded.ok()) {
+            const geom::Error& e = loaded.error();
+            return "cannot load '" + req.scene_path + "': " + e.message +
+                   (e.has_path && !e.path.empty() ? " (at " + e.path + ")" : "");
+        }
+        document = std::move(loaded).value();
+    }
+
+    std::string error;
+    const std::unique_ptr<EglContext> egl = EglContext::create(error);
+    if (!egl) return "no headless OpenGL: " + error;
+
+    std::vector<std::uint8_t> pixels(static_cast<std::size_t>(req.width) * req.height * 4);
+    {
+        Target target(req.width, req.height);
+        if (!target.complete()) return "cannot create a " + std::to_string(req.width) + "x" +
+                                       std::to_string(req.height) + " framebuffer";
+        Workstation ws({/*headless=*/true, req.scale, req.view});
+        if (!ws.renderer_error().empty()) return "shaders failed: " + ws.renderer_error();
+        AppContext& ctx = ws.context();
+        ctx.doc = std::move(document);
+        ctx.file_path = req.scene_path;
+        normalize_selection(ctx.doc);
+        ctx.history.mark_clean();
+        if (req.configure) req.configure(ctx);
+
+        ImGuiIO& io = ImGui::GetIO();
+        io.DisplaySize = ImVec2(static_cast<float>(req.width), static_cast<float>(req.height));
+        io.DisplayFramebufferScale = ImVec2(1, 1);
+        io.DeltaTime = 1.0f / 60.0f;
+        io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
+        // Two frames: the first settles layout-dependent sizes (menu bar, tables, camera fit).
+        for (int f = 0; f < 2; ++f) ws.frame(target.fbo());
+
+        while (glGetError() != GL_NO_ERROR) {
+        } // only the read-back's own errors count below
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, target.fbo());
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, req.width, req.height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        if (glGetError() != GL_NO_ERROR) return "reading the picture back failed";
+    }
+    // OpenGL's first row is the bottom: flip, and make the picture opaque.
+    const std::size_t row = static_cast<std::size_t>(req.width) * 4;
+    std::vector<std::uint8_t> flipped(pixels.size());
+    for (int y = 0; y < req.height; ++y)
+        std::memcpy(&flipped[static_cast<std::size_t>(y) * row],
+                    &pixels[static_cast<std::size_t>(req.height - 1 - y) * row], row);
+    for (std::size_t k = 3; k < flipped.size(); k += 4) flipped[k] = 255;
+    return write_png(req.output, req.width, req.height, flipped);
+}
+
+} // namespace isoparm::ui

@@ -1,0 +1,26 @@
+// Rendering the workstation (or its 3D view alone) to a PNG without a display: the same
+// Workstation frame as the window, into an EGL context's framebuffer.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "ui/app_context.hpp"
+
+namespace isoparm::ui {
+
+struct HeadlessRequest {
+    std::string scene_path; // empty: the default scene
+    std::string output;     // PNG path
+    int width = 1280, height = 800;
+    ViewMode view = ViewMode::workstation;
+    float scale = 1; // UI scale (fonts, lines)
+    // Adjusts the state after loading and before rendering (selection, indicator, camera,
+    // display toggles...); the render command's options go through here.
+    std::function<void(AppContext&)> configure;
+};
+
+// Returns "" on success, else one sentence saying what failed (no partial PNG is left).
+std::string render_headless(const HeadlessRequest& request);
+
+} // namespace isoparm::ui

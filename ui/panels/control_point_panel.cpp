@@ -1,0 +1,261 @@
+// The control-point panel: for the selected point, three planes (xy, xz, yz) where its
+// disk is dragged, exact coordinates, and the weight of rational types.
+#include <algorithm>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <cmath>
+#include <cstdio>
+#include <imgui.h>
+#include <string>
+#include <vector>
+
+#include "core/doc/commands.hpp"
+#include "ui/canvas_map.hpp"
+#include "ui/doc_access.hpp"
+#include "ui/panels/panels.hpp"
+
+namespace isoparm::ui {
+
+namespace {
+
+ImVec2 iv(const glm::dvec2& p) { return {static_cast<float>(p.x), static_cast<float>(p.y)}; }
+ImU32 u32(const doc::Rgba& c, float alpha = 1) {
+    return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, alpha));
+}
+
+// The framing of one plane: the control points' box in that plane, with a margin.
+PlaneMap frame_plane(const geom::Surface& s, const Rect& canvas, int a, int b, float margin) {
+    glm::dvec2 lo(s.points[0][a], s.points[0][b]), hi = lo;
+    for (const glm::dvec3& p : s.points) {
+        lo = glm::min(lo, glm::dvec2(p[a], p[b]));
+        hi = glm::max(hi, glm::dvec2(p[a], p[b]));
+    }
+    // A flat direction (a planar grid seen edge-on) still gets some room to move into.
+    const double span = std::max(hi.x - lo.x, hi.y - lo.y);
+    const glm::dvec2 pad(std::max(span * 0.15, 0.5));
+    return fit_plane(canvas, lo - pad, hi + pad, margin);
+}
+
+void plane_canvas(AppContext& ctx, const doc::Object& obj, const geom::Surface& s, int plane,
+                  const Rect& canvas) {
+    const PlaneAxes ax = plane_axes[plane];
+    const float k = ctx.ui.scale();
+    PlaneDrag& pd = ctx.ui.plane_drag;
+    const PlaneMap map = pd.plane == plane ? pd.frozen : frame_plane(s, canvas, ax.a, ax.b, 8 * k);
+    const int si = ctx.doc.selection.i, sj = ctx.doc.selection.j;
+    const glm::dvec3 sel = s.point(si, sj);
+    const glm::dvec2 disk = plane_to_pixel(map, {sel[ax.a], sel[ax.b]});
+    const float disk_r = 7 * k;
+
+    ImGui::SetCursorScreenPos(ImVec2(canvas.x, canvas.y));
+    ImGui::PushID(plane);
+    ImGui::InvisibleButton("##plane", ImVec2(canvas.w, canvas.h));
+    const ImVec2 m = ImGui::GetIO().MousePos;
+    const glm::dvec2 mouse(m.x, m.y);
+    if (ImGui::IsItemActivated()) {
+        if (glm::length(mouse - disk) <= disk_r * 1.6) {
+            pd.plane = plane;
+            pd.frozen = map;
+            pd.grab = mouse - disk;
+            ctx.seal();
+        } else {
+            // A press on another point's dot selects that point instead.
+            for (int i = 0; i < s.n_u; ++i)
+                for (int j = 0; j < s.n_v; ++j) {
+                    const glm::dvec3& p = s.point(i, j);
+                    if (glm::length(plane_to_pixel(map, {p[ax.a], p[ax.b]}) - mouse) <= 5 * k)
+                        ctx.doc.selection = {obj.id, i, j};
+                }
+        }
+    }
+    if (ImGui::IsItemActive() && pd.plane == plane) {
+        const glm::dvec2 ab = pixel_to_plane(pd.frozen, mouse - pd.grab);
+        glm::dvec3 p = sel;
+        p[ax.a] = ab.x;
+        p[ax.b] = ab.y;
+        if (p != sel) ctx.execute(doc::move_control_point(obj.id, si, sj, p));
+    }
+    if (ImGui::IsItemDeactivated() && pd.plane == plane) {
+        pd.plane = -1;
+        ctx.seal();
+    }
+    const bool hovered = ImGui::IsItemHovered();
+    ImGui::PopID();
+
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const ImVec2 a(canvas.x, canvas.y), b(canvas.x + canvas.w, canvas.y + canvas.h);
+    const bool light = ctx.ui.presentation;
+    dl->AddRectFilled(a, b, light ? IM_COL32(250, 250, 250, 255) : IM_COL32(26, 28, 34, 255));
+    dl->PushClipRect(a, b, true);
+    // World axes through the origin, when in view.
+    const glm::dvec2 o = plane_to_pixel(map, {0, 0});
+    const ImU32 axis_col = light ? IM_COL32(150, 150, 150, 255) : IM_COL32(80, 84, 96, 255);
+    dl->AddLine(ImVec2(a.x, static_cast<float>(o.y)), ImVec2(b.x, static_cast<float>(o.y)), axis_col);
+    dl->AddLine(ImVec2(static_cast<float>(o.x), a.y), ImVec2(static_cast<float>(o.x), b.y), axis_col);
+    // The net, projected.
+    const doc::Colors& col = ctx.doc.colors;
+    auto px = [&](int i, int j) {
+        const glm::dvec3& p = s.point(i, j);
+        return iv(plane_to_pixel(map, {p[ax.a], p[ax.b]}));
+    };
+    // Rows and columns as polylines (far fewer vertices than one line per segment).
+    std::vector<ImVec2> line;
+    const ImU32 net_col = u32(col.control_net, 0.45f);
+    for (int i = 0; i < s.n_u; ++i) {
+        line.clear();
+        for (int j = 0; j < s.n_v; ++j) line.push_back(px(i, j));
+        dl->AddPolyline(line.data(), static_cast<int>(line.size()), net_col, 0, 1 * k);
+    }
+    for (int j = 0; j < s.n_v; ++j) {
+        line.clear();
+        for (int i = 0; i < s.n_u; ++i) line.push_back(px(i, j));
+        dl->AddPolyline(line.data(), static_cast<int>(line.size()), net_col, 0, 1 * k);
+    }
+    // Dots only while they stay readable; a dense net is clearer as lines alone.
+    if (s.n_u * s.n_v <= 144)
+        for (int i = 0; i < s.n_u; ++i)
+            for (int j = 0; j < s.n_v; ++j) dl->AddCircleFilled(px(i, j), 2.5f * k, u32(col.control_points, 0.8f), 8);
+    const bool active = pd.plane == plane;
+    dl->AddCircleFilled(iv(disk), disk_r, u32(col.selected_point), 20);
+    dl->AddCircle(iv(disk), disk_r, active || hovered ? IM_COL32(255, 255, 255, 255) : IM_COL32(0, 0, 0, 255), 20, 1.5f * k);
+    dl->PopClipRect();
+    dl->AddRect(a, b, light ? IM_COL32(0, 0, 0, 255) : IM_COL32(110, 115, 130, 255), 0, 0, 1 * k);
+    // Axis names: horizontal bottom-right, vertical top-left.
+    const char names[3] = {'x', 'y', 'z'};
+    const char h[2] = {names[ax.a], 0}, v[2] = {names[ax.b], 0};
+    const ImU32 tc = ImGui::GetColorU32(ImGuiCol_Text);
+    dl->AddText(ImVec2(b.x - ImGui::CalcTextSize(h).x - 4 * k, b.y - ImGui::GetTextLineHeight() - 2 * k), tc, h);
+    dl->AddText(ImVec2(a.x + 4 * k, a.y + 2 * k), tc, v);
+    dl->AddText(ImVec2(a.x + (canvas.w - ImGui::CalcTextSize(ax.name).x) / 2, a.y + 2 * k),
+                ImGui::GetColorU32(ImGuiCol_TextDisabled), ax.name);
+}
+
+void coordinate_fields(AppContext& ctx, const doc::Object& obj, const geom::Surface& s) {
+    const int i = ctx.doc.selection.i, j = ctx.doc.selection.j;
+    glm::dvec3 p = s.point(i, j);
+    const char* labels[3] = {"x", "y", "z"};
+    const float w = (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x * 2) / 3 -
+                    ImGui::CalcTextSize("x").x - ImGui::GetStyle().ItemInnerSpacing.x;
+    for (int a = 0; a < 3; ++a) {
+        if (a > 0) ImGui::SameLine();
+        ImGui::SetNextItemWidth(std::max(w, 30.f));
+        double value = p[a];
+        // One value per widget: each field is one edit (and one undo step).
+        if (ImGui::InputDouble(labels[a], &value, 0, 0, "%.4f") && std::isfinite(value) && value != p[a]) {
+            p[a] = value;
+            ctx.execute(doc::move_control_point(obj.id, i, j, p));
+        }
+        if (ImGui::IsItemDeactivatedAfterEdit()) ctx.seal();
+    }
+}
+
+void weight_controls(AppContext& ctx, const doc::Object& obj, const geom::Surface& s) {
+    const int i = ctx.doc.selection.i, j = ctx.doc.selection.j;
+    if (!geom::is_rational(s.type)) {
+        ImGui::TextWrapped("Weight: this %s surface is non-rational (all weights 1). Weights "
+                           "belong to rational Bezier and NURBS surfaces.",
+                           geom::spline_type_name(s.type));
+        return;
+    }
+    double w = s.weight(i, j);
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted(point_name('w', i, j, s.n_u, s.n_v).c_str());
+    ImGui::SameLine();
+    const float field = 90 * ctx.ui.scale();
+    ImGui::SetNextItemWidth(std::max(ImGui::GetContentRegionAvail().x - field - ImGui::GetStyle().ItemSpacing.x, 40.f));
+    const double lo = -2.0, hi = 6.0;
+    double slider = w;
+    if (ImGui::SliderScalar("##weight", ImGuiDataType_Double, &slider, &lo, &hi, "%.3f") && slider != w)
+        ctx.execute(doc::set_weight(obj.id, i, j, slider));
+    if (ImGui::IsItemDeactivated()) ctx.seal();
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(field);
+    double typed = w;
+    // Any finite value may be typed, beyond the slider's range, zero and negative included.
+    if (ImGui::InputDouble("##weight_typed", &typed, 0, 0, "%.4g") && std::isfinite(typed) && typed != w)
+        ctx.execute(doc::set_weight(obj.id, i, j, typed));
+    if (ImGui::IsItemDeactivatedAfterEdit()) ctx.seal();
+
+    const double now = s.weight(i, j);
+    const ImVec4 warn = ctx.ui.presentation ? ImVec4(0.7f, 0.25f, 0, 1) : ImVec4(1, 0.72f, 0.3f, 1);
+    if (now == 0) {
+        ImGui::PushStyleColor(ImGuiCol_Text, warn);
+        ImGui::TextWrapped("w = 0: this point no longer affects the surface, and the "
+                           "convex-hull property no longer holds.");
+        ImGui::PopStyleColor();
+    } else if (now < 0) {
+        ImGui::PushStyleColor(ImGuiCol_Text, warn);
+        ImGui::TextWrapped("w < 0: the convex-hull property no longer holds; the surface "
+                           "is pushed away and may leave the hull of the control net.");
+        ImGui::PopStyleColor();
+    } else {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("Larger w pulls the surface toward the point, smaller pushes it away.");
+        ImGui::PopStyleColor();
+    }
+}
+
+} // namespace
+
+void draw_control_point_panel(AppContext& ctx) {
+    const doc::Object* obj = ctx.doc.selected();
+    const geom::Surface* s = obj ? surface_of(*obj) : nullptr;
+    if (!s || !has_valid_point(ctx.doc)) {
+        ImGui::TextWrapped("Click a control point in the 3D view to select it; it can then "
+                           "be moved here in the xy, xz and yz planes.");
+        if (const geom::Surface* cur = current_surface(ctx.doc, &obj); cur && obj) {
+            ImGui::Spacing();
+            ImGui::TextDisabled("Or choose one of %s:", obj->name.c_str());
+            int ij[2] = {0, 0};
+            ImGui::SetNextItemWidth(120 * ctx.ui.scale());
+            if (ImGui::InputInt2("i, j", ij, ImGuiInputTextFlags_EnterReturnsTrue) && ij[0] >= 0 &&
+                ij[0] < cur->n_u && ij[1] >= 0 && ij[1] < cur->n_v)
+                ctx.doc.selection = {obj->id, ij[0], ij[1]};
+        }
+        return;
+    }
+    const int i = ctx.doc.selection.i, j = ctx.doc.selection.j;
+    ImGui::Text("%s of %s", point_name('P', i, j, s->n_u, s->n_v).c_str(), obj->name.c_str());
+    ImGui::SameLine();
+    ImGui::TextDisabled("(%s)", geom::spline_type_name(s->type));
+
+    // The three planes: in a row when the panel is wide, else wrapped.
+    const float k = ctx.ui.scale();
+    const float spacing = ImGui::GetStyle().ItemSpacing.x;
+    const ImVec2 avail = ImGui::GetContentRegionAvail();
+    const float below = ImGui::GetFrameHeightWithSpacing() * 3 + ImGui::GetTextLineHeightWithSpacing() * 3;
+    // The arrangement (3 in a row, 2 + 1, or a column) that gives the largest planes.
+    int cols = 3;
+    float side = 0;
+    for (int c = 1; c <= 3; ++c) {
+        const int r = (3 + c - 1) / c;
+        const float s = std::min((avail.x - spacing * static_cast<float>(c - 1)) / static_cast<float>(c),
+                                 (avail.y - below) / static_cast<float>(r) - spacing);
+        if (s > side) {
+            side = s;
+            cols = c;
+        }
+    }
+    const int rows = (3 + cols - 1) / cols;
+    side = std::max(side, 60 * k);
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    for (int p = 0; p < 3; ++p) {
+        const int r = p / cols, c = p % cols;
+        const Rect canvas{origin.x + static_cast<float>(c) * (side + spacing),
+                          origin.y + static_cast<float>(r) * (side + spacing), side, side};
+        // Re-read each time: the previous canvas may have executed a command.
+        obj = ctx.doc.selected();
+        s = obj ? surface_of(*obj) : nullptr;
+        if (s && has_valid_point(ctx.doc)) plane_canvas(ctx, *obj, *s, p, canvas);
+    }
+    ImGui::SetCursorScreenPos(ImVec2(origin.x, origin.y + static_cast<float>(rows) * (side + spacing)));
+
+    // The command may have changed the document: re-read before the fields.
+    obj = ctx.doc.selected();
+    s = obj ? surface_of(*obj) : nullptr;
+    if (!s || !has_valid_point(ctx.doc)) return;
+    coordinate_fields(ctx, *obj, *s);
+    weight_controls(ctx, *obj, *s);
+}
+
+} // namespace isoparm::ui

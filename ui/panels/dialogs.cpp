@@ -1,0 +1,273 @@
+// Modal dialogs: new surface, open / save as, unsaved changes, errors, mouse and keys help.
+#include <algorithm>
+#include <filesystem>
+#include <imgui.h>
+#include <imgui_stdlib.h>
+#include <string>
+#include <system_error>
+#include <tuple>
+#include <vector>
+
+#include "core/doc/commands.hpp"
+#include "ui/actions.hpp"
+#include "ui/panels/panels.hpp"
+
+namespace isoparm::ui {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* const type_names[] = {"Bezier", "Rational Bezier", "B-spline", "NURBS"};
+
+bool escape_pressed() { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false); }
+
+void center_next(float w_units, float scale) {
+    const ImGuiViewport* vp = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x * 0.5f, vp->Pos.y + vp->Size.y * 0.5f),
+                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    if (w_units > 0) ImGui::SetNextWindowSize(ImVec2(w_units * scale, 0));
+}
+
+std::string new_surface_error(const NewSurfaceForm& f) {
+    const bool bezier = f.type <= 1;
+    for (auto [n, p, dir] : {std::tuple{f.rows, f.degree_u, "u"}, std::tuple{f.cols, f.degree_v, "v"}}) {
+        if (p < 1) return std::string("The degree in ") + dir + " must be at least 1.";
+        if (n < p + 1)
+            return std::string("The degree in ") + dir + " is " + std::to_string(p) + ": it needs at least " +
+                   std::to_string(p + 1) + " control points in that direction.";
+        if (n > 64) return std::string("At most 64 control points per direction here.");
+        if (bezier && n != p + 1)
+            return std::string("A Bezier surface of degree ") + std::to_string(p) + " in " + dir + " has exactly " +
+                   std::to_string(p + 1) + " points in that direction.";
+    }
+    return {};
+}
+
+void new_surface_dialog(AppContext& ctx) {
+    NewSurfaceForm& f = ctx.ui.new_surface;
+    if (f.open) {
+        ImGui::OpenPopup("New surface");
+        f.open = false;
+        f.error.clear();
+    }
+    center_next(360, ctx.ui.scale());
+    if (!ImGui::BeginPopupModal("New surface", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    ImGui::TextWrapped("A flat grid of control points in the xy-plane; shape it by moving points.");
+    ImGui::Combo("Type", &f.type, type_names, 4);
+    const bool bezier = f.type <= 1;
+    ImGui::InputInt("Rows (u)", &f.rows);
+    ImGui::InputInt("Columns (v)", &f.cols);
+    f.rows = std::clamp(f.rows, 2, 64);
+    f.cols = std::clamp(f.cols, 2, 64);
+    if (bezier) {
+        // A Bezier patch's degree follows from its point count.
+        f.degree_u = f.rows - 1;
+        f.degree_v = f.cols - 1;
+    }
+    ImGui::BeginDisabled(bezier);
+    ImGui::InputInt("Degree in u", &f.degree_u);
+    ImGui::InputInt("Degree in v", &f.degree_v);
+    ImGui::EndDisabled();
+    f.degree_u = std::clamp(f.degree_u, 1, 63);
+    f.degree_v = std::clamp(f.degree_v, 1, 63);
+    const std::string err = new_surface_error(f);
+    if (!err.empty()) ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "%s", err.c_str());
+    ImGui::BeginDisabled(!err.empty());
+    if (ImGui::Button("Create")) {
+        doc::Object o;
+        int n = 1;
+        for (const doc::Object& x : ctx.doc.objects) n += std::holds_alternative<doc::SurfaceObject>(x.shape) ? 1 : 0;
+        o.name = "Surface " + std::to_string(n);
+        o.shape = doc::SurfaceObject{doc::make_planar_grid(f.rows, f.cols, f.degree_u, f.degree_v,
+                                                           static_cast<geom::SplineType>(f.type))};
+        ctx.seal();
+        if (ctx.execute(doc::add_object(std::move(o)))) {
+            ctx.doc.selection = {ctx.doc.objects.back().id, -1, -1};
+            fit_view(ctx);
+        }
+        ctx.seal();
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel") || escape_pressed()) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+}
+
+struct Entry {
+    std::string name;
+    bool directory;
+};
+
+std::vector<Entry> list_directory(const std::string& dir) {
+    std::vector<Entry> out;
+    std::error_code ec;
+    for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (name.empty() || name[0] == '.') continue;
+        std::error_code e2;
+        const bool is_dir = it->is_directory(e2);
+        if (is_dir || it->path().extension() == ".json") out.push_back({name, is_dir});
+    }
+    std::sort(out.begin(), out.end(), [](const Entry& a, const Entry& b) {
+        return a.directory != b.directory ? a.directory : a.name < b.name;
+    });
+    return out;
+}
+
+void file_dialog(AppContext& ctx) {
+    FileDialog& fd = ctx.ui.file_dialog;
+    const bool saving = fd.mode == FileDialog::Mode::save;
+    const char* title = saving ? "Save scene as" : "Open scene";
+    if (fd.just_opened) {
+        ImGui::OpenPopup(title);
+        fd.just_opened = false;
+    }
+    center_next(560, ctx.ui.scale());
+    if (!ImGui::BeginPopupModal(title, nullptr, 0)) return;
+    if (ImGui::Button("Up")) {
+        const fs::path parent = fs::path(fd.directory).parent_path();
+        if (!parent.empty()) fd.directory = parent.string();
+    }
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(-1);
+    ImGui::InputText("##dir", &fd.directory);
+    std::string chosen;
+    const float list_h = ImGui::GetTextLineHeightWithSpacing() * 14;
+    if (ImGui::BeginChild("##files", ImVec2(0, list_h), true)) {
+        for (const Entry& e : list_directory(fd.directory)) {
+            const std::string label = e.directory ? e.name + "/" : e.name;
+            if (ImGui::Selectable(label.c_str(), !e.directory && e.name == fd.name,
+                                  ImGuiSelectableFlags_AllowDoubleClick)) {
+                if (e.directory) {
+                    fd.directory = (fs::path(fd.directory) / e.name).string();
+                } else {
+                    fd.name = e.name;
+                    if (ImGui::IsMouseDoubleClicked(0)) chosen = e.name;
+                }
+            }
+        }
+    }
+    ImGui::EndChild();
+    ImGui::SetNextItemWidth(-1);
+    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere(); // type a name right away
+    const bool enter = ImGui::InputText("##name", &fd.name, ImGuiInputTextFlags_EnterReturnsTrue);
+    if (enter && !fd.name.empty()) chosen = fd.name;
+    fs::path target = fs::path(fd.directory) / fd.name;
+    if (saving && !fd.name.empty() && target.extension().empty()) target += ".json";
+    std::error_code ec;
+    if (saving && !fd.name.empty() && fs::exists(target, ec))
+        ImGui::TextDisabled("%s exists and will be replaced.", target.filename().string().c_str());
+    if (!fd.error.empty()) ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "%s", fd.error.c_str());
+    ImGui::BeginDisabled(fd.name.empty());
+    if (ImGui::Button(saving ? "Save" : "Open")) chosen = fd.name;
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    bool close = false;
+    if (ImGui::Button("Cancel") || escape_pressed()) {
+        close = true;
+        ctx.ui.pending = {};
+    }
+    if (!chosen.empty()) {
+        target = fs::path(fd.directory) / chosen;
+        if (saving && target.extension().empty()) target += ".json";
+        if (saving) {
+            if (save_as(ctx, target.string())) {
+                close = true;
+                run_pending(ctx); // e.g. quit after "Save" in the unsaved-changes dialog
+            }
+        } else {
+            close = true;
+            open_file(ctx, target.string());
+        }
+    }
+    if (close) {
+        fd.mode = FileDialog::Mode::closed;
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+}
+
+void unsaved_dialog(AppContext& ctx) {
+    if (ctx.ui.confirm_unsaved) {
+        ImGui::OpenPopup("Unsaved changes");
+        ctx.ui.confirm_unsaved = false;
+    }
+    center_next(0, ctx.ui.scale());
+    if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    const std::string name = ctx.file_path.empty() ? "this untitled scene" : fs::path(ctx.file_path).filename().string();
+    ImGui::Text("Save the changes to %s first?", name.c_str());
+    ImGui::Spacing();
+    if (ImGui::Button("Save")) {
+        ImGui::CloseCurrentPopup();
+        if (save(ctx)) run_pending(ctx); // untitled: the save dialog runs it after saving
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard changes")) {
+        ImGui::CloseCurrentPopup();
+        run_pending(ctx);
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel") || escape_pressed()) {
+        ImGui::CloseCurrentPopup();
+        ctx.ui.pending = {};
+    }
+    ImGui::EndPopup();
+}
+
+void error_dialog(AppContext& ctx) {
+    if (ctx.ui.show_error) {
+        ImGui::OpenPopup("##error");
+        ctx.ui.show_error = false;
+    }
+    center_next(480, ctx.ui.scale());
+    if (!ImGui::BeginPopupModal("##error", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoTitleBar))
+        return;
+    ImGui::TextUnformatted(ctx.ui.error_title.c_str());
+    ImGui::Separator();
+    ImGui::TextWrapped("%s", ctx.ui.error_message.c_str());
+    ImGui::Spacing();
+    // Keys count only once the dialog is up: the Enter that confirmed a file name must not
+    // also dismiss the error it caused.
+    const bool key = !ImGui::IsWindowAppearing() &&
+                     (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) || escape_pressed());
+    if (ImGui::Button("OK") || key)
+        ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+}
+
+void help_dialog(AppContext& ctx) {
+    if (ctx.ui.show_about) {
+        ImGui::OpenPopup("Mouse and keys");
+        ctx.ui.show_about = false;
+    }
+    center_next(520, ctx.ui.scale());
+    if (!ImGui::BeginPopupModal("Mouse and keys", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    const char* lines[] = {
+        "3D view: left-drag orbits, right-drag (or Shift+left) pans, the wheel zooms.",
+        "Click a control point to select it; drag it to move it in the view plane.",
+        "Hold X, Y or Z while dragging to move along that axis; Shift locks the axis",
+        "  the drag started along.",
+        "Tracing panel: press or drag in the square to move the indicator (u, v).",
+        "Control-point panel: drag the red disk in the xy, xz or yz plane.",
+        "F: fit to view   F11 or P: presentation mode   1/2/3: shaded/wireframe/both",
+        "C: control points   N: control net   I: point IDs   K: knot curves",
+        "Ctrl+Z / Ctrl+Y: undo / redo   Ctrl+S: save   Ctrl+O: open   Ctrl+N: new scene",
+    };
+    for (const char* l : lines) ImGui::TextUnformatted(l);
+    if (ImGui::Button("Close") || escape_pressed()) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+}
+
+} // namespace
+
+void draw_dialogs(AppContext& ctx) {
+    new_surface_dialog(ctx);
+    file_dialog(ctx);
+    unsaved_dialog(ctx);
+    error_dialog(ctx);
+    help_dialog(ctx);
+}
+
+} // namespace isoparm::ui

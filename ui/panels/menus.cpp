@@ -1,0 +1,161 @@
+// The main menu bar (File, Edit, Surface, Display, Help) and its keyboard shortcuts.
+#include <filesystem>
+#include <imgui.h>
+#include <string>
+#include <vector>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h> // key codes only: ImGui 1.86 indexes keys by the platform's codes
+
+#include "core/doc/commands.hpp"
+#include "ui/actions.hpp"
+#include "ui/doc_access.hpp"
+#include "ui/panels/panels.hpp"
+
+namespace isoparm::ui {
+
+namespace {
+
+void file_menu(AppContext& ctx) {
+    if (!ImGui::BeginMenu("File")) return;
+    if (ImGui::MenuItem("New", "Ctrl+N")) request_new_document(ctx);
+    if (ImGui::MenuItem("Open...", "Ctrl+O")) request_open_dialog(ctx);
+    if (ImGui::BeginMenu("Open Recent", !ctx.settings.recent.empty())) {
+        std::string chosen;
+        for (const std::string& r : ctx.settings.recent)
+            if (ImGui::MenuItem(r.c_str())) chosen = r;
+        ImGui::Separator();
+        if (ImGui::MenuItem("Clear list")) {
+            ctx.settings.recent.clear();
+            store_settings(ctx);
+        }
+        ImGui::EndMenu();
+        if (!chosen.empty()) request_open_file(ctx, chosen);
+    }
+    if (ImGui::MenuItem("Save", "Ctrl+S")) save(ctx);
+    if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) request_save_as(ctx);
+    ImGui::Separator();
+    if (ImGui::MenuItem("Quit", "Ctrl+Q")) request_quit(ctx);
+    ImGui::EndMenu();
+}
+
+void edit_menu(AppContext& ctx) {
+    if (!ImGui::BeginMenu("Edit")) return;
+    const std::string u = ctx.history.can_undo() ? "Undo " + ctx.history.undo_label() : "Undo";
+    const std::string r = ctx.history.can_redo() ? "Redo " + ctx.history.redo_label() : "Redo";
+    if (ImGui::MenuItem(u.c_str(), "Ctrl+Z", false, ctx.history.can_undo())) undo(ctx);
+    if (ImGui::MenuItem(r.c_str(), "Ctrl+Y", false, ctx.history.can_redo())) redo(ctx);
+    ImGui::Separator();
+    const bool has_point = has_valid_point(ctx.doc);
+    if (ImGui::MenuItem("Deselect point", "Esc", false, has_point)) {
+        ctx.doc.selection.i = ctx.doc.selection.j = -1;
+    }
+    ImGui::EndMenu();
+}
+
+void surface_menu(AppContext& ctx) {
+    if (!ImGui::BeginMenu("Surface")) return;
+    if (ImGui::MenuItem("New Surface...", "Ctrl+Shift+N")) ctx.ui.new_surface.open = true;
+    ImGui::Separator();
+    ImGui::TextDisabled("Select");
+    std::uint64_t pick = 0;
+    for (const doc::Object& o : ctx.doc.objects) {
+        const std::string label = o.name.empty() ? "object " + std::to_string(o.id) : o.name;
+        if (ImGui::MenuItem(label.c_str(), nullptr, o.id == ctx.doc.selection.object)) pick = o.id;
+    }
+    if (pick != 0 && pick != ctx.doc.selection.object) ctx.doc.selection = {pick, -1, -1};
+    ImGui::Separator();
+    const doc::Object* sel = ctx.doc.selected();
+    if (ImGui::MenuItem("Delete Selected", nullptr, false, sel != nullptr)) {
+        const std::uint64_t id = sel->id;
+        ctx.seal();
+        if (ctx.execute(doc::remove_object(id))) normalize_selection(ctx.doc);
+        ctx.seal();
+    }
+    ImGui::EndMenu();
+}
+
+void display_menu(AppContext& ctx) {
+    if (!ImGui::BeginMenu("Display")) return;
+    doc::DisplaySettings& d = ctx.doc.display;
+    if (ImGui::MenuItem("Shaded", "1", d.style == doc::DisplayStyle::shaded)) d.style = doc::DisplayStyle::shaded;
+    if (ImGui::MenuItem("Wireframe", "2", d.style == doc::DisplayStyle::wireframe)) d.style = doc::DisplayStyle::wireframe;
+    if (ImGui::MenuItem("Shaded + wireframe", "3", d.style == doc::DisplayStyle::both)) d.style = doc::DisplayStyle::both;
+    ImGui::Separator();
+    ImGui::MenuItem("Control points", "C", &d.control_points);
+    ImGui::MenuItem("Control net", "N", &d.control_net);
+    ImGui::MenuItem("Point IDs (P_ij)", "I", &d.point_ids);
+    ImGui::MenuItem("Indicator point S(u,v)", nullptr, &d.indicator_point);
+    ImGui::MenuItem("Knot curves", "K", &d.knot_curves);
+    ImGui::Separator();
+    if (ImGui::MenuItem("Fit to view", "F")) fit_view(ctx);
+    if (ImGui::MenuItem("Presentation mode", "F11 / P", ctx.ui.presentation)) toggle_presentation(ctx);
+    ImGui::EndMenu();
+}
+
+void help_menu(AppContext& ctx) {
+    if (!ImGui::BeginMenu("Help")) return;
+    if (ImGui::MenuItem("Mouse and keys...")) ctx.ui.show_about = true;
+    ImGui::EndMenu();
+}
+
+} // namespace
+
+void draw_menus(AppContext& ctx) {
+    if (!ImGui::BeginMainMenuBar()) return;
+    file_menu(ctx);
+    edit_menu(ctx);
+    surface_menu(ctx);
+    display_menu(ctx);
+    help_menu(ctx);
+    ImGui::EndMainMenuBar();
+}
+
+void handle_shortcuts(AppContext& ctx) {
+    std::vector<KeyPress> keys;
+    keys.swap(ctx.ui.key_presses);
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.WantTextInput) return; // typing in a field: keys belong to the field
+    if (ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId)) return;
+    doc::DisplaySettings& d = ctx.doc.display;
+    for (const KeyPress& k : keys) {
+        if (k.alt) continue;
+        if (k.ctrl) {
+            switch (k.key) {
+            case GLFW_KEY_N:
+                if (k.shift) ctx.ui.new_surface.open = true;
+                else request_new_document(ctx);
+                break;
+            case GLFW_KEY_O: request_open_dialog(ctx); break;
+            case GLFW_KEY_S:
+                if (k.shift) request_save_as(ctx);
+                else save(ctx);
+                break;
+            case GLFW_KEY_Z:
+                if (k.shift) redo(ctx);
+                else undo(ctx);
+                break;
+            case GLFW_KEY_Y: redo(ctx); break;
+            case GLFW_KEY_Q: request_quit(ctx); break;
+            default: break;
+            }
+            continue;
+        }
+        switch (k.key) {
+        case GLFW_KEY_F: fit_view(ctx); break;
+        case GLFW_KEY_F11:
+        case GLFW_KEY_P: toggle_presentation(ctx); break;
+        case GLFW_KEY_1: d.style = doc::DisplayStyle::shaded; break;
+        case GLFW_KEY_2: d.style = doc::DisplayStyle::wireframe; break;
+        case GLFW_KEY_3: d.style = doc::DisplayStyle::both; break;
+        case GLFW_KEY_C: d.control_points = !d.control_points; break;
+        case GLFW_KEY_N: d.control_net = !d.control_net; break;
+        case GLFW_KEY_I: d.point_ids = !d.point_ids; break;
+        case GLFW_KEY_K: d.knot_curves = !d.knot_curves; break;
+        case GLFW_KEY_ESCAPE: ctx.doc.selection.i = ctx.doc.selection.j = -1; break;
+        default: break;
+        }
+    }
+}
+
+} // namespace isoparm::ui

@@ -1,0 +1,357 @@
+// The 3D drawing view: the rendered scene as an image, mouse orbit/pan/zoom, picking and
+// dragging control points, point labels, and the paper's translate/rotate/zoom sliders.
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <imgui.h>
+#include <string>
+#include <vector>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h> // key codes only
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/doc/commands.hpp"
+#include "ui/actions.hpp"
+#include "ui/doc_access.hpp"
+#include "ui/panels/panels.hpp"
+#include "ui/render/picking.hpp"
+#include "ui/render/renderer.hpp"
+#include "ui/scene_builder.hpp"
+
+namespace isoparm::ui {
+
+namespace {
+
+constexpr double pick_radius = 10.0; // pixels (scaled)
+
+struct Candidate {
+    PointRef ref;
+    glm::dvec3 position;
+};
+
+// Every control point the user can click: those of visible objects, when points are shown.
+std::vector<Candidate> pick_candidates(const doc::Document& d) {
+    std::vector<Candidate> out;
+    if (!d.display.control_points) return out;
+    for (const doc::Object& o : d.objects) {
+        if (!o.visible) continue;
+        if (const geom::Surface* s = surface_of(o)) {
+            for (int i = 0; i < s->n_u; ++i)
+                for (int j = 0; j < s->n_v; ++j) out.push_back({{o.id, i, j}, s->point(i, j)});
+        } else if (const auto* c = std::get_if<doc::CurveObject>(&o.shape)) {
+            for (int i = 0; i < c->curve.count(); ++i) out.push_back({{o.id, i, -1}, c->curve.points[i]});
+        }
+    }
+    return out;
+}
+
+std::optional<Candidate> pick(const AppContext& ctx, const Viewport& vp, const glm::dvec2& mouse) {
+    const std::vector<Candidate> cands = pick_candidates(ctx.doc);
+    const glm::dmat4 m = view_projection(ctx.ui.camera, vp.aspect());
+    std::vector<Projected> proj;
+    proj.reserve(cands.size());
+    for (const Candidate& c : cands) proj.push_back(project(m, vp, c.position));
+    const auto k = pick_nearest(proj, mouse, pick_radius * ctx.ui.scale());
+    if (!k) return std::nullopt;
+    return cands[*k];
+}
+
+std::unique_ptr<doc::Command> move_point(const PointRef& r, const glm::dvec3& p) {
+    return doc::move_control_point(r.object, r.i, r.j, p);
+}
+
+int held_axis_key() {
+    if (ImGui::IsKeyDown(GLFW_KEY_X)) return 0;
+    if (ImGui::IsKeyDown(GLFW_KEY_Y)) return 1;
+    if (ImGui::IsKeyDown(GLFW_KEY_Z)) return 2;
+    return -1;
+}
+
+std::string point_label(int i, int j, int n_u, int n_v) { return point_name('P', i, j, n_u, n_v); }
+
+void handle_mouse(AppContext& ctx, const Viewport& vp) {
+    ImGuiIO& io = ImGui::GetIO();
+    UiState& ui = ctx.ui;
+    ViewDrag& drag = ui.drag;
+    const glm::dvec2 mouse(io.MousePos.x, io.MousePos.y);
+
+    if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) zoom(ui.camera, std::pow(0.88, io.MouseWheel));
+
+    if (ImGui::IsItemActivated()) {
+        drag = {};
+        drag.start_mouse = mouse;
+        if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !io.KeyCtrl) {
+            if (const auto hit = pick(ctx, vp, mouse)) {
+                ctx.doc.selection = {hit->ref.object, hit->ref.i, hit->ref.j};
+                drag.kind = ViewDrag::Kind::point;
+                drag.point = hit->ref;
+                drag.start = hit->position;
+                ctx.seal(); // a new gesture: a new undo step
+            } else {
+                drag.kind = io.KeyShift ? ViewDrag::Kind::pan : ViewDrag::Kind::orbit;
+            }
+        } else {
+            drag.kind = ViewDrag::Kind::pan;
+        }
+    }
+
+    if (ImGui::IsItemActive() && drag.kind != ViewDrag::Kind::none) {
+        const glm::dvec2 delta(io.MouseDelta.x, io.MouseDelta.y);
+        if (glm::length(mouse - drag.start_mouse) > 2.0) drag.moved = true;
+        switch (drag.kind) {
+        case ViewDrag::Kind::orbit: orbit(ui.camera, delta.x, delta.y); break;
+        case ViewDrag::Kind::pan: pan(ui.camera, delta.x, delta.y, vp.h); break;
+        case ViewDrag::Kind::point: {
+            if (!drag.moved) break;
+            // Axis: X/Y/Z held picks it; Shift locks the axis the drag started along.
+            int axis = held_axis_key();
+            if (axis < 0 && io.KeyShift) {
+                if (drag.axis < 0) drag.axis = dominant_axis(ui.camera, vp, drag.start, mouse - drag.start_mouse);
+                axis = drag.axis;
+            } else if (axis >= 0) {
+                drag.axis = axis;
+            } else {
+                drag.axis = -1;
+            }
+            const glm::dvec3 p = axis >= 0 ? drag_along_axis(ui.camera, vp, drag.start, axis, mouse)
+                                           : drag_in_view_plane(ui.camera, vp, drag.start, mouse);
+            ctx.execute(move_point(drag.point, p));
+            break;
+        }
+        case ViewDrag::Kind::none: break;
+        }
+    }
+
+    if (ImGui::IsItemDeactivated()) {
+        if (drag.kind == ViewDrag::Kind::orbit && !drag.moved) {
+            ctx.doc.selection.i = ctx.doc.selection.j = -1; // a click on empty space
+        }
+        drag = {};
+        ctx.seal();
+    }
+}
+
+void draw_labels(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
+    const doc::Document& d = ctx.doc;
+    if (!d.display.point_ids) return;
+    const doc::Object* obj = nullptr;
+    const geom::Surface* s = current_surface(d, &obj);
+    if (!s) return;
+    const glm::dmat4 m = view_projection(ctx.ui.camera, vp.aspect());
+    const ImU32 shadow = IM_COL32(0, 0, 0, 200);
+    const doc::Rgba& c = d.colors.control_points;
+    const ImU32 text = ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, 1));
+    const float off = 6.f * ctx.ui.scale();
+    for (int i = 0; i < s->n_u; ++i)
+        for (int j = 0; j < s->n_v; ++j) {
+            const Projected p = project(m, vp, s->point(i, j));
+            if (!p.visible) continue;
+            const std::string label = point_label(i, j, s->n_u, s->n_v);
+            const ImVec2 at(static_cast<float>(p.pixel.x) + off, static_cast<float>(p.pixel.y) - off * 2.4f);
+            dl->AddText(ImVec2(at.x + 1, at.y + 1), shadow, label.c_str());
+            dl->AddText(at, text, label.c_str());
+        }
+}
+
+void draw_hover_ring(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
+    if (ctx.ui.drag.kind != ViewDrag::Kind::none || !ImGui::IsItemHovered()) return;
+    const ImVec2 mp = ImGui::GetIO().MousePos;
+    if (const auto hit = pick(ctx, vp, {mp.x, mp.y})) {
+        const Projected p = project(view_projection(ctx.ui.camera, vp.aspect()), vp, hit->position);
+        dl->AddCircle(ImVec2(static_cast<float>(p.pixel.x), static_cast<float>(p.pixel.y)),
+                      9.f * ctx.ui.scale(), IM_COL32(255, 255, 255, 220), 24, 2.f * ctx.ui.scale());
+        const doc::Object* o = ctx.doc.find(hit->ref.object);
+        const geom::Surface* s = o ? surface_of(*o) : nullptr;
+        const std::string tip = point_label(hit->ref.i, hit->ref.j, s ? s->n_u : 0, s ? s->n_v : 0);
+        ImGui::SetTooltip("%s  (%.3g, %.3g, %.3g)", tip.c_str(), hit->position.x, hit->position.y, hit->position.z);
+    }
+}
+
+// The x/y/z triad in the lower-left corner, so the control-point planes are easy to relate.
+void draw_axes(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
+    const float k = ctx.ui.scale();
+    const ImVec2 o(static_cast<float>(vp.x) + 38 * k, static_cast<float>(vp.y + vp.h) - 38 * k);
+    const glm::dvec3 right = camera_right(ctx.ui.camera), up = camera_up(ctx.ui.camera);
+    const char* names[3] = {"x", "y", "z"};
+    const ImU32 colors[3] = {IM_COL32(240, 80, 80, 255), IM_COL32(90, 215, 90, 255), IM_COL32(90, 140, 255, 255)};
+    for (int a = 0; a < 3; ++a) {
+        glm::dvec3 e(0);
+        e[a] = 1;
+        const ImVec2 tip(o.x + static_cast<float>(glm::dot(e, right)) * 26 * k,
+                         o.y - static_cast<float>(glm::dot(e, up)) * 26 * k);
+        dl->AddLine(o, tip, colors[a], 2.f * k);
+        dl->AddText(ImVec2(tip.x - 3 * k, tip.y - 7 * k), colors[a], names[a]);
+    }
+}
+
+void draw_help_line(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
+    if (ctx.ui.presentation) return;
+    const char* help = "drag: orbit  right-drag: pan  wheel: zoom  click a point to select, drag to move "
+                       "(hold X/Y/Z: along an axis)";
+    dl->AddText(ImVec2(static_cast<float>(vp.x) + 8, static_cast<float>(vp.y) + 6),
+                IM_COL32(220, 220, 220, 150), help);
+}
+
+// Rows the slider strip needs: one when the panel is wide enough for all controls.
+int slider_rows(float width, float scale) {
+    const float labels = ImGui::CalcTextSize("Move Rotate Zoom Fit").x + ImGui::GetStyle().ItemSpacing.x * 10;
+    return width >= labels + 7.5f * 64 * scale ? 1 : 2;
+}
+
+// One spring-loaded slider (k: 0..2 move along x/y/z, 3..5 rotate about x/y/z): while held,
+// its offset from the press is applied as transform_object commands that merge into one
+// undo step; released, it springs back to 0.
+void transform_slider(AppContext& ctx, int k, float width) {
+    TransformSliders& sl = ctx.ui.sliders;
+    const doc::Object* sel = ctx.doc.selected();
+    const std::uint64_t id = sel ? sel->id : 0;
+    static const char* ids[6] = {"##mx", "##my", "##mz", "##rx", "##ry", "##rz"};
+    static const char* axis_names[3] = {"x", "y", "z"};
+    const int a = k % 3;
+    float* value = k < 3 ? &sl.move[a] : &sl.rotate[a];
+    const bool held = sl.active == k;
+    ImGui::SetNextItemWidth(width);
+    // Idle sliders show just their axis; a held one shows its offset.
+    if (k < 3) ImGui::SliderFloat(ids[k], value, -1.f, 1.f, held ? "%+.2f" : axis_names[a]);
+    else ImGui::SliderFloat(ids[k], value, -180.f, 180.f, held ? "%+.0f deg" : axis_names[a]);
+    if (ImGui::IsItemHovered() && !held)
+        ImGui::SetTooltip(k < 3 ? "Drag to move the selected surface along %s"
+                                : "Drag to rotate the selected surface about %s",
+                          axis_names[a]);
+    if (ImGui::IsItemActivated() && id != 0) {
+        sl.active = k;
+        sl.applied = 0;
+        ctx.seal();
+        // Pivot and step size are fixed for the whole gesture.
+        if (const geom::Surface* s = surface_of(*sel)) {
+            glm::dvec3 c(0);
+            for (const glm::dvec3& p : s->points) c += p;
+            sl.pivot = c / static_cast<double>(std::max<std::size_t>(s->points.size(), 1));
+        }
+        const auto box = scene_bounds(ctx.doc);
+        sl.scale = box ? std::max(glm::length(box->hi - box->lo), 1e-3) : 1.0;
+    }
+    if (ImGui::IsItemActive() && held && id != 0 && *value != sl.applied) {
+        const double delta = *value - sl.applied;
+        glm::dmat4 m(1.0);
+        if (k < 3) {
+            glm::dvec3 t(0);
+            t[a] = delta * sl.scale;
+            m = glm::translate(glm::dmat4(1.0), t);
+        } else {
+            glm::dvec3 axis(0);
+            axis[a] = 1;
+            m = glm::translate(glm::dmat4(1.0), sl.pivot) * glm::rotate(glm::dmat4(1.0), glm::radians(delta), axis) *
+                glm::translate(glm::dmat4(1.0), -sl.pivot);
+        }
+        if (ctx.execute(doc::transform_object(id, m))) sl.applied = *value;
+    }
+    if (ImGui::IsItemDeactivated()) {
+        *value = 0;
+        sl.applied = 0;
+        sl.active = -1;
+        ctx.seal();
+    }
+}
+
+// The paper's sliders below the drawing: translate and rotate the selected surface, zoom
+// the scene; on one row, or two in a narrow panel.
+void draw_sliders(AppContext& ctx, int rows) {
+    UiState& ui = ctx.ui;
+    const ImGuiStyle& st = ImGui::GetStyle();
+    const float avail = ImGui::GetContentRegionAvail().x;
+    const float label_w = rows == 1 ? 0.f : ImGui::CalcTextSize("Rotate").x;
+    const float fixed = ImGui::CalcTextSize(rows == 1 ? "Move Rotate Zoom Fit" : "Rotate Zoom").x +
+                        ImGui::CalcTextSize("Fit").x + st.FramePadding.x * 2 + st.ItemSpacing.x * (rows == 1 ? 11 : 7);
+    const float w = std::max((avail - fixed) / (rows == 1 ? 7.5f : 4.5f), 20.f);
+    const bool none = ctx.doc.selected() == nullptr;
+
+    auto label = [&](const char* text) {
+        ImGui::AlignTextToFramePadding();
+        ImGui::TextUnformatted(text);
+        ImGui::SameLine(rows == 1 ? 0.f : label_w + st.ItemSpacing.x + st.WindowPadding.x);
+    };
+    auto zoom = [&]() {
+        ImGui::TextUnformatted("Zoom");
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(w * 1.5f);
+        // Zoom relative to the last fit, on a log scale (the wheel changes the same value).
+        float pct = static_cast<float>(100.0 * ui.fit_distance / ui.camera.distance);
+        if (ImGui::SliderFloat("##zoom", &pct, 10.f, 1000.f, "%.0f%%", ImGuiSliderFlags_Logarithmic))
+            ui.camera.distance = ui.fit_distance / (std::max(pct, 1.f) / 100.0);
+    };
+
+    ImGui::BeginDisabled(none);
+    label("Move");
+    for (int k = 0; k < 3; ++k) {
+        transform_slider(ctx, k, w);
+        ImGui::SameLine();
+    }
+    ImGui::EndDisabled();
+    if (rows == 2) {
+        zoom();
+        ImGui::BeginDisabled(none);
+        label("Rotate");
+    } else {
+        ImGui::BeginDisabled(none);
+        ImGui::TextUnformatted("Rotate");
+        ImGui::SameLine();
+    }
+    for (int k = 3; k < 6; ++k) {
+        transform_slider(ctx, k, w);
+        ImGui::SameLine();
+    }
+    ImGui::EndDisabled();
+    if (rows == 1) {
+        zoom();
+        ImGui::SameLine();
+    }
+    if (ImGui::Button("Fit")) fit_view(ctx);
+}
+
+} // namespace
+
+void draw_view3d_panel(AppContext& ctx) {
+    UiState& ui = ctx.ui;
+    const bool bare = ui.view_mode == ViewMode::view3d_only;
+    ImVec2 avail = ImGui::GetContentRegionAvail();
+    const int rows = bare ? 0 : slider_rows(avail.x, ui.scale());
+    if (!bare) avail.y -= ImGui::GetFrameHeightWithSpacing() * static_cast<float>(rows) + ImGui::GetStyle().ItemSpacing.y;
+    avail.x = std::max(avail.x, 16.f);
+    avail.y = std::max(avail.y, 16.f);
+    const ImVec2 p0 = ImGui::GetCursorScreenPos();
+    ui.view_rect = {p0.x, p0.y, avail.x, avail.y};
+    const ImVec2 fb_scale = ImGui::GetIO().DisplayFramebufferScale;
+    ui.view_fb_width = std::max(1, static_cast<int>(std::lround(avail.x * fb_scale.x)));
+    ui.view_fb_height = std::max(1, static_cast<int>(std::lround(avail.y * fb_scale.y)));
+    if (ui.camera_needs_fit) {
+        fit_view(ctx);
+        ui.camera_needs_fit = false;
+    }
+
+    ImGui::InvisibleButton("##view3d", avail,
+                           ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                               ImGuiButtonFlags_MouseButtonMiddle);
+    const Viewport vp{p0.x, p0.y, avail.x, avail.y};
+    handle_mouse(ctx, vp);
+
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    if (ctx.renderer) {
+        const auto tex = reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(ctx.renderer->texture()));
+        // The texture's first row is the bottom of the picture (OpenGL), hence the flipped v.
+        dl->AddImage(tex, p0, ImVec2(p0.x + avail.x, p0.y + avail.y), ImVec2(0, 1), ImVec2(1, 0));
+    }
+    dl->PushClipRect(p0, ImVec2(p0.x + avail.x, p0.y + avail.y), true);
+    draw_labels(ctx, vp, dl);
+    if (!ui.headless) draw_hover_ring(ctx, vp, dl);
+    draw_axes(ctx, vp, dl);
+    if (!bare) draw_help_line(ctx, vp, dl);
+    dl->PopClipRect();
+
+    if (!bare) draw_sliders(ctx, rows);
+}
+
+} // namespace isoparm::ui

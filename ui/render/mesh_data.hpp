@@ -1,0 +1,27 @@
+// CPU-side helpers of the mesh cache (pure): change detection and wireframe indices.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/geom/tessellate.hpp"
+#include "core/geom/types.hpp"
+
+namespace isoparm::ui {
+
+// Exact equality of everything the tessellation depends on (the cache key).
+bool same_surface(const geom::Surface& a, const geom::Surface& b);
+
+// Grid lines of a samples_u x samples_v vertex grid (u-major, as geom::tessellate lays it
+// out) as index pairs: every stride-th line in each direction plus the last one, at most
+// about `max_lines` per direction; segments touching a vertex that does not exist are left
+// out.
+std::vector<std::uint32_t> wire_indices(int samples_u, int samples_v,
+                                        const std::vector<std::uint8_t>& exists, int max_lines);
+
+// Interleaved float vertices (position, normal) for the GPU: vertices [first, first + count)
+// (clamped to the mesh).
+std::vector<float> interleave(const geom::Mesh& mesh, std::size_t first = 0,
+                              std::size_t count = static_cast<std::size_t>(-1));
+
+} // namespace isoparm::ui

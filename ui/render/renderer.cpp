@@ -1,0 +1,314 @@
+// The 3D view renderer: mesh cache, surface, line and point passes.
+#include "ui/render/renderer.hpp"
+
+#include <chrono>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "ui/render/gl.hpp"
+#include "ui/render/gl_program.hpp"
+#include "ui/render/incremental_mesh.hpp"
+#include "ui/render/mesh_data.hpp"
+#include "ui/render/render_target.hpp"
+#include "ui/render/shaders.hpp"
+#include "ui/render/tessellation_sampling.hpp"
+
+namespace isoparm::ui {
+
+namespace {
+
+// Wireframe lines per direction: enough to read the shape, few enough not to hide it.
+constexpr int wire_lines_per_direction = 24;
+
+struct MeshEntry {
+    IncrementalMesh mesh; // CPU side: the tessellation, updated locally during drags
+    int density = 0;
+    GLuint vbo = 0, tri_ibo = 0, wire_ibo = 0, tri_vao = 0, wire_vao = 0;
+    GLsizei tri_count = 0, wire_count = 0;
+    long vertices = 0;
+    bool used = false;
+
+    void create() {
+        glGenBuffers(1, &vbo);
+        glGenBuffers(1, &tri_ibo);
+        glGenBuffers(1, &wire_ibo);
+        glGenVertexArrays(1, &tri_vao);
+        glGenVertexArrays(1, &wire_vao);
+        // Triangles: position and normal; wireframe: positions only, its colour comes from
+        // the constant attribute 1.
+        glBindVertexArray(tri_vao);
+        glBindBuffer(GL_ARRAY_BUFFER, vbo);
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), nullptr);
+        glEnableVertexAttribArray(1);
+        glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), reinterpret_cast<void*>(3 * sizeof(float)));
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, tri_ibo);
+        glBindVertexArray(wire_vao);
+        glBindBuffer(GL_ARRAY_BUFFER, vbo);
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), nullptr);
+        glDisableVertexAttribArray(1);
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, wire_ibo);
+        glBindVertexArray(0);
+    }
+    void destroy() {
+        glDeleteBuffers(1, &vbo);
+        glDeleteBuffers(1, &tri_ibo);
+        glDeleteBuffers(1, &wire_ibo);
+        glDeleteVertexArrays(1, &tri_vao);
+        glDeleteVertexArrays(1, &wire_vao);
+    }
+};
+
+// One streaming buffer for the overlay's (position, colour) vertices.
+struct StreamBuffer {
+    GLuint vbo = 0, vao = 0;
+    void create() {
+        glGenBuffers(1, &vbo);
+        glGenVertexArrays(1, &vao);
+        glBindVertexArray(vao);
+        glBindBuffer(GL_ARRAY_BUFFER, vbo);
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(OverlayVertex),
+                              reinterpret_cast<void*>(offsetof(OverlayVertex, position)));
+        glEnableVertexAttribArray(1);
+        glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(OverlayVertex),
+                              reinterpret_cast<void*>(offsetof(OverlayVertex, color)));
+        glBindVertexArray(0);
+    }
+    void destroy() {
+        glDeleteBuffers(1, &vbo);
+        glDeleteVertexArrays(1, &vao);
+    }
+    void upload(const std::vector<OverlayVertex>& v) {
+        glBindBuffer(GL_ARRAY_BUFFER, vbo);
+        // Orphan then fill: the driver need not wait for last frame's draw.
+        glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(OverlayVertex)),
+                     v.data(), GL_STREAM_DRAW);
+    }
+};
+
+} // namespace
+
+struct Renderer::Impl {
+    RenderTarget target;
+    GlProgram mesh, line, point;
+    std::unordered_map<std::uint64_t, MeshEntry> meshes;
+    StreamBuffer stream;
+
+    explicit Impl(int samples)
+        : target(samples), mesh(shaders::mesh_vs, nullptr, shaders::mesh_fs),
+          line(shaders::line_vs, shaders::line_gs, shaders::line_fs),
+          point(shaders::point_vs, shaders::point_gs, shaders::point_fs) {
+        stream.create();
+    }
+    ~Impl() {
+        for (auto& [id, m] : meshes) m.destroy();
+        stream.destroy();
+    }
+
+    // Brings the object's buffers up to date: nothing when unchanged, the touched rows
+    // after a drag, everything after other edits.
+    MeshEntry& mesh_for(const SurfaceDraw& d, RenderStats& stats) {
+        auto [it, inserted] = meshes.try_emplace(d.id);
+        MeshEntry& m = it->second;
+        if (inserted) m.create();
+        m.used = true;
+
+        const auto t0 = std::chrono::steady_clock::now();
+        const auto [su, sv] = display_samples(*d.surface, d.density);
+        const bool resampled = m.density != d.density;
+        m.density = d.density;
+        const MeshChange change = m.mesh.update(*d.surface, su, sv);
+        if (!change.any) return m;
+        const geom::Mesh& mesh = m.mesh.mesh();
+        const bool full = change.topology || resampled || change.vertex_count == static_cast<int>(mesh.positions.size());
+        const std::vector<float> verts = full ? interleave(mesh) : interleave(mesh, static_cast<std::size_t>(change.first_vertex),
+                                                                         static_cast<std::size_t>(change.vertex_count));
+        std::vector<std::uint32_t> wire;
+        if (full) wire = wire_indices(su, sv, mesh.exists, wire_lines_per_direction);
+        stats.tessellate_ms +=
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        ++stats.retessellated;
+
+        glBindBuffer(GL_ARRAY_BUFFER, m.vbo);
+        if (full) {
+            glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(verts.size() * sizeof(float)), verts.data(),
+                         GL_DYNAMIC_DRAW);
+            // Element buffers belong to their vertex arrays: fill each through its VAO.
+            glBindVertexArray(m.tri_vao);
+            glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+                         static_cast<GLsizeiptr>(mesh.triangles.size() * 3 * sizeof(std::uint32_t)),
+                         mesh.triangles.data(), GL_DYNAMIC_DRAW);
+            glBindVertexArray(m.wire_vao);
+            glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(wire.size() * sizeof(std::uint32_t)),
+                         wire.data(), GL_DYNAMIC_DRAW);
+            glBindVertexArray(0);
+            m.tri_count = static_cast<GLsizei>(mesh.triangles.size() * 3);
+            m.wire_count = static_cast<GLsizei>(wire.size());
+        } else {
+            // Only the rows the moved points' basis functions reach.
+            glBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(change.first_vertex) * 6 * sizeof(float),
+                            static_cast<GLsizeiptr>(verts.size() * sizeof(float)), verts.data());
+        }
+        glBindBuffer(GL_ARRAY_BUFFER, 0);
+        m.vertices = static_cast<long>(mesh.positions.size());
+        return m;
+    }
+
+    void prune() {
+        for (auto it = meshes.begin(); it != meshes.end();) {
+            if (!it->second.used) {
+                it->second.destroy();
+                it = meshes.erase(it);
+            } else {
+                it->second.used = false;
+                ++it;
+            }
+        }
+    }
+};
+
+bool software_renderer() {
+    const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    const std::string name = r ? r : "";
+    for (const char* s : {"llvmpipe", "softpipe", "swrast"})
+        if (name.find(s) != std::string::npos) return true;
+    return false;
+}
+
+Renderer::Renderer(int msaa_samples) : impl_(std::make_unique<Impl>(msaa_samples)) {
+    for (const GlProgram* p : {&impl_->mesh, &impl_->line, &impl_->point})
+        if (!p->ok()) error_ += p->error();
+}
+
+Renderer::~Renderer() = default;
+
+unsigned Renderer::texture() const { return impl_->target.texture(); }
+
+void Renderer::render(const SceneView& view, const std::vector<SurfaceDraw>& surfaces,
+                      const Overlay& overlay) {
+    stats_ = {};
+    Impl& im = *impl_;
+    im.target.resize(view.width, view.height);
+    im.target.bind_for_drawing();
+    glClearColor(view.background.r, view.background.g, view.background.b, 1.0f);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (!ok()) {
+        im.target.resolve();
+        return;
+    }
+
+    const double aspect = static_cast<double>(view.width) / std::max(view.height, 1);
+    const glm::mat4 vp = glm::mat4(view_projection(view.camera, aspect));
+    const glm::mat4 vmat = glm::mat4(view_matrix(view.camera));
+    const float viewport[2] = {static_cast<float>(view.width), static_cast<float>(view.height)};
+
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_SCISSOR_TEST);
+    glEnable(GL_BLEND);
+    // Keep destination alpha at 1 so the texture stays opaque inside ImGui.
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+
+    // Pass 1: shaded surfaces, pushed back a little so lines on them stay visible.
+    std::vector<MeshEntry*> entries;
+    for (const SurfaceDraw& d : surfaces) {
+        MeshEntry& m = im.mesh_for(d, stats_);
+        entries.push_back(&m);
+        stats_.vertices += m.vertices;
+    }
+    glUseProgram(im.mesh.id());
+    glUniformMatrix4fv(im.mesh.uniform("u_view_proj"), 1, GL_FALSE, glm::value_ptr(vp));
+    glUniformMatrix4fv(im.mesh.uniform("u_view"), 1, GL_FALSE, glm::value_ptr(vmat));
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.0f, 1.0f);
+    for (std::size_t k = 0; k < surfaces.size(); ++k) {
+        if (!surfaces[k].shaded) continue;
+        const glm::vec4& c = surfaces[k].fill;
+        glUniform4f(im.mesh.uniform("u_color"), c.r, c.g, c.b, c.a);
+        glBindVertexArray(entries[k]->tri_vao);
+        glDrawElements(GL_TRIANGLES, entries[k]->tri_count, GL_UNSIGNED_INT, nullptr);
+    }
+    glDisable(GL_POLYGON_OFFSET_FILL);
+
+    // Pass 2: wireframes.
+    glUseProgram(im.line.id());
+    glUniformMatrix4fv(im.line.uniform("u_view_proj"), 1, GL_FALSE, glm::value_ptr(vp));
+    glUniform2fv(im.line.uniform("u_viewport"), 1, viewport);
+    glUniform1f(im.line.uniform("u_depth_bias"), 0.0f);
+    glUniform1f(im.line.uniform("u_alpha"), 1.0f);
+    for (std::size_t k = 0; k < surfaces.size(); ++k) {
+        if (!surfaces[k].wireframe) continue;
+        const glm::vec4& c = surfaces[k].wire;
+        glUniform1f(im.line.uniform("u_width"), surfaces[k].wire_width);
+        glBindVertexArray(entries[k]->wire_vao);
+        glVertexAttrib4f(1, c.r, c.g, c.b, c.a);
+        glDrawElements(GL_LINES, entries[k]->wire_count, GL_UNSIGNED_INT, nullptr);
+    }
+
+    // Pass 3: overlay lines; hidden parts first (faint), then the visible parts.
+    std::vector<OverlayVertex> all;
+    std::vector<std::pair<GLint, GLsizei>> ranges;
+    for (const LineBatch& b : overlay.lines) {
+        ranges.emplace_back(static_cast<GLint>(all.size()), static_cast<GLsizei>(b.vertices.size()));
+        all.insert(all.end(), b.vertices.begin(), b.vertices.end());
+    }
+    const GLint point_base = static_cast<GLint>(all.size());
+    for (const PointBatch& b : overlay.points) all.insert(all.end(), b.points.begin(), b.points.end());
+    im.stream.upload(all);
+    glBindVertexArray(im.stream.vao);
+    glDepthMask(GL_FALSE);
+    glUniform1f(im.line.uniform("u_depth_bias"), 0.0005f);
+    for (std::size_t k = 0; k < overlay.lines.size(); ++k) {
+        const LineBatch& b = overlay.lines[k];
+        if (b.vertices.empty()) continue;
+        glUniform1f(im.line.uniform("u_width"), b.width_px);
+        if (b.faint_when_hidden) {
+            glDepthFunc(GL_GREATER);
+            glUniform1f(im.line.uniform("u_alpha"), 0.28f);
+            glDrawArrays(GL_LINES, ranges[k].first, ranges[k].second);
+        }
+        glDepthFunc(GL_LEQUAL);
+        glUniform1f(im.line.uniform("u_alpha"), 1.0f);
+        glDrawArrays(GL_LINES, ranges[k].first, ranges[k].second);
+    }
+
+    // Pass 4: points, the same way (or on top of everything).
+    glUseProgram(im.point.id());
+    glUniformMatrix4fv(im.point.uniform("u_view_proj"), 1, GL_FALSE, glm::value_ptr(vp));
+    glUniform2fv(im.point.uniform("u_viewport"), 1, viewport);
+    GLint first = point_base;
+    for (const PointBatch& b : overlay.points) {
+        const GLsizei count = static_cast<GLsizei>(b.points.size());
+        if (count == 0) continue;
+        glUniform1f(im.point.uniform("u_size"), b.size_px);
+        glUniform1i(im.point.uniform("u_sphere"), b.sphere ? 1 : 0);
+        if (b.on_top) {
+            glDisable(GL_DEPTH_TEST);
+            glUniform1f(im.point.uniform("u_alpha"), 1.0f);
+            glDrawArrays(GL_POINTS, first, count);
+            glEnable(GL_DEPTH_TEST);
+        } else {
+            glDepthFunc(GL_GREATER);
+            glUniform1f(im.point.uniform("u_alpha"), 0.35f);
+            glDrawArrays(GL_POINTS, first, count);
+            glDepthFunc(GL_LEQUAL);
+            glUniform1f(im.point.uniform("u_alpha"), 1.0f);
+            glDrawArrays(GL_POINTS, first, count);
+        }
+        first += count;
+    }
+
+    glBindVertexArray(0);
+    glUseProgram(0);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    im.target.resolve();
+    im.prune();
+}
+
+} // namespace isoparm::ui

@@ -1,0 +1,74 @@
+// The OpenGL 3.3 renderer of the 3D view, shared by the window and headless rendering:
+// surfaces from cached tessellations, plus the per-frame overlay, into an FBO texture.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+#include "core/geom/types.hpp"
+#include "ui/render/camera.hpp"
+#include "ui/render/overlay.hpp"
+
+namespace isoparm::ui {
+
+// One surface to draw. The renderer never owns geometry: it keeps only derived GPU buffers,
+// keyed by object id, and re-tessellates when the surface or density differs from the cache.
+struct SurfaceDraw {
+    std::uint64_t id = 0;
+    const geom::Surface* surface = nullptr;
+    int density = 32;
+    bool shaded = true;
+    bool wireframe = false;
+    glm::vec4 fill{0.3f, 0.55f, 0.85f, 1};
+    glm::vec4 wire{0.9f, 0.9f, 0.9f, 1};
+    float wire_width = 1.0f;
+};
+
+struct SceneView {
+    Camera camera;
+    int width = 1, height = 1; // framebuffer pixels
+    glm::vec4 background{0.13f, 0.14f, 0.17f, 1};
+};
+
+struct RenderStats {
+    int retessellated = 0;      // surfaces re-tessellated in the last frame
+    double tessellate_ms = 0;   // CPU time they took
+    long vertices = 0;          // vertices drawn
+};
+
+// True for Mesa's CPU rasterisers (llvmpipe, softpipe, swrast), where multisampling in an
+// interactive window costs more than it is worth.
+bool software_renderer();
+
+class Renderer {
+public:
+    // Needs a current OpenGL 3.3 core context. msaa_samples: multisampling of the 3D view
+    // (4 looks good; software renderers pay ~5x for it, see software_renderer()).
+    explicit Renderer(int msaa_samples = 4);
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    bool ok() const { return error_.empty(); }
+    const std::string& error() const { return error_; }
+
+    // Draws into the off-screen target (resized to view.width x view.height) and resolves it
+    // into texture(); leaves framebuffer 0 bound. Cache entries of ids not drawn are freed.
+    void render(const SceneView& view, const std::vector<SurfaceDraw>& surfaces,
+                const Overlay& overlay);
+    unsigned texture() const;
+    const RenderStats& stats() const { return stats_; }
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+    std::string error_;
+    RenderStats stats_;
+};
+
+} // namespace isoparm::ui

@@ -1,0 +1,163 @@
+// GLSL sources of the 3D view's three programs.
+#include "ui/render/shaders.hpp"
+
+namespace isoparm::ui::shaders {
+
+const char* const mesh_vs = R"(#version 330 core
+in vec3 a_position;
+in vec3 a_second; // normal
+uniform mat4 u_view_proj;
+uniform mat4 u_view;
+out vec3 v_eye_pos;
+out vec3 v_eye_normal;
+void main() {
+    vec4 eye = u_view * vec4(a_position, 1.0);
+    v_eye_pos = eye.xyz;
+    v_eye_normal = mat3(u_view) * a_second;
+    gl_Position = u_view_proj * vec4(a_position, 1.0);
+}
+)";
+
+const char* const mesh_fs = R"(#version 330 core
+in vec3 v_eye_pos;
+in vec3 v_eye_normal;
+uniform vec4 u_color;
+out vec4 frag;
+// Blinn-Phong (Blinn 1977) with a key and a fill light in eye space; the back side is lit
+// with the flipped normal and slightly darker, so students can tell the two sides apart.
+void main() {
+    vec3 n = normalize(v_eye_normal);
+    float side = 1.0;
+    if (!gl_FrontFacing) { n = -n; side = 0.82; }
+    vec3 view_dir = normalize(-v_eye_pos);
+    vec3 key = normalize(vec3(-0.35, 0.55, 0.75));
+    vec3 fill = normalize(vec3(0.6, -0.3, 0.45));
+    float diffuse = max(dot(n, key), 0.0) * 0.68 + max(dot(n, fill), 0.0) * 0.22;
+    float spec = pow(max(dot(n, normalize(key + view_dir)), 0.0), 48.0) * 0.32;
+    vec3 rgb = u_color.rgb * (0.24 + diffuse) * side + vec3(spec);
+    frag = vec4(rgb, u_color.a);
+}
+)";
+
+const char* const line_vs = R"(#version 330 core
+in vec3 a_position;
+in vec4 a_second; // colour
+uniform mat4 u_view_proj;
+out vec4 g_color;
+void main() {
+    g_color = a_second;
+    gl_Position = u_view_proj * vec4(a_position, 1.0);
+}
+)";
+
+const char* const line_gs = R"(#version 330 core
+layout(lines) in;
+layout(triangle_strip, max_vertices = 4) out;
+in vec4 g_color[];
+out vec4 f_color;
+out float f_edge; // signed distance from the centre line, pixels
+uniform vec2 u_viewport; // pixels
+uniform float u_width;   // pixels
+uniform float u_depth_bias;
+void main() {
+    vec4 p0 = gl_in[0].gl_Position, p1 = gl_in[1].gl_Position;
+    vec4 c0 = g_color[0], c1 = g_color[1];
+    // Clip against the near plane (w = eps) before dividing: otherwise a segment passing
+    // behind the eye would flip across the screen.
+    const float eps = 1e-5;
+    if (p0.w < eps && p1.w < eps) return;
+    if (p0.w < eps) { float t = (eps - p0.w) / (p1.w - p0.w); p0 = mix(p0, p1, t); c0 = mix(c0, c1, t); }
+    if (p1.w < eps) { float t = (eps - p1.w) / (p0.w - p1.w); p1 = mix(p1, p0, t); c1 = mix(c1, c0, t); }
+    vec2 s0 = p0.xy / p0.w * u_viewport * 0.5;
+    vec2 s1 = p1.xy / p1.w * u_viewport * 0.5;
+    vec2 d = s1 - s0;
+    float len = length(d);
+    d = len > 1e-6 ? d / len : vec2(1.0, 0.0);
+    // One extra pixel each side for the antialiased edge the fragment shader fades out.
+    float half_total = u_width * 0.5 + 1.0;
+    vec2 n = vec2(-d.y, d.x) * half_total;
+    vec2 e = d * (u_width * 0.5); // half-width caps close the joints of polylines
+    vec2 to_ndc = 2.0 / u_viewport;
+    vec4 q[4];
+    q[0] = vec4((s0 - e - n) * to_ndc * p0.w, p0.z - u_depth_bias * p0.w, p0.w);
+    q[1] = vec4((s0 - e + n) * to_ndc * p0.w, p0.z - u_depth_bias * p0.w, p0.w);
+    q[2] = vec4((s1 + e - n) * to_ndc * p1.w, p1.z - u_depth_bias * p1.w, p1.w);
+    q[3] = vec4((s1 + e + n) * to_ndc * p1.w, p1.z - u_depth_bias * p1.w, p1.w);
+    f_color = c0; f_edge = -half_total; gl_Position = q[0]; EmitVertex();
+    f_color = c0; f_edge = half_total; gl_Position = q[1]; EmitVertex();
+    f_color = c1; f_edge = -half_total; gl_Position = q[2]; EmitVertex();
+    f_color = c1; f_edge = half_total; gl_Position = q[3]; EmitVertex();
+    EndPrimitive();
+}
+)";
+
+const char* const line_fs = R"(#version 330 core
+in vec4 f_color;
+in float f_edge;
+uniform float u_alpha;
+uniform float u_width;
+out vec4 frag;
+// Coverage falls from 1 to 0 over the pixel outside the line's width: antialiasing that
+// needs no multisampling.
+void main() {
+    float coverage = clamp(u_width * 0.5 + 0.5 - abs(f_edge), 0.0, 1.0);
+    frag = vec4(f_color.rgb, f_color.a * u_alpha * coverage);
+}
+)";
+
+const char* const point_vs = line_vs;
+
+const char* const point_gs = R"(#version 330 core
+layout(points) in;
+layout(triangle_strip, max_vertices = 4) out;
+in vec4 g_color[];
+out vec4 f_color;
+out vec2 f_local;
+uniform vec2 u_viewport;
+uniform float u_size; // diameter in pixels
+void main() {
+    vec4 p = gl_in[0].gl_Position;
+    if (p.w <= 1e-5) return;
+    vec2 r = vec2(u_size * 0.5 + 1.0) * 2.0 / u_viewport * p.w;
+    float k = (u_size * 0.5 + 1.0) / (u_size * 0.5); // one pixel of room for the soft edge
+    vec2 corners[4] = vec2[](vec2(-1, -1), vec2(1, -1), vec2(-1, 1), vec2(1, 1));
+    for (int c = 0; c < 4; ++c) {
+        f_color = g_color[0];
+        f_local = corners[c] * k;
+        gl_Position = vec4(p.xy + corners[c] * r, p.z, p.w);
+        EmitVertex();
+    }
+    EndPrimitive();
+}
+)";
+
+const char* const point_fs = R"(#version 330 core
+in vec4 f_color;
+in vec2 f_local; // [-1, 1] is the disk's radius
+uniform float u_size;
+uniform int u_sphere;
+uniform float u_alpha;
+out vec4 frag;
+void main() {
+    float r = length(f_local);
+    float px = 2.0 / u_size; // one pixel in local units
+    float coverage = clamp((1.0 - r) / px + 0.5, 0.0, 1.0);
+    if (coverage <= 0.0) discard;
+    vec3 rgb;
+    if (u_sphere == 1) {
+        // An impostor sphere lit like the surfaces.
+        vec3 n = vec3(f_local.x, f_local.y, sqrt(max(1.0 - r * r, 0.0)));
+        vec3 key = normalize(vec3(-0.35, 0.55, 0.75));
+        float d = max(dot(n, key), 0.0);
+        float s = pow(max(dot(n, normalize(key + vec3(0, 0, 1))), 0.0), 40.0);
+        rgb = f_color.rgb * (0.3 + 0.75 * d) + vec3(0.45 * s);
+    } else {
+        // A flat disk with a dark rim that keeps it visible on any background.
+        float rim = smoothstep(1.0 - 2.5 * px, 1.0 - 1.5 * px, r);
+        rgb = mix(f_color.rgb, f_color.rgb * 0.25, rim);
+    }
+    frag = vec4(rgb, f_color.a * coverage * u_alpha);
+}
+)";
+
+} // namespace isoparm::ui::shaders

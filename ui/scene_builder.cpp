@@ -1,0 +1,211 @@
+// Builds the renderer's input from the document each frame.
+#include "ui/scene_builder.hpp"
+
+#include <algorithm>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include "core/geom/evaluate.hpp"
+#include "core/geom/knots.hpp"
+#include "core/geom/tessellate.hpp"
+#include "ui/doc_access.hpp"
+
+namespace isoparm::ui {
+
+namespace {
+
+glm::vec4 with_alpha(glm::vec4 c, float a) {
+    c.a *= a;
+    return c;
+}
+
+glm::vec4 axis_color(int axis) {
+    static const glm::vec4 colors[3] = {{0.95f, 0.3f, 0.3f, 1}, {0.35f, 0.85f, 0.35f, 1},
+                                        {0.35f, 0.55f, 1.0f, 1}};
+    return colors[std::clamp(axis, 0, 2)];
+}
+
+void add_net(LineBatch& b, const geom::Surface& s, const glm::vec4& c) {
+    for (int i = 0; i < s.n_u; ++i)
+        for (int j = 0; j < s.n_v; ++j) {
+            const glm::vec3 p(s.point(i, j));
+            if (j + 1 < s.n_v) b.vertices.insert(b.vertices.end(), {{p, c}, {glm::vec3(s.point(i, j + 1)), c}});
+            if (i + 1 < s.n_u) b.vertices.insert(b.vertices.end(), {{p, c}, {glm::vec3(s.point(i + 1, j)), c}});
+        }
+}
+
+std::vector<glm::vec3> curve_polyline(const geom::Curve& c, int samples) {
+    std::vector<glm::vec3> out;
+    const geom::Interval d = geom::domain(c.knots, c.degree, c.count());
+    for (double t : geom::uniform_params(d.lo, d.hi, samples))
+        if (const auto p = geom::curve_point(c, t)) out.emplace_back(*p);
+    return out;
+}
+
+} // namespace
+
+glm::vec4 to_vec4(const doc::Rgba& c) { return {c.r, c.g, c.b, c.a}; }
+
+std::vector<std::vector<glm::vec3>> iso_curve(const geom::Surface& s, geom::Dir fixed, double t,
+                                              int samples) {
+    std::vector<std::vector<glm::vec3>> pieces(1);
+    const geom::Interval other = fixed == geom::Dir::u ? domain_v(s) : domain_u(s);
+    for (double x : geom::uniform_params(other.lo, other.hi, samples)) {
+        const auto p = fixed == geom::Dir::u ? geom::surface_point(s, t, x)
+                                             : geom::surface_point(s, x, t);
+        if (p) {
+            pieces.back().emplace_back(*p);
+        } else if (!pieces.back().empty()) {
+            pieces.emplace_back();
+        }
+    }
+    if (pieces.back().empty()) pieces.pop_back();
+    return pieces;
+}
+
+BuiltScene build_scene(const doc::Document& d, const SceneStyle& style) {
+    BuiltScene out;
+    const float k = style.scale;
+    const doc::Colors& col = d.colors;
+    const doc::DisplaySettings& disp = d.display;
+    const bool shaded = disp.style != doc::DisplayStyle::wireframe;
+    const bool wire = disp.style != doc::DisplayStyle::shaded;
+
+    LineBatch net{{}, 1.4f * k, true};
+    LineBatch knots{{}, 1.6f * k, true};
+    LineBatch knots_multiple{{}, 3.2f * k, true};
+    LineBatch curves{{}, 2.2f * k, true};
+    // Many points (a 32x32 net) would bury the surface: they shrink with their number.
+    std::size_t total_points = 0;
+    for (const doc::Object& o : d.objects)
+        if (const geom::Surface* s = o.visible ? surface_of(o) : nullptr) total_points += s->points.size();
+    const float point_size = total_points > 400 ? 6.f : total_points > 100 ? 7.5f : 9.f;
+    PointBatch points{{}, point_size * k, false, false};
+    PointBatch selected{{}, 13.f * k, false, true};
+
+    for (const doc::Object& o : d.objects) {
+        if (!o.visible) continue;
+        const bool is_selected = o.id == d.selection.object;
+        if (const geom::Surface* s = surface_of(o)) {
+            SurfaceDraw sd;
+            sd.id = o.id;
+            sd.surface = s;
+            sd.density = disp.density;
+            sd.shaded = shaded;
+            sd.wireframe = wire;
+            sd.fill = to_vec4(col.surface);
+            // Wireframe of the selected surface in its own colour; over a shaded surface
+            // the lines are a darker shade of it so they read as grid, not as edges.
+            glm::vec4 w = is_selected ? to_vec4(col.selected_surface) : to_vec4(col.surface);
+            if (shaded) w = glm::vec4(glm::vec3(w) * 0.45f, 0.9f);
+            sd.wire = w;
+            sd.wire_width = (shaded ? 1.0f : 1.3f) * k;
+            out.surfaces.push_back(sd);
+
+            if (disp.control_net) add_net(net, *s, to_vec4(col.control_net));
+            if (disp.control_points)
+                for (int i = 0; i < s->n_u; ++i)
+                    for (int j = 0; j < s->n_v; ++j) {
+                        const bool sel = is_selected && d.selection.i == i && d.selection.j == j;
+                        if (sel) continue;
+                        points.points.push_back({glm::vec3(s->point(i, j)), to_vec4(col.control_points)});
+                    }
+            if (disp.knot_curves) {
+                // Knot curves S(u_k, v) and S(u, v_k); a repeated knot draws thicker.
+                for (geom::Dir dir : {geom::Dir::u, geom::Dir::v}) {
+                    const geom::Interval dom = dir == geom::Dir::u ? domain_u(*s) : domain_v(*s);
+                    for (const geom::KnotRun& r : geom::knot_runs(s->knots(dir))) {
+                        if (r.value < dom.lo || r.value > dom.hi) continue;
+                        const bool interior = r.value > dom.lo && r.value < dom.hi;
+                        LineBatch& b = interior && r.multiplicity > 1 ? knots_multiple : knots;
+                        for (const auto& piece : iso_curve(*s, dir, r.value, 97))
+                            Overlay::add_polyline(b, piece, to_vec4(col.knot_curves));
+                    }
+                }
+            }
+        } else if (const auto* c = std::get_if<doc::CurveObject>(&o.shape)) {
+            const glm::vec4 cc = to_vec4(is_selected ? col.selected_surface : col.surface);
+            Overlay::add_polyline(curves, curve_polyline(c->curve, 200), cc);
+            if (disp.control_net) {
+                std::vector<glm::vec3> poly;
+                for (const glm::dvec3& p : c->curve.points) poly.emplace_back(p);
+                Overlay::add_polyline(net, poly, to_vec4(col.control_net));
+            }
+            if (disp.control_points)
+                for (int i = 0; i < c->curve.count(); ++i)
+                    if (!(is_selected && d.selection.i == i))
+                        points.points.push_back({glm::vec3(c->curve.points[i]), to_vec4(col.control_points)});
+        }
+    }
+
+    // The selected control point: larger, in its own colour, always visible.
+    if (disp.control_points && has_valid_point(d)) {
+        const doc::Object* o = d.selected();
+        glm::dvec3 p{0};
+        if (const geom::Surface* s = surface_of(*o)) p = s->point(d.selection.i, d.selection.j);
+        else if (const auto* c = std::get_if<doc::CurveObject>(&o->shape)) p = c->curve.points[d.selection.i];
+        selected.points.push_back({glm::vec3(p), to_vec4(col.selected_point)});
+    }
+
+    // The indicator: S(u,v) as a small sphere, with the two isoparametric curves through it.
+    LineBatch iso{{}, 1.6f * k, true};
+    PointBatch indicator{{}, 14.f * k, true, true};
+    if (disp.indicator_point) {
+        if (const geom::Surface* s = current_surface(d)) {
+            const glm::dvec2 uv = indicator_params(d, *s);
+            const glm::vec4 ic = to_vec4(col.indicator);
+            for (const auto& piece : iso_curve(*s, geom::Dir::u, uv.x, 97))
+                Overlay::add_polyline(iso, piece, with_alpha(ic, 0.55f));
+            for (const auto& piece : iso_curve(*s, geom::Dir::v, uv.y, 97))
+                Overlay::add_polyline(iso, piece, with_alpha(ic, 0.55f));
+            if (const auto p = geom::surface_point(*s, uv.x, uv.y))
+                indicator.points.push_back({glm::vec3(*p), ic});
+        }
+    }
+
+    LineBatch guide{{}, 1.5f * k, false};
+    if (style.guide_axis >= 0) {
+        glm::dvec3 dir(0);
+        dir[style.guide_axis] = 1;
+        const auto box = scene_bounds(d);
+        const double len = box ? std::max(glm::length(box->hi - box->lo), 1.0) * 2 : 10.0;
+        const glm::vec4 gc = axis_color(style.guide_axis);
+        guide.vertices.push_back({glm::vec3(style.guide_point - dir * len), gc});
+        guide.vertices.push_back({glm::vec3(style.guide_point + dir * len), gc});
+    }
+
+    for (LineBatch* b : {&knots, &knots_multiple, &curves, &net, &iso, &guide})
+        if (!b->vertices.empty()) out.overlay.lines.push_back(std::move(*b));
+    for (PointBatch* b : {&points, &indicator, &selected})
+        if (!b->points.empty()) out.overlay.points.push_back(std::move(*b));
+    return out;
+}
+
+std::vector<glm::dvec3> scene_points(const doc::Document& d) {
+    std::vector<glm::dvec3> out;
+    for (const doc::Object& o : d.objects) {
+        if (!o.visible) continue;
+        if (const geom::Surface* s = surface_of(o)) {
+            out.insert(out.end(), s->points.begin(), s->points.end());
+        } else if (const auto* c = std::get_if<doc::CurveObject>(&o.shape)) {
+            out.insert(out.end(), c->curve.points.begin(), c->curve.points.end());
+        } else if (const auto* im = std::get_if<doc::ImplicitObject>(&o.shape)) {
+            for (int k = 0; k < 8; ++k)
+                out.push_back({k & 1 ? im->hi.x : im->lo.x, k & 2 ? im->hi.y : im->lo.y, k & 4 ? im->hi.z : im->lo.z});
+        }
+    }
+    return out;
+}
+
+std::optional<Box> scene_bounds(const doc::Document& d) {
+    const std::vector<glm::dvec3> pts = scene_points(d);
+    if (pts.empty()) return std::nullopt;
+    Box box{pts[0], pts[0]};
+    for (const glm::dvec3& p : pts) {
+        box.lo = glm::min(box.lo, p);
+        box.hi = glm::max(box.hi, p);
+    }
+    return box;
+}
+
+} // namespace isoparm::ui

@@ -1,0 +1,45 @@
+// From the document to what the renderer draws: surfaces with their colours and the
+// overlay (control nets, points, indicator S(u,v), knot curves, drag guides). No GL here.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/doc/document.hpp"
+#include "ui/render/overlay.hpp"
+#include "ui/render/renderer.hpp"
+
+namespace isoparm::ui {
+
+glm::vec4 to_vec4(const doc::Rgba& c);
+
+struct SceneStyle {
+    float scale = 1;           // line widths and point sizes (HiDPI, presentation)
+    int guide_axis = -1;       // an axis-constrained drag shows its axis through guide_point
+    glm::dvec3 guide_point{0};
+};
+
+struct BuiltScene {
+    std::vector<SurfaceDraw> surfaces;
+    Overlay overlay;
+};
+BuiltScene build_scene(const doc::Document& d, const SceneStyle& style);
+
+// The points of the isoparametric curve with `fixed` direction held at t (S(t, v) for
+// fixed = u), `samples` evenly spaced in the other direction; runs where the point does not
+// exist (zero denominator) break the polyline into pieces.
+std::vector<std::vector<glm::vec3>> iso_curve(const geom::Surface& s, geom::Dir fixed, double t,
+                                              int samples);
+
+// Bounding box of the control points of visible objects; nullopt for an empty scene.
+struct Box {
+    glm::dvec3 lo, hi;
+};
+std::optional<Box> scene_bounds(const doc::Document& d);
+// The control points of visible objects (corners of an implicit object's box): what "fit
+// to view" frames.
+std::vector<glm::dvec3> scene_points(const doc::Document& d);
+
+} // namespace isoparm::ui

@@ -1,0 +1,107 @@
+// Settings file: JSON read tolerantly, written atomically.
+#include "ui/settings.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <system_error>
+
+namespace isoparm::ui {
+
+namespace fs = std::filesystem;
+
+std::string config_dir_from(const char* xdg, const char* home) {
+    if (xdg && *xdg) return std::string(xdg) + "/isoparm";
+    if (home && *home) return std::string(home) + "/.config/isoparm";
+    return {};
+}
+
+std::string config_dir() { return config_dir_from(std::getenv("XDG_CONFIG_HOME"), std::getenv("HOME")); }
+
+std::string settings_path() {
+    const std::string dir = config_dir();
+    return dir.empty() ? std::string{} : dir + "/settings.json";
+}
+
+nlohmann::json settings_to_json(const Settings& s) {
+    return {
+        {"layout",
+         {{"left_width", s.layout.left_width},
+          {"right_width", s.layout.right_width},
+          {"left_shares", s.layout.left_shares},
+          {"right_shares", s.layout.right_shares}}},
+        {"recent", s.recent},
+        {"window", {{"width", s.window_width}, {"height", s.window_height}}},
+    };
+}
+
+namespace {
+template <class T> void read(const nlohmann::json& j, const char* key, T& out) {
+    if (!j.is_object() || !j.contains(key)) return;
+    try {
+        out = j.at(key).get<T>();
+    } catch (const nlohmann::json::exception&) {
+        // Keep the default: a hand-edited settings file must not stop the program.
+    }
+}
+} // namespace
+
+Settings settings_from_json(const nlohmann::json& j) {
+    Settings s;
+    if (!j.is_object()) return s;
+    if (j.contains("layout")) {
+        const nlohmann::json& l = j["layout"];
+        read(l, "left_width", s.layout.left_width);
+        read(l, "right_width", s.layout.right_width);
+        read(l, "left_shares", s.layout.left_shares);
+        read(l, "right_shares", s.layout.right_shares);
+        s.layout = sanitize(s.layout);
+    }
+    std::vector<std::string> recent;
+    read(j, "recent", recent);
+    for (const std::string& r : recent)
+        if (!r.empty() && s.recent.size() < max_recent_files) s.recent.push_back(r);
+    if (j.contains("window")) {
+        read(j["window"], "width", s.window_width);
+        read(j["window"], "height", s.window_height);
+    }
+    const Settings def;
+    if (s.window_width < 320 || s.window_width > 16384) s.window_width = def.window_width;
+    if (s.window_height < 240 || s.window_height > 16384) s.window_height = def.window_height;
+    return s;
+}
+
+Settings load_settings(const std::string& path) {
+    if (path.empty()) return {};
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return {};
+    const nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+    if (j.is_discarded()) return {};
+    return settings_from_json(j);
+}
+
+bool save_settings(const Settings& s, const std::string& path) {
+    if (path.empty()) return false;
+    std::error_code ec;
+    const fs::path target(path);
+    if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
+    const fs::path tmp = target.string() + ".tmp";
+    {
+        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+        if (!out) return false;
+        out << settings_to_json(s).dump(2) << '\n';
+        out.flush();
+        if (!out) return false;
+    }
+    fs::rename(tmp, target, ec);
+    return !ec;
+}
+
+void add_recent(std::vector<std::string>& recent, const std::string& path, std::size_t max) {
+    recent.erase(std::remove(recent.begin(), recent.end(), path), recent.end());
+    recent.insert(recent.begin(), path);
+    if (recent.size() > max) recent.resize(max);
+}
+
+} // namespace isoparm::ui

@@ -1,0 +1,39 @@
+// The workstation's own settings (layout, recent files, window size), remembered between
+// runs in $XDG_CONFIG_HOME/isoparm/settings.json (or ~/.config/isoparm/settings.json).
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "ui/layout.hpp"
+
+namespace isoparm::ui {
+
+constexpr std::size_t max_recent_files = 10;
+
+struct Settings {
+    LayoutPrefs layout;
+    std::vector<std::string> recent; // most recent first
+    int window_width = 1440, window_height = 900;
+    bool operator==(const Settings&) const = default;
+};
+
+// The directory from the environment values (either may be null or empty); "" when neither
+// is set, in which case nothing is remembered.
+std::string config_dir_from(const char* xdg_config_home, const char* home);
+std::string config_dir();               // from the real environment
+std::string settings_path();            // config_dir() + "/settings.json", or ""
+
+nlohmann::json settings_to_json(const Settings& s);
+// Tolerant: a missing or wrong value keeps its default (settings must never stop start-up).
+Settings settings_from_json(const nlohmann::json& j);
+Settings load_settings(const std::string& path);
+// Writes a temporary file and renames it over the target; creates the directory.
+bool save_settings(const Settings& s, const std::string& path);
+
+// Moves `path` to the front, removing duplicates, keeping at most `max` entries.
+void add_recent(std::vector<std::string>& recent, const std::string& path,
+                std::size_t max = max_recent_files);
+
+} // namespace isoparm::ui

@@ -1,0 +1,124 @@
+// UI state of the workstation: camera, gestures in progress, dialogs, caches of derived
+// data. None of it is document data and none of it is undoable.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "core/geom/types.hpp"
+#include "ui/canvas_map.hpp"
+#include "ui/layout.hpp"
+#include "ui/render/camera.hpp"
+#include "ui/render/picking.hpp"
+
+namespace isoparm::ui {
+
+enum class ViewMode { workstation, view3d_only };
+
+// A gesture in the 3D view, from mouse press to release.
+struct ViewDrag {
+    enum class Kind { none, orbit, pan, point } kind = Kind::none;
+    PointRef point;           // the control point being dragged
+    glm::dvec3 start{0};      // its position when the drag began
+    glm::dvec2 start_mouse{0};
+    int axis = -1;            // -1: in the view plane; 0/1/2: constrained to x/y/z
+    bool moved = false;
+};
+
+// The paper's sliders below the 3D view: spring-loaded, each drag is one transform.
+struct TransformSliders {
+    float move[3] = {0, 0, 0};   // world units along x, y, z (relative to the drag start)
+    float rotate[3] = {0, 0, 0}; // degrees about x, y, z through the pivot
+    int active = -1;             // which slider is held (0..5), -1 none
+    float applied = 0;           // the part of the held slider's value already applied
+    glm::dvec3 pivot{0};
+    double scale = 1;            // world units per slider unit, fixed for the gesture
+};
+
+// The control-point panel's planes keep their framing while a disk is dragged, so the
+// canvas does not slide under the mouse.
+struct PlaneDrag {
+    int plane = -1; // 0 xy, 1 xz, 2 yz; -1 none
+    PlaneMap frozen;
+    glm::dvec2 grab{0}; // mouse minus the disk centre at the press, in pixels
+};
+
+struct NewSurfaceForm {
+    int rows = 5, cols = 5, degree_u = 3, degree_v = 3;
+    int type = 3; // geom::SplineType: 0 bezier, 1 rational bezier, 2 bspline, 3 nurbs
+    bool open = false;
+    std::string error;
+};
+
+struct FileDialog {
+    enum class Mode { closed, open, save } mode = Mode::closed;
+    bool just_opened = false;
+    std::string directory;
+    std::string name;
+    std::string error;
+};
+
+// What to do once the user has answered the unsaved-changes question.
+struct PendingAction {
+    enum class Kind { none, new_document, open_file, open_dialog, quit } kind = Kind::none;
+    std::string path;
+};
+
+// R_ij heat map samples, recomputed only when the surface or the point changes.
+struct HeatMapCache {
+    geom::Surface surface;
+    int i = -1, j = -1, resolution = 0;
+    bool valid = false;
+    std::vector<float> values; // resolution^2, row-major over (v from top, u from left)
+    float max_value = 0;
+};
+
+// A key press from the platform, kept until the next frame handles it (ImGui 1.86 polls key
+// state once per frame and misses a press and release that fall between two frames).
+struct KeyPress {
+    int key = 0; // GLFW key code
+    bool ctrl = false, shift = false, alt = false;
+};
+
+struct UiState {
+    Camera camera;
+    double fit_distance = 6; // camera distance of the last fit (zoom 100%)
+    bool camera_needs_fit = true; // fit once the view's size is known
+    ViewMode view_mode = ViewMode::workstation;
+    bool headless = false;     // deterministic frames: no timings, no settings
+    bool presentation = false; // classroom mode: large fonts, thick lines, high contrast
+    float content_scale = 1;   // HiDPI factor from the window system
+    float font_scale_built = 0;
+
+    Layout layout;
+    LayoutInput layout_input;
+    Rect view_rect;                  // the 3D image, in ImGui pixels
+    int view_fb_width = 1, view_fb_height = 1;
+    ViewDrag drag;
+    TransformSliders sliders;
+    PlaneDrag plane_drag;
+    bool indicator_drag = false;
+
+    NewSurfaceForm new_surface;
+    FileDialog file_dialog;
+    PendingAction pending;
+    bool confirm_unsaved = false;
+    bool show_error = false;
+    std::string error_title, error_message;
+    bool show_about = false;
+    bool quit_now = false; // the window loop should close
+
+    std::vector<KeyPress> key_presses; // filled by the window loop, consumed by shortcuts
+    double frame_ms = 0; // work per frame (build, render, swap), smoothed; set by the window loop
+    std::string status;  // last message (errors of refused edits)
+    HeatMapCache heat;
+
+    float scale() const { return content_scale * (presentation ? 1.5f : 1.0f); }
+};
+
+} // namespace isoparm::ui

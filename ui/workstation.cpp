@@ -1,0 +1,203 @@
+// The workstation frame: theme and fonts, shortcuts, menus, laid-out panels, dialogs,
+// then the 3D view into its texture and ImGui on top.
+#include "ui/workstation.hpp"
+
+#include <algorithm>
+#include <imgui.h>
+#include <imgui_impl_opengl3.h>
+
+#include "ui/actions.hpp"
+#include "ui/doc_access.hpp"
+#include "ui/panels/panels.hpp"
+#include "ui/render/gl.hpp"
+#include "ui/render/renderer.hpp"
+#include "ui/scene_builder.hpp"
+#include "ui/theme.hpp"
+
+namespace isoparm::ui {
+
+namespace {
+
+constexpr ImGuiWindowFlags panel_flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                         ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+                                         ImGuiWindowFlags_NoBringToFrontOnFocus;
+
+bool begin_panel(const char* name, const Rect& r, ImGuiWindowFlags extra = 0) {
+    ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(std::max(r.w, 1.f), std::max(r.h, 1.f)), ImGuiCond_Always);
+    return ImGui::Begin(name, nullptr, panel_flags | extra);
+}
+
+} // namespace
+
+Workstation::Workstation(const WorkstationOptions& options) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr; // the layout is ours (settings.json), not imgui.ini
+    io.LogFilename = nullptr;
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+    ImGui_ImplOpenGL3_CreateDeviceObjects();
+
+    ctx_.ui.headless = options.headless;
+    ctx_.ui.content_scale = options.content_scale > 0 ? options.content_scale : 1.f;
+    ctx_.ui.view_mode = options.view;
+    ctx_.remember_settings = !options.headless;
+    ctx_.doc = doc::default_document();
+    ctx_.history.mark_clean();
+    renderer_ = std::make_unique<Renderer>(options.msaa_samples);
+    ctx_.renderer = renderer_.get();
+}
+
+Workstation::~Workstation() {
+    renderer_.reset();
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui::DestroyContext();
+}
+
+std::string Workstation::renderer_error() const { return renderer_->error(); }
+
+void Workstation::splitters() {
+    UiState& ui = ctx_.ui;
+    // No background: the frame is cleared anyway, and on a CPU rasteriser every full-window
+    // layer costs milliseconds.
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                   ImGuiWindowFlags_NoBackground |
+                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus |
+                                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoScrollbar;
+    const ImGuiViewport* vp = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos(vp->Pos);
+    ImGui::SetNextWindowSize(vp->Size);
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+    ImGui::Begin("##background", nullptr, flags);
+    ImGui::PopStyleVar();
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    bool released = false;
+    auto bar = [&](const char* id, const Rect& r, bool vertical, auto on_drag) {
+        if (r.w <= 0 || r.h <= 0) return;
+        ImGui::SetCursorScreenPos(ImVec2(r.x, r.y));
+        ImGui::InvisibleButton(id, ImVec2(r.w, r.h));
+        const bool hot = ImGui::IsItemHovered() || ImGui::IsItemActive();
+        if (hot) ImGui::SetMouseCursor(vertical ? ImGuiMouseCursor_ResizeEW : ImGuiMouseCursor_ResizeNS);
+        if (ImGui::IsItemActive()) {
+            const ImVec2 d = ImGui::GetIO().MouseDelta;
+            if (d.x != 0 || d.y != 0) on_drag(vertical ? d.x : d.y);
+        }
+        if (ImGui::IsItemDeactivated()) released = true;
+        dl->AddRectFilled(ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h),
+                          ImGui::GetColorU32(hot ? ImGuiCol_SeparatorActive : ImGuiCol_Separator, hot ? 1.f : 0.35f));
+    };
+    LayoutPrefs& prefs = ctx_.settings.layout;
+    bar("##split_left", ui.layout.left_splitter, true,
+        [&](float d) { drag_column_splitter(prefs, ui.layout, ui.layout_input, Side::left, d); });
+    bar("##split_right", ui.layout.right_splitter, true,
+        [&](float d) { drag_column_splitter(prefs, ui.layout, ui.layout_input, Side::right, d); });
+    for (std::size_t k = 0; k < ui.layout.left_row_splitters.size(); ++k) {
+        ImGui::PushID(static_cast<int>(k));
+        bar("##split_lrow", ui.layout.left_row_splitters[k], false, [&](float d) {
+            drag_row_splitter(prefs, ui.layout, ui.layout_input, Side::left, static_cast<int>(k), d);
+        });
+        bar("##split_rrow", k < ui.layout.right_row_splitters.size() ? ui.layout.right_row_splitters[k] : Rect{},
+            false, [&](float d) {
+                drag_row_splitter(prefs, ui.layout, ui.layout_input, Side::right, static_cast<int>(k), d);
+            });
+        ImGui::PopID();
+    }
+    ImGui::End();
+    if (released) store_settings(ctx_);
+}
+
+void Workstation::layout_panels() {
+    UiState& ui = ctx_.ui;
+    const ImGuiViewport* vp = ImGui::GetMainViewport();
+    ui.layout_input.width = vp->Size.x;
+    ui.layout_input.height = vp->Size.y;
+    ui.layout_input.top = ImGui::GetFrameHeight(); // the main menu bar
+    ui.layout_input.bottom = status_bar_height();
+    ui.layout_input.scale = ui.scale();
+    ui.layout_input.splitter = 5 * ui.scale();
+    ui.layout = compute_layout(ctx_.settings.layout, ui.layout_input);
+    const Layout& l = ui.layout;
+
+    if (begin_panel("Tracing: domain and knots", l.left[0])) draw_tracing_panel(ctx_);
+    ImGui::End();
+    if (begin_panel("Basis function (partition of unity)", l.left[1])) draw_basis_plot_panel(ctx_);
+    ImGui::End();
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2, 2));
+    // The 3D image covers the panel: its window background would only be overdrawn.
+    if (begin_panel("Drawing", l.center,
+                    ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse | ImGuiWindowFlags_NoBackground))
+        draw_view3d_panel(ctx_);
+    ImGui::End();
+    ImGui::PopStyleVar();
+    if (begin_panel("Control point", l.right[0])) draw_control_point_panel(ctx_);
+    ImGui::End();
+    if (begin_panel("Control panel", l.right[1])) draw_control_panel(ctx_);
+    ImGui::End();
+    // Last: ImGui puts a new window without bring-to-front behind all others, and the
+    // splitters' background must stay behind the panels. A drag shows from the next frame.
+    splitters();
+}
+
+void Workstation::frame(unsigned target_framebuffer) {
+    UiState& ui = ctx_.ui;
+    ImGuiIO& io = ImGui::GetIO();
+    // Theme and font atlas follow the scale (HiDPI x presentation); rebuilt between frames.
+    const float scale = ui.scale();
+    if (scale != ui.font_scale_built || ui.presentation != presentation_built_) {
+        apply_theme(ui.presentation, scale);
+        rebuild_fonts(scale);
+        ui.font_scale_built = scale;
+        presentation_built_ = ui.presentation;
+    }
+
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui::NewFrame();
+    // Between gestures (nothing held, no field being edited) the next edit is a new undo step.
+    if (!ImGui::IsAnyItemActive() && !ImGui::IsAnyMouseDown()) ctx_.seal();
+    normalize_selection(ctx_.doc);
+
+    if (ui.view_mode == ViewMode::workstation) {
+        handle_shortcuts(ctx_);
+        draw_menus(ctx_);
+        layout_panels();
+        draw_status_bar(ctx_);
+        draw_dialogs(ctx_);
+    } else {
+        const ImGuiViewport* vp = ImGui::GetMainViewport();
+        ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+        ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0);
+        if (begin_panel("##view3d_only", {vp->Pos.x, vp->Pos.y, vp->Size.x, vp->Size.y},
+                        ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoBackground))
+            draw_view3d_panel(ctx_);
+        ImGui::End();
+        ImGui::PopStyleVar(2);
+    }
+    ImGui::Render();
+
+    // The 3D view into its texture, with the camera and document of this very frame.
+    SceneStyle style;
+    style.scale = scale;
+    if (ui.drag.kind == ViewDrag::Kind::point && ui.drag.axis >= 0) {
+        style.guide_axis = ui.drag.axis;
+        style.guide_point = ui.drag.start;
+    }
+    const BuiltScene scene = build_scene(ctx_.doc, style);
+    SceneView view;
+    view.camera = ui.camera;
+    view.width = ui.view_fb_width;
+    view.height = ui.view_fb_height;
+    view.background = to_vec4(ctx_.doc.colors.background);
+    renderer_->render(view, scene.surfaces, scene.overlay);
+
+    glBindFramebuffer(GL_FRAMEBUFFER, target_framebuffer);
+    const int fb_w = static_cast<int>(io.DisplaySize.x * io.DisplayFramebufferScale.x);
+    const int fb_h = static_cast<int>(io.DisplaySize.y * io.DisplayFramebufferScale.y);
+    glViewport(0, 0, fb_w, fb_h);
+    const ImVec4 bg = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg);
+    glClearColor(bg.x * 0.7f, bg.y * 0.7f, bg.z * 0.7f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+} // namespace isoparm::ui

@@ -1,0 +1,49 @@
+// The workstation: one ImGui frame with every panel, the 3D view rendered into its texture,
+// drawn into the current framebuffer. The window (GLFW) and headless (EGL) paths both run
+// exactly this code; only the platform input and the target differ.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "ui/app_context.hpp"
+
+namespace isoparm::ui {
+
+class Renderer;
+
+struct WorkstationOptions {
+    bool headless = false;  // no timings, no settings file, deterministic
+    float content_scale = 1; // HiDPI factor
+    ViewMode view = ViewMode::workstation;
+    int msaa_samples = 4;     // multisampling of the 3D view (0: none)
+};
+
+class Workstation {
+public:
+    // Needs a current OpenGL 3.3 core context. Creates the ImGui context and initialises
+    // ImGui's OpenGL3 backend; a platform backend (GLFW) may be added by the caller.
+    explicit Workstation(const WorkstationOptions& options);
+    ~Workstation();
+    Workstation(const Workstation&) = delete;
+    Workstation& operator=(const Workstation&) = delete;
+
+    // Empty when the renderer works; otherwise why not (shader errors).
+    std::string renderer_error() const;
+
+    AppContext& context() { return ctx_; }
+    const AppContext& context() const { return ctx_; }
+
+    // One frame. The caller has set io.DisplaySize, io.DeltaTime and input (or run the GLFW
+    // backend's NewFrame). The frame is drawn into `target_framebuffer` (0: the window).
+    void frame(unsigned target_framebuffer = 0);
+
+private:
+    void layout_panels();
+    void splitters();
+    AppContext ctx_;
+    std::unique_ptr<Renderer> renderer_;
+    bool presentation_built_ = false;
+};
+
+} // namespace isoparm::ui
