@@ -22,7 +22,8 @@ namespace isoparm::app {
 
 namespace {
 
-constexpr const char* render_hint = "to make pictures without a display, use 'isoparm render [SCENE] -o OUT.png'";
+constexpr const char* render_hint =
+    "to make pictures without a display, use 'isoparm render [SCENE] -o OUT.png'";
 
 std::string& glfw_error() {
     static std::string last;
@@ -34,32 +35,48 @@ int& pending_frames() {
     static int n = 3;
     return n;
 }
-void wake(GLFWwindow*) { pending_frames() = 3; }
-void on_cursor(GLFWwindow* w, double, double) { wake(w); }
-void on_button(GLFWwindow* w, int, int, int) { wake(w); }
-void on_scroll(GLFWwindow* w, double, double) { wake(w); }
+void wake(GLFWwindow*) {
+    pending_frames() = 3;
+}
+void on_cursor(GLFWwindow* w, double, double) {
+    wake(w);
+}
+void on_button(GLFWwindow* w, int, int, int) {
+    wake(w);
+}
+void on_scroll(GLFWwindow* w, double, double) {
+    wake(w);
+}
 void on_key(GLFWwindow* w, int key, int, int action, int mods) {
     wake(w);
     if (action == GLFW_RELEASE) return;
     auto* ctx = static_cast<ui::AppContext*>(glfwGetWindowUserPointer(w));
     if (ctx)
-        ctx->ui.key_presses.push_back({key, (mods & GLFW_MOD_CONTROL) != 0, (mods & GLFW_MOD_SHIFT) != 0,
-                                       (mods & GLFW_MOD_ALT) != 0});
+        ctx->ui.key_presses.push_back({key, (mods & GLFW_MOD_CONTROL) != 0,
+                                       (mods & GLFW_MOD_SHIFT) != 0, (mods & GLFW_MOD_ALT) != 0});
 }
-void on_char(GLFWwindow* w, unsigned) { wake(w); }
-void on_size(GLFWwindow* w, int, int) { wake(w); }
-void on_focus(GLFWwindow* w, int) { wake(w); }
+void on_char(GLFWwindow* w, unsigned) {
+    wake(w);
+}
+void on_size(GLFWwindow* w, int, int) {
+    wake(w);
+}
+void on_focus(GLFWwindow* w, int) {
+    wake(w);
+}
 
 int run_window(const std::string& scene) {
     const char* x11 = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     if ((!x11 || !*x11) && (!wayland || !*wayland)) {
-        std::cerr << "isoparm: no display (DISPLAY and WAYLAND_DISPLAY are unset); " << render_hint << "\n";
+        std::cerr << "isoparm: no display (DISPLAY and WAYLAND_DISPLAY are unset); " << render_hint
+                  << "\n";
         return 1;
     }
     glfwSetErrorCallback([](int, const char* text) { glfw_error() = text ? text : ""; });
     if (!glfwInit()) {
-        std::cerr << "isoparm: cannot open the display (" << glfw_error() << "); " << render_hint << "\n";
+        std::cerr << "isoparm: cannot open the display (" << glfw_error() << "); " << render_hint
+                  << "\n";
         return 1;
     }
     ui::Settings settings = ui::load_settings(ui::settings_path());
@@ -68,10 +85,11 @@ int run_window(const std::string& scene) {
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
-    GLFWwindow* window = glfwCreateWindow(settings.window_width, settings.window_height, "isoparm", nullptr, nullptr);
+    GLFWwindow* window = glfwCreateWindow(settings.window_width, settings.window_height, "isoparm",
+                                          nullptr, nullptr);
     if (!window) {
-        std::cerr << "isoparm: cannot create an OpenGL 3.3 core window (" << glfw_error() << "); " << render_hint
-                  << "\n";
+        std::cerr << "isoparm: cannot create an OpenGL 3.3 core window (" << glfw_error() << "); "
+                  << render_hint << "\n";
         glfwTerminate();
         return 1;
     }
@@ -113,8 +131,10 @@ int run_window(const std::string& scene) {
 
             std::string title;
             while (!ctx.ui.quit_now) {
-                if (pending_frames() > 0) glfwPollEvents();
-                else glfwWaitEventsTimeout(0.5);
+                if (pending_frames() > 0)
+                    glfwPollEvents();
+                else
+                    glfwWaitEventsTimeout(0.5);
                 if (pending_frames() > 0) --pending_frames();
                 if (glfwWindowShouldClose(window)) {
                     glfwSetWindowShouldClose(window, GLFW_FALSE);
@@ -128,7 +148,9 @@ int run_window(const std::string& scene) {
                 ws.frame(0);
                 glfwSwapBuffers(window);
                 // The work of a frame, not the time between frames (idle waits excluded).
-                const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+                const double ms =
+                    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                        .count();
                 double& shown = ctx.ui.frame_ms;
                 shown = shown <= 0 ? ms : shown * 0.8 + ms * 0.2;
                 if (const std::string t = ctx.title(); t != title) {
@@ -153,7 +175,9 @@ int run_window(const std::string& scene) {
 
 Action register_gui_command(CLI::App& app) {
     auto scene = std::make_shared<std::string>();
-    app.add_option("SCENE", *scene, "scene to open in the workstation (default: a shaped 5x5 bicubic NURBS surface)");
+    app.add_option(
+        "SCENE", *scene,
+        "scene to open in the workstation (default: a shaped 5x5 bicubic NURBS surface)");
     return [scene]() -> int { return run_window(*scene); };
 }
 

@@ -13,8 +13,10 @@ namespace {
 
 void guard(AppContext& ctx, PendingAction action) {
     ctx.ui.pending = std::move(action);
-    if (ctx.dirty()) ctx.ui.confirm_unsaved = true;
-    else run_pending(ctx);
+    if (ctx.dirty())
+        ctx.ui.confirm_unsaved = true;
+    else
+        run_pending(ctx);
 }
 
 std::string error_text(const geom::Error& e) {
@@ -37,20 +39,31 @@ void adopt(AppContext& ctx, doc::Document d, const std::string& path) {
 
 } // namespace
 
-void request_new_document(AppContext& ctx) { guard(ctx, {PendingAction::Kind::new_document, {}}); }
-void request_open_dialog(AppContext& ctx) { guard(ctx, {PendingAction::Kind::open_dialog, {}}); }
+void request_new_document(AppContext& ctx) {
+    guard(ctx, {PendingAction::Kind::new_document, {}});
+}
+void request_open_dialog(AppContext& ctx) {
+    guard(ctx, {PendingAction::Kind::open_dialog, {}});
+}
 void request_open_file(AppContext& ctx, const std::string& path) {
     guard(ctx, {PendingAction::Kind::open_file, path});
 }
-void request_quit(AppContext& ctx) { guard(ctx, {PendingAction::Kind::quit, {}}); }
+void request_quit(AppContext& ctx) {
+    guard(ctx, {PendingAction::Kind::quit, {}});
+}
 
 void run_pending(AppContext& ctx) {
     const PendingAction a = std::move(ctx.ui.pending);
     ctx.ui.pending = {};
     switch (a.kind) {
-    case PendingAction::Kind::none: break;
-    case PendingAction::Kind::new_document: new_document(ctx); break;
-    case PendingAction::Kind::open_file: open_file(ctx, a.path); break;
+    case PendingAction::Kind::none:
+        break;
+    case PendingAction::Kind::new_document:
+        new_document(ctx);
+        break;
+    case PendingAction::Kind::open_file:
+        open_file(ctx, a.path);
+        break;
     case PendingAction::Kind::open_dialog: {
         FileDialog& fd = ctx.ui.file_dialog;
         fd.mode = FileDialog::Mode::open;
@@ -64,7 +77,9 @@ void run_pending(AppContext& ctx) {
         }
         break;
     }
-    case PendingAction::Kind::quit: ctx.ui.quit_now = true; break;
+    case PendingAction::Kind::quit:
+        ctx.ui.quit_now = true;
+        break;
     }
 }
 
@@ -82,7 +97,9 @@ bool open_file(AppContext& ctx, const std::string& path) {
     return true;
 }
 
-void new_document(AppContext& ctx) { adopt(ctx, doc::default_document(), ""); }
+void new_document(AppContext& ctx) {
+    adopt(ctx, doc::default_document(), "");
+}
 
 bool save(AppContext& ctx) {
     if (ctx.file_path.empty()) {
@@ -137,7 +154,8 @@ void redo(AppContext& ctx) {
 void fit_view(AppContext& ctx) {
     const std::vector<glm::dvec3> pts = scene_points(ctx.doc);
     if (pts.empty()) return;
-    const double aspect = ctx.ui.view_rect.h > 0 ? static_cast<double>(ctx.ui.view_rect.w) / ctx.ui.view_rect.h : 1.6;
+    const double aspect =
+        ctx.ui.view_rect.h > 0 ? static_cast<double>(ctx.ui.view_rect.w) / ctx.ui.view_rect.h : 1.6;
     fit_to_points(ctx.ui.camera, pts, aspect);
     ctx.ui.fit_distance = ctx.ui.camera.distance;
 }

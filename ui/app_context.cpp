@@ -17,8 +17,9 @@ bool AppContext::execute(std::unique_ptr<doc::Command> cmd) {
 }
 
 std::string AppContext::title() const {
-    const std::string name =
-        file_path.empty() ? std::string("untitled") : std::filesystem::path(file_path).filename().string();
+    const std::string name = file_path.empty()
+                                 ? std::string("untitled")
+                                 : std::filesystem::path(file_path).filename().string();
     return name + (dirty() ? " *" : "") + " - isoparm";
 }
 

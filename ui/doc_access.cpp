@@ -55,8 +55,12 @@ std::string point_name(char prefix, int i, int j, const doc::Document& d) {
     return point_name(prefix, i, j, s ? s->n_u : 0, s ? s->n_v : 0);
 }
 
-geom::Interval domain_u(const geom::Surface& s) { return geom::domain(s.knots_u, s.degree_u, s.n_u); }
-geom::Interval domain_v(const geom::Surface& s) { return geom::domain(s.knots_v, s.degree_v, s.n_v); }
+geom::Interval domain_u(const geom::Surface& s) {
+    return geom::domain(s.knots_u, s.degree_u, s.n_u);
+}
+geom::Interval domain_v(const geom::Surface& s) {
+    return geom::domain(s.knots_v, s.degree_v, s.n_v);
+}
 
 glm::dvec2 indicator_params(const doc::Document& d, const geom::Surface& s) {
     return {denormalize_param(domain_u(s), d.indicator.x),

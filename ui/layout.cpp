@@ -24,13 +24,17 @@ std::vector<float> row_heights(const std::vector<float>& shares, float total, fl
     for (int pass = 0; pass < n; ++pass) {
         float deficit = 0, spare = 0;
         for (int k = 0; k < n; ++k) {
-            if (h[k] < min_h) deficit += min_h - h[k];
-            else spare += h[k] - min_h;
+            if (h[k] < min_h)
+                deficit += min_h - h[k];
+            else
+                spare += h[k] - min_h;
         }
         if (deficit <= 0) break;
         for (int k = 0; k < n; ++k) {
-            if (h[k] < min_h) h[k] = min_h;
-            else h[k] -= (h[k] - min_h) / spare * deficit;
+            if (h[k] < min_h)
+                h[k] = min_h;
+            else
+                h[k] -= (h[k] - min_h) / spare * deficit;
         }
     }
     return h;
@@ -65,7 +69,8 @@ Layout compute_layout(const LayoutPrefs& prefs, const LayoutInput& in) {
     const float gap = in.splitter;
     const float avail = std::max(in.width - 2 * gap, 0.f);
     const float height = std::max(in.height - in.top - in.bottom, 0.f);
-    const float min_side = min_side_width * s, min_center = min_center_width * s;
+    const float min_side = min_side_width * s;
+    const float min_center = std::max(min_center_width * s, in.min_center_fraction * avail);
 
     float l = std::max(prefs.left_width * s, min_side);
     float r = std::max(prefs.right_width * s, min_side);
@@ -109,12 +114,11 @@ void drag_column_splitter(LayoutPrefs& prefs, const Layout& layout, const Layout
     }
 }
 
-void drag_row_splitter(LayoutPrefs& prefs, const Layout& layout, const LayoutInput& in,
-                       Side side, int index, float dy) {
+void drag_row_splitter(LayoutPrefs& prefs, const Layout& layout, const LayoutInput& in, Side side,
+                       int index, float dy) {
     std::vector<float>& shares = side == Side::left ? prefs.left_shares : prefs.right_shares;
     const std::vector<Rect>& rows = side == Side::left ? layout.left : layout.right;
-    if (index < 0 || index + 1 >= static_cast<int>(rows.size()) ||
-        rows.size() != shares.size())
+    if (index < 0 || index + 1 >= static_cast<int>(rows.size()) || rows.size() != shares.size())
         return;
     const float min_h = min_row_height * in.scale;
     float a = rows[index].h, b = rows[index + 1].h;
@@ -133,8 +137,7 @@ void drag_row_splitter(LayoutPrefs& prefs, const Layout& layout, const LayoutInp
 LayoutPrefs sanitize(const LayoutPrefs& prefs) {
     const LayoutPrefs def;
     LayoutPrefs out = prefs;
-    if (!std::isfinite(out.left_width) || out.left_width < min_side_width ||
-        out.left_width > 4000)
+    if (!std::isfinite(out.left_width) || out.left_width < min_side_width || out.left_width > 4000)
         out.left_width = def.left_width;
     if (!std::isfinite(out.right_width) || out.right_width < min_side_width ||
         out.right_width > 4000)

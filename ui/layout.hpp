@@ -7,7 +7,9 @@ namespace isoparm::ui {
 
 struct Rect {
     float x = 0, y = 0, w = 0, h = 0;
-    bool contains(float px, float py) const { return px >= x && px < x + w && py >= y && py < y + h; }
+    bool contains(float px, float py) const {
+        return px >= x && px < x + w && py >= y && py < y + h;
+    }
     bool operator==(const Rect&) const = default;
 };
 
@@ -27,12 +29,14 @@ struct LayoutInput {
     float bottom = 0;                 // status bar height
     float scale = 1;                  // HiDPI times presentation scale
     float splitter = 6;               // splitter thickness (already scaled)
+    float min_center_fraction = 0;    // the centre keeps at least this share of the width
+                                      // (presentation mode favours the 3D view)
 };
 
 struct Layout {
     Rect center;
-    std::vector<Rect> left, right;   // stacked panels, top to bottom
-    Rect left_splitter, right_splitter;               // vertical bars beside the centre
+    std::vector<Rect> left, right;                             // stacked panels, top to bottom
+    Rect left_splitter, right_splitter;                        // vertical bars beside the centre
     std::vector<Rect> left_row_splitters, right_row_splitters; // between stacked panels
 };
 
@@ -54,8 +58,8 @@ void drag_column_splitter(LayoutPrefs& prefs, const Layout& layout, const Layout
                           Side side, float dx);
 // The splitter under stacked panel `index` (between index and index + 1) moved by dy pixels:
 // the two panels trade height, each keeping at least min_row_height (scaled).
-void drag_row_splitter(LayoutPrefs& prefs, const Layout& layout, const LayoutInput& in,
-                       Side side, int index, float dy);
+void drag_row_splitter(LayoutPrefs& prefs, const Layout& layout, const LayoutInput& in, Side side,
+                       int index, float dy);
 
 // Restores defaults for values a settings file got wrong (negative, NaN, wrong count).
 LayoutPrefs sanitize(const LayoutPrefs& prefs);

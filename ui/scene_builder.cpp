@@ -20,8 +20,8 @@ glm::vec4 with_alpha(glm::vec4 c, float a) {
 }
 
 glm::vec4 axis_color(int axis) {
-    static const glm::vec4 colors[3] = {{0.95f, 0.3f, 0.3f, 1}, {0.35f, 0.85f, 0.35f, 1},
-                                        {0.35f, 0.55f, 1.0f, 1}};
+    static const glm::vec4 colors[3] = {
+        {0.95f, 0.3f, 0.3f, 1}, {0.35f, 0.85f, 0.35f, 1}, {0.35f, 0.55f, 1.0f, 1}};
     return colors[std::clamp(axis, 0, 2)];
 }
 
@@ -29,8 +29,10 @@ void add_net(LineBatch& b, const geom::Surface& s, const glm::vec4& c) {
     for (int i = 0; i < s.n_u; ++i)
         for (int j = 0; j < s.n_v; ++j) {
             const glm::vec3 p(s.point(i, j));
-            if (j + 1 < s.n_v) b.vertices.insert(b.vertices.end(), {{p, c}, {glm::vec3(s.point(i, j + 1)), c}});
-            if (i + 1 < s.n_u) b.vertices.insert(b.vertices.end(), {{p, c}, {glm::vec3(s.point(i + 1, j)), c}});
+            if (j + 1 < s.n_v)
+                b.vertices.insert(b.vertices.end(), {{p, c}, {glm::vec3(s.point(i, j + 1)), c}});
+            if (i + 1 < s.n_u)
+                b.vertices.insert(b.vertices.end(), {{p, c}, {glm::vec3(s.point(i + 1, j)), c}});
         }
 }
 
@@ -44,15 +46,17 @@ std::vector<glm::vec3> curve_polyline(const geom::Curve& c, int samples) {
 
 } // namespace
 
-glm::vec4 to_vec4(const doc::Rgba& c) { return {c.r, c.g, c.b, c.a}; }
+glm::vec4 to_vec4(const doc::Rgba& c) {
+    return {c.r, c.g, c.b, c.a};
+}
 
 std::vector<std::vector<glm::vec3>> iso_curve(const geom::Surface& s, geom::Dir fixed, double t,
                                               int samples) {
     std::vector<std::vector<glm::vec3>> pieces(1);
     const geom::Interval other = fixed == geom::Dir::u ? domain_v(s) : domain_u(s);
     for (double x : geom::uniform_params(other.lo, other.hi, samples)) {
-        const auto p = fixed == geom::Dir::u ? geom::surface_point(s, t, x)
-                                             : geom::surface_point(s, x, t);
+        const auto p =
+            fixed == geom::Dir::u ? geom::surface_point(s, t, x) : geom::surface_point(s, x, t);
         if (p) {
             pieces.back().emplace_back(*p);
         } else if (!pieces.back().empty()) {
@@ -78,7 +82,8 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style) {
     // Many points (a 32x32 net) would bury the surface: they shrink with their number.
     std::size_t total_points = 0;
     for (const doc::Object& o : d.objects)
-        if (const geom::Surface* s = o.visible ? surface_of(o) : nullptr) total_points += s->points.size();
+        if (const geom::Surface* s = o.visible ? surface_of(o) : nullptr)
+            total_points += s->points.size();
     const float point_size = total_points > 400 ? 6.f : total_points > 100 ? 7.5f : 9.f;
     PointBatch points{{}, point_size * k, false, false};
     PointBatch selected{{}, 13.f * k, false, true};
@@ -108,7 +113,8 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style) {
                     for (int j = 0; j < s->n_v; ++j) {
                         const bool sel = is_selected && d.selection.i == i && d.selection.j == j;
                         if (sel) continue;
-                        points.points.push_back({glm::vec3(s->point(i, j)), to_vec4(col.control_points)});
+                        points.points.push_back(
+                            {glm::vec3(s->point(i, j)), to_vec4(col.control_points)});
                     }
             if (disp.knot_curves) {
                 // Knot curves S(u_k, v) and S(u, v_k); a repeated knot draws thicker.
@@ -134,7 +140,8 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style) {
             if (disp.control_points)
                 for (int i = 0; i < c->curve.count(); ++i)
                     if (!(is_selected && d.selection.i == i))
-                        points.points.push_back({glm::vec3(c->curve.points[i]), to_vec4(col.control_points)});
+                        points.points.push_back(
+                            {glm::vec3(c->curve.points[i]), to_vec4(col.control_points)});
         }
     }
 
@@ -142,8 +149,10 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style) {
     if (disp.control_points && has_valid_point(d)) {
         const doc::Object* o = d.selected();
         glm::dvec3 p{0};
-        if (const geom::Surface* s = surface_of(*o)) p = s->point(d.selection.i, d.selection.j);
-        else if (const auto* c = std::get_if<doc::CurveObject>(&o->shape)) p = c->curve.points[d.selection.i];
+        if (const geom::Surface* s = surface_of(*o))
+            p = s->point(d.selection.i, d.selection.j);
+        else if (const auto* c = std::get_if<doc::CurveObject>(&o->shape))
+            p = c->curve.points[d.selection.i];
         selected.points.push_back({glm::vec3(p), to_vec4(col.selected_point)});
     }
 
@@ -191,7 +200,8 @@ std::vector<glm::dvec3> scene_points(const doc::Document& d) {
             out.insert(out.end(), c->curve.points.begin(), c->curve.points.end());
         } else if (const auto* im = std::get_if<doc::ImplicitObject>(&o.shape)) {
             for (int k = 0; k < 8; ++k)
-                out.push_back({k & 1 ? im->hi.x : im->lo.x, k & 2 ? im->hi.y : im->lo.y, k & 4 ? im->hi.z : im->lo.z});
+                out.push_back({k & 1 ? im->hi.x : im->lo.x, k & 2 ? im->hi.y : im->lo.y,
+                               k & 4 ? im->hi.z : im->lo.z});
         }
     }
     return out;

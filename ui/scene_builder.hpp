@@ -16,8 +16,8 @@ namespace isoparm::ui {
 glm::vec4 to_vec4(const doc::Rgba& c);
 
 struct SceneStyle {
-    float scale = 1;           // line widths and point sizes (HiDPI, presentation)
-    int guide_axis = -1;       // an axis-constrained drag shows its axis through guide_point
+    float scale = 1;     // line widths and point sizes (HiDPI, presentation)
+    int guide_axis = -1; // an axis-constrained drag shows its axis through guide_point
     glm::dvec3 guide_point{0};
 };
 

@@ -17,7 +17,9 @@ std::string config_dir_from(const char* xdg, const char* home) {
     return {};
 }
 
-std::string config_dir() { return config_dir_from(std::getenv("XDG_CONFIG_HOME"), std::getenv("HOME")); }
+std::string config_dir() {
+    return config_dir_from(std::getenv("XDG_CONFIG_HOME"), std::getenv("HOME"));
+}
 
 std::string settings_path() {
     const std::string dir = config_dir();

@@ -22,8 +22,8 @@ struct Settings {
 // The directory from the environment values (either may be null or empty); "" when neither
 // is set, in which case nothing is remembered.
 std::string config_dir_from(const char* xdg_config_home, const char* home);
-std::string config_dir();               // from the real environment
-std::string settings_path();            // config_dir() + "/settings.json", or ""
+std::string config_dir();    // from the real environment
+std::string settings_path(); // config_dir() + "/settings.json", or ""
 
 nlohmann::json settings_to_json(const Settings& s);
 // Tolerant: a missing or wrong value keeps its default (settings must never stop start-up).

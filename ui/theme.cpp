@@ -18,7 +18,8 @@ void apply_theme(bool presentation, float scale) {
         c[ImGuiCol_PopupBg] = ImVec4(1, 1, 1, 1);
         c[ImGuiCol_Border] = ImVec4(0, 0, 0, 1);
         c[ImGuiCol_FrameBg] = ImVec4(0.9f, 0.9f, 0.9f, 1);
-        c[ImGuiCol_TitleBg] = ImVec4(0.82f, 0.82f, 0.82f, 1); // title text is Text: keep it dark on light
+        c[ImGuiCol_TitleBg] =
+            ImVec4(0.82f, 0.82f, 0.82f, 1); // title text is Text: keep it dark on light
         c[ImGuiCol_TitleBgActive] = ImVec4(0.70f, 0.80f, 1.0f, 1);
         c[ImGuiCol_MenuBarBg] = ImVec4(0.92f, 0.92f, 0.92f, 1);
         c[ImGuiCol_SliderGrab] = ImVec4(0, 0.3f, 0.8f, 1);

@@ -23,21 +23,21 @@ enum class ViewMode { workstation, view3d_only };
 // A gesture in the 3D view, from mouse press to release.
 struct ViewDrag {
     enum class Kind { none, orbit, pan, point } kind = Kind::none;
-    PointRef point;           // the control point being dragged
-    glm::dvec3 start{0};      // its position when the drag began
+    PointRef point;      // the control point being dragged
+    glm::dvec3 start{0}; // its position when the drag began
     glm::dvec2 start_mouse{0};
-    int axis = -1;            // -1: in the view plane; 0/1/2: constrained to x/y/z
+    int axis = -1; // -1: in the view plane; 0/1/2: constrained to x/y/z
     bool moved = false;
 };
 
 // The paper's sliders below the 3D view: spring-loaded, each drag is one transform.
 struct TransformSliders {
-    float move[3] = {0, 0, 0};   // world units along x, y, z (relative to the drag start)
+    float move[3] = {0, 0, 0};   // along x, y, z in scene sizes (relative to the press)
     float rotate[3] = {0, 0, 0}; // degrees about x, y, z through the pivot
     int active = -1;             // which slider is held (0..5), -1 none
     float applied = 0;           // the part of the held slider's value already applied
     glm::dvec3 pivot{0};
-    double scale = 1;            // world units per slider unit, fixed for the gesture
+    double scale = 1; // world units per slider unit, fixed for the gesture
 };
 
 // The control-point panel's planes keep their framing while a disk is dragged, so the
@@ -87,7 +87,7 @@ struct KeyPress {
 
 struct UiState {
     Camera camera;
-    double fit_distance = 6; // camera distance of the last fit (zoom 100%)
+    double fit_distance = 6;      // camera distance of the last fit (zoom 100%)
     bool camera_needs_fit = true; // fit once the view's size is known
     ViewMode view_mode = ViewMode::workstation;
     bool headless = false;     // deterministic frames: no timings, no settings
@@ -97,7 +97,7 @@ struct UiState {
 
     Layout layout;
     LayoutInput layout_input;
-    Rect view_rect;                  // the 3D image, in ImGui pixels
+    Rect view_rect; // the 3D image, in ImGui pixels
     int view_fb_width = 1, view_fb_height = 1;
     ViewDrag drag;
     TransformSliders sliders;

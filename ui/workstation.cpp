@@ -18,9 +18,9 @@ namespace isoparm::ui {
 
 namespace {
 
-constexpr ImGuiWindowFlags panel_flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                                         ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
-                                         ImGuiWindowFlags_NoBringToFrontOnFocus;
+constexpr ImGuiWindowFlags panel_flags =
+    ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
 
 bool begin_panel(const char* name, const Rect& r, ImGuiWindowFlags extra = 0) {
     ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
@@ -55,16 +55,18 @@ Workstation::~Workstation() {
     ImGui::DestroyContext();
 }
 
-std::string Workstation::renderer_error() const { return renderer_->error(); }
+std::string Workstation::renderer_error() const {
+    return renderer_->error();
+}
 
 void Workstation::splitters() {
     UiState& ui = ctx_.ui;
     // No background: the frame is cleared anyway, and on a CPU rasteriser every full-window
     // layer costs milliseconds.
-    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
-                                   ImGuiWindowFlags_NoBackground |
-                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus |
-                                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoScrollbar;
+    const ImGuiWindowFlags flags =
+        ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoBackground |
+        ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus |
+        ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoScrollbar;
     const ImGuiViewport* vp = ImGui::GetMainViewport();
     ImGui::SetNextWindowPos(vp->Pos);
     ImGui::SetNextWindowSize(vp->Size);
@@ -78,14 +80,16 @@ void Workstation::splitters() {
         ImGui::SetCursorScreenPos(ImVec2(r.x, r.y));
         ImGui::InvisibleButton(id, ImVec2(r.w, r.h));
         const bool hot = ImGui::IsItemHovered() || ImGui::IsItemActive();
-        if (hot) ImGui::SetMouseCursor(vertical ? ImGuiMouseCursor_ResizeEW : ImGuiMouseCursor_ResizeNS);
+        if (hot)
+            ImGui::SetMouseCursor(vertical ? ImGuiMouseCursor_ResizeEW : ImGuiMouseCursor_ResizeNS);
         if (ImGui::IsItemActive()) {
             const ImVec2 d = ImGui::GetIO().MouseDelta;
             if (d.x != 0 || d.y != 0) on_drag(vertical ? d.x : d.y);
         }
         if (ImGui::IsItemDeactivated()) released = true;
         dl->AddRectFilled(ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h),
-                          ImGui::GetColorU32(hot ? ImGuiCol_SeparatorActive : ImGuiCol_Separator, hot ? 1.f : 0.35f));
+                          ImGui::GetColorU32(hot ? ImGuiCol_SeparatorActive : ImGuiCol_Separator,
+                                             hot ? 1.f : 0.35f));
     };
     LayoutPrefs& prefs = ctx_.settings.layout;
     bar("##split_left", ui.layout.left_splitter, true,
@@ -95,11 +99,14 @@ void Workstation::splitters() {
     for (std::size_t k = 0; k < ui.layout.left_row_splitters.size(); ++k) {
         ImGui::PushID(static_cast<int>(k));
         bar("##split_lrow", ui.layout.left_row_splitters[k], false, [&](float d) {
-            drag_row_splitter(prefs, ui.layout, ui.layout_input, Side::left, static_cast<int>(k), d);
+            drag_row_splitter(prefs, ui.layout, ui.layout_input, Side::left, static_cast<int>(k),
+                              d);
         });
-        bar("##split_rrow", k < ui.layout.right_row_splitters.size() ? ui.layout.right_row_splitters[k] : Rect{},
+        bar("##split_rrow",
+            k < ui.layout.right_row_splitters.size() ? ui.layout.right_row_splitters[k] : Rect{},
             false, [&](float d) {
-                drag_row_splitter(prefs, ui.layout, ui.layout_input, Side::right, static_cast<int>(k), d);
+                drag_row_splitter(prefs, ui.layout, ui.layout_input, Side::right,
+                                  static_cast<int>(k), d);
             });
         ImGui::PopID();
     }
@@ -116,6 +123,7 @@ void Workstation::layout_panels() {
     ui.layout_input.bottom = status_bar_height();
     ui.layout_input.scale = ui.scale();
     ui.layout_input.splitter = 5 * ui.scale();
+    ui.layout_input.min_center_fraction = ui.presentation ? 0.45f : 0.f;
     ui.layout = compute_layout(ctx_.settings.layout, ui.layout_input);
     const Layout& l = ui.layout;
 
@@ -126,7 +134,8 @@ void Workstation::layout_panels() {
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2, 2));
     // The 3D image covers the panel: its window background would only be overdrawn.
     if (begin_panel("Drawing", l.center,
-                    ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse | ImGuiWindowFlags_NoBackground))
+                    ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse |
+                        ImGuiWindowFlags_NoBackground))
         draw_view3d_panel(ctx_);
     ImGui::End();
     ImGui::PopStyleVar();

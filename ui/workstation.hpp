@@ -13,10 +13,10 @@ namespace isoparm::ui {
 class Renderer;
 
 struct WorkstationOptions {
-    bool headless = false;  // no timings, no settings file, deterministic
+    bool headless = false;   // no timings, no settings file, deterministic
     float content_scale = 1; // HiDPI factor
     ViewMode view = ViewMode::workstation;
-    int msaa_samples = 4;     // multisampling of the 3D view (0: none)
+    int msaa_samples = 4; // multisampling of the 3D view (0: none)
 };
 
 class Workstation {

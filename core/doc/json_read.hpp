@@ -1,5 +1,4 @@
-// Reading untrusted JSON text: a SAX builder with a depth limit, duplicate-key detection and
-// overflowing numbers kept as infinities, so the protocol can answer each with its own code.
+// Reading untrusted JSON text: depth limit, duplicate keys, overflowing numbers kept as inf.
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -1,5 +1,4 @@
-// The `deboor` op: every intermediate point of de Boor's algorithm (curve, or surface in
-// two stages: each u-row curve at u, then the column of results at v).
+// The `deboor` op: every intermediate point of de Boor's algorithm, for curves and surfaces.
 #include "core/doc/protocol_detail.hpp"
 #include "core/geom/deboor.hpp"
 #include "core/geom/validate.hpp"

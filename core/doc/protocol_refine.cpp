@@ -1,5 +1,4 @@
-// The refinement ops (insert_knot, elevate_degree, split), routed through the document's
-// command layer, the same path the workstation's menus take.
+// The refinement ops (insert_knot, elevate_degree, split) through the document's commands.
 #include <limits>
 
 #include "core/doc/command.hpp"

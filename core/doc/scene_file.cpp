@@ -5,10 +5,12 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <csignal>
 #include <fcntl.h>
 #include <filesystem>
 #include <string_view>
 #include <sys/stat.h>
+#include <sys/types.h>
 #include <unistd.h>
 
 #include "core/doc/json_read.hpp"
@@ -165,6 +167,33 @@ bool write_all(int fd, const std::string& text) {
     return true;
 }
 
+// Temporary files of saves that never finished ("<target>.tmp-<pid>" whose process no longer
+// exists: it was killed, crashed or lost power mid-save) are removed before a new save, so
+// they do not pile up beside the scene (each can be tens of MB). A temporary file whose
+// process still runs, or might (kill says anything but ESRCH), is left alone: it may be a
+// save in progress.
+void remove_stale_temporaries(const std::string& target) {
+    const std::filesystem::path t(target);
+    const std::filesystem::path dir = t.parent_path().empty() ? "." : t.parent_path();
+    const std::string prefix = t.filename().string() + ".tmp-";
+    std::error_code ec;
+    for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end;
+         it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0)
+            continue;
+        long pid = 0;
+        const char* first = name.data() + prefix.size();
+        const char* last = name.data() + name.size();
+        const auto res = std::from_chars(first, last, pid);
+        if (res.ec != std::errc() || res.ptr != last || pid <= 0 || pid == ::getpid() ||
+            pid != static_cast<pid_t>(pid))
+            continue;
+        if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
+        (void)::unlink(it->path().c_str());
+    }
+}
+
 } // namespace
 
 std::string scene_to_text(const Document& doc) {
@@ -234,6 +263,7 @@ geom::Status save_scene(const Document& doc, const std::string& path) {
         target = resolved.string();
     }
     const std::string tmp = target + ".tmp-" + std::to_string(::getpid());
+    remove_stale_temporaries(target);
 
     const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
     if (fd < 0) return io_error("create", tmp, errno);

@@ -37,8 +37,8 @@ void BM_DragStep32x32(benchmark::State& state) {
     doc::Document d = drag_scene();
     doc::History history;
     const std::uint64_t id = d.objects.front().id;
-    const auto [su, sv] = ui::display_samples(std::get<doc::SurfaceObject>(d.objects.front().shape).surface,
-                                              d.display.density);
+    const auto [su, sv] = ui::display_samples(
+        std::get<doc::SurfaceObject>(d.objects.front().shape).surface, d.display.density);
     double t = 0;
     for (auto _ : state) {
         t += 0.01;

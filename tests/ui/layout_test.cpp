@@ -134,3 +134,12 @@ TEST(Layout, SanitizeRepairsBadValues) {
     const LayoutPrefs s = sanitize(p);
     EXPECT_EQ(s, LayoutPrefs{});
 }
+
+TEST(Layout, CentreFractionWinsOverSideWidths) {
+    LayoutInput in = input(1440, 900, 1.5f);
+    in.min_center_fraction = 0.45f;
+    const Layout l = compute_layout(LayoutPrefs{}, in);
+    expect_tiles(l, in);
+    EXPECT_NEAR(l.center.w, 0.45f * (1440 - 2 * in.splitter), 1e-2);
+    EXPECT_GE(l.left[0].w, min_side_width * 1.5f);
+}

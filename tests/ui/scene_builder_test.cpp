@@ -12,9 +12,11 @@ using namespace isoparm;
 using namespace isoparm::ui;
 
 TEST(Sampling, DensityPerSpanWithinTheBudget) {
-    const geom::Surface small = doc::make_planar_grid(5, 5, 3, 3, geom::SplineType::nurbs); // 2 spans
+    const geom::Surface small =
+        doc::make_planar_grid(5, 5, 3, 3, geom::SplineType::nurbs); // 2 spans
     EXPECT_EQ(display_samples(small, 32), (std::pair<int, int>{65, 65}));
-    const geom::Surface big = doc::make_planar_grid(32, 32, 3, 3, geom::SplineType::nurbs); // 29 spans
+    const geom::Surface big =
+        doc::make_planar_grid(32, 32, 3, 3, geom::SplineType::nurbs); // 29 spans
     const auto [su, sv] = display_samples(big, 32);
     EXPECT_LE(static_cast<long>(su) * sv, max_display_vertices);
     EXPECT_GE(su, 100);
@@ -58,8 +60,10 @@ TEST(SceneBuilder, DefaultDocumentDrawsSurfaceNetPointsAndIndicator) {
     for (const PointBatch& b : scene.overlay.points) points += b.points.size();
     for (const LineBatch& l : scene.overlay.lines) net_segments += l.vertices.size() / 2;
     // Every control point plus S(u,v); at least the net's segments among the lines.
-    EXPECT_EQ(points, static_cast<std::size_t>(s->n_u * s->n_v) + (d.display.indicator_point ? 1 : 0));
-    EXPECT_GE(net_segments, static_cast<std::size_t>(s->n_u * (s->n_v - 1) + s->n_v * (s->n_u - 1)));
+    EXPECT_EQ(points,
+              static_cast<std::size_t>(s->n_u * s->n_v) + (d.display.indicator_point ? 1 : 0));
+    EXPECT_GE(net_segments,
+              static_cast<std::size_t>(s->n_u * (s->n_v - 1) + s->n_v * (s->n_u - 1)));
 }
 
 TEST(SceneBuilder, TogglesRemoveWhatTheyHide) {

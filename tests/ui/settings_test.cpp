@@ -33,7 +33,8 @@ TEST(Settings, BadValuesFallBackToDefaults) {
 }
 
 TEST(Settings, SaveThenLoadAndMissingOrBrokenFiles) {
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "isoparm_settings_test";
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / "isoparm_settings_test";
     std::filesystem::remove_all(dir);
     const std::string path = (dir / "sub" / "settings.json").string();
     EXPECT_EQ(load_settings(path), Settings{}); // missing

@@ -21,11 +21,12 @@ std::string egl_error(const char* what) {
 std::unique_ptr<EglContext> EglContext::create(std::string& error) {
     const char* exts = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
     if (!exts || !std::strstr(exts, "EGL_MESA_platform_surfaceless")) {
-        error = "EGL has no surfaceless platform (EGL_MESA_platform_surfaceless); install Mesa's EGL (libegl1-mesa)";
+        error = "EGL has no surfaceless platform (EGL_MESA_platform_surfaceless); install Mesa's "
+                "EGL (libegl1-mesa)";
         return nullptr;
     }
-    const auto get_display =
-        reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+    const auto get_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+        eglGetProcAddress("eglGetPlatformDisplayEXT"));
     if (!get_display) {
         error = "EGL lacks eglGetPlatformDisplayEXT";
         return nullptr;
@@ -42,15 +43,29 @@ std::unique_ptr<EglContext> EglContext::create(std::string& error) {
         return nullptr;
     }
     // Any configuration will do: we render into our own framebuffer objects.
-    const EGLint config_attribs[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
-                                     EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_NONE};
+    const EGLint config_attribs[] = {EGL_SURFACE_TYPE,
+                                     EGL_PBUFFER_BIT,
+                                     EGL_RENDERABLE_TYPE,
+                                     EGL_OPENGL_BIT,
+                                     EGL_RED_SIZE,
+                                     8,
+                                     EGL_GREEN_SIZE,
+                                     8,
+                                     EGL_BLUE_SIZE,
+                                     8,
+                                     EGL_NONE};
     EGLConfig config = nullptr;
     EGLint count = 0;
     if (!eglChooseConfig(dpy, config_attribs, &config, 1, &count) || count == 0) config = nullptr;
-    const EGLint context_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
-                                      EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+    const EGLint context_attribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                      3,
+                                      EGL_CONTEXT_MINOR_VERSION,
+                                      3,
+                                      EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                      EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
                                       EGL_NONE};
-    EGLContext ctx = eglCreateContext(dpy, config ? config : EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, context_attribs);
+    EGLContext ctx =
+        eglCreateContext(dpy, config ? config : EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, context_attribs);
     if (ctx == EGL_NO_CONTEXT) {
         error = egl_error("creating an OpenGL 3.3 core context");
         eglTerminate(dpy);

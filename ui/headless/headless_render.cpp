@@ -67,8 +67,9 @@ std::string render_headless(const HeadlessRequest& req) {
     std::vector<std::uint8_t> pixels(static_cast<std::size_t>(req.width) * req.height * 4);
     {
         Target target(req.width, req.height);
-        if (!target.complete()) return "cannot create a " + std::to_string(req.width) + "x" +
-                                       std::to_string(req.height) + " framebuffer";
+        if (!target.complete())
+            return "cannot create a " + std::to_string(req.width) + "x" +
+                   std::to_string(req.height) + " framebuffer";
         Workstation ws({/*headless=*/true, req.scale, req.view});
         if (!ws.renderer_error().empty()) return "shaders failed: " + ws.renderer_error();
         AppContext& ctx = ws.context();

@@ -13,7 +13,8 @@
 
 namespace isoparm::ui {
 
-std::string write_png(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgba) {
+std::string write_png(const std::string& path, int width, int height,
+                      const std::vector<std::uint8_t>& rgba) {
     if (width <= 0 || height <= 0 || rgba.size() != static_cast<std::size_t>(width) * height * 4)
         return "internal error: picture size does not match its pixels";
     // The temporary file sits beside the target so the rename stays on one file system.

@@ -21,13 +21,18 @@ namespace {
 constexpr int heat_resolution = 40;
 constexpr int curve_samples = 161;
 
-ImVec2 iv(const glm::dvec2& p) { return {static_cast<float>(p.x), static_cast<float>(p.y)}; }
+ImVec2 iv(const glm::dvec2& p) {
+    return {static_cast<float>(p.x), static_cast<float>(p.y)};
+}
 
 // A perceptually ordered ramp (dark blue, purple, orange, yellow) for t in [0, 1]; negative
 // values (negative weights) use a separate cyan ramp so the sign is never ambiguous.
 ImU32 heat_color(float t) {
-    static const float stops[5][3] = {{0.05f, 0.03f, 0.20f}, {0.35f, 0.08f, 0.50f}, {0.75f, 0.20f, 0.35f},
-                                      {0.97f, 0.55f, 0.10f}, {0.99f, 0.95f, 0.45f}};
+    static const float stops[5][3] = {{0.05f, 0.03f, 0.20f},
+                                      {0.35f, 0.08f, 0.50f},
+                                      {0.75f, 0.20f, 0.35f},
+                                      {0.97f, 0.55f, 0.10f},
+                                      {0.99f, 0.95f, 0.45f}};
     if (t < 0) {
         const float a = std::clamp(-t, 0.f, 1.f);
         return ImGui::ColorConvertFloat4ToU32(ImVec4(0.05f, 0.1f + 0.6f * a, 0.2f + 0.7f * a, 1));
@@ -43,7 +48,8 @@ ImU32 heat_color(float t) {
 // Recomputes the heat map only when the surface or the point changed.
 const HeatMapCache& heat_map(AppContext& ctx, const geom::Surface& s, int i, int j) {
     HeatMapCache& h = ctx.ui.heat;
-    if (h.valid && h.i == i && h.j == j && h.resolution == heat_resolution && same_surface(h.surface, s))
+    if (h.valid && h.i == i && h.j == j && h.resolution == heat_resolution &&
+        same_surface(h.surface, s))
         return h;
     const int r = heat_resolution;
     h.values.assign(static_cast<std::size_t>(r * r), 0.f);
@@ -89,7 +95,8 @@ void heat_canvas(AppContext& ctx, const geom::Surface& s, int i, int j, const Re
     const double v1 = clamp01(normalize_param(dv, s.knots_v[j + s.degree_v + 1]));
     dl->AddRect(iv(domain_to_pixel(sq, {u0, v1})), iv(domain_to_pixel(sq, {u1, v0})),
                 IM_COL32(255, 255, 255, 230), 0, 0, 1.5f * k);
-    dl->AddRect(ImVec2(sq.x, sq.y), ImVec2(sq.x + sq.w, sq.y + sq.h), ImGui::GetColorU32(ImGuiCol_Border), 0, 0, k);
+    dl->AddRect(ImVec2(sq.x, sq.y), ImVec2(sq.x + sq.w, sq.y + sq.h),
+                ImGui::GetColorU32(ImGuiCol_Border), 0, 0, k);
     // The indicator.
     const doc::Rgba& ic = ctx.doc.colors.indicator;
     const ImVec2 p = iv(domain_to_pixel(sq, ctx.doc.indicator));
@@ -98,7 +105,8 @@ void heat_canvas(AppContext& ctx, const geom::Surface& s, int i, int j, const Re
     ImGui::SetCursorScreenPos(ImVec2(sq.x, sq.y));
     ImGui::InvisibleButton("##heat", ImVec2(sq.w, sq.h));
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Support of %s (white box); max %.3g", point_name('R', i, j, s.n_u, s.n_v).c_str(), h.max_value);
+        ImGui::SetTooltip("Support of %s (white box); max %.3g",
+                          point_name('R', i, j, s.n_u, s.n_v).c_str(), h.max_value);
     // Pressing in the map moves the indicator, as in the tracing panel.
     if (ImGui::IsItemActive()) {
         const ImVec2 m = ImGui::GetIO().MousePos;
@@ -121,7 +129,8 @@ void basis_curves(const AppContext& ctx, const geom::Knots& U, int p, int n, int
     for (double x : ts) values.push_back(geom::all_basis(U, p, n, x)[0]);
     const float top = box.y + 4 * k, h = box.h - 8 * k;
     auto pt = [&](std::size_t sample, double y) {
-        return ImVec2(box.x + box.w * static_cast<float>(sample) / static_cast<float>(ts.size() - 1),
+        return ImVec2(box.x +
+                          box.w * static_cast<float>(sample) / static_cast<float>(ts.size() - 1),
                       top + h * (1.f - static_cast<float>(y)));
     };
     const ImU32 faint = light ? IM_COL32(160, 160, 160, 255) : IM_COL32(110, 115, 135, 255);
@@ -129,7 +138,8 @@ void basis_curves(const AppContext& ctx, const geom::Knots& U, int p, int n, int
     const ImU32 strong = ImGui::ColorConvertFloat4ToU32(ImVec4(sc.r, sc.g, sc.b, 1));
     std::vector<ImVec2> line(ts.size());
     auto curve = [&](int f, ImU32 color, float width) {
-        for (std::size_t s = 0; s < ts.size(); ++s) line[s] = pt(s, values[s][static_cast<std::size_t>(f)]);
+        for (std::size_t s = 0; s < ts.size(); ++s)
+            line[s] = pt(s, values[s][static_cast<std::size_t>(f)]);
         dl->AddPolyline(line.data(), static_cast<int>(line.size()), color, 0, width);
     };
     for (int f = 0; f < n; ++f)
@@ -137,9 +147,12 @@ void basis_curves(const AppContext& ctx, const geom::Knots& U, int p, int n, int
     if (index >= 0) curve(index, strong, 2.5f * k);
     const doc::Rgba& ic = ctx.doc.colors.indicator;
     const float x = box.x + box.w * static_cast<float>(normalize_param(d, t));
-    dl->AddLine(ImVec2(x, box.y), ImVec2(x, box.y + box.h), ImGui::ColorConvertFloat4ToU32(ImVec4(ic.r, ic.g, ic.b, 0.9f)), 1.5f * k);
-    dl->AddText(ImVec2(box.x + 4 * k, box.y + 2 * k), ImGui::GetColorU32(ImGuiCol_TextDisabled), name);
-    dl->AddRect(ImVec2(box.x, box.y), ImVec2(box.x + box.w, box.y + box.h), ImGui::GetColorU32(ImGuiCol_Border), 0, 0, k);
+    dl->AddLine(ImVec2(x, box.y), ImVec2(x, box.y + box.h),
+                ImGui::ColorConvertFloat4ToU32(ImVec4(ic.r, ic.g, ic.b, 0.9f)), 1.5f * k);
+    dl->AddText(ImVec2(box.x + 4 * k, box.y + 2 * k), ImGui::GetColorU32(ImGuiCol_TextDisabled),
+                name);
+    dl->AddRect(ImVec2(box.x, box.y), ImVec2(box.x + box.w, box.y + box.h),
+                ImGui::GetColorU32(ImGuiCol_Border), 0, 0, k);
 }
 
 } // namespace
@@ -162,7 +175,8 @@ void draw_basis_plot_panel(AppContext& ctx) {
     bool exists = true;
     for (int a = 0; a <= s->degree_u && exists; ++a)
         for (int b = 0; b <= s->degree_v; ++b) {
-            const auto r = geom::rational_basis_ij(*s, bu.first_index + a, bv.first_index + b, uv.x, uv.y);
+            const auto r =
+                geom::rational_basis_ij(*s, bu.first_index + a, bv.first_index + b, uv.x, uv.y);
             if (!r) {
                 exists = false;
                 break;
@@ -175,17 +189,22 @@ void draw_basis_plot_panel(AppContext& ctx) {
         const std::vector<double> nu = geom::all_basis(s->knots_u, s->degree_u, s->n_u, uv.x)[0];
         const std::vector<double> nv = geom::all_basis(s->knots_v, s->degree_v, s->n_v, uv.y)[0];
         const std::string rn = point_name('R', i, j, s->n_u, s->n_v);
-        if (r) ImGui::Text("%s(%.3f, %.3f) = %.5f", rn.c_str(), uv.x, uv.y, *r);
-        else ImGui::Text("%s(%.3f, %.3f) undefined (zero denominator)", rn.c_str(), uv.x, uv.y);
+        if (r)
+            ImGui::Text("%s(%.3f, %.3f) = %.5f", rn.c_str(), uv.x, uv.y, *r);
+        else
+            ImGui::Text("%s(%.3f, %.3f) undefined (zero denominator)", rn.c_str(), uv.x, uv.y);
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-        ImGui::TextWrapped("N%d(u) = %.4f   N%d(v) = %.4f   w = %.4g", i, nu[static_cast<std::size_t>(i)], j,
-                           nv[static_cast<std::size_t>(j)], s->weight(i, j));
+        ImGui::TextWrapped("N%d(u) = %.4f   N%d(v) = %.4f   w = %.4g", i,
+                           nu[static_cast<std::size_t>(i)], j, nv[static_cast<std::size_t>(j)],
+                           s->weight(i, j));
         ImGui::PopStyleColor();
     } else {
         ImGui::TextWrapped("Select a control point to see its basis function.");
     }
-    if (exists) ImGui::TextDisabled("Sum of all R_kl at (u,v) = %.6f", sum);
-    else ImGui::TextDisabled("S(u,v) does not exist here (zero denominator)");
+    if (exists)
+        ImGui::TextDisabled("Sum of all R_kl at (u,v) = %.6f", sum);
+    else
+        ImGui::TextDisabled("S(u,v) does not exist here (zero denominator)");
 
     const float k = ctx.ui.scale();
     const ImVec2 avail = ImGui::GetContentRegionAvail();
@@ -201,11 +220,14 @@ void draw_basis_plot_panel(AppContext& ctx) {
                                             ImGui::GetColorU32(ImGuiCol_Border));
     }
     const float y = origin.y + side + spacing;
-    const std::string nu_name = point ? "N" + std::to_string(i) + "(u), degree " + std::to_string(s->degree_u)
-                                      : "N_k(u), degree " + std::to_string(s->degree_u);
-    const std::string nv_name = point ? "N" + std::to_string(j) + "(v), degree " + std::to_string(s->degree_v)
-                                      : "N_k(v), degree " + std::to_string(s->degree_v);
-    basis_curves(ctx, s->knots_u, s->degree_u, s->n_u, i, uv.x, nu_name.c_str(), {origin.x, y, avail.x, curve_h});
+    const std::string nu_name =
+        point ? "N" + std::to_string(i) + "(u), degree " + std::to_string(s->degree_u)
+              : "N_k(u), degree " + std::to_string(s->degree_u);
+    const std::string nv_name =
+        point ? "N" + std::to_string(j) + "(v), degree " + std::to_string(s->degree_v)
+              : "N_k(v), degree " + std::to_string(s->degree_v);
+    basis_curves(ctx, s->knots_u, s->degree_u, s->n_u, i, uv.x, nu_name.c_str(),
+                 {origin.x, y, avail.x, curve_h});
     basis_curves(ctx, s->knots_v, s->degree_v, s->n_v, j, uv.y, nv_name.c_str(),
                  {origin.x, y + curve_h + spacing, avail.x, curve_h});
     // Tell ImGui how far the drawing went (for scrolling in a very small panel).

@@ -80,7 +80,8 @@ void draw_control_panel(AppContext& ctx) {
     }
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
     ImGui::SliderInt("Density", &d.density, 4, 64, "%d per span");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Tessellation samples per knot span in each direction");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Tessellation samples per knot span in each direction");
 }
 
 } // namespace isoparm::ui

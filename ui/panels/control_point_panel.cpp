@@ -1,10 +1,10 @@
 // The control-point panel: for the selected point, three planes (xy, xz, yz) where its
 // disk is dragged, exact coordinates, and the weight of rational types.
 #include <algorithm>
-#include <glm/common.hpp>
-#include <glm/geometric.hpp>
 #include <cmath>
 #include <cstdio>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <imgui.h>
 #include <string>
 #include <vector>
@@ -18,7 +18,9 @@ namespace isoparm::ui {
 
 namespace {
 
-ImVec2 iv(const glm::dvec2& p) { return {static_cast<float>(p.x), static_cast<float>(p.y)}; }
+ImVec2 iv(const glm::dvec2& p) {
+    return {static_cast<float>(p.x), static_cast<float>(p.y)};
+}
 ImU32 u32(const doc::Rgba& c, float alpha = 1) {
     return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, alpha));
 }
@@ -90,8 +92,10 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const geom::Surface& 
     // World axes through the origin, when in view.
     const glm::dvec2 o = plane_to_pixel(map, {0, 0});
     const ImU32 axis_col = light ? IM_COL32(150, 150, 150, 255) : IM_COL32(80, 84, 96, 255);
-    dl->AddLine(ImVec2(a.x, static_cast<float>(o.y)), ImVec2(b.x, static_cast<float>(o.y)), axis_col);
-    dl->AddLine(ImVec2(static_cast<float>(o.x), a.y), ImVec2(static_cast<float>(o.x), b.y), axis_col);
+    dl->AddLine(ImVec2(a.x, static_cast<float>(o.y)), ImVec2(b.x, static_cast<float>(o.y)),
+                axis_col);
+    dl->AddLine(ImVec2(static_cast<float>(o.x), a.y), ImVec2(static_cast<float>(o.x), b.y),
+                axis_col);
     // The net, projected.
     const doc::Colors& col = ctx.doc.colors;
     auto px = [&](int i, int j) {
@@ -114,17 +118,22 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const geom::Surface& 
     // Dots only while they stay readable; a dense net is clearer as lines alone.
     if (s.n_u * s.n_v <= 144)
         for (int i = 0; i < s.n_u; ++i)
-            for (int j = 0; j < s.n_v; ++j) dl->AddCircleFilled(px(i, j), 2.5f * k, u32(col.control_points, 0.8f), 8);
+            for (int j = 0; j < s.n_v; ++j)
+                dl->AddCircleFilled(px(i, j), 2.5f * k, u32(col.control_points, 0.8f), 8);
     const bool active = pd.plane == plane;
     dl->AddCircleFilled(iv(disk), disk_r, u32(col.selected_point), 20);
-    dl->AddCircle(iv(disk), disk_r, active || hovered ? IM_COL32(255, 255, 255, 255) : IM_COL32(0, 0, 0, 255), 20, 1.5f * k);
+    dl->AddCircle(iv(disk), disk_r,
+                  active || hovered ? IM_COL32(255, 255, 255, 255) : IM_COL32(0, 0, 0, 255), 20,
+                  1.5f * k);
     dl->PopClipRect();
     dl->AddRect(a, b, light ? IM_COL32(0, 0, 0, 255) : IM_COL32(110, 115, 130, 255), 0, 0, 1 * k);
     // Axis names: horizontal bottom-right, vertical top-left.
     const char names[3] = {'x', 'y', 'z'};
     const char h[2] = {names[ax.a], 0}, v[2] = {names[ax.b], 0};
     const ImU32 tc = ImGui::GetColorU32(ImGuiCol_Text);
-    dl->AddText(ImVec2(b.x - ImGui::CalcTextSize(h).x - 4 * k, b.y - ImGui::GetTextLineHeight() - 2 * k), tc, h);
+    dl->AddText(
+        ImVec2(b.x - ImGui::CalcTextSize(h).x - 4 * k, b.y - ImGui::GetTextLineHeight() - 2 * k),
+        tc, h);
     dl->AddText(ImVec2(a.x + 4 * k, a.y + 2 * k), tc, v);
     dl->AddText(ImVec2(a.x + (canvas.w - ImGui::CalcTextSize(ax.name).x) / 2, a.y + 2 * k),
                 ImGui::GetColorU32(ImGuiCol_TextDisabled), ax.name);
@@ -141,7 +150,8 @@ void coordinate_fields(AppContext& ctx, const doc::Object& obj, const geom::Surf
         ImGui::SetNextItemWidth(std::max(w, 30.f));
         double value = p[a];
         // One value per widget: each field is one edit (and one undo step).
-        if (ImGui::InputDouble(labels[a], &value, 0, 0, "%.4f") && std::isfinite(value) && value != p[a]) {
+        if (ImGui::InputDouble(labels[a], &value, 0, 0, "%.4f") && std::isfinite(value) &&
+            value != p[a]) {
             p[a] = value;
             ctx.execute(doc::move_control_point(obj.id, i, j, p));
         }
@@ -162,17 +172,20 @@ void weight_controls(AppContext& ctx, const doc::Object& obj, const geom::Surfac
     ImGui::TextUnformatted(point_name('w', i, j, s.n_u, s.n_v).c_str());
     ImGui::SameLine();
     const float field = 90 * ctx.ui.scale();
-    ImGui::SetNextItemWidth(std::max(ImGui::GetContentRegionAvail().x - field - ImGui::GetStyle().ItemSpacing.x, 40.f));
+    ImGui::SetNextItemWidth(
+        std::max(ImGui::GetContentRegionAvail().x - field - ImGui::GetStyle().ItemSpacing.x, 40.f));
     const double lo = -2.0, hi = 6.0;
     double slider = w;
-    if (ImGui::SliderScalar("##weight", ImGuiDataType_Double, &slider, &lo, &hi, "%.3f") && slider != w)
+    if (ImGui::SliderScalar("##weight", ImGuiDataType_Double, &slider, &lo, &hi, "%.3f") &&
+        slider != w)
         ctx.execute(doc::set_weight(obj.id, i, j, slider));
     if (ImGui::IsItemDeactivated()) ctx.seal();
     ImGui::SameLine();
     ImGui::SetNextItemWidth(field);
     double typed = w;
     // Any finite value may be typed, beyond the slider's range, zero and negative included.
-    if (ImGui::InputDouble("##weight_typed", &typed, 0, 0, "%.4g") && std::isfinite(typed) && typed != w)
+    if (ImGui::InputDouble("##weight_typed", &typed, 0, 0, "%.4g") && std::isfinite(typed) &&
+        typed != w)
         ctx.execute(doc::set_weight(obj.id, i, j, typed));
     if (ImGui::IsItemDeactivatedAfterEdit()) ctx.seal();
 
@@ -223,14 +236,16 @@ void draw_control_point_panel(AppContext& ctx) {
     const float k = ctx.ui.scale();
     const float spacing = ImGui::GetStyle().ItemSpacing.x;
     const ImVec2 avail = ImGui::GetContentRegionAvail();
-    const float below = ImGui::GetFrameHeightWithSpacing() * 3 + ImGui::GetTextLineHeightWithSpacing() * 3;
+    const float below =
+        ImGui::GetFrameHeightWithSpacing() * 3 + ImGui::GetTextLineHeightWithSpacing() * 3;
     // The arrangement (3 in a row, 2 + 1, or a column) that gives the largest planes.
     int cols = 3;
     float side = 0;
     for (int c = 1; c <= 3; ++c) {
         const int r = (3 + c - 1) / c;
-        const float s = std::min((avail.x - spacing * static_cast<float>(c - 1)) / static_cast<float>(c),
-                                 (avail.y - below) / static_cast<float>(r) - spacing);
+        const float s =
+            std::min((avail.x - spacing * static_cast<float>(c - 1)) / static_cast<float>(c),
+                     (avail.y - below) / static_cast<float>(r) - spacing);
         if (s > side) {
             side = s;
             cols = c;
@@ -248,7 +263,8 @@ void draw_control_point_panel(AppContext& ctx) {
         s = obj ? surface_of(*obj) : nullptr;
         if (s && has_valid_point(ctx.doc)) plane_canvas(ctx, *obj, *s, p, canvas);
     }
-    ImGui::SetCursorScreenPos(ImVec2(origin.x, origin.y + static_cast<float>(rows) * (side + spacing)));
+    ImGui::SetCursorScreenPos(
+        ImVec2(origin.x, origin.y + static_cast<float>(rows) * (side + spacing)));
 
     // The command may have changed the document: re-read before the fields.
     obj = ctx.doc.selected();

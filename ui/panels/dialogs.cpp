@@ -20,7 +20,9 @@ namespace {
 
 const char* const type_names[] = {"Bezier", "Rational Bezier", "B-spline", "NURBS"};
 
-bool escape_pressed() { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false); }
+bool escape_pressed() {
+    return ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
+}
 
 void center_next(float w_units, float scale) {
     const ImGuiViewport* vp = ImGui::GetMainViewport();
@@ -31,15 +33,17 @@ void center_next(float w_units, float scale) {
 
 std::string new_surface_error(const NewSurfaceForm& f) {
     const bool bezier = f.type <= 1;
-    for (auto [n, p, dir] : {std::tuple{f.rows, f.degree_u, "u"}, std::tuple{f.cols, f.degree_v, "v"}}) {
+    for (auto [n, p, dir] :
+         {std::tuple{f.rows, f.degree_u, "u"}, std::tuple{f.cols, f.degree_v, "v"}}) {
         if (p < 1) return std::string("The degree in ") + dir + " must be at least 1.";
         if (n < p + 1)
-            return std::string("The degree in ") + dir + " is " + std::to_string(p) + ": it needs at least " +
-                   std::to_string(p + 1) + " control points in that direction.";
+            return std::string("The degree in ") + dir + " is " + std::to_string(p) +
+                   ": it needs at least " + std::to_string(p + 1) +
+                   " control points in that direction.";
         if (n > 64) return std::string("At most 64 control points per direction here.");
         if (bezier && n != p + 1)
-            return std::string("A Bezier surface of degree ") + std::to_string(p) + " in " + dir + " has exactly " +
-                   std::to_string(p + 1) + " points in that direction.";
+            return std::string("A Bezier surface of degree ") + std::to_string(p) + " in " + dir +
+                   " has exactly " + std::to_string(p + 1) + " points in that direction.";
     }
     return {};
 }
@@ -77,7 +81,8 @@ void new_surface_dialog(AppContext& ctx) {
     if (ImGui::Button("Create")) {
         doc::Object o;
         int n = 1;
-        for (const doc::Object& x : ctx.doc.objects) n += std::holds_alternative<doc::SurfaceObject>(x.shape) ? 1 : 0;
+        for (const doc::Object& x : ctx.doc.objects)
+            n += std::holds_alternative<doc::SurfaceObject>(x.shape) ? 1 : 0;
         o.name = "Surface " + std::to_string(n);
         o.shape = doc::SurfaceObject{doc::make_planar_grid(f.rows, f.cols, f.degree_u, f.degree_v,
                                                            static_cast<geom::SplineType>(f.type))};
@@ -195,8 +200,10 @@ void unsaved_dialog(AppContext& ctx) {
         ctx.ui.confirm_unsaved = false;
     }
     center_next(0, ctx.ui.scale());
-    if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-    const std::string name = ctx.file_path.empty() ? "this untitled scene" : fs::path(ctx.file_path).filename().string();
+    if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
+        return;
+    const std::string name =
+        ctx.file_path.empty() ? "this untitled scene" : fs::path(ctx.file_path).filename().string();
     ImGui::Text("Save the changes to %s first?", name.c_str());
     ImGui::Spacing();
     if (ImGui::Button("Save")) {
@@ -222,7 +229,8 @@ void error_dialog(AppContext& ctx) {
         ctx.ui.show_error = false;
     }
     center_next(480, ctx.ui.scale());
-    if (!ImGui::BeginPopupModal("##error", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoTitleBar))
+    if (!ImGui::BeginPopupModal("##error", nullptr,
+                                ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoTitleBar))
         return;
     ImGui::TextUnformatted(ctx.ui.error_title.c_str());
     ImGui::Separator();
@@ -230,10 +238,10 @@ void error_dialog(AppContext& ctx) {
     ImGui::Spacing();
     // Keys count only once the dialog is up: the Enter that confirmed a file name must not
     // also dismiss the error it caused.
-    const bool key = !ImGui::IsWindowAppearing() &&
-                     (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) || escape_pressed());
-    if (ImGui::Button("OK") || key)
-        ImGui::CloseCurrentPopup();
+    const bool key =
+        !ImGui::IsWindowAppearing() &&
+        (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) || escape_pressed());
+    if (ImGui::Button("OK") || key) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
 }
 
@@ -243,7 +251,8 @@ void help_dialog(AppContext& ctx) {
         ctx.ui.show_about = false;
     }
     center_next(520, ctx.ui.scale());
-    if (!ImGui::BeginPopupModal("Mouse and keys", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    if (!ImGui::BeginPopupModal("Mouse and keys", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
+        return;
     const char* lines[] = {
         "3D view: left-drag orbits, right-drag (or Shift+left) pans, the wheel zooms.",
         "Click a control point to select it; drag it to move it in the view plane.",

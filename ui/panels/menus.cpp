@@ -78,9 +78,12 @@ void surface_menu(AppContext& ctx) {
 void display_menu(AppContext& ctx) {
     if (!ImGui::BeginMenu("Display")) return;
     doc::DisplaySettings& d = ctx.doc.display;
-    if (ImGui::MenuItem("Shaded", "1", d.style == doc::DisplayStyle::shaded)) d.style = doc::DisplayStyle::shaded;
-    if (ImGui::MenuItem("Wireframe", "2", d.style == doc::DisplayStyle::wireframe)) d.style = doc::DisplayStyle::wireframe;
-    if (ImGui::MenuItem("Shaded + wireframe", "3", d.style == doc::DisplayStyle::both)) d.style = doc::DisplayStyle::both;
+    if (ImGui::MenuItem("Shaded", "1", d.style == doc::DisplayStyle::shaded))
+        d.style = doc::DisplayStyle::shaded;
+    if (ImGui::MenuItem("Wireframe", "2", d.style == doc::DisplayStyle::wireframe))
+        d.style = doc::DisplayStyle::wireframe;
+    if (ImGui::MenuItem("Shaded + wireframe", "3", d.style == doc::DisplayStyle::both))
+        d.style = doc::DisplayStyle::both;
     ImGui::Separator();
     ImGui::MenuItem("Control points", "C", &d.control_points);
     ImGui::MenuItem("Control net", "N", &d.control_net);
@@ -89,7 +92,8 @@ void display_menu(AppContext& ctx) {
     ImGui::MenuItem("Knot curves", "K", &d.knot_curves);
     ImGui::Separator();
     if (ImGui::MenuItem("Fit to view", "F")) fit_view(ctx);
-    if (ImGui::MenuItem("Presentation mode", "F11 / P", ctx.ui.presentation)) toggle_presentation(ctx);
+    if (ImGui::MenuItem("Presentation mode", "F11 / P", ctx.ui.presentation))
+        toggle_presentation(ctx);
     ImGui::EndMenu();
 }
 
@@ -123,37 +127,71 @@ void handle_shortcuts(AppContext& ctx) {
         if (k.ctrl) {
             switch (k.key) {
             case GLFW_KEY_N:
-                if (k.shift) ctx.ui.new_surface.open = true;
-                else request_new_document(ctx);
+                if (k.shift)
+                    ctx.ui.new_surface.open = true;
+                else
+                    request_new_document(ctx);
                 break;
-            case GLFW_KEY_O: request_open_dialog(ctx); break;
+            case GLFW_KEY_O:
+                request_open_dialog(ctx);
+                break;
             case GLFW_KEY_S:
-                if (k.shift) request_save_as(ctx);
-                else save(ctx);
+                if (k.shift)
+                    request_save_as(ctx);
+                else
+                    save(ctx);
                 break;
             case GLFW_KEY_Z:
-                if (k.shift) redo(ctx);
-                else undo(ctx);
+                if (k.shift)
+                    redo(ctx);
+                else
+                    undo(ctx);
                 break;
-            case GLFW_KEY_Y: redo(ctx); break;
-            case GLFW_KEY_Q: request_quit(ctx); break;
-            default: break;
+            case GLFW_KEY_Y:
+                redo(ctx);
+                break;
+            case GLFW_KEY_Q:
+                request_quit(ctx);
+                break;
+            default:
+                break;
             }
             continue;
         }
         switch (k.key) {
-        case GLFW_KEY_F: fit_view(ctx); break;
+        case GLFW_KEY_F:
+            fit_view(ctx);
+            break;
         case GLFW_KEY_F11:
-        case GLFW_KEY_P: toggle_presentation(ctx); break;
-        case GLFW_KEY_1: d.style = doc::DisplayStyle::shaded; break;
-        case GLFW_KEY_2: d.style = doc::DisplayStyle::wireframe; break;
-        case GLFW_KEY_3: d.style = doc::DisplayStyle::both; break;
-        case GLFW_KEY_C: d.control_points = !d.control_points; break;
-        case GLFW_KEY_N: d.control_net = !d.control_net; break;
-        case GLFW_KEY_I: d.point_ids = !d.point_ids; break;
-        case GLFW_KEY_K: d.knot_curves = !d.knot_curves; break;
-        case GLFW_KEY_ESCAPE: ctx.doc.selection.i = ctx.doc.selection.j = -1; break;
-        default: break;
+        case GLFW_KEY_P:
+            toggle_presentation(ctx);
+            break;
+        case GLFW_KEY_1:
+            d.style = doc::DisplayStyle::shaded;
+            break;
+        case GLFW_KEY_2:
+            d.style = doc::DisplayStyle::wireframe;
+            break;
+        case GLFW_KEY_3:
+            d.style = doc::DisplayStyle::both;
+            break;
+        case GLFW_KEY_C:
+            d.control_points = !d.control_points;
+            break;
+        case GLFW_KEY_N:
+            d.control_net = !d.control_net;
+            break;
+        case GLFW_KEY_I:
+            d.point_ids = !d.point_ids;
+            break;
+        case GLFW_KEY_K:
+            d.knot_curves = !d.knot_curves;
+            break;
+        case GLFW_KEY_ESCAPE:
+            ctx.doc.selection.i = ctx.doc.selection.j = -1;
+            break;
+        default:
+            break;
         }
     }
 }

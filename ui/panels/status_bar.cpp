@@ -9,23 +9,28 @@
 
 namespace isoparm::ui {
 
-float status_bar_height() { return ImGui::GetFrameHeight(); }
+float status_bar_height() {
+    return ImGui::GetFrameHeight();
+}
 
 void draw_status_bar(AppContext& ctx) {
     const ImGuiViewport* vp = ImGui::GetMainViewport();
     const float h = status_bar_height();
     ImGui::SetNextWindowPos(ImVec2(vp->Pos.x, vp->Pos.y + vp->Size.y - h));
     ImGui::SetNextWindowSize(ImVec2(vp->Size.x, h));
-    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(8 * ctx.ui.scale(), 3 * ctx.ui.scale()));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding,
+                        ImVec2(8 * ctx.ui.scale(), 3 * ctx.ui.scale()));
     ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0);
-    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
-                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
-                                   ImGuiWindowFlags_NoScrollbar;
+    const ImGuiWindowFlags flags =
+        ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+        ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoScrollbar;
     ImGui::PushStyleColor(ImGuiCol_WindowBg, ImGui::GetStyleColorVec4(ImGuiCol_MenuBarBg));
     if (ImGui::Begin("##status", nullptr, flags)) {
         // Headless frames show no timings, so renders are reproducible.
-        if (ctx.ui.headless) ImGui::TextUnformatted("frame --");
-        else ImGui::Text("frame %5.1f ms", ctx.ui.frame_ms);
+        if (ctx.ui.headless)
+            ImGui::TextUnformatted("frame --");
+        else
+            ImGui::Text("frame %5.1f ms", ctx.ui.frame_ms);
         if (ctx.renderer && !ctx.ui.headless && ctx.renderer->stats().retessellated > 0) {
             ImGui::SameLine();
             ImGui::TextDisabled("(tessellate %.2f ms)", ctx.renderer->stats().tessellate_ms);
@@ -33,18 +38,22 @@ void draw_status_bar(AppContext& ctx) {
         ImGui::SameLine(0, 24 * ctx.ui.scale());
         const doc::Object* obj = nullptr;
         if (const geom::Surface* s = current_surface(ctx.doc, &obj)) {
-            ImGui::Text("%s: %s %dx%d, degree (%d,%d)", obj->name.c_str(), geom::spline_type_name(s->type), s->n_u,
-                        s->n_v, s->degree_u, s->degree_v);
+            ImGui::Text("%s: %s %dx%d, degree (%d,%d)", obj->name.c_str(),
+                        geom::spline_type_name(s->type), s->n_u, s->n_v, s->degree_u, s->degree_v);
             if (has_valid_point(ctx.doc)) {
                 ImGui::SameLine();
-                ImGui::Text("  %s", point_name('P', ctx.doc.selection.i, ctx.doc.selection.j, ctx.doc).c_str());
+                ImGui::Text(
+                    "  %s",
+                    point_name('P', ctx.doc.selection.i, ctx.doc.selection.j, ctx.doc).c_str());
             }
         } else {
             ImGui::TextUnformatted("no surface");
         }
         ImGui::SameLine(0, 24 * ctx.ui.scale());
-        if (ctx.dirty()) ImGui::TextUnformatted("* unsaved changes");
-        else ImGui::TextDisabled("saved");
+        if (ctx.dirty())
+            ImGui::TextUnformatted("* unsaved changes");
+        else
+            ImGui::TextDisabled("saved");
         if (!ctx.ui.status.empty()) {
             ImGui::SameLine(0, 24 * ctx.ui.scale());
             ImGui::TextUnformatted(ctx.ui.status.c_str());

@@ -14,7 +14,9 @@ namespace isoparm::ui {
 
 namespace {
 
-ImVec2 iv(const glm::dvec2& p) { return {static_cast<float>(p.x), static_cast<float>(p.y)}; }
+ImVec2 iv(const glm::dvec2& p) {
+    return {static_cast<float>(p.x), static_cast<float>(p.y)};
+}
 
 std::string short_number(double x) {
     char buf[32];
@@ -86,9 +88,11 @@ void draw_tracing_panel(AppContext& ctx) {
     // Room for the v labels on the left and the u labels below the square.
     const float label_w = ImGui::CalcTextSize("0.000").x + 10 * k;
     const float label_h = ImGui::GetTextLineHeight() * 2 + 8 * k;
-    const float fields_h = ImGui::GetFrameHeightWithSpacing() * 2 + ImGui::GetTextLineHeightWithSpacing() * 3;
+    const float fields_h =
+        ImGui::GetFrameHeightWithSpacing() * 2 + ImGui::GetTextLineHeightWithSpacing() * 3;
     const ImVec2 avail = ImGui::GetContentRegionAvail();
-    const float side = std::max(std::min(avail.x - label_w - 12 * k, avail.y - label_h - fields_h), 60.f * k);
+    const float side =
+        std::max(std::min(avail.x - label_w - 12 * k, avail.y - label_h - fields_h), 60.f * k);
     const ImVec2 cur = ImGui::GetCursorScreenPos();
     const Rect sq{cur.x + label_w, cur.y + 6 * k, side, side};
 
@@ -131,7 +135,8 @@ void draw_tracing_panel(AppContext& ctx) {
         if (tu[n].multiplicity > 1) {
             const std::string m = "x" + std::to_string(tu[n].multiplicity);
             const float mw = ImGui::CalcTextSize(m.c_str()).x;
-            dl->AddText(ImVec2(x - mw / 2, b.y + tick + 1 + ImGui::GetTextLineHeight()), pal.mult, m.c_str());
+            dl->AddText(ImVec2(x - mw / 2, b.y + tick + 1 + ImGui::GetTextLineHeight()), pal.mult,
+                        m.c_str());
         }
     }
     for (std::size_t n = 0; n < tv.size(); ++n) {
@@ -153,7 +158,9 @@ void draw_tracing_panel(AppContext& ctx) {
         }
     }
     dl->AddRect(a, b, pal.border, 0, 0, 1.5f * k);
-    dl->AddText(ImVec2(b.x - ImGui::CalcTextSize("u").x - 4 * k, b.y - ImGui::GetTextLineHeight() - 2 * k), pal.text, "u");
+    dl->AddText(
+        ImVec2(b.x - ImGui::CalcTextSize("u").x - 4 * k, b.y - ImGui::GetTextLineHeight() - 2 * k),
+        pal.text, "u");
     dl->AddText(ImVec2(a.x + 4 * k, a.y + 2 * k), pal.text, "v");
 
     // The indicator with its two isoparametric lines.

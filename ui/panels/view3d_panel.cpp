@@ -42,7 +42,8 @@ std::vector<Candidate> pick_candidates(const doc::Document& d) {
             for (int i = 0; i < s->n_u; ++i)
                 for (int j = 0; j < s->n_v; ++j) out.push_back({{o.id, i, j}, s->point(i, j)});
         } else if (const auto* c = std::get_if<doc::CurveObject>(&o.shape)) {
-            for (int i = 0; i < c->curve.count(); ++i) out.push_back({{o.id, i, -1}, c->curve.points[i]});
+            for (int i = 0; i < c->curve.count(); ++i)
+                out.push_back({{o.id, i, -1}, c->curve.points[i]});
         }
     }
     return out;
@@ -70,7 +71,9 @@ int held_axis_key() {
     return -1;
 }
 
-std::string point_label(int i, int j, int n_u, int n_v) { return point_name('P', i, j, n_u, n_v); }
+std::string point_label(int i, int j, int n_u, int n_v) {
+    return point_name('P', i, j, n_u, n_v);
+}
 
 void handle_mouse(AppContext& ctx, const Viewport& vp) {
     ImGuiIO& io = ImGui::GetIO();
@@ -78,7 +81,8 @@ void handle_mouse(AppContext& ctx, const Viewport& vp) {
     ViewDrag& drag = ui.drag;
     const glm::dvec2 mouse(io.MousePos.x, io.MousePos.y);
 
-    if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) zoom(ui.camera, std::pow(0.88, io.MouseWheel));
+    if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f)
+        zoom(ui.camera, std::pow(0.88, io.MouseWheel));
 
     if (ImGui::IsItemActivated()) {
         drag = {};
@@ -102,14 +106,19 @@ void handle_mouse(AppContext& ctx, const Viewport& vp) {
         const glm::dvec2 delta(io.MouseDelta.x, io.MouseDelta.y);
         if (glm::length(mouse - drag.start_mouse) > 2.0) drag.moved = true;
         switch (drag.kind) {
-        case ViewDrag::Kind::orbit: orbit(ui.camera, delta.x, delta.y); break;
-        case ViewDrag::Kind::pan: pan(ui.camera, delta.x, delta.y, vp.h); break;
+        case ViewDrag::Kind::orbit:
+            orbit(ui.camera, delta.x, delta.y);
+            break;
+        case ViewDrag::Kind::pan:
+            pan(ui.camera, delta.x, delta.y, vp.h);
+            break;
         case ViewDrag::Kind::point: {
             if (!drag.moved) break;
             // Axis: X/Y/Z held picks it; Shift locks the axis the drag started along.
             int axis = held_axis_key();
             if (axis < 0 && io.KeyShift) {
-                if (drag.axis < 0) drag.axis = dominant_axis(ui.camera, vp, drag.start, mouse - drag.start_mouse);
+                if (drag.axis < 0)
+                    drag.axis = dominant_axis(ui.camera, vp, drag.start, mouse - drag.start_mouse);
                 axis = drag.axis;
             } else if (axis >= 0) {
                 drag.axis = axis;
@@ -121,7 +130,8 @@ void handle_mouse(AppContext& ctx, const Viewport& vp) {
             ctx.execute(move_point(drag.point, p));
             break;
         }
-        case ViewDrag::Kind::none: break;
+        case ViewDrag::Kind::none:
+            break;
         }
     }
 
@@ -150,7 +160,8 @@ void draw_labels(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
             const Projected p = project(m, vp, s->point(i, j));
             if (!p.visible) continue;
             const std::string label = point_label(i, j, s->n_u, s->n_v);
-            const ImVec2 at(static_cast<float>(p.pixel.x) + off, static_cast<float>(p.pixel.y) - off * 2.4f);
+            const ImVec2 at(static_cast<float>(p.pixel.x) + off,
+                            static_cast<float>(p.pixel.y) - off * 2.4f);
             dl->AddText(ImVec2(at.x + 1, at.y + 1), shadow, label.c_str());
             dl->AddText(at, text, label.c_str());
         }
@@ -166,7 +177,8 @@ void draw_hover_ring(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) 
         const doc::Object* o = ctx.doc.find(hit->ref.object);
         const geom::Surface* s = o ? surface_of(*o) : nullptr;
         const std::string tip = point_label(hit->ref.i, hit->ref.j, s ? s->n_u : 0, s ? s->n_v : 0);
-        ImGui::SetTooltip("%s  (%.3g, %.3g, %.3g)", tip.c_str(), hit->position.x, hit->position.y, hit->position.z);
+        ImGui::SetTooltip("%s  (%.3g, %.3g, %.3g)", tip.c_str(), hit->position.x, hit->position.y,
+                          hit->position.z);
     }
 }
 
@@ -176,7 +188,8 @@ void draw_axes(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
     const ImVec2 o(static_cast<float>(vp.x) + 38 * k, static_cast<float>(vp.y + vp.h) - 38 * k);
     const glm::dvec3 right = camera_right(ctx.ui.camera), up = camera_up(ctx.ui.camera);
     const char* names[3] = {"x", "y", "z"};
-    const ImU32 colors[3] = {IM_COL32(240, 80, 80, 255), IM_COL32(90, 215, 90, 255), IM_COL32(90, 140, 255, 255)};
+    const ImU32 colors[3] = {IM_COL32(240, 80, 80, 255), IM_COL32(90, 215, 90, 255),
+                             IM_COL32(90, 140, 255, 255)};
     for (int a = 0; a < 3; ++a) {
         glm::dvec3 e(0);
         e[a] = 1;
@@ -189,15 +202,16 @@ void draw_axes(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
 
 void draw_help_line(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
     if (ctx.ui.presentation) return;
-    const char* help = "drag: orbit  right-drag: pan  wheel: zoom  click a point to select, drag to move "
-                       "(hold X/Y/Z: along an axis)";
+    const char* help = "drag: orbit   right-drag: pan   wheel: zoom   click or drag a point "
+                       "(X/Y/Z: along an axis)";
     dl->AddText(ImVec2(static_cast<float>(vp.x) + 8, static_cast<float>(vp.y) + 6),
                 IM_COL32(220, 220, 220, 150), help);
 }
 
 // Rows the slider strip needs: one when the panel is wide enough for all controls.
 int slider_rows(float width, float scale) {
-    const float labels = ImGui::CalcTextSize("Move Rotate Zoom Fit").x + ImGui::GetStyle().ItemSpacing.x * 10;
+    const float labels =
+        ImGui::CalcTextSize("Move Rotate Zoom Fit").x + ImGui::GetStyle().ItemSpacing.x * 10;
     return width >= labels + 7.5f * 64 * scale ? 1 : 2;
 }
 
@@ -214,12 +228,17 @@ void transform_slider(AppContext& ctx, int k, float width) {
     float* value = k < 3 ? &sl.move[a] : &sl.rotate[a];
     const bool held = sl.active == k;
     ImGui::SetNextItemWidth(width);
-    // Idle sliders show just their axis; a held one shows its offset.
-    if (k < 3) ImGui::SliderFloat(ids[k], value, -1.f, 1.f, held ? "%+.2f" : axis_names[a]);
-    else ImGui::SliderFloat(ids[k], value, -180.f, 180.f, held ? "%+.0f deg" : axis_names[a]);
+    // A jog control: dragging left or right changes the offset from the press (a slider
+    // would jump to wherever it was clicked). Idle, it shows its axis; held, the offset.
+    // Move: 1/400 of the scene per pixel; rotate: half a degree per pixel.
+    if (k < 3)
+        ImGui::DragFloat(ids[k], value, static_cast<float>(1.0 / 400.0), 0.f, 0.f,
+                         held ? "%+.3f" : axis_names[a]);
+    else
+        ImGui::DragFloat(ids[k], value, 0.5f, 0.f, 0.f, held ? "%+.1f deg" : axis_names[a]);
     if (ImGui::IsItemHovered() && !held)
-        ImGui::SetTooltip(k < 3 ? "Drag to move the selected surface along %s"
-                                : "Drag to rotate the selected surface about %s",
+        ImGui::SetTooltip(k < 3 ? "Drag left or right to move the selected surface along %s"
+                                : "Drag left or right to rotate the selected surface about %s",
                           axis_names[a]);
     if (ImGui::IsItemActivated() && id != 0) {
         sl.active = k;
@@ -244,7 +263,8 @@ void transform_slider(AppContext& ctx, int k, float width) {
         } else {
             glm::dvec3 axis(0);
             axis[a] = 1;
-            m = glm::translate(glm::dmat4(1.0), sl.pivot) * glm::rotate(glm::dmat4(1.0), glm::radians(delta), axis) *
+            m = glm::translate(glm::dmat4(1.0), sl.pivot) *
+                glm::rotate(glm::dmat4(1.0), glm::radians(delta), axis) *
                 glm::translate(glm::dmat4(1.0), -sl.pivot);
         }
         if (ctx.execute(doc::transform_object(id, m))) sl.applied = *value;
@@ -265,7 +285,8 @@ void draw_sliders(AppContext& ctx, int rows) {
     const float avail = ImGui::GetContentRegionAvail().x;
     const float label_w = rows == 1 ? 0.f : ImGui::CalcTextSize("Rotate").x;
     const float fixed = ImGui::CalcTextSize(rows == 1 ? "Move Rotate Zoom Fit" : "Rotate Zoom").x +
-                        ImGui::CalcTextSize("Fit").x + st.FramePadding.x * 2 + st.ItemSpacing.x * (rows == 1 ? 11 : 7);
+                        ImGui::CalcTextSize("Fit").x + st.FramePadding.x * 2 +
+                        st.ItemSpacing.x * (rows == 1 ? 11 : 7);
     const float w = std::max((avail - fixed) / (rows == 1 ? 7.5f : 4.5f), 20.f);
     const bool none = ctx.doc.selected() == nullptr;
 
@@ -280,7 +301,8 @@ void draw_sliders(AppContext& ctx, int rows) {
         ImGui::SetNextItemWidth(w * 1.5f);
         // Zoom relative to the last fit, on a log scale (the wheel changes the same value).
         float pct = static_cast<float>(100.0 * ui.fit_distance / ui.camera.distance);
-        if (ImGui::SliderFloat("##zoom", &pct, 10.f, 1000.f, "%.0f%%", ImGuiSliderFlags_Logarithmic))
+        if (ImGui::SliderFloat("##zoom", &pct, 10.f, 1000.f, "%.0f%%",
+                               ImGuiSliderFlags_Logarithmic))
             ui.camera.distance = ui.fit_distance / (std::max(pct, 1.f) / 100.0);
     };
 
@@ -319,7 +341,9 @@ void draw_view3d_panel(AppContext& ctx) {
     const bool bare = ui.view_mode == ViewMode::view3d_only;
     ImVec2 avail = ImGui::GetContentRegionAvail();
     const int rows = bare ? 0 : slider_rows(avail.x, ui.scale());
-    if (!bare) avail.y -= ImGui::GetFrameHeightWithSpacing() * static_cast<float>(rows) + ImGui::GetStyle().ItemSpacing.y;
+    if (!bare)
+        avail.y -= ImGui::GetFrameHeightWithSpacing() * static_cast<float>(rows) +
+                   ImGui::GetStyle().ItemSpacing.y;
     avail.x = std::max(avail.x, 16.f);
     avail.y = std::max(avail.y, 16.f);
     const ImVec2 p0 = ImGui::GetCursorScreenPos();
@@ -340,7 +364,8 @@ void draw_view3d_panel(AppContext& ctx) {
 
     ImDrawList* dl = ImGui::GetWindowDrawList();
     if (ctx.renderer) {
-        const auto tex = reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(ctx.renderer->texture()));
+        const auto tex =
+            reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(ctx.renderer->texture()));
         // The texture's first row is the bottom of the picture (OpenGL), hence the flipped v.
         dl->AddImage(tex, p0, ImVec2(p0.x + avail.x, p0.y + avail.y), ImVec2(0, 1), ImVec2(1, 0));
     }

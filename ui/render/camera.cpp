@@ -3,11 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
+#include <limits>
 
 namespace isoparm::ui {
 
@@ -21,12 +21,18 @@ glm::dvec3 unit_offset(const Camera& c) {
 }
 } // namespace
 
-glm::dvec3 camera_eye(const Camera& c) { return c.target + c.distance * unit_offset(c); }
-glm::dvec3 camera_forward(const Camera& c) { return -unit_offset(c); }
+glm::dvec3 camera_eye(const Camera& c) {
+    return c.target + c.distance * unit_offset(c);
+}
+glm::dvec3 camera_forward(const Camera& c) {
+    return -unit_offset(c);
+}
 glm::dvec3 camera_right(const Camera& c) {
     return glm::normalize(glm::cross(camera_forward(c), glm::dvec3(0, 0, 1)));
 }
-glm::dvec3 camera_up(const Camera& c) { return glm::cross(camera_right(c), camera_forward(c)); }
+glm::dvec3 camera_up(const Camera& c) {
+    return glm::cross(camera_right(c), camera_forward(c));
+}
 
 glm::dmat4 view_matrix(const Camera& c) {
     return glm::lookAt(camera_eye(c), c.target, glm::dvec3(0, 0, 1));
@@ -107,7 +113,8 @@ void fit_to_points(Camera& c, const std::vector<glm::dvec3>& points, double aspe
         c.distance *= size / 0.9;
     }
     const Extent e = measure();
-    const bool inside = e.ok && e.lo.x >= -0.97 && e.lo.y >= -0.97 && e.hi.x <= 0.97 && e.hi.y <= 0.97;
+    const bool inside =
+        e.ok && e.lo.x >= -0.97 && e.lo.y >= -0.97 && e.hi.x <= 0.97 && e.hi.y <= 0.97;
     if (!inside) c = safe;
 }
 
@@ -159,8 +166,8 @@ glm::dvec3 drag_in_view_plane(const Camera& c, const Viewport& vp, const glm::dv
     return hit ? *hit : start;
 }
 
-glm::dvec3 drag_along_axis(const Camera& c, const Viewport& vp, const glm::dvec3& start,
-                           int axis, const glm::dvec2& pixel) {
+glm::dvec3 drag_along_axis(const Camera& c, const Viewport& vp, const glm::dvec3& start, int axis,
+                           const glm::dvec2& pixel) {
     glm::dvec3 d(0.0);
     d[axis] = 1.0;
     const auto hit = closest_on_line(pixel_ray(c, vp, pixel), start, d);

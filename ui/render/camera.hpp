@@ -19,9 +19,9 @@ struct Viewport {
 struct Camera {
     glm::dvec3 target{0, 0, 0};
     double distance = 6.0;
-    double yaw = -0.95;      // radians
-    double pitch = 0.55;     // radians, kept inside (-pi/2, pi/2)
-    double fov_y = 0.6109;   // 35 degrees
+    double yaw = -0.95;    // radians
+    double pitch = 0.55;   // radians, kept inside (-pi/2, pi/2)
+    double fov_y = 0.6109; // 35 degrees
 };
 
 glm::dvec3 camera_eye(const Camera& c);
@@ -67,8 +67,8 @@ std::optional<glm::dvec3> closest_on_line(const Ray& r, const glm::dvec3& point,
 // `axis` (0 = x, 1 = y, 2 = z) through `start`. Returns `start` when undefined.
 glm::dvec3 drag_in_view_plane(const Camera& c, const Viewport& vp, const glm::dvec3& start,
                               const glm::dvec2& pixel);
-glm::dvec3 drag_along_axis(const Camera& c, const Viewport& vp, const glm::dvec3& start,
-                           int axis, const glm::dvec2& pixel);
+glm::dvec3 drag_along_axis(const Camera& c, const Viewport& vp, const glm::dvec3& start, int axis,
+                           const glm::dvec2& pixel);
 // The world axis whose on-screen direction at `p` best matches the drag `screen_delta`.
 int dominant_axis(const Camera& c, const Viewport& vp, const glm::dvec3& p,
                   const glm::dvec2& screen_delta);

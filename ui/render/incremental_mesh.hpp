@@ -17,9 +17,9 @@ namespace isoparm::ui {
 
 // What the last update changed, for the GPU upload.
 struct MeshChange {
-    bool any = false;        // nothing to upload when false
-    bool topology = false;   // triangles (and wireframe) must be rebuilt too
-    int first_vertex = 0;    // the changed vertices: [first_vertex, first_vertex + count)
+    bool any = false;      // nothing to upload when false
+    bool topology = false; // triangles (and wireframe) must be rebuilt too
+    int first_vertex = 0;  // the changed vertices: [first_vertex, first_vertex + count)
     int vertex_count = 0;
 };
 
@@ -67,9 +67,10 @@ public:
 
 private:
     bool same_layout(const geom::Surface& s) const {
-        return s.type == source_.type && s.degree_u == source_.degree_u && s.degree_v == source_.degree_v &&
-               s.n_u == source_.n_u && s.n_v == source_.n_v && s.knots_u == source_.knots_u &&
-               s.knots_v == source_.knots_v && s.points.size() == source_.points.size() &&
+        return s.type == source_.type && s.degree_u == source_.degree_u &&
+               s.degree_v == source_.degree_v && s.n_u == source_.n_u && s.n_v == source_.n_v &&
+               s.knots_u == source_.knots_u && s.knots_v == source_.knots_v &&
+               s.points.size() == source_.points.size() &&
                s.weights.size() == source_.weights.size();
     }
     // The control points whose position or weight differs from the last build (exactly).

@@ -7,8 +7,8 @@ namespace isoparm::ui {
 
 bool same_surface(const geom::Surface& a, const geom::Surface& b) {
     return a.type == b.type && a.degree_u == b.degree_u && a.degree_v == b.degree_v &&
-           a.n_u == b.n_u && a.n_v == b.n_v && a.knots_u == b.knots_u &&
-           a.knots_v == b.knots_v && a.points == b.points && a.weights == b.weights;
+           a.n_u == b.n_u && a.n_v == b.n_v && a.knots_u == b.knots_u && a.knots_v == b.knots_v &&
+           a.points == b.points && a.weights == b.weights;
 }
 
 std::vector<std::uint32_t> wire_indices(int su, int sv, const std::vector<std::uint8_t>& exists,
@@ -39,14 +39,15 @@ std::vector<std::uint32_t> wire_indices(int su, int sv, const std::vector<std::u
 
 std::vector<float> interleave(const geom::Mesh& mesh, std::size_t first, std::size_t count) {
     std::vector<float> v;
-    const std::size_t end = first + std::min(count, mesh.positions.size() - std::min(first, mesh.positions.size()));
+    const std::size_t end =
+        first + std::min(count, mesh.positions.size() - std::min(first, mesh.positions.size()));
     v.reserve((end - std::min(first, end)) * 6);
     for (std::size_t k = first; k < end; ++k) {
         const glm::dvec3& p = mesh.positions[k];
         const glm::dvec3 n = k < mesh.normals.size() ? mesh.normals[k] : glm::dvec3(0, 0, 1);
-        v.insert(v.end(), {static_cast<float>(p.x), static_cast<float>(p.y),
-                           static_cast<float>(p.z), static_cast<float>(n.x),
-                           static_cast<float>(n.y), static_cast<float>(n.z)});
+        v.insert(v.end(),
+                 {static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z),
+                  static_cast<float>(n.x), static_cast<float>(n.y), static_cast<float>(n.z)});
     }
     return v;
 }

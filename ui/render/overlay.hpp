@@ -22,8 +22,8 @@ struct LineBatch {
 struct PointBatch {
     std::vector<OverlayVertex> points;
     float size_px = 9.f;
-    bool sphere = false;  // shaded as a small sphere (S(u,v), de Boor results)
-    bool on_top = false;  // ignore depth (always visible)
+    bool sphere = false; // shaded as a small sphere (S(u,v), de Boor results)
+    bool on_top = false; // ignore depth (always visible)
 };
 
 struct Overlay {

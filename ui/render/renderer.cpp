@@ -40,7 +40,8 @@ struct MeshEntry {
         glEnableVertexAttribArray(0);
         glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), nullptr);
         glEnableVertexAttribArray(1);
-        glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), reinterpret_cast<void*>(3 * sizeof(float)));
+        glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float),
+                              reinterpret_cast<void*>(3 * sizeof(float)));
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, tri_ibo);
         glBindVertexArray(wire_vao);
         glBindBuffer(GL_ARRAY_BUFFER, vbo);
@@ -121,33 +122,39 @@ struct Renderer::Impl {
         const MeshChange change = m.mesh.update(*d.surface, su, sv);
         if (!change.any) return m;
         const geom::Mesh& mesh = m.mesh.mesh();
-        const bool full = change.topology || resampled || change.vertex_count == static_cast<int>(mesh.positions.size());
-        const std::vector<float> verts = full ? interleave(mesh) : interleave(mesh, static_cast<std::size_t>(change.first_vertex),
-                                                                         static_cast<std::size_t>(change.vertex_count));
+        const bool full = change.topology || resampled ||
+                          change.vertex_count == static_cast<int>(mesh.positions.size());
+        const std::vector<float> verts =
+            full ? interleave(mesh)
+                 : interleave(mesh, static_cast<std::size_t>(change.first_vertex),
+                              static_cast<std::size_t>(change.vertex_count));
         std::vector<std::uint32_t> wire;
         if (full) wire = wire_indices(su, sv, mesh.exists, wire_lines_per_direction);
         stats.tessellate_ms +=
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                .count();
         ++stats.retessellated;
 
         glBindBuffer(GL_ARRAY_BUFFER, m.vbo);
         if (full) {
-            glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(verts.size() * sizeof(float)), verts.data(),
-                         GL_DYNAMIC_DRAW);
+            glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(verts.size() * sizeof(float)),
+                         verts.data(), GL_DYNAMIC_DRAW);
             // Element buffers belong to their vertex arrays: fill each through its VAO.
             glBindVertexArray(m.tri_vao);
             glBufferData(GL_ELEMENT_ARRAY_BUFFER,
                          static_cast<GLsizeiptr>(mesh.triangles.size() * 3 * sizeof(std::uint32_t)),
                          mesh.triangles.data(), GL_DYNAMIC_DRAW);
             glBindVertexArray(m.wire_vao);
-            glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(wire.size() * sizeof(std::uint32_t)),
-                         wire.data(), GL_DYNAMIC_DRAW);
+            glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+                         static_cast<GLsizeiptr>(wire.size() * sizeof(std::uint32_t)), wire.data(),
+                         GL_DYNAMIC_DRAW);
             glBindVertexArray(0);
             m.tri_count = static_cast<GLsizei>(mesh.triangles.size() * 3);
             m.wire_count = static_cast<GLsizei>(wire.size());
         } else {
             // Only the rows the moved points' basis functions reach.
-            glBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(change.first_vertex) * 6 * sizeof(float),
+            glBufferSubData(GL_ARRAY_BUFFER,
+                            static_cast<GLintptr>(change.first_vertex) * 6 * sizeof(float),
                             static_cast<GLsizeiptr>(verts.size() * sizeof(float)), verts.data());
         }
         glBindBuffer(GL_ARRAY_BUFFER, 0);
@@ -183,7 +190,9 @@ Renderer::Renderer(int msaa_samples) : impl_(std::make_unique<Impl>(msaa_samples
 
 Renderer::~Renderer() = default;
 
-unsigned Renderer::texture() const { return impl_->target.texture(); }
+unsigned Renderer::texture() const {
+    return impl_->target.texture();
+}
 
 void Renderer::render(const SceneView& view, const std::vector<SurfaceDraw>& surfaces,
                       const Overlay& overlay) {
@@ -253,11 +262,13 @@ void Renderer::render(const SceneView& view, const std::vector<SurfaceDraw>& sur
     std::vector<OverlayVertex> all;
     std::vector<std::pair<GLint, GLsizei>> ranges;
     for (const LineBatch& b : overlay.lines) {
-        ranges.emplace_back(static_cast<GLint>(all.size()), static_cast<GLsizei>(b.vertices.size()));
+        ranges.emplace_back(static_cast<GLint>(all.size()),
+                            static_cast<GLsizei>(b.vertices.size()));
         all.insert(all.end(), b.vertices.begin(), b.vertices.end());
     }
     const GLint point_base = static_cast<GLint>(all.size());
-    for (const PointBatch& b : overlay.points) all.insert(all.end(), b.points.begin(), b.points.end());
+    for (const PointBatch& b : overlay.points)
+        all.insert(all.end(), b.points.begin(), b.points.end());
     im.stream.upload(all);
     glBindVertexArray(im.stream.vao);
     glDepthMask(GL_FALSE);

@@ -36,9 +36,9 @@ struct SceneView {
 };
 
 struct RenderStats {
-    int retessellated = 0;      // surfaces re-tessellated in the last frame
-    double tessellate_ms = 0;   // CPU time they took
-    long vertices = 0;          // vertices drawn
+    int retessellated = 0;    // surfaces re-tessellated in the last frame
+    double tessellate_ms = 0; // CPU time they took
+    long vertices = 0;        // vertices drawn
 };
 
 // True for Mesa's CPU rasterisers (llvmpipe, softpipe, swrast), where multisampling in an
