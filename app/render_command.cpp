@@ -1,10 +1,15 @@
 // `isoparm render [SCENE] -o OUT.png`: the workstation or its 3D view as a PNG, through EGL
 // on Mesa's surfaceless platform (no display needed), with the same code as the window.
+#include <cmath>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <regex>
 
 #include "app/commands.hpp"
+#include "core/geom/knots.hpp"
+#include "ui/app_context.hpp"
+#include "ui/doc_access.hpp"
 #include "ui/headless/headless_render.hpp"
 
 namespace isoparm::app {
@@ -16,7 +21,92 @@ struct RenderOptions {
     std::string output;
     std::string size = "1280x800";
     std::string view = "workstation";
+    std::string indicator, select, style, camera;
+    // Display toggles: 0 = as the scene says, > 0 on, < 0 off (--x / --no-x).
+    int points = 0, net = 0, ids = 0, knot_curves = 0, indicator_point = 0, deboor = 0;
 };
+
+// "a,b[,c]" -> numbers; nullopt when the text is not 2 (or 3) finite numbers.
+std::optional<std::vector<double>> numbers(const std::string& text, size_t min, size_t max) {
+    static const std::regex number(R"(\s*([-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?)\s*)");
+    std::vector<double> out;
+    size_t start = 0;
+    while (start <= text.size()) {
+        const size_t comma = text.find(',', start);
+        const std::string part = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        std::smatch m;
+        if (!std::regex_match(part, m, number)) return std::nullopt;
+        out.push_back(std::stod(m[1]));
+        if (!std::isfinite(out.back())) return std::nullopt;
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    if (out.size() < min || out.size() > max) return std::nullopt;
+    return out;
+}
+
+void apply_toggle(int flag, bool& setting) {
+    if (flag > 0) setting = true;
+    if (flag < 0) setting = false;
+}
+
+// Checks the options against the loaded scene and applies them; "" or the reason they fail.
+std::string configure(const RenderOptions& o, ui::AppContext& ctx) {
+    doc::Document& d = ctx.doc;
+    if (!o.style.empty()) {
+        d.display.style = o.style == "shaded"      ? doc::DisplayStyle::shaded
+                          : o.style == "wireframe" ? doc::DisplayStyle::wireframe
+                                                   : doc::DisplayStyle::both;
+    }
+    apply_toggle(o.points, d.display.control_points);
+    apply_toggle(o.net, d.display.control_net);
+    apply_toggle(o.ids, d.display.point_ids);
+    apply_toggle(o.knot_curves, d.display.knot_curves);
+    apply_toggle(o.indicator_point, d.display.indicator_point);
+    apply_toggle(o.deboor, d.display.deboor);
+    if (!o.select.empty() || !o.indicator.empty()) {
+        if (!ui::current_surface(d)) {
+            // Select the first surface so the options have something to act on.
+            for (const doc::Object& obj : d.objects)
+                if (std::holds_alternative<doc::SurfaceObject>(obj.shape)) {
+                    d.selection = {obj.id, -1, -1};
+                    break;
+                }
+        }
+        const geom::Surface* s = ui::current_surface(d);
+        if (!s) return "the scene has no surface for --select or --indicator";
+        if (!o.select.empty()) {
+            const auto ij = numbers(o.select, 2, 2);
+            const int i = ij ? static_cast<int>((*ij)[0]) : -1, j = ij ? static_cast<int>((*ij)[1]) : -1;
+            if (!ij || (*ij)[0] != i || (*ij)[1] != j || i < 0 || j < 0 || i >= s->n_u || j >= s->n_v)
+                return "--select '" + o.select + "' must be I,J with 0 <= I < " + std::to_string(s->n_u) +
+                       " and 0 <= J < " + std::to_string(s->n_v);
+            d.selection.i = i;
+            d.selection.j = j;
+        }
+        if (!o.indicator.empty()) {
+            const auto uv = numbers(o.indicator, 2, 2);
+            const geom::Interval du = geom::domain(s->knots_u, s->degree_u, s->n_u);
+            const geom::Interval dv = geom::domain(s->knots_v, s->degree_v, s->n_v);
+            if (!uv || !du.contains((*uv)[0]) || !dv.contains((*uv)[1]))
+                return "--indicator '" + o.indicator + "' must be U,V inside the domain [" +
+                       geom::format_number(du.lo) + ", " + geom::format_number(du.hi) + "] x [" +
+                       geom::format_number(dv.lo) + ", " + geom::format_number(dv.hi) + "]";
+            d.indicator = {((*uv)[0] - du.lo) / (du.hi - du.lo), ((*uv)[1] - dv.lo) / (dv.hi - dv.lo)};
+        }
+    }
+    if (!o.camera.empty()) {
+        const auto c = numbers(o.camera, 2, 3);
+        if (!c || std::abs((*c)[1]) >= 90 || (c->size() == 3 && (*c)[2] <= 0))
+            return "--camera '" + o.camera +
+                   "' must be YAW,PITCH[,ZOOM]: degrees, pitch strictly between -90 and 90, zoom a "
+                   "percentage above 0 (100 = fit to view)";
+        ctx.ui.camera.yaw = (*c)[0] * M_PI / 180.0;
+        ctx.ui.camera.pitch = (*c)[1] * M_PI / 180.0;
+        if (c->size() == 3) ctx.ui.zoom_after_fit = (*c)[2] / 100.0;
+    }
+    return "";
+}
 
 } // namespace
 
@@ -29,19 +119,35 @@ Action register_render_command(CLI::App& app) {
     sub->add_option("--size", o->size, "picture size WxH (default 1280x800)");
     sub->add_option("--view", o->view, "workstation (all panels) or 3d (the 3D view alone)")
         ->check(CLI::IsMember({"workstation", "3d"}));
+    sub->add_option("--indicator", o->indicator, "position indicator U,V (parameters in the domain)");
+    sub->add_option("--select", o->select, "select control point I,J of the current surface");
+    sub->add_option("--style", o->style, "shaded, wireframe or both")
+        ->check(CLI::IsMember({"shaded", "wireframe", "both"}));
+    sub->add_option("--camera", o->camera,
+                    "YAW,PITCH[,ZOOM]: orbit angles in degrees, zoom in percent of fit-to-view");
+    sub->add_flag("--points,!--no-points", o->points, "show / hide control points");
+    sub->add_flag("--net,!--no-net", o->net, "show / hide the control net");
+    sub->add_flag("--ids,!--no-ids", o->ids, "show / hide control-point IDs (P_ij)");
+    sub->add_flag("--knot-curves,!--no-knot-curves", o->knot_curves, "show / hide knot curves");
+    sub->add_flag("--indicator-point,!--no-indicator-point", o->indicator_point,
+                  "show / hide the point S(u,v) under the indicator");
+    sub->add_flag("--deboor,!--no-deboor", o->deboor, "show / hide de Boor's construction");
     return [o]() -> int {
         ui::HeadlessRequest req;
         req.scene_path = o->scene;
         req.output = o->output;
         static const std::regex size_re(R"(^(\d{1,5})x(\d{1,5})$)");
         std::smatch m;
-        if (!std::regex_match(o->size, m, size_re)) {
-            std::cerr << "isoparm render: --size '" << o->size << "' must be WxH, e.g. 1280x800\n";
+        if (!std::regex_match(o->size, m, size_re) || std::stoi(m[1]) < 16 || std::stoi(m[2]) < 16 ||
+            std::stoi(m[1]) > 8192 || std::stoi(m[2]) > 8192) {
+            std::cerr << "isoparm render: --size '" << o->size
+                      << "' must be WxH between 16x16 and 8192x8192, e.g. 1280x800\n";
             return 2;
         }
         req.width = std::stoi(m[1]);
         req.height = std::stoi(m[2]);
         req.view = o->view == "3d" ? ui::ViewMode::view3d_only : ui::ViewMode::workstation;
+        req.configure = [o](ui::AppContext& ctx) { return configure(*o, ctx); };
         const std::string error = ui::render_headless(req);
         if (!error.empty()) {
             std::cerr << "isoparm render: " << error << "\n";

@@ -13,6 +13,7 @@
 namespace isoparm::ui {
 
 class Renderer;
+class ImplicitMeshes;
 
 struct AppContext {
     doc::Document doc;
@@ -22,6 +23,7 @@ struct AppContext {
     bool remember_settings = false; // false in headless runs (deterministic, no side effects)
     UiState ui;
     Renderer* renderer = nullptr;
+    ImplicitMeshes* implicit_meshes = nullptr; // owned by the workstation
 
     // Runs a command through the history; a refusal shows in the status bar and changes
     // nothing. Returns whether it applied.

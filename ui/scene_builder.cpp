@@ -9,6 +9,7 @@
 #include "core/geom/knots.hpp"
 #include "core/geom/tessellate.hpp"
 #include "ui/doc_access.hpp"
+#include "ui/render/implicit_meshes.hpp"
 
 namespace isoparm::ui {
 
@@ -34,6 +35,17 @@ void add_net(LineBatch& b, const geom::Surface& s, const glm::vec4& c) {
             if (i + 1 < s.n_u)
                 b.vertices.insert(b.vertices.end(), {{p, c}, {glm::vec3(s.point(i + 1, j)), c}});
         }
+}
+
+// The 12 edges of an axis-aligned box (an implicit object's bounds).
+void add_box(LineBatch& b, const glm::dvec3& lo, const glm::dvec3& hi, const glm::vec4& c) {
+    auto corner = [&](int k) {
+        return glm::vec3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+    };
+    for (int k = 0; k < 8; ++k)
+        for (int bit : {1, 2, 4})
+            if (!(k & bit))
+                b.vertices.insert(b.vertices.end(), {{corner(k), c}, {corner(k | bit), c}});
 }
 
 std::vector<glm::vec3> curve_polyline(const geom::Curve& c, int samples) {
@@ -67,7 +79,8 @@ std::vector<std::vector<glm::vec3>> iso_curve(const geom::Surface& s, geom::Dir 
     return pieces;
 }
 
-BuiltScene build_scene(const doc::Document& d, const SceneStyle& style) {
+BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
+                       const ImplicitMeshes* implicit) {
     BuiltScene out;
     const float k = style.scale;
     const doc::Colors& col = d.colors;
@@ -79,6 +92,7 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style) {
     LineBatch knots{{}, 1.6f * k, true};
     LineBatch knots_multiple{{}, 3.2f * k, true};
     LineBatch curves{{}, 2.2f * k, true};
+    LineBatch box{{}, 1.2f * k, true};
     // Many points (a 32x32 net) would bury the surface: they shrink with their number.
     std::size_t total_points = 0;
     for (const doc::Object& o : d.objects)
@@ -129,6 +143,23 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style) {
                     }
                 }
             }
+        } else if (const auto* im = std::get_if<doc::ImplicitObject>(&o.shape)) {
+            const ImplicitMeshes::View v = implicit ? implicit->view(o.id) : ImplicitMeshes::View{};
+            if (v.mesh && !v.mesh->triangles.empty()) {
+                SurfaceDraw sd;
+                sd.id = o.id;
+                sd.mesh = v.mesh;
+                sd.mesh_revision = v.revision;
+                sd.shaded = shaded;
+                // Every triangle edge over a shaded surface would hide it: wireframe only
+                // in the wireframe style.
+                sd.wireframe = !shaded;
+                sd.fill = to_vec4(col.surface);
+                sd.wire = to_vec4(is_selected ? col.selected_surface : col.surface);
+                sd.wire_width = 1.0f * k;
+                out.surfaces.push_back(sd);
+            }
+            if (is_selected) add_box(box, im->lo, im->hi, to_vec4(col.selected_surface));
         } else if (const auto* c = std::get_if<doc::CurveObject>(&o.shape)) {
             const glm::vec4 cc = to_vec4(is_selected ? col.selected_surface : col.surface);
             Overlay::add_polyline(curves, curve_polyline(c->curve, 200), cc);
@@ -183,7 +214,7 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style) {
         guide.vertices.push_back({glm::vec3(style.guide_point + dir * len), gc});
     }
 
-    for (LineBatch* b : {&knots, &knots_multiple, &curves, &net, &iso, &guide})
+    for (LineBatch* b : {&knots, &knots_multiple, &curves, &net, &box, &iso, &guide})
         if (!b->vertices.empty()) out.overlay.lines.push_back(std::move(*b));
     for (PointBatch* b : {&points, &indicator, &selected})
         if (!b->points.empty()) out.overlay.points.push_back(std::move(*b));

@@ -25,7 +25,11 @@ struct BuiltScene {
     std::vector<SurfaceDraw> surfaces;
     Overlay overlay;
 };
-BuiltScene build_scene(const doc::Document& d, const SceneStyle& style);
+class ImplicitMeshes;
+// Implicit objects are drawn from `implicit`'s cached meshes (left out when it is null or
+// has no mesh for them yet); the selected one also shows its bounds as a box.
+BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
+                       const ImplicitMeshes* implicit = nullptr);
 
 // The points of the isoparametric curve with `fixed` direction held at t (S(t, v) for
 // fixed = u), `samples` evenly spaced in the other direction; runs where the point does not

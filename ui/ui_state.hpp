@@ -78,6 +78,16 @@ struct HeatMapCache {
     float max_value = 0;
 };
 
+// The implicit-surface panel's fields (the expression is applied on Enter).
+struct ImplicitForm {
+    std::uint64_t object = 0; // the object the fields were filled from
+    std::string synced;       // its expression when the field was last filled
+    std::string text;         // the expression field
+    std::string error;        // why the last Enter was refused (with its column)
+    bool dragging = false;    // a parameter slider is held: the mesh is polygonized coarser
+    int preset = 0;           // the presets combo's choice
+};
+
 // A key press from the platform, kept until the next frame handles it (ImGui 1.86 polls key
 // state once per frame and misses a press and release that fall between two frames).
 struct KeyPress {
@@ -89,6 +99,7 @@ struct UiState {
     Camera camera;
     double fit_distance = 6;      // camera distance of the last fit (zoom 100%)
     bool camera_needs_fit = true; // fit once the view's size is known
+    double zoom_after_fit = 1.0;  // applied once after that first fit (`isoparm render --camera`)
     ViewMode view_mode = ViewMode::workstation;
     bool headless = false;     // deterministic frames: no timings, no settings
     bool presentation = false; // classroom mode: large fonts, thick lines, high contrast
@@ -117,6 +128,7 @@ struct UiState {
     double frame_ms = 0; // work per frame (build, render, swap), smoothed; set by the window loop
     std::string status;  // last message (errors of refused edits)
     HeatMapCache heat;
+    ImplicitForm implicit;
 
     float scale() const { return content_scale * (presentation ? 1.5f : 1.0f); }
 };

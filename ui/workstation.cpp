@@ -5,11 +5,16 @@
 #include <algorithm>
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
+#include <variant>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h> // glfwPostEmptyEvent: wake the window when a mesh is ready
 
 #include "ui/actions.hpp"
 #include "ui/doc_access.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/render/gl.hpp"
+#include "ui/render/implicit_meshes.hpp"
 #include "ui/render/renderer.hpp"
 #include "ui/scene_builder.hpp"
 #include "ui/theme.hpp"
@@ -47,9 +52,12 @@ Workstation::Workstation(const WorkstationOptions& options) {
     ctx_.history.mark_clean();
     renderer_ = std::make_unique<Renderer>(options.msaa_samples);
     ctx_.renderer = renderer_.get();
+    implicit_ = std::make_unique<ImplicitMeshes>();
+    ctx_.implicit_meshes = implicit_.get();
 }
 
 Workstation::~Workstation() {
+    implicit_.reset(); // stops and joins background polygonizations
     renderer_.reset();
     ImGui_ImplOpenGL3_Shutdown();
     ImGui::DestroyContext();
@@ -139,7 +147,13 @@ void Workstation::layout_panels() {
         draw_view3d_panel(ctx_);
     ImGui::End();
     ImGui::PopStyleVar();
-    if (begin_panel("Control point", l.right[0])) draw_control_point_panel(ctx_);
+    // An implicit surface has no control points: its editor takes their place.
+    const doc::Object* sel = ctx_.doc.selected();
+    if (sel && std::holds_alternative<doc::ImplicitObject>(sel->shape)) {
+        if (begin_panel("Implicit surface", l.right[0])) draw_implicit_panel(ctx_);
+    } else {
+        if (begin_panel("Control point", l.right[0])) draw_control_point_panel(ctx_);
+    }
     ImGui::End();
     if (begin_panel("Control panel", l.right[1])) draw_control_panel(ctx_);
     ImGui::End();
@@ -165,6 +179,7 @@ void Workstation::frame(unsigned target_framebuffer) {
     // Between gestures (nothing held, no field being edited) the next edit is a new undo step.
     if (!ImGui::IsAnyItemActive() && !ImGui::IsAnyMouseDown()) ctx_.seal();
     normalize_selection(ctx_.doc);
+    ui.implicit.dragging = false; // set again by the implicit panel while a slider is held
 
     if (ui.view_mode == ViewMode::workstation) {
         handle_shortcuts(ctx_);
@@ -191,7 +206,13 @@ void Workstation::frame(unsigned target_framebuffer) {
         style.guide_axis = ui.drag.axis;
         style.guide_point = ui.drag.start;
     }
-    const BuiltScene scene = build_scene(ctx_.doc, style);
+    // Implicit meshes: coarse while a parameter slider moves, synchronous when headless.
+    ImplicitMeshes::Mode mode;
+    mode.wait = ui.headless;
+    mode.coarse_id = ui.implicit.dragging ? ui.implicit.object : 0;
+    if (!ui.headless) mode.wake = [] { glfwPostEmptyEvent(); };
+    implicit_->update(ctx_.doc, mode);
+    const BuiltScene scene = build_scene(ctx_.doc, style, implicit_.get());
     SceneView view;
     view.camera = ui.camera;
     view.width = ui.view_fb_width;

@@ -11,6 +11,7 @@
 namespace isoparm::ui {
 
 class Renderer;
+class ImplicitMeshes;
 
 struct WorkstationOptions {
     bool headless = false;   // no timings, no settings file, deterministic
@@ -43,6 +44,7 @@ private:
     void splitters();
     AppContext ctx_;
     std::unique_ptr<Renderer> renderer_;
+    std::unique_ptr<ImplicitMeshes> implicit_;
     bool presentation_built_ = false;
 };
 

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "core/doc/scene_io.hpp"
 
@@ -110,8 +111,8 @@ std::optional<RecoveryInfo> find_recovery(const std::string& for_path) {
 geom::Status discard_recovery(const std::string& for_path) {
     auto path = recovery_path(for_path);
     if (!path) return path.error();
-    if (std::remove(path->c_str()) != 0 && errno != ENOENT)
-        return io_error("remove", *path, errno);
+    // unlink, not remove: a directory in the recovery file's place is not ours to delete.
+    if (::unlink(path->c_str()) != 0 && errno != ENOENT) return io_error("remove", *path, errno);
     return geom::Ok{};
 }
 

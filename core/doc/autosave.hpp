@@ -33,8 +33,8 @@ geom::Expected<std::string> recovery_path(const std::string& for_path);
 geom::Status write_recovery(const Document& doc, const std::string& for_path);
 
 struct RecoveryInfo {
-    std::string path;                                // the recovery file (load it with load_scene)
-    std::chrono::system_clock::time_point written;   // when it was last written
+    std::string path;                              // the recovery file (load it with load_scene)
+    std::chrono::system_clock::time_point written; // when it was last written
     // The scene file's own modification time is later than the recovery file's: the user
     // saved after the last autosave (and discarding failed), so the recovery is likely stale.
     bool older_than_scene = false;

@@ -4,10 +4,11 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstring>
 #include <csignal>
+#include <cstring>
 #include <fcntl.h>
 #include <filesystem>
+#include <limits>
 #include <string_view>
 #include <sys/stat.h>
 #include <sys/types.h>
@@ -71,7 +72,11 @@ std::vector<std::pair<const std::string*, const json*>> ordered_members(const js
     return members;
 }
 
-void write_compact(std::string& out, const json& v) {
+// Appends v on one line. With a `limit`, stops as soon as `out` is longer than that and
+// returns false: write_pretty only asks whether a container fits on a line, and must not
+// format a 100 MB surface in full at every level of nesting to find out it does not.
+bool write_compact(std::string& out, const json& v,
+                   std::size_t limit = std::numeric_limits<std::size_t>::max()) {
     switch (v.type()) {
     case json::value_t::object: {
         out += '{';
@@ -81,7 +86,7 @@ void write_compact(std::string& out, const json& v) {
             first = false;
             write_string(out, *k);
             out += ": ";
-            write_compact(out, *m);
+            if (!write_compact(out, *m, limit)) return false;
         }
         out += '}';
         break;
@@ -90,7 +95,7 @@ void write_compact(std::string& out, const json& v) {
         out += '[';
         for (std::size_t k = 0; k < v.size(); ++k) {
             if (k) out += ", ";
-            write_compact(out, v[k]);
+            if (!write_compact(out, v[k], limit)) return false;
         }
         out += ']';
         break;
@@ -105,18 +110,24 @@ void write_compact(std::string& out, const json& v) {
         out += v.dump();
         break; // null, booleans, integers
     }
+    return out.size() <= limit;
 }
 
 // Containers that fit on a line stay on one line; others get one member per line, so a
 // surface reads row by row.
 void write_pretty(std::string& out, const json& v, int indent) {
     constexpr std::size_t line_budget = 96;
-    std::string compact;
-    write_compact(compact, v);
-    if (!v.is_structured() || v.empty() ||
-        (compact.size() + static_cast<std::size_t>(indent) <= line_budget && indent > 0)) {
-        out += compact;
+    if (!v.is_structured() || v.empty()) {
+        write_compact(out, v);
         return;
+    }
+    const auto used = static_cast<std::size_t>(indent);
+    if (indent > 0 && used <= line_budget) {
+        std::string compact;
+        if (write_compact(compact, v, line_budget - used)) {
+            out += compact;
+            return;
+        }
     }
     const std::string pad(static_cast<std::size_t>(indent + 2), ' ');
     if (v.is_object()) {
@@ -177,11 +188,9 @@ void remove_stale_temporaries(const std::string& target) {
     const std::filesystem::path dir = t.parent_path().empty() ? "." : t.parent_path();
     const std::string prefix = t.filename().string() + ".tmp-";
     std::error_code ec;
-    for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end;
-         it.increment(ec)) {
+    for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
         const std::string name = it->path().filename().string();
-        if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0)
-            continue;
+        if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) continue;
         long pid = 0;
         const char* first = name.data() + prefix.size();
         const char* last = name.data() + name.size();
@@ -252,8 +261,6 @@ geom::Expected<Document> load_scene(const std::string& path) {
 }
 
 geom::Status save_scene(const Document& doc, const std::string& path) {
-    const std::string text = scene_to_text(doc);
-
     // Replace the file a symbolic link points to, not the link.
     std::string target = path;
     std::error_code ec;
@@ -263,7 +270,9 @@ geom::Status save_scene(const Document& doc, const std::string& path) {
         target = resolved.string();
     }
     const std::string tmp = target + ".tmp-" + std::to_string(::getpid());
+    // Before the (possibly long) formatting, so a save killed early leaves nothing behind.
     remove_stale_temporaries(target);
+    const std::string text = scene_to_text(doc);
 
     const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
     if (fd < 0) return io_error("create", tmp, errno);

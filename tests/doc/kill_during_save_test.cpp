@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <cmath>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -27,8 +27,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Big enough that a save takes a while (tens of MB of text), so kills land inside it.
-constexpr int grid_size = 1000;
+// Big enough that a save takes a while (a 500 x 500 surface is 26 MB of text), so kills land
+// inside it; small enough that the whole test takes a few seconds.
+constexpr int grid_size = 500;
 constexpr int kills = 24;
 
 // The default scene plus a grid_size x grid_size surface whose heights depend on `variant`,
@@ -76,8 +77,7 @@ void drain(int fd, int& saved, int& failed) {
 } // namespace
 
 TEST(KillDuringSave, SceneIsAlwaysOneCompleteDocument) {
-    const fs::path dir =
-        fs::temp_directory_path() / ("isoparm-kill-" + std::to_string(::getpid()));
+    const fs::path dir = fs::temp_directory_path() / ("isoparm-kill-" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     const std::string target = (dir / "scene.json").string();
@@ -94,7 +94,12 @@ TEST(KillDuringSave, SceneIsAlwaysOneCompleteDocument) {
         ASSERT_TRUE(back.ok()) << back.error().message;
         ASSERT_TRUE(same_document(*back, docs[k])) << "variant " << k;
     }
+    // One save, timed: kills are spread over about one and a half saves.
+    const auto start = std::chrono::steady_clock::now();
     ASSERT_TRUE(save_scene(docs[0], target).ok());
+    const auto save_us = std::max<long>(1000, std::chrono::duration_cast<std::chrono::microseconds>(
+                                                  std::chrono::steady_clock::now() - start)
+                                                  .count());
 
     std::mt19937 rng(20240609);
     int mid_write = 0, saved = 0, failed = 0;
@@ -121,11 +126,11 @@ TEST(KillDuringSave, SceneIsAlwaysOneCompleteDocument) {
             const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(30);
             while (!fs::exists(tmp) && std::chrono::steady_clock::now() < give_up)
                 std::this_thread::sleep_for(std::chrono::microseconds(100));
-            std::this_thread::sleep_for(
-                std::chrono::microseconds(std::uniform_int_distribution<int>(0, 20000)(rng)));
+            std::this_thread::sleep_for(std::chrono::microseconds(
+                std::uniform_int_distribution<long>(0, save_us / 4)(rng)));
         } else {
-            std::this_thread::sleep_for(
-                std::chrono::milliseconds(std::uniform_int_distribution<int>(0, 1500)(rng)));
+            std::this_thread::sleep_for(std::chrono::microseconds(
+                std::uniform_int_distribution<long>(0, save_us * 3 / 2)(rng)));
         }
         ASSERT_EQ(::kill(child, SIGKILL), 0);
         int status = 0;
@@ -140,11 +145,14 @@ TEST(KillDuringSave, SceneIsAlwaysOneCompleteDocument) {
         const bool complete = std::find(texts.begin(), texts.end(), now) != texts.end();
         ASSERT_TRUE(complete) << "kill " << kill << " left a scene of " << now.size()
                               << " bytes that is no complete document";
-        // Beside it at most the temporary file the killed save was writing.
+        // Beside it at most the temporary file the killed save was writing (a save removes
+        // the temporary files of dead saves before it starts).
         const auto names = entries(dir);
+        ASSERT_LE(names.size(), 2u) << "kill " << kill << " left " << names.back() << " and more";
         const bool left_tmp = names.size() == 2;
-        ASSERT_TRUE(names.size() == 1 || (left_tmp && names[1] == fs::path(tmp).filename()))
-            << "kill " << kill << " left " << names.size() << " files, e.g. " << names.back();
+        if (left_tmp) {
+            EXPECT_EQ(names[1], fs::path(tmp).filename()) << "kill " << kill;
+        }
         mid_write += left_tmp;
     }
     EXPECT_EQ(failed, 0) << "a save failed outright";
@@ -155,7 +163,12 @@ TEST(KillDuringSave, SceneIsAlwaysOneCompleteDocument) {
     ASSERT_TRUE(loaded.ok()) << loaded.error().message;
     EXPECT_TRUE(same_document(*loaded, docs[0]) || same_document(*loaded, docs[1]) ||
                 same_document(*loaded, docs[2]));
+    // One save, timed: kills are spread over about one and a half saves.
+    const auto start = std::chrono::steady_clock::now();
     ASSERT_TRUE(save_scene(docs[0], target).ok());
+    const auto save_us = std::max<long>(1000, std::chrono::duration_cast<std::chrono::microseconds>(
+                                                  std::chrono::steady_clock::now() - start)
+                                                  .count());
     EXPECT_EQ(entries(dir), std::vector<std::string>{"scene.json"});
 
     std::cout << "[ figures  ] " << kills << " kills (" << mid_write

@@ -131,12 +131,14 @@ def figure_scenes(isoparm):
 
     # Figure 5: knot curves for 0^4 0.5 1^4 in both directions, then 0.75 inserted in u.
     wave = nurbs_surface(grid_net(WAVE))
-    scenes["fig5a-knot-curves"] = scene([surface_object(1, "wave", wave)],
-                                        {"knot_curves": True}, selection={"object": 1})
+    # The indicator is off: at its default (0.5, 0.5) its isocurves would hide the knot curves.
+    knot_display = {"knot_curves": True, "indicator_point": False}
+    scenes["fig5a-knot-curves"] = scene([surface_object(1, "wave", wave)], knot_display,
+                                        selection={"object": 1})
     inserted = geom(isoparm, {"op": "insert_knot", "surface": wave, "direction": "u",
                               "knot": 0.75})["surface"]
-    scenes["fig5b-knot-inserted"] = scene([surface_object(1, "wave", inserted)],
-                                          {"knot_curves": True}, selection={"object": 1})
+    scenes["fig5b-knot-inserted"] = scene([surface_object(1, "wave", inserted)], knot_display,
+                                          selection={"object": 1})
 
     # Figure 6: split at u = 0.75, then the left piece at v = 0.5 (pieces keep their part of
     # the domain; names follow the workstation's <name>.1, <name>.2).
@@ -177,8 +179,10 @@ def figure_scenes(isoparm):
         [surface_object(1, "vase", revolved), curve_object(2, "profile", profile, "xz")],
         {"control_points": False, "control_net": False}, selection={"object": 2})
 
-    # Figure 9: four degree-3 NURBS sections (y = -1.5 .. 1.5, different knots and counts,
-    # one weight above 1) skinned with v-degree 3.
+    # Figure 9: four degree-3 NURBS sections (y = -1.5 .. 1.5, different knots and counts, so
+    # skinning makes them compatible first) skinned with v-degree 3. Unit weights: sections
+    # with different weight patterns are interpolated in homogeneous space, which gives the
+    # net negative weights and far-away points (right, but unreadable as a figure).
     sections = [
         {"type": "nurbs", "degree": 3, "knots": KNOTS_5_3,
          "points": [[-1.0, -1.5, 0.0], [-1.0, -1.5, 0.6], [0.0, -1.5, 0.9], [1.0, -1.5, 0.6],
@@ -191,7 +195,7 @@ def figure_scenes(isoparm):
                                                  1.0],
          "points": [[-1.2, 0.5, 0.0], [-1.3, 0.5, 0.8], [-0.5, 0.5, 1.2], [0.5, 0.5, 1.2],
                     [1.3, 0.5, 0.8], [1.2, 0.5, 0.0]],
-         "weights": [1.0, 1.0, 2.0, 2.0, 1.0, 1.0]},
+         "weights": [1.0, 1.0, 1.0, 1.0, 1.0, 1.0]},
         {"type": "nurbs", "degree": 3, "knots": KNOTS_5_3,
          "points": [[-0.8, 1.5, 0.0], [-0.8, 1.5, 0.4], [0.0, 1.5, 0.5], [0.8, 1.5, 0.4],
                     [0.8, 1.5, 0.0]],

@@ -54,8 +54,11 @@ std::string render_headless(const HeadlessRequest& req) {
         geom::Expected<doc::Document> loaded = doc::load_scene(req.scene_path);
         if (!loaded.ok()) {
             const geom::Error& e = loaded.error();
-            return "cannot load '" + req.scene_path + "': " + e.message +
-                   (e.has_path && !e.path.empty() ? " (at " + e.path + ")" : "");
+            const std::string where = e.has_path && !e.path.empty() ? " (at " + e.path + ")" : "";
+            // The file name once: the loader's message may already carry it.
+            if (e.message.find(req.scene_path) != std::string::npos)
+                return "cannot load the scene: " + e.message + where;
+            return "cannot load '" + req.scene_path + "': " + e.message + where;
         }
         document = std::move(loaded).value();
     }
@@ -77,7 +80,10 @@ std::string render_headless(const HeadlessRequest& req) {
         ctx.file_path = req.scene_path;
         normalize_selection(ctx.doc);
         ctx.history.mark_clean();
-        if (req.configure) req.configure(ctx);
+        if (req.configure) {
+            // Options that do not fit the scene stop here: no PNG is written.
+            if (std::string problem = req.configure(ctx); !problem.empty()) return problem;
+        }
 
         ImGuiIO& io = ImGui::GetIO();
         io.DisplaySize = ImVec2(static_cast<float>(req.width), static_cast<float>(req.height));

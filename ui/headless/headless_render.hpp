@@ -16,8 +16,9 @@ struct HeadlessRequest {
     ViewMode view = ViewMode::workstation;
     float scale = 1; // UI scale (fonts, lines)
     // Adjusts the state after loading and before rendering (selection, indicator, camera,
-    // display toggles...); the render command's options go through here.
-    std::function<void(AppContext&)> configure;
+    // display toggles...); the render command's options go through here. Returns "" or the
+    // reason the options do not fit the scene (then nothing is rendered).
+    std::function<std::string(AppContext&)> configure;
 };
 
 // Returns "" on success, else one sentence saying what failed (no partial PNG is left).

@@ -10,6 +10,7 @@
 #include "core/doc/commands.hpp"
 #include "ui/actions.hpp"
 #include "ui/doc_access.hpp"
+#include "ui/implicit/implicit_support.hpp"
 #include "ui/panels/panels.hpp"
 
 namespace isoparm::ui {
@@ -56,6 +57,16 @@ void edit_menu(AppContext& ctx) {
 void surface_menu(AppContext& ctx) {
     if (!ImGui::BeginMenu("Surface")) return;
     if (ImGui::MenuItem("New Surface...", "Ctrl+Shift+N")) ctx.ui.new_surface.open = true;
+    if (ImGui::MenuItem("New implicit surface")) {
+        // A sphere to start from; the implicit panel's presets and fields shape it.
+        doc::Object o;
+        o.name = "implicit";
+        o.shape = implicit_presets().front().object;
+        ctx.seal();
+        if (ctx.execute(doc::add_object(std::move(o))))
+            ctx.doc.selection = {ctx.doc.objects.back().id, -1, -1};
+        ctx.seal();
+    }
     ImGui::Separator();
     ImGui::TextDisabled("Select");
     std::uint64_t pick = 0;

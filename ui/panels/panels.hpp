@@ -11,6 +11,7 @@ void handle_shortcuts(AppContext& ctx);         // keyboard shortcuts shown in t
 void draw_view3d_panel(AppContext& ctx);        // the 3D drawing view and its sliders
 void draw_tracing_panel(AppContext& ctx);       // the domain square and the indicator (u, v)
 void draw_control_point_panel(AppContext& ctx); // xy / xz / yz planes, fields, weight
+void draw_implicit_panel(AppContext& ctx);      // expression, parameters, bounds, presets
 void draw_basis_plot_panel(AppContext& ctx);    // R_ij at (u, v), its support, N_i and N_j
 void draw_control_panel(AppContext& ctx);       // colours and display settings
 void draw_status_bar(AppContext& ctx);          // frame time, object, unsaved mark

@@ -354,6 +354,10 @@ void draw_view3d_panel(AppContext& ctx) {
     if (ui.camera_needs_fit) {
         fit_view(ctx);
         ui.camera_needs_fit = false;
+        if (ui.zoom_after_fit != 1.0) {
+            zoom(ui.camera, 1.0 / ui.zoom_after_fit);
+            ui.zoom_after_fit = 1.0;
+        }
     }
 
     ImGui::InvisibleButton("##view3d", avail,

@@ -22,6 +22,7 @@ constexpr int wire_lines_per_direction = 24;
 struct MeshEntry {
     IncrementalMesh mesh; // CPU side: the tessellation, updated locally during drags
     int density = 0;
+    std::uint64_t mesh_revision = 0; // of the ready-made mesh uploaded (0: none)
     GLuint vbo = 0, tri_ibo = 0, wire_ibo = 0, tri_vao = 0, wire_vao = 0;
     GLsizei tri_count = 0, wire_count = 0;
     long vertices = 0;
@@ -115,6 +116,9 @@ struct Renderer::Impl {
         if (inserted) m.create();
         m.used = true;
 
+        if (d.mesh) return upload_mesh(m, d, stats);
+        m.mesh_revision = 0;
+
         const auto t0 = std::chrono::steady_clock::now();
         const auto [su, sv] = display_samples(*d.surface, d.density);
         const bool resampled = m.density != d.density;
@@ -158,6 +162,42 @@ struct Renderer::Impl {
                             static_cast<GLsizeiptr>(verts.size() * sizeof(float)), verts.data());
         }
         glBindBuffer(GL_ARRAY_BUFFER, 0);
+        m.vertices = static_cast<long>(mesh.positions.size());
+        return m;
+    }
+
+    // A ready-made mesh (implicit objects): everything re-uploaded when its revision changes.
+    MeshEntry& upload_mesh(MeshEntry& m, const SurfaceDraw& d, RenderStats& stats) {
+        if (m.mesh_revision == d.mesh_revision) return m;
+        m.mesh_revision = d.mesh_revision;
+        m.density = 0;
+        m.mesh = IncrementalMesh{}; // a later surface under this id starts afresh
+        const geom::Mesh& mesh = *d.mesh;
+        const std::vector<float> verts = interleave(mesh);
+        // Each edge of a closed, consistently oriented mesh appears once in each direction.
+        std::vector<std::uint32_t> wire;
+        wire.reserve(mesh.triangles.size() * 3);
+        for (const auto& t : mesh.triangles)
+            for (int k = 0; k < 3; ++k) {
+                const std::uint32_t a = t[k], b = t[(k + 1) % 3];
+                if (a < b) wire.insert(wire.end(), {a, b});
+            }
+        ++stats.retessellated;
+        glBindBuffer(GL_ARRAY_BUFFER, m.vbo);
+        glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(verts.size() * sizeof(float)),
+                     verts.data(), GL_DYNAMIC_DRAW);
+        glBindVertexArray(m.tri_vao);
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+                     static_cast<GLsizeiptr>(mesh.triangles.size() * 3 * sizeof(std::uint32_t)),
+                     mesh.triangles.data(), GL_DYNAMIC_DRAW);
+        glBindVertexArray(m.wire_vao);
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+                     static_cast<GLsizeiptr>(wire.size() * sizeof(std::uint32_t)), wire.data(),
+                     GL_DYNAMIC_DRAW);
+        glBindVertexArray(0);
+        glBindBuffer(GL_ARRAY_BUFFER, 0);
+        m.tri_count = static_cast<GLsizei>(mesh.triangles.size() * 3);
+        m.wire_count = static_cast<GLsizei>(wire.size());
         m.vertices = static_cast<long>(mesh.positions.size());
         return m;
     }

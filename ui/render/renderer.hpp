@@ -10,6 +10,7 @@
 
 #include <glm/vec4.hpp>
 
+#include "core/geom/tessellate.hpp"
 #include "core/geom/types.hpp"
 #include "ui/render/camera.hpp"
 #include "ui/render/overlay.hpp"
@@ -27,6 +28,10 @@ struct SurfaceDraw {
     glm::vec4 fill{0.3f, 0.55f, 0.85f, 1};
     glm::vec4 wire{0.9f, 0.9f, 0.9f, 1};
     float wire_width = 1.0f;
+    // A ready-made mesh instead of a surface (implicit objects): uploaded whenever
+    // mesh_revision differs from the cached one; its wireframe is the triangle edges.
+    const geom::Mesh* mesh = nullptr;
+    std::uint64_t mesh_revision = 0;
 };
 
 struct SceneView {

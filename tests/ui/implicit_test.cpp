@@ -1,0 +1,217 @@
+// The implicit-surface editor's logic: parameter detection, presets, the mesh cache key and
+// coarse-cell rule, the merging edit command and the mesh cache (no GL needed).
+#include <gtest/gtest.h>
+
+#include <thread>
+
+#include "core/doc/command.hpp"
+#include "core/geom/implicit/expression.hpp"
+#include "core/geom/implicit/polygonize.hpp"
+#include "ui/implicit/implicit_edit.hpp"
+#include "ui/implicit/implicit_support.hpp"
+#include "ui/render/implicit_meshes.hpp"
+#include "ui/scene_builder.hpp"
+
+using namespace isoparm;
+using namespace isoparm::ui;
+
+using Names = std::vector<std::string>;
+
+TEST(ImplicitParameters, DetectedInOrderWithoutVariablesFunctionsOrExponents) {
+    EXPECT_EQ(detect_parameters("x^2 + a*y - sin(b*z) + 1e-3*c + a - exp(x) + 2.5E+2*d_2"),
+              (Names{"a", "b", "c", "d_2"}));
+    EXPECT_EQ(detect_parameters("x + y + z - sqrt(abs(log(tan(cos(x)))))"), Names{});
+    EXPECT_EQ(detect_parameters("(x^2 + R^2 - r^2)"), (Names{"R", "r"}));
+    EXPECT_EQ(detect_parameters(".5e2*xy"), Names{"xy"}); // a name that starts with x
+}
+
+TEST(ImplicitParameters, NewExpressionKeepsValuesOfNamesThatStay) {
+    doc::ImplicitObject o;
+    o.expression = "x^2 + y^2 + z^2 - a - b";
+    o.parameter_names = {"a", "b"};
+    o.parameter_values = {0.25, 3.0};
+    const doc::ImplicitObject n = with_expression(o, "c*x + b*y + z");
+    EXPECT_EQ(n.expression, "c*x + b*y + z");
+    EXPECT_EQ(n.parameter_names, (Names{"c", "b"}));
+    EXPECT_EQ(n.parameter_values, (std::vector<double>{1.0, 3.0}));
+}
+
+TEST(ImplicitCache, KeyChangesWithEveryInput) {
+    const doc::ImplicitObject base = implicit_presets()[1].object; // torus
+    const ImplicitKey k = implicit_key(base, base.cell);
+    EXPECT_EQ(k, implicit_key(base, base.cell));
+    EXPECT_NE(k, implicit_key(base, base.cell * 2));
+    doc::ImplicitObject o = base;
+    o.expression += " + 0";
+    EXPECT_NE(k, implicit_key(o, o.cell));
+    o = base;
+    o.parameter_values[1] = 0.41;
+    EXPECT_NE(k, implicit_key(o, o.cell));
+    o = base;
+    o.lo.z = -0.7;
+    EXPECT_NE(k, implicit_key(o, o.cell));
+    o = base;
+    o.hi.x = 1.6;
+    EXPECT_NE(k, implicit_key(o, o.cell));
+}
+
+TEST(ImplicitCache, CoarseCellRule) {
+    const glm::dvec3 lo(-1), hi(1, 1, 0.5);               // longest extent 2
+    EXPECT_DOUBLE_EQ(coarse_cell(lo, hi, 0.05), 0.05);    // 40 cells: already coarse
+    EXPECT_DOUBLE_EQ(coarse_cell(lo, hi, 0.03), 0.06);    // 67 cells: twice the cell
+    EXPECT_DOUBLE_EQ(coarse_cell(lo, hi, 0.01), 2 / 48.); // 200 cells: capped at 48
+    EXPECT_LE(2 / coarse_cell(lo, hi, 0.001), coarse_cells_per_axis + 1e-9);
+}
+
+TEST(ImplicitPresets, AllCompileAndPolygonizeInTheirBounds) {
+    const auto& presets = implicit_presets();
+    ASSERT_EQ(presets.size(), 6u);
+    for (const ImplicitPreset& p : presets) {
+        SCOPED_TRACE(p.name);
+        const doc::ImplicitObject& o = p.object;
+        EXPECT_EQ(detect_parameters(o.expression), o.parameter_names);
+        ASSERT_EQ(o.parameter_names.size(), o.parameter_values.size());
+        const auto program = geom::implicit::compile(o.expression, o.parameter_names);
+        ASSERT_TRUE(program) << program.error().message;
+        geom::implicit::PolygonizeOptions opt;
+        opt.lo = o.lo;
+        opt.hi = o.hi;
+        opt.cell = o.cell;
+        opt.parameters = o.parameter_values;
+        const auto mesh = geom::implicit::polygonize(*program, opt);
+        ASSERT_TRUE(mesh) << mesh.error().message;
+        EXPECT_GT(mesh->triangles.size(), 1000u);
+        for (const glm::dvec3& v : mesh->positions)
+            for (int a = 0; a < 3; ++a) {
+                EXPECT_GE(v[a], o.lo[a] - 1e-9);
+                EXPECT_LE(v[a], o.hi[a] + 1e-9);
+            }
+    }
+}
+
+namespace {
+
+doc::Document one_implicit(std::uint64_t& id) {
+    doc::Document d;
+    doc::Object o;
+    o.id = id = d.allocate_id();
+    o.name = "f";
+    o.shape = implicit_presets()[0].object; // sphere, r = 1
+    d.objects.push_back(o);
+    return d;
+}
+
+} // namespace
+
+TEST(ImplicitEdit, DragMergesIntoOneUndoStepAndUndoRestores) {
+    std::uint64_t id = 0;
+    doc::Document d = one_implicit(id);
+    const doc::Document before = d;
+    doc::History h;
+    for (double r : {1.1, 1.2, 1.3}) {
+        doc::ImplicitObject next = std::get<doc::ImplicitObject>(d.objects[0].shape);
+        next.parameter_values[0] = r;
+        ASSERT_TRUE(h.execute(d, edit_implicit(id, next, "Edit implicit parameter r")));
+    }
+    h.seal();
+    EXPECT_EQ(h.size(), 1u);
+    EXPECT_EQ(std::get<doc::ImplicitObject>(d.objects[0].shape).parameter_values[0], 1.3);
+    const doc::Document after = d;
+    ASSERT_TRUE(h.undo(d));
+    EXPECT_TRUE(doc::same_geometry(d, before));
+    ASSERT_TRUE(h.redo(d));
+    EXPECT_TRUE(doc::same_geometry(d, after));
+    // Another label is another step.
+    doc::ImplicitObject next = std::get<doc::ImplicitObject>(d.objects[0].shape);
+    next.cell = 0.1;
+    ASSERT_TRUE(h.execute(d, edit_implicit(id, next, "Edit implicit cell")));
+    EXPECT_EQ(h.size(), 2u);
+}
+
+TEST(ImplicitEdit, RefusesWithoutChangingTheDocument) {
+    std::uint64_t id = 0;
+    doc::Document d = one_implicit(id);
+    const doc::Document before = d;
+    doc::History h;
+    doc::ImplicitObject bad = std::get<doc::ImplicitObject>(d.objects[0].shape);
+    bad.lo.x = 5; // min >= max
+    EXPECT_FALSE(h.execute(d, edit_implicit(id, bad, "Edit implicit bounds")));
+    EXPECT_FALSE(h.execute(d, edit_implicit(id + 7, bad, "Edit implicit bounds")));
+    EXPECT_TRUE(doc::same_geometry(d, before));
+    EXPECT_EQ(h.size(), 0u);
+}
+
+TEST(ImplicitMeshes, CachedPerKeyAndCoarseWhileDragging) {
+    std::uint64_t id = 0;
+    doc::Document d = one_implicit(id);
+    auto& f = std::get<doc::ImplicitObject>(d.objects[0].shape);
+    f.cell = 0.02; // 125 cells per axis: the drag preview is coarser
+    ImplicitMeshes cache;
+    ImplicitMeshes::Mode wait;
+    wait.wait = true;
+    cache.update(d, wait);
+    EXPECT_EQ(cache.synchronous_runs(), 1);
+    ImplicitMeshes::View v = cache.view(id);
+    ASSERT_NE(v.mesh, nullptr);
+    EXPECT_FALSE(v.mesh->triangles.empty());
+    EXPECT_EQ(v.cell, 0.02);
+    EXPECT_TRUE(v.error.empty());
+    const std::uint64_t full_revision = v.revision;
+
+    cache.update(d, wait); // unchanged: nothing to do
+    EXPECT_EQ(cache.synchronous_runs(), 1);
+    EXPECT_EQ(cache.view(id).revision, full_revision);
+
+    ImplicitMeshes::Mode drag = wait;
+    drag.coarse_id = id;
+    f.parameter_values[0] = 0.9;
+    cache.update(d, drag);
+    v = cache.view(id);
+    EXPECT_EQ(v.cell, coarse_cell(f.lo, f.hi, f.cell));
+    EXPECT_NE(v.revision, full_revision);
+
+    cache.update(d, wait); // released: the full cell again
+    EXPECT_EQ(cache.view(id).cell, 0.02);
+
+    d.objects.clear(); // removed objects are dropped
+    cache.update(d, wait);
+    EXPECT_EQ(cache.view(id).mesh, nullptr);
+}
+
+TEST(ImplicitMeshes, FineGridFinishesInTheBackground) {
+    std::uint64_t id = 0;
+    doc::Document d = one_implicit(id);
+    std::get<doc::ImplicitObject>(d.objects[0].shape).cell = 0.02; // > 48^3 cells
+    ImplicitMeshes cache;
+    ImplicitMeshes::Mode mode; // not waiting
+    cache.update(d, mode);
+    EXPECT_EQ(cache.synchronous_runs(), 0);
+    ImplicitMeshes::View v = cache.view(id);
+    while (!v.mesh) { // no timing: poll until the worker's mesh is adopted
+        std::this_thread::yield();
+        cache.update(d, mode);
+        v = cache.view(id);
+    }
+    EXPECT_EQ(v.cell, 0.02);
+    EXPECT_LT(v.progress, 0);
+    EXPECT_FALSE(v.mesh->triangles.empty());
+    EXPECT_EQ(cache.synchronous_runs(), 0);
+}
+
+TEST(ImplicitScene, ImplicitObjectsBecomeMeshDrawsWithTheirBox) {
+    std::uint64_t id = 0;
+    doc::Document d = one_implicit(id);
+    d.selection.object = id;
+    EXPECT_TRUE(build_scene(d, {}).surfaces.empty()); // no cache: not drawn
+    ImplicitMeshes cache;
+    ImplicitMeshes::Mode wait;
+    wait.wait = true;
+    cache.update(d, wait);
+    const BuiltScene s = build_scene(d, {}, &cache);
+    ASSERT_EQ(s.surfaces.size(), 1u);
+    EXPECT_EQ(s.surfaces[0].mesh, cache.view(id).mesh);
+    EXPECT_EQ(s.surfaces[0].surface, nullptr);
+    std::size_t lines = 0;
+    for (const auto& b : s.overlay.lines) lines += b.vertices.size();
+    EXPECT_EQ(lines, 24u); // the selected object's bounds: 12 edges
+}
