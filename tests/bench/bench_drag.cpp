@@ -16,11 +16,11 @@ using namespace isoparm;
 
 namespace {
 
-doc::Document drag_scene() {
+doc::Document drag_scene(int n = 32) {
     doc::Document d;
     doc::Object o;
     o.name = "big";
-    geom::Surface s = doc::make_planar_grid(32, 32, 3, 3, geom::SplineType::nurbs);
+    geom::Surface s = doc::make_planar_grid(n, n, 3, 3, geom::SplineType::nurbs);
     for (int i = 0; i < s.n_u; ++i)
         for (int j = 0; j < s.n_v; ++j) {
             s.point(i, j).z = std::sin(0.4 * i) * std::cos(0.3 * j);
@@ -88,5 +88,28 @@ void BM_DragStepIncremental32x32(benchmark::State& state) {
     }
 }
 BENCHMARK(BM_DragStepIncremental32x32)->Unit(benchmark::kMillisecond);
+
+// Issue 8: the per-step cost while dragging stays flat as the net grows (8x8 to 64x64) at
+// the default density, because only the moved point's support is re-evaluated.
+void BM_DragStepIncrementalByNet(benchmark::State& state) {
+    const int n = static_cast<int>(state.range(0));
+    doc::Document d = drag_scene(n);
+    doc::History history;
+    const std::uint64_t id = d.objects.front().id;
+    const geom::Surface& s = std::get<doc::SurfaceObject>(d.objects.front().shape).surface;
+    const auto [su, sv] = ui::display_samples(s, d.display.density);
+    ui::IncrementalMesh mesh;
+    mesh.update(s, su, sv);
+    double t = 0;
+    for (auto _ : state) {
+        t += 0.01;
+        history.execute(d, doc::move_control_point(id, n / 2, n / 2, {0.1, 0.2, std::sin(t)}));
+        const ui::MeshChange c =
+            mesh.update(std::get<doc::SurfaceObject>(d.objects.front().shape).surface, su, sv);
+        benchmark::DoNotOptimize(c.vertex_count);
+    }
+    state.counters["vertices"] = static_cast<double>(su) * sv;
+}
+BENCHMARK(BM_DragStepIncrementalByNet)->Arg(8)->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMicrosecond);
 
 } // namespace
