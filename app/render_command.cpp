@@ -33,7 +33,8 @@ std::optional<std::vector<double>> numbers(const std::string& text, size_t min, 
     size_t start = 0;
     while (start <= text.size()) {
         const size_t comma = text.find(',', start);
-        const std::string part = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        const std::string part =
+            text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
         std::smatch m;
         if (!std::regex_match(part, m, number)) return std::nullopt;
         out.push_back(std::stod(m[1]));
@@ -77,10 +78,12 @@ std::string configure(const RenderOptions& o, ui::AppContext& ctx) {
         if (!s) return "the scene has no surface for --select or --indicator";
         if (!o.select.empty()) {
             const auto ij = numbers(o.select, 2, 2);
-            const int i = ij ? static_cast<int>((*ij)[0]) : -1, j = ij ? static_cast<int>((*ij)[1]) : -1;
-            if (!ij || (*ij)[0] != i || (*ij)[1] != j || i < 0 || j < 0 || i >= s->n_u || j >= s->n_v)
-                return "--select '" + o.select + "' must be I,J with 0 <= I < " + std::to_string(s->n_u) +
-                       " and 0 <= J < " + std::to_string(s->n_v);
+            const int i = ij ? static_cast<int>((*ij)[0]) : -1,
+                      j = ij ? static_cast<int>((*ij)[1]) : -1;
+            if (!ij || (*ij)[0] != i || (*ij)[1] != j || i < 0 || j < 0 || i >= s->n_u ||
+                j >= s->n_v)
+                return "--select '" + o.select + "' must be I,J with 0 <= I < " +
+                       std::to_string(s->n_u) + " and 0 <= J < " + std::to_string(s->n_v);
             d.selection.i = i;
             d.selection.j = j;
         }
@@ -92,7 +95,8 @@ std::string configure(const RenderOptions& o, ui::AppContext& ctx) {
                 return "--indicator '" + o.indicator + "' must be U,V inside the domain [" +
                        geom::format_number(du.lo) + ", " + geom::format_number(du.hi) + "] x [" +
                        geom::format_number(dv.lo) + ", " + geom::format_number(dv.hi) + "]";
-            d.indicator = {((*uv)[0] - du.lo) / (du.hi - du.lo), ((*uv)[1] - dv.lo) / (dv.hi - dv.lo)};
+            d.indicator = {((*uv)[0] - du.lo) / (du.hi - du.lo),
+                           ((*uv)[1] - dv.lo) / (dv.hi - dv.lo)};
         }
     }
     if (!o.camera.empty()) {
@@ -119,7 +123,8 @@ Action register_render_command(CLI::App& app) {
     sub->add_option("--size", o->size, "picture size WxH (default 1280x800)");
     sub->add_option("--view", o->view, "workstation (all panels) or 3d (the 3D view alone)")
         ->check(CLI::IsMember({"workstation", "3d"}));
-    sub->add_option("--indicator", o->indicator, "position indicator U,V (parameters in the domain)");
+    sub->add_option("--indicator", o->indicator,
+                    "position indicator U,V (parameters in the domain)");
     sub->add_option("--select", o->select, "select control point I,J of the current surface");
     sub->add_option("--style", o->style, "shaded, wireframe or both")
         ->check(CLI::IsMember({"shaded", "wireframe", "both"}));
@@ -138,8 +143,8 @@ Action register_render_command(CLI::App& app) {
         req.output = o->output;
         static const std::regex size_re(R"(^(\d{1,5})x(\d{1,5})$)");
         std::smatch m;
-        if (!std::regex_match(o->size, m, size_re) || std::stoi(m[1]) < 16 || std::stoi(m[2]) < 16 ||
-            std::stoi(m[1]) > 8192 || std::stoi(m[2]) > 8192) {
+        if (!std::regex_match(o->size, m, size_re) || std::stoi(m[1]) < 16 ||
+            std::stoi(m[2]) < 16 || std::stoi(m[1]) > 8192 || std::stoi(m[2]) > 8192) {
             std::cerr << "isoparm render: --size '" << o->size
                       << "' must be WxH between 16x16 and 8192x8192, e.g. 1280x800\n";
             return 2;

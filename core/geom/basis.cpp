@@ -64,7 +64,9 @@ void ders_basis_funs(int span, double t, int p, int d, const Knots& U, double* d
     for (int r = 0; r <= p; ++r) {
         int s1 = 0, s2 = 1;
         std::fill(arow.data(), arow.data() + 2 * w, 0.0);
-        auto AR = [&](int row, int col) -> double& { return arow[static_cast<size_t>(row) * w + col]; };
+        auto AR = [&](int row, int col) -> double& {
+            return arow[static_cast<size_t>(row) * w + col];
+        };
         AR(0, 0) = 1.0;
         for (int k = 1; k <= dmax; ++k) {
             double dv = 0.0;

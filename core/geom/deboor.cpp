@@ -10,8 +10,7 @@ std::optional<glm::dvec3> DeBoorTriangle::cartesian(const HPoint& h) {
     return glm::dvec3(h) / h.w;
 }
 
-DeBoorTriangle deboor_homogeneous(const Knots& U, int p, const std::vector<HPoint>& Pw,
-                                  double t) {
+DeBoorTriangle deboor_homogeneous(const Knots& U, int p, const std::vector<HPoint>& Pw, double t) {
     const int n = static_cast<int>(Pw.size());
     DeBoorTriangle tri;
     tri.span = find_span(U, p, n, t);

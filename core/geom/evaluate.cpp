@@ -53,8 +53,7 @@ std::optional<glm::dvec3> curve_point(const Curve& c, double t) {
     return (*d)[0];
 }
 
-std::optional<SurfaceDerivatives> surface_derivatives(const Surface& s, double u, double v,
-                                                      int d) {
+std::optional<SurfaceDerivatives> surface_derivatives(const Surface& s, double u, double v, int d) {
     assert(d >= 0 && d <= max_derivative_order);
     const int p = s.degree_u, q = s.degree_v;
     const int su = find_span(s.knots_u, p, s.n_u, u);

@@ -21,8 +21,7 @@ std::optional<glm::dvec3> curve_point(const Curve& c, double t);
 struct SurfaceDerivatives {
     std::array<std::array<glm::dvec3, max_derivative_order + 1>, max_derivative_order + 1> D{};
 };
-std::optional<SurfaceDerivatives> surface_derivatives(const Surface& s, double u, double v,
-                                                      int d);
+std::optional<SurfaceDerivatives> surface_derivatives(const Surface& s, double u, double v, int d);
 std::optional<glm::dvec3> surface_point(const Surface& s, double u, double v);
 
 // (S_u x S_v) / |S_u x S_v|; nullopt where the point does not exist or the cross product

@@ -9,9 +9,9 @@ namespace isoparm::geom::kernel {
 // One sample row: vertices j0..j1. Q and dQ hold the row's control net contracted in u (and
 // its u-derivative), 4 doubles (wx, wy, wz, w) per control column.
 struct RowArgs {
-    const double* N;   // (q + 1) basis values per sample column
-    const double* dN;  // (q + 1) first derivatives per sample column
-    const int* first;  // first control column per sample column
+    const double* N;  // (q + 1) basis values per sample column
+    const double* dN; // (q + 1) first derivatives per sample column
+    const int* first; // first control column per sample column
     const double* Q;
     const double* dQ;
     int q;
@@ -19,7 +19,7 @@ struct RowArgs {
     // The row's vertices as x, y, z triples, indexed by sample column. Plain doubles: the
     // AVX2 build must not instantiate inline library code (an ODR hazard across builds).
     double* positions;
-    double* normals; // null: positions only (no derivatives are formed)
+    double* normals;      // null: positions only (no derivatives are formed)
     std::uint8_t* status; // out: 0 done, 1 degenerate normal, 2 point does not exist
 };
 

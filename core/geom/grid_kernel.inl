@@ -7,7 +7,9 @@ namespace {
 typedef double v4d __attribute__((vector_size(32)));
 
 // By reference: returning a vector type from a non-AVX function would change the ABI.
-inline void load4(v4d& v, const double* p) { __builtin_memcpy(&v, p, sizeof v); }
+inline void load4(v4d& v, const double* p) {
+    __builtin_memcpy(&v, p, sizeof v);
+}
 
 template <int Cols>
 inline void contract_point(const isoparm::geom::kernel::RowArgs& a, int j, v4d& A) {
@@ -104,12 +106,24 @@ template <int Cols> void row_impl(const isoparm::geom::kernel::RowArgs& a) {
 
 void dispatch(const isoparm::geom::kernel::RowArgs& a) {
     switch (a.q) {
-    case 1: row_impl<2>(a); break;
-    case 2: row_impl<3>(a); break;
-    case 3: row_impl<4>(a); break;
-    case 4: row_impl<5>(a); break;
-    case 5: row_impl<6>(a); break;
-    default: row_impl<0>(a); break;
+    case 1:
+        row_impl<2>(a);
+        break;
+    case 2:
+        row_impl<3>(a);
+        break;
+    case 3:
+        row_impl<4>(a);
+        break;
+    case 4:
+        row_impl<5>(a);
+        break;
+    case 5:
+        row_impl<6>(a);
+        break;
+    default:
+        row_impl<0>(a);
+        break;
     }
 }
 

@@ -4,5 +4,7 @@
 #include "core/geom/grid_kernel.inl"
 
 namespace isoparm::geom::kernel {
-void row_avx2(const RowArgs& a) { dispatch(a); }
+void row_avx2(const RowArgs& a) {
+    dispatch(a);
+}
 } // namespace isoparm::geom::kernel

@@ -5,7 +5,9 @@
 
 namespace isoparm::geom::kernel {
 
-void row_baseline(const RowArgs& a) { dispatch(a); }
+void row_baseline(const RowArgs& a) {
+    dispatch(a);
+}
 
 void row(const RowArgs& a) {
 #if defined(__x86_64__) && defined(ISOPARM_HAVE_AVX2_KERNEL)

@@ -76,8 +76,8 @@ std::vector<double> homogeneous_net(const Surface& s) {
 } // namespace
 
 GridTessellator::GridTessellator(const Surface& s, int samples_u, int samples_v)
-    : degree_u_(s.degree_u), degree_v_(s.degree_v), n_u_(s.n_u), n_v_(s.n_v),
-      knots_u_(s.knots_u), knots_v_(s.knots_v) {
+    : degree_u_(s.degree_u), degree_v_(s.degree_v), n_u_(s.n_u), n_v_(s.n_v), knots_u_(s.knots_u),
+      knots_v_(s.knots_v) {
     assert(samples_u >= 2 && samples_v >= 2);
     us_ = uniform_params(s.knots_u[s.degree_u], s.knots_u[s.n_u], samples_u);
     vs_ = uniform_params(s.knots_v[s.degree_v], s.knots_v[s.n_v], samples_v);
@@ -86,13 +86,17 @@ GridTessellator::GridTessellator(const Surface& s, int samples_u, int samples_v)
 }
 
 bool GridTessellator::fits(const Surface& s, int samples_u, int samples_v) const {
-    return s.degree_u == degree_u_ && s.degree_v == degree_v_ && s.n_u == n_u_ &&
-           s.n_v == n_v_ && s.knots_u == knots_u_ && s.knots_v == knots_v_ &&
-           samples_u == this->samples_u() && samples_v == this->samples_v();
+    return s.degree_u == degree_u_ && s.degree_v == degree_v_ && s.n_u == n_u_ && s.n_v == n_v_ &&
+           s.knots_u == knots_u_ && s.knots_v == knots_v_ && samples_u == this->samples_u() &&
+           samples_v == this->samples_v();
 }
 
-std::pair<int, int> GridTessellator::rows_touching(int i) const { return touching(tu_, i); }
-std::pair<int, int> GridTessellator::columns_touching(int j) const { return touching(tv_, j); }
+std::pair<int, int> GridTessellator::rows_touching(int i) const {
+    return touching(tu_, i);
+}
+std::pair<int, int> GridTessellator::columns_touching(int j) const {
+    return touching(tv_, j);
+}
 
 void GridTessellator::evaluate_block(const Surface& s, const std::vector<double>& Pw,
                                      glm::dvec3* positions, glm::dvec3* normals,
@@ -112,9 +116,17 @@ void GridTessellator::evaluate_block(const Surface& s, const std::vector<double>
         contract_rows(Nu, dNu, &Pw[static_cast<size_t>(tu_.first[i]) * n_v_ * 4], p, n_v_, c0, c1,
                       Q.data(), normals ? dQ.data() : nullptr);
         const size_t row = static_cast<size_t>(i) * sv;
-        const kernel::RowArgs args{tv_.N.data(), tv_.dN.data(), tv_.first.data(), Q.data(),
-                                   dQ.data(), q, j0, j1, &positions[row].x,
-                                   normals ? &normals[row].x : nullptr, status.data()};
+        const kernel::RowArgs args{tv_.N.data(),
+                                   tv_.dN.data(),
+                                   tv_.first.data(),
+                                   Q.data(),
+                                   dQ.data(),
+                                   q,
+                                   j0,
+                                   j1,
+                                   &positions[row].x,
+                                   normals ? &normals[row].x : nullptr,
+                                   status.data()};
         kernel::row(args);
         for (int j = j0; j <= j1; ++j) {
             const size_t k = row + j;

@@ -25,17 +25,17 @@ Status validate_knots(const Knots& U, int p, int n) {
         if (U[k] < U[k - 1]) {
             return make_error(ErrorCode::knots,
                               "knot vector must be non-decreasing: knot " + std::to_string(k) +
-                                  " (" + format_number(U[k]) + ") < knot " +
-                                  std::to_string(k - 1) + " (" + format_number(U[k - 1]) + ")",
+                                  " (" + format_number(U[k]) + ") < knot " + std::to_string(k - 1) +
+                                  " (" + format_number(U[k - 1]) + ")",
                               pointer_step(static_cast<long>(k)));
         }
         run = U[k] == U[k - 1] ? run + 1 : 1;
         if (run > p + 1) {
-            return make_error(ErrorCode::knots,
-                              "knot " + format_number(U[k]) + " appears " + std::to_string(run) +
-                                  " times; the multiplicity may not exceed degree + 1 = " +
-                                  std::to_string(p + 1),
-                              pointer_step(static_cast<long>(k)));
+            return make_error(
+                ErrorCode::knots,
+                "knot " + format_number(U[k]) + " appears " + std::to_string(run) +
+                    " times; the multiplicity may not exceed degree + 1 = " + std::to_string(p + 1),
+                pointer_step(static_cast<long>(k)));
         }
     }
     if (!(U[p] < U[n])) {

@@ -12,7 +12,9 @@ namespace isoparm::geom {
 Status validate_knots(const Knots& U, int p, int n);
 
 // The parameter domain [U[p], U[n]].
-inline Interval domain(const Knots& U, int p, int n) { return {U[p], U[n]}; }
+inline Interval domain(const Knots& U, int p, int n) {
+    return {U[p], U[n]};
+}
 
 // Piegl & Tiller A2.1 FindSpan, with the protocol's convention: the span s with
 // U[s] <= t < U[s+1] (right limit at interior knots, whatever their multiplicity), except

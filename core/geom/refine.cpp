@@ -93,11 +93,19 @@ HCurve elevate_clamped(const HCurve& in, int t) {
     const std::vector<HPoint>& Pw = in.Pw;
     std::vector<std::vector<double>> bezalfs(ph + 1, std::vector<double>(p + 1, 0.0));
     bezalfs[0][0] = bezalfs[ph][p] = 1.0;
+    // C(p, j) C(t, i - j) / C(ph, i): directly while the binomials fit a double comfortably,
+    // through log-gamma beyond (C(ph, i) overflows near ph = 1030).
+    auto log_binomial = [](int n, int k) {
+        return std::lgamma(n + 1.0) - std::lgamma(k + 1.0) - std::lgamma(n - k + 1.0);
+    };
     for (int i = 1; i <= ph2; ++i) {
         const double inv = 1.0 / binomial(ph, i);
         const int mpi = std::min(p, i);
         for (int j = std::max(0, i - t); j <= mpi; ++j)
-            bezalfs[i][j] = inv * binomial(p, j) * binomial(t, i - j);
+            bezalfs[i][j] =
+                ph <= 1000
+                    ? inv * binomial(p, j) * binomial(t, i - j)
+                    : std::exp(log_binomial(p, j) + log_binomial(t, i - j) - log_binomial(ph, i));
     }
     for (int i = ph2 + 1; i <= ph - 1; ++i) {
         const int mpi = std::min(p, i);

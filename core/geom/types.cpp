@@ -7,10 +7,14 @@ namespace isoparm::geom {
 
 const char* spline_type_name(SplineType type) {
     switch (type) {
-    case SplineType::bezier: return "bezier";
-    case SplineType::rational_bezier: return "rational_bezier";
-    case SplineType::bspline: return "bspline";
-    case SplineType::nurbs: return "nurbs";
+    case SplineType::bezier:
+        return "bezier";
+    case SplineType::rational_bezier:
+        return "rational_bezier";
+    case SplineType::bspline:
+        return "bspline";
+    case SplineType::nurbs:
+        return "nurbs";
     }
     return "nurbs";
 }

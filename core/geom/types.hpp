@@ -26,7 +26,9 @@ using Knots = std::vector<double>;
 
 // Homogeneous point (w*x, w*y, w*z, w), the space where rational algorithms are linear.
 using HPoint = glm::dvec4;
-inline HPoint to_homogeneous(const glm::dvec3& p, double w) { return {p * w, w}; }
+inline HPoint to_homogeneous(const glm::dvec3& p, double w) {
+    return {p * w, w};
+}
 
 struct Curve {
     SplineType type = SplineType::bspline;

@@ -10,14 +10,17 @@ namespace isoparm::geom {
 
 namespace {
 
-std::string idx(long i) { return pointer_step(i); }
+std::string idx(long i) {
+    return pointer_step(i);
+}
 
 Status check_degree(int p, int n, const std::string& path, const char* dir_name) {
     if (p < 1) return make_error(ErrorCode::degree, "the degree must be at least 1", path);
     if (n < p + 1) {
         return make_error(ErrorCode::degree,
-                          std::string("degree ") + std::to_string(p) + dir_name + " needs at least " +
-                              std::to_string(p + 1) + " control points, got " + std::to_string(n),
+                          std::string("degree ") + std::to_string(p) + dir_name +
+                              " needs at least " + std::to_string(p + 1) + " control points, got " +
+                              std::to_string(n),
                           path);
     }
     return Ok{};
@@ -35,7 +38,8 @@ Status check_bezier(const Knots& U, int p, int n, const std::string& degree_path
     for (int k = 0; k <= p; ++k) {
         if (U[k] != U[0] || U[p + 1 + k] != U.back()) {
             return make_error(ErrorCode::knots,
-                              std::string("a Bezier ") + what + " has one span: knots a^(p+1) b^(p+1)",
+                              std::string("a Bezier ") + what +
+                                  " has one span: knots a^(p+1) b^(p+1)",
                               knots_path);
         }
     }
@@ -45,8 +49,9 @@ Status check_bezier(const Knots& U, int p, int n, const std::string& degree_path
 Status check_weights(const std::vector<double>& w, size_t count, bool rational,
                      const std::function<std::string(size_t)>& path_of) {
     if (w.size() != count) {
-        return make_error(ErrorCode::weights, "expected " + std::to_string(count) +
-                                                  " weights, got " + std::to_string(w.size()),
+        return make_error(ErrorCode::weights,
+                          "expected " + std::to_string(count) + " weights, got " +
+                              std::to_string(w.size()),
                           "/weights");
     }
     for (size_t k = 0; k < w.size(); ++k) {
@@ -76,9 +81,9 @@ Status check_points(const std::vector<glm::dvec3>& pts,
 Status validate_curve(const Curve& c) {
     const int p = c.degree, n = c.count();
     if (n > max_points_per_direction) {
-        return make_error(ErrorCode::limit, "too many control points (" + std::to_string(n) +
-                                                " > " + std::to_string(max_points_per_direction) +
-                                                ")",
+        return make_error(ErrorCode::limit,
+                          "too many control points (" + std::to_string(n) + " > " +
+                              std::to_string(max_points_per_direction) + ")",
                           "/points");
     }
     if (Status s = check_degree(p, n, "/degree", ""); !s) return s;
@@ -107,12 +112,13 @@ Status validate_surface(const Surface& s) {
     const int nv = s.n_v;
     auto grid_path = [nv](const char* field) {
         return [field, nv](size_t k) {
-            return std::string(field) + idx(static_cast<long>(k) / nv) + idx(static_cast<long>(k) % nv);
+            return std::string(field) + idx(static_cast<long>(k) / nv) +
+                   idx(static_cast<long>(k) % nv);
         };
     };
     if (Status r = check_points(s.points, grid_path("/points")); !r) return r;
-    if (Status r = check_weights(s.weights, s.points.size(), is_rational(s.type),
-                                 grid_path("/weights"));
+    if (Status r =
+            check_weights(s.weights, s.points.size(), is_rational(s.type), grid_path("/weights"));
         !r)
         return r;
     if (Status r = validate_knots(s.knots_u, s.degree_u, s.n_u); !r)
@@ -120,10 +126,12 @@ Status validate_surface(const Surface& s) {
     if (Status r = validate_knots(s.knots_v, s.degree_v, s.n_v); !r)
         return r.error().under("/knots/1");
     if (is_bezier(s.type)) {
-        if (Status r = check_bezier(s.knots_u, s.degree_u, s.n_u, "/degree/0", "/knots/0", "surface");
+        if (Status r =
+                check_bezier(s.knots_u, s.degree_u, s.n_u, "/degree/0", "/knots/0", "surface");
             !r)
             return r;
-        if (Status r = check_bezier(s.knots_v, s.degree_v, s.n_v, "/degree/1", "/knots/1", "surface");
+        if (Status r =
+                check_bezier(s.knots_v, s.degree_v, s.n_v, "/degree/1", "/knots/1", "surface");
             !r)
             return r;
     }

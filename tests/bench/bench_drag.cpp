@@ -110,6 +110,11 @@ void BM_DragStepIncrementalByNet(benchmark::State& state) {
     }
     state.counters["vertices"] = static_cast<double>(su) * sv;
 }
-BENCHMARK(BM_DragStepIncrementalByNet)->Arg(8)->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_DragStepIncrementalByNet)
+    ->Arg(8)
+    ->Arg(16)
+    ->Arg(32)
+    ->Arg(64)
+    ->Unit(benchmark::kMicrosecond);
 
 } // namespace

@@ -58,7 +58,8 @@ void BM_SinglePoint(benchmark::State& state) {
         const glm::dvec2& p = params[k++ & 4095];
         benchmark::DoNotOptimize(surface_point(s, p.x, p.y));
     }
-    state.counters["points/s"] = benchmark::Counter(1.0, benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["points/s"] =
+        benchmark::Counter(1.0, benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_SinglePoint);
 

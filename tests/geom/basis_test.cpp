@@ -48,8 +48,9 @@ TEST(Basis, PartitionOfUnityAndNonNegativityEverywhere) {
             EXPECT_NEAR(sum, 1.0, 1e-13) << "p=" << p << " t=" << t;
             for (size_t k = 1; k < N.size(); ++k) { // derivatives of a constant sum vanish
                 const double dsum = std::accumulate(N[k].begin(), N[k].end(), 0.0);
-                const double scale = std::accumulate(N[k].begin(), N[k].end(), 0.0,
-                                                     [](double a, double b) { return a + std::abs(b); });
+                const double scale =
+                    std::accumulate(N[k].begin(), N[k].end(), 0.0,
+                                    [](double a, double b) { return a + std::abs(b); });
                 EXPECT_NEAR(dsum, 0.0, 1e-11 * (1 + scale));
             }
         }

@@ -22,7 +22,8 @@ TEST(DeBoor, LastLevelIsTheCurvePointEverywhereIncludingKnots) {
         for (double t : ts) {
             const DeBoorTriangle tri = deboor_curve(c, t);
             ASSERT_EQ(static_cast<int>(tri.levels.size()), p + 1);
-            for (int k = 0; k <= p; ++k) ASSERT_EQ(static_cast<int>(tri.levels[k].size()), p + 1 - k);
+            for (int k = 0; k <= p; ++k)
+                ASSERT_EQ(static_cast<int>(tri.levels[k].size()), p + 1 - k);
             const glm::dvec3 a = *DeBoorTriangle::cartesian(tri.levels[p][0]);
             const glm::dvec3 b = *curve_point(c, t);
             EXPECT_NEAR(glm::length(a - b), 0.0, 1e-11 * (1 + glm::length(b))) << "t=" << t;
@@ -50,7 +51,8 @@ TEST(DeBoor, SurfaceTraceMatchesEvaluation) {
         const Surface s = g.surface(g.integer(1, 4), g.integer(1, 4), 6, 5, trial % 2 == 0);
         const Interval du = domain(s.knots_u, s.degree_u, s.n_u);
         const Interval dv = domain(s.knots_v, s.degree_v, s.n_v);
-        const double u = g.uniform(du.lo, du.hi), v = trial % 5 == 0 ? dv.hi : g.uniform(dv.lo, dv.hi);
+        const double u = g.uniform(du.lo, du.hi),
+                     v = trial % 5 == 0 ? dv.hi : g.uniform(dv.lo, dv.hi);
         const DeBoorSurfaceTrace tr = deboor_surface(s, u, v);
         ASSERT_EQ(static_cast<int>(tr.u_stage.size()), s.n_v);
         EXPECT_EQ(static_cast<int>(tr.v_stage.levels[0].size()), s.degree_v + 1);

@@ -75,14 +75,18 @@ TEST(Evaluate, SurfaceDerivativesMatchFiniteDifferences) {
         for (double k : s.knots_v) bad |= std::abs(k - v) < 3 * h;
         if (bad) continue;
         const auto S = *surface_derivatives(s, u, v, 3);
-        const auto Su = *surface_derivatives(s, u + h, v, 2), Sm = *surface_derivatives(s, u - h, v, 2);
-        const auto Sv = *surface_derivatives(s, u, v + h, 2), Sn = *surface_derivatives(s, u, v - h, 2);
+        const auto Su = *surface_derivatives(s, u + h, v, 2),
+                   Sm = *surface_derivatives(s, u - h, v, 2);
+        const auto Sv = *surface_derivatives(s, u, v + h, 2),
+                   Sn = *surface_derivatives(s, u, v - h, 2);
         for (int a = 0; a <= 2; ++a) {
             for (int b = 0; a + b <= 2; ++b) {
                 const glm::dvec3 fdu = (Su.D[a][b] - Sm.D[a][b]) / (2 * h);
                 const glm::dvec3 fdv = (Sv.D[a][b] - Sn.D[a][b]) / (2 * h);
-                EXPECT_LT(glm::length(fdu - S.D[a + 1][b]) / (1 + glm::length(S.D[a + 1][b])), 1e-4);
-                EXPECT_LT(glm::length(fdv - S.D[a][b + 1]) / (1 + glm::length(S.D[a][b + 1])), 1e-4);
+                EXPECT_LT(glm::length(fdu - S.D[a + 1][b]) / (1 + glm::length(S.D[a + 1][b])),
+                          1e-4);
+                EXPECT_LT(glm::length(fdv - S.D[a][b + 1]) / (1 + glm::length(S.D[a][b + 1])),
+                          1e-4);
             }
         }
     }

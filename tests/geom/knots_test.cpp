@@ -72,7 +72,7 @@ TEST(Knots, SpanAtEndWithRepeatedEndKnot) {
 
 TEST(Knots, MultiplicityIsExact) {
     const Knots U{0, 0, 0, 0.3, 0.1 + 0.2, 1, 1, 1}; // 0.3 < 0.30000000000000004
-    EXPECT_EQ(multiplicity(U, 0.3), 1); // 0.1 + 0.2 != 0.3: never merged silently
+    EXPECT_EQ(multiplicity(U, 0.3), 1);              // 0.1 + 0.2 != 0.3: never merged silently
     EXPECT_EQ(multiplicity(U, 0.0), 3);
 }
 

@@ -91,7 +91,8 @@ TEST(Refine, InsertionErrors) {
     ASSERT_FALSE(m.ok());
     EXPECT_EQ(m.error().code, ErrorCode::multiplicity);
     EXPECT_EQ(m.error().path, "/times");
-    EXPECT_EQ(m.error().message, "inserting 0.5 3 time(s) would make its multiplicity exceed the degree 3");
+    EXPECT_EQ(m.error().message,
+              "inserting 0.5 3 time(s) would make its multiplicity exceed the degree 3");
     auto d = insert_knot(c, 1.5);
     ASSERT_FALSE(d.ok());
     EXPECT_EQ(d.error().code, ErrorCode::domain);
@@ -203,7 +204,8 @@ TEST(Refine, SplitOutsideDomainIsAnError) {
 TEST(Refine, SurfaceOperationsKeepShapeInBothDirections) {
     RandomGeometry g(43);
     for (int trial = 0; trial < 16; ++trial) {
-        const Surface s = g.surface(g.integer(1, 4), g.integer(1, 4), 6, 5, trial % 2 == 0, trial % 4 != 0);
+        const Surface s =
+            g.surface(g.integer(1, 4), g.integer(1, 4), 6, 5, trial % 2 == 0, trial % 4 != 0);
         const Interval du = domain(s.knots_u, s.degree_u, s.n_u);
         const Interval dv = domain(s.knots_v, s.degree_v, s.n_v);
         const Dir dir = trial % 2 ? Dir::u : Dir::v;

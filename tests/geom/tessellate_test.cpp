@@ -14,7 +14,8 @@ using isoparm::testing::RandomGeometry;
 TEST(Tessellate, VerticesAndNormalsMatchEvaluation) {
     RandomGeometry g(51);
     for (int trial = 0; trial < 12; ++trial) {
-        const Surface s = g.surface(g.integer(1, 4), g.integer(1, 4), 7, 6, trial % 2 == 0, trial % 3 != 0);
+        const Surface s =
+            g.surface(g.integer(1, 4), g.integer(1, 4), 7, 6, trial % 2 == 0, trial % 3 != 0);
         const int nu = g.integer(2, 17), nv = g.integer(2, 17);
         const Mesh m = tessellate(s, nu, nv);
         ASSERT_EQ(m.positions.size(), static_cast<size_t>(nu * nv));
@@ -25,7 +26,8 @@ TEST(Tessellate, VerticesAndNormalsMatchEvaluation) {
             for (int j = 0; j < nv; ++j) {
                 const size_t k = static_cast<size_t>(i) * nv + j;
                 EXPECT_LT(glm::length(m.positions[k] - *surface_point(s, us[i], vs[j])), 1e-11);
-                EXPECT_LT(glm::length(m.normals[k] - surface_normal_or_limit(s, us[i], vs[j])), 1e-9);
+                EXPECT_LT(glm::length(m.normals[k] - surface_normal_or_limit(s, us[i], vs[j])),
+                          1e-9);
             }
         }
     }

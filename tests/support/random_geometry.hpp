@@ -27,7 +27,8 @@ struct RandomGeometry {
             std::vector<double> inner;
             while (static_cast<int>(inner.size()) < n - p - 1) {
                 const double t = uniform(a, b);
-                const int m = std::min(integer(1, max_mult), n - p - 1 - static_cast<int>(inner.size()));
+                const int m =
+                    std::min(integer(1, max_mult), n - p - 1 - static_cast<int>(inner.size()));
                 for (int k = 0; k < m; ++k) inner.push_back(t);
             }
             std::sort(inner.begin(), inner.end());

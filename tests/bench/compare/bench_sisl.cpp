@@ -71,7 +71,8 @@ const std::vector<double>& grid_params() {
 }
 
 void set_rate(benchmark::State& state, double points) {
-    state.counters["points/s"] = benchmark::Counter(points, benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["points/s"] =
+        benchmark::Counter(points, benchmark::Counter::kIsIterationInvariantRate);
 }
 
 // --- grid positions ---------------------------------------------------------------------
@@ -256,12 +257,17 @@ void BM_PeakFma(benchmark::State& state) {
     std::uint64_t fmas = 0;
     for (auto _ : state) fmas += isoparm::bench::peak_fma_kernel(1 << 20, &sink);
     benchmark::DoNotOptimize(sink);
-    state.counters["FMA/s"] = benchmark::Counter(static_cast<double>(fmas), benchmark::Counter::kIsRate);
+    state.counters["FMA/s"] =
+        benchmark::Counter(static_cast<double>(fmas), benchmark::Counter::kIsRate);
 }
 
 BENCHMARK(BM_PeakFma);
 BENCHMARK(BM_GridPositions_isoparm)->Arg(8)->Arg(32)->Arg(128)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_GridPositions_sisl_pointwise)->Arg(8)->Arg(32)->Arg(128)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GridPositions_sisl_pointwise)
+    ->Arg(8)
+    ->Arg(32)
+    ->Arg(128)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GridPositions_sisl_grid)->Arg(8)->Arg(32)->Arg(128)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GridNormals_isoparm)->Arg(8)->Arg(32)->Arg(128)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GridNormals_isoparm_2threads)->Arg(32)->Unit(benchmark::kMillisecond)->UseRealTime();
@@ -284,8 +290,10 @@ public:
         for (const Run& r : runs) {
             if (r.run_type == Run::RT_Aggregate && r.aggregate_name != "median") continue;
             std::string name = r.run_name.str();
-            const double t = r.real_accumulated_time / std::max<double>(1, static_cast<double>(r.iterations));
-            const double cpu = r.cpu_accumulated_time / std::max<double>(1, static_cast<double>(r.iterations));
+            const double t =
+                r.real_accumulated_time / std::max<double>(1, static_cast<double>(r.iterations));
+            const double cpu =
+                r.cpu_accumulated_time / std::max<double>(1, static_cast<double>(r.iterations));
             seconds[name] = name.find("2threads") != std::string::npos ? t : cpu;
             for (const auto& [k, c] : r.counters) counters[name + ":" + k] = c.value;
         }
@@ -313,8 +321,9 @@ void print_agreement(int n) {
             dn = std::max(dn, glm::length(nrm[i * grid + j] - glm::dvec3(n3[0], n3[1], n3[2])));
         }
     }
-    std::printf("  %3dx%-3d  max |point difference| %.3g (net size %.3g), max |normal difference| %.3g\n",
-                n, n, dp, scale, dn);
+    std::printf(
+        "  %3dx%-3d  max |point difference| %.3g (net size %.3g), max |normal difference| %.3g\n",
+        n, n, dp, scale, dn);
 }
 
 } // namespace
@@ -343,33 +352,40 @@ int main(int argc, char** argv) {
         return it == collector.seconds.end() || it->second <= 0 ? 0.0 : 1.0 / it->second;
     };
     std::printf("\nSummary (medians; points per second = grid points / time per grid)\n");
-    std::printf("  %-28s %14s %14s %14s %10s %10s\n", "case", "isoparm pts/s", "SISL point", "SISL grid",
-                "vs point", "vs grid");
+    std::printf("  %-28s %14s %14s %14s %10s %10s\n", "case", "isoparm pts/s", "SISL point",
+                "SISL grid", "vs point", "vs grid");
     for (int n : {8, 32, 128}) {
         for (const char* kind : {"GridPositions", "GridNormals"}) {
             const std::string suffix = "/" + std::to_string(n);
             const double ours = grid * grid * rate(std::string("BM_") + kind + "_isoparm" + suffix);
-            const double point = grid * grid * rate(std::string("BM_") + kind + "_sisl_pointwise" + suffix);
-            const double gridr = grid * grid * rate(std::string("BM_") + kind + "_sisl_grid" + suffix);
+            const double point =
+                grid * grid * rate(std::string("BM_") + kind + "_sisl_pointwise" + suffix);
+            const double gridr =
+                grid * grid * rate(std::string("BM_") + kind + "_sisl_grid" + suffix);
             if (ours == 0) continue;
-            std::printf("  %-28s %14.4g %14.4g %14.4g %9.1fx %9.1fx\n",
-                        (std::string(kind) + " " + std::to_string(n) + "x" + std::to_string(n)).c_str(),
-                        ours, point, gridr, point > 0 ? ours / point : 0, gridr > 0 ? ours / gridr : 0);
+            std::printf(
+                "  %-28s %14.4g %14.4g %14.4g %9.1fx %9.1fx\n",
+                (std::string(kind) + " " + std::to_string(n) + "x" + std::to_string(n)).c_str(),
+                ours, point, gridr, point > 0 ? ours / point : 0, gridr > 0 ? ours / gridr : 0);
         }
     }
     const double sp_ours = rate("BM_SinglePoint_isoparm"), sp_sisl = rate("BM_SinglePoint_sisl");
     if (sp_ours > 0)
-        std::printf("  %-28s %14.4g %14.4g %14s %9.1fx\n", "single point (random)", sp_ours, sp_sisl, "",
-                    sp_sisl > 0 ? sp_ours / sp_sisl : 0);
+        std::printf("  %-28s %14.4g %14.4g %14s %9.1fx\n", "single point (random)", sp_ours,
+                    sp_sisl, "", sp_sisl > 0 ? sp_ours / sp_sisl : 0);
     for (const char* op : {"InsertKnot", "ElevateDegree"}) {
-        const double a = rate(std::string("BM_") + op + "_isoparm"), b = rate(std::string("BM_") + op + "_sisl");
+        const double a = rate(std::string("BM_") + op + "_isoparm"),
+                     b = rate(std::string("BM_") + op + "_sisl");
         if (a > 0)
-            std::printf("  %-28s %11.1f us %11.1f us %14s %9.1fx\n", (std::string(op) + " 32x32").c_str(),
-                        1e6 / a, b > 0 ? 1e6 / b : 0.0, "", b > 0 ? a / b : 0);
+            std::printf("  %-28s %11.1f us %11.1f us %14s %9.1fx\n",
+                        (std::string(op) + " 32x32").c_str(), 1e6 / a, b > 0 ? 1e6 / b : 0.0, "",
+                        b > 0 ? a / b : 0);
     }
     const double peak = collector.counters["BM_PeakFma:FMA/s"];
     if (peak > 0) {
-        std::printf("\nCeiling: peak %.3g double multiply-adds per second on one core (AVX2 FMA kernel)\n", peak);
+        std::printf(
+            "\nCeiling: peak %.3g double multiply-adds per second on one core (AVX2 FMA kernel)\n",
+            peak);
         for (int n : {8, 32, 128}) {
             // Per grid point: (q+1) homogeneous (4-wide) multiply-adds in v, plus the row
             // contraction in u amortized over the row: (p+1) * 4 * n_v / samples_v.
@@ -378,10 +394,14 @@ int main(int argc, char** argv) {
             const std::string suffix = "/" + std::to_string(n);
             const double ours_pos = grid * grid * rate("BM_GridPositions_isoparm" + suffix);
             const double ours_nrm = grid * grid * rate("BM_GridNormals_isoparm" + suffix);
-            std::printf("  %3dx%-3d positions: %.1f FMA/point, ceiling %.4g pts/s, isoparm %.4g (%.1fx below)\n",
-                        n, n, pos_fma, peak / pos_fma, ours_pos, ours_pos > 0 ? peak / pos_fma / ours_pos : 0);
-            std::printf("          + normals: %.1f FMA/point, ceiling %.4g pts/s, isoparm %.4g (%.1fx below)\n",
-                        nrm_fma, peak / nrm_fma, ours_nrm, ours_nrm > 0 ? peak / nrm_fma / ours_nrm : 0);
+            std::printf("  %3dx%-3d positions: %.1f FMA/point, ceiling %.4g pts/s, isoparm %.4g "
+                        "(%.1fx below)\n",
+                        n, n, pos_fma, peak / pos_fma, ours_pos,
+                        ours_pos > 0 ? peak / pos_fma / ours_pos : 0);
+            std::printf("          + normals: %.1f FMA/point, ceiling %.4g pts/s, isoparm %.4g "
+                        "(%.1fx below)\n",
+                        nrm_fma, peak / nrm_fma, ours_nrm,
+                        ours_nrm > 0 ? peak / nrm_fma / ours_nrm : 0);
         }
     }
     std::printf("\nAgreement with SISL (same parameters, s1421 point by point):\n");

@@ -10,7 +10,8 @@
 
 namespace {
 
-void BM_RenderScene1280x800(benchmark::State& state, const char* scene, isoparm::ui::ViewMode view) {
+void BM_RenderScene1280x800(benchmark::State& state, const char* scene,
+                            isoparm::ui::ViewMode view) {
     const std::string out = "/tmp/isoparm-bench-render-" + std::to_string(getpid()) + ".png";
     for (auto _ : state) {
         isoparm::ui::HeadlessRequest req;
@@ -28,9 +29,13 @@ void BM_RenderScene1280x800(benchmark::State& state, const char* scene, isoparm:
 
 BENCHMARK_CAPTURE(BM_RenderScene1280x800, workstation_fig3b, "fig3b-weight-5.json",
                   isoparm::ui::ViewMode::workstation)
-    ->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(5);
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(5);
 BENCHMARK_CAPTURE(BM_RenderScene1280x800, view3d_fig8, "fig8-revolution.json",
                   isoparm::ui::ViewMode::view3d_only)
-    ->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(5);
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(5);
 
 } // namespace
