@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cassert>
 
+#include "core/geom/binomial.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/small_buffer.hpp"
 
@@ -116,14 +117,6 @@ std::vector<std::vector<double>> all_basis(const Knots& U, int p, int n, double 
         for (int r = 0; r <= p; ++r) out[k][b.first_index + r] = b.values[k][r];
     return out;
 }
-
-namespace {
-double binomial(int n, int k) {
-    double r = 1.0;
-    for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
-    return r;
-}
-} // namespace
 
 std::optional<std::vector<std::vector<double>>>
 rational_basis(const Knots& U, int p, const std::vector<double>& w, double t, int derivatives) {

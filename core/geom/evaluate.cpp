@@ -7,18 +7,13 @@
 #include <glm/geometric.hpp>
 
 #include "core/geom/basis.hpp"
+#include "core/geom/binomial.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/small_buffer.hpp"
 
 namespace isoparm::geom {
 
 namespace {
-
-double binomial(int n, int k) {
-    double r = 1.0;
-    for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
-    return r;
-}
 
 // |S_u x S_v| below this fraction of max(|S_u|, |S_v|)^2 counts as degenerate. Measured
 // against the larger derivative, not |S_u| |S_v|: at a pole one derivative is rounding noise

@@ -5,6 +5,7 @@
 #include <cassert>
 #include <cmath>
 
+#include "core/geom/binomial.hpp"
 #include "core/geom/knots.hpp"
 
 namespace isoparm::geom {
@@ -76,12 +77,6 @@ HCurve clamp_homogeneous(HCurve c) {
     c = part_after(c, a);
     insert_to_multiplicity(c, b, c.p);
     return part_before(c, b);
-}
-
-double binomial(int n, int k) {
-    double r = 1.0;
-    for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
-    return r;
 }
 
 // Piegl & Tiller A5.9 DegreeElevateCurve on a clamped curve (book indices: n and m are the

@@ -40,7 +40,8 @@ bool large_request(const nlohmann::json& r) {
         if (!(cell > 0)) return false;
         double points = 1;
         for (int k = 0; k < 3; ++k) {
-            if (!(*b)[0].is_array() || !(*b)[1].is_array() || (*b)[0].size() != 3 || (*b)[1].size() != 3)
+            if (!(*b)[0].is_array() || !(*b)[1].is_array() || (*b)[0].size() != 3 ||
+                (*b)[1].size() != 3)
                 return false;
             const double extent = number_or((*b)[1][k], 0) - number_or((*b)[0][k], 0);
             points *= std::abs(extent) / cell + 2;
