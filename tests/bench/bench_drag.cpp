@@ -69,28 +69,8 @@ BENCHMARK(BM_Retessellate32x32)->Unit(benchmark::kMillisecond);
 namespace {
 
 // What the renderer actually does per drag step: the incremental mesh re-evaluates only the
-// grid rows the moved point's basis function reaches.
-void BM_DragStepIncremental32x32(benchmark::State& state) {
-    doc::Document d = drag_scene();
-    doc::History history;
-    const std::uint64_t id = d.objects.front().id;
-    const geom::Surface& s = std::get<doc::SurfaceObject>(d.objects.front().shape).surface;
-    const auto [su, sv] = ui::display_samples(s, d.display.density);
-    ui::IncrementalMesh mesh;
-    mesh.update(s, su, sv);
-    double t = 0;
-    for (auto _ : state) {
-        t += 0.01;
-        history.execute(d, doc::move_control_point(id, 16, 16, {16.0, 16.0, std::sin(t)}));
-        const ui::MeshChange c =
-            mesh.update(std::get<doc::SurfaceObject>(d.objects.front().shape).surface, su, sv);
-        benchmark::DoNotOptimize(c.vertex_count);
-    }
-}
-BENCHMARK(BM_DragStepIncremental32x32)->Unit(benchmark::kMillisecond);
-
-// Issue 8: the per-step cost while dragging stays flat as the net grows (8x8 to 64x64) at
-// the default density, because only the moved point's support is re-evaluated.
+// grid rows the moved point's basis function reaches, so the cost stays flat as the net
+// grows (8x8 to 64x64) at the default density (issue 8).
 void BM_DragStepIncrementalByNet(benchmark::State& state) {
     const int n = static_cast<int>(state.range(0));
     doc::Document d = drag_scene(n);

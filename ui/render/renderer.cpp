@@ -1,6 +1,7 @@
 // The 3D view renderer: mesh cache, surface, line and point passes.
 #include "ui/render/renderer.hpp"
 
+#include <array>
 #include <chrono>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -139,31 +140,40 @@ struct Renderer::Impl {
                 .count();
         ++stats.retessellated;
 
-        glBindBuffer(GL_ARRAY_BUFFER, m.vbo);
         if (full) {
-            glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(verts.size() * sizeof(float)),
-                         verts.data(), GL_DYNAMIC_DRAW);
-            // Element buffers belong to their vertex arrays: fill each through its VAO.
-            glBindVertexArray(m.tri_vao);
-            glBufferData(GL_ELEMENT_ARRAY_BUFFER,
-                         static_cast<GLsizeiptr>(mesh.triangles.size() * 3 * sizeof(std::uint32_t)),
-                         mesh.triangles.data(), GL_DYNAMIC_DRAW);
-            glBindVertexArray(m.wire_vao);
-            glBufferData(GL_ELEMENT_ARRAY_BUFFER,
-                         static_cast<GLsizeiptr>(wire.size() * sizeof(std::uint32_t)), wire.data(),
-                         GL_DYNAMIC_DRAW);
-            glBindVertexArray(0);
-            m.tri_count = static_cast<GLsizei>(mesh.triangles.size() * 3);
-            m.wire_count = static_cast<GLsizei>(wire.size());
+            upload_all(m, verts, mesh.triangles, wire);
         } else {
             // Only the rows the moved points' basis functions reach.
+            glBindBuffer(GL_ARRAY_BUFFER, m.vbo);
             glBufferSubData(GL_ARRAY_BUFFER,
                             static_cast<GLintptr>(change.first_vertex) * 6 * sizeof(float),
                             static_cast<GLsizeiptr>(verts.size() * sizeof(float)), verts.data());
+            glBindBuffer(GL_ARRAY_BUFFER, 0);
         }
-        glBindBuffer(GL_ARRAY_BUFFER, 0);
         m.vertices = static_cast<long>(mesh.positions.size());
         return m;
+    }
+
+    // Vertices, triangles and wire edges of a mesh, replacing what the entry held.
+    static void upload_all(MeshEntry& m, const std::vector<float>& verts,
+                           const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                           const std::vector<std::uint32_t>& wire) {
+        glBindBuffer(GL_ARRAY_BUFFER, m.vbo);
+        glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(verts.size() * sizeof(float)),
+                     verts.data(), GL_DYNAMIC_DRAW);
+        // Element buffers belong to their vertex arrays: fill each through its VAO.
+        glBindVertexArray(m.tri_vao);
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+                     static_cast<GLsizeiptr>(triangles.size() * 3 * sizeof(std::uint32_t)),
+                     triangles.data(), GL_DYNAMIC_DRAW);
+        glBindVertexArray(m.wire_vao);
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+                     static_cast<GLsizeiptr>(wire.size() * sizeof(std::uint32_t)), wire.data(),
+                     GL_DYNAMIC_DRAW);
+        glBindVertexArray(0);
+        glBindBuffer(GL_ARRAY_BUFFER, 0);
+        m.tri_count = static_cast<GLsizei>(triangles.size() * 3);
+        m.wire_count = static_cast<GLsizei>(wire.size());
     }
 
     // A ready-made mesh (implicit objects): everything re-uploaded when its revision changes.
@@ -183,21 +193,7 @@ struct Renderer::Impl {
                 if (a < b) wire.insert(wire.end(), {a, b});
             }
         ++stats.retessellated;
-        glBindBuffer(GL_ARRAY_BUFFER, m.vbo);
-        glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(verts.size() * sizeof(float)),
-                     verts.data(), GL_DYNAMIC_DRAW);
-        glBindVertexArray(m.tri_vao);
-        glBufferData(GL_ELEMENT_ARRAY_BUFFER,
-                     static_cast<GLsizeiptr>(mesh.triangles.size() * 3 * sizeof(std::uint32_t)),
-                     mesh.triangles.data(), GL_DYNAMIC_DRAW);
-        glBindVertexArray(m.wire_vao);
-        glBufferData(GL_ELEMENT_ARRAY_BUFFER,
-                     static_cast<GLsizeiptr>(wire.size() * sizeof(std::uint32_t)), wire.data(),
-                     GL_DYNAMIC_DRAW);
-        glBindVertexArray(0);
-        glBindBuffer(GL_ARRAY_BUFFER, 0);
-        m.tri_count = static_cast<GLsizei>(mesh.triangles.size() * 3);
-        m.wire_count = static_cast<GLsizei>(wire.size());
+        upload_all(m, verts, mesh.triangles, wire);
         m.vertices = static_cast<long>(mesh.positions.size());
         return m;
     }
