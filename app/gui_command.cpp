@@ -4,7 +4,9 @@
 #include <cstdlib>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "ui/render/gl.hpp"
 #define GLFW_INCLUDE_NONE
@@ -13,6 +15,8 @@
 #include <imgui_impl_glfw.h>
 
 #include "app/commands.hpp"
+#include "core/doc/autosave.hpp"
+#include "core/doc/autosave_timer.hpp"
 #include "ui/actions.hpp"
 #include "ui/render/renderer.hpp"
 #include "ui/settings.hpp"
@@ -65,7 +69,44 @@ void on_focus(GLFWwindow* w, int) {
     wake(w);
 }
 
-int run_window(const std::string& scene) {
+// The start-up's candidates for recovery files: the scene asked for, the untitled document
+// and the recent files (recovery file names hash the path, so only known paths can be found).
+std::vector<doc::RecoveryInfo> recovery_offers(const std::string& scene,
+                                               const std::vector<std::string>& recent) {
+    std::vector<std::string> candidates;
+    if (!scene.empty()) candidates.push_back(scene);
+    candidates.push_back("");
+    candidates.insert(candidates.end(), recent.begin(), recent.end());
+    return doc::find_recoveries(candidates);
+}
+
+// One step of autosaving, after every frame: the dialog's answers first, then the timer.
+// A write is a few milliseconds for a scene (serialization, fsync, rename), so it runs on the
+// UI thread; it happens at most once a minute.
+void autosave(ui::AppContext& ctx, doc::AutosaveTimer& timer) {
+    ui::RecoveryPrompt& r = ctx.ui.recovery;
+    for (const std::string& p : r.held) timer.hold(doc::normalized_scene_path(p));
+    r.held.clear();
+    for (const std::string& p : r.restored)
+        timer.wrote(doc::normalized_scene_path(p), doc::document_fingerprint(ctx.doc));
+    r.restored.clear();
+    const std::string path = doc::normalized_scene_path(ctx.file_path);
+    const doc::AutosaveTimer::Step step =
+        timer.poll(doc::AutosaveTimer::Clock::now(), ctx.dirty(), path,
+                   [&ctx] { return doc::document_fingerprint(ctx.doc); });
+    using Kind = doc::AutosaveTimer::Step::Kind;
+    if (step.kind == Kind::write) {
+        if (const geom::Status st = doc::write_recovery(ctx.doc, step.path); st.ok())
+            timer.wrote(step.path, step.fingerprint);
+        else
+            ctx.ui.status = "Autosave failed: " + st.error().message;
+    } else if (step.kind == Kind::discard) {
+        if (const geom::Status st = doc::discard_recovery(step.path); !st.ok())
+            ctx.ui.status = st.error().message;
+    }
+}
+
+int run_window(const std::string& scene, int autosave_seconds) {
     const char* x11 = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     if ((!x11 || !*x11) && (!wayland || !*wayland)) {
@@ -128,6 +169,10 @@ int run_window(const std::string& scene) {
 
             if (!scene.empty() && !ui::open_file(ctx, scene))
                 std::cerr << "isoparm: " << ctx.ui.error_message << "\n";
+            const bool autosaving = autosave_seconds > 0;
+            if (autosaving) ctx.ui.recovery.offers = recovery_offers(scene, ctx.settings.recent);
+            doc::AutosaveTimer timer(doc::AutosaveTimer::Clock::now(),
+                                     std::chrono::seconds(std::max(autosave_seconds, 1)));
 
             std::string title;
             while (!ctx.ui.quit_now) {
@@ -157,7 +202,11 @@ int run_window(const std::string& scene) {
                     glfwSetWindowTitle(window, t.c_str());
                     title = t;
                 }
+                if (autosaving) autosave(ctx, timer);
             }
+            // A normal exit: the unsaved-changes question was answered, the work is safe or
+            // deliberately dropped.
+            if (const std::optional<std::string> p = timer.on_exit()) doc::discard_recovery(*p);
             int w = 0, h = 0;
             glfwGetWindowSize(window, &w, &h);
             ctx.settings.window_width = w;
@@ -178,7 +227,13 @@ Action register_gui_command(CLI::App& app) {
     app.add_option(
         "SCENE", *scene,
         "scene to open in the workstation (default: a shaped 5x5 bicubic NURBS surface)");
-    return [scene]() -> int { return run_window(*scene); };
+    auto autosave_seconds = std::make_shared<int>(60);
+    app.add_option("--autosave-seconds", *autosave_seconds,
+                   "seconds between autosaves of unsaved changes to the recovery file, which the "
+                   "next start offers to restore after a crash (0: no autosave, no offer)")
+        ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
+    return [scene, autosave_seconds]() -> int { return run_window(*scene, *autosave_seconds); };
 }
 
 } // namespace isoparm::app

@@ -7,6 +7,7 @@
 #include <regex>
 
 #include "app/commands.hpp"
+#include "core/doc/patches.hpp"
 #include "core/geom/knots.hpp"
 #include "ui/app_context.hpp"
 #include "ui/doc_access.hpp"
@@ -24,6 +25,7 @@ struct RenderOptions {
     std::string indicator, select, style, camera;
     // Display toggles: 0 = as the scene says, > 0 on, < 0 off (--x / --no-x).
     int points = 0, net = 0, ids = 0, knot_curves = 0, indicator_point = 0, deboor = 0;
+    int deboor_step = -1; // de Boor's construction up to this step (-1: all)
 };
 
 // "a,b[,c]" -> numbers; nullopt when the text is not 2 (or 3) finite numbers.
@@ -89,15 +91,29 @@ std::string configure(const RenderOptions& o, ui::AppContext& ctx) {
         }
         if (!o.indicator.empty()) {
             const auto uv = numbers(o.indicator, 2, 2);
-            const geom::Interval du = geom::domain(s->knots_u, s->degree_u, s->n_u);
-            const geom::Interval dv = geom::domain(s->knots_v, s->degree_v, s->n_v);
+            // Subpatches take the original domain their group tiles (core/doc/patches.hpp).
+            const doc::Object* current = nullptr;
+            ui::current_surface(d, &current);
+            const doc::ParamRect r = doc::tracing_domain(d, *current);
+            const geom::Interval du = r.u, dv = r.v;
             if (!uv || !du.contains((*uv)[0]) || !dv.contains((*uv)[1]))
                 return "--indicator '" + o.indicator + "' must be U,V inside the domain [" +
                        geom::format_number(du.lo) + ", " + geom::format_number(du.hi) + "] x [" +
                        geom::format_number(dv.lo) + ", " + geom::format_number(dv.hi) + "]";
             d.indicator = {((*uv)[0] - du.lo) / (du.hi - du.lo),
                            ((*uv)[1] - dv.lo) / (dv.hi - dv.lo)};
+            doc::follow_indicator(d, current->id);
         }
+    }
+    if (o.deboor_step != -1) {
+        const doc::Object* current = nullptr;
+        const geom::Surface* s = ui::current_surface(d, &current);
+        const int last = s ? s->degree_u + s->degree_v + 1 : 0;
+        if (!s || o.deboor_step < 0 || o.deboor_step > last)
+            return "--deboor-step " + std::to_string(o.deboor_step) + " must be 0.." +
+                   std::to_string(last) + " (p_u + p_v + 1 steps for the current surface)";
+        d.display.deboor = true;
+        ctx.ui.deboor.step = o.deboor_step;
     }
     if (!o.camera.empty()) {
         const auto c = numbers(o.camera, 2, 3);
@@ -137,6 +153,9 @@ Action register_render_command(CLI::App& app) {
     sub->add_flag("--indicator-point,!--no-indicator-point", o->indicator_point,
                   "show / hide the point S(u,v) under the indicator");
     sub->add_flag("--deboor,!--no-deboor", o->deboor, "show / hide de Boor's construction");
+    sub->add_option("--deboor-step", o->deboor_step,
+                    "de Boor's construction up to step N (0: the acting control points; "
+                    "implies --deboor)");
     return [o]() -> int {
         ui::HeadlessRequest req;
         req.scene_path = o->scene;

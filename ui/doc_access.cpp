@@ -1,6 +1,9 @@
 // Document read helpers for panels.
 #include "ui/doc_access.hpp"
 
+#include <algorithm>
+
+#include "core/doc/patches.hpp"
 #include "core/geom/knots.hpp"
 #include "ui/canvas_map.hpp"
 
@@ -62,9 +65,24 @@ geom::Interval domain_v(const geom::Surface& s) {
     return geom::domain(s.knots_v, s.degree_v, s.n_v);
 }
 
-glm::dvec2 indicator_params(const doc::Document& d, const geom::Surface& s) {
-    return {denormalize_param(domain_u(s), d.indicator.x),
-            denormalize_param(domain_v(s), d.indicator.y)};
+glm::dvec2 indicator_params(const doc::Document& d, const doc::Object& surface_object) {
+    const doc::ParamRect r = doc::tracing_domain(d, surface_object);
+    return {denormalize_param(r.u, d.indicator.x), denormalize_param(r.v, d.indicator.y)};
+}
+
+glm::dvec2 indicator_in_own_domain(const doc::Document& d, const doc::Object& surface_object) {
+    const glm::dvec2 uv = indicator_params(d, surface_object);
+    const doc::ParamRect own = doc::surface_domain(*surface_of(surface_object));
+    return {std::clamp(normalize_param(own.u, uv.x), 0.0, 1.0),
+            std::clamp(normalize_param(own.v, uv.y), 0.0, 1.0)};
+}
+
+glm::dvec2 indicator_from_own_domain(const doc::Document& d, const doc::Object& surface_object,
+                                     glm::dvec2 own) {
+    const doc::ParamRect mine = doc::surface_domain(*surface_of(surface_object));
+    const doc::ParamRect all = doc::tracing_domain(d, surface_object);
+    return {normalize_param(all.u, denormalize_param(mine.u, own.x)),
+            normalize_param(all.v, denormalize_param(mine.v, own.y))};
 }
 
 } // namespace isoparm::ui

@@ -5,9 +5,11 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "core/geom/deboor.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/tessellate.hpp"
+#include "ui/deboor_overlay.hpp"
 #include "ui/doc_access.hpp"
 #include "ui/render/implicit_meshes.hpp"
 
@@ -90,7 +92,10 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
 
     LineBatch net{{}, 1.4f * k, true};
     LineBatch knots{{}, 1.6f * k, true};
-    LineBatch knots_multiple{{}, 3.2f * k, true};
+    // Multiplicity shows in the line: single knots thin, double thicker, triple and more
+    // thickest (a C0 or broken join of the surface).
+    LineBatch knots_double{{}, 3.0f * k, true};
+    LineBatch knots_full{{}, 4.6f * k, true};
     LineBatch curves{{}, 2.2f * k, true};
     LineBatch box{{}, 1.2f * k, true};
     // Many points (a 32x32 net) would bury the surface: they shrink with their number.
@@ -137,7 +142,9 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
                     for (const geom::KnotRun& r : geom::knot_runs(s->knots(dir))) {
                         if (r.value < dom.lo || r.value > dom.hi) continue;
                         const bool interior = r.value > dom.lo && r.value < dom.hi;
-                        LineBatch& b = interior && r.multiplicity > 1 ? knots_multiple : knots;
+                        LineBatch& b = !interior || r.multiplicity == 1 ? knots
+                                       : r.multiplicity == 2            ? knots_double
+                                                                        : knots_full;
                         for (const auto& piece : iso_curve(*s, dir, r.value, 97))
                             Overlay::add_polyline(b, piece, to_vec4(col.knot_curves));
                     }
@@ -191,8 +198,9 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
     LineBatch iso{{}, 1.6f * k, true};
     PointBatch indicator{{}, 14.f * k, true, true};
     if (disp.indicator_point) {
-        if (const geom::Surface* s = current_surface(d)) {
-            const glm::dvec2 uv = indicator_params(d, *s);
+        const doc::Object* current = nullptr;
+        if (const geom::Surface* s = current_surface(d, &current)) {
+            const glm::dvec2 uv = indicator_params(d, *current);
             const glm::vec4 ic = to_vec4(col.indicator);
             for (const auto& piece : iso_curve(*s, geom::Dir::u, uv.x, 97))
                 Overlay::add_polyline(iso, piece, with_alpha(ic, 0.55f));
@@ -204,6 +212,7 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
     }
 
     LineBatch guide{{}, 1.5f * k, false};
+    Overlay deboor;
     if (style.guide_axis >= 0) {
         glm::dvec3 dir(0);
         dir[style.guide_axis] = 1;
@@ -214,10 +223,23 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
         guide.vertices.push_back({glm::vec3(style.guide_point + dir * len), gc});
     }
 
-    for (LineBatch* b : {&knots, &knots_multiple, &curves, &net, &box, &iso, &guide})
+    // De Boor's construction at the indicator, up to the step the lecture has reached.
+    if (disp.deboor) {
+        const doc::Object* current = nullptr;
+        if (const geom::Surface* s = current_surface(d, &current)) {
+            const glm::dvec2 uv = indicator_params(d, *current);
+            add_deboor_overlay(geom::deboor_surface(*s, uv.x, uv.y), s->degree_u, s->degree_v,
+                               style.deboor_step, k, deboor);
+        }
+    }
+
+    for (LineBatch* b : {&knots, &knots_double, &knots_full, &curves, &net, &box, &iso, &guide})
         if (!b->vertices.empty()) out.overlay.lines.push_back(std::move(*b));
     for (PointBatch* b : {&points, &indicator, &selected})
         if (!b->points.empty()) out.overlay.points.push_back(std::move(*b));
+    // Last, so the construction draws over the net and the indicator.
+    for (LineBatch& b : deboor.lines) out.overlay.lines.push_back(std::move(b));
+    for (PointBatch& b : deboor.points) out.overlay.points.push_back(std::move(b));
     return out;
 }
 

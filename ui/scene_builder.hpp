@@ -19,6 +19,7 @@ struct SceneStyle {
     float scale = 1;     // line widths and point sizes (HiDPI, presentation)
     int guide_axis = -1; // an axis-constrained drag shows its axis through guide_point
     glm::dvec3 guide_point{0};
+    int deboor_step = -1; // de Boor's construction up to this step (-1: all); deboor_overlay.hpp
 };
 
 struct BuiltScene {

@@ -10,6 +10,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "core/doc/autosave.hpp"
 #include "core/geom/types.hpp"
 #include "ui/canvas_map.hpp"
 #include "ui/layout.hpp"
@@ -88,6 +89,62 @@ struct ImplicitForm {
     int preset = 0;           // the presets combo's choice
 };
 
+// The start-up's offer to restore autosaved work (set by the window only, never headless),
+// and the answers the window's autosave timer picks up (ui/recovery.hpp).
+struct RecoveryPrompt {
+    std::vector<doc::RecoveryInfo> offers; // newest first; the dialog asks about the first
+    std::vector<std::string> restored;     // origins whose recovery file now backs the document
+    std::vector<std::string> held;         // origins the user will decide about at a later start
+};
+
+// The curve designer panel and the Construct dialog (ui/panels/curve_designer_panel.cpp,
+// construct_menu.cpp): gestures in progress and the fields of their forms.
+struct CurveDesignerState {
+    int view_plane = 0;  // a 3D curve's canvas plane: 0 xy, 1 xz, 2 yz
+    int drag_point = -1; // control point being dragged on the canvas, -1 none
+    PlaneMap frozen;     // the canvas framing kept during a drag
+    glm::dvec2 grab{0};  // mouse minus the point at the press, in pixels
+    glm::dvec2 press{0}; // the mouse at the press: a click that does not move moves nothing
+    // The canvas keeps its framing (world box) while the points stay inside it, so adding a
+    // point does not shift the picture under the mouse.
+    std::uint64_t frame_object = 0;
+    int frame_plane = -1;
+    glm::dvec2 frame_lo{0}, frame_hi{0};
+    int drag_knot = -1;                       // knot being dragged on the knot strip, -1 none
+    bool trace = true;                        // show de Boor's construction at trace_t
+    double trace_t = 0.4;                     // normalised to [0, 1] over the domain
+    double insert_t = 0.5;                    // knot insertion parameter (normalised)
+    bool carry_points = true;                 // changing the plane moves the drawing into it
+    float primitive[6] = {0, 0, 1, 0, 90, 0}; // centre a, b; radius; start, end degrees; unused
+    float line_end[4] = {-1, 0, 1, 0};        // line from (a, b) to (a, b) in the plane
+    std::string message;                      // the last refusal, shown in the panel
+    // Construct dialog.
+    int construct_kind = -1; // doc::Construction to run; -1 closed
+    bool construct_open = false;
+    std::vector<std::uint64_t> chosen; // curves in order
+    double angle = 360, swing_scale = 1;
+    int skin_degree = 0, parametrization = 0, sections = 16;
+    std::string note; // the last construction's report (deviation, parameters, compatibility)
+};
+
+// De Boor's construction shown one level at a time (issue 5): the u-stage's levels over all
+// rows, then the v-stage's. step -1 shows everything; 0 only the control points.
+struct DeBoorPlayer {
+    int step = -1;
+    bool playing = false;
+    double next_time = 0; // when the animation takes its next step (seconds, window clock)
+    double seconds_per_step = 0.9;
+    bool show_tab = false; // bring the de Boor tab forward once (D toggled it on)
+};
+
+// A knot tick held in the tracing panel: the run of copies it moves.
+struct KnotDrag {
+    bool active = false;
+    geom::Dir dir = geom::Dir::u;
+    int first = 0, count = 1;
+    std::uint64_t object = 0;
+};
+
 // A key press from the platform, kept until the next frame handles it (ImGui 1.86 polls key
 // state once per frame and misses a press and release that fall between two frames).
 struct KeyPress {
@@ -114,6 +171,8 @@ struct UiState {
     TransformSliders sliders;
     PlaneDrag plane_drag;
     bool indicator_drag = false;
+    KnotDrag knot_drag;
+    DeBoorPlayer deboor;
 
     NewSurfaceForm new_surface;
     FileDialog file_dialog;
@@ -129,6 +188,8 @@ struct UiState {
     std::string status;  // last message (errors of refused edits)
     HeatMapCache heat;
     ImplicitForm implicit;
+    RecoveryPrompt recovery;
+    CurveDesignerState curve;
 
     float scale() const { return content_scale * (presentation ? 1.5f : 1.0f); }
 };

@@ -17,6 +17,7 @@
 #include "ui/render/implicit_meshes.hpp"
 #include "ui/render/renderer.hpp"
 #include "ui/scene_builder.hpp"
+#include "ui/surface_actions.hpp"
 #include "ui/theme.hpp"
 
 namespace isoparm::ui {
@@ -137,7 +138,22 @@ void Workstation::layout_panels() {
 
     if (begin_panel("Tracing: domain and knots", l.left[0])) draw_tracing_panel(ctx_);
     ImGui::End();
-    if (begin_panel("Basis function (partition of unity)", l.left[1])) draw_basis_plot_panel(ctx_);
+    // The basis functions and de Boor's construction share the slot as tabs; D (de Boor on)
+    // brings its tab forward.
+    if (begin_panel("Basis and de Boor", l.left[1], ImGuiWindowFlags_NoTitleBar) &&
+        ImGui::BeginTabBar("##left_tabs")) {
+        if (ImGui::BeginTabItem("Basis functions")) {
+            draw_basis_plot_panel(ctx_);
+            ImGui::EndTabItem();
+        }
+        const ImGuiTabItemFlags bring = ui.deboor.show_tab ? ImGuiTabItemFlags_SetSelected : 0;
+        ui.deboor.show_tab = false;
+        if (ImGui::BeginTabItem("de Boor", nullptr, bring)) {
+            draw_deboor_panel(ctx_);
+            ImGui::EndTabItem();
+        }
+        ImGui::EndTabBar();
+    }
     ImGui::End();
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2, 2));
     // The 3D image covers the panel: its window background would only be overdrawn.
@@ -151,6 +167,8 @@ void Workstation::layout_panels() {
     const doc::Object* sel = ctx_.doc.selected();
     if (sel && std::holds_alternative<doc::ImplicitObject>(sel->shape)) {
         if (begin_panel("Implicit surface", l.right[0])) draw_implicit_panel(ctx_);
+    } else if (sel && std::holds_alternative<doc::CurveObject>(sel->shape)) {
+        if (begin_panel("Curve designer", l.right[0])) draw_curve_designer_panel(ctx_);
     } else {
         if (begin_panel("Control point", l.right[0])) draw_control_point_panel(ctx_);
     }
@@ -179,6 +197,12 @@ void Workstation::frame(unsigned target_framebuffer) {
     // Between gestures (nothing held, no field being edited) the next edit is a new undo step.
     if (!ImGui::IsAnyItemActive() && !ImGui::IsAnyMouseDown()) ctx_.seal();
     normalize_selection(ctx_.doc);
+    // Whenever de Boor's construction is switched on (menu, key, a loaded scene), its tab
+    // comes forward.
+    if (ctx_.doc.display.deboor && !deboor_was_on_) ui.deboor.show_tab = true;
+    deboor_was_on_ = ctx_.doc.display.deboor;
+    // De Boor's animation steps on a clock; frames keep coming while it plays.
+    if (deboor_tick(ctx_, ImGui::GetTime()) && !ui.headless) glfwPostEmptyEvent();
     ui.implicit.dragging = false; // set again by the implicit panel while a slider is held
 
     if (ui.view_mode == ViewMode::workstation) {
@@ -187,6 +211,7 @@ void Workstation::frame(unsigned target_framebuffer) {
         layout_panels();
         draw_status_bar(ctx_);
         draw_dialogs(ctx_);
+        draw_construct_dialog(ctx_);
     } else {
         const ImGuiViewport* vp = ImGui::GetMainViewport();
         ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
@@ -202,6 +227,7 @@ void Workstation::frame(unsigned target_framebuffer) {
     // The 3D view into its texture, with the camera and document of this very frame.
     SceneStyle style;
     style.scale = scale;
+    style.deboor_step = ui.deboor.step;
     if (ui.drag.kind == ViewDrag::Kind::point && ui.drag.axis >= 0) {
         style.guide_axis = ui.drag.axis;
         style.guide_point = ui.drag.start;

@@ -46,6 +46,7 @@ private:
     std::unique_ptr<Renderer> renderer_;
     std::unique_ptr<ImplicitMeshes> implicit_;
     bool presentation_built_ = false;
+    bool deboor_was_on_ = false; // to bring the de Boor tab forward when it is switched on
 };
 
 } // namespace isoparm::ui

@@ -2,6 +2,7 @@
 // writes through save_scene.
 #include "core/doc/autosave.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
@@ -66,6 +67,13 @@ geom::Expected<std::string> recovery_directory() {
                                    "HOME is set");
 }
 
+std::string normalized_scene_path(const std::string& path) {
+    if (path.empty()) return path;
+    std::error_code ec;
+    const fs::path absolute = fs::absolute(path, ec);
+    return ec ? path : absolute.lexically_normal().string();
+}
+
 geom::Expected<std::string> recovery_path(const std::string& for_path) {
     auto dir = recovery_directory();
     if (!dir) return dir.error();
@@ -101,11 +109,27 @@ std::optional<RecoveryInfo> find_recovery(const std::string& for_path) {
     if (::stat(path->c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return std::nullopt;
     RecoveryInfo info;
     info.path = *path;
+    info.origin = for_path;
     info.written = modified(st);
     struct stat scene {};
     if (!for_path.empty() && ::stat(for_path.c_str(), &scene) == 0)
         info.older_than_scene = modified(scene) > info.written;
     return info;
+}
+
+std::vector<RecoveryInfo> find_recoveries(const std::vector<std::string>& candidates) {
+    std::vector<RecoveryInfo> out;
+    for (const std::string& c : candidates) {
+        std::optional<RecoveryInfo> r = find_recovery(c);
+        if (!r) continue;
+        const bool seen = std::any_of(out.begin(), out.end(),
+                                      [&](const RecoveryInfo& o) { return o.path == r->path; });
+        if (!seen) out.push_back(std::move(*r));
+    }
+    std::stable_sort(out.begin(), out.end(), [](const RecoveryInfo& a, const RecoveryInfo& b) {
+        return a.written > b.written;
+    });
+    return out;
 }
 
 geom::Status discard_recovery(const std::string& for_path) {

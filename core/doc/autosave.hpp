@@ -5,6 +5,7 @@
 #include <chrono>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/doc/document.hpp"
 #include "core/geom/status.hpp"
@@ -34,6 +35,7 @@ geom::Status write_recovery(const Document& doc, const std::string& for_path);
 
 struct RecoveryInfo {
     std::string path;                              // the recovery file (load it with load_scene)
+    std::string origin;                            // the scene path it recovers ("" untitled)
     std::chrono::system_clock::time_point written; // when it was last written
     // The scene file's own modification time is later than the recovery file's: the user
     // saved after the last autosave (and discarding failed), so the recovery is likely stale.
@@ -43,6 +45,16 @@ struct RecoveryInfo {
 // The recovery file of `for_path`, if one exists (a regular file). The caller decides what
 // to offer: "restore the unsaved changes from <written>?".
 std::optional<RecoveryInfo> find_recovery(const std::string& for_path);
+
+// The recovery files of the given scene paths ("" = untitled), each file once (two spellings
+// of one scene name one file), newest first: what a start-up offers to restore. `origin` is the
+// candidate as given. The recovery file names hash the path, so only paths the caller knows
+// (the scene on the command line, the untitled one, the recent files) can be found.
+std::vector<RecoveryInfo> find_recoveries(const std::vector<std::string>& candidates);
+
+// `path` as recovery files name it: absolute and lexically normal ("" stays ""); falls back
+// to `path` itself when it cannot be made absolute.
+std::string normalized_scene_path(const std::string& path);
 
 // Removes the recovery file of `for_path` (after a successful save, after the user declined
 // to restore, or on a clean exit). No file is not an error; failing to remove one is

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "core/doc/commands_common.hpp"
+#include "core/doc/patches.hpp"
 #include "core/geom/knots.hpp"
 
 namespace isoparm::doc {
@@ -221,6 +222,16 @@ private:
 };
 
 // ---------------------------------------------------------------------------------------
+// A drag's neighbour changes: the first recorded value of each point is the one undo needs.
+void merge_changes(std::vector<PointChange>& mine, const std::vector<PointChange>& next) {
+    for (const PointChange& c : next) {
+        const bool known = std::any_of(mine.begin(), mine.end(), [&](const PointChange& m) {
+            return m.object == c.object && m.i == c.i && m.j == c.j;
+        });
+        if (!known) mine.push_back(c);
+    }
+}
+
 class MoveControlPoint final : public Command {
 public:
     MoveControlPoint(std::uint64_t id, int i, int j, glm::dvec3 p) : id_(id), i_(i), j_(j), p_(p) {}
@@ -238,12 +249,15 @@ public:
         curve_ = ref->curve != nullptr;
         old_ = ref->position();
         ref->position() = p_;
+        // Subpatches: the neighbours follow so the borders stay closed / smooth (issue 5).
+        if (!curve_) neighbours_ = keep_continuity(doc, id_, i_, j_, doc.continuity);
         return geom::Ok{};
     }
 
     void revert(Document& doc) override {
         Object* obj = doc.find(id_);
         assert(obj);
+        restore_points(doc, neighbours_);
         control_point(*obj, i_, j_)->position() = old_;
     }
 
@@ -251,7 +265,12 @@ public:
         auto* m = dynamic_cast<const MoveControlPoint*>(&next);
         if (!m || m->id_ != id_ || m->i_ != i_ || m->j_ != j_) return false;
         p_ = m->p_; // old_ stays: the position before the whole drag
+        merge_changes(neighbours_, m->neighbours_);
         return true;
+    }
+
+    std::size_t memory_bytes() const override {
+        return sizeof(*this) + neighbours_.capacity() * sizeof(PointChange);
     }
 
     std::string label() const override {
@@ -263,6 +282,7 @@ private:
     int i_, j_;
     glm::dvec3 p_, old_{0};
     bool curve_ = false;
+    std::vector<PointChange> neighbours_;
 };
 
 class SetWeight final : public Command {
@@ -292,12 +312,14 @@ public:
                               "/weight");
         old_ = ref->weight();
         ref->weight() = w_;
+        if (!curve_) neighbours_ = keep_continuity(doc, id_, i_, j_, doc.continuity);
         return geom::Ok{};
     }
 
     void revert(Document& doc) override {
         Object* obj = doc.find(id_);
         assert(obj);
+        restore_points(doc, neighbours_);
         control_point(*obj, i_, j_)->weight() = old_;
     }
 
@@ -305,7 +327,12 @@ public:
         auto* m = dynamic_cast<const SetWeight*>(&next);
         if (!m || m->id_ != id_ || m->i_ != i_ || m->j_ != j_) return false;
         w_ = m->w_;
+        merge_changes(neighbours_, m->neighbours_);
         return true;
+    }
+
+    std::size_t memory_bytes() const override {
+        return sizeof(*this) + neighbours_.capacity() * sizeof(PointChange);
     }
 
     std::string label() const override {
@@ -318,12 +345,13 @@ private:
     int i_, j_;
     double w_, old_ = 1;
     bool curve_ = false;
+    std::vector<PointChange> neighbours_;
 };
 
 class SetKnot final : public Command {
 public:
-    SetKnot(std::uint64_t id, Dir dir, int k, double value)
-        : id_(id), dir_(dir), k_(k), value_(value) {}
+    SetKnot(std::uint64_t id, Dir dir, int k, int count, double value)
+        : id_(id), dir_(dir), k_(k), count_(count), value_(value) {}
 
     geom::Status apply(Document& doc) override {
         auto found = detail::find_object(doc, id_);
@@ -355,6 +383,19 @@ public:
                               "knot index " + std::to_string(k_) + " is outside 0.." +
                                   std::to_string(m - 1),
                               "/k");
+        const int last = k_ + count_ - 1;
+        if (count_ < 1 || last >= m)
+            return make_error(ErrorCode::schema,
+                              "a run of " + std::to_string(count_) + " knots from index " +
+                                  std::to_string(k_) + " does not fit in 0.." +
+                                  std::to_string(m - 1),
+                              "/count");
+        for (int q = k_ + 1; q <= last; ++q)
+            if ((*U)[q] != (*U)[k_])
+                return make_error(ErrorCode::schema,
+                                  "knots " + std::to_string(k_) + ".." + std::to_string(last) +
+                                      " are not copies of one knot (a run to move together)",
+                                  "/count");
         if (!std::isfinite(value_))
             return make_error(ErrorCode::knots,
                               "knot " + name + " must be a finite number, got " +
@@ -363,11 +404,11 @@ public:
         const geom::Knots& K = *U;
         const bool clamped_start = K[0] == K[p];
         const bool clamped_end = K[n] == K[m - 1];
-        if ((clamped_start && k_ <= p) || (clamped_end && k_ >= n))
+        if ((clamped_start && k_ <= p) || (clamped_end && last >= n))
             return make_error(ErrorCode::knots,
                               "knot " + name + " is a clamped end knot and cannot move", "/value");
         const double lo = k_ > 0 ? K[k_ - 1] : -INFINITY;
-        const double hi = k_ + 1 < m ? K[k_ + 1] : INFINITY;
+        const double hi = last + 1 < m ? K[last + 1] : INFINITY;
         if (value_ < lo || value_ > hi)
             return make_error(ErrorCode::knots,
                               "knot " + name + " must stay between its neighbours [" +
@@ -375,35 +416,40 @@ public:
                                   "], got " + geom::format_number(value_),
                               "/value");
         geom::Knots moved = K;
-        moved[k_] = value_;
+        std::fill(moved.begin() + k_, moved.begin() + last + 1, value_);
         if (auto st = geom::validate_knots(moved, p, n); !st)
             return make_error(ErrorCode::knots,
                               "moving knot " + name + " to " + geom::format_number(value_) +
                                   " is not allowed: " + st.error().message,
                               "/value");
         old_ = K[k_];
-        (*U)[k_] = value_;
+        std::fill(U->begin() + k_, U->begin() + last + 1, value_);
         return geom::Ok{};
     }
 
     void revert(Document& doc) override {
         Object* obj = doc.find(id_);
         assert(obj);
-        if (auto* s = std::get_if<SurfaceObject>(&obj->shape))
-            (dir_ == Dir::u ? s->surface.knots_u : s->surface.knots_v)[k_] = old_;
-        else
-            std::get<CurveObject>(obj->shape).curve.knots[k_] = old_;
+        geom::Knots& U = [&]() -> geom::Knots& {
+            if (auto* s = std::get_if<SurfaceObject>(&obj->shape))
+                return dir_ == Dir::u ? s->surface.knots_u : s->surface.knots_v;
+            return std::get<CurveObject>(obj->shape).curve.knots;
+        }();
+        std::fill(U.begin() + k_, U.begin() + k_ + count_, old_);
     }
 
     bool merge_with(const Command& next) override {
         auto* m = dynamic_cast<const SetKnot*>(&next);
-        if (!m || m->id_ != id_ || m->dir_ != dir_ || m->k_ != k_) return false;
+        if (!m || m->id_ != id_ || m->dir_ != dir_ || m->k_ != k_ || m->count_ != count_)
+            return false;
         value_ = m->value_;
         return true;
     }
 
     std::string label() const override {
-        return "Set knot " + label_name() + " = " + geom::format_number(value_);
+        std::string s = "Set knot " + label_name() + " = " + geom::format_number(value_);
+        if (count_ > 1) s += " (" + std::to_string(count_) + " copies)";
+        return s;
     }
 
 private:
@@ -413,7 +459,7 @@ private:
 
     std::uint64_t id_;
     Dir dir_;
-    int k_;
+    int k_, count_;
     double value_, old_ = 0;
     bool curve_ = false;
 };
@@ -566,7 +612,11 @@ std::unique_ptr<Command> set_weight(std::uint64_t id, int i, int j, double weigh
     return std::make_unique<SetWeight>(id, i, j, weight);
 }
 std::unique_ptr<Command> set_knot(std::uint64_t id, geom::Dir dir, int k, double value) {
-    return std::make_unique<SetKnot>(id, dir, k, value);
+    return std::make_unique<SetKnot>(id, dir, k, 1, value);
+}
+std::unique_ptr<Command> move_knot_run(std::uint64_t id, geom::Dir dir, int k, int count,
+                                       double value) {
+    return std::make_unique<SetKnot>(id, dir, k, count, value);
 }
 std::unique_ptr<Command> transform_object(std::uint64_t id, const glm::dmat4& m) {
     return std::make_unique<TransformObject>(id, m, std::string());

@@ -28,6 +28,11 @@ std::unique_ptr<Command> set_weight(std::uint64_t id, int i, int j, double weigh
 // Knot k of direction dir (curves: Dir::u) moves to value; it must stay within its
 // neighbours and keep the knot vector valid (error `knots`).
 std::unique_ptr<Command> set_knot(std::uint64_t id, geom::Dir dir, int k, double value);
+// The same for a knot of multiplicity `count` (indices k .. k + count - 1, all equal): the
+// copies move together, so dragging a double knot keeps it double ("/count" if they are not
+// one run).
+std::unique_ptr<Command> move_knot_run(std::uint64_t id, geom::Dir dir, int k, int count,
+                                       double value);
 // Affine map of every control point (the paper's translate / rotate sliders). The matrix
 // must be finite and affine (bottom row 0 0 0 1; error `schema`, path "/matrix"). Consecutive
 // transforms of the same object merge; redo restores exactly the points the drag produced.

@@ -5,6 +5,7 @@
 
 #include "core/doc/commands.hpp"
 #include "core/doc/commands_common.hpp"
+#include "core/doc/patches.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/refine.hpp"
 #include "core/geom/validate.hpp"
@@ -88,27 +89,30 @@ const char* dir_name(Dir d) {
 }
 
 // ---------------------------------------------------------------------------------------
-// Knot insertion (Boehm; Piegl & Tiller A5.1 through geom::insert_knot).
-class InsertKnot final : public Command {
+// What knot insertion and degree elevation share: the object's shape is replaced by a refined
+// one of the same kind, and a selected control point follows into the new net (forward) and
+// back on undo (backward).
+class RefineInPlace : public Command {
 public:
-    InsertKnot(std::uint64_t id, Dir dir, double t, int times)
-        : id_(id), dir_(dir), t_(t), times_(times) {}
+    RefineInPlace(std::uint64_t id, Dir dir, int times, const char* what)
+        : id_(id), dir_(dir), times_(times), what_(what) {}
 
     geom::Status apply(Document& doc) override {
-        auto found = refinable(doc, id_, dir_, "knot insertion");
+        auto found = refinable(doc, id_, dir_, what_);
         if (!found) return found.error();
         Object& obj = **found;
         if (times_ < 1)
             return make_error(ErrorCode::schema,
                               "times must be at least 1, got " + std::to_string(times_), "/times");
+        if (auto st = precheck_size(obj.shape); !st) return st;
         Shape result;
         if (auto* s = std::get_if<SurfaceObject>(&obj.shape)) {
-            auto r = geom::insert_knot(s->surface, dir_, t_, times_);
+            auto r = refine(s->surface);
             if (!r) return r.error();
             result = SurfaceObject{std::move(r).value()};
         } else {
             const auto& c = std::get<CurveObject>(obj.shape);
-            auto r = geom::insert_knot(c.curve, t_, times_);
+            auto r = refine(c.curve);
             if (!r) return r.error();
             result = CurveObject{std::move(r).value(), c.plane};
         }
@@ -135,6 +139,40 @@ public:
         obj->shape = before_;
     }
 
+    std::size_t memory_bytes() const override {
+        return sizeof(*this) + detail::shape_bytes(before_);
+    }
+
+protected:
+    virtual geom::Expected<geom::Surface> refine(const geom::Surface& s) const = 0;
+    virtual geom::Expected<geom::Curve> refine(const geom::Curve& c) const = 0;
+    // The selected point's index in the new line, and back: by default the control point
+    // with the nearest Greville abscissa.
+    virtual int forward(const Line& old_line, const Line& new_line, int i) const {
+        return nearest_greville(new_line, greville(old_line, i));
+    }
+    virtual int backward(const Line& old_line, const Line& new_line, int i) const {
+        return nearest_greville(old_line, greville(new_line, i));
+    }
+    // A refusal before any allocation (the result's size can be known in advance).
+    virtual geom::Status precheck_size(const Shape&) const { return geom::Ok{}; }
+
+    std::uint64_t id_;
+    Dir dir_;
+    int times_;
+    const char* what_;
+    bool curve_ = false;
+    Shape before_;
+    Selection sel_before_, sel_after_;
+};
+
+// ---------------------------------------------------------------------------------------
+// Knot insertion (Boehm; Piegl & Tiller A5.1 through geom::insert_knot).
+class InsertKnot final : public RefineInPlace {
+public:
+    InsertKnot(std::uint64_t id, Dir dir, double t, int times)
+        : RefineInPlace(id, dir, times, "knot insertion"), t_(t) {}
+
     std::string label() const override {
         std::string s = std::string("Insert knot ") + (curve_ ? "t" : dir_name(dir_)) + " = " +
                         geom::format_number(t_);
@@ -142,15 +180,17 @@ public:
         return s;
     }
 
-    std::size_t memory_bytes() const override {
-        return sizeof(*this) + detail::shape_bytes(before_);
-    }
-
 private:
+    geom::Expected<geom::Surface> refine(const geom::Surface& s) const override {
+        return geom::insert_knot(s, dir_, t_, times_);
+    }
+    geom::Expected<geom::Curve> refine(const geom::Curve& c) const override {
+        return geom::insert_knot(c, t_, times_);
+    }
     // Piegl & Tiller A5.1: with k the span of t (last knot <= t) and s its multiplicity,
     // Q[i] = P[i] for i <= k - p and Q[i + r] = P[i] for i >= k - s; the points between are
     // replaced, and go to the new point with the nearest Greville abscissa.
-    int forward(const Line& old_line, const Line& new_line, int i) const {
+    int forward(const Line& old_line, const Line& new_line, int i) const override {
         const geom::Knots& U = *old_line.U;
         const int k = static_cast<int>(std::upper_bound(U.begin(), U.end(), t_) - U.begin()) - 1;
         const int s = geom::multiplicity(U, t_);
@@ -158,7 +198,7 @@ private:
         if (i >= k - s) return clamp_index(i + times_, new_line.n);
         return nearest_greville(new_line, greville(old_line, i));
     }
-    int backward(const Line& old_line, const Line& new_line, int i) const {
+    int backward(const Line& old_line, const Line& new_line, int i) const override {
         const geom::Knots& U = *old_line.U;
         const int k = static_cast<int>(std::upper_bound(U.begin(), U.end(), t_) - U.begin()) - 1;
         const int s = geom::multiplicity(U, t_);
@@ -167,65 +207,15 @@ private:
         return nearest_greville(old_line, greville(new_line, i));
     }
 
-    std::uint64_t id_;
-    Dir dir_;
     double t_;
-    int times_;
-    bool curve_ = false;
-    Shape before_;
-    Selection sel_before_, sel_after_;
 };
 
 // ---------------------------------------------------------------------------------------
 // Degree elevation (Piegl & Tiller A5.9 through geom::elevate_degree).
-class ElevateDegree final : public Command {
+class ElevateDegree final : public RefineInPlace {
 public:
-    ElevateDegree(std::uint64_t id, Dir dir, int times) : id_(id), dir_(dir), times_(times) {}
-
-    geom::Status apply(Document& doc) override {
-        auto found = refinable(doc, id_, dir_, "degree elevation");
-        if (!found) return found.error();
-        Object& obj = **found;
-        if (times_ < 1)
-            return make_error(ErrorCode::schema,
-                              "times must be at least 1, got " + std::to_string(times_), "/times");
-        if (auto st = precheck_size(obj.shape); !st) return st;
-        Shape result;
-        if (auto* s = std::get_if<SurfaceObject>(&obj.shape)) {
-            auto r = geom::elevate_degree(s->surface, dir_, times_);
-            if (!r) return r.error();
-            result = SurfaceObject{std::move(r).value()};
-        } else {
-            const auto& c = std::get<CurveObject>(obj.shape);
-            auto r = geom::elevate_degree(c.curve, times_);
-            if (!r) return r.error();
-            result = CurveObject{std::move(r).value(), c.plane};
-        }
-        if (auto st = detail::check_size(result, "/times"); !st) return st;
-
-        curve_ = is_curve(obj.shape);
-        sel_before_ = doc.selection;
-        if (int* idx = selected_index(doc.selection, id_, curve_, dir_)) {
-            const Line old_line = line_of(obj.shape, dir_);
-            *idx = nearest_greville(line_of(result, dir_), greville(old_line, *idx));
-        }
-        sel_after_ = doc.selection;
-        before_ = std::move(obj.shape);
-        obj.shape = std::move(result);
-        return geom::Ok{};
-    }
-
-    void revert(Document& doc) override {
-        Object* obj = doc.find(id_);
-        assert(obj);
-        if (doc.selection == sel_after_) {
-            doc.selection = sel_before_;
-        } else if (int* idx = selected_index(doc.selection, id_, curve_, dir_)) {
-            *idx =
-                nearest_greville(line_of(before_, dir_), greville(line_of(obj->shape, dir_), *idx));
-        }
-        obj->shape = before_;
-    }
+    ElevateDegree(std::uint64_t id, Dir dir, int times)
+        : RefineInPlace(id, dir, times, "degree elevation") {}
 
     std::string label() const override {
         std::string s =
@@ -234,16 +224,18 @@ public:
         return s;
     }
 
-    std::size_t memory_bytes() const override {
-        return sizeof(*this) + detail::shape_bytes(before_);
-    }
-
 private:
+    geom::Expected<geom::Surface> refine(const geom::Surface& s) const override {
+        return geom::elevate_degree(s, dir_, times_);
+    }
+    geom::Expected<geom::Curve> refine(const geom::Curve& c) const override {
+        return geom::elevate_degree(c, times_);
+    }
     // Refuse before allocating: on a clamped vector with `spans` non-empty spans, elevation
     // by t adds exactly t * spans control points (each distinct knot's multiplicity rises by
     // t); an unclamped vector is clamped first, which never adds points. So n + t * spans
     // bounds the result.
-    geom::Status precheck_size(const Shape& shape) const {
+    geom::Status precheck_size(const Shape& shape) const override {
         const Line L = line_of(shape, dir_);
         const geom::Knots& U = *L.U;
         long long spans = 0;
@@ -267,13 +259,6 @@ private:
         }
         return geom::Ok{};
     }
-
-    std::uint64_t id_;
-    Dir dir_;
-    int times_;
-    bool curve_ = false;
-    Shape before_;
-    Selection sel_before_, sel_after_;
 };
 
 // ---------------------------------------------------------------------------------------
@@ -301,6 +286,10 @@ public:
         }
 
         curve_ = is_curve(obj.shape);
+        // Neighbours first: a refusal there must leave everything as it was. The selection
+        // is recorded after them, so that undo hands each refinement back the selection it made.
+        if (auto st = conform_neighbours(doc, obj); !st) return st;
+        sel_before_ = doc.selection;
         index_ = doc.index_of(id_);
         prev_next_id_ = doc.next_id;
         if (ids_.first == 0) {
@@ -311,12 +300,14 @@ public:
             doc.next_id = std::max(doc.next_id, ids_.second + 1);
         }
 
-        sel_before_ = doc.selection;
         remap_forward(doc.selection, obj.shape, first, second);
         sel_after_ = doc.selection;
 
-        Object a{ids_.first, obj.name + ".1", std::move(first), obj.visible};
-        Object b{ids_.second, obj.name + ".2", std::move(second), obj.visible};
+        // Surface pieces stay one patch structure over the original domain (issue 5); the
+        // first split names the group after the surface it started from.
+        const std::uint64_t group = curve_ ? 0 : obj.patch_group != 0 ? obj.patch_group : obj.id;
+        Object a{ids_.first, obj.name + ".1", std::move(first), obj.visible, group};
+        Object b{ids_.second, obj.name + ".2", std::move(second), obj.visible, group};
         before_ = std::move(obj);
         doc.objects[index_] = std::move(a);
         doc.objects.insert(doc.objects.begin() + index_ + 1, std::move(b));
@@ -339,11 +330,17 @@ public:
         doc.objects.erase(doc.objects.begin() + index_ + 1);
         doc.objects[index_] = before_;
         doc.next_id = prev_next_id_;
+        for (auto it = conforming_.rbegin(); it != conforming_.rend(); ++it) (*it)->revert(doc);
+        conforming_.clear();
     }
 
     std::string label() const override {
-        return std::string("Split at ") + (curve_ ? "t" : dir_name(dir_)) + " = " +
-               geom::format_number(t_);
+        std::string s = std::string("Split at ") + (curve_ ? "t" : dir_name(dir_)) + " = " +
+                        geom::format_number(t_);
+        if (!conforming_.empty())
+            s += " (and " + std::to_string(conforming_.size()) +
+                 (conforming_.size() == 1 ? " neighbour" : " neighbours") + " refined there)";
+        return s;
     }
 
     std::size_t memory_bytes() const override {
@@ -367,10 +364,46 @@ private:
         *idx = nearest_greville(line_of(g > t_ ? second : first, dir_), g);
     }
 
+    // With continuity on, a subpatch's neighbours across the split line get t inserted up to
+    // their degree (shape unchanged), so that each new border pairs up control point for
+    // control point and C0 / C1 can be kept there (the paper's split at u = 0.75 and then the
+    // left part at v = 0.5: the right part gains v = 0.5 to multiplicity 3).
+    geom::Status conform_neighbours(Document& doc, const Object& obj) {
+        conforming_.clear();
+        if (curve_ || obj.patch_group == 0 || doc.continuity == Continuity::off) return geom::Ok{};
+        const ParamRect mine = surface_domain(std::get<SurfaceObject>(obj.shape).surface);
+        const Dir across = dir_ == Dir::u ? Dir::v : Dir::u;
+        auto range = [](const ParamRect& r, Dir d) { return d == Dir::u ? r.u : r.v; };
+        std::vector<std::pair<std::uint64_t, int>> todo;
+        for (const Object* m : patch_members(doc, obj.patch_group)) {
+            if (m->id == obj.id) continue;
+            const geom::Surface& ms = std::get<SurfaceObject>(m->shape).surface;
+            const ParamRect r = surface_domain(ms);
+            const bool touches = range(r, across).lo == range(mine, across).hi ||
+                                 range(r, across).hi == range(mine, across).lo;
+            const geom::Interval along = range(r, dir_);
+            if (!touches || !(along.lo < t_ && t_ < along.hi)) continue;
+            const int missing = ms.degree(dir_) - geom::multiplicity(ms.knots(dir_), t_);
+            if (missing > 0) todo.emplace_back(m->id, missing);
+        }
+        for (const auto& [id, times] : todo) {
+            auto cmd = insert_knot(id, dir_, t_, times);
+            if (auto st = cmd->apply(doc); !st) {
+                for (auto it = conforming_.rbegin(); it != conforming_.rend(); ++it)
+                    (*it)->revert(doc);
+                conforming_.clear();
+                return st;
+            }
+            conforming_.push_back(std::move(cmd));
+        }
+        return geom::Ok{};
+    }
+
     std::uint64_t id_;
     Dir dir_;
     double t_;
     bool curve_ = false;
+    std::vector<std::unique_ptr<Command>> conforming_;
     int index_ = -1;
     std::uint64_t prev_next_id_ = 0;
     std::pair<std::uint64_t, std::uint64_t> ids_{0, 0};

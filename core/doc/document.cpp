@@ -83,7 +83,7 @@ bool same_shape(const Shape& a, const Shape& b) {
         return same_surface(s->surface, std::get<SurfaceObject>(b).surface);
     if (auto* c = std::get_if<CurveObject>(&a)) {
         const auto& d = std::get<CurveObject>(b);
-        return c->plane == d.plane && same_curve(c->curve, d.curve);
+        return c->plane == d.plane && c->knot_mode == d.knot_mode && same_curve(c->curve, d.curve);
     }
     return same_implicit(std::get<ImplicitObject>(a), std::get<ImplicitObject>(b));
 }
@@ -101,7 +101,7 @@ bool same_colors(const Colors& a, const Colors& b) {
 
 bool same_object(const Object& a, const Object& b) {
     return a.id == b.id && a.name == b.name && a.visible == b.visible &&
-           same_shape(a.shape, b.shape);
+           a.patch_group == b.patch_group && same_shape(a.shape, b.shape);
 }
 
 bool same_geometry(const Document& a, const Document& b) {
@@ -114,7 +114,19 @@ bool same_geometry(const Document& a, const Document& b) {
 bool same_document(const Document& a, const Document& b) {
     return same_geometry(a, b) && a.selection == b.selection &&
            same_bits(a.indicator.x, b.indicator.x) && same_bits(a.indicator.y, b.indicator.y) &&
-           a.display == b.display;
+           a.display == b.display && a.continuity == b.continuity;
+}
+
+const char* continuity_name(Continuity c) {
+    switch (c) {
+    case Continuity::off:
+        return "off";
+    case Continuity::c0:
+        return "C0";
+    case Continuity::c1:
+        return "C1";
+    }
+    return "off";
 }
 
 Document default_document() {

@@ -16,9 +16,17 @@ namespace isoparm::doc {
 // Which plane a designed curve lives in (the curve designer edits it there).
 enum class CurvePlane { xy, xz, yz, free3d };
 
+// How the curve designer chooses the knots when control points are inserted or deleted or
+// the degree changes (docs/constructions.md): clamped uniform, averaged from the chord /
+// centripetal parameters of the control polygon (Piegl & Tiller eq. 9.8), or custom: the
+// user's own knots, kept as they are and dragged with set_knot.
+enum class CurveKnotMode { clamped_uniform, chord, centripetal, custom };
+
 struct CurveObject {
     geom::Curve curve;
     CurvePlane plane = CurvePlane::xy;
+    // Custom by default, so curves from old scenes and constructions keep their knots.
+    CurveKnotMode knot_mode = CurveKnotMode::custom;
 };
 
 struct SurfaceObject {
@@ -41,7 +49,16 @@ struct Object {
     std::string name;
     Shape shape;
     bool visible = true;
+    // Subpatches split from one surface share a group id (0: not a subpatch). They keep the
+    // original parameters, so together they tile the original domain and the tracing square
+    // shows that whole domain (issue 5; core/doc/patches.hpp).
+    std::uint64_t patch_group = 0;
 };
+
+// Whether moving a control point of a subpatch also moves its neighbours' so the border stays
+// closed (c0) and, where degrees and knots allow it, tangent-continuous (c1).
+enum class Continuity { off, c0, c1 };
+const char* continuity_name(Continuity c);
 
 struct Rgba {
     float r = 0, g = 0, b = 0, a = 1;
@@ -90,6 +107,7 @@ struct Document {
     Selection selection;
     glm::dvec2 indicator{0.5, 0.5}; // (u, v) normalized to [0,1]^2 over the current domain
     DisplaySettings display;
+    Continuity continuity = Continuity::off; // a setting, saved with the scene; not undoable
     std::uint64_t next_id = 1;
 
     Object* find(std::uint64_t id);

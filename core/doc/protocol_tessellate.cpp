@@ -2,6 +2,7 @@
 #include "core/doc/json_geom.hpp"
 #include "core/doc/json_values.hpp"
 #include "core/doc/protocol_detail.hpp"
+#include "core/geom/implicit/polygonize.hpp" // the mesh caps
 #include "core/geom/tessellate.hpp"
 #include "core/geom/validate.hpp"
 
@@ -51,6 +52,16 @@ OpResult op_tessellate(const json& request) {
         return geom::make_error(geom::ErrorCode::limit,
                                 "too many grid points (" + std::to_string(n[0]) + " x " +
                                     std::to_string(n[1]) + " > " + std::to_string(cap) + ")",
+                                "/samples");
+    }
+    // The answer-size cap (docs/protocol.md): n_u * n_v vertices, 2 (n_u - 1)(n_v - 1)
+    // triangles, both within the mesh caps when the vertices are.
+    if (static_cast<std::size_t>(n[0] * n[1]) > geom::max_mesh_vertices) {
+        return geom::make_error(geom::ErrorCode::limit,
+                                "the mesh would have " + std::to_string(n[0] * n[1]) +
+                                    " vertices (" + std::to_string(n[0]) + " x " +
+                                    std::to_string(n[1]) + "); at most " +
+                                    std::to_string(geom::max_mesh_vertices) + " are allowed",
                                 "/samples");
     }
     const geom::Mesh mesh =

@@ -11,6 +11,7 @@
 #include "core/doc/json_geom.hpp"
 #include "core/doc/json_read.hpp"
 #include "core/doc/json_values.hpp"
+#include "core/doc/patches.hpp"
 
 namespace isoparm::doc {
 
@@ -38,6 +39,14 @@ const char* plane_name(CurvePlane p) {
     }
     return "xy";
 }
+
+// The curve designer's knot modes as the file spells them ("knot_mode" of a curve object).
+constexpr std::array<std::pair<CurveKnotMode, const char*>, 4> knot_mode_names = {{
+    {CurveKnotMode::clamped_uniform, "clamped_uniform"},
+    {CurveKnotMode::chord, "chord"},
+    {CurveKnotMode::centripetal, "centripetal"},
+    {CurveKnotMode::custom, "custom"},
+}};
 
 const char* style_name(DisplayStyle s) {
     switch (s) {
@@ -273,12 +282,14 @@ Expected<Object> object_from_json(const json& j, const std::string& at) {
                implicit = *kind == "implicit";
     if (!surface && !curve && !implicit)
         return schema("kind must be surface, curve or implicit, got '" + *kind + "'", at + "/kind");
-    if (auto e = surface ? check_members(j, at, "a surface object",
-                                         {"id", "name", "kind", "visible", "surface"})
-                 : curve ? check_members(j, at, "a curve object",
-                                         {"id", "name", "kind", "visible", "plane", "curve"})
-                         : check_members(j, at, "an implicit object",
-                                         {"id", "name", "kind", "visible", "implicit"}))
+    if (auto e =
+            surface ? check_members(j, at, "a surface object",
+                                    {"id", "name", "kind", "visible", "patch_group", "surface"})
+            : curve
+                ? check_members(j, at, "a curve object",
+                                {"id", "name", "kind", "visible", "plane", "knot_mode", "curve"})
+                : check_members(j, at, "an implicit object",
+                                {"id", "name", "kind", "visible", "implicit"}))
         return *e;
 
     Object o;
@@ -298,6 +309,12 @@ Expected<Object> object_from_json(const json& j, const std::string& at) {
         auto v = read_bool(*vis, at + "/visible");
         if (!v) return v.error();
         o.visible = *v;
+    }
+    if (const auto group = j.find("patch_group"); group != j.end()) {
+        auto v = read_integer(*group, at + "/patch_group", "a patch group id", 1,
+                              static_cast<std::int64_t>(max_id));
+        if (!v) return v.error();
+        o.patch_group = static_cast<std::uint64_t>(*v);
     }
 
     const char* member = surface ? "surface" : curve ? "curve" : "implicit";
@@ -327,6 +344,18 @@ Expected<Object> object_from_json(const json& j, const std::string& at) {
             else
                 return schema("plane must be xy, xz, yz or free3d, got '" + *p + "'",
                               at + "/plane");
+        }
+        if (const auto mode = j.find("knot_mode"); mode != j.end()) {
+            auto m = read_string(*mode, at + "/knot_mode", "knot_mode");
+            if (!m) return m.error();
+            const auto* hit = std::find_if(knot_mode_names.begin(), knot_mode_names.end(),
+                                           [&](const auto& e) { return *m == e.second; });
+            if (hit == knot_mode_names.end())
+                return schema("knot_mode must be clamped_uniform, chord, centripetal or "
+                              "custom, got '" +
+                                  *m + "'",
+                              at + "/knot_mode");
+            c.knot_mode = hit->first;
         }
         auto g = curve_from_json(*geometry);
         if (!g) return g.error().under(gat);
@@ -457,12 +486,17 @@ json scene_to_json(const Document& doc) {
         j["id"] = o.id;
         j["name"] = o.name;
         j["visible"] = o.visible;
+        if (o.patch_group != 0) j["patch_group"] = o.patch_group;
         if (auto* s = std::get_if<SurfaceObject>(&o.shape)) {
             j["kind"] = "surface";
             j["surface"] = surface_to_json(s->surface);
         } else if (auto* c = std::get_if<CurveObject>(&o.shape)) {
             j["kind"] = "curve";
             j["plane"] = plane_name(c->plane);
+            // Custom (the default) is omitted, so older scenes save back unchanged.
+            if (c->knot_mode != CurveKnotMode::custom)
+                for (const auto& [mode, name] : knot_mode_names)
+                    if (mode == c->knot_mode) j["knot_mode"] = name;
             j["curve"] = curve_to_json(c->curve);
         } else {
             const auto& f = std::get<ImplicitObject>(o.shape);
@@ -506,6 +540,7 @@ json scene_to_json(const Document& doc) {
     scene["display"] = std::move(display);
     scene["selection"] = std::move(selection);
     scene["indicator"] = json::array({doc.indicator.x, doc.indicator.y});
+    if (doc.continuity != Continuity::off) scene["continuity"] = continuity_name(doc.continuity);
     return scene;
 }
 
@@ -534,9 +569,9 @@ Expected<Document> scene_from_json(const json& j) {
                           std::to_string(scene_format_version) + "); update isoparm to open it",
                       "/version");
     if (*v < 1) return schema("version must be at least 1, got " + std::to_string(*v), "/version");
-    if (auto e = check_members(
-            j, "", "a scene",
-            {"format", "version", "objects", "colors", "display", "selection", "indicator"}))
+    if (auto e = check_members(j, "", "a scene",
+                               {"format", "version", "objects", "colors", "display", "selection",
+                                "indicator", "continuity"}))
         return *e;
 
     Document doc;
@@ -571,6 +606,16 @@ Expected<Document> scene_from_json(const json& j) {
         if (auto e = read_display(*d, doc.display)) return *e;
     if (const auto s = j.find("selection"); s != j.end())
         if (auto e = read_selection(*s, doc, doc.selection)) return *e;
+    if (const auto c = j.find("continuity"); c != j.end()) {
+        auto name = read_string(*c, "/continuity", "continuity");
+        if (!name) return name.error();
+        bool known = false;
+        for (Continuity k : {Continuity::off, Continuity::c0, Continuity::c1})
+            if (*name == continuity_name(k)) doc.continuity = k, known = true;
+        if (!known)
+            return schema("continuity must be off, C0 or C1, got '" + *name + "'", "/continuity");
+    }
+    if (auto e = check_patch_groups(doc)) return *e;
     if (const auto ind = j.find("indicator"); ind != j.end()) {
         if (!ind->is_array() || ind->size() != 2)
             return schema("indicator is [u, v], each in [0, 1]", "/indicator");

@@ -1,10 +1,12 @@
 // libFuzzer target: any bytes as `isoparm geom` input. It must answer or reject, never crash.
 //
-// Volume is not this target's subject: the spec allows answers of up to 10,000,000 points
-// (a 3162 x 3162 tessellation is valid and needs gigabytes of JSON), and those caps have
-// their own protocol tests. Requests whose output would be large (tessellate samples or a
-// polygonize grid above volume_cap points) are skipped here so that a short run explores the
-// logic rather than waiting on legitimately big answers.
+// Volume is not this target's subject. Answers are bounded (docs/protocol.md, "Size caps of
+// answers": at most 1,000,000 mesh vertices and 2,000,000 triangles, `limit` beyond; tested in
+// tests/protocol/output_caps_test.cpp), but an answer at the caps still takes seconds and
+// ~0.7 GB (several times that under ASan, past libFuzzer's RSS limit). Requests whose work
+// would be large (tessellate samples or a polygonize grid above volume_cap points) are skipped
+// so that a short run explores the logic rather than waiting on big answers; no request can
+// now grow without bound, so the skip is about speed only.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>

@@ -57,8 +57,11 @@ def nurbs_surface(points, weights=None, surface_type="nurbs"):
     return s
 
 
-def surface_object(oid, name, surface):
-    return {"id": oid, "name": name, "kind": "surface", "surface": surface}
+def surface_object(oid, name, surface, patch_group=None):
+    o = {"id": oid, "name": name, "kind": "surface", "surface": surface}
+    if patch_group is not None:
+        o["patch_group"] = patch_group
+    return o
 
 
 def curve_object(oid, name, curve, plane):
@@ -139,20 +142,38 @@ def figure_scenes(isoparm):
                               "knot": 0.75})["surface"]
     scenes["fig5b-knot-inserted"] = scene([surface_object(1, "wave", inserted)], knot_display,
                                           selection={"object": 1})
+    # Degree elevation in u (3 to 4): the same shape on a denser net.
+    elevated = geom(isoparm, {"op": "elevate_degree", "surface": wave, "direction": "u",
+                              "times": 1})["surface"]
+    scenes["fig5c-degree-elevated"] = scene([surface_object(1, "wave", elevated)], knot_display,
+                                            selection={"object": 1})
+    # A knot dragged in the tracing panel: v = 0.5 moved to 0.3 (the knot curve follows and
+    # the shape changes, unlike insertion and elevation).
+    moved = json.loads(json.dumps(wave))
+    moved["knots"][1][4] = 0.3
+    scenes["fig5d-knot-moved"] = scene([surface_object(1, "wave", moved)], knot_display,
+                                       selection={"object": 1})
 
     # Figure 6: split at u = 0.75, then the left piece at v = 0.5 (pieces keep their part of
     # the domain; names follow the workstation's <name>.1, <name>.2).
     left, right = geom(isoparm, {"op": "split", "surface": wave, "direction": "u",
                                  "param": 0.75})["pieces"]
+    # The pieces form patch group 1: the tracing square keeps showing the whole original
+    # domain and the indicator picks the current patch.
     scenes["fig6b-split-u075"] = scene(
-        [surface_object(1, "wave.1", left), surface_object(2, "wave.2", right)],
+        [surface_object(1, "wave.1", left, 1), surface_object(2, "wave.2", right, 1)],
         {"knot_curves": True}, selection={"object": 1}, indicator=(0.3, 0.5))
     low, high = geom(isoparm, {"op": "split", "surface": left, "direction": "v",
                                "param": 0.5})["pieces"]
+    # With continuity C1 the workstation's second split also refines the right part at
+    # v = 0.5 up to its degree, so every border pairs up control point for control point.
+    conforming_right = geom(isoparm, {"op": "insert_knot", "surface": right, "direction": "v",
+                                      "knot": 0.5, "times": 2})["surface"]
     scenes["fig6c-split-left-v05"] = scene(
-        [surface_object(1, "wave.1.1", low), surface_object(2, "wave.1.2", high),
-         surface_object(3, "wave.2", right)],
+        [surface_object(1, "wave.1.1", low, 1), surface_object(2, "wave.1.2", high, 1),
+         surface_object(3, "wave.2", conforming_right, 1)],
         {"knot_curves": True}, selection={"object": 1}, indicator=(0.3, 0.25))
+    scenes["fig6c-split-left-v05"]["continuity"] = "C1"
 
     # Figure 7: two unit circles at z = -1 and z = 1, the lower one rotated by 90 degrees
     # ((x, y) -> (-y, x), exact); the ruled surface between them is a hyperboloid of one

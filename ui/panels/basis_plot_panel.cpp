@@ -72,7 +72,8 @@ const HeatMapCache& heat_map(AppContext& ctx, const geom::Surface& s, int i, int
     return h;
 }
 
-void heat_canvas(AppContext& ctx, const geom::Surface& s, int i, int j, const Rect& sq) {
+void heat_canvas(AppContext& ctx, const doc::Object& obj, const geom::Surface& s, int i, int j,
+                 const Rect& sq) {
     const HeatMapCache& h = heat_map(ctx, s, i, j);
     const float k = ctx.ui.scale();
     ImDrawList* dl = ImGui::GetWindowDrawList();
@@ -99,7 +100,8 @@ void heat_canvas(AppContext& ctx, const geom::Surface& s, int i, int j, const Re
                 ImGui::GetColorU32(ImGuiCol_Border), 0, 0, k);
     // The indicator.
     const doc::Rgba& ic = ctx.doc.colors.indicator;
-    const ImVec2 p = iv(domain_to_pixel(sq, ctx.doc.indicator));
+    // The map shows this patch alone: the indicator in its own domain.
+    const ImVec2 p = iv(domain_to_pixel(sq, indicator_in_own_domain(ctx.doc, obj)));
     dl->AddCircleFilled(p, 5 * k, ImGui::ColorConvertFloat4ToU32(ImVec4(ic.r, ic.g, ic.b, 1)), 16);
     dl->AddCircle(p, 5 * k, IM_COL32(0, 0, 0, 255), 16, 1.2f * k);
     ImGui::SetCursorScreenPos(ImVec2(sq.x, sq.y));
@@ -110,7 +112,8 @@ void heat_canvas(AppContext& ctx, const geom::Surface& s, int i, int j, const Re
     // Pressing in the map moves the indicator, as in the tracing panel.
     if (ImGui::IsItemActive()) {
         const ImVec2 m = ImGui::GetIO().MousePos;
-        ctx.doc.indicator = pixel_to_domain(sq, {m.x, m.y});
+        ctx.doc.indicator =
+            indicator_from_own_domain(ctx.doc, obj, pixel_to_domain(sq, {m.x, m.y}));
     }
 }
 
@@ -164,7 +167,7 @@ void draw_basis_plot_panel(AppContext& ctx) {
         ImGui::TextWrapped("No surface.");
         return;
     }
-    const glm::dvec2 uv = indicator_params(ctx.doc, *s);
+    const glm::dvec2 uv = indicator_params(ctx.doc, *obj);
     const bool point = has_valid_point(ctx.doc) && ctx.doc.selection.object == obj->id;
     const int i = point ? ctx.doc.selection.i : -1, j = point ? ctx.doc.selection.j : -1;
 
@@ -213,7 +216,7 @@ void draw_basis_plot_panel(AppContext& ctx) {
     const float side = std::max(std::min(avail.x, avail.y - 2 * curve_h - 4 * spacing), 40 * k);
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     if (point) {
-        heat_canvas(ctx, *s, i, j, {origin.x, origin.y, side, side});
+        heat_canvas(ctx, *obj, *s, i, j, {origin.x, origin.y, side, side});
     } else {
         ImGui::Dummy(ImVec2(side, side));
         ImGui::GetWindowDrawList()->AddRect(origin, ImVec2(origin.x + side, origin.y + side),

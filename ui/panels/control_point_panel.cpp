@@ -13,6 +13,7 @@
 #include "ui/canvas_map.hpp"
 #include "ui/doc_access.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/panels/plane_canvas.hpp"
 
 namespace isoparm::ui {
 
@@ -87,15 +88,7 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const geom::Surface& 
     ImDrawList* dl = ImGui::GetWindowDrawList();
     const ImVec2 a(canvas.x, canvas.y), b(canvas.x + canvas.w, canvas.y + canvas.h);
     const bool light = ctx.ui.presentation;
-    dl->AddRectFilled(a, b, light ? IM_COL32(250, 250, 250, 255) : IM_COL32(26, 28, 34, 255));
-    dl->PushClipRect(a, b, true);
-    // World axes through the origin, when in view.
-    const glm::dvec2 o = plane_to_pixel(map, {0, 0});
-    const ImU32 axis_col = light ? IM_COL32(150, 150, 150, 255) : IM_COL32(80, 84, 96, 255);
-    dl->AddLine(ImVec2(a.x, static_cast<float>(o.y)), ImVec2(b.x, static_cast<float>(o.y)),
-                axis_col);
-    dl->AddLine(ImVec2(static_cast<float>(o.x), a.y), ImVec2(static_cast<float>(o.x), b.y),
-                axis_col);
+    begin_plane_canvas(dl, map, canvas, light);
     // The net, projected.
     const doc::Colors& col = ctx.doc.colors;
     auto px = [&](int i, int j) {

@@ -11,6 +11,7 @@
 #include "core/doc/commands.hpp"
 #include "ui/actions.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/recovery.hpp"
 
 namespace isoparm::ui {
 
@@ -262,6 +263,13 @@ void help_dialog(AppContext& ctx) {
         "Control-point panel: drag the red disk in the xy, xz or yz plane.",
         "F: fit to view   F11 or P: presentation mode   1/2/3: shaded/wireframe/both",
         "C: control points   N: control net   I: point IDs   K: knot curves",
+        "Drag a knot tick below / left of the tracing square to move that knot.",
+        "U / V: insert the indicator's u / v as a knot   Shift+U / Shift+V: elevate degree",
+        "S / Shift+S: split the current patch at the indicator's u / v (subpatches share",
+        "  the square; Surface > Continuity keeps their borders C0 or C1)",
+        "D: de Boor's construction   [ / ]: step back / forward   Space: play",
+        "Curve designer (a selected curve): click adds a point, Ctrl+click a leg inserts,",
+        "  drag moves, Del removes; Construct menu: ruled, revolve, swing, sweep, skin.",
         "Ctrl+Z / Ctrl+Y: undo / redo   Ctrl+S: save   Ctrl+O: open   Ctrl+N: new scene",
     };
     for (const char* l : lines) ImGui::TextUnformatted(l);
@@ -277,6 +285,7 @@ void draw_dialogs(AppContext& ctx) {
     unsaved_dialog(ctx);
     error_dialog(ctx);
     help_dialog(ctx);
+    draw_recovery_dialog(ctx); // last: it waits until no other dialog is up
 }
 
 } // namespace isoparm::ui

@@ -12,6 +12,7 @@
 #include "ui/doc_access.hpp"
 #include "ui/implicit/implicit_support.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/surface_actions.hpp"
 
 namespace isoparm::ui {
 
@@ -54,6 +55,32 @@ void edit_menu(AppContext& ctx) {
     ImGui::EndMenu();
 }
 
+void action_item(AppContext& ctx, const ActionState& a, const char* shortcut,
+                 void (*run)(AppContext&, geom::Dir), geom::Dir dir) {
+    if (ImGui::MenuItem(a.label.c_str(), shortcut, false, a.enabled)) run(ctx, dir);
+    if (!a.enabled && !a.why.empty() && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("%s", a.why.c_str());
+}
+
+// Knot insertion, degree elevation and splitting at the indicator, and how subpatches stay
+// joined (issue 5).
+void refine_items(AppContext& ctx) {
+    using geom::Dir;
+    ImGui::TextDisabled("At the indicator (shape unchanged)");
+    action_item(ctx, insert_knot_state(ctx, Dir::u), "U", insert_knot_at_indicator, Dir::u);
+    action_item(ctx, insert_knot_state(ctx, Dir::v), "V", insert_knot_at_indicator, Dir::v);
+    action_item(ctx, elevate_state(ctx, Dir::u), "Shift+U", elevate_current, Dir::u);
+    action_item(ctx, elevate_state(ctx, Dir::v), "Shift+V", elevate_current, Dir::v);
+    action_item(ctx, split_state(ctx, Dir::u), "S", split_at_indicator, Dir::u);
+    action_item(ctx, split_state(ctx, Dir::v), "Shift+S", split_at_indicator, Dir::v);
+    if (ImGui::BeginMenu("Continuity across patch borders")) {
+        for (doc::Continuity c : {doc::Continuity::off, doc::Continuity::c0, doc::Continuity::c1})
+            if (ImGui::MenuItem(doc::continuity_name(c), nullptr, ctx.doc.continuity == c))
+                ctx.doc.continuity = c;
+        ImGui::EndMenu();
+    }
+}
+
 void surface_menu(AppContext& ctx) {
     if (!ImGui::BeginMenu("Surface")) return;
     if (ImGui::MenuItem("New Surface...", "Ctrl+Shift+N")) ctx.ui.new_surface.open = true;
@@ -75,6 +102,8 @@ void surface_menu(AppContext& ctx) {
         if (ImGui::MenuItem(label.c_str(), nullptr, o.id == ctx.doc.selection.object)) pick = o.id;
     }
     if (pick != 0 && pick != ctx.doc.selection.object) ctx.doc.selection = {pick, -1, -1};
+    ImGui::Separator();
+    refine_items(ctx);
     ImGui::Separator();
     const doc::Object* sel = ctx.doc.selected();
     if (ImGui::MenuItem("Delete Selected", nullptr, false, sel != nullptr)) {
@@ -101,6 +130,12 @@ void display_menu(AppContext& ctx) {
     ImGui::MenuItem("Point IDs (P_ij)", "I", &d.point_ids);
     ImGui::MenuItem("Indicator point S(u,v)", nullptr, &d.indicator_point);
     ImGui::MenuItem("Knot curves", "K", &d.knot_curves);
+    if (ImGui::MenuItem("de Boor's construction", "D", &d.deboor) && d.deboor)
+        ctx.ui.deboor.show_tab = true;
+    if (ImGui::MenuItem("de Boor: step back", "[")) deboor_step(ctx, -1);
+    if (ImGui::MenuItem("de Boor: step forward", "]")) deboor_step(ctx, +1);
+    if (ImGui::MenuItem(ctx.ui.deboor.playing ? "de Boor: pause" : "de Boor: play", "Space"))
+        deboor_toggle_play(ctx, ImGui::GetTime());
     ImGui::Separator();
     if (ImGui::MenuItem("Fit to view", "F")) fit_view(ctx);
     if (ImGui::MenuItem("Presentation mode", "F11 / P", ctx.ui.presentation))
@@ -121,6 +156,7 @@ void draw_menus(AppContext& ctx) {
     file_menu(ctx);
     edit_menu(ctx);
     surface_menu(ctx);
+    draw_construct_menus(ctx); // Curve, Construct (construct_menu.cpp)
     display_menu(ctx);
     help_menu(ctx);
     ImGui::EndMainMenuBar();
@@ -197,6 +233,28 @@ void handle_shortcuts(AppContext& ctx) {
             break;
         case GLFW_KEY_K:
             d.knot_curves = !d.knot_curves;
+            break;
+        case GLFW_KEY_D:
+            d.deboor = !d.deboor;
+            ctx.ui.deboor.show_tab = d.deboor;
+            break;
+        case GLFW_KEY_LEFT_BRACKET:
+            deboor_step(ctx, -1);
+            break;
+        case GLFW_KEY_RIGHT_BRACKET:
+            deboor_step(ctx, +1);
+            break;
+        case GLFW_KEY_SPACE:
+            deboor_toggle_play(ctx, ImGui::GetTime());
+            break;
+        case GLFW_KEY_U:
+            (k.shift ? elevate_current : insert_knot_at_indicator)(ctx, geom::Dir::u);
+            break;
+        case GLFW_KEY_V:
+            (k.shift ? elevate_current : insert_knot_at_indicator)(ctx, geom::Dir::v);
+            break;
+        case GLFW_KEY_S:
+            split_at_indicator(ctx, k.shift ? geom::Dir::v : geom::Dir::u);
             break;
         case GLFW_KEY_ESCAPE:
             ctx.doc.selection.i = ctx.doc.selection.j = -1;

@@ -6,16 +6,20 @@
 
 namespace isoparm::ui {
 
-void draw_menus(AppContext& ctx);               // the main menu bar
-void handle_shortcuts(AppContext& ctx);         // keyboard shortcuts shown in the menus
-void draw_view3d_panel(AppContext& ctx);        // the 3D drawing view and its sliders
-void draw_tracing_panel(AppContext& ctx);       // the domain square and the indicator (u, v)
-void draw_control_point_panel(AppContext& ctx); // xy / xz / yz planes, fields, weight
-void draw_implicit_panel(AppContext& ctx);      // expression, parameters, bounds, presets
-void draw_basis_plot_panel(AppContext& ctx);    // R_ij at (u, v), its support, N_i and N_j
-void draw_control_panel(AppContext& ctx);       // colours and display settings
-void draw_status_bar(AppContext& ctx);          // frame time, object, unsaved mark
-void draw_dialogs(AppContext& ctx);             // new surface, files, unsaved changes, errors
+void draw_menus(AppContext& ctx);                // the main menu bar
+void handle_shortcuts(AppContext& ctx);          // keyboard shortcuts shown in the menus
+void draw_view3d_panel(AppContext& ctx);         // the 3D drawing view and its sliders
+void draw_tracing_panel(AppContext& ctx);        // the domain square and the indicator (u, v)
+void draw_control_point_panel(AppContext& ctx);  // xy / xz / yz planes, fields, weight
+void draw_implicit_panel(AppContext& ctx);       // expression, parameters, bounds, presets
+void draw_curve_designer_panel(AppContext& ctx); // the selected curve: canvas, knots, basis
+void draw_construct_menus(AppContext& ctx);      // Curve and Construct menus (in the menu bar)
+void draw_construct_dialog(AppContext& ctx);     // the Construct menu's dialog
+void draw_basis_plot_panel(AppContext& ctx);     // R_ij at (u, v), its support, N_i and N_j
+void draw_deboor_panel(AppContext& ctx);         // de Boor's levels at (u, v), step control
+void draw_control_panel(AppContext& ctx);        // colours and display settings
+void draw_status_bar(AppContext& ctx);           // frame time, object, unsaved mark
+void draw_dialogs(AppContext& ctx);              // new surface, files, unsaved changes, errors
 
 // Height the status bar takes (for the layout).
 float status_bar_height();

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "core/doc/commands.hpp"
+#include "core/doc/patches.hpp"
 #include "ui/canvas_map.hpp"
 #include "ui/doc_access.hpp"
 #include "ui/panels/panels.hpp"
@@ -52,7 +54,7 @@ std::string knot_vector_text(const geom::Knots& U) {
 }
 
 struct Palette {
-    ImU32 bg, border, grid, tick, text, mult, indicator, cross;
+    ImU32 bg, border, grid, tick, text, mult, indicator, cross, current;
 };
 
 Palette palette(const AppContext& ctx) {
@@ -68,7 +70,77 @@ Palette palette(const AppContext& ctx) {
     p.mult = light ? IM_COL32(170, 60, 0, 255) : IM_COL32(255, 190, 90, 255);
     p.indicator = ImGui::ColorConvertFloat4ToU32(ImVec4(ic.r, ic.g, ic.b, 1));
     p.cross = ImGui::ColorConvertFloat4ToU32(ImVec4(ic.r, ic.g, ic.b, 0.45f));
+    p.current = light ? IM_COL32(255, 236, 200, 255) : IM_COL32(52, 56, 70, 255);
     return p;
+}
+
+// A knot tick strip (below the square for u, left of it for v): press a tick and drag to
+// move that knot, all its copies together, between its neighbours; the surface follows live.
+void knot_strip(AppContext& ctx, const doc::Object& obj, const geom::Surface& s, geom::Dir dir,
+                const std::vector<KnotTick>& ticks, const std::vector<double>& px,
+                const Rect& strip, const Rect& sq, const doc::ParamRect& dom) {
+    const bool along_x = dir == geom::Dir::u;
+    ImGui::SetCursorScreenPos(ImVec2(strip.x, strip.y));
+    ImGui::InvisibleButton(along_x ? "##uknots" : "##vknots", ImVec2(strip.w, strip.h));
+    const ImVec2 m = ImGui::GetIO().MousePos;
+    const double along = along_x ? m.x : m.y;
+    const float k = ctx.ui.scale();
+    KnotDrag& kd = ctx.ui.knot_drag;
+    const auto hit = hit_tick(px, along, 8 * k);
+    const bool movable = hit && ticks[*hit].interior;
+    if (ImGui::IsItemHovered() && movable) {
+        ImGui::SetMouseCursor(along_x ? ImGuiMouseCursor_ResizeEW : ImGuiMouseCursor_ResizeNS);
+        const KnotTick& t = ticks[*hit];
+        ImGui::SetTooltip("Drag to move knot %s%d = %s%s", along_x ? "u" : "v", t.first_index,
+                          short_number(t.value).c_str(),
+                          t.multiplicity > 1
+                              ? (" (x" + std::to_string(t.multiplicity) + ", moves as one)").c_str()
+                              : "");
+    }
+    if (ImGui::IsItemActivated() && movable)
+        kd = {true, dir, ticks[*hit].first_index, ticks[*hit].multiplicity, obj.id};
+    if (!ImGui::IsItemActive()) {
+        if (kd.active && kd.dir == dir) kd.active = false;
+        return;
+    }
+    if (!kd.active || kd.dir != dir || kd.object != obj.id) return;
+    // The pointer's parameter, kept strictly between the neighbouring knots: the knot stays
+    // between its neighbours as the issue asks, and the drag never asks for a refused value.
+    const geom::Knots& U = s.knots(dir);
+    const geom::Interval range = along_x ? dom.u : dom.v;
+    const double f = along_x ? (m.x - sq.x) / sq.w : 1.0 - (m.y - sq.y) / sq.h;
+    const double lo = U[kd.first - 1], hi = U[kd.first + kd.count];
+    const double eps = (hi - lo) * 1e-3;
+    const double t = std::clamp(denormalize_param(range, f), lo + eps, hi - eps);
+    if (t != U[kd.first]) ctx.execute(doc::move_knot_run(obj.id, dir, kd.first, kd.count, t));
+}
+
+// The patch structure's setting (kept with the scene) and which borders it can hold.
+void continuity_controls(AppContext& ctx, const doc::Object& obj) {
+    ImGui::TextUnformatted("Keep across borders:");
+    for (doc::Continuity c : {doc::Continuity::off, doc::Continuity::c0, doc::Continuity::c1}) {
+        ImGui::SameLine();
+        if (ImGui::RadioButton(doc::continuity_name(c), ctx.doc.continuity == c))
+            ctx.doc.continuity = c;
+    }
+    if (ctx.doc.continuity == doc::Continuity::off) return;
+    int held = 0;
+    std::string why;
+    const std::vector<doc::SharedBorder> borders = doc::shared_borders(ctx.doc, obj.patch_group);
+    for (const doc::SharedBorder& b : borders) {
+        if (b.conforming) {
+            ++held;
+            continue;
+        }
+        const doc::Object* lo = ctx.doc.find(b.low);
+        const doc::Object* hi = ctx.doc.find(b.high);
+        why += lo->name + " | " + hi->name + ": " + b.why_not + "\n";
+    }
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%d of %d borders kept %s when a point moves", held,
+                       static_cast<int>(borders.size()), doc::continuity_name(ctx.doc.continuity));
+    ImGui::PopStyleColor();
+    if (!why.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("Not kept:\n%s", why.c_str());
 }
 
 } // namespace
@@ -81,9 +153,19 @@ void draw_tracing_panel(AppContext& ctx) {
         return;
     }
     const float k = ctx.ui.scale();
-    const glm::dvec2 uv = indicator_params(ctx.doc, *s);
+    // Subpatches share the original domain: the square shows all of it (issue 5).
+    const doc::ParamRect dom = doc::tracing_domain(ctx.doc, *obj);
+    const std::vector<const doc::Object*> patches = doc::patch_members(ctx.doc, obj->patch_group);
+    const glm::dvec2 uv = indicator_params(ctx.doc, *obj);
     ImGui::Text("%s  (%s, degree %d x %d)", obj->name.c_str(), geom::spline_type_name(s->type),
                 s->degree_u, s->degree_v);
+    if (!patches.empty()) {
+        ImGui::SameLine();
+        ImGui::TextDisabled(
+            "- patch %d of %d",
+            static_cast<int>(std::find(patches.begin(), patches.end(), obj) - patches.begin()) + 1,
+            static_cast<int>(patches.size()));
+    }
 
     // Room for the v labels on the left and the u labels below the square.
     const float label_w = ImGui::CalcTextSize("0.000").x + 10 * k;
@@ -95,6 +177,9 @@ void draw_tracing_panel(AppContext& ctx) {
         std::max(std::min(avail.x - label_w - 12 * k, avail.y - label_h - fields_h), 60.f * k);
     const ImVec2 cur = ImGui::GetCursorScreenPos();
     const Rect sq{cur.x + label_w, cur.y + 6 * k, side, side};
+    auto to_square = [&](double u, double v) {
+        return glm::dvec2{normalize_param(dom.u, u), normalize_param(dom.v, v)};
+    };
 
     // The square is one canvas: press anywhere to move the indicator there, then drag.
     ImGui::SetCursorScreenPos(ImVec2(sq.x, sq.y));
@@ -110,25 +195,54 @@ void draw_tracing_panel(AppContext& ctx) {
     const ImVec2 a(sq.x, sq.y), b(sq.x + sq.w, sq.y + sq.h);
     dl->AddRectFilled(a, b, pal.bg);
 
-    // Knot lines across the square (where the knot curves run) and ticks with labels.
+    // The other subpatches, and the current one's part of the square.
+    if (!patches.empty()) {
+        for (const doc::Object* p : patches) {
+            const doc::ParamRect r =
+                doc::surface_domain(std::get<doc::SurfaceObject>(p->shape).surface);
+            const ImVec2 lo = iv(domain_to_pixel(sq, to_square(r.u.lo, r.v.hi)));
+            const ImVec2 hi = iv(domain_to_pixel(sq, to_square(r.u.hi, r.v.lo)));
+            if (p == obj) dl->AddRectFilled(lo, hi, pal.current);
+            dl->AddRect(lo, hi, pal.border, 0, 0, 2.5f * k);
+            const ImVec2 ts = ImGui::CalcTextSize(p->name.c_str());
+            if (ts.x + 6 * k < hi.x - lo.x)
+                dl->AddText(ImVec2(lo.x + 3 * k, lo.y + 2 * k), pal.text, p->name.c_str());
+        }
+    }
+
+    // Knot lines across the current patch (where the knot curves run) and ticks with labels.
+    const doc::ParamRect own = doc::surface_domain(*s);
     const std::vector<KnotTick> tu = knot_ticks(s->knots_u, s->degree_u, s->n_u);
     const std::vector<KnotTick> tv = knot_ticks(s->knots_v, s->degree_v, s->n_v);
     const float tick = 7 * k;
     std::vector<double> px_u, px_v;
-    for (const KnotTick& t : tu) px_u.push_back(sq.x + t.position * sq.w);
-    for (const KnotTick& t : tv) px_v.push_back(sq.y + (1.0 - t.position) * sq.h);
+    for (const KnotTick& t : tu) px_u.push_back(sq.x + normalize_param(dom.u, t.value) * sq.w);
+    for (const KnotTick& t : tv)
+        px_v.push_back(sq.y + (1.0 - normalize_param(dom.v, t.value)) * sq.h);
+    const float own_top = static_cast<float>(domain_to_pixel(sq, to_square(own.u.lo, own.v.hi)).y);
+    const float own_bottom =
+        static_cast<float>(domain_to_pixel(sq, to_square(own.u.lo, own.v.lo)).y);
+    const float own_left = static_cast<float>(domain_to_pixel(sq, to_square(own.u.lo, own.v.lo)).x);
+    const float own_right =
+        static_cast<float>(domain_to_pixel(sq, to_square(own.u.hi, own.v.lo)).x);
     const std::vector<bool> keep_u = thin_labels(px_u, ImGui::CalcTextSize("0.00").x + 8 * k);
     // v runs upward on screen: thin from the bottom (ascending pixel order reversed).
     std::vector<double> rev_v;
     for (double p : px_v) rev_v.push_back(-p);
     const std::vector<bool> keep_v = thin_labels(rev_v, ImGui::GetTextLineHeight() * 2.1);
+    const KnotDrag& kd = ctx.ui.knot_drag;
+    auto held = [&](geom::Dir dir, const KnotTick& t) {
+        return kd.active && kd.object == obj->id && kd.dir == dir && kd.first == t.first_index;
+    };
 
     for (std::size_t n = 0; n < tu.size(); ++n) {
         const float x = static_cast<float>(px_u[n]);
         const float w = (1.0f + static_cast<float>(tu[n].multiplicity - 1) * 1.2f) * k;
-        if (tu[n].interior) dl->AddLine(ImVec2(x, a.y), ImVec2(x, b.y), pal.grid, w);
-        dl->AddLine(ImVec2(x, b.y), ImVec2(x, b.y + tick), pal.tick, 2 * k);
-        if (!keep_u[n]) continue;
+        if (tu[n].interior) dl->AddLine(ImVec2(x, own_top), ImVec2(x, own_bottom), pal.grid, w);
+        const bool h = held(geom::Dir::u, tu[n]);
+        dl->AddLine(ImVec2(x, b.y), ImVec2(x, b.y + tick), h ? pal.indicator : pal.tick,
+                    (h ? 4 : 2) * k);
+        if (!keep_u[n] && !h) continue;
         const std::string v = short_number(tu[n].value);
         const float tw = ImGui::CalcTextSize(v.c_str()).x;
         dl->AddText(ImVec2(x - tw / 2, b.y + tick + 1), pal.text, v.c_str());
@@ -142,9 +256,11 @@ void draw_tracing_panel(AppContext& ctx) {
     for (std::size_t n = 0; n < tv.size(); ++n) {
         const float y = static_cast<float>(px_v[n]);
         const float w = (1.0f + static_cast<float>(tv[n].multiplicity - 1) * 1.2f) * k;
-        if (tv[n].interior) dl->AddLine(ImVec2(a.x, y), ImVec2(b.x, y), pal.grid, w);
-        dl->AddLine(ImVec2(a.x - tick, y), ImVec2(a.x, y), pal.tick, 2 * k);
-        if (!keep_v[n]) continue;
+        if (tv[n].interior) dl->AddLine(ImVec2(own_left, y), ImVec2(own_right, y), pal.grid, w);
+        const bool h = held(geom::Dir::v, tv[n]);
+        dl->AddLine(ImVec2(a.x - tick, y), ImVec2(a.x, y), h ? pal.indicator : pal.tick,
+                    (h ? 4 : 2) * k);
+        if (!keep_v[n] && !h) continue;
         const std::string v = short_number(tv[n].value);
         const ImVec2 ts = ImGui::CalcTextSize(v.c_str());
         const float lh = ImGui::GetTextLineHeight();
@@ -170,21 +286,31 @@ void draw_tracing_panel(AppContext& ctx) {
     dl->AddCircleFilled(ip, 7 * k, pal.indicator, 24);
     dl->AddCircle(ip, 7 * k, IM_COL32(0, 0, 0, 255), 24, 1.5f * k);
 
+    // Knot ticks are handles (after the drawing: their buttons sit beside the square).
+    knot_strip(ctx, *obj, *s, geom::Dir::u, tu, px_u, {a.x - 4 * k, b.y, sq.w + 8 * k, label_h}, sq,
+               dom);
+    knot_strip(ctx, *obj, *s, geom::Dir::v, tv, px_v, {cur.x, a.y - 4 * k, label_w, sq.h + 8 * k},
+               sq, dom);
+
     // Exact values, in the surface's own parameters.
     ImGui::SetCursorScreenPos(ImVec2(cur.x, b.y + label_h));
-    const geom::Interval du = domain_u(*s), dv = domain_v(*s);
     double u = uv.x, v = uv.y;
     ImGui::SetNextItemWidth(std::min(avail.x * 0.4f, 140 * k));
     if (ImGui::InputDouble("u", &u, 0.01, 0.1, "%.4f"))
-        ctx.doc.indicator.x = std::clamp(normalize_param(du, u), 0.0, 1.0);
+        ctx.doc.indicator.x = std::clamp(normalize_param(dom.u, u), 0.0, 1.0);
     ImGui::SameLine();
     ImGui::SetNextItemWidth(std::min(avail.x * 0.4f, 140 * k));
     if (ImGui::InputDouble("v", &v, 0.01, 0.1, "%.4f"))
-        ctx.doc.indicator.y = std::clamp(normalize_param(dv, v), 0.0, 1.0);
+        ctx.doc.indicator.y = std::clamp(normalize_param(dom.v, v), 0.0, 1.0);
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("knots u: %s", knot_vector_text(s->knots_u).c_str());
     ImGui::TextWrapped("knots v: %s", knot_vector_text(s->knots_v).c_str());
     ImGui::PopStyleColor();
+
+    if (!patches.empty()) continuity_controls(ctx, *obj);
+
+    // Moving the indicator into another subpatch's part makes it the current patch.
+    doc::follow_indicator(ctx.doc, obj->id);
 }
 
 } // namespace isoparm::ui

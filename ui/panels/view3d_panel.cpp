@@ -14,6 +14,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/doc/commands.hpp"
+#include "core/doc/commands_curve.hpp"
 #include "ui/actions.hpp"
 #include "ui/doc_access.hpp"
 #include "ui/panels/panels.hpp"
@@ -60,7 +61,9 @@ std::optional<Candidate> pick(const AppContext& ctx, const Viewport& vp, const g
     return cands[*k];
 }
 
+// Curves go through the designer's command, so chord-length / centripetal knots follow.
 std::unique_ptr<doc::Command> move_point(const PointRef& r, const glm::dvec3& p) {
+    if (r.j < 0) return doc::move_curve_point(r.object, r.i, p);
     return doc::move_control_point(r.object, r.i, r.j, p);
 }
 

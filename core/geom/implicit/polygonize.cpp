@@ -377,6 +377,12 @@ struct Polygonizer {
     long units_total = 0;
     std::atomic<bool> stop{false};
     std::atomic<std::size_t> planes_done{0};
+    // The running size of the mesh against the caps (vertices counted before welding, so a
+    // little above the final count), summed after every plane and slab by the worker that
+    // made them: a worker overshoots by at most one slab before every worker stops.
+    std::atomic<std::size_t> vertex_count{0}, triangle_count{0};
+    std::size_t max_vertices = 0, max_triangles = 0;
+    std::atomic<bool> over_cap{false};
     bool cancelled = false; // written by the calling thread only
     std::exception_ptr failure;
     std::mutex failure_mutex;
@@ -401,6 +407,7 @@ struct Polygonizer {
         evaluate_layer(ctx, bp.layer, bp.values.data(), bp.rows.data(), ws.scratch);
         make_plane_vertices(ctx, bp.layer, bp.values.data(), bp.rows.data(), bp.ids.data(),
                             bp.vertices);
+        count(bp.vertices.positions.size(), 0);
     }
 
     void do_chunk(int c, Workspace& ws, int worker) {
@@ -413,6 +420,8 @@ struct Polygonizer {
         int buffer = 0;
         for (int k = chunk.first_slab; k < chunk.end_slab; ++k) {
             if (stop) return;
+            const std::size_t vertices_before = chunk.vertices.positions.size();
+            const std::size_t triangles_before = chunk.triangles.size();
             Layer top;
             if (k + 1 == above.layer) {
                 top = above.view(tag_top);
@@ -430,6 +439,8 @@ struct Polygonizer {
             }
             make_vertical_vertices(ctx, bottom, top, ws.vertical_ids.data(), chunk.vertices);
             emit_triangles(c, bottom, top, ws.vertical_ids.data());
+            count(chunk.vertices.positions.size() - vertices_before,
+                  chunk.triangles.size() - triangles_before);
             bottom = top;
             buffer ^= 1;
             unit_done(worker);
@@ -535,6 +546,15 @@ struct Polygonizer {
                 std::lock_guard<std::mutex> lock(failure_mutex);
                 if (!failure) failure = std::current_exception();
             }
+            halt();
+        }
+    }
+
+    void count(std::size_t vertices, std::size_t triangles) {
+        const std::size_t v = vertex_count += vertices;
+        const std::size_t t = triangle_count += triangles;
+        if (v > max_vertices || t > max_triangles) {
+            over_cap = true;
             halt();
         }
     }
@@ -663,6 +683,8 @@ Expected<Mesh> polygonize(const Program& f, const PolygonizeOptions& options) {
 
     Polygonizer pz(Context{f, options.parameters.data(), grid});
     pz.progress = &options.progress;
+    pz.max_vertices = options.max_vertices;
+    pz.max_triangles = options.max_triangles;
     // About eight slabs per chunk, at most 32 chunks: enough to balance two to eight threads.
     const int chunk_count = std::clamp(grid.nz / 8, 1, 32);
     pz.planes.resize(chunk_count + 1);
@@ -693,6 +715,16 @@ Expected<Mesh> polygonize(const Program& f, const PolygonizeOptions& options) {
             return make_error_nopath(ErrorCode::internal,
                                      std::string("polygonization failed: ") + e.what());
         }
+    }
+    if (pz.over_cap) {
+        const bool vertices = pz.vertex_count > options.max_vertices;
+        return make_error(
+            ErrorCode::limit,
+            "cell " + format_number(options.cell) + " gives a mesh of more than " +
+                std::to_string(vertices ? options.max_vertices : options.max_triangles) +
+                (vertices ? " vertices" : " triangles") +
+                " (the most allowed); use a larger cell or smaller bounds",
+            "/cell");
     }
     if (pz.cancelled) return make_error_nopath(ErrorCode::limit, "polygonization was cancelled");
 

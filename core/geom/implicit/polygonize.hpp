@@ -1,12 +1,25 @@
 // Polygonization of f(x, y, z) = 0 inside a box (in the spirit of Bloomenthal's polygonizer).
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <glm/vec3.hpp>
 #include <vector>
 
 #include "core/geom/implicit/expression.hpp"
 #include "core/geom/tessellate.hpp"
+
+namespace isoparm::geom {
+
+// Answer-size caps of the meshes the protocol returns (`tessellate`, `polygonize`) and the
+// workstation draws: a grid within the 10,000,000-point evaluation cap can still ask for
+// gigabytes of output (a 3162 x 3162 tessellation, or a polygonization of a finely rippled
+// surface), so the mesh itself is capped too. A million vertices is far more than a screen
+// shows; as JSON it is about 0.1 GB of text. Docs: docs/protocol.md, "Size caps".
+constexpr std::size_t max_mesh_vertices = 1000000;
+constexpr std::size_t max_mesh_triangles = 2000000;
+
+} // namespace isoparm::geom
 
 namespace isoparm::geom::implicit {
 
@@ -20,6 +33,10 @@ struct PolygonizeOptions {
     std::function<bool(double)> progress;
     // Worker threads; 0 = std::thread::hardware_concurrency(). The mesh does not depend on it.
     int threads = 0;
+    // The mesh caps, checked while the grid is worked through (after each slab) so memory
+    // stays bounded: the polygonizer stops as soon as the running counts exceed them.
+    std::size_t max_vertices = max_mesh_vertices;
+    std::size_t max_triangles = max_mesh_triangles;
 };
 
 // A consistently oriented mesh with shared vertices, unit normals grad f / |grad f|, triangles
@@ -29,7 +46,8 @@ struct PolygonizeOptions {
 //   `schema` "/bounds"     a bound not finite, or min >= max on some axis
 //   `schema` "/parameters" wrong count of parameter values; "/parameters/<i>" a non-finite value
 //   `limit`  "/cell"       the grid has more than max_evaluation_points points (checked before
-//                          anything is allocated)
+//                          anything is allocated), or the mesh grows past max_vertices or
+//                          max_triangles (checked as it grows; the message says which)
 //   `limit`  (no path)     cancelled through `progress`
 // An empty mesh (surface not found in the bounds) is not an error here; the caller reports it.
 Expected<Mesh> polygonize(const Program& f, const PolygonizeOptions& options);

@@ -1,0 +1,201 @@
+// The Construct menu's constructions on document curves, errors re-worded with curve names.
+#include "core/doc/curve_constructions.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+
+#include "core/doc/commands_common.hpp"
+#include "core/geom/validate.hpp"
+
+namespace isoparm::doc {
+
+using geom::ErrorCode;
+using geom::make_error;
+
+const char* construction_label(Construction kind) {
+    switch (kind) {
+    case Construction::ruled:
+        return "Ruled";
+    case Construction::revolve:
+        return "Revolve";
+    case Construction::swing:
+        return "Swing";
+    case Construction::sweep:
+        return "Sweep";
+    case Construction::oriented_sweep:
+        return "Oriented sweep";
+    case Construction::skin:
+        return "Skin";
+    }
+    return "Construct";
+}
+
+namespace {
+
+// How many curves each construction takes: [min, max].
+std::pair<std::size_t, std::size_t> curve_count(Construction kind) {
+    switch (kind) {
+    case Construction::revolve:
+        return {1, 1};
+    case Construction::skin:
+        return {2, static_cast<std::size_t>(geom::max_points_per_direction)};
+    default:
+        return {2, 2};
+    }
+}
+
+// The role of curve k in the request, for messages: "profile", "trajectory", "curve 2".
+std::string role(Construction kind, std::size_t k) {
+    switch (kind) {
+    case Construction::revolve:
+        return "profile";
+    case Construction::swing:
+    case Construction::sweep:
+    case Construction::oriented_sweep:
+        return k == 0 ? "profile" : "trajectory";
+    default:
+        return "curve " + std::to_string(k + 1);
+    }
+}
+
+// A geometry error re-homed at the request: "/profile/..." and "/trajectory/..." become
+// "/curves/0/..." and "/curves/1/..."; an error about one curve names it; an error about all
+// of them lists them in order.
+geom::Error rehome(geom::Error e, const std::vector<const Object*>& objects) {
+    if (!e.has_path) return e;
+    auto starts = [&](const std::string& p) {
+        return e.path == p || e.path.compare(0, p.size() + 1, p + "/") == 0;
+    };
+    if (starts("/profile"))
+        e.path = "/curves/0" + e.path.substr(8);
+    else if (starts("/trajectory"))
+        e.path = "/curves/1" + e.path.substr(11);
+    const std::string prefix = "/curves/";
+    if (e.path.compare(0, prefix.size(), prefix) == 0) {
+        const std::size_t end = e.path.find('/', prefix.size());
+        const std::string digits = e.path.substr(prefix.size(), end - prefix.size());
+        std::size_t k = objects.size();
+        std::from_chars(digits.data(), digits.data() + digits.size(), k);
+        if (k < objects.size()) e.message = "curve '" + objects[k]->name + "': " + e.message;
+    } else if (e.path == "/curves") {
+        std::string names;
+        for (std::size_t k = 0; k < objects.size(); ++k)
+            names += (k ? ", '" : "'") + objects[k]->name + "'";
+        e.message += " (curves in order: " + names + ")";
+    }
+    return e;
+}
+
+std::string join_names(const std::vector<const Object*>& objects) {
+    std::string s;
+    for (std::size_t k = 0; k < objects.size(); ++k) s += (k ? "-" : "") + objects[k]->name;
+    return s;
+}
+
+} // namespace
+
+geom::Expected<ConstructionResult> build_construction(const Document& doc,
+                                                      const ConstructionRequest& request) {
+    const Construction kind = request.kind;
+    const auto [lo, hi] = curve_count(kind);
+    const std::size_t n = request.curves.size();
+    if (n < lo || n > hi) {
+        std::string want = lo == hi ? std::to_string(lo) : "at least " + std::to_string(lo);
+        if (kind == Construction::swing || kind == Construction::sweep ||
+            kind == Construction::oriented_sweep)
+            want += " (a profile and a trajectory)";
+        return make_error(ErrorCode::schema,
+                          std::string(construction_label(kind)) + " takes " + want + " curve" +
+                              (lo == 1 && hi == 1 ? "" : "s") + ", got " + std::to_string(n),
+                          "/curves");
+    }
+    std::vector<const Object*> objects;
+    std::vector<geom::Curve> curves;
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::string at = "/curves/" + std::to_string(k);
+        const Object* o = doc.find(request.curves[k]);
+        if (!o)
+            return make_error(ErrorCode::schema,
+                              "there is no object with id " + std::to_string(request.curves[k]),
+                              at);
+        const auto* c = std::get_if<CurveObject>(&o->shape);
+        if (!c)
+            return make_error(ErrorCode::schema,
+                              "the " + role(kind, k) + " '" + o->name + "' is a " +
+                                  detail::kind_name(o->shape) + ", not a curve",
+                              at);
+        objects.push_back(o);
+        curves.push_back(c->curve);
+    }
+
+    ConstructionResult out;
+    geom::Surface surface;
+    switch (kind) {
+    case Construction::ruled: {
+        auto r = geom::ruled(curves[0], curves[1]);
+        if (!r) return rehome(r.error(), objects);
+        surface = std::move(r).value();
+        break;
+    }
+    case Construction::revolve: {
+        auto r = geom::revolve(curves[0], request.angle);
+        if (!r)
+            return rehome(r.error().under(r.error().path == "/angle" ? "" : "/curves/0"), objects);
+        surface = std::move(r).value();
+        break;
+    }
+    case Construction::swing: {
+        auto r = geom::swing(curves[0], curves[1], request.scale);
+        if (!r) return rehome(r.error(), objects);
+        surface = std::move(r).value();
+        break;
+    }
+    case Construction::sweep: {
+        auto r = geom::sweep(curves[0], curves[1]);
+        if (!r) return rehome(r.error(), objects);
+        surface = std::move(r).value();
+        break;
+    }
+    case Construction::oriented_sweep: {
+        geom::OrientedSweepOptions options;
+        options.sections = request.sections;
+        auto r = geom::oriented_sweep(curves[0], curves[1], options);
+        if (!r) return rehome(r.error(), objects);
+        surface = std::move(r->skinned.surface);
+        out.note = "oriented sweep of " + std::to_string(r->sections + 1) +
+                   " profile copies: largest deviation from the ideal sweep " +
+                   geom::format_number(r->max_deviation) + " at (u, v) = (" +
+                   geom::format_number(r->deviation_u) + ", " +
+                   geom::format_number(r->deviation_v) + "); more sections make it smaller";
+        break;
+    }
+    case Construction::skin: {
+        const int count = static_cast<int>(n);
+        const int degree =
+            request.skin_degree == 0 ? geom::default_skin_degree(count) : request.skin_degree;
+        if (degree < 1 || degree > count - 1)
+            return make_error(ErrorCode::schema,
+                              "the skin's v-degree must be 1.." + std::to_string(count - 1) +
+                                  " for " + std::to_string(count) + " curves, got " +
+                                  std::to_string(degree) + " (more curves allow a higher degree)",
+                              "/degree");
+        auto r = geom::skin(curves, degree, request.parametrization);
+        if (!r) return rehome(r.error(), objects);
+        surface = std::move(r->surface);
+        out.note = std::string("skin of ") + std::to_string(count) + " curves, v-degree " +
+                   std::to_string(degree) + ", " +
+                   geom::parametrization_name(request.parametrization) + " parameters v =";
+        for (double v : r->params) out.note += " " + geom::format_number(v);
+        break;
+    }
+    }
+    std::string name = construction_label(kind);
+    std::transform(name.begin(), name.end(), name.begin(),
+                   [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+    out.object.name = name + " " + join_names(objects);
+    out.object.shape = SurfaceObject{std::move(surface)};
+    return out;
+}
+
+} // namespace isoparm::doc

@@ -1,0 +1,97 @@
+// Subpatches that keep sharing their original domain (issue 5): the group's domain, which
+// patch holds a parameter, the borders patches share, and continuity kept across them.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "core/doc/document.hpp"
+#include "core/geom/status.hpp"
+
+namespace isoparm::doc {
+
+struct ParamRect {
+    geom::Interval u, v;
+    bool contains(glm::dvec2 p) const { return u.contains(p.x) && v.contains(p.y); }
+};
+
+ParamRect surface_domain(const geom::Surface& s);
+
+// The surfaces of group `group`, in document order.
+std::vector<const Object*> patch_members(const Document& doc, std::uint64_t group);
+
+// The rectangle the tracing square shows for a surface object: the box its group's patches
+// tile (the original surface's domain), or the surface's own domain outside a group.
+ParamRect tracing_domain(const Document& doc, const Object& surface_object);
+
+// The patch of `group` whose domain holds (u, v) (group parameters). On a border shared by
+// several patches `prefer` wins when it is one of them (so the current patch does not flicker
+// while the indicator runs along a border), else the first in document order. 0: none.
+std::uint64_t patch_at(const Document& doc, std::uint64_t group, glm::dvec2 uv,
+                       std::uint64_t prefer = 0);
+
+// Moving the indicator into another subpatch's part of the square makes that subpatch
+// current: the object the indicator (normalized over the group's domain) falls in, given the
+// current object. Returns `current` itself outside a group or when it already holds it.
+std::uint64_t patch_for_indicator(const Document& doc, std::uint64_t current);
+
+// Makes that subpatch current (the selection, view state; its control point selection is
+// dropped). Returns whether the current patch changed.
+bool follow_indicator(Document& doc, std::uint64_t current);
+
+// A scene's groups must be surfaces whose domains do not overlap (error `schema` at
+// "/objects/<k>/patch_group", naming both objects).
+std::optional<geom::Error> check_patch_groups(const Document& doc);
+
+// Two patches of a group that touch: `low`'s high end in direction `across` meets `high`'s
+// low end, over `along` (parameters of the other direction).
+struct SharedBorder {
+    std::uint64_t low = 0, high = 0;
+    geom::Dir across = geom::Dir::u;
+    geom::Interval along;
+    // The border curves have the same degree and knots over `along` (each side's knots at
+    // the ends of `along` reach the degree), so the border's control points pair up one to
+    // one and C0 can be kept exactly. Otherwise `why_not` says what differs.
+    bool conforming = false;
+    // Both sides are clamped at the border, so C1 across it is a condition on one more row.
+    bool c1_possible = false;
+    std::string why_not;
+    // The first control point index along the border on each side, and how many pair up.
+    int low_first = 0, high_first = 0, count = 0;
+};
+std::vector<SharedBorder> shared_borders(const Document& doc, std::uint64_t group);
+
+// A control point's previous state, to restore on undo.
+struct PointChange {
+    std::uint64_t object = 0;
+    int i = 0, j = 0;
+    glm::dvec3 position{0};
+    double weight = 1;
+};
+
+// After control point (i, j) of surface `id` changed (position or weight), moves the
+// neighbouring patches' points so that the borders stay closed (C0: the border points
+// coincide, weights included) and, for C1, the cross-border derivatives agree (in
+// homogeneous space, the condition of Piegl & Tiller eq. 5.26 on the two rows at the join:
+// Q_B1 = Q_0 + (p_A dB) / (p_B dA) (Q_0 - Q_A1)). Changes spread to the neighbours'
+// neighbours (a corner shared by four patches), each patch adjusted once. Returns the
+// previous values of every point it changed, in the order changed; nothing outside a group
+// or with Continuity::off. Borders that do not conform are left alone.
+std::vector<PointChange> keep_continuity(Document& doc, std::uint64_t id, int i, int j,
+                                         Continuity mode);
+
+// Restores points recorded by keep_continuity (latest first).
+void restore_points(Document& doc, const std::vector<PointChange>& changes);
+
+// Whether the group's conforming borders hold continuity `mode` within `tolerance` (relative
+// to the control net's size): border points coincide (C0) and the C1 rows agree. For tests and
+// the control panel's status line.
+bool continuity_holds(const Document& doc, std::uint64_t group, Continuity mode,
+                      double tolerance = 1e-12);
+
+} // namespace isoparm::doc

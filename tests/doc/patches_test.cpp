@@ -1,0 +1,292 @@
+// Subpatches sharing the original domain: activation by parameter, borders, continuity kept
+// by point and weight edits (C0, C1), undo, and the scene round trip.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/doc/commands.hpp"
+#include "core/doc/patches.hpp"
+#include "core/doc/scene_io.hpp"
+#include "core/geom/evaluate.hpp"
+#include "core/geom/knots.hpp"
+
+namespace isoparm::doc {
+namespace {
+
+using geom::Dir;
+
+// Splits through the history; the pieces' ids.
+std::pair<std::uint64_t, std::uint64_t> split(Document& doc, History& h, std::uint64_t id, Dir dir,
+                                              double t) {
+    auto cmd = split_object(id, dir, t);
+    const Command* raw = cmd.get();
+    EXPECT_TRUE(h.execute(doc, std::move(cmd)));
+    return split_piece_ids(*raw);
+}
+
+// The paper's example on the default hill: split at u = 0.75, then the left part at v = 0.5.
+struct PaperSplit {
+    Document doc = default_document();
+    History history;
+    std::uint64_t left = 0, right = 0, left_low = 0, left_high = 0;
+
+    PaperSplit() {
+        const std::uint64_t hill = doc.objects[0].id;
+        std::tie(left, right) = split(doc, history, hill, Dir::u, 0.75);
+        std::tie(left_low, left_high) = split(doc, history, left, Dir::v, 0.5);
+    }
+    const geom::Surface& surface(std::uint64_t id) const {
+        return std::get<SurfaceObject>(doc.find(id)->shape).surface;
+    }
+};
+
+TEST(Patches, SplitPiecesShareTheOriginalDomain) {
+    PaperSplit p;
+    const std::uint64_t group = p.doc.find(p.right)->patch_group;
+    EXPECT_NE(group, 0u);
+    EXPECT_EQ(p.doc.find(p.left_low)->patch_group, group);
+    EXPECT_EQ(p.doc.find(p.left_high)->patch_group, group);
+    EXPECT_EQ(patch_members(p.doc, group).size(), 3u);
+    const ParamRect r = tracing_domain(p.doc, *p.doc.find(p.left_low));
+    EXPECT_EQ(r.u.lo, 0.0);
+    EXPECT_EQ(r.u.hi, 1.0);
+    EXPECT_EQ(r.v.lo, 0.0);
+    EXPECT_EQ(r.v.hi, 1.0);
+    EXPECT_FALSE(check_patch_groups(p.doc));
+}
+
+TEST(Patches, ActivationByParameter) {
+    PaperSplit p;
+    const std::uint64_t group = p.doc.find(p.right)->patch_group;
+    EXPECT_EQ(patch_at(p.doc, group, {0.2, 0.2}), p.left_low);
+    EXPECT_EQ(patch_at(p.doc, group, {0.2, 0.8}), p.left_high);
+    EXPECT_EQ(patch_at(p.doc, group, {0.9, 0.1}), p.right);
+    // On the border the current patch stays current.
+    EXPECT_EQ(patch_at(p.doc, group, {0.75, 0.3}, p.right), p.right);
+    EXPECT_EQ(patch_at(p.doc, group, {0.75, 0.3}, p.left_low), p.left_low);
+    EXPECT_EQ(patch_at(p.doc, group, {1.5, 0.3}), 0u);
+
+    // The indicator is normalized over the group's domain.
+    p.doc.indicator = {0.9, 0.6};
+    EXPECT_EQ(patch_for_indicator(p.doc, p.left_low), p.right);
+    p.doc.indicator = {0.1, 0.6};
+    EXPECT_EQ(patch_for_indicator(p.doc, p.right), p.left_high);
+    p.doc.indicator = {0.1, 0.4};
+    EXPECT_EQ(patch_for_indicator(p.doc, p.left_low), p.left_low);
+
+    // Following the indicator changes the selection (its point is dropped), once.
+    p.doc.selection = {p.left_low, 1, 1};
+    p.doc.indicator = {0.95, 0.95};
+    EXPECT_TRUE(follow_indicator(p.doc, p.left_low));
+    EXPECT_EQ(p.doc.selection, (Selection{p.right, -1, -1}));
+    EXPECT_FALSE(follow_indicator(p.doc, p.right));
+}
+
+TEST(Patches, BordersSayWhichConform) {
+    PaperSplit p;
+    const auto borders = shared_borders(p.doc, p.doc.find(p.right)->patch_group);
+    ASSERT_EQ(borders.size(), 3u);
+    int conforming = 0;
+    for (const SharedBorder& b : borders) {
+        if (b.low == p.left_low && b.high == p.left_high) {
+            EXPECT_TRUE(b.conforming);
+            EXPECT_TRUE(b.c1_possible);
+            EXPECT_EQ(b.across, Dir::v);
+            EXPECT_EQ(b.count, p.surface(p.left_low).n_u);
+        } else {
+            // The right part's v knots have 0.5 once: its border curve does not split there.
+            EXPECT_EQ(b.high, p.right);
+            EXPECT_FALSE(b.conforming);
+            EXPECT_NE(b.why_not.find("multiplicity"), std::string::npos) << b.why_not;
+        }
+        conforming += b.conforming;
+    }
+    EXPECT_EQ(conforming, 1);
+}
+
+// First u-derivatives of both pieces along the border u = t.
+double max_cross_derivative_gap(const geom::Surface& a, const geom::Surface& b, double t) {
+    double gap = 0;
+    for (double v = 0; v <= 1.0; v += 0.125) {
+        const auto da = geom::surface_derivatives(a, t, v, 1);
+        const auto db = geom::surface_derivatives(b, t, v, 1);
+        EXPECT_TRUE(da && db);
+        gap = std::max(gap, glm::length(da->D[0][0] - db->D[0][0]));
+        gap = std::max(gap, glm::length(da->D[1][0] - db->D[1][0]));
+    }
+    return gap;
+}
+
+struct OneSplit {
+    Document doc = default_document();
+    History history;
+    std::uint64_t a = 0, b = 0;
+    explicit OneSplit(Continuity c) {
+        doc.continuity = c;
+        std::tie(a, b) = split(doc, history, doc.objects[0].id, Dir::u, 0.5);
+        history.seal();
+    }
+    geom::Surface& surface(std::uint64_t id) {
+        return std::get<SurfaceObject>(doc.find(id)->shape).surface;
+    }
+};
+
+TEST(Patches, OffLeavesTheNeighbourAlone) {
+    OneSplit s(Continuity::off);
+    const geom::Surface before = s.surface(s.b);
+    const int n = s.surface(s.a).n_u;
+    ASSERT_TRUE(s.history.execute(s.doc, move_control_point(s.a, n - 1, 2, {0.1, 0.2, 3})));
+    EXPECT_EQ(s.surface(s.b).points, before.points);
+    EXPECT_FALSE(continuity_holds(s.doc, s.doc.find(s.a)->patch_group, Continuity::c0));
+}
+
+TEST(Patches, C0MovesTheSharedBorderPointAndUndoRestoresBoth) {
+    OneSplit s(Continuity::c0);
+    const Document before = s.doc;
+    const int n = s.surface(s.a).n_u;
+    // A drag in three steps: one undo step.
+    for (double z : {1.0, 2.0, 3.0})
+        ASSERT_TRUE(s.history.execute(s.doc, move_control_point(s.a, n - 1, 2, {0.1, 0.2, z})));
+    EXPECT_EQ(s.history.size(), 2u);
+    EXPECT_EQ(s.surface(s.b).point(0, 2), glm::dvec3(0.1, 0.2, 3));
+    EXPECT_TRUE(continuity_holds(s.doc, s.doc.find(s.a)->patch_group, Continuity::c0, 0));
+    // The surfaces meet along the whole border.
+    for (double v = 0; v <= 1; v += 0.1) {
+        const auto pa = geom::surface_point(s.surface(s.a), 0.5, v);
+        const auto pb = geom::surface_point(s.surface(s.b), 0.5, v);
+        ASSERT_TRUE(pa && pb);
+        EXPECT_EQ(*pa, *pb);
+    }
+    // A weight on the border follows too.
+    ASSERT_TRUE(s.history.execute(s.doc, set_weight(s.b, 0, 1, 3.5)));
+    EXPECT_EQ(s.surface(s.a).weight(n - 1, 1), 3.5);
+    s.history.undo(s.doc);
+    s.history.undo(s.doc);
+    EXPECT_TRUE(same_geometry(s.doc, before));
+    s.history.redo(s.doc);
+    EXPECT_EQ(s.surface(s.b).point(0, 2), glm::dvec3(0.1, 0.2, 3));
+}
+
+TEST(Patches, C1KeepsTheCrossDerivativeForPointsAndWeights) {
+    OneSplit s(Continuity::c1);
+    const std::uint64_t group = s.doc.find(s.a)->patch_group;
+    // Right after the split the pieces are C2 (a bicubic split at a simple knot).
+    EXPECT_LT(max_cross_derivative_gap(s.surface(s.a), s.surface(s.b), 0.5), 1e-12);
+    const int n = s.surface(s.a).n_u;
+    // The inner row next to the border, then a border point, then a weight on the inner row.
+    ASSERT_TRUE(s.history.execute(s.doc, move_control_point(s.a, n - 2, 1, {-0.3, -1, 2.5})));
+    s.history.seal();
+    ASSERT_TRUE(s.history.execute(s.doc, move_control_point(s.b, 0, 3, {0.2, 1.1, -0.7})));
+    s.history.seal();
+    ASSERT_TRUE(s.history.execute(s.doc, set_weight(s.a, n - 2, 2, 4.0)));
+    EXPECT_TRUE(continuity_holds(s.doc, group, Continuity::c1, 1e-14));
+    EXPECT_LT(max_cross_derivative_gap(s.surface(s.a), s.surface(s.b), 0.5), 1e-12);
+    // Without continuity the same edit would break it: the check can fail.
+    s.doc.continuity = Continuity::off;
+    ASSERT_TRUE(s.history.execute(s.doc, move_control_point(s.a, n - 2, 1, {-0.3, -1, 0})));
+    EXPECT_FALSE(continuity_holds(s.doc, group, Continuity::c1, 1e-14));
+    EXPECT_GT(max_cross_derivative_gap(s.surface(s.a), s.surface(s.b), 0.5), 1e-3);
+}
+
+TEST(Patches, C1AcrossUnequalSpansAndDegrees) {
+    // Split at 0.3 (spans 0.3 and 0.2 beside the border), then raise the right piece to degree
+    // 4 across it: the C1 rows need the ratio (p_a dt_b) / (p_b dt_a), not a mirror image.
+    Document doc = default_document();
+    doc.continuity = Continuity::c1;
+    History h;
+    const auto [a, b] = split(doc, h, doc.objects[0].id, Dir::u, 0.3);
+    ASSERT_TRUE(h.execute(doc, elevate_degree(b, Dir::u)));
+    const auto surface = [&](std::uint64_t id) -> const geom::Surface& {
+        return std::get<SurfaceObject>(doc.find(id)->shape).surface;
+    };
+    EXPECT_LT(max_cross_derivative_gap(surface(a), surface(b), 0.3), 1e-12);
+    const int n = surface(a).n_u;
+    ASSERT_TRUE(h.execute(doc, move_control_point(a, n - 2, 3, {-1.2, 0.9, 1.8})));
+    h.seal();
+    ASSERT_TRUE(h.execute(doc, move_control_point(b, 0, 0, {-1.1, -2.2, 0.4})));
+    h.seal();
+    ASSERT_TRUE(h.execute(doc, set_weight(a, n - 1, 2, 0.6)));
+    EXPECT_TRUE(continuity_holds(doc, doc.find(a)->patch_group, Continuity::c1, 1e-14));
+    EXPECT_LT(max_cross_derivative_gap(surface(a), surface(b), 0.3), 1e-12);
+}
+
+TEST(Patches, CornerOfFourPatchesStaysClosed) {
+    Document doc = default_document();
+    doc.continuity = Continuity::c0;
+    History h;
+    const auto [a, b] = split(doc, h, doc.objects[0].id, Dir::u, 0.5);
+    const auto [a1, a2] = split(doc, h, a, Dir::v, 0.5);
+    const auto [b1, b2] = split(doc, h, b, Dir::v, 0.5);
+    const geom::Surface& sa1 = std::get<SurfaceObject>(doc.find(a1)->shape).surface;
+    // The corner at (0.5, 0.5) of the lower-left piece moves: all four patches follow.
+    ASSERT_TRUE(h.execute(doc, move_control_point(a1, sa1.n_u - 1, sa1.n_v - 1, {0, 0, 5})));
+    for (std::uint64_t id : {a2, b1, b2}) {
+        const geom::Surface& s = std::get<SurfaceObject>(doc.find(id)->shape).surface;
+        const auto p = geom::surface_point(s, 0.5, 0.5);
+        ASSERT_TRUE(p);
+        EXPECT_EQ(*p, glm::dvec3(0, 0, 5)) << doc.find(id)->name;
+    }
+    EXPECT_TRUE(continuity_holds(doc, doc.find(a1)->patch_group, Continuity::c0, 0));
+}
+
+TEST(Patches, SplitWithContinuityRefinesTheNeighbourSoBordersConform) {
+    Document doc = default_document();
+    doc.continuity = Continuity::c1;
+    History h;
+    const auto [left, right] = split(doc, h, doc.objects[0].id, Dir::u, 0.75);
+    const Document before = doc;
+    doc.selection = {right, 1, 2};
+    const geom::Surface right_before = std::get<SurfaceObject>(doc.find(right)->shape).surface;
+    auto second = split_object(left, Dir::v, 0.5);
+    const Command* r2 = second.get();
+    ASSERT_TRUE(h.execute(doc, std::move(second)));
+    EXPECT_NE(r2->label().find("1 neighbour refined"), std::string::npos) << r2->label();
+    const auto [low, high] = split_piece_ids(*r2);
+    const geom::Surface& rs = std::get<SurfaceObject>(doc.find(right)->shape).surface;
+    EXPECT_EQ(geom::multiplicity(rs.knots_v, 0.5), 3);
+    // Shape unchanged.
+    for (double u = 0.75; u <= 1; u += 0.05)
+        for (double v = 0; v <= 1; v += 0.1)
+            EXPECT_LT(glm::length(*geom::surface_point(rs, u, v) -
+                                  *geom::surface_point(right_before, u, v)),
+                      1e-14);
+    // Every border conforms now, and moving a point on one keeps C1.
+    for (const SharedBorder& b : shared_borders(doc, doc.find(right)->patch_group))
+        EXPECT_TRUE(b.conforming) << b.why_not;
+    const geom::Surface& ls = std::get<SurfaceObject>(doc.find(low)->shape).surface;
+    ASSERT_TRUE(h.execute(doc, move_control_point(low, ls.n_u - 2, 1, {0.5, -1, 1.5})));
+    EXPECT_TRUE(continuity_holds(doc, doc.find(right)->patch_group, Continuity::c1, 1e-14));
+    // Undo both: the neighbour and the selection on it come back exactly.
+    h.undo(doc);
+    h.undo(doc);
+    EXPECT_TRUE(same_geometry(doc, before));
+    EXPECT_EQ(doc.selection, (Selection{right, 1, 2}));
+    (void)high;
+}
+
+TEST(Patches, SceneKeepsGroupsAndContinuity) {
+    PaperSplit p;
+    p.doc.continuity = Continuity::c1;
+    auto text = scene_to_text(p.doc);
+    auto back = scene_from_text(text);
+    ASSERT_TRUE(back) << back.error().message;
+    EXPECT_TRUE(same_document(*back, p.doc));
+
+    // Overlapping patches of one group are refused with both names.
+    Document bad = p.doc;
+    bad.objects.push_back(bad.objects[0]);
+    bad.objects.back().id = bad.allocate_id();
+    bad.objects.back().name = "copy";
+    auto r = scene_from_text(scene_to_text(bad));
+    ASSERT_FALSE(r);
+    EXPECT_EQ(r.error().path, "/objects/3/patch_group");
+    EXPECT_NE(r.error().message.find("overlap"), std::string::npos);
+
+    auto unknown = scene_from_text(
+        R"({"format": "isoparm-scene", "version": 1, "objects": [], "continuity": "C2"})");
+    ASSERT_FALSE(unknown);
+    EXPECT_EQ(unknown.error().path, "/continuity");
+}
+
+} // namespace
+} // namespace isoparm::doc

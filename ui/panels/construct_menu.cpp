@@ -1,0 +1,350 @@
+// The Curve menu (new curves, exact primitives) and the Construct menu (make compatible,
+// ruled, revolve, swing, sweep, oriented sweep, skin) with its dialog.
+#include <algorithm>
+#include <cstdio>
+#include <imgui.h>
+#include <string>
+#include <vector>
+
+#include "core/doc/commands.hpp"
+#include "core/doc/commands_curve.hpp"
+#include "core/doc/curve_constructions.hpp"
+#include "ui/actions.hpp"
+#include "ui/panels/panels.hpp"
+
+namespace isoparm::ui {
+
+namespace {
+
+constexpr int make_compatible_kind = 6; // after the doc::Construction values
+
+// A name not yet used by an object: "curve 3".
+std::string fresh_name(const doc::Document& d, const std::string& base) {
+    for (int n = 1;; ++n) {
+        const std::string name = base + " " + std::to_string(n);
+        if (std::none_of(d.objects.begin(), d.objects.end(),
+                         [&](const doc::Object& o) { return o.name == name; }))
+            return name;
+    }
+}
+
+void add_and_select(AppContext& ctx, geom::Expected<doc::Object> o, const char* what) {
+    if (!o) {
+        show_error(ctx, std::string("Cannot add the ") + what, o.error().message);
+        return;
+    }
+    ctx.seal();
+    if (ctx.execute(doc::add_object(std::move(o).value()))) {
+        ctx.doc.selection = {ctx.doc.objects.back().id, -1, -1};
+        fit_view(ctx);
+    }
+    ctx.seal();
+}
+
+// A starting curve in a plane: four points of a gentle S, cubic, clamped uniform knots.
+void new_curve(AppContext& ctx, doc::CurvePlane plane) {
+    const PlaneAxes ax = plane_axes[plane == doc::CurvePlane::free3d ? 0 : static_cast<int>(plane)];
+    std::vector<glm::dvec3> pts;
+    const double xy[4][2] = {{-1, 0}, {-0.35, 0.8}, {0.35, -0.8}, {1, 0}};
+    for (const auto& q : xy) {
+        glm::dvec3 p(0);
+        p[ax.a] = q[0];
+        p[ax.b] = q[1];
+        pts.push_back(p);
+    }
+    add_and_select(ctx,
+                   doc::new_curve_object(fresh_name(ctx.doc, "curve"), plane, pts, 3,
+                                         doc::CurveKnotMode::clamped_uniform),
+                   "curve");
+}
+
+void curve_menu(AppContext& ctx) {
+    if (!ImGui::BeginMenu("Curve")) return;
+    const char* planes[] = {"New curve in xy", "New curve in xz", "New curve in yz",
+                            "New 3D curve"};
+    for (int p = 0; p < 4; ++p)
+        if (ImGui::MenuItem(planes[p])) new_curve(ctx, static_cast<doc::CurvePlane>(p));
+    ImGui::Separator();
+    ImGui::TextDisabled("Exact primitives (xy plane; the designer's Primitives edit more)");
+    if (ImGui::MenuItem("Line"))
+        add_and_select(ctx,
+                       doc::line_object(fresh_name(ctx.doc, "line"), doc::CurvePlane::xy,
+                                        {-1, 0, 0}, {1, 0, 0}),
+                       "line");
+    if (ImGui::MenuItem("Circular arc (90 degrees)"))
+        add_and_select(
+            ctx,
+            doc::arc_object(fresh_name(ctx.doc, "arc"), doc::CurvePlane::xy, {0, 0, 0}, 1, 0, 90),
+            "arc");
+    if (ImGui::MenuItem("Full circle"))
+        add_and_select(
+            ctx,
+            doc::circle_object(fresh_name(ctx.doc, "circle"), doc::CurvePlane::xy, {0, 0, 0}, 1),
+            "circle");
+    ImGui::EndMenu();
+}
+
+void open_dialog(AppContext& ctx, int kind) {
+    CurveDesignerState& cd = ctx.ui.curve;
+    cd.construct_kind = kind;
+    cd.construct_open = true;
+    cd.note.clear();
+    // Keep the chosen curves that still exist; start from the selected curve.
+    std::erase_if(cd.chosen, [&](std::uint64_t id) {
+        const doc::Object* o = ctx.doc.find(id);
+        return !o || !std::holds_alternative<doc::CurveObject>(o->shape);
+    });
+    const doc::Object* sel = ctx.doc.selected();
+    if (cd.chosen.empty() && sel && std::holds_alternative<doc::CurveObject>(sel->shape))
+        cd.chosen.push_back(sel->id);
+}
+
+void construct_menu(AppContext& ctx) {
+    if (!ImGui::BeginMenu("Construct")) return;
+    if (ImGui::MenuItem("Make compatible...")) open_dialog(ctx, make_compatible_kind);
+    ImGui::Separator();
+    const char* items[] = {"Ruled...", "Revolve...",        "Swing...",
+                           "Sweep...", "Oriented sweep...", "Skin..."};
+    for (int k = 0; k < 6; ++k)
+        if (ImGui::MenuItem(items[k])) open_dialog(ctx, k);
+    ImGui::EndMenu();
+}
+
+const char* what_it_does(int kind) {
+    switch (kind) {
+    case 0:
+        return "The ruled surface between two curves: every v-line is the straight segment "
+               "from C0(u) to C1(u) (P&T 10.2). Choose 2 curves.";
+    case 1:
+        return "The surface of revolution of a profile about the z-axis, exact with rational "
+               "quadratic arcs (P&T A8.1). Choose 1 curve.";
+    case 2:
+        return "A profile in the xz-plane swung along a trajectory in the xy-plane, scaled "
+               "(P&T 10.4). Choose the profile, then the trajectory.";
+    case 3:
+        return "The profile translated along the trajectory: S = P(u) + T(v) - T(start), "
+               "exact. Choose the profile, then the trajectory.";
+    case 4:
+        return "The profile carried along the trajectory and turned with it (rotation-"
+               "minimizing frames), skinned through placed copies; the deviation from the "
+               "ideal sweep is reported. Choose the profile, then the trajectory.";
+    case 5:
+        return "A surface through two or more section curves, in order (P&T 10.3): they are "
+               "made compatible, then interpolated across.";
+    default:
+        return "Ruled and skinned surfaces pair the i-th control points of their curves, so "
+               "the curves need one degree and one knot vector. This raises the degrees "
+               "(A5.9) and merges the knots (A5.4); each curve's shape stays the same.";
+    }
+}
+
+std::string knot_text(const geom::Knots& U) {
+    std::string s = "[";
+    for (std::size_t q = 0; q < U.size(); ++q) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%s%.3g", q ? " " : "", U[q]);
+        s += buf;
+        if (q >= 14 && q + 1 < U.size()) {
+            s += " ... (" + std::to_string(U.size()) + " knots)";
+            break;
+        }
+    }
+    return s + "]";
+}
+
+// "name: degree p, n points, U = [...]" for each chosen curve.
+std::string curves_text(const doc::Document& d, const std::vector<std::uint64_t>& ids) {
+    std::string s;
+    for (std::uint64_t id : ids) {
+        const doc::Object* o = d.find(id);
+        const auto* c = o ? std::get_if<doc::CurveObject>(&o->shape) : nullptr;
+        if (!c) continue;
+        s += o->name + ": degree " + std::to_string(c->curve.degree) + ", " +
+             std::to_string(c->curve.count()) + " points, U = " + knot_text(c->curve.knots) + "\n";
+    }
+    return s;
+}
+
+// The document's curves with checkboxes; the chosen ones in order, with up / down buttons.
+void curve_chooser(AppContext& ctx) {
+    CurveDesignerState& cd = ctx.ui.curve;
+    const float k = ctx.ui.scale();
+    ImGui::TextUnformatted("Curves of the scene:");
+    ImGui::BeginChild("##curves", ImVec2(0, 110 * k), true);
+    for (const doc::Object& o : ctx.doc.objects) {
+        const auto* c = std::get_if<doc::CurveObject>(&o.shape);
+        if (!c) continue;
+        const auto it = std::find(cd.chosen.begin(), cd.chosen.end(), o.id);
+        bool on = it != cd.chosen.end();
+        ImGui::PushID(static_cast<int>(o.id));
+        char label[160];
+        std::snprintf(label, sizeof label, "%s  (%s, degree %d, %d points)", o.name.c_str(),
+                      doc::curve_plane_label(c->plane), c->curve.degree, c->curve.count());
+        if (ImGui::Checkbox(label, &on)) {
+            if (on)
+                cd.chosen.push_back(o.id);
+            else
+                cd.chosen.erase(it);
+        }
+        ImGui::PopID();
+    }
+    ImGui::EndChild();
+    if (cd.chosen.empty()) return;
+    ImGui::TextUnformatted("In this order:");
+    for (std::size_t q = 0; q < cd.chosen.size(); ++q) {
+        const doc::Object* o = ctx.doc.find(cd.chosen[q]);
+        if (!o) continue;
+        ImGui::PushID(static_cast<int>(q));
+        ImGui::BeginDisabled(q == 0);
+        if (ImGui::ArrowButton("##up", ImGuiDir_Up)) std::swap(cd.chosen[q], cd.chosen[q - 1]);
+        ImGui::EndDisabled();
+        ImGui::SameLine();
+        ImGui::BeginDisabled(q + 1 == cd.chosen.size());
+        if (ImGui::ArrowButton("##down", ImGuiDir_Down)) std::swap(cd.chosen[q], cd.chosen[q + 1]);
+        ImGui::EndDisabled();
+        ImGui::SameLine();
+        const int kind = cd.construct_kind;
+        const bool roles = kind == 2 || kind == 3 || kind == 4;
+        if (roles && q < 2)
+            ImGui::Text("%s: %s", q == 0 ? "profile" : "trajectory", o->name.c_str());
+        else
+            ImGui::Text("%zu. %s", q + 1, o->name.c_str());
+        ImGui::PopID();
+    }
+}
+
+void parameters(AppContext& ctx) {
+    CurveDesignerState& cd = ctx.ui.curve;
+    const float k = ctx.ui.scale();
+    ImGui::SetNextItemWidth(120 * k);
+    switch (cd.construct_kind) {
+    case 1:
+        ImGui::InputDouble("Angle (degrees, 0 < a <= 360)", &cd.angle, 15, 90, "%.1f");
+        break;
+    case 2:
+        ImGui::InputDouble("Scale", &cd.swing_scale, 0.1, 1, "%.3f");
+        break;
+    case 4:
+        ImGui::InputInt("Sections (copies - 1)", &cd.sections);
+        cd.sections = std::clamp(cd.sections, 1, 256);
+        break;
+    case 5: {
+        ImGui::InputInt("v-degree (0: min(3, curves - 1))", &cd.skin_degree);
+        cd.skin_degree = std::max(cd.skin_degree, 0);
+        const char* params[] = {"chord", "centripetal", "uniform"};
+        ImGui::SetNextItemWidth(120 * k);
+        ImGui::Combo("Parametrization", &cd.parametrization, params, 3);
+        break;
+    }
+    default:
+        ImGui::Dummy(ImVec2(0, 0));
+        break;
+    }
+}
+
+// Runs the dialog's construction; the result is added as a new surface and selected, or the
+// refusal shown in the error dialog (the document unchanged). Returns whether it worked.
+bool build(AppContext& ctx) {
+    CurveDesignerState& cd = ctx.ui.curve;
+    if (cd.construct_kind == make_compatible_kind) {
+        const std::string before = curves_text(ctx.doc, cd.chosen);
+        ctx.seal();
+        const bool ok = ctx.execute(doc::make_curves_compatible(cd.chosen));
+        ctx.seal();
+        if (!ok) {
+            show_error(ctx, "Make compatible: not done", ctx.ui.status);
+            return false;
+        }
+        cd.note = "Before:\n" + before + "After (same shapes, u in [0, 1]):\n" +
+                  curves_text(ctx.doc, cd.chosen);
+        ctx.ui.status = "Made " + std::to_string(cd.chosen.size()) + " curves compatible";
+        return true;
+    }
+    doc::ConstructionRequest r;
+    r.kind = static_cast<doc::Construction>(cd.construct_kind);
+    r.curves = cd.chosen;
+    r.angle = cd.angle;
+    r.scale = cd.swing_scale;
+    r.skin_degree = cd.skin_degree;
+    r.parametrization = static_cast<geom::Parametrization>(cd.parametrization);
+    r.sections = cd.sections;
+    auto result = doc::build_construction(ctx.doc, r);
+    const std::string title = std::string(doc::construction_label(r.kind)) + ": not built";
+    if (!result) {
+        show_error(ctx, title, result.error().message);
+        return false;
+    }
+    const std::string name = result->object.name;
+    ctx.seal();
+    if (!ctx.execute(doc::add_object(std::move(result->object)))) {
+        show_error(ctx, title, ctx.ui.status);
+        return false;
+    }
+    ctx.seal();
+    ctx.doc.selection = {ctx.doc.objects.back().id, -1, -1};
+    fit_view(ctx);
+    cd.note = "Added '" + name + "' (selected; edit it like any surface)." +
+              (result->note.empty() ? "" : "\n" + result->note);
+    ctx.ui.status = cd.note;
+    return true;
+}
+
+bool escape_pressed() {
+    return ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
+}
+
+} // namespace
+
+void draw_construct_menus(AppContext& ctx) {
+    curve_menu(ctx);
+    construct_menu(ctx);
+}
+
+void draw_construct_dialog(AppContext& ctx) {
+    CurveDesignerState& cd = ctx.ui.curve;
+    const char* id = "Construct##dialog";
+    if (cd.construct_open) {
+        ImGui::OpenPopup(id);
+        cd.construct_open = false;
+    }
+    const ImGuiViewport* vp = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x * 0.5f, vp->Pos.y + vp->Size.y * 0.5f),
+                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSize(ImVec2(520 * ctx.ui.scale(), 0));
+    if (!ImGui::BeginPopupModal(id, nullptr,
+                                ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoTitleBar))
+        return;
+    const int kind = cd.construct_kind;
+    const char* title = kind == make_compatible_kind
+                            ? "Make compatible"
+                            : doc::construction_label(static_cast<doc::Construction>(kind));
+    ImGui::TextUnformatted(title);
+    ImGui::Separator();
+    ImGui::TextWrapped("%s", what_it_does(kind));
+    ImGui::Spacing();
+    curve_chooser(ctx);
+    if (kind == make_compatible_kind && !cd.chosen.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("%s", curves_text(ctx.doc, cd.chosen).c_str());
+        ImGui::PopStyleColor();
+    }
+    parameters(ctx);
+    if (!cd.note.empty()) {
+        ImGui::Separator();
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.45f, 0.85f, 0.5f, 1));
+        ImGui::TextWrapped("%s", cd.note.c_str());
+        ImGui::PopStyleColor();
+    }
+    ImGui::Spacing();
+    bool close = false;
+    if (ImGui::Button(kind == make_compatible_kind ? "Make compatible" : "Build")) {
+        // A refusal closes this dialog: the error dialog takes its place.
+        if (!build(ctx)) close = true;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Close") || escape_pressed()) close = true;
+    if (close) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+}
+
+} // namespace isoparm::ui

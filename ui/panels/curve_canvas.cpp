@@ -1,0 +1,304 @@
+// The curve designer's plane canvas: control polygon, curve, knot points and de Boor's
+// construction; clicks add, insert and select points, drags move them (one undo step each).
+#include <algorithm>
+#include <cmath>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <string>
+#include <vector>
+
+#include "core/doc/commands_curve.hpp"
+#include "core/geom/deboor.hpp"
+#include "core/geom/evaluate.hpp"
+#include "core/geom/knots.hpp"
+#include "core/geom/tessellate.hpp"
+#include "ui/panels/curve_designer.hpp"
+#include "ui/panels/plane_canvas.hpp"
+
+namespace isoparm::ui::curve_designer {
+
+namespace {
+
+ImVec2 iv(const glm::dvec2& p) {
+    return {static_cast<float>(p.x), static_cast<float>(p.y)};
+}
+
+// The framing of the canvas: the control points' box in the plane with room around it (a
+// single point or a flat polygon still gets some room). The box is kept while every point
+// stays inside it and the curve and plane stay the same, so adding or moving a point does not
+// shift the picture under the mouse; it grows when a point leaves it.
+PlaneMap frame(CurveDesignerState& cd, std::uint64_t id, int plane, const geom::Curve& c,
+               const Rect& canvas, int a, int b, float margin) {
+    glm::dvec2 lo(c.points[0][a], c.points[0][b]), hi = lo;
+    for (const glm::dvec3& p : c.points) {
+        lo = glm::min(lo, glm::dvec2(p[a], p[b]));
+        hi = glm::max(hi, glm::dvec2(p[a], p[b]));
+    }
+    const bool same = cd.frame_object == id && cd.frame_plane == plane;
+    const bool inside = lo.x >= cd.frame_lo.x && lo.y >= cd.frame_lo.y && hi.x <= cd.frame_hi.x &&
+                        hi.y <= cd.frame_hi.y;
+    if (!same || !inside) {
+        const double span = std::max(hi.x - lo.x, hi.y - lo.y);
+        const glm::dvec2 pad(std::max(span * 0.2, 0.5));
+        const glm::dvec2 box_lo = same ? glm::min(cd.frame_lo, lo - pad) : lo - pad;
+        const glm::dvec2 box_hi = same ? glm::max(cd.frame_hi, hi + pad) : hi + pad;
+        // Keep the whole visible area: a click anywhere on the canvas lands inside it.
+        const PlaneMap m = fit_plane(canvas, box_lo, box_hi, margin);
+        const glm::dvec2 c0 = pixel_to_plane(m, {canvas.x, canvas.y + canvas.h});
+        const glm::dvec2 c1 = pixel_to_plane(m, {canvas.x + canvas.w, canvas.y});
+        cd.frame_object = id;
+        cd.frame_plane = plane;
+        cd.frame_lo = glm::min(c0, c1);
+        cd.frame_hi = glm::max(c0, c1);
+    }
+    return fit_plane(canvas, cd.frame_lo, cd.frame_hi, 0);
+}
+
+double distance_to_segment(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
+    const glm::dvec2 ab = b - a;
+    const double len2 = glm::dot(ab, ab);
+    const double s = len2 > 0 ? std::clamp(glm::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+    return glm::length(p - (a + s * ab));
+}
+
+const doc::CurveObject* curve_in(const AppContext& ctx, std::uint64_t id) {
+    const doc::Object* o = ctx.doc.find(id);
+    return o ? std::get_if<doc::CurveObject>(&o->shape) : nullptr;
+}
+
+// Starts a drag of point i whose centre is under the mouse (a point just placed).
+void start_drag(CurveDesignerState& cd, int i, const PlaneMap& map, const glm::dvec2& grab) {
+    cd.drag_point = i;
+    cd.frozen = map;
+    cd.grab = grab;
+}
+
+// Presses on the canvas: select and drag a point, Ctrl+click a leg to insert, else append.
+void handle_press(AppContext& ctx, std::uint64_t id, const geom::Curve& g, const PlaneAxes& ax,
+                  const PlaneMap& map, const glm::dvec2& mouse) {
+    CurveDesignerState& cd = ctx.ui.curve;
+    const float k = ctx.ui.scale();
+    const int normal = 3 - ax.a - ax.b;
+    auto px = [&](int i) {
+        const glm::dvec3& p = g.points[static_cast<std::size_t>(i)];
+        return plane_to_pixel(map, {p[ax.a], p[ax.b]});
+    };
+    ctx.seal();
+    cd.message.clear();
+    cd.press = mouse;
+    // Points drawn last are on top: search from the end.
+    for (int i = g.count() - 1; i >= 0; --i)
+        if (glm::length(px(i) - mouse) <= 8 * k) {
+            ctx.doc.selection = {id, i, -1};
+            start_drag(cd, i, map, mouse - px(i));
+            return;
+        }
+    const glm::dvec2 ab = pixel_to_plane(map, mouse);
+    if (ImGui::GetIO().KeyCtrl) {
+        int leg = -1;
+        double best = 8 * k;
+        for (int i = 0; i + 1 < g.count(); ++i) {
+            const double d = distance_to_segment(mouse, px(i), px(i + 1));
+            if (d <= best) best = d, leg = i;
+        }
+        if (leg < 0) {
+            cd.message = "Ctrl+click on a leg of the control polygon to insert a point there.";
+            return;
+        }
+        // The normal coordinate follows the leg, so a planar curve stays in its plane.
+        const glm::dvec2 a = px(leg), b = px(leg + 1);
+        const double len = glm::length(b - a);
+        const double s = len > 0 ? std::clamp(glm::dot(mouse - a, b - a) / (len * len), 0., 1.) : 0;
+        glm::dvec3 p = glm::mix(g.points[static_cast<std::size_t>(leg)],
+                                g.points[static_cast<std::size_t>(leg + 1)], s);
+        p[ax.a] = ab.x;
+        p[ax.b] = ab.y;
+        if (ctx.execute(doc::insert_curve_point(id, leg + 1, p)))
+            start_drag(cd, leg + 1, map, {0, 0});
+        else
+            cd.message = ctx.ui.status;
+        return;
+    }
+    glm::dvec3 p(0);
+    p[normal] = g.points.back()[normal]; // a plane curve stays in its plane
+    p[ax.a] = ab.x;
+    p[ax.b] = ab.y;
+    const int n = g.count();
+    if (ctx.execute(doc::insert_curve_point(id, n, p)))
+        start_drag(cd, n, map, {0, 0});
+    else
+        cd.message = ctx.ui.status;
+}
+
+} // namespace
+
+ImU32 rgba(const doc::Rgba& c, float alpha) {
+    return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, c.a * alpha));
+}
+
+ImU32 level_color(int level, int levels) {
+    if (level >= levels) return IM_COL32(235, 40, 40, 255);
+    // From cyan (first level) through green to yellow: far from the red final point.
+    const float t = levels > 1 ? static_cast<float>(level - 1) / static_cast<float>(levels - 1) : 0;
+    float r, g, b;
+    ImGui::ColorConvertHSVtoRGB(0.5f - 0.36f * t, 0.75f, 0.95f, r, g, b);
+    return ImGui::ColorConvertFloat4ToU32(ImVec4(r, g, b, 1));
+}
+
+int canvas_plane(const AppContext& ctx, const doc::CurveObject& c) {
+    switch (c.plane) {
+    case doc::CurvePlane::xy:
+        return 0;
+    case doc::CurvePlane::xz:
+        return 1;
+    case doc::CurvePlane::yz:
+        return 2;
+    case doc::CurvePlane::free3d:
+        break;
+    }
+    return std::clamp(ctx.ui.curve.view_plane, 0, 2);
+}
+
+double trace_param(const AppContext& ctx, const geom::Curve& c) {
+    const geom::Interval d = geom::domain(c.knots, c.degree, c.count());
+    return denormalize_param(d, std::clamp(ctx.ui.curve.trace_t, 0.0, 1.0));
+}
+
+void plane_canvas(AppContext& ctx, const doc::Object& obj, const doc::CurveObject& c,
+                  const Rect& canvas) {
+    CurveDesignerState& cd = ctx.ui.curve;
+    const std::uint64_t id = obj.id;
+    const int plane = canvas_plane(ctx, c);
+    const PlaneAxes ax = plane_axes[plane];
+    const float k = ctx.ui.scale();
+    const PlaneMap map =
+        cd.drag_point >= 0 ? cd.frozen : frame(cd, id, plane, c.curve, canvas, ax.a, ax.b, 14 * k);
+
+    ImGui::SetCursorScreenPos(ImVec2(canvas.x, canvas.y));
+    ImGui::InvisibleButton("##curve_canvas", ImVec2(canvas.w, canvas.h));
+    const ImVec2 m = ImGui::GetIO().MousePos;
+    const glm::dvec2 mouse(m.x, m.y);
+    if (ImGui::IsItemActivated()) handle_press(ctx, id, c.curve, ax, map, mouse);
+    // A press that has not moved yet moves nothing (rounding would nudge the point).
+    if (ImGui::IsItemActive() && cd.drag_point >= 0 && mouse != cd.press) {
+        const doc::CurveObject* cur = curve_in(ctx, id);
+        if (cur && cd.drag_point < cur->curve.count()) {
+            const glm::dvec3 old = cur->curve.points[static_cast<std::size_t>(cd.drag_point)];
+            const glm::dvec2 ab = pixel_to_plane(cd.frozen, mouse - cd.grab);
+            glm::dvec3 p = old;
+            p[ax.a] = ab.x;
+            p[ax.b] = ab.y;
+            if (p != old && !ctx.execute(doc::move_curve_point(id, cd.drag_point, p)))
+                cd.message = ctx.ui.status;
+        }
+    }
+    if (ImGui::IsItemDeactivated() && cd.drag_point >= 0) {
+        cd.drag_point = -1;
+        ctx.seal();
+    }
+    const bool hovered = ImGui::IsItemHovered();
+
+    // Draw what the document holds now (the gesture may have changed it).
+    const doc::CurveObject* cur = curve_in(ctx, id);
+    if (!cur) return;
+    const geom::Curve& g = cur->curve;
+    auto px = [&](const glm::dvec3& p) { return iv(plane_to_pixel(map, {p[ax.a], p[ax.b]})); };
+
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const ImVec2 a(canvas.x, canvas.y), b(canvas.x + canvas.w, canvas.y + canvas.h);
+    const bool light = ctx.ui.presentation;
+    begin_plane_canvas(dl, map, canvas, light);
+
+    const doc::Colors& col = ctx.doc.colors;
+    // The control polygon.
+    std::vector<ImVec2> line;
+    for (const glm::dvec3& p : g.points) line.push_back(px(p));
+    dl->AddPolyline(line.data(), static_cast<int>(line.size()), rgba(col.control_net, 0.7f), 0,
+                    1.2f * k);
+    // The curve: uniform samples plus the knots, so corners at multiple knots stay sharp.
+    const geom::Interval d = geom::domain(g.knots, g.degree, g.count());
+    std::vector<double> ts = geom::uniform_params(d.lo, d.hi, 401);
+    for (int i = g.degree + 1; i < g.count(); ++i)
+        ts.push_back(g.knots[static_cast<std::size_t>(i)]);
+    std::sort(ts.begin(), ts.end());
+    line.clear();
+    auto flush = [&] {
+        if (line.size() > 1)
+            dl->AddPolyline(line.data(), static_cast<int>(line.size()), rgba(col.selected_surface),
+                            0, 2.2f * k);
+        line.clear();
+    };
+    for (double t : ts) {
+        if (const auto p = geom::curve_point(g, t))
+            line.push_back(px(*p));
+        else
+            flush(); // a zero weight sum: the curve does not exist there
+    }
+    flush();
+    // Knot points C(u_k): where the polynomial pieces join.
+    for (const geom::KnotRun& run : geom::knot_runs(g.knots)) {
+        if (run.value < d.lo || run.value > d.hi) continue;
+        if (const auto p = geom::curve_point(g, run.value)) {
+            const ImVec2 q = px(*p);
+            const float r = (2.5f + static_cast<float>(run.multiplicity > 1)) * k;
+            dl->AddRectFilled(ImVec2(q.x - r, q.y - r), ImVec2(q.x + r, q.y + r),
+                              rgba(col.knot_curves));
+        }
+    }
+    // Control points, labelled P0..Pn while the labels stay readable.
+    const int sel = ctx.doc.selection.object == id ? ctx.doc.selection.i : -1;
+    const ImU32 text_col = ImGui::GetColorU32(ImGuiCol_Text);
+    for (int i = 0; i < g.count(); ++i) {
+        const ImVec2 q = px(g.points[static_cast<std::size_t>(i)]);
+        if (i == sel) continue;
+        dl->AddCircleFilled(q, 4 * k, rgba(col.control_points), 12);
+        if (g.count() <= 40)
+            dl->AddText(ImVec2(q.x + 5 * k, q.y - ImGui::GetTextLineHeight() - 1 * k), text_col,
+                        ("P" + std::to_string(i)).c_str());
+    }
+    if (sel >= 0 && sel < g.count()) {
+        const ImVec2 q = px(g.points[static_cast<std::size_t>(sel)]);
+        dl->AddCircleFilled(q, 6.5f * k, rgba(col.selected_point), 20);
+        dl->AddCircle(q, 6.5f * k,
+                      cd.drag_point >= 0 || hovered ? IM_COL32(255, 255, 255, 255)
+                                                    : IM_COL32(0, 0, 0, 255),
+                      20, 1.5f * k);
+        dl->AddText(ImVec2(q.x + 7 * k, q.y - ImGui::GetTextLineHeight() - 2 * k), text_col,
+                    ("P" + std::to_string(sel)).c_str());
+    }
+    // De Boor's construction at the trace parameter, on top: every level's polygon.
+    if (cd.trace) {
+        const double t = trace_param(ctx, g);
+        const geom::DeBoorTriangle tri = geom::deboor_curve(g, t);
+        const int levels = static_cast<int>(tri.levels.size()) - 1;
+        for (int lv = 1; lv <= levels; ++lv) {
+            std::vector<ImVec2> pts;
+            for (const geom::HPoint& h : tri.levels[static_cast<std::size_t>(lv)])
+                if (const auto p = geom::DeBoorTriangle::cartesian(h)) pts.push_back(px(*p));
+            const ImU32 lc = level_color(lv, levels);
+            if (pts.size() > 1)
+                dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), lc, 0, 1.6f * k);
+            for (const ImVec2& q : pts)
+                dl->AddCircleFilled(q, (lv == levels ? 5.f : 3.f) * k, lc, 12);
+        }
+        if (const auto p = geom::DeBoorTriangle::cartesian(tri.levels.back().front())) {
+            const ImVec2 q = px(*p);
+            char text[48];
+            std::snprintf(text, sizeof text, "C(%.3g)", t);
+            dl->AddText(ImVec2(q.x + 7 * k, q.y + 2 * k), IM_COL32(235, 60, 60, 255), text);
+        }
+    }
+    dl->PopClipRect();
+    dl->AddRect(a, b, light ? IM_COL32(0, 0, 0, 255) : IM_COL32(110, 115, 130, 255), 0, 0, 1 * k);
+    const char names[3] = {'x', 'y', 'z'};
+    const char h[2] = {names[ax.a], 0}, v[2] = {names[ax.b], 0};
+    dl->AddText(
+        ImVec2(b.x - ImGui::CalcTextSize(h).x - 4 * k, b.y - ImGui::GetTextLineHeight() - 2 * k),
+        text_col, h);
+    dl->AddText(ImVec2(a.x + 4 * k, a.y + 2 * k), text_col, v);
+    const std::string title = std::string(ax.name) + " plane";
+    dl->AddText(ImVec2(a.x + (canvas.w - ImGui::CalcTextSize(title.c_str()).x) / 2, a.y + 2 * k),
+                ImGui::GetColorU32(ImGuiCol_TextDisabled), title.c_str());
+}
+
+} // namespace isoparm::ui::curve_designer

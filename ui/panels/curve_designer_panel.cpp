@@ -1,0 +1,343 @@
+// The curve designer panel: the selected curve on its plane canvas, its points, weights,
+// degree, knot mode, knots, knot insertion and elevation, de Boor's trace, basis functions
+// and the exact primitives. Every edit is a command (core/doc/commands_curve.hpp).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <imgui.h>
+#include <string>
+
+#include "core/doc/commands.hpp"
+#include "core/doc/commands_curve.hpp"
+#include "core/geom/basis.hpp"
+#include "core/geom/deboor.hpp"
+#include "core/geom/knots.hpp"
+#include "ui/doc_access.hpp"
+#include "ui/panels/curve_designer.hpp"
+#include "ui/panels/panels.hpp"
+
+namespace isoparm::ui {
+
+namespace {
+
+using namespace curve_designer;
+
+const doc::CurveObject* selected_curve(const AppContext& ctx, const doc::Object** obj) {
+    *obj = ctx.doc.selected();
+    return *obj ? std::get_if<doc::CurveObject>(&(*obj)->shape) : nullptr;
+}
+
+void warn_text(const AppContext& ctx, const std::string& text) {
+    const ImVec4 warn = ctx.ui.presentation ? ImVec4(0.7f, 0.25f, 0, 1) : ImVec4(1, 0.72f, 0.3f, 1);
+    ImGui::PushStyleColor(ImGuiCol_Text, warn);
+    ImGui::TextWrapped("%s", text.c_str());
+    ImGui::PopStyleColor();
+}
+
+void hint_text(const char* text) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s", text);
+    ImGui::PopStyleColor();
+}
+
+// Runs a command; a refusal is kept for the panel to show (and the status bar shows it too).
+bool run(AppContext& ctx, std::unique_ptr<doc::Command> cmd) {
+    ctx.seal();
+    const bool ok = ctx.execute(std::move(cmd));
+    ctx.seal();
+    ctx.ui.curve.message = ok ? std::string() : ctx.ui.status;
+    return ok;
+}
+
+void plane_row(AppContext& ctx, const doc::Object& obj, const doc::CurveObject& c) {
+    CurveDesignerState& cd = ctx.ui.curve;
+    const char* planes[] = {"xy", "xz", "yz", "3D"};
+    int plane = static_cast<int>(c.plane);
+    ImGui::SetNextItemWidth(70 * ctx.ui.scale());
+    if (ImGui::Combo("Plane", &plane, planes, 4) && plane != static_cast<int>(c.plane))
+        run(ctx,
+            doc::set_curve_plane(obj.id, static_cast<doc::CurvePlane>(plane), cd.carry_points));
+    ImGui::SameLine();
+    ImGui::Checkbox("move points with it", &cd.carry_points);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("On: the drawing moves into the new plane (its two coordinates are\n"
+                          "carried over). Off: only the canvas changes; the points stay.");
+    if (c.plane == doc::CurvePlane::free3d) {
+        ImGui::TextUnformatted("View");
+        for (int v = 0; v < 3; ++v) {
+            ImGui::SameLine();
+            ImGui::RadioButton(plane_axes[v].name, &cd.view_plane, v);
+        }
+    }
+}
+
+void point_controls(AppContext& ctx, const doc::Object& obj, const doc::CurveObject& c) {
+    const int i = ctx.doc.selection.object == obj.id ? ctx.doc.selection.i : -1;
+    const geom::Curve& g = c.curve;
+    if (i < 0 || i >= g.count()) {
+        hint_text("Click a point on the canvas to select it.");
+        return;
+    }
+    ImGui::AlignTextToFramePadding();
+    ImGui::Text("P%d", i);
+    glm::dvec3 p = g.points[static_cast<std::size_t>(i)];
+    const char* labels[3] = {"x", "y", "z"};
+    const float del_w = ImGui::CalcTextSize("Delete").x + ImGui::GetStyle().FramePadding.x * 2;
+    const float field_w = (ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("P00").x - del_w -
+                           ImGui::GetStyle().ItemSpacing.x * 4) /
+                              3 -
+                          ImGui::CalcTextSize("x").x - ImGui::GetStyle().ItemInnerSpacing.x;
+    for (int a = 0; a < 3; ++a) {
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(std::max(field_w, 30.f));
+        double value = p[a];
+        if (ImGui::InputDouble(labels[a], &value, 0, 0, "%.3f") && std::isfinite(value) &&
+            value != p[a]) {
+            p[a] = value;
+            if (!ctx.execute(doc::move_curve_point(obj.id, i, p)))
+                ctx.ui.curve.message = ctx.ui.status;
+        }
+        if (ImGui::IsItemDeactivatedAfterEdit()) ctx.seal();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Delete")) run(ctx, doc::delete_curve_point(obj.id, i));
+
+    // The weight of a rational curve; a non-rational one can be made rational.
+    if (!geom::is_rational(g.type)) {
+        ImGui::AlignTextToFramePadding();
+        ImGui::TextDisabled("w%d = 1 (%s)", i, geom::spline_type_name(g.type));
+        ImGui::SameLine();
+        if (ImGui::SmallButton("Make rational")) {
+            doc::CurveObject r = c;
+            r.curve.type = geom::is_bezier(g.type) ? geom::SplineType::rational_bezier
+                                                   : geom::SplineType::nurbs;
+            run(ctx, doc::replace_shape(obj.id, r, "Make " + obj.name + " rational"));
+        }
+        return;
+    }
+    const double w = g.weights[static_cast<std::size_t>(i)];
+    ImGui::AlignTextToFramePadding();
+    ImGui::Text("w%d", i);
+    ImGui::SameLine();
+    const float field = 80 * ctx.ui.scale();
+    ImGui::SetNextItemWidth(
+        std::max(ImGui::GetContentRegionAvail().x - field - ImGui::GetStyle().ItemSpacing.x, 40.f));
+    const double lo = -2.0, hi = 6.0;
+    double slider = w;
+    if (ImGui::SliderScalar("##cweight", ImGuiDataType_Double, &slider, &lo, &hi, "%.3f") &&
+        slider != w)
+        ctx.execute(doc::set_weight(obj.id, i, -1, slider));
+    if (ImGui::IsItemDeactivated()) ctx.seal();
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(field);
+    double typed = w;
+    if (ImGui::InputDouble("##cweight_typed", &typed, 0, 0, "%.4g") && std::isfinite(typed) &&
+        typed != w)
+        ctx.execute(doc::set_weight(obj.id, i, -1, typed));
+    if (ImGui::IsItemDeactivatedAfterEdit()) ctx.seal();
+}
+
+void degree_and_knots(AppContext& ctx, const doc::Object& obj, const doc::CurveObject& c) {
+    CurveDesignerState& cd = ctx.ui.curve;
+    const float k = ctx.ui.scale();
+    const geom::Curve& g = c.curve;
+    int degree = g.degree;
+    ImGui::SetNextItemWidth(90 * k);
+    if (ImGui::InputInt("Degree", &degree, 1, 1, ImGuiInputTextFlags_EnterReturnsTrue) &&
+        degree != g.degree)
+        run(ctx, doc::set_curve_degree(obj.id, degree));
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Sets the degree p (1..%d for %d points): the knots are recomputed and "
+                          "the shape changes.",
+                          g.count() - 1, g.count());
+    ImGui::SameLine();
+    if (ImGui::Button("Elevate")) run(ctx, doc::elevate_degree(obj.id, geom::Dir::u));
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "Degree elevation (Piegl & Tiller A5.9): p + 1, more points, same shape.");
+
+    const char* modes[] = {"clamped uniform", "chord length", "centripetal", "custom"};
+    int mode = static_cast<int>(c.knot_mode);
+    ImGui::SetNextItemWidth(150 * k);
+    if (ImGui::Combo("Knots", &mode, modes, 4) && mode != static_cast<int>(c.knot_mode))
+        run(ctx, doc::set_curve_knot_mode(obj.id, static_cast<doc::CurveKnotMode>(mode)));
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("How knots are chosen when points are added or deleted or the degree\n"
+                          "changes: clamped uniform; averaged (P&T eq. 9.8) from the chord\n"
+                          "lengths of the control polygon or their square roots (centripetal);\n"
+                          "or custom: your knots, dragged on the strip below.");
+
+    // The knot vector in full, as the textbooks write it.
+    std::string knots = "U = [";
+    for (std::size_t q = 0; q < g.knots.size(); ++q) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%s%.3g", q ? ", " : "", g.knots[q]);
+        knots += buf;
+    }
+    knots += "]";
+    hint_text(knots.c_str());
+    (void)cd;
+}
+
+void refine_controls(AppContext& ctx, const doc::Object& obj, const doc::CurveObject& c) {
+    CurveDesignerState& cd = ctx.ui.curve;
+    const geom::Curve& g = c.curve;
+    const geom::Interval d = geom::domain(g.knots, g.degree, g.count());
+    const double t = trace_param(ctx, g);
+    char label[64];
+    std::snprintf(label, sizeof label, "t = %.4g", t);
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+    const double zero = 0, one = 1;
+    ImGui::SliderScalar("##trace_t", ImGuiDataType_Double, &cd.trace_t, &zero, &one, label);
+    ImGui::SameLine();
+    ImGui::Checkbox("de Boor", &cd.trace);
+    ImGui::SameLine();
+    if (ImGui::Button("Insert knot")) {
+        if (t <= d.lo || t >= d.hi)
+            cd.message = "Insert a knot inside the domain: t is at its end.";
+        else
+            run(ctx, doc::insert_knot(obj.id, geom::Dir::u, t));
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Knot insertion at t (Boehm, P&T A5.1): one more point, same shape.");
+    if (cd.trace) {
+        const geom::DeBoorTriangle tri = geom::deboor_curve(g, t);
+        const auto p = geom::DeBoorTriangle::cartesian(tri.levels.back().front());
+        char text[160];
+        if (p)
+            std::snprintf(text, sizeof text,
+                          "t in [u%d, u%d): de Boor blends P%d..P%d in %d levels; C(t) = (%.3f, "
+                          "%.3f, %.3f)",
+                          tri.span, tri.span + 1, tri.first_index, tri.first_index + g.degree,
+                          g.degree, p->x, p->y, p->z);
+        else
+            std::snprintf(text, sizeof text, "C(t) does not exist at t (zero weight sum)");
+        hint_text(text);
+        // The colour key of the canvas: one colour per level, the curve point red.
+        for (int lv = 1; lv <= g.degree; ++lv) {
+            if (lv > 1) ImGui::SameLine();
+            const ImU32 col = level_color(lv, g.degree);
+            ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(col),
+                               lv == g.degree ? "C(t)" : "level %d", lv);
+        }
+    }
+}
+
+void primitives(AppContext& ctx, const doc::CurveObject* c) {
+    CurveDesignerState& cd = ctx.ui.curve;
+    const doc::CurvePlane plane =
+        c && c->plane != doc::CurvePlane::free3d ? c->plane : doc::CurvePlane::xy;
+    const PlaneAxes ax = plane_axes[static_cast<int>(plane)];
+    auto in_plane = [&](float a, float b) {
+        glm::dvec3 p(0);
+        p[ax.a] = a;
+        p[ax.b] = b;
+        return p;
+    };
+    ImGui::Text("In the %s plane (first axis %c, second %c):", ax.name, "xyz"[ax.a], "xyz"[ax.b]);
+    auto add = [&](geom::Expected<doc::Object> o) {
+        if (!o) {
+            ctx.ui.curve.message = o.error().message;
+            return;
+        }
+        ctx.seal();
+        if (ctx.execute(doc::add_object(std::move(o).value())))
+            ctx.doc.selection = {ctx.doc.objects.back().id, -1, -1};
+        ctx.seal();
+    };
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+    ImGui::InputFloat4("from, to##line", cd.line_end, "%.2f");
+    ImGui::SameLine();
+    if (ImGui::Button("Line"))
+        add(doc::line_object("line", plane, in_plane(cd.line_end[0], cd.line_end[1]),
+                             in_plane(cd.line_end[2], cd.line_end[3])));
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+    ImGui::InputFloat3("centre, r", cd.primitive, "%.2f");
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+    ImGui::InputFloat2("start, end (deg)", cd.primitive + 3, "%.1f");
+    const glm::dvec3 centre = in_plane(cd.primitive[0], cd.primitive[1]);
+    if (ImGui::Button("Arc"))
+        add(doc::arc_object("arc", plane, centre, cd.primitive[2], cd.primitive[3],
+                            cd.primitive[4]));
+    ImGui::SameLine();
+    if (ImGui::Button("Circle")) add(doc::circle_object("circle", plane, centre, cd.primitive[2]));
+    ImGui::SameLine();
+    hint_text("exact rational quadratics (P&T A7.1)");
+}
+
+} // namespace
+
+void draw_curve_designer_panel(AppContext& ctx) {
+    CurveDesignerState& cd = ctx.ui.curve;
+    const doc::Object* obj = nullptr;
+    const doc::CurveObject* c = selected_curve(ctx, &obj);
+    if (!c) {
+        ImGui::TextWrapped("Select a curve (Surface > Select) or make one (Curve > New curve).");
+        return;
+    }
+    const std::uint64_t id = obj->id;
+    const float k = ctx.ui.scale();
+    {
+        const geom::Curve& g = c->curve;
+        ImGui::Text("%s: %s, degree %d, %d points", obj->name.c_str(),
+                    geom::spline_type_name(g.type), g.degree, g.count());
+    }
+    plane_row(ctx, *obj, *c);
+    if (!(c = selected_curve(ctx, &obj))) return;
+
+    // The canvas: square while the panel allows, leaving room for the controls below.
+    const ImVec2 avail = ImGui::GetContentRegionAvail();
+    const float side_h = std::clamp(avail.y * 0.62f, 120 * k, avail.x);
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    plane_canvas(ctx, *obj, *c, {origin.x, origin.y, avail.x, side_h});
+    ImGui::SetCursorScreenPos(
+        ImVec2(origin.x, origin.y + side_h + ImGui::GetStyle().ItemSpacing.y));
+    hint_text("Click: add a point   Ctrl+click a leg: insert   drag: move   Del: delete");
+    if (!cd.message.empty()) warn_text(ctx, cd.message);
+
+    // Delete key: the selected point of this curve, unless a field has the keyboard.
+    if (!ImGui::GetIO().WantTextInput && ImGui::IsWindowFocused() &&
+        ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Delete), false) &&
+        ctx.doc.selection.object == id && ctx.doc.selection.has_point())
+        run(ctx, doc::delete_curve_point(id, ctx.doc.selection.i));
+
+    if (!(c = selected_curve(ctx, &obj))) return;
+    point_controls(ctx, *obj, *c);
+    if (!(c = selected_curve(ctx, &obj))) return;
+    degree_and_knots(ctx, *obj, *c);
+    if (!(c = selected_curve(ctx, &obj))) return;
+    {
+        const ImVec2 p = ImGui::GetCursorScreenPos();
+        const float h = ImGui::GetTextLineHeight() * 2 + 20 * k;
+        knot_strip(ctx, *obj, *c, {p.x, p.y, ImGui::GetContentRegionAvail().x, h});
+        ImGui::SetCursorScreenPos(ImVec2(p.x, p.y + h + ImGui::GetStyle().ItemSpacing.y));
+    }
+    if (!(c = selected_curve(ctx, &obj))) return;
+    refine_controls(ctx, *obj, *c);
+    if (!(c = selected_curve(ctx, &obj))) return;
+    if (ImGui::CollapsingHeader("Basis functions", ImGuiTreeNodeFlags_DefaultOpen)) {
+        const int sel = ctx.doc.selection.object == id ? ctx.doc.selection.i : -1;
+        const ImVec2 p = ImGui::GetCursorScreenPos();
+        basis_plot(ctx, *c, sel, {p.x, p.y, ImGui::GetContentRegionAvail().x, 90 * k});
+        // Partition of unity at t: the functions sum to 1 wherever the curve exists.
+        const auto& g = c->curve;
+        const double t = trace_param(ctx, g);
+        if (const auto r = geom::rational_basis(g.knots, g.degree, g.weights, t)) {
+            double sum = 0;
+            for (double v : (*r)[0]) sum += v;
+            char text[96];
+            std::snprintf(text, sizeof text, "Sum of all %s at t = %.4g: %.6f",
+                          geom::is_rational(g.type) ? "R_i" : "N_i", t, sum);
+            hint_text(text);
+        }
+        if (sel >= 0) {
+            hint_text(("The selected point's function is non-zero on [u" + std::to_string(sel) +
+                       ", u" + std::to_string(sel + g.degree + 1) +
+                       "): moving the point changes only that part of the curve.")
+                          .c_str());
+        }
+    }
+    if (ImGui::CollapsingHeader("Primitives")) primitives(ctx, c);
+}
+
+} // namespace isoparm::ui

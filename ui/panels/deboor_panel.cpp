@@ -1,0 +1,133 @@
+// The de Boor tab: step control (level by level, back and forth, animated play) and every
+// intermediate value of the construction at the indicator, u-stage then v-stage (issue 5).
+#include <cstdio>
+#include <imgui.h>
+#include <string>
+
+#include "core/geom/deboor.hpp"
+#include "ui/deboor_overlay.hpp"
+#include "ui/doc_access.hpp"
+#include "ui/panels/panels.hpp"
+#include "ui/surface_actions.hpp"
+
+namespace isoparm::ui {
+
+namespace {
+
+std::string point_text(const geom::HPoint& h, bool rational) {
+    char buf[128];
+    if (const auto p = geom::DeBoorTriangle::cartesian(h)) {
+        if (rational)
+            std::snprintf(buf, sizeof buf, "(%.4g, %.4g, %.4g) w %.4g", p->x, p->y, p->z, h.w);
+        else
+            std::snprintf(buf, sizeof buf, "(%.4g, %.4g, %.4g)", p->x, p->y, p->z);
+    } else {
+        std::snprintf(buf, sizeof buf, "at infinity: (%.4g, %.4g, %.4g) w 0", h.x, h.y, h.z);
+    }
+    return buf;
+}
+
+ImVec4 level_color(bool u_stage, int level) {
+    const glm::vec4 c = deboor_level_color(u_stage, level);
+    return {c.r, c.g, c.b, 1};
+}
+
+// One triangle, a line per point: "P1" for the control points (level 0), then "d^k_i" level
+// by level in the level's colour; levels after `upto` greyed out (not reached yet).
+void triangle_lines(const geom::DeBoorTriangle& t, bool u_stage, int row, int upto, bool rational) {
+    for (std::size_t k = 0; k < t.levels.size(); ++k) {
+        const int level = static_cast<int>(k);
+        const ImVec4 c = level > upto ? ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled)
+                         : k == 0     ? ImGui::GetStyleColorVec4(ImGuiCol_Text)
+                                      : level_color(u_stage, u_stage ? level : level + 1);
+        for (std::size_t i = 0; i < t.levels[k].size(); ++i) {
+            const int index = t.first_index + static_cast<int>(i) + level;
+            // Row j of the u-stage starts from P_ij; the v-stage from the row results Q_j.
+            const std::string name =
+                k == 0 ? (u_stage ? "P" + std::to_string(index) + "," + std::to_string(row)
+                                  : "Q" + std::to_string(index))
+                       : "d" + std::to_string(level) + "," + std::to_string(index);
+            ImGui::TextColored(c, "%-6s %s", name.c_str(),
+                               point_text(t.levels[k][i], rational).c_str());
+        }
+    }
+}
+
+} // namespace
+
+void draw_deboor_panel(AppContext& ctx) {
+    const doc::Object* obj = nullptr;
+    const geom::Surface* s = current_surface(ctx.doc, &obj);
+    if (!s) {
+        ImGui::TextWrapped("No surface.");
+        return;
+    }
+    const glm::dvec2 uv = indicator_params(ctx.doc, *obj);
+    const geom::DeBoorSurfaceTrace trace = geom::deboor_surface(*s, uv.x, uv.y);
+    const int p_u = s->degree_u, p_v = s->degree_v;
+    const int last = deboor_step_count(ctx);
+    DeBoorPlayer& player = ctx.ui.deboor;
+    const bool rational = geom::is_rational(s->type);
+
+    ImGui::Checkbox("Show in 3D (D)", &ctx.doc.display.deboor);
+    ImGui::SameLine();
+    if (ImGui::Button("|<")) deboor_step(ctx, -last - 1);
+    ImGui::SameLine();
+    if (ImGui::Button("<")) deboor_step(ctx, -1);
+    ImGui::SameLine();
+    if (ImGui::Button(player.playing ? "Pause" : "Play")) deboor_toggle_play(ctx, ImGui::GetTime());
+    ImGui::SameLine();
+    if (ImGui::Button(">")) deboor_step(ctx, +1);
+    ImGui::SameLine();
+    if (ImGui::Button("All")) {
+        player.step = -1;
+        player.playing = false;
+        ctx.doc.display.deboor = true;
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Keys: [ and ] step, Space plays");
+    const DeBoorStepInfo info = deboor_step_info(player.step, p_u, p_v);
+    if (player.step >= 0)
+        ImGui::Text("Step %d of %d: %s", player.step, last, info.text.c_str());
+    else
+        ImGui::Text("All %d steps shown", last);
+
+    if (const auto p = trace.point())
+        ImGui::Text("S(%.4g, %.4g) = (%.6g, %.6g, %.6g)", uv.x, uv.y, p->x, p->y, p->z);
+    else
+        ImGui::TextColored(ImVec4(1, 0.6f, 0.2f, 1),
+                           "S(%.4g, %.4g) does not exist: the weights sum to zero here", uv.x,
+                           uv.y);
+    if (rational) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("Rational: computed on (wx, wy, wz, w), shown as points and weights");
+        ImGui::PopStyleColor();
+    }
+
+    const int upto = player.step < 0 ? last : player.step;
+    ImGui::Separator();
+    ImGui::BeginChild("##deboor_values");
+    char title[128];
+    std::snprintf(title, sizeof title, "u-stage: each row curve at u = %.4g (span %d)", uv.x,
+                  trace.u_stage.empty() ? 0 : trace.u_stage.front().span);
+    if (ImGui::CollapsingHeader(title, ImGuiTreeNodeFlags_DefaultOpen)) {
+        for (std::size_t j = 0; j < trace.u_stage.size(); ++j) {
+            const int row = static_cast<int>(j);
+            const bool used =
+                row >= trace.v_stage.first_index && row <= trace.v_stage.first_index + p_v;
+            char label[64];
+            std::snprintf(label, sizeof label, "row j = %d%s", row,
+                          used ? "" : "  (not used at v)");
+            if (ImGui::TreeNodeEx(label, used ? ImGuiTreeNodeFlags_DefaultOpen : 0)) {
+                triangle_lines(trace.u_stage[j], true, row, std::min(upto, p_u), rational);
+                ImGui::TreePop();
+            }
+        }
+    }
+    std::snprintf(title, sizeof title, "v-stage: the column curve at v = %.4g (span %d)", uv.y,
+                  trace.v_stage.span);
+    if (ImGui::CollapsingHeader(title, ImGuiTreeNodeFlags_DefaultOpen))
+        triangle_lines(trace.v_stage, false, -1, upto - p_u - 1, rational);
+    ImGui::EndChild();
+}
+
+} // namespace isoparm::ui
