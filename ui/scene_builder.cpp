@@ -168,7 +168,10 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
             }
             if (is_selected) add_box(box, im->lo, im->hi, to_vec4(col.selected_surface));
         } else if (const auto* c = std::get_if<doc::CurveObject>(&o.shape)) {
-            const glm::vec4 cc = to_vec4(is_selected ? col.selected_surface : col.surface);
+            // A curve in the surface colour disappears against a surface built from it (a
+            // ruled or skinned surface runs through its curves): curves take a pale tint.
+            const glm::vec4 cc = is_selected ? to_vec4(col.selected_surface)
+                                             : glm::mix(to_vec4(col.surface), glm::vec4(1), 0.6f);
             Overlay::add_polyline(curves, curve_polyline(c->curve, 200), cc);
             if (disp.control_net) {
                 std::vector<glm::vec3> poly;

@@ -189,20 +189,6 @@ std::optional<geom::Error> check_patch_groups(const Document& doc) {
                 "only surfaces can be subpatches; object '" + A.name + "' is a " +
                     (std::holds_alternative<CurveObject>(A.shape) ? "curve" : "implicit surface"),
                 at);
-        const ParamRect ra = surface_domain(*surface_of(A));
-        for (std::size_t b = 0; b < a; ++b) {
-            const Object& B = doc.objects[b];
-            if (B.patch_group != A.patch_group || !surface_of(B)) continue;
-            const ParamRect rb = surface_domain(*surface_of(B));
-            const bool overlap =
-                ra.u.lo < rb.u.hi && rb.u.lo < ra.u.hi && ra.v.lo < rb.v.hi && rb.v.lo < ra.v.hi;
-            if (overlap)
-                return geom::make_error(geom::ErrorCode::schema,
-                                        "subpatches '" + B.name + "' and '" + A.name +
-                                            "' of patch group " + std::to_string(A.patch_group) +
-                                            " overlap in the parameter domain",
-                                        at);
-        }
     }
     return std::nullopt;
 }

@@ -44,8 +44,9 @@ std::uint64_t patch_for_indicator(const Document& doc, std::uint64_t current);
 // dropped). Returns whether the current patch changed.
 bool follow_indicator(Document& doc, std::uint64_t current);
 
-// A scene's groups must be surfaces whose domains do not overlap (error `schema` at
-// "/objects/<k>/patch_group", naming both objects).
+// A scene's groups hold surfaces only (error `schema` at "/objects/<k>/patch_group"). Domains
+// that overlap (a hand-edited file) are allowed: the first patch in document order holds the
+// shared part for the indicator, and a scene the workstation wrote always loads back.
 std::optional<geom::Error> check_patch_groups(const Document& doc);
 
 // Two patches of a group that touch: `low`'s high end in direction `across` meets `high`'s

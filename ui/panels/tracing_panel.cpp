@@ -274,6 +274,23 @@ void draw_tracing_panel(AppContext& ctx) {
         }
     }
     dl->AddRect(a, b, pal.border, 0, 0, 1.5f * k);
+    // The ends of the shared domain where the current patch does not reach them.
+    const ImU32 faint = ImGui::GetColorU32(ImGuiCol_TextDisabled);
+    const float lh = ImGui::GetTextLineHeight();
+    auto u_end = [&](double t, float x) {
+        const std::string v = short_number(t);
+        dl->AddText(ImVec2(x - ImGui::CalcTextSize(v.c_str()).x / 2, b.y + tick + 1), faint,
+                    v.c_str());
+    };
+    auto v_end = [&](double t, float y) {
+        const std::string v = short_number(t);
+        dl->AddText(ImVec2(a.x - tick - 3 * k - ImGui::CalcTextSize(v.c_str()).x, y - lh / 2),
+                    faint, v.c_str());
+    };
+    if (own.u.lo > dom.u.lo) u_end(dom.u.lo, a.x);
+    if (own.u.hi < dom.u.hi) u_end(dom.u.hi, b.x);
+    if (own.v.lo > dom.v.lo) v_end(dom.v.lo, b.y);
+    if (own.v.hi < dom.v.hi) v_end(dom.v.hi, a.y);
     dl->AddText(
         ImVec2(b.x - ImGui::CalcTextSize("u").x - 4 * k, b.y - ImGui::GetTextLineHeight() - 2 * k),
         pal.text, "u");
