@@ -70,7 +70,8 @@ void draw_deboor_panel(AppContext& ctx) {
     const bool rational = geom::is_rational(s->type);
 
     ImGui::Checkbox("Show in 3D (D)", &ctx.doc.display.deboor);
-    ImGui::SameLine();
+    // The step buttons on a row of their own: they must fit the narrow column in
+    // presentation mode too.
     if (ImGui::Button("|<")) deboor_step(ctx, -last - 1);
     ImGui::SameLine();
     if (ImGui::Button("<")) deboor_step(ctx, -1);
@@ -87,16 +88,18 @@ void draw_deboor_panel(AppContext& ctx) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Keys: [ and ] step, Space plays");
     const DeBoorStepInfo info = deboor_step_info(player.step, p_u, p_v);
     if (player.step >= 0)
-        ImGui::Text("Step %d of %d: %s", player.step, last, info.text.c_str());
+        ImGui::TextWrapped("Step %d of %d: %s", player.step, last, info.text.c_str());
     else
         ImGui::Text("All %d steps shown", last);
 
-    if (const auto p = trace.point())
-        ImGui::Text("S(%.4g, %.4g) = (%.6g, %.6g, %.6g)", uv.x, uv.y, p->x, p->y, p->z);
-    else
-        ImGui::TextColored(ImVec4(1, 0.6f, 0.2f, 1),
-                           "S(%.4g, %.4g) does not exist: the weights sum to zero here", uv.x,
+    if (const auto p = trace.point()) {
+        ImGui::TextWrapped("S(%.4g, %.4g) = (%.6g, %.6g, %.6g)", uv.x, uv.y, p->x, p->y, p->z);
+    } else {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.6f, 0.2f, 1));
+        ImGui::TextWrapped("S(%.4g, %.4g) does not exist: the weights sum to zero here", uv.x,
                            uv.y);
+        ImGui::PopStyleColor();
+    }
     if (rational) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
         ImGui::TextWrapped("Rational: computed on (wx, wy, wz, w), shown as points and weights");
