@@ -1,10 +1,12 @@
 // `isoparm render [SCENE] -o OUT.png`: the workstation or its 3D view as a PNG, through EGL
 // on Mesa's surfaceless platform (no display needed), with the same code as the window.
+#include <cctype>
+#include <charconv>
 #include <cmath>
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <regex>
+#include <string_view>
 
 #include "app/commands.hpp"
 #include "core/doc/patches.hpp"
@@ -28,24 +30,48 @@ struct RenderOptions {
     int deboor_step = -1; // de Boor's construction up to this step (-1: all)
 };
 
-// "a,b[,c]" -> numbers; nullopt when the text is not 2 (or 3) finite numbers.
+// "a,b[,c]" -> numbers; nullopt when the text is not 2 (or 3) finite numbers. Each part may
+// have spaces around it and a leading '+'.
 std::optional<std::vector<double>> numbers(const std::string& text, size_t min, size_t max) {
-    static const std::regex number(R"(\s*([-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?)\s*)");
     std::vector<double> out;
     size_t start = 0;
-    while (start <= text.size()) {
+    while (true) {
         const size_t comma = text.find(',', start);
-        const std::string part =
-            text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-        std::smatch m;
-        if (!std::regex_match(part, m, number)) return std::nullopt;
-        out.push_back(std::stod(m[1]));
-        if (!std::isfinite(out.back())) return std::nullopt;
+        std::string_view part(text);
+        part = part.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        while (!part.empty() && std::isspace(static_cast<unsigned char>(part.front())))
+            part.remove_prefix(1);
+        while (!part.empty() && std::isspace(static_cast<unsigned char>(part.back())))
+            part.remove_suffix(1);
+        if (part.size() > 1 && part.front() == '+' && part[1] != '-') part.remove_prefix(1);
+        double x = 0;
+        const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), x);
+        if (part.empty() || ec != std::errc{} || end != part.data() + part.size() ||
+            !std::isfinite(x))
+            return std::nullopt;
+        out.push_back(x);
         if (comma == std::string::npos) break;
         start = comma + 1;
     }
     if (out.size() < min || out.size() > max) return std::nullopt;
     return out;
+}
+
+// "WxH" with 16 <= W, H <= 8192 (digits only); nullopt otherwise.
+std::optional<std::pair<int, int>> picture_size(std::string_view text) {
+    const size_t x = text.find('x');
+    if (x == std::string_view::npos) return std::nullopt;
+    auto side = [](std::string_view digits) -> std::optional<int> {
+        int v = 0;
+        const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+        if (digits.empty() || digits.size() > 5 || ec != std::errc{} ||
+            end != digits.data() + digits.size() || digits.front() == '-' || v < 16 || v > 8192)
+            return std::nullopt;
+        return v;
+    };
+    const auto w = side(text.substr(0, x)), h = side(text.substr(x + 1));
+    if (!w || !h) return std::nullopt;
+    return std::pair{*w, *h};
 }
 
 void apply_toggle(int flag, bool& setting) {
@@ -160,16 +186,14 @@ Action register_render_command(CLI::App& app) {
         ui::HeadlessRequest req;
         req.scene_path = o->scene;
         req.output = o->output;
-        static const std::regex size_re(R"(^(\d{1,5})x(\d{1,5})$)");
-        std::smatch m;
-        if (!std::regex_match(o->size, m, size_re) || std::stoi(m[1]) < 16 ||
-            std::stoi(m[2]) < 16 || std::stoi(m[1]) > 8192 || std::stoi(m[2]) > 8192) {
+        const auto size = picture_size(o->size);
+        if (!size) {
             std::cerr << "isoparm render: --size '" << o->size
                       << "' must be WxH between 16x16 and 8192x8192, e.g. 1280x800\n";
             return 2;
         }
-        req.width = std::stoi(m[1]);
-        req.height = std::stoi(m[2]);
+        req.width = size->first;
+        req.height = size->second;
         req.view = o->view == "3d" ? ui::ViewMode::view3d_only : ui::ViewMode::workstation;
         req.configure = [o](ui::AppContext& ctx) { return configure(*o, ctx); };
         const std::string error = ui::render_headless(req);
