@@ -90,6 +90,9 @@ void autosave(ui::AppContext& ctx, doc::AutosaveTimer& timer) {
     for (const std::string& p : r.restored)
         timer.wrote(doc::normalized_scene_path(p), doc::document_fingerprint(ctx.doc));
     r.restored.clear();
+    // Undone back to the saved state with work still on the redo stack: the recovery file
+    // keeps that work (it is not discarded) until a redo, a new edit or a save moves on.
+    if (!ctx.dirty() && ctx.history.can_redo()) return;
     const std::string path = doc::normalized_scene_path(ctx.file_path);
     const doc::AutosaveTimer::Step step =
         timer.poll(doc::AutosaveTimer::Clock::now(), ctx.dirty(), path,

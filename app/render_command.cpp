@@ -102,19 +102,9 @@ std::string configure(const RenderOptions& o, ui::AppContext& ctx) {
                     break;
                 }
         }
-        const geom::Surface* s = ui::current_surface(d);
-        if (!s) return "the scene has no surface for --select or --indicator";
-        if (!o.select.empty()) {
-            const auto ij = numbers(o.select, 2, 2);
-            const int i = ij ? static_cast<int>((*ij)[0]) : -1,
-                      j = ij ? static_cast<int>((*ij)[1]) : -1;
-            if (!ij || (*ij)[0] != i || (*ij)[1] != j || i < 0 || j < 0 || i >= s->n_u ||
-                j >= s->n_v)
-                return "--select '" + o.select + "' must be I,J with 0 <= I < " +
-                       std::to_string(s->n_u) + " and 0 <= J < " + std::to_string(s->n_v);
-            d.selection.i = i;
-            d.selection.j = j;
-        }
+        if (!ui::current_surface(d)) return "the scene has no surface for --select or --indicator";
+        // The indicator first: in a patch group it picks the current patch (the one under it),
+        // and --select then names a point of that patch.
         if (!o.indicator.empty()) {
             const auto uv = numbers(o.indicator, 2, 2);
             // Subpatches take the original domain their group tiles (core/doc/patches.hpp).
@@ -129,6 +119,19 @@ std::string configure(const RenderOptions& o, ui::AppContext& ctx) {
             d.indicator = {((*uv)[0] - du.lo) / (du.hi - du.lo),
                            ((*uv)[1] - dv.lo) / (dv.hi - dv.lo)};
             doc::follow_indicator(d, current->id);
+        }
+        if (!o.select.empty()) {
+            const doc::Object* current = nullptr;
+            const geom::Surface* s = ui::current_surface(d, &current);
+            const auto ij = numbers(o.select, 2, 2);
+            const int i = ij ? static_cast<int>((*ij)[0]) : -1,
+                      j = ij ? static_cast<int>((*ij)[1]) : -1;
+            if (!ij || (*ij)[0] != i || (*ij)[1] != j || i < 0 || j < 0 || i >= s->n_u ||
+                j >= s->n_v)
+                return "--select '" + o.select + "' must be I,J with 0 <= I < " +
+                       std::to_string(s->n_u) + " and 0 <= J < " + std::to_string(s->n_v) +
+                       " (a point of " + current->name + ")";
+            d.selection = {current->id, i, j};
         }
     }
     if (o.deboor_step != -1) {

@@ -67,7 +67,12 @@ geom::Interval domain_v(const geom::Surface& s) {
 
 glm::dvec2 indicator_params(const doc::Document& d, const doc::Object& surface_object) {
     const doc::ParamRect r = doc::tracing_domain(d, surface_object);
-    return {denormalize_param(r.u, d.indicator.x), denormalize_param(r.v, d.indicator.y)};
+    // Clamped to the object's own domain: for a subpatch the indicator may lie in another
+    // patch's part of the square (for a frame, or in a hole of the group), and evaluation
+    // needs a parameter inside the domain.
+    const doc::ParamRect own = doc::surface_domain(*surface_of(surface_object));
+    return {std::clamp(denormalize_param(r.u, d.indicator.x), own.u.lo, own.u.hi),
+            std::clamp(denormalize_param(r.v, d.indicator.y), own.v.lo, own.v.hi)};
 }
 
 glm::dvec2 indicator_in_own_domain(const doc::Document& d, const doc::Object& surface_object) {

@@ -10,6 +10,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h> // glfwPostEmptyEvent: wake the window when a mesh is ready
 
+#include "core/doc/patches.hpp"
 #include "ui/actions.hpp"
 #include "ui/doc_access.hpp"
 #include "ui/panels/panels.hpp"
@@ -223,6 +224,16 @@ void Workstation::frame(unsigned target_framebuffer) {
         ImGui::PopStyleVar(2);
     }
     ImGui::Render();
+    // Subpatches: the indicator moved into another patch's part makes it current; a patch
+    // picked otherwise takes the indicator along (core/doc/patches.hpp).
+    {
+        const doc::Object* current = nullptr;
+        current_surface(ctx_.doc, &current);
+        last_current_ = current ? doc::sync_patch_and_indicator(ctx_.doc, current->id,
+                                                                last_indicator_, last_current_)
+                                : 0;
+        last_indicator_ = ctx_.doc.indicator;
+    }
 
     // The 3D view into its texture, with the camera and document of this very frame.
     SceneStyle style;

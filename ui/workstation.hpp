@@ -3,6 +3,8 @@
 // exactly this code; only the platform input and the target differ.
 #pragma once
 
+#include <cmath>
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -47,6 +49,10 @@ private:
     std::unique_ptr<ImplicitMeshes> implicit_;
     bool presentation_built_ = false;
     bool deboor_was_on_ = false; // to bring the de Boor tab forward when it is switched on
+    // The indicator and current object of the last frame (subpatch activation); NaN at first,
+    // so the first frame makes the patch under a loaded scene's indicator current.
+    glm::dvec2 last_indicator_{std::nan(""), std::nan("")};
+    std::uint64_t last_current_ = 0;
 };
 
 } // namespace isoparm::ui

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <optional>
 
 #include "core/doc/commands_common.hpp"
 #include "core/doc/patches.hpp"
@@ -250,7 +251,9 @@ public:
         old_ = ref->position();
         ref->position() = p_;
         // Subpatches: the neighbours follow so the borders stay closed / smooth (issue 5).
-        if (!curve_) neighbours_ = keep_continuity(doc, id_, i_, j_, doc.continuity);
+        // The setting is read once: a redo replays the edit as it was made.
+        if (!mode_) mode_ = doc.continuity;
+        if (!curve_) neighbours_ = keep_continuity(doc, id_, i_, j_, *mode_);
         return geom::Ok{};
     }
 
@@ -283,6 +286,7 @@ private:
     glm::dvec3 p_, old_{0};
     bool curve_ = false;
     std::vector<PointChange> neighbours_;
+    std::optional<Continuity> mode_;
 };
 
 class SetWeight final : public Command {
@@ -312,7 +316,8 @@ public:
                               "/weight");
         old_ = ref->weight();
         ref->weight() = w_;
-        if (!curve_) neighbours_ = keep_continuity(doc, id_, i_, j_, doc.continuity);
+        if (!mode_) mode_ = doc.continuity; // read once, as in MoveControlPoint
+        if (!curve_) neighbours_ = keep_continuity(doc, id_, i_, j_, *mode_);
         return geom::Ok{};
     }
 
@@ -346,6 +351,7 @@ private:
     double w_, old_ = 1;
     bool curve_ = false;
     std::vector<PointChange> neighbours_;
+    std::optional<Continuity> mode_;
 };
 
 class SetKnot final : public Command {
@@ -394,7 +400,9 @@ public:
             if ((*U)[q] != (*U)[k_])
                 return make_error(ErrorCode::schema,
                                   "knots " + std::to_string(k_) + ".." + std::to_string(last) +
-                                      " are not copies of one knot (a run to move together)",
+                                      " are not copies of one knot (a run to move together): " +
+                                      geom::format_number((*U)[k_]) + " and " +
+                                      geom::format_number((*U)[q]) + " differ",
                                   "/count");
         if (!std::isfinite(value_))
             return make_error(ErrorCode::knots,

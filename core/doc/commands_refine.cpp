@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <optional>
 
 #include "core/doc/commands.hpp"
 #include "core/doc/commands_common.hpp"
@@ -331,7 +332,6 @@ public:
         doc.objects[index_] = before_;
         doc.next_id = prev_next_id_;
         for (auto it = conforming_.rbegin(); it != conforming_.rend(); ++it) (*it)->revert(doc);
-        conforming_.clear();
     }
 
     std::string label() const override {
@@ -344,7 +344,10 @@ public:
     }
 
     std::size_t memory_bytes() const override {
-        return sizeof(*this) + before_.name.size() + detail::shape_bytes(before_.shape);
+        std::size_t bytes =
+            sizeof(*this) + before_.name.size() + detail::shape_bytes(before_.shape);
+        for (const auto& c : conforming_) bytes += c->memory_bytes();
+        return bytes;
     }
 
     std::pair<std::uint64_t, std::uint64_t> ids() const { return ids_; }
@@ -370,7 +373,9 @@ private:
     // left part at v = 0.5: the right part gains v = 0.5 to multiplicity 3).
     geom::Status conform_neighbours(Document& doc, const Object& obj) {
         conforming_.clear();
-        if (curve_ || obj.patch_group == 0 || doc.continuity == Continuity::off) return geom::Ok{};
+        // The setting is read once: a redo replays the split as it was made.
+        if (!mode_) mode_ = doc.continuity;
+        if (curve_ || obj.patch_group == 0 || *mode_ == Continuity::off) return geom::Ok{};
         const ParamRect mine = surface_domain(std::get<SurfaceObject>(obj.shape).surface);
         const Dir across = dir_ == Dir::u ? Dir::v : Dir::u;
         auto range = [](const ParamRect& r, Dir d) { return d == Dir::u ? r.u : r.v; };
@@ -404,6 +409,7 @@ private:
     double t_;
     bool curve_ = false;
     std::vector<std::unique_ptr<Command>> conforming_;
+    std::optional<Continuity> mode_;
     int index_ = -1;
     std::uint64_t prev_next_id_ = 0;
     std::pair<std::uint64_t, std::uint64_t> ids_{0, 0};

@@ -113,10 +113,14 @@ glm::dvec4 c1_inner(const BorderSide& from, const BorderSide& to, const glm::dve
     return Q0 + r * (Q0 - Qfrom_inner);
 }
 
-bool set_point(geom::Surface& s, int i, int j, const glm::dvec4& Q, const glm::dvec3& fallback) {
+// Sets a C1 row point from its homogeneous value. A zero weight has no Cartesian point that
+// stands for Q (Cartesian + weight 0 is the homogeneous origin): the point is left as it is and
+// continuity_holds reports the border.
+bool set_point(geom::Surface& s, int i, int j, const glm::dvec4& Q) {
+    if (Q.w == 0) return false;
     const double w =
         s.type == geom::SplineType::bspline || s.type == geom::SplineType::bezier ? 1.0 : Q.w;
-    const glm::dvec3 p = Q.w != 0 ? glm::dvec3(Q) / Q.w : fallback;
+    const glm::dvec3 p = glm::dvec3(Q) / Q.w;
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) || !std::isfinite(w))
         return false;
     if (s.point(i, j) == p && s.weight(i, j) == w) return false;
@@ -176,6 +180,26 @@ bool follow_indicator(Document& doc, std::uint64_t current) {
     if (next == current) return false;
     doc.selection = {next, -1, -1};
     return true;
+}
+
+std::uint64_t sync_patch_and_indicator(Document& doc, std::uint64_t current,
+                                       glm::dvec2 last_indicator, std::uint64_t last_current) {
+    const Object* o = doc.find(current);
+    if (!o || o->patch_group == 0 || !surface_of(*o)) return current;
+    if (!(doc.indicator == last_indicator)) {
+        const std::uint64_t next = patch_for_indicator(doc, current);
+        if (next != current) doc.selection = {next, -1, -1};
+        return next;
+    }
+    if (current == last_current) return current;
+    const ParamRect all = tracing_domain(doc, *o);
+    const ParamRect own = surface_domain(*surface_of(*o));
+    auto into = [](const geom::Interval& whole, const geom::Interval& part, double s) {
+        const double t = std::clamp(whole.lo + s * (whole.hi - whole.lo), part.lo, part.hi);
+        return whole.hi > whole.lo ? (t - whole.lo) / (whole.hi - whole.lo) : 0.0;
+    };
+    doc.indicator = {into(all.u, own.u, doc.indicator.x), into(all.v, own.v, doc.indicator.y)};
+    return current;
 }
 
 std::optional<geom::Error> check_patch_groups(const Document& doc) {
@@ -276,33 +300,29 @@ std::vector<PointChange> keep_continuity(Document& doc, std::uint64_t id, int i,
             const auto [x1i, x1j] = ij(b.across, bx.inner, bx.first + k);
             const auto [y0i, y0j] = ij(b.across, by.border, by.first + k);
             const auto [y1i, y1j] = ij(b.across, by.inner, by.first + k);
-            auto change = [&](int ci, int cj, const glm::dvec4& Q, const glm::dvec3& fallback) {
-                if (changed.count({yid, ci, cj})) return;
+            // A point is claimed by the first path that reaches it, changed or not: a second
+            // path through a corner (where C1 conditions can disagree) leaves it alone, so the
+            // result does not depend on which values happened to be equal already.
+            auto change = [&](int ci, int cj, const glm::dvec4& Q) {
+                if (!changed.insert({yid, ci, cj}).second) return;
                 const PointChange before{yid, ci, cj, sy.point(ci, cj), sy.weight(ci, cj)};
-                if (!set_point(sy, ci, cj, Q, fallback)) return;
-                changed.insert({yid, ci, cj});
+                if (!set_point(sy, ci, cj, Q)) return;
                 changes.push_back(before);
                 queue.emplace_back(yid, ci, cj);
             };
             const glm::dvec4 Q0 = homogeneous(sx, x0i, x0j);
             if (c == bx.border) {
                 // C0: the same point, weight included (copied, not recomputed: exact).
-                if (!changed.count({yid, y0i, y0j}) &&
+                if (changed.insert({yid, y0i, y0j}).second &&
                     (sy.point(y0i, y0j) != sx.point(x0i, x0j) ||
                      sy.weight(y0i, y0j) != sx.weight(x0i, x0j))) {
                     changes.push_back({yid, y0i, y0j, sy.point(y0i, y0j), sy.weight(y0i, y0j)});
                     sy.point(y0i, y0j) = sx.point(x0i, x0j);
                     if (sy.type == sx.type) sy.weight(y0i, y0j) = sx.weight(x0i, x0j);
-                    changed.insert({yid, y0i, y0j});
                     queue.emplace_back(yid, y0i, y0j);
                 }
             }
-            if (c1) {
-                const glm::dvec3 P0 = sx.point(x0i, x0j);
-                const double r = (bx.p * by.dt) / (by.p * bx.dt);
-                const glm::dvec3 fallback = P0 + r * (P0 - sx.point(x1i, x1j));
-                change(y1i, y1j, c1_inner(bx, by, Q0, homogeneous(sx, x1i, x1j)), fallback);
-            }
+            if (c1) change(y1i, y1j, c1_inner(bx, by, Q0, homogeneous(sx, x1i, x1j)));
         }
     }
     return changes;

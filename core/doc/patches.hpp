@@ -44,6 +44,14 @@ std::uint64_t patch_for_indicator(const Document& doc, std::uint64_t current);
 // dropped). Returns whether the current patch changed.
 bool follow_indicator(Document& doc, std::uint64_t current);
 
+// Keeps the current patch and the indicator in step from frame to frame: when the indicator
+// moved (it differs from `last_indicator`; NaN on the first frame) the patch under it becomes
+// current (follow_indicator); when the current patch changed otherwise (picked in the 3D view
+// or a menu), the indicator moves into that patch's part of the square (its nearest point
+// there). Returns the current object afterwards.
+std::uint64_t sync_patch_and_indicator(Document& doc, std::uint64_t current,
+                                       glm::dvec2 last_indicator, std::uint64_t last_current);
+
 // A scene's groups hold surfaces only (error `schema` at "/objects/<k>/patch_group"). Domains
 // that overlap (a hand-edited file) are allowed: the first patch in document order holds the
 // shared part for the indicator, and a scene the workstation wrote always loads back.

@@ -264,6 +264,51 @@ TEST(Patches, SplitWithContinuityRefinesTheNeighbourSoBordersConform) {
     (void)high;
 }
 
+TEST(Patches, RedoReplaysTheContinuityTheEditWasMadeWith) {
+    OneSplit s(Continuity::c0);
+    const int n = s.surface(s.a).n_u;
+    ASSERT_TRUE(s.history.execute(s.doc, move_control_point(s.a, n - 1, 2, {0.1, 0.2, 3})));
+    const Document after = s.doc;
+    s.history.undo(s.doc);
+    s.doc.continuity = Continuity::off; // the setting changes between undo and redo
+    ASSERT_TRUE(s.history.redo(s.doc));
+    EXPECT_TRUE(same_geometry(s.doc, after));
+
+    // A split that refined its neighbour refines it again on redo, whatever the setting now.
+    Document doc = default_document();
+    doc.continuity = Continuity::c1;
+    History h;
+    const auto [left, right] = split(doc, h, doc.objects[0].id, Dir::u, 0.75);
+    split(doc, h, left, Dir::v, 0.5);
+    const Document split_twice = doc;
+    h.undo(doc);
+    doc.continuity = Continuity::off;
+    ASSERT_TRUE(h.redo(doc));
+    EXPECT_TRUE(same_geometry(doc, split_twice));
+    (void)right;
+}
+
+TEST(Patches, IndicatorAndCurrentPatchStayInStep) {
+    PaperSplit p;
+    // The indicator moved into the right part: that patch becomes current.
+    p.doc.selection = {p.left_low, 2, 2};
+    const glm::dvec2 before = p.doc.indicator;
+    p.doc.indicator = {0.9, 0.3};
+    EXPECT_EQ(sync_patch_and_indicator(p.doc, p.left_low, before, p.left_low), p.right);
+    EXPECT_EQ(p.doc.selection, (Selection{p.right, -1, -1}));
+    // A patch picked otherwise (the 3D view) takes the indicator along, to its nearest point.
+    const glm::dvec2 still = p.doc.indicator;
+    p.doc.selection = {p.left_high, -1, -1};
+    EXPECT_EQ(sync_patch_and_indicator(p.doc, p.left_high, still, p.right), p.left_high);
+    EXPECT_DOUBLE_EQ(p.doc.indicator.x, 0.75); // the right edge of the left part
+    EXPECT_DOUBLE_EQ(p.doc.indicator.y, 0.5);  // the bottom edge of the upper part
+    // Nothing moved and nothing else picked: nothing changes.
+    const Document same = p.doc;
+    EXPECT_EQ(sync_patch_and_indicator(p.doc, p.left_high, p.doc.indicator, p.left_high),
+              p.left_high);
+    EXPECT_TRUE(same_document(p.doc, same));
+}
+
 TEST(Patches, SceneKeepsGroupsAndContinuity) {
     PaperSplit p;
     p.doc.continuity = Continuity::c1;

@@ -140,6 +140,9 @@ TEST(SurfaceActions, ElevateAndSplitAtTheIndicator) {
     ctx.doc.indicator = {0.9, 0.4};
     EXPECT_TRUE(doc::follow_indicator(ctx.doc, left.id));
     EXPECT_EQ(ctx.doc.selection.object, ctx.doc.objects[1].id);
+    // Evaluation never leaves a patch's own domain, even for a frame in which the indicator
+    // lies in another patch's part of the square.
+    EXPECT_EQ(indicator_params(ctx.doc, ctx.doc.objects[0]), glm::dvec2(0.75, 0.4));
 }
 
 } // namespace

@@ -100,7 +100,8 @@ void point_controls(AppContext& ctx, const doc::Object& obj, const doc::CurveObj
         if (ImGui::IsItemDeactivatedAfterEdit()) ctx.seal();
     }
     ImGui::SameLine();
-    if (ImGui::Button("Delete")) run(ctx, doc::delete_curve_point(obj.id, i));
+    // The curve `g` refers to is replaced by a deletion: nothing below may read it this frame.
+    if (ImGui::Button("Delete") && run(ctx, doc::delete_curve_point(obj.id, i))) return;
 
     // The weight of a rational curve; a non-rational one can be made rational.
     if (!geom::is_rational(g.type)) {

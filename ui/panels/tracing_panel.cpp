@@ -107,6 +107,16 @@ void knot_strip(AppContext& ctx, const doc::Object& obj, const geom::Surface& s,
     // The pointer's parameter, kept strictly between the neighbouring knots: the knot stays
     // between its neighbours as the issue asks, and the drag never asks for a refused value.
     const geom::Knots& U = s.knots(dir);
+    // A key pressed during the drag (insert, elevate, undo) may have changed the knots: the
+    // held run must still be one run between two distinct neighbours, else the drag ends.
+    const int knot_count = static_cast<int>(U.size());
+    bool still = kd.first >= 1 && kd.first + kd.count < knot_count;
+    for (int q = kd.first; still && q < kd.first + kd.count; ++q) still = U[q] == U[kd.first];
+    if (still) still = U[kd.first - 1] < U[kd.first] && U[kd.first] < U[kd.first + kd.count];
+    if (!still) {
+        kd.active = false;
+        return;
+    }
     const geom::Interval range = along_x ? dom.u : dom.v;
     const double f = along_x ? (m.x - sq.x) / sq.w : 1.0 - (m.y - sq.y) / sq.h;
     const double lo = U[kd.first - 1], hi = U[kd.first + kd.count];
@@ -325,9 +335,6 @@ void draw_tracing_panel(AppContext& ctx) {
     ImGui::PopStyleColor();
 
     if (!patches.empty()) continuity_controls(ctx, *obj);
-
-    // Moving the indicator into another subpatch's part makes it the current patch.
-    doc::follow_indicator(ctx.doc, obj->id);
 }
 
 } // namespace isoparm::ui
