@@ -223,15 +223,30 @@ private:
 };
 
 // ---------------------------------------------------------------------------------------
-// A drag's neighbour changes: the first recorded value of each point is the one undo needs.
-void merge_changes(std::vector<PointChange>& mine, const std::vector<PointChange>& next) {
-    for (const PointChange& c : next) {
-        const bool known = std::any_of(mine.begin(), mine.end(), [&](const PointChange& m) {
-            return m.object == c.object && m.i == c.i && m.j == c.j;
-        });
-        if (!known) mine.push_back(c);
+// What an edit of a subpatch's control point did to its neighbours (issue 5): the points
+// keep_continuity moved, to restore on undo, and the continuity setting the edit was made with
+// (read once, so a redo replays the edit as it was made, whatever the setting is by then).
+struct NeighbourEdits {
+    std::vector<PointChange> changes;
+    std::optional<Continuity> mode;
+
+    void follow(Document& doc, std::uint64_t id, int i, int j) {
+        if (!mode) mode = doc.continuity;
+        changes = keep_continuity(doc, id, i, j, *mode);
     }
-}
+    void restore(Document& doc) const { restore_points(doc, changes); }
+    // A drag's later step: the first recorded value of each point is the one undo needs.
+    void merge(const NeighbourEdits& next) {
+        for (const PointChange& c : next.changes) {
+            const bool known =
+                std::any_of(changes.begin(), changes.end(), [&](const PointChange& m) {
+                    return m.object == c.object && m.i == c.i && m.j == c.j;
+                });
+            if (!known) changes.push_back(c);
+        }
+    }
+    std::size_t bytes() const { return changes.capacity() * sizeof(PointChange); }
+};
 
 class MoveControlPoint final : public Command {
 public:
@@ -251,16 +266,14 @@ public:
         old_ = ref->position();
         ref->position() = p_;
         // Subpatches: the neighbours follow so the borders stay closed / smooth (issue 5).
-        // The setting is read once: a redo replays the edit as it was made.
-        if (!mode_) mode_ = doc.continuity;
-        if (!curve_) neighbours_ = keep_continuity(doc, id_, i_, j_, *mode_);
+        if (!curve_) neighbours_.follow(doc, id_, i_, j_);
         return geom::Ok{};
     }
 
     void revert(Document& doc) override {
         Object* obj = doc.find(id_);
         assert(obj);
-        restore_points(doc, neighbours_);
+        neighbours_.restore(doc);
         control_point(*obj, i_, j_)->position() = old_;
     }
 
@@ -268,13 +281,11 @@ public:
         auto* m = dynamic_cast<const MoveControlPoint*>(&next);
         if (!m || m->id_ != id_ || m->i_ != i_ || m->j_ != j_) return false;
         p_ = m->p_; // old_ stays: the position before the whole drag
-        merge_changes(neighbours_, m->neighbours_);
+        neighbours_.merge(m->neighbours_);
         return true;
     }
 
-    std::size_t memory_bytes() const override {
-        return sizeof(*this) + neighbours_.capacity() * sizeof(PointChange);
-    }
+    std::size_t memory_bytes() const override { return sizeof(*this) + neighbours_.bytes(); }
 
     std::string label() const override {
         return "Move " + detail::point_label('P', i_, curve_ ? -1 : j_);
@@ -285,8 +296,7 @@ private:
     int i_, j_;
     glm::dvec3 p_, old_{0};
     bool curve_ = false;
-    std::vector<PointChange> neighbours_;
-    std::optional<Continuity> mode_;
+    NeighbourEdits neighbours_;
 };
 
 class SetWeight final : public Command {
@@ -316,15 +326,14 @@ public:
                               "/weight");
         old_ = ref->weight();
         ref->weight() = w_;
-        if (!mode_) mode_ = doc.continuity; // read once, as in MoveControlPoint
-        if (!curve_) neighbours_ = keep_continuity(doc, id_, i_, j_, *mode_);
+        if (!curve_) neighbours_.follow(doc, id_, i_, j_);
         return geom::Ok{};
     }
 
     void revert(Document& doc) override {
         Object* obj = doc.find(id_);
         assert(obj);
-        restore_points(doc, neighbours_);
+        neighbours_.restore(doc);
         control_point(*obj, i_, j_)->weight() = old_;
     }
 
@@ -332,13 +341,11 @@ public:
         auto* m = dynamic_cast<const SetWeight*>(&next);
         if (!m || m->id_ != id_ || m->i_ != i_ || m->j_ != j_) return false;
         w_ = m->w_;
-        merge_changes(neighbours_, m->neighbours_);
+        neighbours_.merge(m->neighbours_);
         return true;
     }
 
-    std::size_t memory_bytes() const override {
-        return sizeof(*this) + neighbours_.capacity() * sizeof(PointChange);
-    }
+    std::size_t memory_bytes() const override { return sizeof(*this) + neighbours_.bytes(); }
 
     std::string label() const override {
         return "Set weight " + detail::point_label('w', i_, curve_ ? -1 : j_) + " = " +
@@ -350,8 +357,7 @@ private:
     int i_, j_;
     double w_, old_ = 1;
     bool curve_ = false;
-    std::vector<PointChange> neighbours_;
-    std::optional<Continuity> mode_;
+    NeighbourEdits neighbours_;
 };
 
 class SetKnot final : public Command {

@@ -140,6 +140,24 @@ geom::Status check_size(const Shape& shape, const std::string& path) {
     return geom::Ok{};
 }
 
+namespace {
+
+// Every coordinate finite (`schema`); point_path(k) is the JSON Pointer of point k, to which
+// the coordinate's index is appended.
+template <typename PointPath>
+geom::Status finite_points(const std::vector<glm::dvec3>& points, PointPath point_path) {
+    for (std::size_t k = 0; k < points.size(); ++k)
+        for (int a = 0; a < 3; ++a)
+            if (!std::isfinite(points[k][a]))
+                return make_error(ErrorCode::schema,
+                                  "control point coordinates must be finite numbers, got " +
+                                      geom::format_number(points[k][a]),
+                                  point_path(k) + "/" + std::to_string(a));
+    return geom::Ok{};
+}
+
+} // namespace
+
 geom::Status validate_shape(const Shape& shape) {
     if (auto* s = std::get_if<SurfaceObject>(&shape)) {
         const geom::Surface& g = s->surface;
@@ -157,14 +175,13 @@ geom::Status validate_shape(const Shape& shape) {
                     " points, " + std::to_string(g.weights.size()) + " weights",
                 "/weights");
         if (auto st = check_size(shape, "/points"); !st) return st;
-        for (std::size_t k = 0; k < g.points.size(); ++k)
-            for (int a = 0; a < 3; ++a)
-                if (!std::isfinite(g.points[k][a]))
-                    return make_error(ErrorCode::schema,
-                                      "control point coordinates must be finite numbers, got " +
-                                          geom::format_number(g.points[k][a]),
-                                      "/points/" + std::to_string(k / g.n_v) + "/" +
-                                          std::to_string(k % g.n_v) + "/" + std::to_string(a));
+        if (auto st = finite_points(g.points,
+                                    [&](std::size_t k) {
+                                        return "/points/" + std::to_string(k / g.n_v) + "/" +
+                                               std::to_string(k % g.n_v);
+                                    });
+            !st)
+            return st;
         return geom::validate_surface(g);
     }
     if (auto* c = std::get_if<CurveObject>(&shape)) {
@@ -176,13 +193,10 @@ geom::Status validate_shape(const Shape& shape) {
                     " points, " + std::to_string(g.weights.size()) + " weights",
                 "/weights");
         if (auto st = check_size(shape, "/points"); !st) return st;
-        for (std::size_t k = 0; k < g.points.size(); ++k)
-            for (int a = 0; a < 3; ++a)
-                if (!std::isfinite(g.points[k][a]))
-                    return make_error(ErrorCode::schema,
-                                      "control point coordinates must be finite numbers, got " +
-                                          geom::format_number(g.points[k][a]),
-                                      "/points/" + std::to_string(k) + "/" + std::to_string(a));
+        if (auto st = finite_points(g.points,
+                                    [](std::size_t k) { return "/points/" + std::to_string(k); });
+            !st)
+            return st;
         return geom::validate_curve(g);
     }
     return validate_implicit(std::get<ImplicitObject>(shape));
