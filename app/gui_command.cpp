@@ -1,5 +1,6 @@
 // `isoparm [SCENE]`: the workstation window (GLFW, OpenGL 3.3 core, Dear ImGui).
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdlib>
 #include <iostream>
@@ -20,6 +21,7 @@
 #include "ui/actions.hpp"
 #include "ui/render/renderer.hpp"
 #include "ui/settings.hpp"
+#include "ui/window_placement.hpp"
 #include "ui/workstation.hpp"
 
 namespace isoparm::app {
@@ -34,10 +36,21 @@ std::string& glfw_error() {
     return last;
 }
 
-// Frames are drawn while something happens; when idle the loop sleeps in glfwWaitEvents.
+// Frames are drawn while something happens; when idle the loop sleeps in glfwWaitEvents and
+// draws nothing (on a CPU rasteriser every frame costs tens of milliseconds).
 int& pending_frames() {
     static int n = 3;
     return n;
+}
+// Set from any thread (a background mesh is ready, an animation's next step) with an empty
+// event to end the wait; the loop turns it into frames.
+std::atomic<bool>& frame_requested() {
+    static std::atomic<bool> flag{false};
+    return flag;
+}
+void request_frame() {
+    frame_requested() = true;
+    glfwPostEmptyEvent();
 }
 void wake(GLFWwindow*) {
     pending_frames() = 3;
@@ -109,6 +122,57 @@ void autosave(ui::AppContext& ctx, doc::AutosaveTimer& timer) {
     }
 }
 
+ui::ScreenRect work_area_of(GLFWmonitor* m) {
+    ui::ScreenRect r;
+    glfwGetMonitorWorkarea(m, &r.x, &r.y, &r.width, &r.height);
+    if (r.width <= 0 || r.height <= 0) { // some servers report no work area: the whole mode
+        const GLFWvidmode* mode = glfwGetVideoMode(m);
+        glfwGetMonitorPos(m, &r.x, &r.y);
+        r.width = mode ? mode->width : ui::default_window_width;
+        r.height = mode ? mode->height : ui::default_window_height;
+    }
+    return r;
+}
+
+// The monitor that holds most of the window (the primary one when it is on none).
+GLFWmonitor* monitor_of(GLFWwindow* window) {
+    int wx = 0, wy = 0, ww = 0, wh = 0;
+    glfwGetWindowPos(window, &wx, &wy);
+    glfwGetWindowSize(window, &ww, &wh);
+    int count = 0;
+    GLFWmonitor** monitors = glfwGetMonitors(&count);
+    GLFWmonitor* best = glfwGetPrimaryMonitor();
+    long best_area = 0;
+    for (int k = 0; k < count; ++k) {
+        const GLFWvidmode* mode = glfwGetVideoMode(monitors[k]);
+        if (!mode) continue;
+        int mx = 0, my = 0;
+        glfwGetMonitorPos(monitors[k], &mx, &my);
+        const long w = std::max(0, std::min(wx + ww, mx + mode->width) - std::max(wx, mx));
+        const long h = std::max(0, std::min(wy + wh, my + mode->height) - std::max(wy, my));
+        if (w * h > best_area) {
+            best_area = w * h;
+            best = monitors[k];
+        }
+    }
+    return best;
+}
+
+// F11: true full screen on the monitor the window is on, and back to the window it was.
+void toggle_fullscreen(GLFWwindow* window, ui::ScreenRect& windowed) {
+    if (glfwGetWindowMonitor(window)) {
+        glfwSetWindowMonitor(window, nullptr, windowed.x, windowed.y, windowed.width,
+                             windowed.height, GLFW_DONT_CARE);
+        return;
+    }
+    glfwGetWindowPos(window, &windowed.x, &windowed.y);
+    glfwGetWindowSize(window, &windowed.width, &windowed.height);
+    GLFWmonitor* m = monitor_of(window);
+    const GLFWvidmode* mode = m ? glfwGetVideoMode(m) : nullptr;
+    if (!mode) return;
+    glfwSetWindowMonitor(window, m, 0, 0, mode->width, mode->height, mode->refreshRate);
+}
+
 int run_window(const std::string& scene, int autosave_seconds) {
     const char* x11 = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
@@ -129,16 +193,24 @@ int run_window(const std::string& scene, int autosave_seconds) {
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
-    GLFWwindow* window = glfwCreateWindow(settings.window_width, settings.window_height, "isoparm",
-                                          nullptr, nullptr);
+    // Placed before it is shown: a projector's 1024x768 gets a window that fits its work area.
+    glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
+    GLFWmonitor* primary = glfwGetPrimaryMonitor();
+    const ui::ScreenRect place =
+        primary ? ui::place_window(work_area_of(primary), settings.window_sizes)
+                : ui::ScreenRect{0, 0, ui::default_window_width, ui::default_window_height};
+    GLFWwindow* window = glfwCreateWindow(place.width, place.height, "isoparm", nullptr, nullptr);
     if (!window) {
         std::cerr << "isoparm: cannot create an OpenGL 3.3 core window (" << glfw_error() << "); "
                   << render_hint << "\n";
         glfwTerminate();
         return 1;
     }
+    glfwSetWindowPos(window, place.x, place.y);
+    glfwShowWindow(window);
     glfwMakeContextCurrent(window);
     glfwSwapInterval(1);
+    ui::ScreenRect windowed = place; // where F11 returns to
     float xs = 1, ys = 1;
     glfwGetWindowContentScale(window, &xs, &ys);
 
@@ -147,7 +219,8 @@ int run_window(const std::string& scene, int autosave_seconds) {
         // Multisampling costs ~5x on a CPU rasteriser: the window stays responsive without it
         // (lines and points are antialiased in their shaders anyway).
         const int msaa = ui::software_renderer() ? 0 : 4;
-        ui::Workstation ws({/*headless=*/false, std::max(xs, ys), ui::ViewMode::workstation, msaa});
+        ui::Workstation ws(
+            {/*headless=*/false, std::max(xs, ys), ui::ViewMode::workstation, msaa, request_frame});
         ui::AppContext& ctx = ws.context();
         if (!ws.renderer_error().empty()) {
             std::cerr << "isoparm: OpenGL shaders failed: " << ws.renderer_error() << "\n";
@@ -182,15 +255,23 @@ int run_window(const std::string& scene, int autosave_seconds) {
                 if (pending_frames() > 0)
                     glfwPollEvents();
                 else
-                    glfwWaitEventsTimeout(0.5);
-                if (pending_frames() > 0) --pending_frames();
+                    glfwWaitEventsTimeout(0.5); // wakes for the autosave timer too
+                if (frame_requested().exchange(false))
+                    pending_frames() = std::max(pending_frames(), 1);
+                if (pending_frames() == 0 && !glfwWindowShouldClose(window)) {
+                    if (autosaving) autosave(ctx, timer); // nothing happened: no frame
+                    continue;
+                }
+                --pending_frames();
                 if (glfwWindowShouldClose(window)) {
                     glfwSetWindowShouldClose(window, GLFW_FALSE);
                     ui::request_quit(ctx); // asks first when there are unsaved changes
                     pending_frames() = 3;
                 }
-                // Keep drawing while a gesture is in progress.
-                if (ImGui::IsAnyItemActive()) pending_frames() = std::max(pending_frames(), 1);
+                // Keep drawing while a mouse gesture is in progress (a focused text field alone
+                // draws on its keys, not continuously).
+                if (ImGui::IsAnyItemActive() && ImGui::IsAnyMouseDown())
+                    pending_frames() = std::max(pending_frames(), 1);
                 const auto t0 = std::chrono::steady_clock::now();
                 ImGui_ImplGlfw_NewFrame();
                 ws.frame(0);
@@ -201,6 +282,12 @@ int run_window(const std::string& scene, int autosave_seconds) {
                         .count();
                 double& shown = ctx.ui.frame_ms;
                 shown = shown <= 0 ? ms : shown * 0.8 + ms * 0.2;
+                if (ctx.ui.fullscreen_request) {
+                    ctx.ui.fullscreen_request = false;
+                    toggle_fullscreen(window, windowed);
+                    ctx.ui.fullscreen = glfwGetWindowMonitor(window) != nullptr;
+                    wake(window);
+                }
                 if (const std::string t = ctx.title(); t != title) {
                     glfwSetWindowTitle(window, t.c_str());
                     title = t;
@@ -210,10 +297,12 @@ int run_window(const std::string& scene, int autosave_seconds) {
             // A normal exit: the unsaved-changes question was answered, the work is safe or
             // deliberately dropped.
             if (const std::optional<std::string> p = timer.on_exit()) doc::discard_recovery(*p);
+            // The size is kept for monitors of this work-area size (not a full-screen size).
+            if (glfwGetWindowMonitor(window)) toggle_fullscreen(window, windowed);
             int w = 0, h = 0;
             glfwGetWindowSize(window, &w, &h);
-            ctx.settings.window_width = w;
-            ctx.settings.window_height = h;
+            if (GLFWmonitor* m = monitor_of(window))
+                ctx.settings.window_sizes[ui::work_area_key(work_area_of(m))] = {w, h};
             ui::store_settings(ctx);
             ImGui_ImplGlfw_Shutdown();
         }

@@ -97,8 +97,11 @@ bool open_file(AppContext& ctx, const std::string& path) {
     return true;
 }
 
+// File > New: an empty scene, and the new-surface dialog offered straight away (Cancel
+// leaves the scene empty; Curve > New curve is the other way to begin).
 void new_document(AppContext& ctx) {
-    adopt(ctx, doc::default_document(), "");
+    adopt(ctx, doc::Document{}, "");
+    if (!ctx.ui.headless) ctx.ui.new_surface.open = true;
 }
 
 bool save(AppContext& ctx) {
@@ -163,6 +166,12 @@ void fit_view(AppContext& ctx) {
 void toggle_presentation(AppContext& ctx) {
     ctx.ui.presentation = !ctx.ui.presentation;
     ctx.ui.camera_needs_fit = true; // the view changes size with the larger panels
+}
+
+void toggle_view_only(AppContext& ctx) {
+    ctx.ui.view_mode =
+        ctx.ui.view_mode == ViewMode::view3d_only ? ViewMode::workstation : ViewMode::view3d_only;
+    ctx.ui.camera_needs_fit = true;
 }
 
 void show_error(AppContext& ctx, const std::string& title, const std::string& message) {

@@ -29,6 +29,7 @@ void redo(AppContext& ctx);
 
 void fit_view(AppContext& ctx);
 void toggle_presentation(AppContext& ctx);
+void toggle_view_only(AppContext& ctx); // Shift+P: the 3D view alone fills the window
 
 // Shows a modal error dialog.
 void show_error(AppContext& ctx, const std::string& title, const std::string& message);

@@ -9,6 +9,7 @@
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/tessellate.hpp"
+#include "ui/contrast.hpp"
 #include "ui/deboor_overlay.hpp"
 #include "ui/doc_access.hpp"
 #include "ui/render/implicit_meshes.hpp"
@@ -81,11 +82,27 @@ std::vector<std::vector<glm::vec3>> iso_curve(const geom::Surface& s, geom::Dir 
     return pieces;
 }
 
+// The scene's colours with every line and point colour kept readable on its background (a
+// white background must not swallow a pale net).
+doc::Colors readable_overlay_colors(const doc::Colors& c) {
+    const glm::vec3 bg(c.background.r, c.background.g, c.background.b);
+    auto fix = [&](doc::Rgba& x) {
+        const glm::vec4 v = readable_on(to_vec4(x), bg, line_contrast);
+        x = {v.r, v.g, v.b, v.a};
+    };
+    doc::Colors out = c;
+    for (doc::Rgba* x : {&out.control_net, &out.control_points, &out.selected_point,
+                         &out.knot_curves, &out.indicator})
+        fix(*x);
+    return out;
+}
+
 BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
                        const ImplicitMeshes* implicit) {
     BuiltScene out;
     const float k = style.scale;
-    const doc::Colors& col = d.colors;
+    const doc::Colors col = readable_overlay_colors(d.colors);
+    const glm::vec3 background(col.background.r, col.background.g, col.background.b);
     const doc::DisplaySettings& disp = d.display;
     const bool shaded = disp.style != doc::DisplayStyle::wireframe;
     const bool wire = disp.style != doc::DisplayStyle::shaded;
@@ -170,8 +187,10 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
         } else if (const auto* c = std::get_if<doc::CurveObject>(&o.shape)) {
             // A curve in the surface colour disappears against a surface built from it (a
             // ruled or skinned surface runs through its curves): curves take a pale tint.
-            const glm::vec4 cc = is_selected ? to_vec4(col.selected_surface)
-                                             : glm::mix(to_vec4(col.surface), glm::vec4(1), 0.6f);
+            const glm::vec4 cc =
+                is_selected ? to_vec4(col.selected_surface)
+                            : readable_on(glm::mix(to_vec4(col.surface), glm::vec4(1), 0.6f),
+                                          background, line_contrast);
             Overlay::add_polyline(curves, curve_polyline(c->curve, 200), cc);
             if (disp.control_net) {
                 std::vector<glm::vec3> poly;

@@ -34,7 +34,7 @@ nlohmann::json settings_to_json(const Settings& s) {
           {"left_shares", s.layout.left_shares},
           {"right_shares", s.layout.right_shares}}},
         {"recent", s.recent},
-        {"window", {{"width", s.window_width}, {"height", s.window_height}}},
+        {"window_sizes", s.window_sizes},
     };
 }
 
@@ -64,13 +64,12 @@ Settings settings_from_json(const nlohmann::json& j) {
     read(j, "recent", recent);
     for (const std::string& r : recent)
         if (!r.empty() && s.recent.size() < max_recent_files) s.recent.push_back(r);
-    if (j.contains("window")) {
-        read(j["window"], "width", s.window_width);
-        read(j["window"], "height", s.window_height);
-    }
-    const Settings def;
-    if (s.window_width < 320 || s.window_width > 16384) s.window_width = def.window_width;
-    if (s.window_height < 240 || s.window_height > 16384) s.window_height = def.window_height;
+    WindowSizes sizes;
+    read(j, "window_sizes", sizes);
+    for (const auto& [key, size] : sizes)
+        if (size[0] >= min_window_width && size[0] <= 16384 && size[1] >= min_window_height &&
+            size[1] <= 16384)
+            s.window_sizes[key] = size;
     return s;
 }
 

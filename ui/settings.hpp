@@ -1,5 +1,5 @@
-// The workstation's own settings (layout, recent files, window size), remembered between
-// runs in $XDG_CONFIG_HOME/isoparm/settings.json (or ~/.config/isoparm/settings.json).
+// The workstation's own settings (layout, recent files, window size per monitor size), remembered
+// between runs in $XDG_CONFIG_HOME/isoparm/settings.json (or ~/.config/isoparm/settings.json).
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "ui/layout.hpp"
+#include "ui/window_placement.hpp"
 
 namespace isoparm::ui {
 
@@ -15,7 +16,7 @@ constexpr std::size_t max_recent_files = 10;
 struct Settings {
     LayoutPrefs layout;
     std::vector<std::string> recent; // most recent first
-    int window_width = 1440, window_height = 900;
+    WindowSizes window_sizes;        // per monitor work-area size
     bool operator==(const Settings&) const = default;
 };
 

@@ -1,6 +1,9 @@
 // Themes and font sizes.
 #include "ui/theme.hpp"
 
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
 
@@ -44,17 +47,60 @@ void apply_theme(bool presentation, float scale) {
     ImGui::GetStyle() = style;
 }
 
-void rebuild_fonts(float scale) {
+namespace {
+
+ImFont* g_number_font = nullptr;
+
+// Debian's fonts-dejavu-core; ISOPARM_FONT_DIR overrides the folder (tests, other systems).
+std::string font_dir() {
+    if (const char* d = std::getenv("ISOPARM_FONT_DIR"); d && *d) return d;
+    return "/usr/share/fonts/truetype/dejavu";
+}
+
+bool readable(const std::string& path) {
+    return std::ifstream(path, std::ios::binary).good();
+}
+
+} // namespace
+
+std::string rebuild_fonts(float scale) {
     ImGuiIO& io = ImGui::GetIO();
     io.Fonts->Clear();
+    g_number_font = nullptr;
+    const float pixels = std::round(base_font_pixels * scale);
+    const std::string sans = font_dir() + "/DejaVuSans.ttf";
+    const std::string mono = font_dir() + "/DejaVuSansMono.ttf";
+    std::string note;
     ImFontConfig cfg;
-    cfg.SizePixels = 13.0f * scale;
-    // The built-in ProggyClean font: always present and identical everywhere, which keeps
-    // headless renders deterministic.
-    io.Fonts->AddFontDefault(&cfg);
+    cfg.OversampleH = 2; // crisper small text on a CPU rasteriser's 1:1 pixels
+    cfg.OversampleV = 1;
+    // Latin-1 and the Greek and maths glyphs the panels print (sums, arrows, mu, omega).
+    static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x22FF, 0};
+    ImFont* main = nullptr;
+    if (readable(sans)) main = io.Fonts->AddFontFromFileTTF(sans.c_str(), pixels, &cfg, ranges);
+    if (!main) {
+        ImFontConfig fallback;
+        fallback.SizePixels = std::round(13.0f * scale);
+        io.Fonts->AddFontDefault(&fallback);
+        note = "DejaVu Sans not found in " + font_dir() +
+               " (install fonts-dejavu-core): using the built-in bitmap font";
+    } else if (readable(mono)) {
+        g_number_font = io.Fonts->AddFontFromFileTTF(mono.c_str(), pixels, &cfg, ranges);
+    }
     io.Fonts->Build();
     ImGui_ImplOpenGL3_DestroyFontsTexture();
     ImGui_ImplOpenGL3_CreateFontsTexture();
+    return note;
+}
+
+ImVec4 error_text_color() {
+    const ImVec4 bg = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg);
+    const bool light = 0.2126f * bg.x + 0.7152f * bg.y + 0.0722f * bg.z > 0.5f;
+    return light ? ImVec4(0.70f, 0.05f, 0.0f, 1) : ImVec4(1.0f, 0.62f, 0.35f, 1);
+}
+
+ImFont* number_font() {
+    return g_number_font ? g_number_font : ImGui::GetIO().Fonts->Fonts[0];
 }
 
 } // namespace isoparm::ui

@@ -1,13 +1,27 @@
 // ImGui look: the normal dark theme and the classroom (presentation) theme, scaled for
-// HiDPI, with the built-in font rebuilt at the needed size.
+// HiDPI, with DejaVu Sans (and DejaVu Sans Mono for numbers) rasterised at the size in use.
 #pragma once
+
+#include <string>
+
+struct ImFont;
+struct ImVec4;
 
 namespace isoparm::ui {
 
+// Text height in pixels at scale 1: DejaVu Sans reads at 15 px where ProggyClean needed 13.
+constexpr float base_font_pixels = 15.0f;
+
 // Sets colours and sizes for the scale (content scale times the presentation factor).
 void apply_theme(bool presentation, float scale);
-// Rebuilds ImGui's font atlas with the built-in font at 13 px times `scale`; call between
-// frames, then let the OpenGL3 backend recreate its font texture.
-void rebuild_fonts(float scale);
+// Rebuilds ImGui's font atlas at base_font_pixels times `scale` from Debian's
+// fonts-dejavu-core; where that is missing, the built-in font, and the returned note says so
+// (empty when the vector fonts loaded). Call between frames: it recreates the font texture.
+std::string rebuild_fonts(float scale);
+// Refusals and errors inside panels and dialogs: orange on the dark theme, dark red on the
+// light (presentation) theme, so they read on either.
+ImVec4 error_text_color();
+// DejaVu Sans Mono at the same size, for columns of numbers (the default font when missing).
+ImFont* number_font();
 
 } // namespace isoparm::ui

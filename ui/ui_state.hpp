@@ -124,7 +124,8 @@ struct CurveDesignerState {
     std::vector<std::uint64_t> chosen; // curves in order
     double angle = 360, swing_scale = 1;
     int skin_degree = 0, parametrization = 0, sections = 16;
-    std::string note; // the last construction's report (deviation, parameters, compatibility)
+    std::string note;  // the last construction's report (deviation, parameters, compatibility)
+    std::string error; // why the last Build was refused, shown in the dialog until the next
 };
 
 // De Boor's construction shown one level at a time (issue 5): the u-stage's levels over all
@@ -152,15 +153,32 @@ struct KeyPress {
     bool ctrl = false, shift = false, alt = false;
 };
 
+// The object list's rename in progress.
+struct ObjectListState {
+    std::uint64_t renaming = 0; // object whose name field is open, 0 none
+    bool focus_rename = false;
+    char name[128] = {};
+    bool show_tab = false; // bring the Objects tab forward once (an object was added)
+};
+
+// When the status bar's message appeared (it fades, then goes, after status_seconds).
+struct StatusAge {
+    std::string text;
+    double since = 0;
+};
+constexpr double status_seconds = 12;
+
 struct UiState {
     Camera camera;
     double fit_distance = 6;      // camera distance of the last fit (zoom 100%)
     bool camera_needs_fit = true; // fit once the view's size is known
     double zoom_after_fit = 1.0;  // applied once after that first fit (`isoparm render --camera`)
     ViewMode view_mode = ViewMode::workstation;
-    bool headless = false;     // deterministic frames: no timings, no settings
-    bool presentation = false; // classroom mode: large fonts, thick lines, high contrast
-    float content_scale = 1;   // HiDPI factor from the window system
+    bool headless = false;           // deterministic frames: no timings, no settings
+    bool presentation = false;       // classroom mode: large fonts, thick lines, high contrast
+    bool fullscreen = false;         // the window covers its monitor (F11)
+    bool fullscreen_request = false; // F11 pressed: the window loop toggles full screen
+    float content_scale = 1;         // HiDPI factor from the window system
     float font_scale_built = 0;
 
     Layout layout;
@@ -186,10 +204,12 @@ struct UiState {
     std::vector<KeyPress> key_presses; // filled by the window loop, consumed by shortcuts
     double frame_ms = 0; // work per frame (build, render, swap), smoothed; set by the window loop
     std::string status;  // last message (errors of refused edits)
+    StatusAge status_age;
     HeatMapCache heat;
     ImplicitForm implicit;
     RecoveryPrompt recovery;
     CurveDesignerState curve;
+    ObjectListState object_list;
 
     float scale() const { return content_scale * (presentation ? 1.5f : 1.0f); }
 };

@@ -3,12 +3,10 @@
 #include "ui/workstation.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
 #include <variant>
-
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h> // glfwPostEmptyEvent: wake the window when a mesh is ready
 
 #include "core/doc/patches.hpp"
 #include "ui/actions.hpp"
@@ -20,18 +18,24 @@
 #include "ui/scene_builder.hpp"
 #include "ui/surface_actions.hpp"
 #include "ui/theme.hpp"
+#include "ui/ui_report.hpp"
 
 namespace isoparm::ui {
 
 namespace {
 
+// Panels draw no background of their own: the frame is cleared to the window colour first,
+// and on a CPU rasteriser (classroom VMs, remote desktops) every blended full-panel quad
+// costs milliseconds per frame.
 constexpr ImGuiWindowFlags panel_flags =
     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
+    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus |
+    ImGuiWindowFlags_NoBackground;
 
 bool begin_panel(const char* name, const Rect& r, ImGuiWindowFlags extra = 0) {
     ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(std::max(r.w, 1.f), std::max(r.h, 1.f)), ImGuiCond_Always);
+    report_rect(std::string("panel/") + name, r.x, r.y, r.w, r.h);
     return ImGui::Begin(name, nullptr, panel_flags | extra);
 }
 
@@ -47,6 +51,7 @@ Workstation::Workstation(const WorkstationOptions& options) {
     ImGui_ImplOpenGL3_CreateDeviceObjects();
 
     ctx_.ui.headless = options.headless;
+    request_frame_ = options.request_frame;
     ctx_.ui.content_scale = options.content_scale > 0 ? options.content_scale : 1.f;
     ctx_.ui.view_mode = options.view;
     ctx_.remember_settings = !options.headless;
@@ -71,56 +76,64 @@ std::string Workstation::renderer_error() const {
 
 void Workstation::splitters() {
     UiState& ui = ctx_.ui;
-    // No background: the frame is cleared anyway, and on a CPU rasteriser every full-window
-    // layer costs milliseconds.
+    // Each bar is its own window the size of the bar, never a window over the whole frame:
+    // ImGui 1.86 stacks a window that first appears later (the curve designer, the implicit
+    // editor) behind older NoBringToFrontOnFocus windows, so a full-window host would take
+    // every click meant for such a panel. The bars lie between the panels, so no stacking
+    // order can make one cover another.
     const ImGuiWindowFlags flags =
         ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoBackground |
         ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus |
-        ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoScrollbar;
-    const ImGuiViewport* vp = ImGui::GetMainViewport();
-    ImGui::SetNextWindowPos(vp->Pos);
-    ImGui::SetNextWindowSize(vp->Size);
+        ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoScrollbar |
+        ImGuiWindowFlags_NoScrollWithMouse | ImGuiWindowFlags_NoNav;
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
-    ImGui::Begin("##background", nullptr, flags);
-    ImGui::PopStyleVar();
-    ImDrawList* dl = ImGui::GetWindowDrawList();
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0);
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowMinSize, ImVec2(1, 1)); // bars are a few px thick
     bool released = false;
     auto bar = [&](const char* id, const Rect& r, bool vertical, auto on_drag) {
         if (r.w <= 0 || r.h <= 0) return;
-        ImGui::SetCursorScreenPos(ImVec2(r.x, r.y));
-        ImGui::InvisibleButton(id, ImVec2(r.w, r.h));
-        const bool hot = ImGui::IsItemHovered() || ImGui::IsItemActive();
-        if (hot)
-            ImGui::SetMouseCursor(vertical ? ImGuiMouseCursor_ResizeEW : ImGuiMouseCursor_ResizeNS);
-        if (ImGui::IsItemActive()) {
-            const ImVec2 d = ImGui::GetIO().MouseDelta;
-            if (d.x != 0 || d.y != 0) on_drag(vertical ? d.x : d.y);
+        ImGui::SetNextWindowPos(ImVec2(r.x, r.y));
+        ImGui::SetNextWindowSize(ImVec2(r.w, r.h));
+        if (ImGui::Begin(id, nullptr, flags)) {
+            ImGui::SetCursorScreenPos(ImVec2(r.x, r.y));
+            ImGui::InvisibleButton("##bar", ImVec2(r.w, r.h));
+            const bool hot = ImGui::IsItemHovered() || ImGui::IsItemActive();
+            if (hot)
+                ImGui::SetMouseCursor(vertical ? ImGuiMouseCursor_ResizeEW
+                                               : ImGuiMouseCursor_ResizeNS);
+            if (ImGui::IsItemActive()) {
+                const ImVec2 d = ImGui::GetIO().MouseDelta;
+                if (d.x != 0 || d.y != 0) on_drag(vertical ? d.x : d.y);
+            }
+            if (ImGui::IsItemDeactivated()) released = true;
+            ImGui::GetWindowDrawList()->AddRectFilled(
+                ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h),
+                ImGui::GetColorU32(hot ? ImGuiCol_SeparatorActive : ImGuiCol_Separator,
+                                   hot ? 1.f : 0.35f));
         }
-        if (ImGui::IsItemDeactivated()) released = true;
-        dl->AddRectFilled(ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h),
-                          ImGui::GetColorU32(hot ? ImGuiCol_SeparatorActive : ImGuiCol_Separator,
-                                             hot ? 1.f : 0.35f));
+        ImGui::End();
     };
     LayoutPrefs& prefs = ctx_.settings.layout;
     bar("##split_left", ui.layout.left_splitter, true,
         [&](float d) { drag_column_splitter(prefs, ui.layout, ui.layout_input, Side::left, d); });
     bar("##split_right", ui.layout.right_splitter, true,
         [&](float d) { drag_column_splitter(prefs, ui.layout, ui.layout_input, Side::right, d); });
+    char id[48];
     for (std::size_t k = 0; k < ui.layout.left_row_splitters.size(); ++k) {
-        ImGui::PushID(static_cast<int>(k));
-        bar("##split_lrow", ui.layout.left_row_splitters[k], false, [&](float d) {
+        std::snprintf(id, sizeof id, "##split_lrow%zu", k);
+        bar(id, ui.layout.left_row_splitters[k], false, [&](float d) {
             drag_row_splitter(prefs, ui.layout, ui.layout_input, Side::left, static_cast<int>(k),
                               d);
         });
-        bar("##split_rrow",
-            k < ui.layout.right_row_splitters.size() ? ui.layout.right_row_splitters[k] : Rect{},
-            false, [&](float d) {
-                drag_row_splitter(prefs, ui.layout, ui.layout_input, Side::right,
-                                  static_cast<int>(k), d);
-            });
-        ImGui::PopID();
     }
-    ImGui::End();
+    for (std::size_t k = 0; k < ui.layout.right_row_splitters.size(); ++k) {
+        std::snprintf(id, sizeof id, "##split_rrow%zu", k);
+        bar(id, ui.layout.right_row_splitters[k], false, [&](float d) {
+            drag_row_splitter(prefs, ui.layout, ui.layout_input, Side::right, static_cast<int>(k),
+                              d);
+        });
+    }
+    ImGui::PopStyleVar(3);
     if (released) store_settings(ctx_);
 }
 
@@ -133,7 +146,9 @@ void Workstation::layout_panels() {
     ui.layout_input.bottom = status_bar_height();
     ui.layout_input.scale = ui.scale();
     ui.layout_input.splitter = 5 * ui.scale();
-    ui.layout_input.min_center_fraction = ui.presentation ? 0.45f : 0.f;
+    // The 3D view is what the class looks at: on a small screen the side columns give way
+    // (their text wraps) before it shrinks below this share of the width.
+    ui.layout_input.min_center_fraction = ui.presentation ? 0.5f : 0.4f;
     ui.layout = compute_layout(ctx_.settings.layout, ui.layout_input);
     const Layout& l = ui.layout;
 
@@ -174,10 +189,23 @@ void Workstation::layout_panels() {
         if (begin_panel("Control point", l.right[0])) draw_control_point_panel(ctx_);
     }
     ImGui::End();
-    if (begin_panel("Control panel", l.right[1])) draw_control_panel(ctx_);
+    // The scene's objects and the display settings share the slot as tabs.
+    if (begin_panel("Objects and display", l.right[1], ImGuiWindowFlags_NoTitleBar) &&
+        ImGui::BeginTabBar("##right_tabs")) {
+        const ImGuiTabItemFlags bring = ui.object_list.show_tab ? ImGuiTabItemFlags_SetSelected : 0;
+        ui.object_list.show_tab = false;
+        if (ImGui::BeginTabItem("Objects", nullptr, bring)) {
+            draw_object_list_panel(ctx_);
+            ImGui::EndTabItem();
+        }
+        if (ImGui::BeginTabItem("Display")) {
+            draw_control_panel(ctx_);
+            ImGui::EndTabItem();
+        }
+        ImGui::EndTabBar();
+    }
     ImGui::End();
-    // Last: ImGui puts a new window without bring-to-front behind all others, and the
-    // splitters' background must stay behind the panels. A drag shows from the next frame.
+    // A splitter drag shows from the next frame.
     splitters();
 }
 
@@ -188,7 +216,7 @@ void Workstation::frame(unsigned target_framebuffer) {
     const float scale = ui.scale();
     if (scale != ui.font_scale_built || ui.presentation != presentation_built_) {
         apply_theme(ui.presentation, scale);
-        rebuild_fonts(scale);
+        if (std::string note = rebuild_fonts(scale); !note.empty()) ui.status = std::move(note);
         ui.font_scale_built = scale;
         presentation_built_ = ui.presentation;
     }
@@ -203,11 +231,11 @@ void Workstation::frame(unsigned target_framebuffer) {
     if (ctx_.doc.display.deboor && !deboor_was_on_) ui.deboor.show_tab = true;
     deboor_was_on_ = ctx_.doc.display.deboor;
     // De Boor's animation steps on a clock; frames keep coming while it plays.
-    if (deboor_tick(ctx_, ImGui::GetTime()) && !ui.headless) glfwPostEmptyEvent();
+    if (deboor_tick(ctx_, ImGui::GetTime()) && request_frame_) request_frame_();
     ui.implicit.dragging = false; // set again by the implicit panel while a slider is held
 
+    handle_shortcuts(ctx_); // Shift+P and Esc lead back from the 3D view alone
     if (ui.view_mode == ViewMode::workstation) {
-        handle_shortcuts(ctx_);
         draw_menus(ctx_);
         layout_panels();
         draw_status_bar(ctx_);
@@ -224,6 +252,7 @@ void Workstation::frame(unsigned target_framebuffer) {
         ImGui::PopStyleVar(2);
     }
     ImGui::Render();
+    flush_ui_report(ctx_);
     // Subpatches: the indicator moved into another patch's part makes it current; a patch
     // picked otherwise takes the indicator along (core/doc/patches.hpp).
     {
@@ -247,7 +276,7 @@ void Workstation::frame(unsigned target_framebuffer) {
     ImplicitMeshes::Mode mode;
     mode.wait = ui.headless;
     mode.coarse_id = ui.implicit.dragging ? ui.implicit.object : 0;
-    if (!ui.headless) mode.wake = [] { glfwPostEmptyEvent(); };
+    if (request_frame_) mode.wake = request_frame_;
     implicit_->update(ctx_.doc, mode);
     const BuiltScene scene = build_scene(ctx_.doc, style, implicit_.get());
     SceneView view;
@@ -261,8 +290,8 @@ void Workstation::frame(unsigned target_framebuffer) {
     const int fb_w = static_cast<int>(io.DisplaySize.x * io.DisplayFramebufferScale.x);
     const int fb_h = static_cast<int>(io.DisplaySize.y * io.DisplayFramebufferScale.y);
     glViewport(0, 0, fb_w, fb_h);
-    const ImVec4 bg = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg);
-    glClearColor(bg.x * 0.7f, bg.y * 0.7f, bg.z * 0.7f, 1.0f);
+    const ImVec4 bg = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg); // the panels' background
+    glClearColor(bg.x, bg.y, bg.z, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -20,6 +21,9 @@ struct WorkstationOptions {
     float content_scale = 1; // HiDPI factor
     ViewMode view = ViewMode::workstation;
     int msaa_samples = 4; // multisampling of the 3D view (0: none)
+    // Asks the window for another frame from any thread (a mesh ready in the background, the
+    // next step of an animation); the window otherwise draws only on input. Unset headless.
+    std::function<void()> request_frame;
 };
 
 class Workstation {
@@ -45,6 +49,7 @@ private:
     void layout_panels();
     void splitters();
     AppContext ctx_;
+    std::function<void()> request_frame_;
     std::unique_ptr<Renderer> renderer_;
     std::unique_ptr<ImplicitMeshes> implicit_;
     bool presentation_built_ = false;

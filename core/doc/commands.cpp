@@ -184,6 +184,34 @@ private:
     std::string name_, old_name_;
 };
 
+class SetVisible final : public Command {
+public:
+    SetVisible(std::uint64_t id, bool visible) : id_(id), visible_(visible) {}
+
+    geom::Status apply(Document& doc) override {
+        auto found = detail::find_object(doc, id_);
+        if (!found) return found.error();
+        name_ = (*found)->name;
+        was_ = (*found)->visible;
+        (*found)->visible = visible_;
+        return geom::Ok{};
+    }
+
+    void revert(Document& doc) override {
+        Object* obj = doc.find(id_);
+        assert(obj);
+        obj->visible = was_;
+    }
+
+    std::string label() const override { return (visible_ ? "Show " : "Hide ") + name_; }
+    std::size_t memory_bytes() const override { return sizeof(*this) + name_.size(); }
+
+private:
+    std::uint64_t id_;
+    bool visible_, was_ = true;
+    std::string name_;
+};
+
 class ReplaceShape final : public Command {
 public:
     ReplaceShape(std::uint64_t id, Shape shape, std::string label)
@@ -615,6 +643,9 @@ std::unique_ptr<Command> remove_object(std::uint64_t id) {
 }
 std::unique_ptr<Command> rename_object(std::uint64_t id, std::string name) {
     return std::make_unique<RenameObject>(id, std::move(name));
+}
+std::unique_ptr<Command> set_visible(std::uint64_t id, bool visible) {
+    return std::make_unique<SetVisible>(id, visible);
 }
 std::unique_ptr<Command> replace_shape(std::uint64_t id, Shape shape, std::string label) {
     return std::make_unique<ReplaceShape>(id, std::move(shape), std::move(label));

@@ -19,6 +19,8 @@ namespace isoparm::doc {
 std::unique_ptr<Command> add_object(Object object); // id assigned on apply if 0
 std::unique_ptr<Command> remove_object(std::uint64_t id);
 std::unique_ptr<Command> rename_object(std::uint64_t id, std::string name);
+// Hidden objects are neither drawn nor picked; they stay in the scene (the object list).
+std::unique_ptr<Command> set_visible(std::uint64_t id, bool visible);
 // Replace an object's shape wholesale (type changes, constructions); label names the edit.
 std::unique_ptr<Command> replace_shape(std::uint64_t id, Shape shape, std::string label);
 

@@ -299,6 +299,16 @@ TEST(ObjectCommands, Rename) {
     expect_refused(doc, rename_object(7, "x"), ErrorCode::schema, "/id");
 }
 
+TEST(ObjectCommands, HideAndShow) {
+    Document doc = sample_document();
+    const Document hidden = expect_undo_redo_exact(doc, set_visible(hill_id, false));
+    EXPECT_FALSE(hidden.find(hill_id)->visible);
+    Document again = hidden;
+    const Document shown = expect_undo_redo_exact(again, set_visible(hill_id, true));
+    EXPECT_TRUE(shown.find(hill_id)->visible);
+    expect_refused(doc, set_visible(7, false), ErrorCode::schema, "/id");
+}
+
 TEST(ObjectCommands, ReplaceShape) {
     Document doc = sample_document();
     doc.selection = Selection{hill_id, 4, 4};

@@ -16,6 +16,8 @@ import sys
 import tempfile
 import time
 
+from gui_session import sanitizer_report, start_xvfb
+
 # Keys the workstation or ImGui reacts to, and harmless others (typed into a focused field).
 PLAIN_KEYS = ["f", "p", "1", "2", "3", "c", "n", "i", "k", "Escape", "Escape", "Tab", "Return",
               "BackSpace", "Left", "Right", "Up", "Down", "space", "minus", "period", "0", "5",
@@ -182,11 +184,6 @@ class Monkey:
             return self.proc.wait(timeout=10)
 
 
-def sanitizer_report(text):
-    return any(s in text for s in ("AddressSanitizer", "LeakSanitizer", "runtime error:",
-                                   "UndefinedBehaviorSanitizer"))
-
-
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--isoparm", required=True)
@@ -213,28 +210,6 @@ def main():
         if xvfb:
             xvfb.terminate()
             xvfb.wait(timeout=10)
-
-
-# Xvfb chooses a free display number and writes it to the pipe: no race with other X servers
-# on the machine (xvfb-run -a can lose one).
-def start_xvfb():
-    read, write = os.pipe()
-    proc = subprocess.Popen(["Xvfb", "-displayfd", str(write), "-screen", "0", "1600x1000x24",
-                             "-nolisten", "tcp"], pass_fds=(write,),
-                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    os.close(write)
-    number = b""
-    with os.fdopen(read, "rb") as f:
-        while not number.endswith(b"\n"):
-            chunk = f.read(1)
-            if not chunk:
-                break
-            number += chunk
-    if not number.strip():
-        print("monkey: Xvfb did not start", file=sys.stderr)
-        proc.kill()
-        return None, None
-    return proc, ":" + number.decode().strip()
 
 
 def run_monkey(args):

@@ -20,14 +20,14 @@ TEST(Settings, JsonRoundTrip) {
     s.layout.left_width = 412;
     s.layout.right_shares = {0.3f, 0.7f};
     s.recent = {"/a/b.json", "/c.json"};
-    s.window_width = 1000;
+    s.window_sizes["1024x768"] = {900, 700};
     EXPECT_EQ(settings_from_json(settings_to_json(s)), s);
 }
 
 TEST(Settings, BadValuesFallBackToDefaults) {
     const nlohmann::json j = {{"layout", {{"left_width", "wide"}, {"right_width", -3}}},
                               {"recent", 5},
-                              {"window", {{"width", 10}}}};
+                              {"window_sizes", {{"1024x768", {10, 700}}}}};
     EXPECT_EQ(settings_from_json(j), Settings{});
     EXPECT_EQ(settings_from_json(nlohmann::json::array()), Settings{});
 }

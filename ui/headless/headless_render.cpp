@@ -73,7 +73,7 @@ std::string render_headless(const HeadlessRequest& req) {
         if (!target.complete())
             return "cannot create a " + std::to_string(req.width) + "x" +
                    std::to_string(req.height) + " framebuffer";
-        Workstation ws({/*headless=*/true, req.scale, req.view});
+        Workstation ws({/*headless=*/true, req.scale, req.view, /*msaa_samples=*/4, {}});
         if (!ws.renderer_error().empty()) return "shaders failed: " + ws.renderer_error();
         AppContext& ctx = ws.context();
         ctx.doc = std::move(document);

@@ -193,9 +193,10 @@ void draw_basis_plot_panel(AppContext& ctx) {
         const std::vector<double> nv = geom::all_basis(s->knots_v, s->degree_v, s->n_v, uv.y)[0];
         const std::string rn = point_name('R', i, j, s->n_u, s->n_v);
         if (r)
-            ImGui::Text("%s(%.3f, %.3f) = %.5f", rn.c_str(), uv.x, uv.y, *r);
+            ImGui::TextWrapped("%s(%.3f, %.3f) = %.5f", rn.c_str(), uv.x, uv.y, *r);
         else
-            ImGui::Text("%s(%.3f, %.3f) undefined (zero denominator)", rn.c_str(), uv.x, uv.y);
+            ImGui::TextWrapped("%s(%.3f, %.3f) undefined (zero denominator)", rn.c_str(), uv.x,
+                               uv.y);
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
         ImGui::TextWrapped("N%d(u) = %.4f   N%d(v) = %.4f   w = %.4g", i,
                            nu[static_cast<std::size_t>(i)], j, nv[static_cast<std::size_t>(j)],
@@ -204,10 +205,13 @@ void draw_basis_plot_panel(AppContext& ctx) {
     } else {
         ImGui::TextWrapped("Select a control point to see its basis function.");
     }
+    // Wrapped: a narrow column must not cut the partition of unity's value.
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     if (exists)
-        ImGui::TextDisabled("Sum of all R_kl at (u,v) = %.6f", sum);
+        ImGui::TextWrapped("Sum of all R_kl at (u,v) = %.6f", sum);
     else
-        ImGui::TextDisabled("S(u,v) does not exist here (zero denominator)");
+        ImGui::TextWrapped("S(u,v) does not exist here (zero denominator)");
+    ImGui::PopStyleColor();
 
     const float k = ctx.ui.scale();
     const ImVec2 avail = ImGui::GetContentRegionAvail();

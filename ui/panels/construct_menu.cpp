@@ -11,6 +11,8 @@
 #include "core/doc/curve_constructions.hpp"
 #include "ui/actions.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/theme.hpp"
+#include "ui/ui_report.hpp"
 
 namespace isoparm::ui {
 
@@ -59,24 +61,24 @@ void new_curve(AppContext& ctx, doc::CurvePlane plane) {
 }
 
 void curve_menu(AppContext& ctx) {
-    if (!ImGui::BeginMenu("Curve")) return;
+    if (!begin_menu("Curve")) return;
     const char* planes[] = {"New curve in xy", "New curve in xz", "New curve in yz",
                             "New 3D curve"};
     for (int p = 0; p < 4; ++p)
-        if (ImGui::MenuItem(planes[p])) new_curve(ctx, static_cast<doc::CurvePlane>(p));
+        if (menu_item(planes[p])) new_curve(ctx, static_cast<doc::CurvePlane>(p));
     ImGui::Separator();
     ImGui::TextDisabled("Exact primitives (xy plane; the designer's Primitives edit more)");
-    if (ImGui::MenuItem("Line"))
+    if (menu_item("Line"))
         add_and_select(ctx,
                        doc::line_object(fresh_name(ctx.doc, "line"), doc::CurvePlane::xy,
                                         {-1, 0, 0}, {1, 0, 0}),
                        "line");
-    if (ImGui::MenuItem("Circular arc (90 degrees)"))
+    if (menu_item("Circular arc (90 degrees)"))
         add_and_select(
             ctx,
             doc::arc_object(fresh_name(ctx.doc, "arc"), doc::CurvePlane::xy, {0, 0, 0}, 1, 0, 90),
             "arc");
-    if (ImGui::MenuItem("Full circle"))
+    if (menu_item("Full circle"))
         add_and_select(
             ctx,
             doc::circle_object(fresh_name(ctx.doc, "circle"), doc::CurvePlane::xy, {0, 0, 0}, 1),
@@ -100,13 +102,13 @@ void open_dialog(AppContext& ctx, int kind) {
 }
 
 void construct_menu(AppContext& ctx) {
-    if (!ImGui::BeginMenu("Construct")) return;
-    if (ImGui::MenuItem("Make compatible...")) open_dialog(ctx, make_compatible_kind);
+    if (!begin_menu("Construct")) return;
+    if (menu_item("Make compatible...")) open_dialog(ctx, make_compatible_kind);
     ImGui::Separator();
     const char* items[] = {"Ruled...", "Revolve...",        "Swing...",
                            "Sweep...", "Oriented sweep...", "Skin..."};
     for (int k = 0; k < 6; ++k)
-        if (ImGui::MenuItem(items[k])) open_dialog(ctx, k);
+        if (menu_item(items[k])) open_dialog(ctx, k);
     ImGui::EndMenu();
 }
 
@@ -180,7 +182,9 @@ void curve_chooser(AppContext& ctx) {
         char label[160];
         std::snprintf(label, sizeof label, "%s  (%s, degree %d, %d points)", o.name.c_str(),
                       doc::curve_plane_label(c->plane), c->curve.degree, c->curve.count());
-        if (ImGui::Checkbox(label, &on)) {
+        const bool toggled = ImGui::Checkbox(label, &on);
+        report_item("construct/curve/" + o.name);
+        if (toggled) {
             if (on)
                 cd.chosen.push_back(o.id);
             else
@@ -243,7 +247,8 @@ void parameters(AppContext& ctx) {
 }
 
 // Runs the dialog's construction; the result is added as a new surface and selected, or the
-// refusal shown in the error dialog (the document unchanged). Returns whether it worked.
+// refusal shown in the dialog itself, which stays open so the choice can be corrected (the
+// document unchanged). Returns whether it worked.
 bool build(AppContext& ctx) {
     CurveDesignerState& cd = ctx.ui.curve;
     if (cd.construct_kind == make_compatible_kind) {
@@ -252,7 +257,7 @@ bool build(AppContext& ctx) {
         const bool ok = ctx.execute(doc::make_curves_compatible(cd.chosen));
         ctx.seal();
         if (!ok) {
-            show_error(ctx, "Make compatible: not done", ctx.ui.status);
+            cd.error = "Make compatible: not done. " + ctx.ui.status;
             return false;
         }
         cd.note = "Before:\n" + before + "After (same shapes, u in [0, 1]):\n" +
@@ -271,13 +276,13 @@ bool build(AppContext& ctx) {
     auto result = doc::build_construction(ctx.doc, r);
     const std::string title = std::string(doc::construction_label(r.kind)) + ": not built";
     if (!result) {
-        show_error(ctx, title, result.error().message);
+        cd.error = title + ". " + result.error().message;
         return false;
     }
     const std::string name = result->object.name;
     ctx.seal();
     if (!ctx.execute(doc::add_object(std::move(result->object)))) {
-        show_error(ctx, title, ctx.ui.status);
+        cd.error = title + ". " + ctx.ui.status;
         return false;
     }
     ctx.seal();
@@ -306,6 +311,7 @@ void draw_construct_dialog(AppContext& ctx) {
     if (cd.construct_open) {
         ImGui::OpenPopup(id);
         cd.construct_open = false;
+        cd.error.clear();
     }
     const ImGuiViewport* vp = ImGui::GetMainViewport();
     ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x * 0.5f, vp->Pos.y + vp->Size.y * 0.5f),
@@ -335,12 +341,18 @@ void draw_construct_dialog(AppContext& ctx) {
         ImGui::TextWrapped("%s", cd.note.c_str());
         ImGui::PopStyleColor();
     }
+    if (!cd.error.empty()) {
+        ImGui::Separator();
+        ImGui::PushStyleColor(ImGuiCol_Text, error_text_color());
+        ImGui::TextWrapped("%s", cd.error.c_str());
+        ImGui::PopStyleColor();
+    }
     ImGui::Spacing();
     bool close = false;
-    if (ImGui::Button(kind == make_compatible_kind ? "Make compatible" : "Build")) {
-        // A refusal closes this dialog: the error dialog takes its place.
-        if (!build(ctx)) close = true;
-    }
+    const bool build_pressed =
+        ImGui::Button(kind == make_compatible_kind ? "Make compatible" : "Build");
+    report_item("construct/build");
+    if (build_pressed && build(ctx)) cd.error.clear();
     ImGui::SameLine();
     if (ImGui::Button("Close") || escape_pressed()) close = true;
     if (close) ImGui::CloseCurrentPopup();

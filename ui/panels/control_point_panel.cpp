@@ -14,6 +14,7 @@
 #include "ui/doc_access.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/panels/plane_canvas.hpp"
+#include "ui/ui_report.hpp"
 
 namespace isoparm::ui {
 
@@ -53,6 +54,9 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const geom::Surface& 
     ImGui::SetCursorScreenPos(ImVec2(canvas.x, canvas.y));
     ImGui::PushID(plane);
     ImGui::InvisibleButton("##plane", ImVec2(canvas.w, canvas.h));
+    report_item("cp/plane" + std::to_string(plane));
+    report_point("cp/disk" + std::to_string(plane), static_cast<float>(disk.x),
+                 static_cast<float>(disk.y));
     const ImVec2 m = ImGui::GetIO().MousePos;
     const glm::dvec2 mouse(m.x, m.y);
     if (ImGui::IsItemActivated()) {

@@ -14,6 +14,7 @@
 #include "core/geom/tessellate.hpp"
 #include "ui/panels/curve_designer.hpp"
 #include "ui/panels/plane_canvas.hpp"
+#include "ui/ui_report.hpp"
 
 namespace isoparm::ui::curve_designer {
 
@@ -176,6 +177,7 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const doc::CurveObjec
 
     ImGui::SetCursorScreenPos(ImVec2(canvas.x, canvas.y));
     ImGui::InvisibleButton("##curve_canvas", ImVec2(canvas.w, canvas.h));
+    report_item("curve/canvas");
     const ImVec2 m = ImGui::GetIO().MousePos;
     const glm::dvec2 mouse(m.x, m.y);
     if (ImGui::IsItemActivated()) handle_press(ctx, id, c.curve, ax, map, mouse);

@@ -9,9 +9,11 @@
 #include <vector>
 
 #include "core/doc/commands.hpp"
+#include "core/doc/placement.hpp"
 #include "ui/actions.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/recovery.hpp"
+#include "ui/theme.hpp"
 
 namespace isoparm::ui {
 
@@ -77,7 +79,7 @@ void new_surface_dialog(AppContext& ctx) {
     f.degree_u = std::clamp(f.degree_u, 1, 63);
     f.degree_v = std::clamp(f.degree_v, 1, 63);
     const std::string err = new_surface_error(f);
-    if (!err.empty()) ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "%s", err.c_str());
+    if (!err.empty()) ImGui::TextColored(error_text_color(), "%s", err.c_str());
     ImGui::BeginDisabled(!err.empty());
     if (ImGui::Button("Create")) {
         doc::Object o;
@@ -87,6 +89,7 @@ void new_surface_dialog(AppContext& ctx) {
         o.name = "Surface " + std::to_string(n);
         o.shape = doc::SurfaceObject{doc::make_planar_grid(f.rows, f.cols, f.degree_u, f.degree_v,
                                                            static_cast<geom::SplineType>(f.type))};
+        doc::place_beside_scene(ctx.doc, o.shape);
         ctx.seal();
         if (ctx.execute(doc::add_object(std::move(o)))) {
             ctx.doc.selection = {ctx.doc.objects.back().id, -1, -1};
@@ -165,7 +168,7 @@ void file_dialog(AppContext& ctx) {
     std::error_code ec;
     if (saving && !fd.name.empty() && fs::exists(target, ec))
         ImGui::TextDisabled("%s exists and will be replaced.", target.filename().string().c_str());
-    if (!fd.error.empty()) ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "%s", fd.error.c_str());
+    if (!fd.error.empty()) ImGui::TextColored(error_text_color(), "%s", fd.error.c_str());
     ImGui::BeginDisabled(fd.name.empty());
     if (ImGui::Button(saving ? "Save" : "Open")) chosen = fd.name;
     ImGui::EndDisabled();
@@ -251,28 +254,63 @@ void help_dialog(AppContext& ctx) {
         ImGui::OpenPopup("Mouse and keys");
         ctx.ui.show_about = false;
     }
-    center_next(520, ctx.ui.scale());
-    if (!ImGui::BeginPopupModal("Mouse and keys", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
-        return;
-    const char* lines[] = {
-        "3D view: left-drag orbits, right-drag (or Shift+left) pans, the wheel zooms.",
-        "Click a control point to select it; drag it to move it in the view plane.",
-        "Hold X, Y or Z while dragging to move along that axis; Shift locks the axis",
-        "  the drag started along.",
-        "Tracing panel: press or drag in the square to move the indicator (u, v).",
-        "Control-point panel: drag the red disk in the xy, xz or yz plane.",
-        "F: fit to view   F11 or P: presentation mode   1/2/3: shaded/wireframe/both",
-        "C: control points   N: control net   I: point IDs   K: knot curves",
-        "Drag a knot tick below / left of the tracing square to move that knot.",
-        "U / V: insert the indicator's u / v as a knot   Shift+U / Shift+V: elevate degree",
-        "S / Shift+S: split the current patch at the indicator's u / v (subpatches share",
-        "  the square; Surface > Continuity keeps their borders C0 or C1)",
-        "D: de Boor's construction   [ / ]: step back / forward   Space: play",
-        "Curve designer (a selected curve): click adds a point, Ctrl+click a leg inserts,",
-        "  drag moves, Del removes; Construct menu: ruled, revolve, swing, sweep, skin.",
-        "Ctrl+Z / Ctrl+Y: undo / redo   Ctrl+S: save   Ctrl+O: open   Ctrl+N: new scene",
+    // As wide as it reads well, never wider than the window; long entries wrap in their
+    // column and the list scrolls on a short screen, so no line is ever cut.
+    const ImGuiViewport* vp = ImGui::GetMainViewport();
+    const float width = std::min(640 * ctx.ui.scale(), vp->Size.x * 0.92f);
+    const float height = std::min(560 * ctx.ui.scale(), vp->Size.y * 0.85f);
+    ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x * 0.5f, vp->Pos.y + vp->Size.y * 0.5f),
+                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Always);
+    if (!ImGui::BeginPopupModal("Mouse and keys", nullptr, ImGuiWindowFlags_NoResize)) return;
+    struct Entry {
+        const char* keys;
+        const char* action;
     };
-    for (const char* l : lines) ImGui::TextUnformatted(l);
+    static const Entry entries[] = {
+        {"Left-drag", "orbit the 3D view"},
+        {"Right-drag, Shift+left", "pan"},
+        {"Wheel", "zoom"},
+        {"Click a point", "select it; drag it to move it in the view plane"},
+        {"X / Y / Z held", "move along that axis while dragging; Shift locks the axis the drag "
+                           "started along"},
+        {"Tracing square", "press or drag to move the indicator (u, v)"},
+        {"Knot tick", "drag a tick below / left of the square to move that knot"},
+        {"Control-point panel", "drag the red disk in the xy, xz or yz plane"},
+        {"F", "fit to view"},
+        {"P", "presentation mode (large text, thick lines, high contrast)"},
+        {"Shift+P", "the 3D view alone (Shift+P or Esc returns)"},
+        {"F11", "full screen"},
+        {"1 / 2 / 3", "shaded / wireframe / both"},
+        {"C / N / I / K", "control points / control net / point IDs / knot curves"},
+        {"U / V", "insert the indicator's u / v as a knot (shape unchanged)"},
+        {"Shift+U / Shift+V", "elevate the degree in u / v (shape unchanged)"},
+        {"S / Shift+S", "split the current patch at the indicator's u / v; subpatches share "
+                        "the square, Surface > Continuity keeps their borders C0 or C1"},
+        {"D", "de Boor's construction; [ / ] step back / forward, Space plays"},
+        {"Curve designer", "click adds a point, Ctrl+click a leg inserts, drag moves, Del "
+                           "removes"},
+        {"Construct menu", "ruled, revolve, swing, sweep, skin from designed curves"},
+        {"Objects tab", "select, rename (double-click), hide / show, delete"},
+        {"Ctrl+Z / Ctrl+Y", "undo / redo"},
+        {"Ctrl+N / O / S", "new scene / open / save (Ctrl+Shift+S: save as)"},
+    };
+    const float footer = ImGui::GetFrameHeightWithSpacing() + ImGui::GetStyle().ItemSpacing.y;
+    if (ImGui::BeginTable("##keys", 2,
+                          ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
+                              ImGuiTableFlags_SizingStretchProp,
+                          ImVec2(0, -footer))) {
+        ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthStretch, 1);
+        ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch, 2);
+        for (const Entry& e : entries) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextWrapped("%s", e.keys);
+            ImGui::TableNextColumn();
+            ImGui::TextWrapped("%s", e.action);
+        }
+        ImGui::EndTable();
+    }
     if (ImGui::Button("Close") || escape_pressed()) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
 }

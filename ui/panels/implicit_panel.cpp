@@ -13,6 +13,7 @@
 #include "ui/implicit/implicit_support.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/render/implicit_meshes.hpp"
+#include "ui/ui_report.hpp"
 
 namespace isoparm::ui {
 
@@ -33,13 +34,17 @@ void presets_combo(AppContext& ctx, const doc::Object& obj) {
     form.preset = std::clamp(form.preset, 0, static_cast<int>(presets.size()) - 1);
     ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Preset").x - ImGui::GetStyle().ItemSpacing.x);
     // The preview invites a choice: the object may no longer be any preset.
-    if (ImGui::BeginCombo("Preset", "Replace with a preset...")) {
-        for (int k = 0; k < static_cast<int>(presets.size()); ++k)
-            if (ImGui::Selectable(presets[k].name, false)) {
-                form.preset = k;
-                edit(ctx, obj.id, presets[k].object,
-                     std::string("Apply implicit preset ") + presets[k].name);
-            }
+    const bool open = ImGui::BeginCombo("Preset", "Replace with a preset...");
+    report_item("implicit/preset");
+    if (open) {
+        for (int k = 0; k < static_cast<int>(presets.size()); ++k) {
+            const bool picked = ImGui::Selectable(presets[k].name, false);
+            report_item(std::string("implicit/preset/") + presets[k].name);
+            if (!picked) continue;
+            form.preset = k;
+            edit(ctx, obj.id, presets[k].object,
+                 std::string("Apply implicit preset ") + presets[k].name);
+        }
         ImGui::EndCombo();
     }
 }

@@ -13,43 +13,44 @@
 #include "ui/implicit/implicit_support.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/surface_actions.hpp"
+#include "ui/ui_report.hpp"
 
 namespace isoparm::ui {
 
 namespace {
 
 void file_menu(AppContext& ctx) {
-    if (!ImGui::BeginMenu("File")) return;
-    if (ImGui::MenuItem("New", "Ctrl+N")) request_new_document(ctx);
-    if (ImGui::MenuItem("Open...", "Ctrl+O")) request_open_dialog(ctx);
-    if (ImGui::BeginMenu("Open Recent", !ctx.settings.recent.empty())) {
+    if (!begin_menu("File")) return;
+    if (menu_item("New", "Ctrl+N")) request_new_document(ctx);
+    if (menu_item("Open...", "Ctrl+O")) request_open_dialog(ctx);
+    if (begin_menu("Open Recent", !ctx.settings.recent.empty())) {
         std::string chosen;
         for (const std::string& r : ctx.settings.recent)
-            if (ImGui::MenuItem(r.c_str())) chosen = r;
+            if (menu_item(r.c_str())) chosen = r;
         ImGui::Separator();
-        if (ImGui::MenuItem("Clear list")) {
+        if (menu_item("Clear list")) {
             ctx.settings.recent.clear();
             store_settings(ctx);
         }
         ImGui::EndMenu();
         if (!chosen.empty()) request_open_file(ctx, chosen);
     }
-    if (ImGui::MenuItem("Save", "Ctrl+S")) save(ctx);
-    if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) request_save_as(ctx);
+    if (menu_item("Save", "Ctrl+S")) save(ctx);
+    if (menu_item("Save As...", "Ctrl+Shift+S")) request_save_as(ctx);
     ImGui::Separator();
-    if (ImGui::MenuItem("Quit", "Ctrl+Q")) request_quit(ctx);
+    if (menu_item("Quit", "Ctrl+Q")) request_quit(ctx);
     ImGui::EndMenu();
 }
 
 void edit_menu(AppContext& ctx) {
-    if (!ImGui::BeginMenu("Edit")) return;
+    if (!begin_menu("Edit")) return;
     const std::string u = ctx.history.can_undo() ? "Undo " + ctx.history.undo_label() : "Undo";
     const std::string r = ctx.history.can_redo() ? "Redo " + ctx.history.redo_label() : "Redo";
-    if (ImGui::MenuItem(u.c_str(), "Ctrl+Z", false, ctx.history.can_undo())) undo(ctx);
-    if (ImGui::MenuItem(r.c_str(), "Ctrl+Y", false, ctx.history.can_redo())) redo(ctx);
+    if (menu_item(u.c_str(), "Ctrl+Z", false, ctx.history.can_undo())) undo(ctx);
+    if (menu_item(r.c_str(), "Ctrl+Y", false, ctx.history.can_redo())) redo(ctx);
     ImGui::Separator();
     const bool has_point = has_valid_point(ctx.doc);
-    if (ImGui::MenuItem("Deselect point", "Esc", false, has_point)) {
+    if (menu_item("Deselect point", "Esc", false, has_point)) {
         ctx.doc.selection.i = ctx.doc.selection.j = -1;
     }
     ImGui::EndMenu();
@@ -57,7 +58,7 @@ void edit_menu(AppContext& ctx) {
 
 void action_item(AppContext& ctx, const ActionState& a, const char* shortcut,
                  void (*run)(AppContext&, geom::Dir), geom::Dir dir) {
-    if (ImGui::MenuItem(a.label.c_str(), shortcut, false, a.enabled)) run(ctx, dir);
+    if (menu_item(a.label.c_str(), shortcut, false, a.enabled)) run(ctx, dir);
     if (!a.enabled && !a.why.empty() && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("%s", a.why.c_str());
 }
@@ -73,18 +74,18 @@ void refine_items(AppContext& ctx) {
     action_item(ctx, elevate_state(ctx, Dir::v), "Shift+V", elevate_current, Dir::v);
     action_item(ctx, split_state(ctx, Dir::u), "S", split_at_indicator, Dir::u);
     action_item(ctx, split_state(ctx, Dir::v), "Shift+S", split_at_indicator, Dir::v);
-    if (ImGui::BeginMenu("Continuity across patch borders")) {
+    if (begin_menu("Continuity across patch borders")) {
         for (doc::Continuity c : {doc::Continuity::off, doc::Continuity::c0, doc::Continuity::c1})
-            if (ImGui::MenuItem(doc::continuity_name(c), nullptr, ctx.doc.continuity == c))
+            if (menu_item(doc::continuity_name(c), nullptr, ctx.doc.continuity == c))
                 ctx.doc.continuity = c;
         ImGui::EndMenu();
     }
 }
 
 void surface_menu(AppContext& ctx) {
-    if (!ImGui::BeginMenu("Surface")) return;
-    if (ImGui::MenuItem("New Surface...", "Ctrl+Shift+N")) ctx.ui.new_surface.open = true;
-    if (ImGui::MenuItem("New implicit surface")) {
+    if (!begin_menu("Surface")) return;
+    if (menu_item("New Surface...", "Ctrl+Shift+N")) ctx.ui.new_surface.open = true;
+    if (menu_item("New implicit surface")) {
         // A sphere to start from; the implicit panel's presets and fields shape it.
         doc::Object o;
         o.name = "implicit";
@@ -99,14 +100,14 @@ void surface_menu(AppContext& ctx) {
     std::uint64_t pick = 0;
     for (const doc::Object& o : ctx.doc.objects) {
         const std::string label = o.name.empty() ? "object " + std::to_string(o.id) : o.name;
-        if (ImGui::MenuItem(label.c_str(), nullptr, o.id == ctx.doc.selection.object)) pick = o.id;
+        if (menu_item(label.c_str(), nullptr, o.id == ctx.doc.selection.object)) pick = o.id;
     }
     if (pick != 0 && pick != ctx.doc.selection.object) ctx.doc.selection = {pick, -1, -1};
     ImGui::Separator();
     refine_items(ctx);
     ImGui::Separator();
     const doc::Object* sel = ctx.doc.selected();
-    if (ImGui::MenuItem("Delete Selected", nullptr, false, sel != nullptr)) {
+    if (menu_item("Delete Selected", nullptr, false, sel != nullptr)) {
         const std::uint64_t id = sel->id;
         ctx.seal();
         if (ctx.execute(doc::remove_object(id))) normalize_selection(ctx.doc);
@@ -116,36 +117,39 @@ void surface_menu(AppContext& ctx) {
 }
 
 void display_menu(AppContext& ctx) {
-    if (!ImGui::BeginMenu("Display")) return;
+    if (!begin_menu("Display")) return;
     doc::DisplaySettings& d = ctx.doc.display;
-    if (ImGui::MenuItem("Shaded", "1", d.style == doc::DisplayStyle::shaded))
+    if (menu_item("Shaded", "1", d.style == doc::DisplayStyle::shaded))
         d.style = doc::DisplayStyle::shaded;
-    if (ImGui::MenuItem("Wireframe", "2", d.style == doc::DisplayStyle::wireframe))
+    if (menu_item("Wireframe", "2", d.style == doc::DisplayStyle::wireframe))
         d.style = doc::DisplayStyle::wireframe;
-    if (ImGui::MenuItem("Shaded + wireframe", "3", d.style == doc::DisplayStyle::both))
+    if (menu_item("Shaded + wireframe", "3", d.style == doc::DisplayStyle::both))
         d.style = doc::DisplayStyle::both;
     ImGui::Separator();
-    ImGui::MenuItem("Control points", "C", &d.control_points);
-    ImGui::MenuItem("Control net", "N", &d.control_net);
-    ImGui::MenuItem("Point IDs (P_ij)", "I", &d.point_ids);
-    ImGui::MenuItem("Indicator point S(u,v)", nullptr, &d.indicator_point);
-    ImGui::MenuItem("Knot curves", "K", &d.knot_curves);
-    if (ImGui::MenuItem("de Boor's construction", "D", &d.deboor) && d.deboor)
+    menu_item("Control points", "C", &d.control_points);
+    menu_item("Control net", "N", &d.control_net);
+    menu_item("Point IDs (P_ij)", "I", &d.point_ids);
+    menu_item("Indicator point S(u,v)", nullptr, &d.indicator_point);
+    menu_item("Knot curves", "K", &d.knot_curves);
+    if (menu_item("de Boor's construction", "D", &d.deboor) && d.deboor)
         ctx.ui.deboor.show_tab = true;
-    if (ImGui::MenuItem("de Boor: step back", "[")) deboor_step(ctx, -1);
-    if (ImGui::MenuItem("de Boor: step forward", "]")) deboor_step(ctx, +1);
-    if (ImGui::MenuItem(ctx.ui.deboor.playing ? "de Boor: pause" : "de Boor: play", "Space"))
+    if (menu_item("de Boor: step back", "[")) deboor_step(ctx, -1);
+    if (menu_item("de Boor: step forward", "]")) deboor_step(ctx, +1);
+    if (menu_item(ctx.ui.deboor.playing ? "de Boor: pause" : "de Boor: play", "Space"))
         deboor_toggle_play(ctx, ImGui::GetTime());
     ImGui::Separator();
-    if (ImGui::MenuItem("Fit to view", "F")) fit_view(ctx);
-    if (ImGui::MenuItem("Presentation mode", "F11 / P", ctx.ui.presentation))
-        toggle_presentation(ctx);
+    if (menu_item("Fit to view", "F")) fit_view(ctx);
+    if (menu_item("Presentation mode", "P", ctx.ui.presentation)) toggle_presentation(ctx);
+    if (menu_item("3D view only", "Shift+P", ctx.ui.view_mode == ViewMode::view3d_only))
+        toggle_view_only(ctx);
+    if (!ctx.ui.headless && menu_item("Full screen", "F11", ctx.ui.fullscreen))
+        ctx.ui.fullscreen_request = true;
     ImGui::EndMenu();
 }
 
 void help_menu(AppContext& ctx) {
-    if (!ImGui::BeginMenu("Help")) return;
-    if (ImGui::MenuItem("Mouse and keys...")) ctx.ui.show_about = true;
+    if (!begin_menu("Help")) return;
+    if (menu_item("Mouse and keys...")) ctx.ui.show_about = true;
     ImGui::EndMenu();
 }
 
@@ -210,8 +214,13 @@ void handle_shortcuts(AppContext& ctx) {
             fit_view(ctx);
             break;
         case GLFW_KEY_F11:
+            ctx.ui.fullscreen_request = true;
+            break;
         case GLFW_KEY_P:
-            toggle_presentation(ctx);
+            if (k.shift)
+                toggle_view_only(ctx);
+            else
+                toggle_presentation(ctx);
             break;
         case GLFW_KEY_1:
             d.style = doc::DisplayStyle::shaded;
@@ -257,7 +266,10 @@ void handle_shortcuts(AppContext& ctx) {
             split_at_indicator(ctx, k.shift ? geom::Dir::v : geom::Dir::u);
             break;
         case GLFW_KEY_ESCAPE:
-            ctx.doc.selection.i = ctx.doc.selection.j = -1;
+            if (ctx.ui.view_mode == ViewMode::view3d_only && !ctx.ui.headless)
+                toggle_view_only(ctx);
+            else
+                ctx.doc.selection.i = ctx.doc.selection.j = -1;
             break;
         default:
             break;

@@ -54,9 +54,22 @@ void draw_status_bar(AppContext& ctx) {
             ImGui::TextUnformatted("* unsaved changes");
         else
             ImGui::TextDisabled("saved");
-        if (!ctx.ui.status.empty()) {
+        // A message is news for a while, then fades and goes: an old refusal must not read
+        // as the answer to the next action.
+        StatusAge& age = ctx.ui.status_age;
+        const double now = ImGui::GetTime();
+        if (ctx.ui.status != age.text) {
+            age.text = ctx.ui.status;
+            age.since = now;
+        }
+        const double shown_for = now - age.since;
+        if (!ctx.ui.status.empty() && shown_for < status_seconds) {
             ImGui::SameLine(0, 24 * ctx.ui.scale());
+            const float fade = shown_for < status_seconds - 2 ? 1.f : 0.45f;
+            ImGui::PushStyleVar(ImGuiStyleVar_Alpha, fade);
             ImGui::TextUnformatted(ctx.ui.status.c_str());
+            ImGui::PopStyleVar();
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", ctx.ui.status.c_str());
         }
     }
     ImGui::End();

@@ -11,6 +11,7 @@
 #include "ui/canvas_map.hpp"
 #include "ui/doc_access.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/ui_report.hpp"
 
 namespace isoparm::ui {
 
@@ -194,6 +195,7 @@ void draw_tracing_panel(AppContext& ctx) {
     // The square is one canvas: press anywhere to move the indicator there, then drag.
     ImGui::SetCursorScreenPos(ImVec2(sq.x, sq.y));
     ImGui::InvisibleButton("##domain", ImVec2(sq.w, sq.h));
+    report_item("tracing/square");
     if (ImGui::IsItemActive()) {
         const ImVec2 m = ImGui::GetIO().MousePos;
         ctx.doc.indicator = pixel_to_domain(sq, {m.x, m.y}); // view state, not undoable

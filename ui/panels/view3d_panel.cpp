@@ -16,11 +16,13 @@
 #include "core/doc/commands.hpp"
 #include "core/doc/commands_curve.hpp"
 #include "ui/actions.hpp"
+#include "ui/contrast.hpp"
 #include "ui/doc_access.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/render/picking.hpp"
 #include "ui/render/renderer.hpp"
 #include "ui/scene_builder.hpp"
+#include "ui/ui_report.hpp"
 
 namespace isoparm::ui {
 
@@ -147,6 +149,25 @@ void handle_mouse(AppContext& ctx, const Viewport& vp) {
     }
 }
 
+glm::vec3 background_of(const doc::Document& d) {
+    return {d.colors.background.r, d.colors.background.g, d.colors.background.b};
+}
+
+// For the GUI scenario tests: where the current surface's control points are on screen.
+void report_projected_points(const AppContext& ctx, const Viewport& vp) {
+    if (!ui_report_enabled()) return;
+    const doc::Object* obj = nullptr;
+    const geom::Surface* s = current_surface(ctx.doc, &obj);
+    if (!s) return;
+    const glm::dmat4 m = view_projection(ctx.ui.camera, vp.aspect());
+    for (int i = 0; i < s->n_u; ++i)
+        for (int j = 0; j < s->n_v; ++j)
+            if (const Projected p = project(m, vp, s->point(i, j)); p.visible)
+                report_point("view3d/" + obj->name + "/" + std::to_string(i) + "," +
+                                 std::to_string(j),
+                             static_cast<float>(p.pixel.x), static_cast<float>(p.pixel.y));
+}
+
 void draw_labels(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
     const doc::Document& d = ctx.doc;
     if (!d.display.point_ids) return;
@@ -154,9 +175,13 @@ void draw_labels(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
     const geom::Surface* s = current_surface(d, &obj);
     if (!s) return;
     const glm::dmat4 m = view_projection(ctx.ui.camera, vp.aspect());
-    const ImU32 shadow = IM_COL32(0, 0, 0, 200);
     const doc::Rgba& c = d.colors.control_points;
-    const ImU32 text = ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, 1));
+    const glm::vec3 bg = background_of(d);
+    const glm::vec4 t = readable_on(glm::vec4(c.r, c.g, c.b, 1), bg, text_contrast);
+    const ImU32 text = ImGui::ColorConvertFloat4ToU32(ImVec4(t.r, t.g, t.b, 1));
+    // The shadow is the opposite of the text, so it outlines it on any background.
+    const ImU32 shadow = relative_luminance(glm::vec3(t)) > 0.3f ? IM_COL32(0, 0, 0, 200)
+                                                                 : IM_COL32(255, 255, 255, 200);
     const float off = 6.f * ctx.ui.scale();
     for (int i = 0; i < s->n_u; ++i)
         for (int j = 0; j < s->n_v; ++j) {
@@ -205,10 +230,25 @@ void draw_axes(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
 
 void draw_help_line(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
     if (ctx.ui.presentation) return;
-    const char* help = "drag: orbit   right-drag: pan   wheel: zoom   click or drag a point "
-                       "(X/Y/Z: along an axis)";
+    // The longest wording that fits the view: a hint cut in the middle reads as a bug.
+    static const char* const wordings[] = {
+        "drag: orbit   right-drag: pan   wheel: zoom   click or drag a point (X/Y/Z: along "
+        "an axis)",
+        "drag: orbit   right-drag: pan   wheel: zoom   drag a point",
+        "drag: orbit   right: pan   wheel: zoom",
+    };
+    const float room = static_cast<float>(vp.w) - 16;
+    const char* help = nullptr;
+    for (const char* w : wordings)
+        if (ImGui::CalcTextSize(w).x <= room) {
+            help = w;
+            break;
+        }
+    if (!help) return;
+    const glm::vec4 c =
+        readable_on(glm::vec4(0.86f, 0.86f, 0.86f, 1), background_of(ctx.doc), text_contrast);
     dl->AddText(ImVec2(static_cast<float>(vp.x) + 8, static_cast<float>(vp.y) + 6),
-                IM_COL32(220, 220, 220, 150), help);
+                ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, 0.85f)), help);
 }
 
 // Rows the slider strip needs: one when the panel is wide enough for all controls.
@@ -301,7 +341,9 @@ void draw_sliders(AppContext& ctx, int rows) {
     auto zoom = [&]() {
         ImGui::TextUnformatted("Zoom");
         ImGui::SameLine();
-        ImGui::SetNextItemWidth(w * 1.5f);
+        // Never narrower than its own "1000%": a narrow view still reads its zoom.
+        ImGui::SetNextItemWidth(
+            std::max(w * 1.5f, ImGui::CalcTextSize("1000%").x + st.FramePadding.x * 2));
         // Zoom relative to the last fit, on a log scale (the wheel changes the same value).
         float pct = static_cast<float>(100.0 * ui.fit_distance / ui.camera.distance);
         if (ImGui::SliderFloat("##zoom", &pct, 10.f, 1000.f, "%.0f%%",
@@ -377,10 +419,15 @@ void draw_view3d_panel(AppContext& ctx) {
         dl->AddImage(tex, p0, ImVec2(p0.x + avail.x, p0.y + avail.y), ImVec2(0, 1), ImVec2(1, 0));
     }
     dl->PushClipRect(p0, ImVec2(p0.x + avail.x, p0.y + avail.y), true);
+    report_projected_points(ctx, vp);
     draw_labels(ctx, vp, dl);
     if (!ui.headless) draw_hover_ring(ctx, vp, dl);
     draw_axes(ctx, vp, dl);
-    if (!bare) draw_help_line(ctx, vp, dl);
+    if (!bare)
+        draw_help_line(ctx, vp, dl);
+    else if (!ui.headless)
+        dl->AddText(ImVec2(p0.x + 8, p0.y + 6), IM_COL32(160, 160, 160, 200),
+                    "Shift+P or Esc: back to the workstation");
     dl->PopClipRect();
 
     if (!bare) draw_sliders(ctx, rows);

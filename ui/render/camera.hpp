@@ -22,6 +22,7 @@ struct Camera {
     double yaw = -0.95;    // radians
     double pitch = 0.55;   // radians, kept inside (-pi/2, pi/2)
     double fov_y = 0.6109; // 35 degrees
+    bool operator==(const Camera&) const = default;
 };
 
 glm::dvec3 camera_eye(const Camera& c);

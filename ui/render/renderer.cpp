@@ -1,6 +1,7 @@
 // The 3D view renderer: mesh cache, surface, line and point passes.
 #include "ui/render/renderer.hpp"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <glm/gtc/type_ptr.hpp>
@@ -92,8 +93,27 @@ struct StreamBuffer {
 
 } // namespace
 
+// What the last picture showed, to tell whether the next frame may keep it.
+struct LastPicture {
+    bool valid = false;
+    SceneView view;
+    std::vector<SurfaceDraw> surfaces; // compared without their geometry pointers
+    Overlay overlay;
+
+    static bool same_draw(const SurfaceDraw& a, const SurfaceDraw& b) {
+        return a.id == b.id && a.density == b.density && a.shaded == b.shaded &&
+               a.wireframe == b.wireframe && a.fill == b.fill && a.wire == b.wire &&
+               a.wire_width == b.wire_width && a.mesh_revision == b.mesh_revision;
+    }
+    bool matches(const SceneView& v, const std::vector<SurfaceDraw>& s, const Overlay& o) const {
+        return valid && view == v && overlay == o &&
+               std::equal(surfaces.begin(), surfaces.end(), s.begin(), s.end(), same_draw);
+    }
+};
+
 struct Renderer::Impl {
     RenderTarget target;
+    LastPicture last;
     GlProgram mesh, line, point;
     std::unordered_map<std::uint64_t, MeshEntry> meshes;
     StreamBuffer stream;
@@ -234,6 +254,22 @@ void Renderer::render(const SceneView& view, const std::vector<SurfaceDraw>& sur
                       const Overlay& overlay) {
     stats_ = {};
     Impl& im = *impl_;
+    // Geometry first: the buffers say whether any surface's shape changed.
+    std::vector<MeshEntry*> entries;
+    if (ok())
+        for (const SurfaceDraw& d : surfaces) {
+            MeshEntry& m = im.mesh_for(d, stats_);
+            entries.push_back(&m);
+            stats_.vertices += m.vertices;
+        }
+    // A frame that changes nothing in the view (a hover, typing in a field, a panel's own
+    // drag) keeps the last picture: on a CPU rasteriser a redraw costs tens of milliseconds.
+    if (ok() && stats_.retessellated == 0 && im.last.matches(view, surfaces, overlay)) {
+        im.prune();
+        return;
+    }
+    im.last = {true, view, surfaces, overlay};
+    stats_.redrawn = true;
     im.target.resize(view.width, view.height);
     im.target.bind_for_drawing();
     glClearColor(view.background.r, view.background.g, view.background.b, 1.0f);
@@ -259,12 +295,6 @@ void Renderer::render(const SceneView& view, const std::vector<SurfaceDraw>& sur
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
 
     // Pass 1: shaded surfaces, pushed back a little so lines on them stay visible.
-    std::vector<MeshEntry*> entries;
-    for (const SurfaceDraw& d : surfaces) {
-        MeshEntry& m = im.mesh_for(d, stats_);
-        entries.push_back(&m);
-        stats_.vertices += m.vertices;
-    }
     glUseProgram(im.mesh.id());
     glUniformMatrix4fv(im.mesh.uniform("u_view_proj"), 1, GL_FALSE, glm::value_ptr(vp));
     glUniformMatrix4fv(im.mesh.uniform("u_view"), 1, GL_FALSE, glm::value_ptr(vmat));

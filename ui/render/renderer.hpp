@@ -38,9 +38,11 @@ struct SceneView {
     Camera camera;
     int width = 1, height = 1; // framebuffer pixels
     glm::vec4 background{0.13f, 0.14f, 0.17f, 1};
+    bool operator==(const SceneView&) const = default;
 };
 
 struct RenderStats {
+    bool redrawn = false;     // false: nothing changed, the last picture stands
     int retessellated = 0;    // surfaces re-tessellated in the last frame
     double tessellate_ms = 0; // CPU time they took
     long vertices = 0;        // vertices drawn

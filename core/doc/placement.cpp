@@ -1,0 +1,70 @@
+// Placement of new objects (see placement.hpp).
+#include "core/doc/placement.hpp"
+
+#include <algorithm>
+#include <variant>
+
+#include <glm/common.hpp>
+
+namespace isoparm::doc {
+
+namespace {
+
+void grow(std::optional<Box>& box, const glm::dvec3& p) {
+    if (!box) {
+        box = Box{p, p};
+        return;
+    }
+    box->lo = glm::min(box->lo, p);
+    box->hi = glm::max(box->hi, p);
+}
+
+template <class Points> std::optional<Box> box_of_points(const Points& points) {
+    std::optional<Box> box;
+    for (const auto& p : points) grow(box, glm::dvec3(p));
+    return box;
+}
+
+void translate(Shape& shape, const glm::dvec3& d) {
+    if (auto* s = std::get_if<SurfaceObject>(&shape))
+        for (auto& p : s->surface.points) p += d;
+    else if (auto* c = std::get_if<CurveObject>(&shape))
+        for (auto& p : c->curve.points) p += d;
+}
+
+} // namespace
+
+std::optional<Box> bounds_of(const Shape& shape) {
+    if (const auto* s = std::get_if<SurfaceObject>(&shape)) return box_of_points(s->surface.points);
+    if (const auto* c = std::get_if<CurveObject>(&shape)) return box_of_points(c->curve.points);
+    const auto& f = std::get<ImplicitObject>(shape);
+    return Box{f.lo, f.hi};
+}
+
+std::optional<Box> scene_bounds(const Document& doc) {
+    std::optional<Box> box;
+    for (const Object& o : doc.objects) {
+        if (!o.visible) continue;
+        if (const std::optional<Box> b = bounds_of(o.shape)) {
+            grow(box, b->lo);
+            grow(box, b->hi);
+        }
+    }
+    return box;
+}
+
+void place_beside_scene(const Document& doc, Shape& shape) {
+    // An implicit surface's expression is in absolute coordinates: moving its box alone
+    // would cut the field, so it stays where its formula puts it.
+    if (std::holds_alternative<ImplicitObject>(shape)) return;
+    const std::optional<Box> scene = scene_bounds(doc);
+    const std::optional<Box> own = bounds_of(shape);
+    if (!scene || !own) return;
+    const double width = own->hi.x - own->lo.x;
+    const double gap = std::max(0.25 * width, 0.5);
+    glm::dvec3 d{scene->hi.x + gap - own->lo.x, 0, 0};
+    d.y = 0.5 * (scene->lo.y + scene->hi.y) - 0.5 * (own->lo.y + own->hi.y);
+    translate(shape, d);
+}
+
+} // namespace isoparm::doc

@@ -1,0 +1,26 @@
+// Where a new object goes: beside what the scene already holds, never on top of it.
+#pragma once
+
+#include <optional>
+
+#include <glm/vec3.hpp>
+
+#include "core/doc/document.hpp"
+
+namespace isoparm::doc {
+
+struct Box {
+    glm::dvec3 lo{0}, hi{0};
+};
+
+// The box of an object's control points (an implicit surface: its polygonization bounds).
+std::optional<Box> bounds_of(const Shape& shape);
+// The box of every visible object; nothing when the scene shows nothing.
+std::optional<Box> scene_bounds(const Document& doc);
+
+// Translates `shape` along +x so its box starts a gap (a quarter of its own width, at least
+// 0.5) past the visible objects' box, level with that box's centre in y; unchanged in an
+// empty scene. Implicit surfaces are left where their formula puts them.
+void place_beside_scene(const Document& doc, Shape& shape);
+
+} // namespace isoparm::doc

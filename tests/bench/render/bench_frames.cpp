@@ -1,0 +1,103 @@
+// Frame cost of the workstation on this machine's OpenGL (Mesa llvmpipe here: a classroom VM
+// or remote desktop has no GPU): one whole workstation frame at 1440x900, the way the window
+// draws it (no multisampling on a software rasteriser), for what a person does: nothing
+// (a frame drawn for a hover), dragging the indicator, dragging a control point, orbiting.
+// Process CPU time per frame (llvmpipe rasterises on worker threads), glFinish'ed.
+#include <benchmark/benchmark.h>
+
+#include <cfloat>
+#include <imgui.h>
+#include <string>
+
+#include "core/doc/commands.hpp"
+#include "core/doc/scene_io.hpp"
+#include "ui/doc_access.hpp"
+#include "ui/headless/egl_context.hpp"
+#include "ui/render/camera.hpp"
+#include "ui/render/gl.hpp"
+#include "ui/render/renderer.hpp"
+#include "ui/workstation.hpp"
+
+namespace {
+
+using namespace isoparm;
+
+enum class Gesture { idle, indicator, point, orbit };
+
+void BM_Frame1440x900(benchmark::State& state, const char* scene, Gesture gesture) {
+    std::string error;
+    const std::unique_ptr<ui::EglContext> egl = ui::EglContext::create(error);
+    if (!egl) {
+        state.SkipWithError(("no headless OpenGL: " + error).c_str());
+        return;
+    }
+    auto loaded = doc::load_scene(std::string(ISOPARM_SOURCE_DIR "/assets/scenes/") + scene);
+    if (!loaded.ok()) {
+        state.SkipWithError(loaded.error().message.c_str());
+        return;
+    }
+    const int w = 1440, h = 900;
+    GLuint fbo = 0, color = 0;
+    glGenRenderbuffers(1, &color);
+    glBindRenderbuffer(GL_RENDERBUFFER, color);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, w, h);
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
+    {
+        const int msaa = ui::software_renderer() ? 0 : 4; // as the window chooses
+        ui::Workstation ws({/*headless=*/true, 1.f, ui::ViewMode::workstation, msaa, {}});
+        ui::AppContext& ctx = ws.context();
+        ctx.doc = std::move(loaded).value();
+        ui::normalize_selection(ctx.doc);
+        ImGuiIO& io = ImGui::GetIO();
+        io.DisplaySize = ImVec2(static_cast<float>(w), static_cast<float>(h));
+        io.DeltaTime = 1.0f / 60.0f;
+        io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
+        for (int f = 0; f < 3; ++f) ws.frame(fbo); // layout, fit, first tessellation
+        glFinish();
+        const doc::Object* obj = nullptr;
+        const geom::Surface* s = ui::current_surface(ctx.doc, &obj);
+        const std::uint64_t id = obj ? obj->id : 0;
+        const int pi = s ? s->n_u / 2 : 0, pj = s ? s->n_v / 2 : 0;
+        const glm::dvec3 p0 = s ? s->point(pi, pj) : glm::dvec3(0);
+        long n = 0;
+        for (auto _ : state) {
+            const double t = 0.02 * static_cast<double>(n++ % 40); // back and forth
+            switch (gesture) {
+            case Gesture::idle:
+                break;
+            case Gesture::indicator:
+                ctx.doc.indicator = {0.1 + t, 0.3 + 0.5 * t};
+                break;
+            case Gesture::point:
+                ctx.execute(doc::move_control_point(id, pi, pj, p0 + glm::dvec3(0, 0, t)));
+                break;
+            case Gesture::orbit:
+                ui::orbit(ctx.ui.camera, 3, 1);
+                break;
+            }
+            ws.frame(fbo);
+            glFinish();
+        }
+        state.counters["frames_per_s"] =
+            benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsRate);
+    }
+    glDeleteFramebuffers(1, &fbo);
+    glDeleteRenderbuffers(1, &color);
+}
+
+#define FRAME_CASE(name, scene, gesture)                                                           \
+    BENCHMARK_CAPTURE(BM_Frame1440x900, name, scene, gesture)                                      \
+        ->Unit(benchmark::kMillisecond)                                                            \
+        ->MeasureProcessCPUTime()                                                                  \
+        ->UseRealTime()                                                                            \
+        ->MinTime(2.0)
+
+FRAME_CASE(fig3b_idle, "fig3b-weight-5.json", Gesture::idle);
+FRAME_CASE(fig3b_indicator_drag, "fig3b-weight-5.json", Gesture::indicator);
+FRAME_CASE(fig3b_point_drag, "fig3b-weight-5.json", Gesture::point);
+FRAME_CASE(fig3b_orbit, "fig3b-weight-5.json", Gesture::orbit);
+FRAME_CASE(implicit_gallery_idle, "implicit-gallery.json", Gesture::idle);
+
+} // namespace

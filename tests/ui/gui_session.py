@@ -1,0 +1,216 @@
+#!/usr/bin/env python3
+# The real workstation window in a private Xvfb, driven with xdotool as a person drives it:
+# shared by the monkey test (random input) and the scenario tests (a teacher's workflows).
+# The window tells where its panels, menus and handles are through ISOPARM_UI_REPORT
+# (ui/ui_report.hpp), so a scenario clicks on "the curve designer's canvas", not on guessed
+# pixels, and fails when a panel stops answering.
+import json
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+
+# Xvfb chooses a free display number and writes it to the pipe: no race with other X servers
+# on the machine (xvfb-run -a can lose one).
+def start_xvfb(size="1600x1000"):
+    read, write = os.pipe()
+    proc = subprocess.Popen(["Xvfb", "-displayfd", str(write), "-screen", "0", size + "x24",
+                             "-nolisten", "tcp"], pass_fds=(write,),
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    os.close(write)
+    number = b""
+    with os.fdopen(read, "rb") as f:
+        while not number.endswith(b"\n"):
+            chunk = f.read(1)
+            if not chunk:
+                break
+            number += chunk
+    if not number.strip():
+        print("gui: Xvfb did not start", file=sys.stderr)
+        proc.kill()
+        return None, None
+    return proc, ":" + number.decode().strip()
+
+
+def sanitizer_report(text):
+    return any(s in text for s in ("AddressSanitizer", "LeakSanitizer", "runtime error:",
+                                   "UndefinedBehaviorSanitizer"))
+
+
+class Failure(Exception):
+    pass
+
+
+class Session:
+    """One isoparm window on a copy of `scene` (or an untitled one), with private settings."""
+
+    def __init__(self, isoparm, workdir, scene=None, extra_args=()):
+        self.isoparm = isoparm
+        self.work = workdir
+        self.scene = None
+        if scene:
+            self.scene = os.path.join(workdir, os.path.basename(scene))
+            shutil.copyfile(scene, self.scene)
+        env = dict(os.environ)
+        for var, sub in (("HOME", "home"), ("XDG_CONFIG_HOME", "config"),
+                         ("XDG_STATE_HOME", "state")):
+            os.makedirs(os.path.join(workdir, sub), exist_ok=True)
+            env[var] = os.path.join(workdir, sub)
+        self.report_path = os.path.join(workdir, "ui-report.json")
+        env["ISOPARM_UI_REPORT"] = self.report_path
+        self.env = env
+        self.stderr_path = os.path.join(workdir, "stderr.txt")
+        self.stderr = open(self.stderr_path, "w")
+        args = [isoparm] + ([self.scene] if self.scene else []) + list(extra_args)
+        self.proc = subprocess.Popen(args, env=env, stdout=subprocess.DEVNULL,
+                                     stderr=self.stderr)
+        self.x0 = self.y0 = 0
+        self.w, self.h = 1440, 900
+
+    # --- the window -----------------------------------------------------------------------
+    def xdo(self, *args):
+        subprocess.run(["xdotool", *map(str, args)], check=False, env=self.env,
+                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+
+    def alive(self):
+        return self.proc.poll() is None
+
+    def find_window(self, timeout=60):
+        deadline = time.time() + timeout
+        while time.time() < deadline:
+            if not self.alive():
+                return False
+            out = subprocess.run(["xdotool", "search", "--onlyvisible", "--name", "isoparm"],
+                                 capture_output=True, text=True, env=self.env).stdout.split()
+            if out:
+                self.window = out[0]
+                self.update_geometry()
+                self.xdo("windowfocus", "--sync", self.window)
+                time.sleep(1)
+                return True
+            time.sleep(0.3)
+        return False
+
+    def update_geometry(self):
+        geo = subprocess.run(["xdotool", "getwindowgeometry", "--shell", self.window],
+                             capture_output=True, text=True, env=self.env).stdout
+        vals = dict(line.split("=", 1) for line in geo.split() if "=" in line)
+        self.x0, self.y0 = int(vals.get("X", 0)), int(vals.get("Y", 0))
+        self.w, self.h = int(vals.get("WIDTH", 1440)), int(vals.get("HEIGHT", 900))
+
+    def screen_size(self):
+        out = subprocess.run(["xdotool", "getdisplaygeometry"], capture_output=True, text=True,
+                             env=self.env).stdout.split()
+        return int(out[0]), int(out[1])
+
+    def screenshot(self, path):
+        # ImageMagick's import, where installed (the quick start does not need it).
+        if shutil.which("import"):
+            subprocess.run(["import", "-window", "root", path], check=False, env=self.env)
+
+    # --- what the window reports ------------------------------------------------------------
+    def report(self):
+        try:
+            with open(self.report_path) as f:
+                return json.load(f)
+        except (OSError, ValueError):
+            return {}
+
+    def wait_for(self, what, predicate, timeout=20):
+        """Waits until predicate(report) is true; returns the report."""
+        deadline = time.time() + timeout
+        while time.time() < deadline:
+            if not self.alive():
+                raise Failure(f"the window died while waiting for {what}")
+            r = self.report()
+            if r and predicate(r):
+                return r
+            # A frame is drawn on input only: a harmless motion inside the window asks for one.
+            self.xdo("mousemove_relative", "--", 1, 0)
+            time.sleep(0.25)
+        raise Failure(f"timed out waiting for {what}; last report: {json.dumps(self.report())[:2000]}")
+
+    def rect(self, name, timeout=20):
+        r = self.wait_for(f"'{name}' on screen", lambda r: name in r.get("rects", {}), timeout)
+        return r["rects"][name]
+
+    def rect_names(self, prefix):
+        return [k for k in self.report().get("rects", {}) if k.startswith(prefix)]
+
+    # --- input, in window pixels --------------------------------------------------------------
+    def move(self, x, y):
+        self.xdo("mousemove", int(self.x0 + x), int(self.y0 + y))
+        time.sleep(0.15)
+
+    def click(self, x, y, button=1, modifiers=()):
+        self.move(x, y)
+        for m in modifiers:
+            self.xdo("keydown", m)
+        self.xdo("mousedown", button)
+        time.sleep(0.12)
+        self.xdo("mouseup", button)
+        for m in modifiers:
+            self.xdo("keyup", m)
+        time.sleep(0.3)
+
+    def click_rect(self, rect, fx=0.5, fy=0.5):
+        x, y, w, h = rect
+        self.click(x + w * fx, y + h * fy)
+
+    def click_named(self, name, fx=0.5, fy=0.5):
+        self.click_rect(self.rect(name), fx, fy)
+
+    def drag(self, x, y, dx, dy, steps=8):
+        self.move(x, y)
+        self.xdo("mousedown", 1)
+        time.sleep(0.15)
+        for k in range(1, steps + 1):
+            self.xdo("mousemove", int(self.x0 + x + dx * k / steps),
+                     int(self.y0 + y + dy * k / steps))
+            time.sleep(0.06)
+        time.sleep(0.15)
+        self.xdo("mouseup", 1)
+        time.sleep(0.3)
+
+    def key(self, keys):
+        self.xdo("key", "--clearmodifiers", keys)
+        time.sleep(0.3)
+
+    def menu(self, *path):
+        """Opens the menu bar's path[0] and picks path[1] (and so on), as a person does."""
+        self.click_named("menu/" + path[0])
+        for label in path[1:]:
+            self.click_named("menu/" + label)
+
+    # --- the document, as saved ---------------------------------------------------------------
+    def save(self):
+        """Ctrl+S; returns the saved scene (JSON) once the file was rewritten."""
+        before = os.stat(self.scene).st_mtime_ns
+        self.key("ctrl+s")
+        deadline = time.time() + 15
+        while time.time() < deadline:
+            if os.stat(self.scene).st_mtime_ns != before:
+                with open(self.scene) as f:
+                    return json.load(f)
+            time.sleep(0.2)
+        raise Failure("Ctrl+S did not rewrite the scene")
+
+    def quit(self):
+        if not self.alive():
+            return self.proc.returncode
+        self.key("ctrl+q")
+        try:
+            return self.proc.wait(timeout=15)
+        except subprocess.TimeoutExpired:
+            self.proc.terminate()
+            return self.proc.wait(timeout=10)
+
+    def close(self):
+        status = self.quit()
+        self.stderr.close()
+        text = open(self.stderr_path, errors="replace").read()
+        if sanitizer_report(text):
+            raise Failure("sanitizer report:\n" + text)
+        return status, text

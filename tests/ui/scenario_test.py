@@ -1,0 +1,267 @@
+#!/usr/bin/env python3
+# GUI scenario tests: a teacher's workflows in the real window (private Xvfb, xdotool), each
+# opening a panel mid-session and checking that a click or a drag in it changed the document
+# (through the saved scene). Run at a projector's 1024x768 and at 1920x1080 (CTest does both).
+#
+#   python3 tests/ui/scenario_test.py --xvfb --screen 1024x768 --isoparm build/app/isoparm \
+#       --scenes assets/scenes [--only curve_designer] [--shots DIR]
+import argparse
+import os
+import shutil
+import sys
+import tempfile
+import time
+import traceback
+
+from gui_session import Failure, Session, start_xvfb
+
+
+def check(cond, message):
+    if not cond:
+        raise Failure(message)
+
+
+def objects_of(scene, kind=None):
+    return [o for o in scene["objects"] if kind is None or o["kind"] == kind]
+
+
+def by_name(scene, name):
+    for o in scene["objects"]:
+        if o["name"] == name:
+            return o
+    raise Failure(f"no object named {name!r} in the saved scene")
+
+
+# --- the scenarios ---------------------------------------------------------------------------
+
+def window_fits_the_screen(s, ctx):
+    """The first window lies inside the screen, at most ~90% of it; presentation text >= 18 px."""
+    sw, sh = s.screen_size()
+    s.update_geometry()
+    check(s.x0 >= 0 and s.y0 >= 0 and s.x0 + s.w <= sw and s.y0 + s.h <= sh,
+          f"window {s.w}x{s.h}+{s.x0}+{s.y0} is not inside the {sw}x{sh} screen")
+    check(s.w <= 0.91 * sw and s.h <= 0.91 * sh,
+          f"window {s.w}x{s.h} takes more than 90% of the {sw}x{sh} screen")
+    r = s.wait_for("the status bar and both columns", lambda r: "panel/Drawing" in r["rects"])
+    for name, (x, y, w, h) in r["rects"].items():
+        if name.startswith("panel/"):
+            check(x >= 0 and y >= 0 and x + w <= s.w + 1 and y + h <= s.h + 1,
+                  f"{name} {x},{y} {w}x{h} lies outside the {s.w}x{s.h} window")
+    s.key("p")
+    r = s.wait_for("presentation mode", lambda r: r.get("presentation"))
+    check(r["font_pixels"] >= 18, f"presentation text is {r['font_pixels']} px (< 18)")
+    ctx.shot(s, "presentation")
+    s.key("p")
+    s.wait_for("normal mode", lambda r: not r.get("presentation"))
+
+
+def curve_designer_after_new_curve(s, ctx):
+    """Curve > New curve in xy, then clicks in the designer's canvas add control points."""
+    s.menu("Curve", "New curve in xy")
+    canvas = s.rect("curve/canvas")
+    before = s.save()
+    curves = objects_of(before, "curve")
+    check(curves, "Curve > New curve in xy added no curve")
+    name = curves[-1]["name"]
+    n0 = len(by_name(before, name)["curve"]["points"])
+    # Clicks on empty canvas append points (away from the existing polygon's legs).
+    for fx, fy in ((0.15, 0.15), (0.85, 0.2), (0.5, 0.12)):
+        s.click_rect(canvas, fx, fy)
+    ctx.shot(s, "curve-designer")
+    after = s.save()
+    n1 = len(by_name(after, name)["curve"]["points"])
+    check(n1 == n0 + 3, f"3 clicks in the curve designer's canvas: {n0} -> {n1} points")
+
+
+def implicit_editor_after_new_implicit(s, ctx):
+    """Surface > New implicit surface, then a preset picked in its editor replaces the formula."""
+    s.menu("Surface", "New implicit surface")
+    s.rect("implicit/preset")
+    before = s.save()
+    implicit = objects_of(before, "implicit")
+    check(implicit, "Surface > New implicit surface added nothing")
+    name = implicit[-1]["name"]
+    old = by_name(before, name)["implicit"]["expression"]
+    s.click_named("implicit/preset")
+    r = s.wait_for("the preset list", lambda r: len([k for k in r["rects"]
+                                                     if k.startswith("implicit/preset/")]) > 1)
+    presets = sorted(k for k in r["rects"] if k.startswith("implicit/preset/"))
+    s.click_named(presets[-1])
+    after = s.save()
+    new = by_name(after, name)["implicit"]["expression"]
+    check(new != old, f"picking {presets[-1]} left the expression {old!r}")
+    ctx.shot(s, "implicit-editor")
+
+
+def control_points_after_starting_with_a_curve(s, ctx):
+    """fig8-revolution starts with its profile curve selected; select the surface and a point,
+    then drag the point in the xy plane of the control-point panel."""
+    r = s.wait_for("the curve designer", lambda r: "curve/canvas" in r["rects"])
+    s.click_named("objects/vase")
+    r = s.wait_for("the vase selected", lambda r: r["selected"] == "vase")
+    if not r["control_points"]:  # this scene hides them: C shows them, as the help says
+        s.key("c")
+        s.wait_for("control points shown", lambda r: r["control_points"])
+    points = s.rect_names("view3d/vase/")
+    check(points, "no control point of the vase is on screen")
+    view = s.rect("panel/Drawing")
+    # A point well inside the view, not under the help line or the sliders.
+    inside = [p for p in points if view[0] + 20 < s.rect(p)[0] < view[0] + view[2] - 20
+              and view[1] + 40 < s.rect(p)[1] < view[1] + view[3] - 80]
+    check(inside, "no control point of the vase lies inside the 3D view")
+    x, y, _, _ = s.rect(inside[len(inside) // 2])
+    s.click(x, y)
+    r = s.wait_for("a point selected", lambda r: r["point"][0] >= 0)
+    i, j = r["point"]
+    before = s.save()
+    disk = s.rect("cp/disk0")
+    s.drag(disk[0], disk[1], 25, -20)
+    ctx.shot(s, "control-point-panel")
+    after = s.save()
+    # Scene files keep the net as rows of points (docs/scene-format.md).
+    p0 = by_name(before, "vase")["surface"]["points"][i][j]
+    p1 = by_name(after, "vase")["surface"]["points"][i][j]
+    check(p0 != p1, f"dragging P{i}{j}'s disk in the xy plane did not move it ({p0})")
+    check(abs(p0[2] - p1[2]) < 1e-9, f"an xy drag changed z: {p0} -> {p1}")
+
+
+def construct_revolve_from_the_profile(s, ctx):
+    """Construct > Revolve with the selected profile; Build adds a surface, the dialog says so."""
+    s.wait_for("the curve designer", lambda r: "curve/canvas" in r["rects"])
+    before = s.save()
+    s.menu("Construct", "Revolve...")
+    s.rect("construct/build")
+    s.click_named("construct/build")
+    ctx.shot(s, "construct-dialog")
+    s.key("Escape")
+    after = s.save()
+    check(len(after["objects"]) == len(before["objects"]) + 1,
+          f"Build in the Revolve dialog: {len(before['objects'])} -> {len(after['objects'])} objects")
+
+
+def construct_refusal_stays_in_the_dialog(s, ctx):
+    """A refused construction (Ruled with one curve) keeps its dialog open with the reason."""
+    s.wait_for("the curve designer", lambda r: "curve/canvas" in r["rects"])
+    s.menu("Construct", "Ruled...")
+    s.click_named("construct/build")
+    time.sleep(0.5)
+    r = s.report()
+    check("construct/build" in r.get("rects", {}), "a refused Build closed the dialog")
+    ctx.shot(s, "construct-refused")
+    s.key("Escape")
+
+
+def object_list_hides_and_renames(s, ctx):
+    """The Objects tab: the visibility box hides an object (saved), undo shows it again."""
+    s.click_named("objects/shown/vase")
+    after = s.save()
+    check(by_name(after, "vase").get("visible") is False, "the box did not hide the vase")
+    ctx.shot(s, "object-list")
+    s.key("ctrl+z")
+    again = s.save()
+    check(by_name(again, "vase").get("visible", True) is True, "Ctrl+Z did not show it again")
+
+
+def file_new_gives_an_empty_scene(s, ctx):
+    """File > New: an empty scene, with the new-surface dialog offered."""
+    s.menu("File", "New")
+    r = s.wait_for("an empty scene", lambda r: r["objects"] == 0)
+    check(r["objects"] == 0, "File > New kept objects")
+    ctx.shot(s, "file-new")
+
+
+SCENARIOS = [
+    ("window_fits", "fig3b-weight-5.json", window_fits_the_screen),
+    ("curve_designer", "fig3b-weight-5.json", curve_designer_after_new_curve),
+    ("implicit_editor", "fig3b-weight-5.json", implicit_editor_after_new_implicit),
+    ("control_points_after_curve", "fig8-revolution.json",
+     control_points_after_starting_with_a_curve),
+    ("construct_revolve", "fig8-revolution.json", construct_revolve_from_the_profile),
+    ("construct_refusal", "fig8-revolution.json", construct_refusal_stays_in_the_dialog),
+    ("object_list", "fig8-revolution.json", object_list_hides_and_renames),
+    ("file_new", "fig3b-weight-5.json", file_new_gives_an_empty_scene),
+]
+
+
+class Context:
+    def __init__(self, shots, screen):
+        self.shots = shots
+        self.screen = screen
+        self.name = ""
+
+    def shot(self, session, what):
+        if self.shots:
+            session.screenshot(os.path.join(self.shots, f"{self.screen}-{self.name}-{what}.png"))
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--isoparm", required=True)
+    ap.add_argument("--scenes", required=True, help="folder of the example scenes")
+    ap.add_argument("--screen", default="1024x768")
+    ap.add_argument("--xvfb", action="store_true")
+    ap.add_argument("--only", help="run only this scenario")
+    ap.add_argument("--shots", help="save screenshots into this folder")
+    ap.add_argument("--keep", action="store_true")
+    args = ap.parse_args()
+    xvfb = None
+    if args.xvfb:
+        xvfb, display = start_xvfb(args.screen)
+        if not xvfb:
+            return 1
+        os.environ["DISPLAY"] = display
+    if not os.environ.get("DISPLAY"):
+        print("scenario: no DISPLAY; pass --xvfb", file=sys.stderr)
+        return 2
+    if args.shots:
+        os.makedirs(args.shots, exist_ok=True)
+    ctx = Context(args.shots, args.screen)
+    passed = failed = 0
+    try:
+        for name, scene, run in SCENARIOS:
+            if args.only and name != args.only:
+                continue
+            ctx.name = name
+            work = tempfile.mkdtemp(prefix=f"isoparm-scenario-{name}-")
+            s = Session(args.isoparm, work, os.path.join(args.scenes, scene))
+            ok = True
+            started = time.time()
+            try:
+                if not s.find_window():
+                    raise Failure("the window did not appear")
+                run(s, ctx)
+            except Failure as e:
+                ok = False
+                print(f"scenario {name} [{args.screen}]: FAILED: {e}", file=sys.stderr)
+                ctx.shot(s, "failure")
+            except Exception:  # a broken scenario is a failure too, with its trace
+                ok = False
+                traceback.print_exc()
+            finally:
+                try:
+                    status, text = s.close()
+                    if status not in (0, -15):
+                        ok = False
+                        print(f"scenario {name}: exit status {status}:\n{text}", file=sys.stderr)
+                except Failure as e:
+                    ok = False
+                    print(f"scenario {name}: {e}", file=sys.stderr)
+            took = time.time() - started
+            print(f"scenario {name} [{args.screen}]: {'ok' if ok else 'FAILED'} ({took:.1f} s)")
+            if ok:
+                passed += 1
+                if not args.keep:
+                    shutil.rmtree(work, ignore_errors=True)
+            else:
+                failed += 1
+                print(f"scenario {name}: files kept in {work}")
+    finally:
+        if xvfb:
+            xvfb.terminate()
+            xvfb.wait(timeout=10)
+    print(f"{passed} passed, {failed} failed")
+    return 0 if failed == 0 and passed > 0 else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,111 @@
+// The object list: every object of the scene with its kind; select, rename (double-click),
+// hide / show and delete, each through the command layer (undoable).
+#include <cstdio>
+#include <imgui.h>
+#include <string>
+#include <variant>
+
+#include "core/doc/commands.hpp"
+#include "ui/doc_access.hpp"
+#include "ui/panels/panels.hpp"
+#include "ui/ui_report.hpp"
+
+namespace isoparm::ui {
+
+namespace {
+
+const char* kind_name(const doc::Object& o) {
+    if (const auto* s = std::get_if<doc::SurfaceObject>(&o.shape))
+        return geom::spline_type_name(s->surface.type);
+    if (std::holds_alternative<doc::CurveObject>(o.shape)) return "curve";
+    return "implicit";
+}
+
+// One edit, one undo step, apart from whatever gesture came before.
+bool run_alone(AppContext& ctx, std::unique_ptr<doc::Command> cmd) {
+    ctx.seal();
+    const bool ok = ctx.execute(std::move(cmd));
+    ctx.seal();
+    return ok;
+}
+
+} // namespace
+
+void draw_object_list_panel(AppContext& ctx) {
+    ObjectListState& st = ctx.ui.object_list;
+    if (ctx.doc.objects.empty()) {
+        ImGui::TextWrapped("The scene is empty: Surface > New Surface (Ctrl+Shift+N) or "
+                           "Curve > New curve adds an object.");
+        return;
+    }
+    std::uint64_t remove = 0, select = 0;
+    std::pair<std::uint64_t, bool> show{0, false};
+    const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH |
+                                  ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingStretchProp;
+    if (ImGui::BeginTable("##objects", 4, flags)) {
+        const float icon = ImGui::GetFrameHeight();
+        ImGui::TableSetupColumn("Shown", ImGuiTableColumnFlags_WidthFixed, icon);
+        ImGui::TableSetupColumn("Name", ImGuiTableColumnFlags_WidthStretch, 3);
+        ImGui::TableSetupColumn("Kind", ImGuiTableColumnFlags_WidthStretch, 2);
+        ImGui::TableSetupColumn("##delete", ImGuiTableColumnFlags_WidthFixed, icon);
+        ImGui::TableSetupScrollFreeze(0, 1);
+        ImGui::TableHeadersRow();
+        for (const doc::Object& o : ctx.doc.objects) {
+            ImGui::PushID(static_cast<int>(o.id));
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            bool visible = o.visible;
+            if (ImGui::Checkbox("##shown", &visible)) show = {o.id, visible};
+            report_item("objects/shown/" + o.name);
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip(o.visible ? "Hide" : "Show");
+            ImGui::TableNextColumn();
+            const std::string label = o.name.empty() ? "object " + std::to_string(o.id) : o.name;
+            if (st.renaming == o.id) {
+                ImGui::SetNextItemWidth(-1);
+                if (st.focus_rename) {
+                    ImGui::SetKeyboardFocusHere();
+                    st.focus_rename = false;
+                }
+                const bool enter = ImGui::InputText("##rename", st.name, sizeof st.name,
+                                                    ImGuiInputTextFlags_EnterReturnsTrue |
+                                                        ImGuiInputTextFlags_AutoSelectAll);
+                if (enter) {
+                    if (std::string(st.name) != o.name)
+                        run_alone(ctx, doc::rename_object(o.id, st.name));
+                    st.renaming = 0;
+                } else if (ImGui::IsItemDeactivated()) {
+                    st.renaming = 0; // Esc or a click elsewhere: the name stays
+                }
+            } else {
+                const bool selected = o.id == ctx.doc.selection.object;
+                const bool clicked = ImGui::Selectable(label.c_str(), selected,
+                                                       ImGuiSelectableFlags_AllowDoubleClick);
+                report_item("objects/" + label);
+                if (clicked) {
+                    select = o.id;
+                    if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
+                        st.renaming = o.id;
+                        st.focus_rename = true;
+                        std::snprintf(st.name, sizeof st.name, "%s", o.name.c_str());
+                    }
+                }
+                if (ImGui::IsItemHovered() && st.renaming == 0)
+                    ImGui::SetTooltip("Click: select. Double-click: rename.");
+            }
+            ImGui::TableNextColumn();
+            ImGui::TextDisabled("%s", kind_name(o));
+            ImGui::TableNextColumn();
+            if (ImGui::SmallButton("x")) remove = o.id;
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip("Delete %s (Ctrl+Z brings it back)", label.c_str());
+            ImGui::PopID();
+        }
+        ImGui::EndTable();
+    }
+    // Applied after the loop: the commands change the list being drawn.
+    if (select != 0 && select != ctx.doc.selection.object) ctx.doc.selection = {select, -1, -1};
+    if (show.first != 0) run_alone(ctx, doc::set_visible(show.first, show.second));
+    if (remove != 0 && run_alone(ctx, doc::remove_object(remove))) normalize_selection(ctx.doc);
+}
+
+} // namespace isoparm::ui

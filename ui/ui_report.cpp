@@ -1,0 +1,101 @@
+// The GUI scenario tests' view of the window (see ui_report.hpp).
+#include "ui/ui_report.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <imgui.h>
+#include <map>
+#include <nlohmann/json.hpp>
+
+#include "ui/app_context.hpp"
+
+namespace isoparm::ui {
+
+namespace {
+
+struct Report {
+    std::string path;
+    std::map<std::string, std::array<float, 4>> rects;
+    std::string last_written;
+};
+
+Report& report() {
+    static Report r = [] {
+        Report x;
+        if (const char* p = std::getenv("ISOPARM_UI_REPORT"); p && *p) x.path = p;
+        return x;
+    }();
+    return r;
+}
+
+} // namespace
+
+bool ui_report_enabled() {
+    return !report().path.empty();
+}
+
+void report_rect(const std::string& name, float x, float y, float w, float h) {
+    if (ui_report_enabled()) report().rects[name] = {x, y, w, h};
+}
+
+void report_point(const std::string& name, float x, float y) {
+    report_rect(name, x, y, 0, 0);
+}
+
+void report_item(const std::string& name) {
+    if (!ui_report_enabled()) return;
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    report_rect(name, a.x, a.y, b.x - a.x, b.y - a.y);
+}
+
+void flush_ui_report(const AppContext& ctx) {
+    Report& r = report();
+    if (r.path.empty()) return;
+    nlohmann::json j;
+    for (const auto& [name, rect] : r.rects) j["rects"][name] = rect;
+    const ImGuiViewport* vp = ImGui::GetMainViewport();
+    j["window"] = {vp->Size.x, vp->Size.y};
+    j["objects"] = ctx.doc.objects.size();
+    const doc::Object* sel = ctx.doc.selected();
+    j["selected"] = sel ? sel->name : "";
+    j["point"] = {ctx.doc.selection.i, ctx.doc.selection.j};
+    j["dirty"] = ctx.dirty();
+    j["undo"] = ctx.history.can_undo() ? ctx.history.undo_label() : "";
+    j["presentation"] = ctx.ui.presentation;
+    j["control_points"] = ctx.doc.display.control_points;
+    j["font_pixels"] = ImGui::GetFontSize();
+    r.rects.clear(); // what the next frame draws, it reports again
+    std::string text = j.dump(1);
+    if (text == r.last_written) return;
+    // Written beside the target and renamed over it: a reader never sees half a report.
+    const std::string tmp = r.path + ".part";
+    if (std::FILE* f = std::fopen(tmp.c_str(), "wb")) {
+        const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+        if (std::fclose(f) == 0 && ok && std::rename(tmp.c_str(), r.path.c_str()) == 0)
+            r.last_written = std::move(text);
+    }
+}
+
+} // namespace isoparm::ui
+
+namespace isoparm::ui {
+
+bool begin_menu(const char* label, bool enabled) {
+    const bool open = ImGui::BeginMenu(label, enabled);
+    report_item(std::string("menu/") + label);
+    return open;
+}
+
+bool menu_item(const char* label, const char* shortcut, bool selected, bool enabled) {
+    const bool picked = ImGui::MenuItem(label, shortcut, selected, enabled);
+    report_item(std::string("menu/") + label);
+    return picked;
+}
+
+bool menu_item(const char* label, const char* shortcut, bool* selected, bool enabled) {
+    const bool picked = ImGui::MenuItem(label, shortcut, selected, enabled);
+    report_item(std::string("menu/") + label);
+    return picked;
+}
+
+} // namespace isoparm::ui
