@@ -13,11 +13,12 @@ import time
 
 
 # Xvfb chooses a free display number and writes it to the pipe: no race with other X servers
-# on the machine (xvfb-run -a can lose one).
+# on the machine (xvfb-run -a can lose one). -noreset: the server would otherwise reset when
+# one scenario's window closes, and refuse the next scenario's window while it does.
 def start_xvfb(size="1600x1000"):
     read, write = os.pipe()
     proc = subprocess.Popen(["Xvfb", "-displayfd", str(write), "-screen", "0", size + "x24",
-                             "-nolisten", "tcp"], pass_fds=(write,),
+                             "-nolisten", "tcp", "-noreset"], pass_fds=(write,),
                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     os.close(write)
     number = b""
@@ -201,6 +202,14 @@ class Session:
         if not self.alive():
             return self.proc.returncode
         self.key("ctrl+q")
+        try:
+            return self.proc.wait(timeout=3)
+        except subprocess.TimeoutExpired:
+            pass
+        # Unsaved changes: the window asks first; a scenario's changes are not kept.
+        discard = self.report().get("rects", {}).get("unsaved/discard")
+        if discard:
+            self.click_rect(discard)
         try:
             return self.proc.wait(timeout=15)
         except subprocess.TimeoutExpired:

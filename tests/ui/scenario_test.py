@@ -163,11 +163,14 @@ def object_list_hides_and_renames(s, ctx):
 
 
 def file_new_gives_an_empty_scene(s, ctx):
-    """File > New: an empty scene, with the new-surface dialog offered."""
+    """File > New: an empty scene, with the new-surface dialog offered; Create adds a grid."""
     s.menu("File", "New")
-    r = s.wait_for("an empty scene", lambda r: r["objects"] == 0)
-    check(r["objects"] == 0, "File > New kept objects")
+    s.wait_for("an empty scene", lambda r: r["objects"] == 0)
+    create = s.rect("new_surface/create")
     ctx.shot(s, "file-new")
+    s.click_rect(create)
+    r = s.wait_for("the new surface", lambda r: r["objects"] == 1)
+    check(r["selected"], "the new surface is not selected")
 
 
 SCENARIOS = [

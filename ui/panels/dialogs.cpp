@@ -13,6 +13,7 @@
 #include "ui/actions.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/recovery.hpp"
+#include "ui/ui_report.hpp"
 #include "ui/theme.hpp"
 
 namespace isoparm::ui {
@@ -81,7 +82,9 @@ void new_surface_dialog(AppContext& ctx) {
     const std::string err = new_surface_error(f);
     if (!err.empty()) ImGui::TextColored(error_text_color(), "%s", err.c_str());
     ImGui::BeginDisabled(!err.empty());
-    if (ImGui::Button("Create")) {
+    const bool create = ImGui::Button("Create");
+    report_item("new_surface/create");
+    if (create) {
         doc::Object o;
         int n = 1;
         for (const doc::Object& x : ctx.doc.objects)
@@ -215,7 +218,9 @@ void unsaved_dialog(AppContext& ctx) {
         if (save(ctx)) run_pending(ctx); // untitled: the save dialog runs it after saving
     }
     ImGui::SameLine();
-    if (ImGui::Button("Discard changes")) {
+    const bool discard = ImGui::Button("Discard changes");
+    report_item("unsaved/discard");
+    if (discard) {
         ImGui::CloseCurrentPopup();
         run_pending(ctx);
     }
