@@ -81,6 +81,13 @@ Layout compute_layout(const LayoutPrefs& prefs, const LayoutInput& in) {
             const float extra = (l - min_side) + (r - min_side);
             l -= (l - min_side) / extra * excess;
             r -= (r - min_side) / extra * excess;
+        } else if (in.min_center_fraction > 0) {
+            // A small window (a projector's 1024x768 in presentation mode): the centre keeps
+            // its share, since the class looks at it; the columns split the rest.
+            const float sides = avail * (1 - std::min(in.min_center_fraction, 1.f));
+            const float total = l + r;
+            l = sides * l / total;
+            r = sides * r / total;
         } else {
             // A tiny window: keep the default proportions.
             const float total = l + r + min_center;

@@ -211,7 +211,10 @@ struct UiState {
     CurveDesignerState curve;
     ObjectListState object_list;
 
-    float scale() const { return content_scale * (presentation ? 1.5f : 1.0f); }
+    // Presentation enlarges everything by half, or by a quarter in a window under 800 px
+    // high (a 1024x768 projector), where text is then 19 px and the panels still fit.
+    float presentation_factor = 1.5f; // set from the window's height each frame
+    float scale() const { return content_scale * (presentation ? presentation_factor : 1.0f); }
 };
 
 } // namespace isoparm::ui

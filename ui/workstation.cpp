@@ -152,13 +152,13 @@ void Workstation::layout_panels() {
     ui.layout = compute_layout(ctx_.settings.layout, ui.layout_input);
     const Layout& l = ui.layout;
 
-    if (begin_panel("Tracing: domain and knots", l.left[0])) draw_tracing_panel(ctx_);
+    if (begin_panel("Domain and knots", l.left[0])) draw_tracing_panel(ctx_);
     ImGui::End();
     // The basis functions and de Boor's construction share the slot as tabs; D (de Boor on)
     // brings its tab forward.
     if (begin_panel("Basis and de Boor", l.left[1], ImGuiWindowFlags_NoTitleBar) &&
         ImGui::BeginTabBar("##left_tabs")) {
-        if (ImGui::BeginTabItem("Basis functions")) {
+        if (ImGui::BeginTabItem("Basis")) {
             draw_basis_plot_panel(ctx_);
             ImGui::EndTabItem();
         }
@@ -213,6 +213,7 @@ void Workstation::frame(unsigned target_framebuffer) {
     UiState& ui = ctx_.ui;
     ImGuiIO& io = ImGui::GetIO();
     // Theme and font atlas follow the scale (HiDPI x presentation); rebuilt between frames.
+    ui.presentation_factor = io.DisplaySize.y < 800 ? 1.25f : 1.5f;
     const float scale = ui.scale();
     if (scale != ui.font_scale_built || ui.presentation != presentation_built_) {
         apply_theme(ui.presentation, scale);

@@ -143,3 +143,14 @@ TEST(Layout, CentreFractionWinsOverSideWidths) {
     EXPECT_NEAR(l.center.w, 0.45f * (1440 - 2 * in.splitter), 1e-2);
     EXPECT_GE(l.left[0].w, min_side_width * 1.5f);
 }
+
+TEST(Layout, SmallWindowKeepsTheCentreShareBeforeSideMinimums) {
+    // A projector's 1024x768 leaves a 921x691 window; presentation scale 1.5.
+    LayoutInput in = input(921, 691, 1.5f);
+    in.min_center_fraction = 0.5f;
+    const Layout l = compute_layout(LayoutPrefs{}, in);
+    expect_tiles(l, in);
+    EXPECT_NEAR(l.center.w, 0.5f * (921 - 2 * in.splitter), 1e-2);
+    EXPECT_GT(l.left[0].w, 0.f);
+    EXPECT_GT(l.right[0].w, l.left[0].w); // the default proportions of the columns
+}

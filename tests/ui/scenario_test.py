@@ -206,6 +206,8 @@ def main():
     ap.add_argument("--only", help="run only this scenario")
     ap.add_argument("--shots", help="save screenshots into this folder")
     ap.add_argument("--keep", action="store_true")
+    ap.add_argument("--presentation", action="store_true",
+                    help="run every scenario in presentation mode (P first)")
     args = ap.parse_args()
     xvfb = None
     if args.xvfb:
@@ -218,7 +220,7 @@ def main():
         return 2
     if args.shots:
         os.makedirs(args.shots, exist_ok=True)
-    ctx = Context(args.shots, args.screen)
+    ctx = Context(args.shots, args.screen + ("-presentation" if args.presentation else ""))
     passed = failed = 0
     try:
         for name, scene, run in SCENARIOS:
@@ -232,6 +234,9 @@ def main():
             try:
                 if not s.find_window():
                     raise Failure("the window did not appear")
+                if args.presentation and run is not window_fits_the_screen:
+                    s.key("p")
+                    s.wait_for("presentation mode", lambda r: r.get("presentation"))
                 run(s, ctx)
             except Failure as e:
                 ok = False
@@ -250,7 +255,7 @@ def main():
                     ok = False
                     print(f"scenario {name}: {e}", file=sys.stderr)
             took = time.time() - started
-            print(f"scenario {name} [{args.screen}]: {'ok' if ok else 'FAILED'} ({took:.1f} s)")
+            print(f"scenario {name} [{ctx.screen}]: {'ok' if ok else 'FAILED'} ({took:.1f} s)")
             if ok:
                 passed += 1
                 if not args.keep:

@@ -140,11 +140,16 @@ void coordinate_fields(AppContext& ctx, const doc::Object& obj, const geom::Surf
     const int i = ctx.doc.selection.i, j = ctx.doc.selection.j;
     glm::dvec3 p = s.point(i, j);
     const char* labels[3] = {"x", "y", "z"};
-    const float w = (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x * 2) / 3 -
-                    ImGui::CalcTextSize("x").x - ImGui::GetStyle().ItemInnerSpacing.x;
+    const ImGuiStyle& st = ImGui::GetStyle();
+    const float avail = ImGui::GetContentRegionAvail().x;
+    const float label = ImGui::CalcTextSize("x").x + st.ItemInnerSpacing.x;
+    // Three in a row while each shows a whole value, else one under the other.
+    const float whole = ImGui::CalcTextSize("-00.0000").x + st.FramePadding.x * 2;
+    const float in_row = (avail - st.ItemSpacing.x * 2) / 3 - label;
+    const bool row = in_row >= whole;
     for (int a = 0; a < 3; ++a) {
-        if (a > 0) ImGui::SameLine();
-        ImGui::SetNextItemWidth(std::max(w, 30.f));
+        if (a > 0 && row) ImGui::SameLine();
+        ImGui::SetNextItemWidth(row ? in_row : std::max(avail - label, whole));
         double value = p[a];
         // One value per widget: each field is one edit (and one undo step).
         if (ImGui::InputDouble(labels[a], &value, 0, 0, "%.4f") && std::isfinite(value) &&
@@ -168,16 +173,20 @@ void weight_controls(AppContext& ctx, const doc::Object& obj, const geom::Surfac
     ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted(point_name('w', i, j, s.n_u, s.n_v).c_str());
     ImGui::SameLine();
-    const float field = 90 * ctx.ui.scale();
-    ImGui::SetNextItemWidth(
-        std::max(ImGui::GetContentRegionAvail().x - field - ImGui::GetStyle().ItemSpacing.x, 40.f));
+    const ImGuiStyle& st = ImGui::GetStyle();
+    const float field =
+        std::max(90 * ctx.ui.scale(), ImGui::CalcTextSize("-0.0000").x + st.FramePadding.x * 2);
+    // The slider and the typed field side by side while both show their values whole.
+    const float slider_w = ImGui::GetContentRegionAvail().x - field - st.ItemSpacing.x;
+    const bool side_by_side = slider_w >= ImGui::CalcTextSize("-0.000").x * 1.5f;
+    ImGui::SetNextItemWidth(side_by_side ? slider_w : ImGui::GetContentRegionAvail().x);
     const double lo = -2.0, hi = 6.0;
     double slider = w;
     if (ImGui::SliderScalar("##weight", ImGuiDataType_Double, &slider, &lo, &hi, "%.3f") &&
         slider != w)
         ctx.execute(doc::set_weight(obj.id, i, j, slider));
     if (ImGui::IsItemDeactivated()) ctx.seal();
-    ImGui::SameLine();
+    if (side_by_side) ImGui::SameLine();
     ImGui::SetNextItemWidth(field);
     double typed = w;
     // Any finite value may be typed, beyond the slider's range, zero and negative included.

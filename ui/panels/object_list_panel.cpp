@@ -44,7 +44,7 @@ void draw_object_list_panel(AppContext& ctx) {
                                   ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingStretchProp;
     if (ImGui::BeginTable("##objects", 4, flags)) {
         const float icon = ImGui::GetFrameHeight();
-        ImGui::TableSetupColumn("Shown", ImGuiTableColumnFlags_WidthFixed, icon);
+        ImGui::TableSetupColumn("##shown", ImGuiTableColumnFlags_WidthFixed, icon);
         ImGui::TableSetupColumn("Name", ImGuiTableColumnFlags_WidthStretch, 3);
         ImGui::TableSetupColumn("Kind", ImGuiTableColumnFlags_WidthStretch, 2);
         ImGui::TableSetupColumn("##delete", ImGuiTableColumnFlags_WidthFixed, icon);

@@ -168,14 +168,18 @@ void draw_tracing_panel(AppContext& ctx) {
     const doc::ParamRect dom = doc::tracing_domain(ctx.doc, *obj);
     const std::vector<const doc::Object*> patches = doc::patch_members(ctx.doc, obj->patch_group);
     const glm::dvec2 uv = indicator_params(ctx.doc, *obj);
-    ImGui::Text("%s  (%s, degree %d x %d)", obj->name.c_str(), geom::spline_type_name(s->type),
-                s->degree_u, s->degree_v);
+    ImGui::TextWrapped("%s  (%s, degree %d x %d)", obj->name.c_str(),
+                       geom::spline_type_name(s->type), s->degree_u, s->degree_v);
     if (!patches.empty()) {
-        ImGui::SameLine();
-        ImGui::TextDisabled(
-            "- patch %d of %d",
+        char part[48];
+        std::snprintf(
+            part, sizeof part, "- patch %d of %d",
             static_cast<int>(std::find(patches.begin(), patches.end(), obj) - patches.begin()) + 1,
             static_cast<int>(patches.size()));
+        // Beside the name where it fits, else on its own line (never cut).
+        ImGui::SameLine();
+        if (ImGui::GetContentRegionAvail().x < ImGui::CalcTextSize(part).x) ImGui::NewLine();
+        ImGui::TextDisabled("%s", part);
     }
 
     // Room for the v labels on the left and the u labels below the square.
@@ -324,11 +328,20 @@ void draw_tracing_panel(AppContext& ctx) {
     // Exact values, in the surface's own parameters.
     ImGui::SetCursorScreenPos(ImVec2(cur.x, b.y + label_h));
     double u = uv.x, v = uv.y;
-    ImGui::SetNextItemWidth(std::min(avail.x * 0.4f, 140 * k));
+    // Each field shows its whole value beside its - and + buttons; a narrow column (a
+    // projector in presentation mode) puts v under u rather than cutting both.
+    const ImGuiStyle& st = ImGui::GetStyle();
+    const float field = ImGui::CalcTextSize("0.00000").x + st.FramePadding.x * 2 +
+                        2 * (ImGui::GetFrameHeight() + st.ItemInnerSpacing.x);
+    const float label = ImGui::CalcTextSize("u").x + st.ItemInnerSpacing.x + st.ItemSpacing.x;
+    const bool one_row = 2 * (field + label) <= avail.x;
+    const float width = one_row ? std::max(std::min(avail.x * 0.4f, 140 * k), field)
+                                : std::max(avail.x - label, field);
+    ImGui::SetNextItemWidth(width);
     if (ImGui::InputDouble("u", &u, 0.01, 0.1, "%.4f"))
         ctx.doc.indicator.x = std::clamp(normalize_param(dom.u, u), 0.0, 1.0);
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(std::min(avail.x * 0.4f, 140 * k));
+    if (one_row) ImGui::SameLine();
+    ImGui::SetNextItemWidth(width);
     if (ImGui::InputDouble("v", &v, 0.01, 0.1, "%.4f"))
         ctx.doc.indicator.y = std::clamp(normalize_param(dom.v, v), 0.0, 1.0);
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));

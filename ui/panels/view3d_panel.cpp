@@ -251,11 +251,19 @@ void draw_help_line(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
                 ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, 0.85f)), help);
 }
 
-// Rows the slider strip needs: one when the panel is wide enough for all controls.
+// Rows the slider strip needs: one when the panel is wide enough for all controls, two
+// (move + zoom, rotate + fit), or three in a narrow view (zoom and fit on their own row), so
+// the zoom's value is never cut.
 int slider_rows(float width, float scale) {
+    const ImGuiStyle& st = ImGui::GetStyle();
     const float labels =
         ImGui::CalcTextSize("Move Rotate Zoom Fit").x + ImGui::GetStyle().ItemSpacing.x * 10;
-    return width >= labels + 7.5f * 64 * scale ? 1 : 2;
+    if (width >= labels + 7.5f * 64 * scale) return 1;
+    const float zoom = ImGui::CalcTextSize("Zoom").x + ImGui::CalcTextSize("1000%").x +
+                       st.FramePadding.x * 2 + st.ItemSpacing.x;
+    const float two = ImGui::CalcTextSize("Rotate").x + 3 * 20 * scale + zoom +
+                      st.ItemSpacing.x * 5 + st.WindowPadding.x;
+    return width >= two ? 2 : 3;
 }
 
 // One spring-loaded slider (k: 0..2 move along x/y/z, 3..5 rotate about x/y/z): while held,
@@ -330,7 +338,8 @@ void draw_sliders(AppContext& ctx, int rows) {
     const float fixed = ImGui::CalcTextSize(rows == 1 ? "Move Rotate Zoom Fit" : "Rotate Zoom").x +
                         ImGui::CalcTextSize("Fit").x + st.FramePadding.x * 2 +
                         st.ItemSpacing.x * (rows == 1 ? 11 : 7);
-    const float w = std::max((avail - fixed) / (rows == 1 ? 7.5f : 4.5f), 20.f);
+    const float w = rows == 3 ? std::max((avail - label_w - st.ItemSpacing.x * 4) / 3, 20.f)
+                              : std::max((avail - fixed) / (rows == 1 ? 7.5f : 4.5f), 20.f);
     const bool none = ctx.doc.selected() == nullptr;
 
     auto label = [&](const char* text) {
@@ -355,7 +364,7 @@ void draw_sliders(AppContext& ctx, int rows) {
     label("Move");
     for (int k = 0; k < 3; ++k) {
         transform_slider(ctx, k, w);
-        ImGui::SameLine();
+        if (k < 2 || rows != 3) ImGui::SameLine();
     }
     ImGui::EndDisabled();
     if (rows == 2) {
@@ -364,15 +373,19 @@ void draw_sliders(AppContext& ctx, int rows) {
         label("Rotate");
     } else {
         ImGui::BeginDisabled(none);
-        ImGui::TextUnformatted("Rotate");
-        ImGui::SameLine();
+        if (rows == 3)
+            label("Rotate");
+        else {
+            ImGui::TextUnformatted("Rotate");
+            ImGui::SameLine();
+        }
     }
     for (int k = 3; k < 6; ++k) {
         transform_slider(ctx, k, w);
-        ImGui::SameLine();
+        if (k < 5 || rows != 3) ImGui::SameLine();
     }
     ImGui::EndDisabled();
-    if (rows == 1) {
+    if (rows != 2) {
         zoom();
         ImGui::SameLine();
     }
