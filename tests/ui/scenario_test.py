@@ -53,6 +53,33 @@ def window_fits_the_screen(s, ctx):
     ctx.shot(s, "presentation")
     s.key("p")
     s.wait_for("normal mode", lambda r: not r.get("presentation"))
+    # F11: the whole screen, and back to the window it was.
+    windowed = (s.x0, s.y0, s.w, s.h)
+    s.key("F11")
+    r = s.wait_for("full screen", lambda r: r["window"] == [sw, sh])
+    ctx.shot(s, "fullscreen")
+    s.key("F11")
+    r = s.wait_for("the window again", lambda r: r["window"] == [windowed[2], windowed[3]])
+    # Shift+P: the 3D view alone; Esc returns.
+    s.key("shift+p")
+    s.wait_for("the 3D view alone", lambda r: "panel/Drawing" not in r["rects"])
+    s.key("Escape")
+    s.wait_for("the workstation again", lambda r: "panel/Drawing" in r["rects"])
+
+
+def window_size_is_remembered(s, ctx):
+    """A window resized and closed opens at that size next time on a screen of that size."""
+    s.xdo("windowsize", s.window, 800, 600)
+    s.wait_for("the smaller window", lambda r: r["window"] == [800, 600])
+    s.quit()
+    again = Session(s.isoparm, s.work, None)
+    try:
+        if not again.find_window():
+            raise Failure("the window did not appear the second time")
+        check((again.w, again.h) == (800, 600),
+              f"reopened at {again.w}x{again.h}, not the 800x600 it was closed at")
+    finally:
+        again.close()
 
 
 def curve_designer_after_new_curve(s, ctx):
@@ -175,6 +202,7 @@ def file_new_gives_an_empty_scene(s, ctx):
 
 SCENARIOS = [
     ("window_fits", "fig3b-weight-5.json", window_fits_the_screen),
+    ("window_size", "fig3b-weight-5.json", window_size_is_remembered),
     ("curve_designer", "fig3b-weight-5.json", curve_designer_after_new_curve),
     ("implicit_editor", "fig3b-weight-5.json", implicit_editor_after_new_implicit),
     ("control_points_after_curve", "fig8-revolution.json",
@@ -234,7 +262,8 @@ def main():
             try:
                 if not s.find_window():
                     raise Failure("the window did not appear")
-                if args.presentation and run is not window_fits_the_screen:
+                if args.presentation and run not in (window_fits_the_screen,
+                                                     window_size_is_remembered):
                     s.key("p")
                     s.wait_for("presentation mode", lambda r: r.get("presentation"))
                 run(s, ctx)
