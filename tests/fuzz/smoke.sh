@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # A short fuzzing run of every target (CI): builds with clang, seeds each corpus from assets/,
-# the shared examples and tests/fuzz/seeds, replays the regression inputs, runs each target for
+# the protocol examples (tests/protocol/examples) and tests/fuzz/seeds, replays the regression inputs, runs each target for
 # FUZZ_SECONDS and prints its figures (executions, corpus size, crashes).
 # FUZZ_BUILD names the build directory (default build-fuzz), FUZZ_TARGETS the targets to run.
 set -euo pipefail
@@ -9,7 +9,9 @@ seconds=${FUZZ_SECONDS:-20}
 build=${FUZZ_BUILD:-build-fuzz}
 targets=${FUZZ_TARGETS:-protocol scene expression}
 jobs=$(nproc 2>/dev/null || echo 2)
-cmake -S . -B "$build" -DISOPARM_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++ \
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+cmake -S . -B "$build" -DISOPARM_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++ "${launcher[@]}" \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build "$build" -j"$jobs" --target $(for t in $targets; do printf 'fuzz_%s ' "$t"; done) >/dev/null
 
@@ -20,7 +22,7 @@ export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 corpus=$build/corpus
 rm -rf "$corpus" && mkdir -p "$corpus"/{protocol,scene,expression}
 cp assets/requests/*.json "$corpus/protocol/" 2>/dev/null || true
-cp ../shared/spec/examples/*.request.json "$corpus/protocol/" 2>/dev/null || true
+cp tests/protocol/examples/*.request.json "$corpus/protocol/"
 cp assets/scenes/*.json "$corpus/scene/" 2>/dev/null || true
 for t in protocol scene expression; do
   cp tests/fuzz/seeds/$t/* "$corpus/$t/" 2>/dev/null || true

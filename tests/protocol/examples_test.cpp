@@ -21,7 +21,11 @@ using nlohmann::json;
 namespace fs = std::filesystem;
 using namespace isoparm;
 
-const fs::path examples_dir = fs::path(ISOPARM_SPEC_DIR) / "examples";
+// The worked examples travel with the tests (tests/protocol/examples, a copy of the shared
+// spec's), so a clone with nothing beside it tests itself. Where the shared spec is present
+// too, its examples that the copy lacks or holds differently are run as well.
+const fs::path own_examples = fs::path(ISOPARM_SOURCE_DIR) / "tests" / "protocol" / "examples";
+const fs::path shared_examples = fs::path(ISOPARM_SPEC_DIR) / "examples";
 
 std::string slurp(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
@@ -30,12 +34,12 @@ std::string slurp(const fs::path& p) {
     return ss.str();
 }
 
-// The example stems ("0001-evaluate-valid"), sorted.
-std::vector<std::string> example_stems() {
+// The example stems of one folder ("0001-evaluate-valid"), sorted.
+std::vector<std::string> stems_in(const fs::path& dir) {
     std::vector<std::string> stems;
-    if (!fs::is_directory(examples_dir)) return stems;
+    if (!fs::is_directory(dir)) return stems;
     const std::string suffix = ".request.json";
-    for (const auto& e : fs::directory_iterator(examples_dir)) {
+    for (const auto& e : fs::directory_iterator(dir)) {
         const std::string name = e.path().filename().string();
         if (name.size() > suffix.size() &&
             name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
@@ -43,6 +47,23 @@ std::vector<std::string> example_stems() {
     }
     std::sort(stems.begin(), stems.end());
     return stems;
+}
+
+// Every example to run: the request's path without ".request.json".
+std::vector<std::string> example_stems() {
+    std::vector<std::string> out;
+    for (const std::string& stem : stems_in(own_examples))
+        out.push_back((own_examples / stem).string());
+    for (const std::string& stem : stems_in(shared_examples)) {
+        const fs::path mine = own_examples / stem;
+        const bool same = fs::exists(mine.string() + ".request.json") &&
+                          slurp(mine.string() + ".request.json") ==
+                              slurp((shared_examples / stem).string() + ".request.json") &&
+                          slurp(mine.string() + ".response.json") ==
+                              slurp((shared_examples / stem).string() + ".response.json");
+        if (!same) out.push_back((shared_examples / stem).string());
+    }
+    return out;
 }
 
 // The largest |number| anywhere in v: the size of the control net (and of the knots).
@@ -191,16 +212,16 @@ class SpecExample : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SpecExample, HandleRequestMatchesTheReference) {
     const std::string stem = GetParam();
-    const json request = json::parse(slurp(examples_dir / (stem + ".request.json")));
-    const json expected = json::parse(slurp(examples_dir / (stem + ".response.json")));
+    const json request = json::parse(slurp(stem + ".request.json"));
+    const json expected = json::parse(slurp(stem + ".response.json"));
     expect_matches(request, expected, doc::handle_request(request));
 }
 
 TEST_P(SpecExample, TextPathGivesTheSameAnswerAndExitStatus) {
     const std::string stem = GetParam();
-    const std::string text = slurp(examples_dir / (stem + ".request.json"));
+    const std::string text = slurp(stem + ".request.json");
     const json request = json::parse(text);
-    const json expected = json::parse(slurp(examples_dir / (stem + ".response.json")));
+    const json expected = json::parse(slurp(stem + ".response.json"));
     std::istringstream in(text);
     std::ostringstream out, err;
     const int status = doc::run_protocol(in, out, err);
@@ -211,16 +232,18 @@ TEST_P(SpecExample, TextPathGivesTheSameAnswerAndExitStatus) {
 }
 
 std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
-    std::string s = info.param;
+    const fs::path p(info.param);
+    std::string s = p.filename().string();
     std::replace(s.begin(), s.end(), '-', '_');
-    return "e" + s;
+    // A shared example that the copy lacks or holds differently keeps its own name.
+    return (p.parent_path() == own_examples ? "e" : "shared_") + s;
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, SpecExample, ::testing::ValuesIn(example_stems()), test_name);
 
-TEST(ExamplesDirectory, HasTheSharedExamples) {
-    // Guards against a wrong ISOPARM_SPEC_DIR silently running zero examples.
-    EXPECT_GE(example_stems().size(), 50u) << examples_dir;
+TEST(ExamplesDirectory, HasItsOwnCopyOfTheExamples) {
+    // Guards against a moved folder silently running zero examples.
+    EXPECT_GE(stems_in(own_examples).size(), 50u) << own_examples;
 }
 
 } // namespace
