@@ -6,11 +6,12 @@
 
 int main(int argc, char** argv) {
     CLI::App app{"isoparm: an interactive workstation for learning and designing NURBS surfaces"};
-    app.set_version_flag("--version", "isoparm 0.1.0");
+    app.set_version_flag("--version", "isoparm " ISOPARM_VERSION);
     const isoparm::app::Action geom = isoparm::app::register_geom_command(app);
 #ifdef ISOPARM_HAVE_GUI
     const isoparm::app::Action render = isoparm::app::register_render_command(app);
     const isoparm::app::Action gui = isoparm::app::register_gui_command(app);
+    const isoparm::app::Action examples = isoparm::app::register_examples_command(app);
 #endif
     try {
         app.parse(argc, argv);
@@ -21,6 +22,7 @@ int main(int argc, char** argv) {
         if (sub->get_name() == "geom") return geom();
 #ifdef ISOPARM_HAVE_GUI
         if (sub->get_name() == "render") return render();
+        if (sub->get_name() == "examples") return examples();
 #endif
     }
 #ifdef ISOPARM_HAVE_GUI

@@ -9,6 +9,7 @@
 
 #include "core/doc/commands.hpp"
 #include "ui/actions.hpp"
+#include "ui/data_dir.hpp"
 #include "ui/doc_access.hpp"
 #include "ui/implicit/implicit_support.hpp"
 #include "ui/panels/panels.hpp"
@@ -32,6 +33,14 @@ void file_menu(AppContext& ctx) {
             ctx.settings.recent.clear();
             store_settings(ctx);
         }
+        ImGui::EndMenu();
+        if (!chosen.empty()) request_open_file(ctx, chosen);
+    }
+    // The paper's figures as scenes, from the installed share/isoparm (or the source tree).
+    if (begin_menu("Open Example")) {
+        std::string chosen;
+        for (const std::string& path : example_scenes())
+            if (menu_item(std::filesystem::path(path).stem().string().c_str())) chosen = path;
         ImGui::EndMenu();
         if (!chosen.empty()) request_open_file(ctx, chosen);
     }
