@@ -47,7 +47,7 @@ class Failure(Exception):
 class Session:
     """One isoparm window on a copy of `scene` (or an untitled one), with private settings."""
 
-    def __init__(self, isoparm, workdir, scene=None, extra_args=()):
+    def __init__(self, isoparm, workdir, scene=None, extra_args=(), report=True):
         self.isoparm = isoparm
         self.work = workdir
         self.scene = None
@@ -60,7 +60,8 @@ class Session:
             os.makedirs(os.path.join(workdir, sub), exist_ok=True)
             env[var] = os.path.join(workdir, sub)
         self.report_path = os.path.join(workdir, "ui-report.json")
-        env["ISOPARM_UI_REPORT"] = self.report_path
+        if report:
+            env["ISOPARM_UI_REPORT"] = self.report_path
         self.env = env
         self.stderr_path = os.path.join(workdir, "stderr.txt")
         self.stderr = open(self.stderr_path, "w")

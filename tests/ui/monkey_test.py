@@ -16,7 +16,7 @@ import sys
 import tempfile
 import time
 
-from gui_session import sanitizer_report, start_xvfb
+from gui_session import Session, sanitizer_report, start_xvfb
 
 # Keys the workstation or ImGui reacts to, and harmless others (typed into a focused field).
 PLAIN_KEYS = ["f", "p", "1", "2", "3", "c", "n", "i", "k", "Escape", "Escape", "Tab", "Return",
@@ -29,54 +29,14 @@ MENU_BAR_HEIGHT = 22
 FILE_LABEL_END = 40  # pixels: never click or move left of this inside the menu bar
 
 
-class Monkey:
+class Monkey(Session):
     def __init__(self, isoparm, scene, seconds, seed, workdir):
+        # Autosave every 5 s so the run exercises it too.
+        super().__init__(isoparm, workdir, scene, ("--autosave-seconds", "5"), report=False)
         self.rng = random.Random(seed)
         self.seconds = seconds
-        self.work = workdir
-        self.scene = os.path.join(workdir, "scene.json")
-        shutil.copyfile(scene, self.scene)
-        env = dict(os.environ)
-        # Settings, recent files and recovery files of this run stay in the temporary folder.
-        for var, sub in (("HOME", "home"), ("XDG_CONFIG_HOME", "config"),
-                         ("XDG_STATE_HOME", "state")):
-            os.makedirs(os.path.join(workdir, sub), exist_ok=True)
-            env[var] = os.path.join(workdir, sub)
-        self.env = env
-        self.stderr_path = os.path.join(workdir, "stderr.txt")
-        self.stderr = open(self.stderr_path, "w")
-        # Autosave every 5 s so the run exercises it too.
-        self.proc = subprocess.Popen([isoparm, self.scene, "--autosave-seconds", "5"], env=env,
-                                     stdout=subprocess.DEVNULL, stderr=self.stderr)
         self.events = 0
         self.counts = {}
-
-    def xdo(self, *args):
-        subprocess.run(["xdotool", *map(str, args)], check=False, env=self.env,
-                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-
-    def alive(self):
-        return self.proc.poll() is None
-
-    def find_window(self):
-        deadline = time.time() + 60
-        while time.time() < deadline:
-            if not self.alive():
-                return False
-            out = subprocess.run(["xdotool", "search", "--onlyvisible", "--name", "isoparm"],
-                                 capture_output=True, text=True, env=self.env).stdout.split()
-            if out:
-                self.window = out[0]
-                geo = subprocess.run(["xdotool", "getwindowgeometry", "--shell", self.window],
-                                     capture_output=True, text=True, env=self.env).stdout
-                vals = dict(line.split("=", 1) for line in geo.split() if "=" in line)
-                self.x0, self.y0 = int(vals.get("X", 0)), int(vals.get("Y", 0))
-                self.w, self.h = int(vals.get("WIDTH", 1440)), int(vals.get("HEIGHT", 900))
-                self.xdo("windowfocus", "--sync", self.window)
-                time.sleep(2)  # the first frames (fonts, the first fit)
-                return True
-            time.sleep(0.5)
-        return False
 
     # A random point below the menu bar, in window coordinates made screen coordinates.
     def point(self):
@@ -94,13 +54,13 @@ class Monkey:
     def press(button, times=1):
         return ["mousedown", button, "mouseup", button] * times
 
-    def click(self):
+    def random_click(self):
         x, y = self.point()
         self.count("click")
         return ["mousemove", x, y] + self.press(self.rng.choice([1, 1, 1, 3]),
                                                 self.rng.choice([1, 1, 2]))
 
-    def drag(self):
+    def random_drag(self):
         x, y = self.point()
         button = self.rng.choice([1, 1, 3])
         axis = self.rng.choice([None, None, None, "x", "y", "z", "shift"])
@@ -119,18 +79,18 @@ class Monkey:
         self.count("drag")
         return cmd
 
-    def wheel(self):
+    def random_wheel(self):
         x, y = self.point()
         self.count("wheel")
         return ["mousemove", x, y] + self.press(self.rng.choice([4, 5]), self.rng.randrange(1, 6))
 
-    def key(self):
+    def random_key(self):
         self.count("key")
         if self.rng.random() < 0.2:
             return ["key", "--clearmodifiers", self.rng.choice(CHORDS)]
         return ["key", self.rng.choice(PLAIN_KEYS)]
 
-    def menu(self):
+    def random_menu(self):
         # A label of the menu bar right of File, then a point of its drop-down, then Escape in
         # case the click landed on nothing (a menu left open would follow the mouse to File).
         x = self.x0 + self.rng.randrange(FILE_LABEL_END + 6, min(self.w, 420))
@@ -141,8 +101,8 @@ class Monkey:
                 self.press(1) + ["sleep", 0.1, "key", "Escape"])
 
     def run(self):
-        actions = [(self.click, 30), (self.drag, 25), (self.wheel, 8), (self.key, 25),
-                   (self.menu, 12)]
+        actions = [(self.random_click, 30), (self.random_drag, 25), (self.random_wheel, 8),
+                   (self.random_key, 25), (self.random_menu, 12)]
         funcs = [a for a, _ in actions]
         weights = [w for _, w in actions]
         end = time.time() + self.seconds
@@ -173,15 +133,6 @@ class Monkey:
                 if os.stat(self.scene).st_mtime_ns != before:
                     return True
         return False
-
-    def quit(self):
-        self.xdo("key", "--clearmodifiers", "ctrl+q")
-        try:
-            return self.proc.wait(timeout=20)
-        except subprocess.TimeoutExpired:
-            # Changes made after the save (an event still in flight) ask first: discard them.
-            self.proc.terminate()
-            return self.proc.wait(timeout=10)
 
 
 def main():

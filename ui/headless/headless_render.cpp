@@ -9,40 +9,12 @@
 #include "core/doc/scene_io.hpp"
 #include "ui/doc_access.hpp"
 #include "ui/headless/egl_context.hpp"
+#include "ui/headless/offscreen_target.hpp"
 #include "ui/headless/png_writer.hpp"
 #include "ui/render/gl.hpp"
 #include "ui/workstation.hpp"
 
 namespace isoparm::ui {
-
-namespace {
-
-// The picture's framebuffer: one RGBA8 colour renderbuffer.
-class Target {
-public:
-    Target(int w, int h) {
-        glGenRenderbuffers(1, &color_);
-        glBindRenderbuffer(GL_RENDERBUFFER, color_);
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, w, h);
-        glGenFramebuffers(1, &fbo_);
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_);
-        complete_ = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    }
-    ~Target() {
-        glDeleteFramebuffers(1, &fbo_);
-        glDeleteRenderbuffers(1, &color_);
-    }
-    GLuint fbo() const { return fbo_; }
-    bool complete() const { return complete_; }
-
-private:
-    GLuint fbo_ = 0, color_ = 0;
-    bool complete_ = false;
-};
-
-} // namespace
 
 std::string render_headless(const HeadlessRequest& req) {
     if (req.width < 16 || req.height < 16 || req.width > 8192 || req.height > 8192)
@@ -69,7 +41,7 @@ std::string render_headless(const HeadlessRequest& req) {
 
     std::vector<std::uint8_t> pixels(static_cast<std::size_t>(req.width) * req.height * 4);
     {
-        Target target(req.width, req.height);
+        OffscreenTarget target(req.width, req.height);
         if (!target.complete())
             return "cannot create a " + std::to_string(req.width) + "x" +
                    std::to_string(req.height) + " framebuffer";

@@ -13,6 +13,7 @@
 #include "core/doc/scene_io.hpp"
 #include "ui/doc_access.hpp"
 #include "ui/headless/egl_context.hpp"
+#include "ui/headless/offscreen_target.hpp"
 #include "ui/render/camera.hpp"
 #include "ui/render/gl.hpp"
 #include "ui/render/renderer.hpp"
@@ -37,13 +38,8 @@ void BM_Frame1440x900(benchmark::State& state, const char* scene, Gesture gestur
         return;
     }
     const int w = 1440, h = 900;
-    GLuint fbo = 0, color = 0;
-    glGenRenderbuffers(1, &color);
-    glBindRenderbuffer(GL_RENDERBUFFER, color);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, w, h);
-    glGenFramebuffers(1, &fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
+    ui::OffscreenTarget target(w, h);
+    const GLuint fbo = target.fbo();
     {
         const int msaa = ui::software_renderer() ? 0 : 4; // as the window chooses
         ui::Workstation ws({/*headless=*/true, 1.f, ui::ViewMode::workstation, msaa, {}});
@@ -83,8 +79,6 @@ void BM_Frame1440x900(benchmark::State& state, const char* scene, Gesture gestur
         state.counters["frames_per_s"] =
             benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsRate);
     }
-    glDeleteFramebuffers(1, &fbo);
-    glDeleteRenderbuffers(1, &color);
 }
 
 #define FRAME_CASE(name, scene, gesture)                                                           \
