@@ -46,8 +46,13 @@ std::unique_ptr<Command> transform_object(std::uint64_t id, const glm::dmat4& m,
 // Greville abscissa is nearest). Curves take Dir::u (Dir::v is a `schema` error at
 // "/direction"). Errors of the geometry pass through with their paths ("/knot", "/times").
 // `times` < 1 is `schema` at "/times"; a result above the size caps is `limit` at "/times".
+// A (rational) Bezier given an interior knot becomes a B-spline (NURBS): the label then ends
+// "(rational Bezier becomes NURBS)" and refinement_type_change says it.
 std::unique_ptr<Command> insert_knot(std::uint64_t id, geom::Dir dir, double t, int times = 1);
 std::unique_ptr<Command> elevate_degree(std::uint64_t id, geom::Dir dir, int times = 1);
+// "rational Bezier becomes NURBS" when an applied insert_knot / elevate_degree command changed
+// the kind of spline; empty otherwise (and for any other command).
+std::string refinement_type_change(const Command& refine_command);
 // Replaces the object with its two pieces (names "<name>.1", "<name>.2", fresh ids): the
 // first piece ([a, t]) takes the original's place in Document::objects and the second
 // ([t, b]) follows it immediately, so after a successful apply

@@ -89,6 +89,26 @@ const char* dir_name(Dir d) {
     return d == Dir::u ? "u" : "v";
 }
 
+// How the paper and the workstation's menus name a kind of spline.
+const char* type_title(geom::SplineType t) {
+    switch (t) {
+    case geom::SplineType::bezier:
+        return "Bezier";
+    case geom::SplineType::rational_bezier:
+        return "rational Bezier";
+    case geom::SplineType::bspline:
+        return "B-spline";
+    case geom::SplineType::nurbs:
+        return "NURBS";
+    }
+    return "NURBS";
+}
+
+geom::SplineType type_of(const Shape& shape) {
+    if (auto* s = std::get_if<SurfaceObject>(&shape)) return s->surface.type;
+    return std::get<CurveObject>(shape).curve.type;
+}
+
 // ---------------------------------------------------------------------------------------
 // What knot insertion and degree elevation share: the object's shape is replaced by a refined
 // one of the same kind, and a selected control point follows into the new net (forward) and
@@ -120,6 +140,12 @@ public:
         if (auto st = detail::check_size(result, "/times"); !st) return st;
 
         curve_ = is_curve(obj.shape);
+        // A (rational) Bezier has no interior knots: one inserted makes it a B-spline (NURBS).
+        // The label says so, so that the change of kind is never silent.
+        type_change_.clear();
+        if (type_of(obj.shape) != type_of(result))
+            type_change_ = std::string(type_title(type_of(obj.shape))) + " becomes " +
+                           type_title(type_of(result));
         sel_before_ = doc.selection;
         if (int* idx = selected_index(doc.selection, id_, curve_, dir_))
             *idx = forward(line_of(obj.shape, dir_), line_of(result, dir_), *idx);
@@ -144,7 +170,16 @@ public:
         return sizeof(*this) + detail::shape_bytes(before_);
     }
 
+    // "rational Bezier becomes NURBS" when the refinement changed the kind of spline, else
+    // empty (known once applied).
+    const std::string& type_change() const { return type_change_; }
+
 protected:
+    // The label's suffix for type_change(): " (rational Bezier becomes NURBS)".
+    std::string type_change_suffix() const {
+        return type_change_.empty() ? std::string() : " (" + type_change_ + ")";
+    }
+
     virtual geom::Expected<geom::Surface> refine(const geom::Surface& s) const = 0;
     virtual geom::Expected<geom::Curve> refine(const geom::Curve& c) const = 0;
     // The selected point's index in the new line, and back: by default the control point
@@ -163,6 +198,7 @@ protected:
     int times_;
     const char* what_;
     bool curve_ = false;
+    std::string type_change_;
     Shape before_;
     Selection sel_before_, sel_after_;
 };
@@ -178,7 +214,7 @@ public:
         std::string s = std::string("Insert knot ") + (curve_ ? "t" : dir_name(dir_)) + " = " +
                         geom::format_number(t_);
         if (times_ > 1) s += " (" + std::to_string(times_) + " times)";
-        return s;
+        return s + type_change_suffix();
     }
 
 private:
@@ -222,7 +258,7 @@ public:
         std::string s =
             curve_ ? "Elevate degree" : std::string("Elevate degree in ") + dir_name(dir_);
         if (times_ > 1) s += " by " + std::to_string(times_);
-        return s;
+        return s + type_change_suffix();
     }
 
 private:
@@ -429,6 +465,11 @@ std::unique_ptr<Command> elevate_degree(std::uint64_t id, geom::Dir dir, int tim
 
 std::unique_ptr<Command> split_object(std::uint64_t id, geom::Dir dir, double t) {
     return std::make_unique<SplitObject>(id, dir, t);
+}
+
+std::string refinement_type_change(const Command& refine_command) {
+    if (auto* r = dynamic_cast<const RefineInPlace*>(&refine_command)) return r->type_change();
+    return {};
 }
 
 std::pair<std::uint64_t, std::uint64_t> split_piece_ids(const Command& split_command) {

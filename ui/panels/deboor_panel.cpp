@@ -32,8 +32,9 @@ ImVec4 level_color(bool u_stage, int level) {
     return {c.r, c.g, c.b, 1};
 }
 
-// One triangle, a line per point: "P1" for the control points (level 0), then "d^k_i" level
-// by level in the level's colour; levels after `upto` greyed out (not reached yet).
+// One triangle, a line per point: "P1,2" for the control points (level 0), then "d^k_i,j"
+// level by level in the level's colour (the names the 3D view labels them with,
+// deboor_point_name); levels after `upto` greyed out (not reached yet).
 void triangle_lines(const geom::DeBoorTriangle& t, bool u_stage, int row, int upto, bool rational) {
     for (std::size_t k = 0; k < t.levels.size(); ++k) {
         const int level = static_cast<int>(k);
@@ -42,12 +43,8 @@ void triangle_lines(const geom::DeBoorTriangle& t, bool u_stage, int row, int up
                                       : level_color(u_stage, u_stage ? level : level + 1);
         for (std::size_t i = 0; i < t.levels[k].size(); ++i) {
             const int index = t.first_index + static_cast<int>(i) + level;
-            // Row j of the u-stage starts from P_ij; the v-stage from the row results Q_j.
-            const std::string name =
-                k == 0 ? (u_stage ? "P" + std::to_string(index) + "," + std::to_string(row)
-                                  : "Q" + std::to_string(index))
-                       : "d" + std::to_string(level) + "," + std::to_string(index);
-            ImGui::TextColored(c, "%-6s %s", name.c_str(),
+            const std::string name = deboor_point_name(u_stage, level, index, row);
+            ImGui::TextColored(c, "%-9s %s", name.c_str(),
                                point_text(t.levels[k][i], rational).c_str());
         }
     }
@@ -69,7 +66,20 @@ void draw_deboor_panel(AppContext& ctx) {
     DeBoorPlayer& player = ctx.ui.deboor;
     const bool rational = geom::is_rational(s->type);
 
+    // The surface may have changed under the counter (degree, net, another patch): never
+    // "step 7 of 4".
+    clamp_deboor_step(ctx);
     ImGui::Checkbox("Show in 3D (D)", &ctx.doc.display.deboor);
+    // Beside the checkbox when it fits (presentation mode's narrow column: below it).
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float zoom_w = ImGui::CalcTextSize("Zoom to patch").x + style.FramePadding.x * 2;
+    if (ImGui::GetItemRectMax().x + style.ItemSpacing.x + zoom_w <=
+        ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x)
+        ImGui::SameLine();
+    if (ImGui::Button("Zoom to patch")) zoom_to_acting_patch(ctx);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Frame the %dx%d control points that act at (u, v); F fits everything",
+                          p_u + 1, p_v + 1);
     // The step buttons on a row of their own: they must fit the narrow column in
     // presentation mode too.
     if (ImGui::Button("|<")) deboor_step(ctx, -last - 1);
