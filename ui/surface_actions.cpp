@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "core/doc/commands.hpp"
+#include "core/doc/patches.hpp"
 #include "core/geom/deboor.hpp"
 #include "core/geom/knots.hpp"
 #include "ui/deboor_overlay.hpp"
@@ -182,6 +183,30 @@ void split_at_indicator(AppContext& ctx, geom::Dir dir) {
     } else {
         note_action(ctx, ctx.ui.status, true);
     }
+    ctx.seal();
+}
+
+void set_continuity(AppContext& ctx, doc::Continuity c) {
+    const bool changed = ctx.doc.continuity != c;
+    ctx.doc.continuity = c;
+    if (changed && c != doc::Continuity::off) conform_current_group(ctx);
+}
+
+void conform_current_group(AppContext& ctx) {
+    const doc::Object* obj = nullptr;
+    if (!current_surface(ctx.doc, &obj) || obj->patch_group == 0) return;
+    const std::uint64_t group = obj->patch_group;
+    if (doc::conforming_insertions(ctx.doc, group).empty()) return;
+    ctx.seal();
+    auto cmd = doc::conform_borders(group);
+    const doc::Command* applied = cmd.get();
+    if (ctx.execute(std::move(cmd)))
+        note_action(ctx,
+                    applied->label() + ": same shape, and the borders now keep " +
+                        doc::continuity_name(ctx.doc.continuity) + ".",
+                    false);
+    else
+        note_action(ctx, ctx.ui.status, true);
     ctx.seal();
 }
 

@@ -26,6 +26,14 @@ void insert_knot_at_indicator(AppContext& ctx, geom::Dir dir);
 void elevate_current(AppContext& ctx, geom::Dir dir);
 void split_at_indicator(AppContext& ctx, geom::Dir dir);
 
+// The patch structure's continuity (a setting kept with the scene, not undoable). Switched
+// to C0 or C1, the current patch group's borders that do not pair up get the knots they lack
+// (conform_current_group).
+void set_continuity(AppContext& ctx, doc::Continuity c);
+// Inserts the knots the current group's borders lack (doc::conform_borders, shape unchanged,
+// one undo step) and notes what it did; nothing when they all pair up or none can.
+void conform_current_group(AppContext& ctx);
+
 // Records the note of an action just taken (also shown in the status bar).
 void note_action(AppContext& ctx, std::string text, bool refused);
 // The note of the last action while nothing has changed the history since; null once the

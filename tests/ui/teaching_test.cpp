@@ -341,4 +341,35 @@ TEST(SurfaceActions, Fig6SplitSequenceLiveKeepsEveryBorder) {
     EXPECT_TRUE(doc::same_geometry(ctx.doc, after_first));
 }
 
+// The same sequence with continuity off, then C1 chosen afterwards (the tracing panel's
+// "Keep across borders"): the borders are paired up then, in one undo step, and said so.
+TEST(SurfaceActions, ContinuitySwitchedOnLaterPairsTheBordersUp) {
+    AppContext ctx = hill_context();
+    ctx.doc.indicator = {0.75, 0.5};
+    split_at_indicator(ctx, Dir::u);
+    const std::uint64_t group = ctx.doc.objects[0].patch_group;
+    split_at_indicator(ctx, Dir::v); // the left piece is current after the first split
+    ASSERT_EQ(ctx.doc.objects.size(), 3u);
+    auto conforming = [&] {
+        int n = 0;
+        for (const doc::SharedBorder& b : doc::shared_borders(ctx.doc, group)) n += b.conforming;
+        return n;
+    };
+    EXPECT_EQ(conforming(), 1);
+    const std::size_t steps = ctx.history.size();
+    set_continuity(ctx, doc::Continuity::c1);
+    EXPECT_EQ(ctx.doc.continuity, doc::Continuity::c1);
+    EXPECT_EQ(conforming(), 3);
+    EXPECT_EQ(ctx.history.size(), steps + 1);
+    const ActionNote* note = current_action_note(ctx);
+    ASSERT_NE(note, nullptr);
+    EXPECT_NE(note->text.find("v = 0.5 x2"), std::string::npos) << note->text;
+    // Choosing C1 again has nothing left to do.
+    set_continuity(ctx, doc::Continuity::c0);
+    set_continuity(ctx, doc::Continuity::c1);
+    EXPECT_EQ(ctx.history.size(), steps + 1);
+    ctx.history.undo(ctx.doc);
+    EXPECT_EQ(conforming(), 1);
+}
+
 } // namespace

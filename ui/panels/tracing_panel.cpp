@@ -162,7 +162,7 @@ void continuity_controls(AppContext& ctx, const doc::Object& obj) {
     for (doc::Continuity c : {doc::Continuity::off, doc::Continuity::c0, doc::Continuity::c1}) {
         ImGui::SameLine();
         if (ImGui::RadioButton(doc::continuity_name(c), ctx.doc.continuity == c))
-            ctx.doc.continuity = c;
+            set_continuity(ctx, c);
     }
     if (ctx.doc.continuity == doc::Continuity::off) return;
     const bool c1 = ctx.doc.continuity == doc::Continuity::c1;
@@ -192,6 +192,10 @@ void continuity_controls(AppContext& ctx, const doc::Object& obj) {
         ImGui::PushStyleColor(ImGuiCol_Text, warning_color(ctx));
         for (const std::string& w : why) ImGui::TextWrapped("Not kept: %s", w.c_str());
         ImGui::PopStyleColor();
+        // Borders an insertion broke later (U / V on one side) can be paired up again.
+        if (!doc::conforming_insertions(ctx.doc, obj.patch_group).empty() &&
+            ImGui::Button("Insert the knots the borders lack"))
+            conform_current_group(ctx);
     }
 }
 
