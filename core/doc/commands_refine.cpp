@@ -350,6 +350,10 @@ geom::Status refine_until_conforming(Document& doc, std::uint64_t group,
             out.summary += (o ? o->name : std::string("?")) + ": " + dir_name(k.dir) + " = " +
                            geom::format_number(k.t) +
                            (k.times > 1 ? " x" + std::to_string(k.times) : std::string());
+            // A (rational) Bezier neighbour becomes a B-spline (NURBS): never silently.
+            if (const std::string change = refinement_type_change(*out.applied.back());
+                !change.empty())
+                out.summary += ", " + change;
         }
     }
     return geom::Ok{};

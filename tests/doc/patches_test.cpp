@@ -458,6 +458,27 @@ TEST(Patches, SplitRefinesOnSoNoBorderBreaks) {
     EXPECT_TRUE(continuity_holds(doc, group, Continuity::c0, 0));
 }
 
+// A Bezier neighbour given a knot becomes a B-spline: the split's label says so.
+TEST(Patches, ABezierNeighbourRefinedSaysItBecomesABspline) {
+    Document doc;
+    Object o;
+    o.id = doc.allocate_id();
+    o.name = "sheet";
+    o.shape = SurfaceObject{make_planar_grid(4, 4, 3, 3, geom::SplineType::bezier)};
+    doc.objects.push_back(o);
+    doc.continuity = Continuity::c0;
+    History h;
+    const auto [left, right] = split(doc, h, o.id, Dir::u, 0.5);
+    EXPECT_EQ(surface_in(doc, right).type, geom::SplineType::bezier);
+    auto second = split_object(left, Dir::v, 0.5);
+    const Command* cmd = second.get();
+    ASSERT_TRUE(h.execute(doc, std::move(second)));
+    EXPECT_EQ(surface_in(doc, right).type, geom::SplineType::bspline);
+    EXPECT_NE(cmd->label().find("v = 0.5 x3, Bezier becomes B-spline"), std::string::npos)
+        << cmd->label();
+    EXPECT_EQ(conforming_borders(doc, o.id), 3);
+}
+
 // Continuity switched on after splitting: conform_borders inserts what the borders lack
 // (shape unchanged) in one undo step.
 TEST(Patches, ConformBordersAfterTheFact) {
