@@ -19,6 +19,10 @@ const char* dir_name(geom::Dir d) {
     return d == geom::Dir::u ? "u" : "v";
 }
 
+geom::Dir other_dir(geom::Dir d) {
+    return d == geom::Dir::u ? geom::Dir::v : geom::Dir::u;
+}
+
 struct Current {
     const doc::Object* object = nullptr;
     const geom::Surface* surface = nullptr;
@@ -123,6 +127,7 @@ void insert_knot_at_indicator(AppContext& ctx, geom::Dir dir) {
                     true);
         return;
     }
+    const int n = c.surface->count(dir), other = c.surface->count(other_dir(dir));
     ctx.seal();
     auto cmd = doc::insert_knot(c.object->id, dir, c.t);
     const doc::Command* applied = cmd.get();
@@ -131,9 +136,13 @@ void insert_knot_at_indicator(AppContext& ctx, geom::Dir dir) {
         ctx.seal();
         return;
     }
+    auto net = [&](int along) {
+        return dir == geom::Dir::u ? std::to_string(along) + " x " + std::to_string(other)
+                                   : std::to_string(other) + " x " + std::to_string(along);
+    };
     std::string text = "Inserted " + what + " (multiplicity " + std::to_string(before + 1) +
-                       "): same shape, one more " + (dir == geom::Dir::u ? "column" : "row") +
-                       " of control points.";
+                       "): same shape, the net grows from " + net(n) + " to " + net(n + 1) +
+                       " points.";
     // The command is in the history now: its record still answers.
     if (const std::string change = doc::refinement_type_change(*applied); !change.empty())
         text += " The " + change + ": a Bezier surface has no interior knots.";
@@ -200,12 +209,16 @@ void conform_current_group(AppContext& ctx) {
     ctx.seal();
     auto cmd = doc::conform_borders(group);
     const doc::Command* applied = cmd.get();
-    if (ctx.execute(std::move(cmd)))
+    if (ctx.execute(std::move(cmd))) {
+        const std::vector<doc::SharedBorder> borders = doc::shared_borders(ctx.doc, group);
+        const auto paired = std::count_if(borders.begin(), borders.end(),
+                                          [](const doc::SharedBorder& b) { return b.conforming; });
         note_action(ctx,
-                    applied->label() + ": same shape, and the borders now keep " +
-                        doc::continuity_name(ctx.doc.continuity) + ".",
+                    applied->label() + ": same shape; " + std::to_string(paired) + " of " +
+                        std::to_string(borders.size()) + " borders pair up, so moving a point " +
+                        "keeps them " + doc::continuity_name(ctx.doc.continuity) + ".",
                     false);
-    else
+    } else
         note_action(ctx, ctx.ui.status, true);
     ctx.seal();
 }

@@ -246,6 +246,13 @@ TEST(SurfaceActions, InsertUpToTheDegreeThenRefuseShapeUnchanged) {
     for (int k = 0; k < 3; ++k) {
         EXPECT_TRUE(insert_knot_state(ctx, Dir::u).enabled) << k;
         insert_knot_at_indicator(ctx, Dir::u);
+        if (k == 0) {
+            const ActionNote* done = current_action_note(ctx);
+            ASSERT_NE(done, nullptr);
+            EXPECT_FALSE(done->refused);
+            EXPECT_NE(done->text.find("grows from 5 x 5 to 6 x 5"), std::string::npos)
+                << done->text;
+        }
     }
     const geom::Surface& after = std::get<doc::SurfaceObject>(ctx.doc.objects[0].shape).surface;
     EXPECT_EQ(geom::multiplicity(after.knots_u, 0.25), 3);
