@@ -37,6 +37,23 @@ std::vector<KnotTick> knot_ticks(const geom::Knots& U, int p, int n);
 std::optional<std::size_t> hit_tick(const std::vector<double>& tick_px, double pixel_pos,
                                     double radius_px);
 
+// A knot tick's handle in the tracing panel reaches this far either side of the tick along
+// its edge (across, it spans the whole label strip): 9 px at scale 1 (an 18 px wide target,
+// not the 2 px line drawn), 13.5 px in presentation mode, so a knot is easy to catch.
+double knot_handle_radius(float scale);
+// The tick under the pointer among those that can move (`movable[k]`; the domain's ends
+// cannot): the nearest within radius, so a fixed end never shadows an interior knot.
+std::optional<std::size_t> hit_movable_tick(const std::vector<double>& tick_px,
+                                            const std::vector<bool>& movable, double pixel_pos,
+                                            double radius_px);
+
+// Where to put the labels of points on screen so that none covers another: each label
+// (anchors[k], sizes[k] in pixels) tries eight places around its point, `offset` pixels
+// away (right, left, above, below, then the corners), and takes the first that overlaps no
+// label placed before it; when all do, the first place. Returns top-left corners.
+std::vector<glm::dvec2> place_labels(const std::vector<glm::dvec2>& anchors,
+                                     const std::vector<glm::dvec2>& sizes, double offset);
+
 // Which labels to draw along an edge so that none overlaps: a label is kept when it is at
 // least min_gap pixels from the last kept one; the two ends are always kept (the last end
 // replaces a kept label that would crowd it). Input sorted ascending.

@@ -4,8 +4,12 @@
 #include <algorithm>
 
 #include "core/doc/commands.hpp"
+#include "core/doc/patches.hpp"
+#include "core/geom/deboor.hpp"
 #include "core/geom/knots.hpp"
+#include "ui/deboor_overlay.hpp"
 #include "ui/doc_access.hpp"
+#include "ui/render/camera.hpp"
 
 namespace isoparm::ui {
 
@@ -13,6 +17,10 @@ namespace {
 
 const char* dir_name(geom::Dir d) {
     return d == geom::Dir::u ? "u" : "v";
+}
+
+geom::Dir other_dir(geom::Dir d) {
+    return d == geom::Dir::u ? geom::Dir::v : geom::Dir::u;
 }
 
 struct Current {
@@ -88,33 +96,130 @@ ActionState split_state(const AppContext& ctx, geom::Dir dir) {
     return a;
 }
 
+void note_action(AppContext& ctx, std::string text, bool refused) {
+    ctx.ui.status = text;
+    ctx.ui.action_note = {std::move(text), refused, ctx.history.size(), ctx.history.undo_label()};
+}
+
+const ActionNote* current_action_note(const AppContext& ctx) {
+    const ActionNote& n = ctx.ui.action_note;
+    if (n.text.empty() || n.history_size != ctx.history.size() ||
+        n.undo_label != ctx.history.undo_label())
+        return nullptr;
+    return &n;
+}
+
 void insert_knot_at_indicator(AppContext& ctx, geom::Dir dir) {
     const Current c = current(ctx, dir);
     if (!c.surface) return;
+    const std::string what =
+        std::string("knot ") + dir_name(dir) + " = " + geom::format_number(c.t);
+    // Refused before the command runs, with the reason the menu gives (the command would
+    // refuse too, in the geometry's words).
+    const int before = geom::multiplicity(c.surface->knots(dir), c.t);
+    if (const ActionState state = insert_knot_state(ctx, dir); !state.enabled) {
+        // A knot of multiplicity p already leaves only C0 there (Piegl & Tiller sec. 2.3):
+        // another copy would add nothing, so insertion stops at the degree.
+        const bool full = before >= c.surface->degree(dir);
+        note_action(ctx,
+                    "Cannot insert " + what + ": " + state.why +
+                        (full ? " (the surface is only C0 there already)" : ""),
+                    true);
+        return;
+    }
+    const int n = c.surface->count(dir), other = c.surface->count(other_dir(dir));
     ctx.seal();
-    ctx.execute(doc::insert_knot(c.object->id, dir, c.t));
+    auto cmd = doc::insert_knot(c.object->id, dir, c.t);
+    const doc::Command* applied = cmd.get();
+    if (!ctx.execute(std::move(cmd))) {
+        note_action(ctx, ctx.ui.status, true);
+        ctx.seal();
+        return;
+    }
+    auto net = [&](int along) {
+        return dir == geom::Dir::u ? std::to_string(along) + " x " + std::to_string(other)
+                                   : std::to_string(other) + " x " + std::to_string(along);
+    };
+    std::string text = "Inserted " + what + " (multiplicity " + std::to_string(before + 1) +
+                       "): same shape, the net grows from " + net(n) + " to " + net(n + 1) +
+                       " points.";
+    // The command is in the history now: its record still answers.
+    if (const std::string change = doc::refinement_type_change(*applied); !change.empty())
+        text += " The " + change + ": a Bezier surface has no interior knots.";
+    note_action(ctx, text, false);
     ctx.seal();
 }
 
 void elevate_current(AppContext& ctx, geom::Dir dir) {
     const Current c = current(ctx, dir);
     if (!c.surface) return;
+    const int p = c.surface->degree(dir);
     ctx.seal();
-    ctx.execute(doc::elevate_degree(c.object->id, dir));
+    if (ctx.execute(doc::elevate_degree(c.object->id, dir)))
+        note_action(ctx,
+                    std::string("Degree in ") + dir_name(dir) + " raised from " +
+                        std::to_string(p) + " to " + std::to_string(p + 1) +
+                        ": same shape, more control points.",
+                    false);
+    else
+        note_action(ctx, ctx.ui.status, true);
     ctx.seal();
 }
 
 void split_at_indicator(AppContext& ctx, geom::Dir dir) {
     const Current c = current(ctx, dir);
     if (!c.surface) return;
+    if (const ActionState state = split_state(ctx, dir); !state.enabled) {
+        note_action(ctx, "Cannot split: " + state.why, true);
+        return;
+    }
     ctx.seal();
     // The split replaces the object (and may reallocate the list): keep its name first.
     const std::string name = c.object->name;
-    if (ctx.execute(doc::split_object(c.object->id, dir, c.t)))
-        ctx.ui.status = "Split " + name + " at " + dir_name(dir) + " = " +
-                        geom::format_number(c.t) +
-                        ": move the indicator to pick a subpatch (Surface > Continuity keeps "
-                        "borders closed)";
+    auto cmd = doc::split_object(c.object->id, dir, c.t);
+    const doc::Command* applied = cmd.get();
+    if (ctx.execute(std::move(cmd))) {
+        // The label says which neighbours were refined so the borders pair up.
+        const std::string label = applied->label();
+        // "Split at v = 0.5 (...)" -> "Split wave.1 at v = 0.5 (...)".
+        std::string text =
+            label.rfind("Split ", 0) == 0 ? "Split " + name + label.substr(5) : label;
+        text += ". Move the indicator to pick a subpatch";
+        text += ctx.doc.continuity == doc::Continuity::off
+                    ? " (Keep across borders: C0 or C1 keeps them closed or smooth)."
+                    : ".";
+        note_action(ctx, text, false);
+    } else {
+        note_action(ctx, ctx.ui.status, true);
+    }
+    ctx.seal();
+}
+
+void set_continuity(AppContext& ctx, doc::Continuity c) {
+    const bool changed = ctx.doc.continuity != c;
+    ctx.doc.continuity = c;
+    if (changed && c != doc::Continuity::off) conform_current_group(ctx);
+}
+
+void conform_current_group(AppContext& ctx) {
+    const doc::Object* obj = nullptr;
+    if (!current_surface(ctx.doc, &obj) || obj->patch_group == 0) return;
+    const std::uint64_t group = obj->patch_group;
+    if (doc::conforming_insertions(ctx.doc, group).empty()) return;
+    ctx.seal();
+    auto cmd = doc::conform_borders(group);
+    const doc::Command* applied = cmd.get();
+    if (ctx.execute(std::move(cmd))) {
+        const std::vector<doc::SharedBorder> borders = doc::shared_borders(ctx.doc, group);
+        const auto paired = std::count_if(borders.begin(), borders.end(),
+                                          [](const doc::SharedBorder& b) { return b.conforming; });
+        note_action(ctx,
+                    applied->label() + ": same shape; " + std::to_string(paired) + " of " +
+                        std::to_string(borders.size()) + " borders pair up, so moving a point " +
+                        "keeps them " + doc::continuity_name(ctx.doc.continuity) + ".",
+                    false);
+    } else
+        note_action(ctx, ctx.ui.status, true);
     ctx.seal();
 }
 
@@ -142,7 +247,29 @@ void deboor_toggle_play(AppContext& ctx, double now_seconds) {
     }
 }
 
+void clamp_deboor_step(AppContext& ctx) {
+    DeBoorPlayer& p = ctx.ui.deboor;
+    const int last = deboor_step_count(ctx);
+    if (p.step > last) p.step = last;
+    if (p.playing && p.step >= last) p.playing = false;
+}
+
+void zoom_to_acting_patch(AppContext& ctx) {
+    const doc::Object* obj = nullptr;
+    const geom::Surface* s = current_surface(ctx.doc, &obj);
+    if (!s) return;
+    const glm::dvec2 uv = indicator_params(ctx.doc, *obj);
+    const std::vector<glm::dvec3> pts =
+        deboor_acting_points(geom::deboor_surface(*s, uv.x, uv.y), s->degree_v);
+    if (pts.empty()) return;
+    const Rect& r = ctx.ui.view_rect;
+    // fit_distance stays the whole scene's: the Zoom slider then reads above 100%.
+    fit_to_points(ctx.ui.camera, pts, r.h > 0 ? static_cast<double>(r.w) / r.h : 1.6);
+    ctx.doc.display.deboor = true;
+}
+
 bool deboor_tick(AppContext& ctx, double now_seconds) {
+    clamp_deboor_step(ctx);
     DeBoorPlayer& p = ctx.ui.deboor;
     if (!p.playing) return false;
     if (now_seconds >= p.next_time) {

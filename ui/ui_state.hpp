@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -138,6 +139,17 @@ struct DeBoorPlayer {
     bool show_tab = false; // bring the de Boor tab forward once (D toggled it on)
 };
 
+// What the last teaching action at the indicator (insert, elevate, split) said: a refusal
+// and its reason, or what it did (neighbours refined, a Bezier become NURBS). The tracing
+// panel shows it under the square, where the action was taken, until the next action or
+// edit (the history then differs from the one recorded here).
+struct ActionNote {
+    std::string text;
+    bool refused = false;
+    std::size_t history_size = 0;
+    std::string undo_label;
+};
+
 // A knot tick held in the tracing panel: the run of copies it moves.
 struct KnotDrag {
     bool active = false;
@@ -191,6 +203,7 @@ struct UiState {
     bool indicator_drag = false;
     KnotDrag knot_drag;
     DeBoorPlayer deboor;
+    ActionNote action_note;
 
     NewSurfaceForm new_surface;
     FileDialog file_dialog;

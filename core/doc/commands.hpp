@@ -48,14 +48,28 @@ std::unique_ptr<Command> transform_object(std::uint64_t id, const glm::dmat4& m,
 // Greville abscissa is nearest). Curves take Dir::u (Dir::v is a `schema` error at
 // "/direction"). Errors of the geometry pass through with their paths ("/knot", "/times").
 // `times` < 1 is `schema` at "/times"; a result above the size caps is `limit` at "/times".
+// A (rational) Bezier given an interior knot becomes a B-spline (NURBS): the label then ends
+// "(rational Bezier becomes NURBS)" and refinement_type_change says it.
 std::unique_ptr<Command> insert_knot(std::uint64_t id, geom::Dir dir, double t, int times = 1);
 std::unique_ptr<Command> elevate_degree(std::uint64_t id, geom::Dir dir, int times = 1);
+// "rational Bezier becomes NURBS" when an applied insert_knot / elevate_degree command changed
+// the kind of spline; empty otherwise (and for any other command).
+std::string refinement_type_change(const Command& refine_command);
 // Replaces the object with its two pieces (names "<name>.1", "<name>.2", fresh ids): the
 // first piece ([a, t]) takes the original's place in Document::objects and the second
 // ([t, b]) follows it immediately, so after a successful apply
 // objects[index] is ".1" and objects[index + 1] is ".2". split_piece_ids gives the ids too.
 // The selection follows its control point into the piece that holds it.
+// With continuity C0 or C1 (the setting when the split is first applied; redo replays it),
+// the split also inserts knots (shape unchanged) into the neighbours, and into the pieces where
+// a neighbour has knots they lack, until every border of the pieces pairs up control point for
+// control point (patches.hpp: conforming_insertions); borders that conformed before still do.
+// The label names what was inserted; undo takes the split and those insertions back at once.
 std::unique_ptr<Command> split_object(std::uint64_t id, geom::Dir dir, double t);
+// Inserts knots into the patches of `group` until every border that knot insertion can fix
+// conforms (shape unchanged): for continuity switched on after the patches were made. Its
+// label lists the insertions ("Borders already pair up" when there were none).
+std::unique_ptr<Command> conform_borders(std::uint64_t group);
 // The ids of the two pieces made by a split_object command after it applied ({0, 0} before,
 // or for any other command). Redo gives the pieces the same ids again.
 std::pair<std::uint64_t, std::uint64_t> split_piece_ids(const Command& split_command);

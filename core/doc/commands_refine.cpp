@@ -2,7 +2,10 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <functional>
 #include <optional>
+#include <set>
+#include <tuple>
 
 #include "core/doc/commands.hpp"
 #include "core/doc/commands_common.hpp"
@@ -89,6 +92,26 @@ const char* dir_name(Dir d) {
     return d == Dir::u ? "u" : "v";
 }
 
+// How the paper and the workstation's menus name a kind of spline.
+const char* type_title(geom::SplineType t) {
+    switch (t) {
+    case geom::SplineType::bezier:
+        return "Bezier";
+    case geom::SplineType::rational_bezier:
+        return "rational Bezier";
+    case geom::SplineType::bspline:
+        return "B-spline";
+    case geom::SplineType::nurbs:
+        return "NURBS";
+    }
+    return "NURBS";
+}
+
+geom::SplineType type_of(const Shape& shape) {
+    if (auto* s = std::get_if<SurfaceObject>(&shape)) return s->surface.type;
+    return std::get<CurveObject>(shape).curve.type;
+}
+
 // ---------------------------------------------------------------------------------------
 // What knot insertion and degree elevation share: the object's shape is replaced by a refined
 // one of the same kind, and a selected control point follows into the new net (forward) and
@@ -120,6 +143,12 @@ public:
         if (auto st = detail::check_size(result, "/times"); !st) return st;
 
         curve_ = is_curve(obj.shape);
+        // A (rational) Bezier has no interior knots: one inserted makes it a B-spline (NURBS).
+        // The label says so, so that the change of kind is never silent.
+        type_change_.clear();
+        if (type_of(obj.shape) != type_of(result))
+            type_change_ = std::string(type_title(type_of(obj.shape))) + " becomes " +
+                           type_title(type_of(result));
         sel_before_ = doc.selection;
         if (int* idx = selected_index(doc.selection, id_, curve_, dir_))
             *idx = forward(line_of(obj.shape, dir_), line_of(result, dir_), *idx);
@@ -144,7 +173,16 @@ public:
         return sizeof(*this) + detail::shape_bytes(before_);
     }
 
+    // "rational Bezier becomes NURBS" when the refinement changed the kind of spline, else
+    // empty (known once applied).
+    const std::string& type_change() const { return type_change_; }
+
 protected:
+    // The label's suffix for type_change(): " (rational Bezier becomes NURBS)".
+    std::string type_change_suffix() const {
+        return type_change_.empty() ? std::string() : " (" + type_change_ + ")";
+    }
+
     virtual geom::Expected<geom::Surface> refine(const geom::Surface& s) const = 0;
     virtual geom::Expected<geom::Curve> refine(const geom::Curve& c) const = 0;
     // The selected point's index in the new line, and back: by default the control point
@@ -163,6 +201,7 @@ protected:
     int times_;
     const char* what_;
     bool curve_ = false;
+    std::string type_change_;
     Shape before_;
     Selection sel_before_, sel_after_;
 };
@@ -178,7 +217,7 @@ public:
         std::string s = std::string("Insert knot ") + (curve_ ? "t" : dir_name(dir_)) + " = " +
                         geom::format_number(t_);
         if (times_ > 1) s += " (" + std::to_string(times_) + " times)";
-        return s;
+        return s + type_change_suffix();
     }
 
 private:
@@ -222,7 +261,7 @@ public:
         std::string s =
             curve_ ? "Elevate degree" : std::string("Elevate degree in ") + dir_name(dir_);
         if (times_ > 1) s += " by " + std::to_string(times_);
-        return s;
+        return s + type_change_suffix();
     }
 
 private:
@@ -263,6 +302,86 @@ private:
 };
 
 // ---------------------------------------------------------------------------------------
+// Borders made to conform by knot insertion (shape unchanged), shared by the split and
+// conform_borders: what was inserted, for the label and for undo.
+struct Conforming {
+    std::vector<std::unique_ptr<Command>> applied; // insert_knot commands, in order
+    std::vector<std::uint64_t> objects;            // the patches refined, first refinement order
+    std::string summary;                           // "wave.2: v = 0.5 x2"
+
+    void revert(Document& doc) {
+        for (auto it = applied.rbegin(); it != applied.rend(); ++it) (*it)->revert(doc);
+    }
+    void clear() {
+        applied.clear();
+        objects.clear();
+        summary.clear();
+    }
+    std::size_t memory_bytes() const {
+        std::size_t bytes = summary.size() + objects.size() * sizeof(std::uint64_t);
+        for (const auto& c : applied) bytes += c->memory_bytes();
+        return bytes;
+    }
+};
+
+// Inserts knots, round after round, until the group's `wanted` borders conform
+// (conforming_insertions). A refusal (a size cap) reverts what this call inserted and is
+// returned. The number of rounds is bounded: a round only inserts knot values the group
+// already holds, up to the degree, so the plan soon comes back empty.
+geom::Status refine_until_conforming(Document& doc, std::uint64_t group,
+                                     const std::function<bool(const SharedBorder&)>& wanted,
+                                     Conforming& out) {
+    out.clear();
+    for (int round = 0; round < 64; ++round) {
+        const std::vector<KnotInsertion> plan = conforming_insertions(doc, group, wanted);
+        if (plan.empty()) return geom::Ok{};
+        for (const KnotInsertion& k : plan) {
+            auto cmd = insert_knot(k.object, k.dir, k.t, k.times);
+            if (auto st = cmd->apply(doc); !st) {
+                out.revert(doc);
+                out.clear();
+                return st;
+            }
+            out.applied.push_back(std::move(cmd));
+            if (std::find(out.objects.begin(), out.objects.end(), k.object) == out.objects.end())
+                out.objects.push_back(k.object);
+            const Object* o = doc.find(k.object);
+            if (!out.summary.empty()) out.summary += ", ";
+            out.summary += (o ? o->name : std::string("?")) + ": " + dir_name(k.dir) + " = " +
+                           geom::format_number(k.t) +
+                           (k.times > 1 ? " x" + std::to_string(k.times) : std::string());
+            // A (rational) Bezier neighbour becomes a B-spline (NURBS): never silently.
+            if (const std::string change = refinement_type_change(*out.applied.back());
+                !change.empty())
+                out.summary += ", " + change;
+        }
+    }
+    return geom::Ok{};
+}
+
+// ---------------------------------------------------------------------------------------
+// The group's borders made to conform where knot insertion can do it (continuity switched
+// on after the patches were made, or borders an insertion broke).
+class ConformBorders final : public Command {
+public:
+    explicit ConformBorders(std::uint64_t group) : group_(group) {}
+
+    geom::Status apply(Document& doc) override {
+        return refine_until_conforming(doc, group_, {}, done_);
+    }
+    void revert(Document& doc) override { done_.revert(doc); }
+    std::string label() const override {
+        return done_.summary.empty() ? "Borders already pair up"
+                                     : "Refine so the borders pair up (" + done_.summary + ")";
+    }
+    std::size_t memory_bytes() const override { return sizeof(*this) + done_.memory_bytes(); }
+
+private:
+    std::uint64_t group_;
+    Conforming done_;
+};
+
+// ---------------------------------------------------------------------------------------
 // Split into two pieces that keep their original parameters (through geom::split).
 class SplitObject final : public Command {
 public:
@@ -287,9 +406,13 @@ public:
         }
 
         curve_ = is_curve(obj.shape);
-        // Neighbours first: a refusal there must leave everything as it was. The selection
-        // is recorded after them, so that undo hands each refinement back the selection it made.
-        if (auto st = conform_neighbours(doc, obj); !st) return st;
+        // The setting is read once: a redo replays the split as it was made.
+        if (!mode_) mode_ = doc.continuity;
+        // Which borders conform now: the split must not leave one of them broken.
+        const std::uint64_t old_group = obj.patch_group;
+        std::set<std::tuple<std::uint64_t, std::uint64_t, int>> conformed_before;
+        for (const SharedBorder& b : shared_borders(doc, old_group))
+            if (b.conforming) conformed_before.insert({b.low, b.high, static_cast<int>(b.across)});
         sel_before_ = doc.selection;
         index_ = doc.index_of(id_);
         prev_next_id_ = doc.next_id;
@@ -312,10 +435,57 @@ public:
         before_ = std::move(obj);
         doc.objects[index_] = std::move(a);
         doc.objects.insert(doc.objects.begin() + index_ + 1, std::move(b));
+
+        // With continuity on, the borders the pieces now share with their neighbours (the new
+        // split line ends on a neighbour's border, or the pieces' edges meet a refined
+        // neighbour) get the knots they lack, on either side, so every one pairs up point for
+        // point; borders that conformed before stay so. The paper's split at u = 0.75 and then
+        // the left part at v = 0.5: the right part gains v = 0.5 to multiplicity 3.
+        conforming_.clear();
+        if (!curve_ && *mode_ != Continuity::off) {
+            auto wanted = [&](const SharedBorder& sb) {
+                const bool piece = sb.low == ids_.first || sb.low == ids_.second ||
+                                   sb.high == ids_.first || sb.high == ids_.second;
+                return piece ||
+                       conformed_before.count({sb.low, sb.high, static_cast<int>(sb.across)}) > 0;
+            };
+            if (auto st = refine_until_conforming(doc, group, wanted, conforming_); !st) {
+                revert_split(doc);
+                return st;
+            }
+        }
         return geom::Ok{};
     }
 
     void revert(Document& doc) override {
+        // The refinements after the split first, then the split itself.
+        conforming_.revert(doc);
+        revert_split(doc);
+    }
+
+    std::string label() const override {
+        std::string s = std::string("Split at ") + (curve_ ? "t" : dir_name(dir_)) + " = " +
+                        geom::format_number(t_);
+        if (conforming_.objects.empty()) return s;
+        // Neighbours refined (the pieces may be refined too: they are not counted).
+        const auto neighbours = static_cast<std::size_t>(
+            std::count_if(conforming_.objects.begin(), conforming_.objects.end(),
+                          [&](std::uint64_t id) { return id != ids_.first && id != ids_.second; }));
+        s += " (and " + std::to_string(neighbours) +
+             (neighbours == 1 ? " neighbour" : " neighbours") +
+             " refined so every border pairs up: " + conforming_.summary + ")";
+        return s;
+    }
+
+    std::size_t memory_bytes() const override {
+        return sizeof(*this) + before_.name.size() + detail::shape_bytes(before_.shape) +
+               conforming_.memory_bytes();
+    }
+
+    std::pair<std::uint64_t, std::uint64_t> ids() const { return ids_; }
+
+private:
+    void revert_split(Document& doc) {
         assert(index_ >= 0 && index_ + 1 < static_cast<int>(doc.objects.size()));
         assert(doc.objects[index_].id == ids_.first && doc.objects[index_ + 1].id == ids_.second);
         if (doc.selection == sel_after_) {
@@ -331,28 +501,8 @@ public:
         doc.objects.erase(doc.objects.begin() + index_ + 1);
         doc.objects[index_] = before_;
         doc.next_id = prev_next_id_;
-        for (auto it = conforming_.rbegin(); it != conforming_.rend(); ++it) (*it)->revert(doc);
     }
 
-    std::string label() const override {
-        std::string s = std::string("Split at ") + (curve_ ? "t" : dir_name(dir_)) + " = " +
-                        geom::format_number(t_);
-        if (!conforming_.empty())
-            s += " (and " + std::to_string(conforming_.size()) +
-                 (conforming_.size() == 1 ? " neighbour" : " neighbours") + " refined there)";
-        return s;
-    }
-
-    std::size_t memory_bytes() const override {
-        std::size_t bytes =
-            sizeof(*this) + before_.name.size() + detail::shape_bytes(before_.shape);
-        for (const auto& c : conforming_) bytes += c->memory_bytes();
-        return bytes;
-    }
-
-    std::pair<std::uint64_t, std::uint64_t> ids() const { return ids_; }
-
-private:
     // A selected control point goes to the piece on its side of t (by Greville abscissa; a
     // point exactly at t, the shared border, stays with the first piece) and there to the
     // point with the nearest Greville abscissa: the same point where the piece kept it.
@@ -367,48 +517,11 @@ private:
         *idx = nearest_greville(line_of(g > t_ ? second : first, dir_), g);
     }
 
-    // With continuity on, a subpatch's neighbours across the split line get t inserted up to
-    // their degree (shape unchanged), so that each new border pairs up control point for
-    // control point and C0 / C1 can be kept there (the paper's split at u = 0.75 and then the
-    // left part at v = 0.5: the right part gains v = 0.5 to multiplicity 3).
-    geom::Status conform_neighbours(Document& doc, const Object& obj) {
-        conforming_.clear();
-        // The setting is read once: a redo replays the split as it was made.
-        if (!mode_) mode_ = doc.continuity;
-        if (curve_ || obj.patch_group == 0 || *mode_ == Continuity::off) return geom::Ok{};
-        const ParamRect mine = surface_domain(std::get<SurfaceObject>(obj.shape).surface);
-        const Dir across = dir_ == Dir::u ? Dir::v : Dir::u;
-        auto range = [](const ParamRect& r, Dir d) { return d == Dir::u ? r.u : r.v; };
-        std::vector<std::pair<std::uint64_t, int>> todo;
-        for (const Object* m : patch_members(doc, obj.patch_group)) {
-            if (m->id == obj.id) continue;
-            const geom::Surface& ms = std::get<SurfaceObject>(m->shape).surface;
-            const ParamRect r = surface_domain(ms);
-            const bool touches = range(r, across).lo == range(mine, across).hi ||
-                                 range(r, across).hi == range(mine, across).lo;
-            const geom::Interval along = range(r, dir_);
-            if (!touches || !(along.lo < t_ && t_ < along.hi)) continue;
-            const int missing = ms.degree(dir_) - geom::multiplicity(ms.knots(dir_), t_);
-            if (missing > 0) todo.emplace_back(m->id, missing);
-        }
-        for (const auto& [id, times] : todo) {
-            auto cmd = insert_knot(id, dir_, t_, times);
-            if (auto st = cmd->apply(doc); !st) {
-                for (auto it = conforming_.rbegin(); it != conforming_.rend(); ++it)
-                    (*it)->revert(doc);
-                conforming_.clear();
-                return st;
-            }
-            conforming_.push_back(std::move(cmd));
-        }
-        return geom::Ok{};
-    }
-
     std::uint64_t id_;
     Dir dir_;
     double t_;
     bool curve_ = false;
-    std::vector<std::unique_ptr<Command>> conforming_;
+    Conforming conforming_;
     std::optional<Continuity> mode_;
     int index_ = -1;
     std::uint64_t prev_next_id_ = 0;
@@ -429,6 +542,15 @@ std::unique_ptr<Command> elevate_degree(std::uint64_t id, geom::Dir dir, int tim
 
 std::unique_ptr<Command> split_object(std::uint64_t id, geom::Dir dir, double t) {
     return std::make_unique<SplitObject>(id, dir, t);
+}
+
+std::unique_ptr<Command> conform_borders(std::uint64_t group) {
+    return std::make_unique<ConformBorders>(group);
+}
+
+std::string refinement_type_change(const Command& refine_command) {
+    if (auto* r = dynamic_cast<const RefineInPlace*>(&refine_command)) return r->type_change();
+    return {};
 }
 
 std::pair<std::uint64_t, std::uint64_t> split_piece_ids(const Command& split_command) {

@@ -265,6 +265,55 @@ std::vector<SharedBorder> shared_borders(const Document& doc, std::uint64_t grou
     return out;
 }
 
+std::vector<KnotInsertion>
+conforming_insertions(const Document& doc, std::uint64_t group,
+                      const std::function<bool(const SharedBorder&)>& wanted) {
+    std::vector<KnotInsertion> out;
+    // The largest number of copies any border asks of (object, dir, t).
+    auto need = [&](std::uint64_t object, Dir dir, double t, int times) {
+        if (times <= 0) return;
+        for (KnotInsertion& k : out)
+            if (k.object == object && k.dir == dir && k.t == t) {
+                k.times = std::max(k.times, times);
+                return;
+            }
+        out.push_back({object, dir, t, times});
+    };
+    for (const SharedBorder& b : shared_borders(doc, group)) {
+        if (b.conforming || (wanted && !wanted(b))) continue;
+        const Dir e = other(b.across);
+        const geom::Surface& sa = *surface_of(*doc.find(b.low));
+        const geom::Surface& sb = *surface_of(*doc.find(b.high));
+        const int p = sa.degree(e);
+        if (sb.degree(e) != p) continue;
+        const double lo = b.along.lo, hi = b.along.hi;
+        // A border end on a side's own domain end must already be a knot of multiplicity p
+        // there (clamped): insertion cannot add copies at the end of a domain.
+        bool fixable = true;
+        for (const geom::Surface* s : {&sa, &sb}) {
+            const geom::Interval d = side(surface_domain(*s), e);
+            for (double t : {lo, hi})
+                if ((t == d.lo || t == d.hi) && multiplicity_of(s->knots(e), t) < p)
+                    fixable = false;
+        }
+        if (!fixable) continue;
+        // Every knot value inside the border (either side's) and the two ends.
+        std::set<double> values{lo, hi};
+        for (const geom::Surface* s : {&sa, &sb})
+            for (double t : s->knots(e))
+                if (lo < t && t < hi) values.insert(t);
+        for (double t : values) {
+            const int ma = multiplicity_of(sa.knots(e), t), mb = multiplicity_of(sb.knots(e), t);
+            const int target = t == lo || t == hi ? std::max({ma, mb, p}) : std::max(ma, mb);
+            // The ends count only up to p: a clamped end has p + 1 copies and needs none more.
+            const int want = std::min(target, p);
+            need(b.low, e, t, want - ma);
+            need(b.high, e, t, want - mb);
+        }
+    }
+    return out;
+}
+
 std::vector<PointChange> keep_continuity(Document& doc, std::uint64_t id, int i, int j,
                                          Continuity mode) {
     std::vector<PointChange> changes;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -74,6 +75,27 @@ struct SharedBorder {
     int low_first = 0, high_first = 0, count = 0;
 };
 std::vector<SharedBorder> shared_borders(const Document& doc, std::uint64_t group);
+
+// A knot to insert (shape unchanged) into patch `object` along `dir`, `times` more copies.
+struct KnotInsertion {
+    std::uint64_t object = 0;
+    geom::Dir dir = geom::Dir::u;
+    double t = 0;
+    int times = 1;
+};
+
+// The knot insertions that make the group's borders pair up control point for control point
+// (SharedBorder::conforming), for the borders `wanted` accepts (all when empty): along each
+// border both sides get every knot either side has inside it, to the larger multiplicity, and
+// the border's ends to multiplicity p where they lie inside a side's domain (Boehm insertion,
+// Piegl & Tiller A5.1 / A5.4: the shape does not change). Borders whose degrees along differ,
+// or whose ends are unclamped domain ends of a side, cannot be fixed this way and are left out.
+// One round: inserting may make another border of a refined patch need knots, so callers
+// repeat until the answer is empty (it ends: only knots already in the group are inserted, up
+// to the degree). At most one entry per (object, dir, t).
+std::vector<KnotInsertion>
+conforming_insertions(const Document& doc, std::uint64_t group,
+                      const std::function<bool(const SharedBorder&)>& wanted = {});
 
 // A control point's previous state, to restore on undo.
 struct PointChange {

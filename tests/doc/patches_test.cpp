@@ -351,5 +351,158 @@ TEST(Patches, SceneKeepsGroupsAndContinuity) {
     EXPECT_EQ(unknown.error().path, "/continuity");
 }
 
+// How many of the group's borders pair up point for point (and allow C1).
+int conforming_borders(const Document& doc, std::uint64_t group, int* total = nullptr) {
+    int n = 0;
+    const auto borders = shared_borders(doc, group);
+    for (const SharedBorder& b : borders) n += b.conforming && b.c1_possible;
+    if (total) *total = static_cast<int>(borders.size());
+    return n;
+}
+
+const geom::Surface& surface_in(const Document& doc, std::uint64_t id) {
+    return std::get<SurfaceObject>(doc.find(id)->shape).surface;
+}
+
+// The paper's Fig. 6 as a lecture does it live on the 5x5 bicubic: C1 on, split at
+// u = 0.75, pick the left piece, split it at v = 0.5. Every border (3 of 3) pairs up, C1 holds
+// after a point beside a border moves (the cross-border derivatives agree), and one undo step
+// takes the second split back together with the refinement it made.
+TEST(Patches, Fig6LiveSequenceKeepsEveryBorderC1) {
+    Document doc = default_document();
+    doc.continuity = Continuity::c1;
+    History h;
+    const std::uint64_t group = doc.objects[0].id;
+    const auto [left, right] = split(doc, h, doc.objects[0].id, Dir::u, 0.75);
+    doc.selection = {left, -1, -1}; // the left piece picked
+    const Document after_first = doc;
+    const std::size_t steps = h.size();
+    auto second = split_object(left, Dir::v, 0.5);
+    const Command* cmd = second.get();
+    ASSERT_TRUE(h.execute(doc, std::move(second)));
+    EXPECT_EQ(h.size(), steps + 1); // one undo step
+    // The label says what the split did to the neighbour.
+    EXPECT_NE(cmd->label().find("1 neighbour refined"), std::string::npos) << cmd->label();
+    EXPECT_NE(cmd->label().find("v = 0.5 x2"), std::string::npos) << cmd->label();
+    int total = 0;
+    EXPECT_EQ(conforming_borders(doc, group, &total), 3);
+    EXPECT_EQ(total, 3);
+
+    // A point of the lower-left piece next to its border with the right part moves: C1 kept.
+    const auto [low, high] = split_piece_ids(*cmd);
+    const geom::Surface& ls = surface_in(doc, low);
+    h.seal();
+    ASSERT_TRUE(h.execute(doc, move_control_point(low, ls.n_u - 2, 1, {0.3, -1.2, 1.4})));
+    EXPECT_TRUE(continuity_holds(doc, group, Continuity::c1, 1e-12));
+    // The first u-derivatives agree across u = 0.75 on both parts of the border.
+    for (double v = 0.05; v < 1; v += 0.1) {
+        const std::uint64_t piece = v < 0.5 ? low : high;
+        const auto a = geom::surface_derivatives(surface_in(doc, piece), 0.75, v, 1);
+        const auto b = geom::surface_derivatives(surface_in(doc, right), 0.75, v, 1);
+        ASSERT_TRUE(a && b);
+        EXPECT_LT(glm::length(a->D[0][0] - b->D[0][0]), 1e-12) << v;
+        EXPECT_LT(glm::length(a->D[1][0] - b->D[1][0]), 1e-10) << v;
+    }
+    h.undo(doc);
+    h.undo(doc); // the split and its refinement, as one step
+    EXPECT_TRUE(same_geometry(doc, after_first));
+    EXPECT_EQ(doc.objects.size(), 2u);
+}
+
+// The split gives the pieces knots a neighbour has and they lack: the right part was given
+// v = 0.3 before the left part is split at v = 0.5.
+TEST(Patches, SplitGivesThePiecesTheNeighboursKnotsToo) {
+    Document doc = default_document();
+    doc.continuity = Continuity::c1;
+    History h;
+    const std::uint64_t group = doc.objects[0].id;
+    const auto [left, right] = split(doc, h, doc.objects[0].id, Dir::u, 0.75);
+    ASSERT_TRUE(h.execute(doc, insert_knot(right, Dir::v, 0.3)));
+    EXPECT_EQ(conforming_borders(doc, group), 0); // the knots along u = 0.75 differ
+    const geom::Surface left_before = surface_in(doc, left);
+    const auto [low, high] = split(doc, h, left, Dir::v, 0.5);
+    EXPECT_EQ(conforming_borders(doc, group), 3);
+    EXPECT_EQ(geom::multiplicity(surface_in(doc, low).knots_v, 0.3), 1);
+    EXPECT_EQ(geom::multiplicity(surface_in(doc, right).knots_v, 0.5), 3);
+    // The pieces still trace the left part exactly.
+    for (double u = 0; u <= 0.75; u += 0.075)
+        for (double v = 0; v <= 1; v += 0.1) {
+            const auto before = geom::surface_point(left_before, u, v);
+            const auto after = geom::surface_point(surface_in(doc, v <= 0.5 ? low : high), u, v);
+            ASSERT_TRUE(before && after);
+            EXPECT_LT(glm::length(*before - *after), 1e-13) << u << " " << v;
+        }
+}
+
+// A split must not break a border that conformed: three parts side by side in u, then the
+// first split at v = 0.5. The middle part gains v = 0.5 up to the degree, and so must the
+// third (its border with the middle part stays paired).
+TEST(Patches, SplitRefinesOnSoNoBorderBreaks) {
+    Document doc = default_document();
+    doc.continuity = Continuity::c0;
+    History h;
+    const std::uint64_t group = doc.objects[0].id;
+    const auto [a, rest] = split(doc, h, doc.objects[0].id, Dir::u, 0.25);
+    const auto [b, c] = split(doc, h, rest, Dir::u, 0.6);
+    EXPECT_EQ(conforming_borders(doc, group), 2);
+    split(doc, h, a, Dir::v, 0.5);
+    int total = 0;
+    EXPECT_EQ(conforming_borders(doc, group, &total), 4);
+    EXPECT_EQ(total, 4);
+    EXPECT_EQ(geom::multiplicity(surface_in(doc, b).knots_v, 0.5), 3);
+    EXPECT_EQ(geom::multiplicity(surface_in(doc, c).knots_v, 0.5), 3);
+    // A corner point of the split line moved: the C0 chain reaches the third part.
+    h.seal();
+    const geom::Surface& bs = surface_in(doc, b);
+    ASSERT_TRUE(h.execute(doc, move_control_point(b, bs.n_u - 1, 3, {0.2, 0.1, 2})));
+    EXPECT_TRUE(continuity_holds(doc, group, Continuity::c0, 0));
+}
+
+// A Bezier neighbour given a knot becomes a B-spline: the split's label says so.
+TEST(Patches, ABezierNeighbourRefinedSaysItBecomesABspline) {
+    Document doc;
+    Object o;
+    o.id = doc.allocate_id();
+    o.name = "sheet";
+    o.shape = SurfaceObject{make_planar_grid(4, 4, 3, 3, geom::SplineType::bezier)};
+    doc.objects.push_back(o);
+    doc.continuity = Continuity::c0;
+    History h;
+    const auto [left, right] = split(doc, h, o.id, Dir::u, 0.5);
+    EXPECT_EQ(surface_in(doc, right).type, geom::SplineType::bezier);
+    auto second = split_object(left, Dir::v, 0.5);
+    const Command* cmd = second.get();
+    ASSERT_TRUE(h.execute(doc, std::move(second)));
+    EXPECT_EQ(surface_in(doc, right).type, geom::SplineType::bspline);
+    EXPECT_NE(cmd->label().find("v = 0.5 x3, Bezier becomes B-spline"), std::string::npos)
+        << cmd->label();
+    EXPECT_EQ(conforming_borders(doc, o.id), 3);
+}
+
+// Continuity switched on after splitting: conform_borders inserts what the borders lack
+// (shape unchanged) in one undo step.
+TEST(Patches, ConformBordersAfterTheFact) {
+    PaperSplit p; // continuity off: only the left parts' border pairs up
+    const std::uint64_t group = p.doc.find(p.right)->patch_group;
+    EXPECT_EQ(conforming_borders(p.doc, group), 1);
+    EXPECT_EQ(conforming_insertions(p.doc, group).size(), 1u);
+    const Document before = p.doc;
+    const geom::Surface right_before = p.surface(p.right);
+    auto cmd = conform_borders(group);
+    const Command* raw = cmd.get();
+    ASSERT_TRUE(p.history.execute(p.doc, std::move(cmd)));
+    EXPECT_EQ(raw->label(),
+              "Refine so the borders pair up (" + p.doc.find(p.right)->name + ": v = 0.5 x2)");
+    EXPECT_EQ(conforming_borders(p.doc, group), 3);
+    EXPECT_TRUE(conforming_insertions(p.doc, group).empty());
+    for (double u = 0.75; u <= 1; u += 0.05)
+        for (double v = 0; v <= 1; v += 0.1)
+            EXPECT_LT(glm::length(*geom::surface_point(p.surface(p.right), u, v) -
+                                  *geom::surface_point(right_before, u, v)),
+                      1e-14);
+    p.history.undo(p.doc);
+    EXPECT_TRUE(same_geometry(p.doc, before));
+}
+
 } // namespace
 } // namespace isoparm::doc

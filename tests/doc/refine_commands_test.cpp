@@ -65,6 +65,27 @@ TEST(InsertKnotCommand, BezierBecomesBspline) {
     EXPECT_EQ(surface_of(doc, patch_id).type, geom::SplineType::bspline);
 }
 
+TEST(InsertKnotCommand, ARationalBezierBecomingNurbsSaysSo) {
+    Document doc = sample_document();
+    geom::Surface rational = surface_of(doc, patch_id);
+    rational.type = geom::SplineType::rational_bezier;
+    rational.weight(1, 1) = 3;
+    History h;
+    ASSERT_TRUE(h.execute(doc, replace_shape(patch_id, SurfaceObject{rational}, "Rational")).ok());
+    auto cmd = insert_knot(patch_id, Dir::u, 0.5);
+    const Command* insertion = cmd.get();
+    EXPECT_EQ(refinement_type_change(*insertion), ""); // not applied yet
+    ASSERT_TRUE(h.execute(doc, std::move(cmd)).ok());
+    EXPECT_EQ(surface_of(doc, patch_id).type, geom::SplineType::nurbs);
+    EXPECT_EQ(refinement_type_change(*insertion), "rational Bezier becomes NURBS");
+    EXPECT_EQ(h.undo_label(), "Insert knot u = 0.5 (rational Bezier becomes NURBS)");
+    // Already NURBS: nothing to say.
+    ASSERT_TRUE(h.execute(doc, insert_knot(patch_id, Dir::u, 0.25)).ok());
+    EXPECT_EQ(h.undo_label(), "Insert knot u = 0.25");
+    // Elevation keeps a Bezier a Bezier; other commands have no type change.
+    EXPECT_EQ(refinement_type_change(*split_object(patch_id, Dir::u, 0.5)), "");
+}
+
 TEST(InsertKnotCommand, Label) {
     Document doc = sample_document();
     History h;

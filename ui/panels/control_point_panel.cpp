@@ -199,8 +199,12 @@ void weight_controls(AppContext& ctx, const doc::Object& obj, const geom::Surfac
     const ImVec4 warn = ctx.ui.presentation ? ImVec4(0.7f, 0.25f, 0, 1) : ImVec4(1, 0.72f, 0.3f, 1);
     if (now == 0) {
         ImGui::PushStyleColor(ImGuiCol_Text, warn);
-        ImGui::TextWrapped("w = 0: this point no longer affects the surface, and the "
-                           "convex-hull property no longer holds.");
+        // With every weight >= 0 the rational basis functions are still >= 0 and sum to 1
+        // wherever the surface exists, so it stays in the hull of the points with w > 0
+        // (Piegl & Tiller sec. 4.4); only a negative weight breaks that.
+        ImGui::TextWrapped("w = 0: this point no longer pulls on the surface. The "
+                           "convex-hull property still holds while no weight is negative: "
+                           "only negative weights break it.");
         ImGui::PopStyleColor();
     } else if (now < 0) {
         ImGui::PushStyleColor(ImGuiCol_Text, warn);

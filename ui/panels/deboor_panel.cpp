@@ -32,22 +32,23 @@ ImVec4 level_color(bool u_stage, int level) {
     return {c.r, c.g, c.b, 1};
 }
 
-// One triangle, a line per point: "P1" for the control points (level 0), then "d^k_i" level
-// by level in the level's colour; levels after `upto` greyed out (not reached yet).
-void triangle_lines(const geom::DeBoorTriangle& t, bool u_stage, int row, int upto, bool rational) {
+// One triangle, a line per point: "P1,2" for the control points (level 0), then "d^k_i,j"
+// level by level in the level's colour (the names the 3D view labels them with,
+// deboor_point_name); levels after `upto` greyed out (not reached yet). While stepping
+// (`stepping`), the lines of level `current` (the one the 3D view shows large and labelled;
+// -1: none in this triangle) are marked with ">".
+void triangle_lines(const geom::DeBoorTriangle& t, bool u_stage, int row, int upto, bool rational,
+                    bool stepping, int current) {
     for (std::size_t k = 0; k < t.levels.size(); ++k) {
         const int level = static_cast<int>(k);
         const ImVec4 c = level > upto ? ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled)
                          : k == 0     ? ImGui::GetStyleColorVec4(ImGuiCol_Text)
                                       : level_color(u_stage, u_stage ? level : level + 1);
+        const char* mark = !stepping ? "" : level == current ? "> " : "  ";
         for (std::size_t i = 0; i < t.levels[k].size(); ++i) {
             const int index = t.first_index + static_cast<int>(i) + level;
-            // Row j of the u-stage starts from P_ij; the v-stage from the row results Q_j.
-            const std::string name =
-                k == 0 ? (u_stage ? "P" + std::to_string(index) + "," + std::to_string(row)
-                                  : "Q" + std::to_string(index))
-                       : "d" + std::to_string(level) + "," + std::to_string(index);
-            ImGui::TextColored(c, "%-6s %s", name.c_str(),
+            const std::string name = deboor_point_name(u_stage, level, index, row);
+            ImGui::TextColored(c, "%s%-9s %s", mark, name.c_str(),
                                point_text(t.levels[k][i], rational).c_str());
         }
     }
@@ -69,7 +70,20 @@ void draw_deboor_panel(AppContext& ctx) {
     DeBoorPlayer& player = ctx.ui.deboor;
     const bool rational = geom::is_rational(s->type);
 
+    // The surface may have changed under the counter (degree, net, another patch): never
+    // "step 7 of 4".
+    clamp_deboor_step(ctx);
     ImGui::Checkbox("Show in 3D (D)", &ctx.doc.display.deboor);
+    // Beside the checkbox when it fits (presentation mode's narrow column: below it).
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float zoom_w = ImGui::CalcTextSize("Zoom to patch").x + style.FramePadding.x * 2;
+    if (ImGui::GetItemRectMax().x + style.ItemSpacing.x + zoom_w <=
+        ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x)
+        ImGui::SameLine();
+    if (ImGui::Button("Zoom to patch")) zoom_to_acting_patch(ctx);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Frame the %dx%d control points that act at (u, v); F fits everything",
+                          p_u + 1, p_v + 1);
     // The step buttons on a row of their own: they must fit the narrow column in
     // presentation mode too.
     if (ImGui::Button("|<")) deboor_step(ctx, -last - 1);
@@ -107,6 +121,7 @@ void draw_deboor_panel(AppContext& ctx) {
     }
 
     const int upto = player.step < 0 ? last : player.step;
+    const bool stepping = player.step >= 0;
     ImGui::Separator();
     ImGui::BeginChild("##deboor_values");
     char title[128];
@@ -121,7 +136,8 @@ void draw_deboor_panel(AppContext& ctx) {
             std::snprintf(label, sizeof label, "row j = %d%s", row,
                           used ? "" : "  (not used at v)");
             if (ImGui::TreeNodeEx(label, used ? ImGuiTreeNodeFlags_DefaultOpen : 0)) {
-                triangle_lines(trace.u_stage[j], true, row, std::min(upto, p_u), rational);
+                triangle_lines(trace.u_stage[j], true, row, std::min(upto, p_u), rational, stepping,
+                               player.step <= p_u ? player.step : -1);
                 ImGui::TreePop();
             }
         }
@@ -129,7 +145,8 @@ void draw_deboor_panel(AppContext& ctx) {
     std::snprintf(title, sizeof title, "v-stage: the column curve at v = %.4g (span %d)", uv.y,
                   trace.v_stage.span);
     if (ImGui::CollapsingHeader(title, ImGuiTreeNodeFlags_DefaultOpen))
-        triangle_lines(trace.v_stage, false, -1, upto - p_u - 1, rational);
+        triangle_lines(trace.v_stage, false, -1, upto - p_u - 1, rational, stepping,
+                       player.step > p_u ? player.step - p_u - 1 : -1);
     ImGui::EndChild();
 }
 

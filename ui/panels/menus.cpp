@@ -86,7 +86,7 @@ void refine_items(AppContext& ctx) {
     if (begin_menu("Continuity across patch borders")) {
         for (doc::Continuity c : {doc::Continuity::off, doc::Continuity::c0, doc::Continuity::c1})
             if (menu_item(doc::continuity_name(c), nullptr, ctx.doc.continuity == c))
-                ctx.doc.continuity = c;
+                set_continuity(ctx, c);
         ImGui::EndMenu();
     }
 }

@@ -12,6 +12,7 @@
 #include "ui/doc_access.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/ui_report.hpp"
+#include "ui/surface_actions.hpp"
 
 namespace isoparm::ui {
 
@@ -75,6 +76,19 @@ Palette palette(const AppContext& ctx) {
     return p;
 }
 
+ImVec4 warning_color(const AppContext& ctx) {
+    return ctx.ui.presentation ? ImVec4(0.7f, 0.25f, 0, 1) : ImVec4(1, 0.72f, 0.3f, 1);
+}
+
+// The last action's note (a refusal or what an insertion / split did), wrapped to the
+// panel's width: it stays under the square until the next action or edit.
+void action_note_line(const AppContext& ctx, const ActionNote& note) {
+    ImGui::PushStyleColor(ImGuiCol_Text, note.refused ? warning_color(ctx)
+                                                      : ImGui::GetStyleColorVec4(ImGuiCol_Text));
+    ImGui::TextWrapped("%s", note.text.c_str());
+    ImGui::PopStyleColor();
+}
+
 // A knot tick strip (below the square for u, left of it for v): press a tick and drag to
 // move that knot, all its copies together, between its neighbours; the surface follows live.
 void knot_strip(AppContext& ctx, const doc::Object& obj, const geom::Surface& s, geom::Dir dir,
@@ -87,16 +101,33 @@ void knot_strip(AppContext& ctx, const doc::Object& obj, const geom::Surface& s,
     const double along = along_x ? m.x : m.y;
     const float k = ctx.ui.scale();
     KnotDrag& kd = ctx.ui.knot_drag;
-    const auto hit = hit_tick(px, along, 8 * k);
-    const bool movable = hit && ticks[*hit].interior;
-    if (ImGui::IsItemHovered() && movable) {
+    std::vector<bool> interior;
+    for (const KnotTick& t : ticks) interior.push_back(t.interior);
+    const double radius = knot_handle_radius(k);
+    const auto hit = hit_movable_tick(px, interior, along, radius);
+    const bool movable = hit.has_value();
+    if (ImGui::IsItemHovered() && movable && !ImGui::IsItemActive()) {
         ImGui::SetMouseCursor(along_x ? ImGuiMouseCursor_ResizeEW : ImGuiMouseCursor_ResizeNS);
         const KnotTick& t = ticks[*hit];
-        ImGui::SetTooltip("Drag to move knot %s%d = %s%s", along_x ? "u" : "v", t.first_index,
-                          short_number(t.value).c_str(),
-                          t.multiplicity > 1
-                              ? (" (x" + std::to_string(t.multiplicity) + ", moves as one)").c_str()
-                              : "");
+        // The handle under the pointer, so the room sees which knot is about to move.
+        const float c = static_cast<float>(px[*hit]), r = static_cast<float>(radius);
+        const ImVec2 lo = along_x ? ImVec2(c - r, strip.y) : ImVec2(strip.x, c - r);
+        const ImVec2 hi =
+            along_x ? ImVec2(c + r, strip.y + strip.h) : ImVec2(strip.x + strip.w, c + r);
+        ImDrawList* dl = ImGui::GetWindowDrawList();
+        dl->AddRectFilled(lo, hi, ImGui::GetColorU32(ImGuiCol_ButtonHovered, 0.45f), 3 * k);
+        dl->AddRect(lo, hi, ImGui::GetColorU32(ImGuiCol_ButtonActive), 3 * k, 0, 1.5f * k);
+        const char* name = along_x ? "u" : "v";
+        const std::string copies =
+            t.multiplicity > 1
+                ? " (" + std::string(name) + std::to_string(t.first_index) + " .. " + name +
+                      std::to_string(t.first_index + t.multiplicity - 1) + ", they move as one)"
+                : "";
+        ImGui::SetTooltip("Knot %s%d = %s, multiplicity %d%s\nDrag to move it between its "
+                          "neighbours %s and %s",
+                          name, t.first_index, short_number(t.value).c_str(), t.multiplicity,
+                          copies.c_str(), short_number(ticks[*hit - 1].value).c_str(),
+                          short_number(ticks[*hit + 1].value).c_str());
     }
     if (ImGui::IsItemActivated() && movable)
         kd = {true, dir, ticks[*hit].first_index, ticks[*hit].multiplicity, obj.id};
@@ -132,26 +163,41 @@ void continuity_controls(AppContext& ctx, const doc::Object& obj) {
     for (doc::Continuity c : {doc::Continuity::off, doc::Continuity::c0, doc::Continuity::c1}) {
         ImGui::SameLine();
         if (ImGui::RadioButton(doc::continuity_name(c), ctx.doc.continuity == c))
-            ctx.doc.continuity = c;
+            set_continuity(ctx, c);
     }
     if (ctx.doc.continuity == doc::Continuity::off) return;
+    const bool c1 = ctx.doc.continuity == doc::Continuity::c1;
     int held = 0;
-    std::string why;
+    std::vector<std::string> why;
     const std::vector<doc::SharedBorder> borders = doc::shared_borders(ctx.doc, obj.patch_group);
     for (const doc::SharedBorder& b : borders) {
-        if (b.conforming) {
-            ++held;
-            continue;
-        }
         const doc::Object* lo = ctx.doc.find(b.low);
         const doc::Object* hi = ctx.doc.find(b.high);
-        why += lo->name + " | " + hi->name + ": " + b.why_not + "\n";
+        const std::string pair = lo->name + " | " + hi->name + ": ";
+        if (!b.conforming) {
+            why.push_back(pair + b.why_not);
+        } else if (c1 && !b.c1_possible) {
+            // C1 across a border is a condition on the next row in, which needs both sides
+            // clamped there (Piegl & Tiller eq. 5.26); otherwise only C0 is kept.
+            why.push_back(pair + "only C0: a side is not clamped at the border");
+        } else {
+            ++held;
+        }
     }
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("%d of %d borders kept %s when a point moves", held,
                        static_cast<int>(borders.size()), doc::continuity_name(ctx.doc.continuity));
     ImGui::PopStyleColor();
-    if (!why.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("Not kept:\n%s", why.c_str());
+    // Why the others are not, in the panel itself (a tooltip would hide most of it).
+    if (!why.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, warning_color(ctx));
+        for (const std::string& w : why) ImGui::TextWrapped("Not kept: %s", w.c_str());
+        ImGui::PopStyleColor();
+        // Borders an insertion broke later (U / V on one side) can be paired up again.
+        if (!doc::conforming_insertions(ctx.doc, obj.patch_group).empty() &&
+            ImGui::Button("Insert the knots the borders lack"))
+            conform_current_group(ctx);
+    }
 }
 
 } // namespace
@@ -185,9 +231,14 @@ void draw_tracing_panel(AppContext& ctx) {
     // Room for the v labels on the left and the u labels below the square.
     const float label_w = ImGui::CalcTextSize("0.000").x + 10 * k;
     const float label_h = ImGui::GetTextLineHeight() * 2 + 8 * k;
-    const float fields_h =
-        ImGui::GetFrameHeightWithSpacing() * 2 + ImGui::GetTextLineHeightWithSpacing() * 3;
+    const ActionNote* note = current_action_note(ctx);
     const ImVec2 avail = ImGui::GetContentRegionAvail();
+    // The note's wrapped height is kept free below the square so it is seen without scrolling.
+    const float note_h = note ? ImGui::CalcTextSize(note->text.c_str(), nullptr, false, avail.x).y +
+                                    ImGui::GetStyle().ItemSpacing.y
+                              : 0.f;
+    const float fields_h =
+        ImGui::GetFrameHeightWithSpacing() * 2 + ImGui::GetTextLineHeightWithSpacing() * 3 + note_h;
     const float side =
         std::max(std::min(avail.x - label_w - 12 * k, avail.y - label_h - fields_h), 60.f * k);
     const ImVec2 cur = ImGui::GetCursorScreenPos();
@@ -344,6 +395,7 @@ void draw_tracing_panel(AppContext& ctx) {
     ImGui::SetNextItemWidth(width);
     if (ImGui::InputDouble("v", &v, 0.01, 0.1, "%.4f"))
         ctx.doc.indicator.y = std::clamp(normalize_param(dom.v, v), 0.0, 1.0);
+    if (note) action_note_line(ctx, *note);
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("knots u: %s", knot_vector_text(s->knots_u).c_str());
     ImGui::TextWrapped("knots v: %s", knot_vector_text(s->knots_v).c_str());

@@ -15,7 +15,10 @@
 
 #include "core/doc/commands.hpp"
 #include "core/doc/commands_curve.hpp"
+#include "core/geom/deboor.hpp"
 #include "ui/actions.hpp"
+#include "ui/canvas_map.hpp"
+#include "ui/deboor_overlay.hpp"
 #include "ui/contrast.hpp"
 #include "ui/doc_access.hpp"
 #include "ui/panels/panels.hpp"
@@ -193,6 +196,46 @@ void draw_labels(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
             dl->AddText(ImVec2(at.x + 1, at.y + 1), shadow, label.c_str());
             dl->AddText(at, text, label.c_str());
         }
+}
+
+// The names of the current de Boor level's points (the de Boor tab's names), beside them in
+// the level's colour: the lecture can say "d^2_3,1" and the room finds it.
+void draw_deboor_labels(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
+    const doc::Document& d = ctx.doc;
+    if (!d.display.deboor || ctx.ui.deboor.step < 0) return;
+    const doc::Object* obj = nullptr;
+    const geom::Surface* s = current_surface(d, &obj);
+    if (!s) return;
+    const glm::dvec2 uv = indicator_params(d, *obj);
+    const std::vector<DeBoorLabel> labels = deboor_step_labels(
+        geom::deboor_surface(*s, uv.x, uv.y), s->degree_u, s->degree_v, ctx.ui.deboor.step);
+    const glm::dmat4 m = view_projection(ctx.ui.camera, vp.aspect());
+    std::vector<const DeBoorLabel*> shown;
+    std::vector<glm::dvec2> anchors, sizes;
+    for (const DeBoorLabel& l : labels) {
+        const Projected p = project(m, vp, glm::dvec3(l.position));
+        if (!p.visible) continue;
+        const ImVec2 ts = ImGui::CalcTextSize(l.text.c_str());
+        shown.push_back(&l);
+        anchors.push_back(p.pixel);
+        sizes.push_back({ts.x + 6.0 * ctx.ui.scale(), ts.y + 2.0 * ctx.ui.scale()});
+    }
+    // On a dark plate, clear of each other: the points of a level sit close together.
+    const float k = ctx.ui.scale();
+    const std::vector<glm::dvec2> at = place_labels(anchors, sizes, 9.0 * k);
+    for (std::size_t n = 0; n < shown.size(); ++n) {
+        const ImVec2 lo(static_cast<float>(at[n].x), static_cast<float>(at[n].y));
+        const ImVec2 hi(lo.x + static_cast<float>(sizes[n].x),
+                        lo.y + static_cast<float>(sizes[n].y));
+        const glm::vec4& c = shown[n]->color;
+        // The level's colour, lightened toward white to read well on the plate.
+        const ImU32 text = ImGui::ColorConvertFloat4ToU32(
+            ImVec4(0.65f * c.r + 0.35f, 0.65f * c.g + 0.35f, 0.65f * c.b + 0.35f, 1));
+        dl->AddRectFilled(lo, hi, IM_COL32(10, 12, 18, 200), 3 * k);
+        dl->AddRect(lo, hi, ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, 0.6f)), 3 * k, 0,
+                    1.f * k);
+        dl->AddText(ImVec2(lo.x + 3 * k, lo.y + 1 * k), text, shown[n]->text.c_str());
+    }
 }
 
 void draw_hover_ring(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
@@ -434,6 +477,7 @@ void draw_view3d_panel(AppContext& ctx) {
     dl->PushClipRect(p0, ImVec2(p0.x + avail.x, p0.y + avail.y), true);
     report_projected_points(ctx, vp);
     draw_labels(ctx, vp, dl);
+    draw_deboor_labels(ctx, vp, dl);
     if (!ui.headless) draw_hover_ring(ctx, vp, dl);
     draw_axes(ctx, vp, dl);
     if (!bare)
