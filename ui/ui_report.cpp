@@ -16,6 +16,7 @@ namespace {
 struct Report {
     std::string path;
     std::map<std::string, std::array<float, 4>> rects;
+    std::map<std::string, double> facts;
     std::string last_written;
 };
 
@@ -42,6 +43,10 @@ void report_point(const std::string& name, float x, float y) {
     report_rect(name, x, y, 0, 0);
 }
 
+void report_fact(const std::string& name, double value) {
+    if (ui_report_enabled()) report().facts[name] = value;
+}
+
 void report_item(const std::string& name) {
     if (!ui_report_enabled()) return;
     const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
@@ -53,6 +58,8 @@ void flush_ui_report(const AppContext& ctx) {
     if (r.path.empty()) return;
     nlohmann::json j;
     for (const auto& [name, rect] : r.rects) j["rects"][name] = rect;
+    j["facts"] = nlohmann::json::object();
+    for (const auto& [name, value] : r.facts) j["facts"][name] = value;
     const ImGuiViewport* vp = ImGui::GetMainViewport();
     j["window"] = {vp->Size.x, vp->Size.y};
     j["objects"] = ctx.doc.objects.size();
@@ -65,6 +72,7 @@ void flush_ui_report(const AppContext& ctx) {
     j["control_points"] = ctx.doc.display.control_points;
     j["font_pixels"] = ImGui::GetFontSize();
     r.rects.clear(); // what the next frame draws, it reports again
+    r.facts.clear();
     std::string text = j.dump(1);
     if (text == r.last_written) return;
     // Written beside the target and renamed over it: a reader never sees half a report.

@@ -18,6 +18,8 @@ void report_item(const std::string& name);
 // A rectangle or a point (a draggable handle's centre) under `name`.
 void report_rect(const std::string& name, float x, float y, float w, float h);
 void report_point(const std::string& name, float x, float y);
+// A number a panel shows (e.g. how many patch borders are kept), under "facts".
+void report_fact(const std::string& name, double value);
 // At the end of a frame: writes the report when it differs from the last one written.
 void flush_ui_report(const AppContext& ctx);
 

@@ -189,6 +189,34 @@ def object_list_hides_and_renames(s, ctx):
     check(by_name(again, "vase").get("visible", True) is True, "Ctrl+Z did not show it again")
 
 
+def set_field(s, name, text):
+    """Clicks a number field, replaces its text and presses Enter, as a person types."""
+    x, y, w, h = s.rect(name)
+    s.click(x + w * 0.3, y + h / 2)
+    s.key("ctrl+a")
+    s.xdo("type", "--delay", "30", text)
+    s.key("Return")
+
+
+def fig6_split_sequence_keeps_c1(s, ctx):
+    """The paper's Fig. 6 done live with C1 on: split at u = 0.75, then the left part at
+    v = 0.5; every border between the three parts is kept C1."""
+    set_field(s, "tracing/u", "0.75")
+    s.key("s")
+    s.wait_for("two parts", lambda r: r["objects"] == 2)
+    s.menu("Surface", "Continuity across patch borders", "C1")
+    s.wait_for("one border kept", lambda r: r["facts"].get("borders") == 1)
+    set_field(s, "tracing/u", "0.3")
+    set_field(s, "tracing/v", "0.5")
+    s.key("shift+s")
+    r = s.wait_for("three parts", lambda r: r["objects"] == 3)
+    r = s.wait_for("the borders counted", lambda r: r["facts"].get("borders") == 3)
+    ctx.shot(s, "fig6-c1")
+    check(r["facts"]["borders_kept"] == 3,
+          f"{r['facts']['borders_kept']:.0f} of 3 borders kept C1 after the live Fig. 6 sequence")
+    check("split" in r["undo"].lower(), f"the last undo step is {r['undo']!r}, not the split")
+
+
 def file_new_gives_an_empty_scene(s, ctx):
     """File > New: an empty scene, with the new-surface dialog offered; Create adds a grid."""
     s.menu("File", "New")
@@ -211,6 +239,7 @@ SCENARIOS = [
     ("construct_refusal", "fig8-revolution.json", construct_refusal_stays_in_the_dialog),
     ("object_list", "fig8-revolution.json", object_list_hides_and_renames),
     ("file_new", "fig3b-weight-5.json", file_new_gives_an_empty_scene),
+    ("fig6_c1", "fig3b-weight-5.json", fig6_split_sequence_keeps_c1),
 ]
 
 

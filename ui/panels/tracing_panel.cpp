@@ -11,8 +11,8 @@
 #include "ui/canvas_map.hpp"
 #include "ui/doc_access.hpp"
 #include "ui/panels/panels.hpp"
-#include "ui/ui_report.hpp"
 #include "ui/surface_actions.hpp"
+#include "ui/ui_report.hpp"
 
 namespace isoparm::ui {
 
@@ -160,8 +160,13 @@ void knot_strip(AppContext& ctx, const doc::Object& obj, const geom::Surface& s,
 // The patch structure's setting (kept with the scene) and which borders it can hold.
 void continuity_controls(AppContext& ctx, const doc::Object& obj) {
     ImGui::TextUnformatted("Keep across borders:");
+    const ImGuiStyle& st = ImGui::GetStyle();
     for (doc::Continuity c : {doc::Continuity::off, doc::Continuity::c0, doc::Continuity::c1}) {
+        // Beside the label while the choice fits, else wrapped (a narrow column).
+        const float need = ImGui::GetFrameHeight() + st.ItemInnerSpacing.x +
+                           ImGui::CalcTextSize(doc::continuity_name(c)).x;
         ImGui::SameLine();
+        if (ImGui::GetContentRegionAvail().x < need) ImGui::NewLine();
         if (ImGui::RadioButton(doc::continuity_name(c), ctx.doc.continuity == c))
             set_continuity(ctx, c);
     }
@@ -184,6 +189,8 @@ void continuity_controls(AppContext& ctx, const doc::Object& obj) {
             ++held;
         }
     }
+    report_fact("borders_kept", held);
+    report_fact("borders", static_cast<double>(borders.size()));
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("%d of %d borders kept %s when a point moves", held,
                        static_cast<int>(borders.size()), doc::continuity_name(ctx.doc.continuity));
@@ -391,10 +398,12 @@ void draw_tracing_panel(AppContext& ctx) {
     ImGui::SetNextItemWidth(width);
     if (ImGui::InputDouble("u", &u, 0.01, 0.1, "%.4f"))
         ctx.doc.indicator.x = std::clamp(normalize_param(dom.u, u), 0.0, 1.0);
+    report_item("tracing/u");
     if (one_row) ImGui::SameLine();
     ImGui::SetNextItemWidth(width);
     if (ImGui::InputDouble("v", &v, 0.01, 0.1, "%.4f"))
         ctx.doc.indicator.y = std::clamp(normalize_param(dom.v, v), 0.0, 1.0);
+    report_item("tracing/v");
     if (note) action_note_line(ctx, *note);
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("knots u: %s", knot_vector_text(s->knots_u).c_str());
