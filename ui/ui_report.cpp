@@ -69,6 +69,8 @@ void flush_ui_report(const AppContext& ctx) {
     j["dirty"] = ctx.dirty();
     j["undo"] = ctx.history.can_undo() ? ctx.history.undo_label() : "";
     j["presentation"] = ctx.ui.presentation;
+    j["indicator"] = {ctx.doc.indicator.x, ctx.doc.indicator.y};
+    j["typing"] = ImGui::GetIO().WantTextInput; // a text field has the keyboard
     j["control_points"] = ctx.doc.display.control_points;
     j["font_pixels"] = ImGui::GetFontSize();
     r.rects.clear(); // what the next frame draws, it reports again

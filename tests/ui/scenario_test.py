@@ -193,21 +193,27 @@ def set_field(s, name, text):
     """Clicks a number field, replaces its text and presses Enter, as a person types."""
     x, y, w, h = s.rect(name)
     s.click(x + w * 0.3, y + h / 2)
+    s.wait_for(f"{name} to take the keyboard", lambda r: r.get("typing"))
     s.key("ctrl+a")
     s.xdo("type", "--delay", "30", text)
     s.key("Return")
+    # Enter leaves the field: the next keys are shortcuts again.
+    s.wait_for(f"{name} to let go of the keyboard", lambda r: not r.get("typing"))
 
 
 def fig6_split_sequence_keeps_c1(s, ctx):
     """The paper's Fig. 6 done live with C1 on: split at u = 0.75, then the left part at
     v = 0.5; every border between the three parts is kept C1."""
     set_field(s, "tracing/u", "0.75")
+    s.wait_for("u = 0.75", lambda r: abs(r["indicator"][0] - 0.75) < 1e-9)
     s.key("s")
     s.wait_for("two parts", lambda r: r["objects"] == 2)
     s.menu("Surface", "Continuity across patch borders", "C1")
     s.wait_for("one border kept", lambda r: r["facts"].get("borders") == 1)
     set_field(s, "tracing/u", "0.3")
     set_field(s, "tracing/v", "0.5")
+    s.wait_for("(u, v) = (0.3, 0.5)",
+               lambda r: abs(r["indicator"][0] - 0.3) < 1e-9 and abs(r["indicator"][1] - 0.5) < 1e-9)
     s.key("shift+s")
     r = s.wait_for("three parts", lambda r: r["objects"] == 3)
     r = s.wait_for("the borders counted", lambda r: r["facts"].get("borders") == 3)
