@@ -1,9 +1,12 @@
 // Reading untrusted JSON text through nlohmann's SAX interface (see json_read.hpp).
 #include "core/doc/json_read.hpp"
 
+#include "core/doc/out_of_memory.hpp"
+
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <new>
 #include <utility>
 
 namespace isoparm::doc {
@@ -326,8 +329,16 @@ geom::Expected<ReadJson> read_json(std::string_view text) {
     bool ok = false;
     try {
         ok = json::sax_parse(input.data(), input.data() + input.size(), &builder);
+    } catch (const std::bad_alloc&) {
+        // The partial tree is emptied without allocating (out_of_memory.hpp says why that
+        // matters), and a new reserve is set aside for whatever comes next.
+        release_json(builder.root);
+        arm_memory_reserve();
+        return geom::make_error_nopath(geom::ErrorCode::limit,
+                                       "not enough memory to read the input");
     } catch (const std::exception& e) {
-        // The builder never throws on purpose; allocation failure lands here.
+        // The builder never throws on purpose.
+        release_json(builder.root);
         return geom::make_error_nopath(geom::ErrorCode::limit,
                                        std::string("the input is too large: ") + e.what());
     }

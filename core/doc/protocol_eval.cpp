@@ -3,6 +3,7 @@
 
 #include "core/doc/json_geom.hpp"
 #include "core/doc/protocol_detail.hpp"
+#include "core/doc/work_budget.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/validate.hpp"
 
@@ -155,6 +156,32 @@ OpResult op_evaluate(const json& request) {
                                 "/params");
     }
     const int order = static_cast<int>(*d);
+    // The work budget before any parameter is read (work_budget.hpp).
+    const double count = static_cast<double>(params->size());
+    if (subject->is_surface) {
+        const geom::Surface& s = subject->surface;
+        const WorkEstimate cost =
+            estimate_surface_evaluation(count, s.degree_u, s.degree_v, order, normals);
+        if (geom::Status ok = spend_work(
+                cost, "/params",
+                with_thousands(count) + " parameters of a degree (" + std::to_string(s.degree_u) +
+                    ", " + std::to_string(s.degree_v) + ") surface" +
+                    (order > 0 ? " with derivatives up to " + std::to_string(order)
+                               : std::string{}) +
+                    (normals ? " and normals" : ""));
+            !ok)
+            return ok.error();
+    } else {
+        const WorkEstimate cost = estimate_curve_evaluation(count, subject->curve.degree, order);
+        if (geom::Status ok =
+                spend_work(cost, "/params",
+                           with_thousands(count) + " parameters of a degree-" +
+                               std::to_string(subject->curve.degree) + " curve" +
+                               (order > 0 ? " with derivatives up to " + std::to_string(order)
+                                          : std::string{}));
+            !ok)
+            return ok.error();
+    }
     if (subject->is_surface) {
         auto uv = surface_params(*params, subject->surface);
         if (!uv) return uv.error();

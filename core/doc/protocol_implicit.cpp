@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "core/doc/protocol_detail.hpp"
+#include "core/doc/work_budget.hpp"
 #include "core/geom/implicit/expression.hpp"
 #include "core/geom/implicit/polygonize.hpp"
 #include "core/geom/validate.hpp"
@@ -74,6 +75,16 @@ OpResult op_polygonize(const json& request) {
                 std::to_string(geom::max_evaluation_points) + " are allowed (use a larger cell)",
             "/cell");
     }
+
+    const auto instructions = static_cast<double>(program->instruction_count());
+    const WorkEstimate cost = estimate_polygonization(points, instructions);
+    // Blame the long expression when it is long, else the fine grid.
+    if (geom::Status ok =
+            spend_work(cost, instructions > 64 ? "/implicit" : "/cell",
+                       "an expression of " + std::to_string(program->instruction_count()) +
+                           " operations on a grid of " + with_thousands(points) + " points");
+        !ok)
+        return ok.error();
 
     geom::implicit::PolygonizeOptions options;
     options.lo = corner[0];

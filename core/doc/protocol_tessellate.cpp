@@ -2,6 +2,7 @@
 #include "core/doc/json_geom.hpp"
 #include "core/doc/json_values.hpp"
 #include "core/doc/protocol_detail.hpp"
+#include "core/doc/work_budget.hpp"
 #include "core/geom/implicit/polygonize.hpp" // the mesh caps
 #include "core/geom/tessellate.hpp"
 #include "core/geom/validate.hpp"
@@ -64,6 +65,16 @@ OpResult op_tessellate(const json& request) {
                                     std::to_string(geom::max_mesh_vertices) + " are allowed",
                                 "/samples");
     }
+    const geom::Surface& surface = subject->surface;
+    const WorkEstimate cost = estimate_tessellation(
+        static_cast<double>(n[0]), static_cast<double>(n[1]), surface.degree_u, surface.degree_v);
+    if (geom::Status ok =
+            spend_work(cost, "/samples",
+                       "a " + std::to_string(n[0]) + " x " + std::to_string(n[1]) +
+                           " tessellation of a degree (" + std::to_string(surface.degree_u) + ", " +
+                           std::to_string(surface.degree_v) + ") surface");
+        !ok)
+        return ok.error();
     const geom::Mesh mesh =
         geom::tessellate(subject->surface, static_cast<int>(n[0]), static_cast<int>(n[1]));
     return mesh_to_json(mesh);

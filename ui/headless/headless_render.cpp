@@ -6,6 +6,7 @@
 #include <imgui.h>
 #include <vector>
 
+#include "core/doc/atomic_file.hpp"
 #include "core/doc/scene_io.hpp"
 #include "ui/doc_access.hpp"
 #include "ui/headless/egl_context.hpp"
@@ -48,6 +49,13 @@ std::string render_headless(const HeadlessRequest& req) {
     if (req.width < 16 || req.height < 16 || req.width > 8192 || req.height > 8192)
         return "the size " + std::to_string(req.width) + "x" + std::to_string(req.height) +
                " is outside 16x16 .. 8192x8192";
+    // The output before anything else: a directory, a device or the scene itself as output is
+    // refused before any work (and the scene is never overwritten by its own picture).
+    if (const geom::Status usable = doc::check_output_path(req.output); !usable)
+        return usable.error().message;
+    if (const geom::Status distinct = doc::check_output_is_not_input(req.output, {req.scene_path});
+        !distinct)
+        return distinct.error().message;
     // Load first: a bad scene should not cost a GL context.
     doc::Document document = doc::default_document();
     if (!req.scene_path.empty()) {

@@ -1,0 +1,66 @@
+// The work budget: every costly operation estimates its time and the size of its answer from
+// the request alone, before doing any work, and is refused (`limit`, naming what is too large)
+// when either is above the budget. docs/protocol.md ("Work budget") has the formulas.
+//
+// Why: the size caps of the spec (4096 points per direction, 10,000,000 evaluation points)
+// still let a 1 KB request ask for hours of work or gigabytes of answer (a degree-4095 curve at
+// 10,000 parameters, 10,000,000 parameters with derivatives). The budget is about 10 s of work
+// and 1 GiB of memory on a 2-core machine.
+#pragma once
+
+#include <string>
+
+#include "core/geom/status.hpp"
+
+namespace isoparm::doc {
+
+// Work is counted in "basis steps": one multiply-add of a basis-function recurrence or of a
+// weighted control-point sum (or one instruction of an implicit expression at one grid point).
+// This machine does about 1e8 per second through the protocol (measured: a degree-4095 curve,
+// (p + 1)^2 = 16.8 million steps per parameter, takes 0.15 s), so 1e9 is about 10 s.
+inline constexpr double max_work_steps = 1.0e9;
+// The answer is counted in numbers (a coordinate, an index, a null); each costs about 64 bytes
+// while it is built (the JSON tree, then its text), so 16,000,000 numbers is about 1 GiB.
+inline constexpr double max_answer_numbers = 16.0e6;
+inline constexpr double bytes_per_answer_number = 64;
+
+struct WorkEstimate {
+    double steps = 0;          // basis steps
+    double answer_numbers = 0; // numbers in the answer
+};
+
+// The estimates of the costly operations.
+// Evaluating a curve of degree p at `count` parameters with derivatives up to d.
+WorkEstimate estimate_curve_evaluation(double count, int p, int d);
+// Evaluating a surface of degrees (p, q) at `count` parameters, derivatives up to d, normals.
+WorkEstimate estimate_surface_evaluation(double count, int p, int q, int d, bool normals);
+// Tessellating a surface of degrees (p, q) on an n_u x n_v grid.
+WorkEstimate estimate_tessellation(double n_u, double n_v, int p, int q);
+// Polygonizing an expression of `instructions` (after folding) on a grid of `grid_points`.
+WorkEstimate estimate_polygonization(double grid_points, double instructions);
+
+// Checks `cost` against the budget and against what the current batch has left, and charges
+// the batch. Refused: `limit` at `path`, the message naming `what` ("12,000,000 parameters of
+// a degree-4095 curve") and by how much it is over.
+geom::Status spend_work(const WorkEstimate& cost, const std::string& path, const std::string& what);
+
+// While one lives, requests share one budget of `steps` (a batch of eight requests of 8 s each
+// stops at the second); without one, each request has the whole budget. Nested inside another,
+// it spends from the outer one too (never more than the outer has left).
+class BatchBudget {
+public:
+    explicit BatchBudget(double steps = max_work_steps);
+    BatchBudget(const BatchBudget&) = delete;
+    BatchBudget& operator=(const BatchBudget&) = delete;
+    ~BatchBudget();
+
+private:
+    double saved_left_;
+    bool saved_active_;
+    double start_left_;
+};
+
+// "12,000,000" (for messages).
+std::string with_thousands(double value);
+
+} // namespace isoparm::doc

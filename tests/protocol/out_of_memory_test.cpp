@@ -1,0 +1,242 @@
+// Out of memory is an error, not an abort (issue 14, item 6). Under `ulimit -v` every run
+// that hit the cap used to end in SIGABRT: nlohmann::json's destructor allocates while the
+// first std::bad_alloc unwinds. These tests run the protocol and the scene loader in a child
+// process under RLIMIT_AS; a child killed by a signal fails the test.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "core/doc/out_of_memory.hpp"
+#include "core/doc/protocol.hpp"
+#include "core/doc/scene_io.hpp"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool address_sanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool address_sanitizer = true;
+#else
+constexpr bool address_sanitizer = false;
+#endif
+#else
+constexpr bool address_sanitizer = false;
+#endif
+
+// The address space this process uses now, in bytes.
+std::size_t address_space_in_use() {
+    std::ifstream statm("/proc/self/statm");
+    std::size_t pages = 0;
+    statm >> pages;
+    return pages * static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+}
+
+struct ChildResult {
+    bool exited = false; // false: killed by a signal (the old SIGABRT)
+    int status = -1;
+    std::string output;
+};
+
+// Runs `body` in a child whose address space may grow by `headroom` bytes (beyond the memory
+// reserve, out_of_memory.hpp); what the body
+// returns is its exit status and what it writes to the given stream comes back as `output`.
+ChildResult run_limited(std::size_t headroom, const std::function<int(std::ostream&)>& body) {
+    char name[] = "/tmp/isoparm-oom-XXXXXX";
+    const int fd = ::mkstemp(name);
+    if (fd < 0) return {};
+    ::close(fd);
+    const pid_t child = ::fork();
+    if (child == 0) {
+        std::ostringstream out;
+        // The reserve first, so `headroom` is what the work itself gets.
+        isoparm::doc::arm_memory_reserve();
+        const std::size_t cap = address_space_in_use() + headroom;
+        const rlimit limit{cap, cap};
+        if (::setrlimit(RLIMIT_AS, &limit) != 0) ::_exit(100);
+        const int status = body(out);
+        {
+            // The limit is lifted for reporting only (the soft limit may be raised up to the
+            // hard one: set both above, so keep the text small instead).
+            std::ofstream file(name, std::ios::binary);
+            file << out.str();
+        }
+        ::_exit(status);
+    }
+    ChildResult r;
+    int status = 0;
+    if (child > 0 && ::waitpid(child, &status, 0) == child) {
+        r.exited = WIFEXITED(status);
+        r.status = r.exited ? WEXITSTATUS(status) : WTERMSIG(status);
+    }
+    std::ifstream in(name, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    r.output = text.str();
+    std::remove(name);
+    return r;
+}
+
+std::string bicubic_tessellation(int samples) {
+    json points = json::array();
+    for (int i = 0; i < 4; ++i) {
+        json row = json::array();
+        for (int j = 0; j < 4; ++j) row.push_back({i, j, (i * j) % 3});
+        points.push_back(row);
+    }
+    return json{{"op", "tessellate"},
+                {"surface", {{"type", "bezier"}, {"degree", {3, 3}}, {"points", points}}},
+                {"samples", {samples, samples}}}
+        .dump();
+}
+
+const std::string small_request =
+    R"({"op": "basis", "degree": 2, "knots": [0,0,0,1,1,1], "param": 0.5})";
+
+constexpr std::size_t mib = std::size_t{1} << 20;
+
+TEST(OutOfMemory, ReleaseJsonEmptiesATreeWithoutChangingItsType) {
+    json tree = json::parse(R"({"a": [1, [2, [3, {"b": [4]}]]], "c": "text"})");
+    isoparm::doc::release_json(tree);
+    EXPECT_TRUE(tree.is_object());
+    EXPECT_TRUE(tree.empty());
+}
+
+TEST(OutOfMemory, ARequestThatRunsOutIsALimitErrorNotAnAbort) {
+    if (address_sanitizer) GTEST_SKIP() << "RLIMIT_AS and AddressSanitizer do not mix";
+    // A 600 x 600 tessellation needs ~250 MB; give it 100 MB.
+    const std::string request = bicubic_tessellation(600);
+    const ChildResult r = run_limited(100 * mib, [&](std::ostream& out) {
+        std::ostringstream err;
+        return isoparm::doc::run_protocol_text(request, out, err);
+    });
+    ASSERT_TRUE(r.exited) << "killed by signal " << r.status;
+    EXPECT_EQ(r.status, 1);
+    const json answer = json::parse(r.output);
+    EXPECT_EQ(answer["ok"], false);
+    EXPECT_EQ(answer["error"]["code"], "limit");
+    EXPECT_NE(answer["error"]["message"].get<std::string>().find("memory"), std::string::npos);
+}
+
+TEST(OutOfMemory, ABatchContinuesAfterAnElementRunsOut) {
+    if (address_sanitizer) GTEST_SKIP() << "RLIMIT_AS and AddressSanitizer do not mix";
+    const std::string batch = "[" + bicubic_tessellation(600) + ", " + small_request + ", " +
+                              bicubic_tessellation(600) + ", " + small_request + "]";
+    const ChildResult r = run_limited(100 * mib, [&](std::ostream& out) {
+        std::ostringstream err;
+        return isoparm::doc::run_protocol_text(batch, out, err);
+    });
+    ASSERT_TRUE(r.exited) << "killed by signal " << r.status;
+    EXPECT_EQ(r.status, 1);
+    const json answers = json::parse(r.output);
+    ASSERT_EQ(answers.size(), 4u);
+    EXPECT_EQ(answers[0]["error"]["code"], "limit");
+    EXPECT_EQ(answers[1]["ok"], true);
+    EXPECT_EQ(answers[2]["error"]["code"], "limit"); // the reserve was set aside again
+    EXPECT_EQ(answers[3]["ok"], true);
+}
+
+TEST(OutOfMemory, ParsingAHugeInputThatRunsOutIsALimitError) {
+    if (address_sanitizer) GTEST_SKIP() << "RLIMIT_AS and AddressSanitizer do not mix";
+    // 40 MB of text, ~20 million values: the tree alone needs ~320 MB, and nlohmann's destructor
+    // would need another 16 bytes per element to free it.
+    std::string text = "[0";
+    text.reserve(40 * mib);
+    while (text.size() < 40 * mib) text += ",0";
+    text += "]";
+    const ChildResult r = run_limited(150 * mib, [&](std::ostream& out) {
+        std::ostringstream err;
+        return isoparm::doc::run_protocol_text(std::move(text), out, err);
+    });
+    ASSERT_TRUE(r.exited) << "killed by signal " << r.status;
+    EXPECT_EQ(r.status, 1);
+    const json answer = json::parse(r.output);
+    EXPECT_EQ(answer["error"]["code"], "limit");
+}
+
+// One 600 x 600 B-spline surface: ~13 MB of text, far more once parsed.
+void write_big_scene(const fs::path& file) {
+    const int n = 600;
+    std::string knots = "[0, 0, 0, 0";
+    for (int k = 1; k <= n - 4; ++k) knots += ", " + std::to_string(k);
+    for (int k = 0; k < 4; ++k) knots += ", " + std::to_string(n - 3);
+    knots += "]";
+    std::string points = "[";
+    for (int i = 0; i < n; ++i) {
+        points += i ? ", [" : "[";
+        for (int j = 0; j < n; ++j)
+            points +=
+                (j ? ", [" : "[") + std::to_string(i) + ".5, " + std::to_string(j) + ".25, 0.125]";
+        points += "]";
+    }
+    points += "]";
+    std::ofstream(file, std::ios::binary)
+        << R"({"format": "isoparm-scene", "version": 1, "objects": [{"id": 1, )"
+        << R"("name": "big", "kind": "surface", "surface": {"type": "bspline", )"
+        << R"("degree": [3, 3], "knots": [)" << knots << ", " << knots << R"(], "points": )"
+        << points << "}}]}";
+}
+
+// The limited part of the scene test, in a freshly executed copy of this test binary: a forked
+// child inherits the heap this process freed (tens of MB after the other tests), where the
+// scene would load without the address space growing at all.
+[[noreturn]] void load_scene_under_limit(const std::string& scene, const std::string& report) {
+    isoparm::doc::arm_memory_reserve();
+    const std::size_t cap = address_space_in_use() + 30 * mib;
+    const rlimit limit{cap, cap};
+    if (::setrlimit(RLIMIT_AS, &limit) != 0) ::_exit(100);
+    const auto doc = isoparm::doc::load_scene(scene);
+    if (doc) ::_exit(2); // the limit did not bite: the test would prove nothing
+    std::ofstream(report) << doc.error().message;
+    ::_exit(doc.error().code == isoparm::geom::ErrorCode::limit ? 0 : 3);
+}
+
+TEST(OutOfMemory, LoadingASceneThatRunsOutIsALimitError) {
+    if (address_sanitizer) GTEST_SKIP() << "RLIMIT_AS and AddressSanitizer do not mix";
+    if (const char* scene = std::getenv("ISOPARM_OOM_SCENE"))
+        load_scene_under_limit(scene, std::getenv("ISOPARM_OOM_REPORT"));
+    const std::string stem =
+        (fs::temp_directory_path() / ("isoparm-oom-scene-" + std::to_string(::getpid()))).string();
+    const std::string file = stem + ".json", report = stem + ".txt";
+    constexpr std::size_t unlimited = std::size_t{1} << 40;
+    const ChildResult written = run_limited(unlimited, [&](std::ostream&) {
+        write_big_scene(file);
+        return isoparm::doc::load_scene(file) ? 0 : 1;
+    });
+    ASSERT_TRUE(written.exited && written.status == 0) << "the scene itself must be valid";
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        ::setenv("ISOPARM_OOM_SCENE", file.c_str(), 1);
+        ::setenv("ISOPARM_OOM_REPORT", report.c_str(), 1);
+        ::execl("/proc/self/exe", "/proc/self/exe",
+                "--gtest_filter=OutOfMemory.LoadingASceneThatRunsOutIsALimitError",
+                static_cast<char*>(nullptr));
+        ::_exit(101);
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    std::ifstream in(report);
+    std::stringstream message;
+    message << in.rdbuf();
+    fs::remove(file);
+    fs::remove(report);
+    ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
+    EXPECT_EQ(WEXITSTATUS(status), 0) << message.str();
+    EXPECT_NE(message.str().find("not enough memory"), std::string::npos) << message.str();
+}
+
+} // namespace
