@@ -31,6 +31,7 @@ WorkEstimate estimate_curve_evaluation(double count, int p, int d) {
     e.steps = count * (sq(p + 1.0) * orders + (p + 1.0) * orders);
     // points: 3 numbers each; derivatives: d + 1 points per parameter.
     e.answer_numbers = count * 3 * (d >= 1 ? 1 + orders : 1);
+    e.steps += e.answer_numbers * steps_per_answer_number;
     return e;
 }
 
@@ -42,6 +43,7 @@ WorkEstimate estimate_surface_evaluation(double count, int p, int q, int d, bool
     e.steps = count * ((sq(p + 1.0) + sq(q + 1.0)) * orders + (p + 1.0) * (q + 1.0) * terms);
     // points, the (d+1) x (d+1) derivative table (nulls included), normals.
     e.answer_numbers = count * 3 * (1 + (d >= 1 ? orders * orders : 0) + (normals ? 1 : 0));
+    e.steps += e.answer_numbers * steps_per_answer_number;
     return e;
 }
 
@@ -52,13 +54,14 @@ WorkEstimate estimate_tessellation(double n_u, double n_v, int p, int q) {
     e.steps = 2 * (n_u * sq(p + 1.0) + n_v * sq(q + 1.0)) + n_u * n_v * (p + 1.0) * (q + 1.0) * 3;
     // positions and normals (3 each per vertex), triangles (3 indices, two per cell).
     e.answer_numbers = n_u * n_v * 6 + (n_u - 1) * (n_v - 1) * 6;
+    e.steps += e.answer_numbers * steps_per_answer_number;
     return e;
 }
 
 WorkEstimate estimate_polygonization(double grid_points, double instructions) {
     WorkEstimate e;
     // Every grid point runs the program (and the gradient at crossings, a fraction).
-    e.steps = grid_points * std::max(1.0, instructions);
+    e.steps = grid_points * std::max(1.0, instructions) * steps_per_expression_instruction;
     e.answer_numbers = 0; // unknown in advance: the mesh caps stop it while it runs
     return e;
 }

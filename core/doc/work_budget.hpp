@@ -15,13 +15,18 @@
 namespace isoparm::doc {
 
 // Work is counted in "basis steps": one multiply-add of a basis-function recurrence or of a
-// weighted control-point sum (or one instruction of an implicit expression at one grid point).
-// This machine does about 1e8 per second through the protocol (measured: a degree-4095 curve,
-// (p + 1)^2 = 16.8 million steps per parameter, takes 0.15 s), so 1e9 is about 10 s.
+// weighted control-point sum. A 2-core machine does about 1e8 per second through the protocol
+// (measured: a degree-4095 curve, (p + 1)^2 = 16.8 million steps per parameter, takes 0.15 to
+// 0.22 s per parameter), so 1e9 is about 10 s.
 inline constexpr double max_work_steps = 1.0e9;
+// One instruction of an implicit expression at one grid point costs about 2.5 steps (sin, exp:
+// 1,000 terms on a 21^3 grid took 1.2 s), and each number of an answer about 50 (reading the
+// request and writing the text: a 1000 x 1000 tessellation, 12 million numbers, takes ~2 s).
+inline constexpr double steps_per_expression_instruction = 2.5;
+inline constexpr double steps_per_answer_number = 50;
 // The answer is counted in numbers (a coordinate, an index, a null); each costs about 64 bytes
-// while it is built (the JSON tree, then its text), so 16,000,000 numbers is about 1 GiB.
-inline constexpr double max_answer_numbers = 16.0e6;
+// while it is built (the JSON tree, then its text), so 2^24 = 16,777,216 numbers is 1 GiB.
+inline constexpr double max_answer_numbers = 16777216;
 inline constexpr double bytes_per_answer_number = 64;
 
 struct WorkEstimate {

@@ -53,14 +53,17 @@ void expect_limit(const json& response, const std::string& path, const std::stri
 }
 
 TEST(WorkBudget, EstimatesFollowTheDocumentedFormulas) {
-    // (p+1)^2 (d+1) + (p+1)(d+1) steps per curve parameter.
-    EXPECT_DOUBLE_EQ(estimate_curve_evaluation(10, 3, 0).steps, 10 * (16 + 4));
+    const double per_number = steps_per_answer_number;
+    // (p+1)^2 (d+1) + (p+1)(d+1) steps per curve parameter, plus the answer's numbers.
+    EXPECT_DOUBLE_EQ(estimate_curve_evaluation(10, 3, 0).steps, 10 * (16 + 4) + 30 * per_number);
     EXPECT_DOUBLE_EQ(estimate_curve_evaluation(10, 3, 2).answer_numbers, 10 * 3 * 4);
     // ((p+1)^2 + (q+1)^2)(d+1) + (p+1)(q+1)(d+1)(d+2)/2 per surface parameter.
-    EXPECT_DOUBLE_EQ(estimate_surface_evaluation(1, 3, 2, 1, false).steps, (16 + 9) * 2 + 12 * 3);
+    EXPECT_DOUBLE_EQ(estimate_surface_evaluation(1, 3, 2, 1, false).steps,
+                     (16 + 9) * 2 + 12 * 3 + 3 * 5 * per_number);
     EXPECT_DOUBLE_EQ(estimate_surface_evaluation(1, 3, 2, 1, true).answer_numbers, 3 * (1 + 4 + 1));
     EXPECT_DOUBLE_EQ(estimate_tessellation(10, 20, 3, 3).answer_numbers, 10 * 20 * 6 + 9 * 19 * 6);
-    EXPECT_DOUBLE_EQ(estimate_polygonization(1000, 50).steps, 50000);
+    EXPECT_DOUBLE_EQ(estimate_polygonization(1000, 50).steps,
+                     1000 * 50 * steps_per_expression_instruction);
 }
 
 // Issue repro: evaluate on a degree-4095 curve took 0.15 s per parameter; 10,000 of them ran

@@ -97,4 +97,22 @@ file(READ ${dir}/stdout.png magic LIMIT 4 HEX)
 if(NOT rc EQUAL 0 OR NOT magic STREQUAL "89504e47")
   message(FATAL_ERROR "-o - did not write a PNG to standard output (${rc}, ${magic}): ${err}")
 endif()
+# 8. A scene that would take gigabytes to show (100 patches at density 256: 16,384 vertices each)
+# is refused at once with the work budget's sentence, not rendered for minutes.
+set(objects "")
+foreach(k RANGE 1 100)
+  if(k GREATER 1)
+    string(APPEND objects ", ")
+  endif()
+  string(APPEND objects "{\"id\": ${k}, \"name\": \"p${k}\", \"kind\": \"surface\", \"surface\": "
+         "{\"type\": \"bezier\", \"degree\": [1, 1], \"points\": "
+         "[[[${k}, 0, 0], [${k}, 1, 0]], [[${k}.5, 0, 0], [${k}.5, 1, 1]]]}}")
+endforeach()
+file(WRITE ${dir}/big.json "{\"format\": \"isoparm-scene\", \"version\": 1, \"objects\": [${objects}], "
+     "\"display\": {\"density\": 256}}")
+expect_refused("a scene too large to show" ${ISOPARM} render ${dir}/big.json -o ${dir}/big.png ${small})
+if(NOT last_error MATCHES "too large to show" OR EXISTS ${dir}/big.png)
+  message(FATAL_ERROR "a scene too large to show: not refused by the work budget: ${last_error}")
+endif()
+
 expect_scene_intact("the end")

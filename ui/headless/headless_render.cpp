@@ -12,6 +12,7 @@
 #include "ui/headless/egl_context.hpp"
 #include "ui/headless/png_writer.hpp"
 #include "ui/render/gl.hpp"
+#include "ui/scene_budget.hpp"
 #include "ui/workstation.hpp"
 
 namespace isoparm::ui {
@@ -70,6 +71,9 @@ std::string render_headless(const HeadlessRequest& req) {
         }
         document = std::move(loaded).value();
     }
+    // A scene that would take minutes or gigabytes to show is refused like a bad one.
+    if (std::string too_large = scene_over_budget(document); !too_large.empty())
+        return req.scene_path.empty() ? too_large : "'" + req.scene_path + "': " + too_large;
 
     std::string error;
     const std::unique_ptr<EglContext> egl = EglContext::create(error);

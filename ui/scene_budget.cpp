@@ -1,0 +1,41 @@
+// Scene display cost against the work budget (see scene_budget.hpp).
+#include "ui/scene_budget.hpp"
+
+#include <variant>
+
+#include "core/doc/work_budget.hpp"
+#include "ui/render/tessellation_sampling.hpp"
+
+namespace isoparm::ui {
+
+SceneDisplayCost estimate_scene_display(const doc::Document& d) {
+    SceneDisplayCost cost;
+    for (const doc::Object& o : d.objects) {
+        const auto* s = std::get_if<doc::SurfaceObject>(&o.shape);
+        if (!s) continue;
+        const auto [su, sv] = display_samples(s->surface, d.display.density);
+        const double vertices = static_cast<double>(su) * sv;
+        ++cost.surfaces;
+        cost.vertices += vertices;
+        cost.steps +=
+            doc::estimate_tessellation(su, sv, s->surface.degree_u, s->surface.degree_v).steps;
+        cost.bytes += vertices * display_bytes_per_vertex + display_bytes_per_surface;
+    }
+    return cost;
+}
+
+std::string scene_over_budget(const doc::Document& d) {
+    const SceneDisplayCost cost = estimate_scene_display(d);
+    const double max_bytes = doc::max_answer_numbers * doc::bytes_per_answer_number;
+    if (cost.bytes <= max_bytes && cost.steps <= doc::max_work_steps) return "";
+    const double mib = cost.bytes / (1 << 20);
+    return "the scene is too large to show: its " + std::to_string(cost.surfaces) +
+           " surfaces make " + doc::with_thousands(cost.vertices) +
+           " vertices, which would need about " + doc::with_thousands(mib) + " MiB and " +
+           doc::with_thousands(cost.steps) + " basis steps; the work budget allows about " +
+           doc::with_thousands(max_bytes / (1 << 20)) + " MiB and " +
+           doc::with_thousands(doc::max_work_steps) +
+           " steps (about 10 s); a lower display density or fewer surfaces fit";
+}
+
+} // namespace isoparm::ui

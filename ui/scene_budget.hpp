@@ -1,0 +1,31 @@
+// The work budget (core/doc/work_budget.hpp) applied to showing a scene: a scene whose surfaces
+// would take minutes to tessellate or gigabytes to hold is refused when it is loaded, by
+// `isoparm render` and by the window alike, with the same sentence (issue 14, item 8).
+#pragma once
+
+#include <string>
+
+#include "core/doc/document.hpp"
+
+namespace isoparm::ui {
+
+// Memory the renderer holds per displayed vertex (tessellation in doubles, its interleaved
+// float copy, triangle and wire indices, the driver's copy of the buffers), measured: a
+// 250-patch scene of 16,384-vertex surfaces at ~11 MB per surface.
+inline constexpr double display_bytes_per_vertex = 700;
+// Memory the renderer holds per surface whatever its size (buffers, vertex arrays).
+inline constexpr double display_bytes_per_surface = 64 * 1024;
+
+struct SceneDisplayCost {
+    int surfaces = 0;
+    double vertices = 0; // displayed tessellation vertices, all surfaces
+    double steps = 0;    // basis steps to tessellate them (the protocol's estimate)
+    double bytes = 0;    // memory to hold them
+};
+
+SceneDisplayCost estimate_scene_display(const doc::Document& d);
+
+// "" when the scene fits the budget, else one sentence naming the scene's size and the budget.
+std::string scene_over_budget(const doc::Document& d);
+
+} // namespace isoparm::ui
