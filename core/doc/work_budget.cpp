@@ -77,6 +77,17 @@ std::string with_thousands(double value) {
     return out;
 }
 
+namespace {
+
+// How long `steps` take at about 1e8 a second: "10.3 s", "1,678 s".
+std::string seconds(double steps) {
+    const double s = steps / 1e8;
+    if (s >= 100) return with_thousands(s) + " s";
+    return geom::format_number(std::round(s * 10) / 10) + " s";
+}
+
+} // namespace
+
 geom::Status spend_work(const WorkEstimate& cost, const std::string& path,
                         const std::string& what) {
     if (!(cost.answer_numbers <= max_answer_numbers)) {
@@ -91,9 +102,9 @@ geom::Status spend_work(const WorkEstimate& cost, const std::string& path,
     if (!(cost.steps <= max_work_steps)) {
         return geom::make_error(geom::ErrorCode::limit,
                                 what + " would take about " + with_thousands(cost.steps) +
-                                    " basis steps (about " + with_thousands(cost.steps / 1e8) +
-                                    " s); the work budget allows " +
-                                    with_thousands(max_work_steps) + " (about 10 s)",
+                                    " basis steps (about " + seconds(cost.steps) +
+                                    "); the work budget allows " + with_thousands(max_work_steps) +
+                                    " (about 10 s)",
                                 path);
     }
     if (batch_active) {
