@@ -94,7 +94,9 @@ bool open_file(AppContext& ctx, const std::string& path) {
         return false;
     }
     // A scene that would freeze the window is refused with the same sentence as render's.
-    if (const std::string too_large = scene_over_budget(*loaded); !too_large.empty()) {
+    std::string too_large = scene_over_budget(*loaded);
+    if (too_large.empty()) too_large = memory_limit_problem(*loaded, 0); // driver already loaded
+    if (!too_large.empty()) {
         show_error(ctx, "Could not open scene",
                    "'" + path + "' was not opened; the current scene is unchanged.\n\n" +
                        too_large);

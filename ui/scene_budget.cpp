@@ -1,6 +1,9 @@
 // Scene display cost against the work budget (see scene_budget.hpp).
 #include "ui/scene_budget.hpp"
 
+#include <fstream>
+#include <sys/resource.h>
+#include <unistd.h>
 #include <variant>
 
 #include "core/doc/work_budget.hpp"
@@ -36,6 +39,33 @@ std::string scene_over_budget(const doc::Document& d) {
            doc::with_thousands(max_bytes / (1 << 20)) + " MiB and " +
            doc::with_thousands(doc::max_work_steps) +
            " steps (about 10 s); a lower display density or fewer surfaces fit";
+}
+
+namespace {
+
+// The address space this process uses now (VmSize), in bytes; 0 when unknown.
+double address_space_in_use() {
+    std::ifstream statm("/proc/self/statm");
+    double pages = 0;
+    if (!(statm >> pages)) return 0;
+    return pages * static_cast<double>(::sysconf(_SC_PAGESIZE));
+}
+
+} // namespace
+
+std::string memory_limit_problem(const doc::Document& d, double driver_bytes) {
+    rlimit limit{};
+    if (::getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return "";
+    const double have = static_cast<double>(limit.rlim_cur);
+    const double need = address_space_in_use() + driver_bytes + estimate_scene_display(d).bytes;
+    if (need <= have) return "";
+    const double mib = 1 << 20;
+    return "not enough memory: the address-space limit (ulimit -v) is " +
+           doc::with_thousands(have / mib) + " MiB, and showing this scene needs about " +
+           doc::with_thousands(need / mib) + " MiB" +
+           (driver_bytes > 0 ? " (the OpenGL driver takes about " +
+                                   doc::with_thousands(driver_bytes / mib) + " of them)"
+                             : std::string{});
 }
 
 } // namespace isoparm::ui

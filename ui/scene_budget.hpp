@@ -28,4 +28,15 @@ SceneDisplayCost estimate_scene_display(const doc::Document& d);
 // "" when the scene fits the budget, else one sentence naming the scene's size and the budget.
 std::string scene_over_budget(const doc::Document& d);
 
+// Address space the OpenGL driver (Mesa's llvmpipe: its threads, code and buffers) takes when
+// a headless context is created, measured: below ~750 MiB of `ulimit -v` even a one-patch
+// scene fails inside the driver.
+inline constexpr double display_driver_bytes = 768.0 * (1 << 20);
+
+// "" when the address-space limit (`ulimit -v`, RLIMIT_AS) leaves room for this process as it
+// is now, plus `driver_bytes` still to come, plus the scene's display; else one sentence.
+// Why check first: the driver allocates with malloc and crashes (SIGSEGV, SIGABRT) when that
+// fails, so running out inside it cannot be turned into an error afterwards.
+std::string memory_limit_problem(const doc::Document& d, double driver_bytes);
+
 } // namespace isoparm::ui

@@ -115,4 +115,14 @@ if(NOT last_error MATCHES "too large to show" OR EXISTS ${dir}/big.png)
   message(FATAL_ERROR "a scene too large to show: not refused by the work budget: ${last_error}")
 endif()
 
+# 6. Under `ulimit -v` too small for the driver and the scene: exit 1 with a reason, never a
+# signal from inside the OpenGL driver (it crashes when its malloc fails).
+foreach(kib 400000 600000)
+  expect_refused("ulimit -v ${kib}" sh -c "ulimit -v ${kib} && exec \"$0\" render \"$1\" -o \"$2\" --view 3d --size 64x48"
+                 ${ISOPARM} ${scene} ${dir}/limited.png)
+  if(NOT last_error MATCHES "memory")
+    message(FATAL_ERROR "ulimit -v ${kib}: the reason does not say memory: ${last_error}")
+  endif()
+endforeach()
+
 expect_scene_intact("the end")

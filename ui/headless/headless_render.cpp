@@ -74,6 +74,10 @@ std::string render_headless(const HeadlessRequest& req) {
     // A scene that would take minutes or gigabytes to show is refused like a bad one.
     if (std::string too_large = scene_over_budget(document); !too_large.empty())
         return req.scene_path.empty() ? too_large : "'" + req.scene_path + "': " + too_large;
+    // Under `ulimit -v`, a render that cannot fit is refused before the driver would crash.
+    if (std::string short_of = memory_limit_problem(document, display_driver_bytes);
+        !short_of.empty())
+        return short_of;
 
     std::string error;
     const std::unique_ptr<EglContext> egl = EglContext::create(error);
