@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 
+#include "core/doc/json_read.hpp"
 #include "core/doc/protocol.hpp"
 #include "core/doc/work_budget.hpp"
 
@@ -143,6 +144,21 @@ TEST(WorkBudget, ABatchThatWouldTakeTooLongStopsTakingWork) {
     EXPECT_EQ(answers[1]["ok"], true);
     expect_limit(answers[2], "/params", "the batch has only");
     EXPECT_EQ(answers[3]["ok"], true);
+}
+
+// Issue repro: an invalid 250 MB scene used 9 GB before it was refused. The reader stops at
+// 2^24 values (about 1 GiB of tree), whatever the text.
+TEST(WorkBudget, TheReaderStopsAtItsValueCap) {
+    std::string text = "[0";
+    text.reserve(2 * (max_json_values + 8));
+    for (std::size_t k = 0; k < max_json_values; ++k) text += ",0"; // one value too many
+    text += "]";
+    std::ostringstream out, err;
+    EXPECT_EQ(run_protocol_text(std::move(text), out, err), 1);
+    const json answer = json::parse(out.str());
+    EXPECT_EQ(answer["error"]["code"], "limit");
+    EXPECT_NE(answer["error"]["message"].get<std::string>().find("16777216 JSON values"),
+              std::string::npos);
 }
 
 } // namespace
