@@ -16,6 +16,7 @@
 #include "core/doc/out_of_memory.hpp"
 #include "core/doc/protocol_construct.hpp"
 #include "core/doc/protocol_detail.hpp"
+#include "core/doc/protocol_stream.hpp"
 #include "core/doc/work_budget.hpp"
 
 namespace isoparm::doc {
@@ -179,6 +180,43 @@ bool append_response(std::string& s, json response) {
     }
 }
 
+// A mesh answer (tessellate, polygonize) written straight from the mesh, chunk by chunk
+// (protocol_stream.hpp); errors and running out of memory before the first byte is written
+// are ordinary error responses.
+bool stream_mesh_response(std::string& s, std::ostream& out, const json& request, MeshOp make) {
+    arm_memory_reserve();
+    const std::size_t mark = s.size();
+    try {
+        geom::Expected<geom::Mesh> mesh = make(request);
+        if (!mesh) {
+            write_json(s, error_response(mesh.error()));
+            return false;
+        }
+        s.reserve(s.size() + stream_chunk_bytes + 4096); // then writing allocates nothing
+        write_mesh_answer(*mesh, s, out);
+        return true;
+    } catch (const std::bad_alloc&) {
+        s.resize(mark);
+        arm_memory_reserve();
+        write_json(s, out_of_memory_response());
+        return false;
+    } catch (const std::exception& e) {
+        s.resize(mark);
+        write_json(s, error_response(geom::make_error_nopath(
+                          ErrorCode::internal, std::string("internal error: ") + e.what())));
+        return false;
+    }
+}
+
+// One request's answer into `s` (mesh answers may already be partly written to `out`).
+bool answer_into(std::string& s, std::ostream& out, const json& request,
+                 const std::vector<Error>& problems) {
+    if (problems.empty())
+        if (const MeshOp make = mesh_op_of(request))
+            return stream_mesh_response(s, out, request, make);
+    return append_response(s, respond(request, problems));
+}
+
 int answer(std::string text, std::ostream& out, std::ostream& err) {
     geom::Expected<ReadJson> read = read_json(text);
     text.clear();
@@ -208,8 +246,7 @@ int answer(std::string text, std::ostream& out, std::ostream& err) {
         for (std::size_t i = 0; i < value.size(); ++i) {
             const auto found = by_element.find(i);
             if (i > 0) s += ", ";
-            if (!append_response(
-                    s, respond(value[i], found == by_element.end() ? none : found->second)))
+            if (!answer_into(s, out, value[i], found == by_element.end() ? none : found->second))
                 status = 1;
             release_json(value[i]); // answered: its memory is no longer needed
             out << s;
@@ -218,7 +255,7 @@ int answer(std::string text, std::ostream& out, std::ostream& err) {
         }
         s += ']';
     } else {
-        if (!append_response(s, respond(value, problems))) status = 1;
+        if (!answer_into(s, out, value, problems)) status = 1;
     }
     s += '\n';
     out << s;

@@ -34,6 +34,10 @@ OpResult op_insert_knot(const json& request); // protocol_refine.cpp
 OpResult op_elevate_degree(const json& request);
 OpResult op_split(const json& request);
 OpResult op_polygonize(const json& request); // protocol_implicit.cpp
+// The meshes of `tessellate` and `polygonize` before they become JSON: the text path writes
+// them straight to the output (protocol_stream.hpp) instead of building a JSON tree.
+geom::Expected<geom::Mesh> tessellate_mesh(const json& request);
+geom::Expected<geom::Mesh> polygonize_mesh(const json& request);
 
 // ---- errors ----------------------------------------------------------------------------
 geom::Error schema_error(std::string message, std::string path);

@@ -12,7 +12,7 @@ namespace isoparm::doc::protocol {
 using geom::ErrorCode;
 using geom::Expected;
 
-OpResult op_polygonize(const json& request) {
+Expected<geom::Mesh> polygonize_mesh(const json& request) {
     if (geom::Status s = check_fields(request, "polygonize", {"implicit", "bounds", "cell"}); !s)
         return s.error();
 
@@ -102,6 +102,12 @@ OpResult op_polygonize(const json& request) {
         }
         return e;
     }
+    return mesh;
+}
+
+OpResult op_polygonize(const json& request) {
+    Expected<geom::Mesh> mesh = polygonize_mesh(request);
+    if (!mesh) return mesh.error();
     return mesh_to_json(*mesh);
 }
 

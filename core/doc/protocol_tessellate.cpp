@@ -28,7 +28,7 @@ json mesh_to_json(const geom::Mesh& mesh) {
                 {"triangles", std::move(triangles)}};
 }
 
-OpResult op_tessellate(const json& request) {
+Expected<geom::Mesh> tessellate_mesh(const json& request) {
     if (find_field(request, "curve"))
         return schema_error("tessellate takes a surface, not a curve", "/curve");
     if (geom::Status s = check_fields(request, "tessellate", {"surface", "samples"}); !s)
@@ -75,9 +75,13 @@ OpResult op_tessellate(const json& request) {
                            std::to_string(surface.degree_v) + ") surface");
         !ok)
         return ok.error();
-    const geom::Mesh mesh =
-        geom::tessellate(subject->surface, static_cast<int>(n[0]), static_cast<int>(n[1]));
-    return mesh_to_json(mesh);
+    return geom::tessellate(subject->surface, static_cast<int>(n[0]), static_cast<int>(n[1]));
+}
+
+OpResult op_tessellate(const json& request) {
+    Expected<geom::Mesh> mesh = tessellate_mesh(request);
+    if (!mesh) return mesh.error();
+    return mesh_to_json(*mesh);
 }
 
 } // namespace isoparm::doc::protocol

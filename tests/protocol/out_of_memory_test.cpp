@@ -117,9 +117,9 @@ TEST(OutOfMemory, ReleaseJsonEmptiesATreeWithoutChangingItsType) {
 
 TEST(OutOfMemory, ARequestThatRunsOutIsALimitErrorNotAnAbort) {
     if (address_sanitizer) GTEST_SKIP() << "RLIMIT_AS and AddressSanitizer do not mix";
-    // A 600 x 600 tessellation needs ~250 MB; give it 100 MB.
-    const std::string request = bicubic_tessellation(600);
-    const ChildResult r = run_limited(100 * mib, [&](std::ostream& out) {
+    // A 1000 x 1000 tessellation needs its mesh alone (~75 MB) and more; give it 50 MB.
+    const std::string request = bicubic_tessellation(1000);
+    const ChildResult r = run_limited(50 * mib, [&](std::ostream& out) {
         std::ostringstream err;
         return isoparm::doc::run_protocol_text(request, out, err);
     });
@@ -131,11 +131,34 @@ TEST(OutOfMemory, ARequestThatRunsOutIsALimitErrorNotAnAbort) {
     EXPECT_NE(answer["error"]["message"].get<std::string>().find("memory"), std::string::npos);
 }
 
+// Answers other than meshes are still built as JSON trees: running out while building one is
+// the case nlohmann's allocating destructor turned into SIGABRT.
+TEST(OutOfMemory, RunningOutWhileBuildingAnAnswerTreeIsALimitError) {
+    if (address_sanitizer) GTEST_SKIP() << "RLIMIT_AS and AddressSanitizer do not mix";
+    json uv = json::array();
+    for (int k = 0; k < 200000; ++k) uv.push_back({(k % 1000) / 1000.0, (k / 1000) / 200.0});
+    json request = json::parse(bicubic_tessellation(2));
+    request.erase("samples");
+    request["op"] = "evaluate";
+    request["params"] = uv;
+    request["derivatives"] = 3;
+    request["normals"] = true; // ~11 million numbers: ~600 MB as a tree
+    const std::string text = request.dump();
+    const ChildResult r = run_limited(100 * mib, [&](std::ostream& out) {
+        std::ostringstream err;
+        return isoparm::doc::run_protocol_text(text, out, err);
+    });
+    ASSERT_TRUE(r.exited) << "killed by signal " << r.status;
+    EXPECT_EQ(r.status, 1);
+    const json answer = json::parse(r.output);
+    EXPECT_EQ(answer["error"]["code"], "limit");
+}
+
 TEST(OutOfMemory, ABatchContinuesAfterAnElementRunsOut) {
     if (address_sanitizer) GTEST_SKIP() << "RLIMIT_AS and AddressSanitizer do not mix";
-    const std::string batch = "[" + bicubic_tessellation(600) + ", " + small_request + ", " +
-                              bicubic_tessellation(600) + ", " + small_request + "]";
-    const ChildResult r = run_limited(100 * mib, [&](std::ostream& out) {
+    const std::string batch = "[" + bicubic_tessellation(1000) + ", " + small_request + ", " +
+                              bicubic_tessellation(1000) + ", " + small_request + "]";
+    const ChildResult r = run_limited(50 * mib, [&](std::ostream& out) {
         std::ostringstream err;
         return isoparm::doc::run_protocol_text(batch, out, err);
     });
