@@ -203,7 +203,8 @@ geom::Status keep_mode_and_owner(int fd, const struct stat& old, const std::stri
     if (::fchmod(fd, old.st_mode & 07777) != 0)
         return io_error("set the permissions of", tmp, errno);
     if (old.st_uid != ::geteuid() || old.st_gid != ::getegid()) {
-        if (::fchown(fd, old.st_uid, old.st_gid) != 0) (void)::fchown(fd, (uid_t)-1, old.st_gid);
+        if (::fchown(fd, old.st_uid, old.st_gid) != 0)
+            (void)::fchown(fd, static_cast<uid_t>(-1), old.st_gid);
         // chown may clear set-id bits; put the mode back.
         (void)::fchmod(fd, old.st_mode & 07777);
     }
@@ -250,7 +251,9 @@ geom::Status write_file_atomically(const std::string& path, std::string_view byt
     remove_stale_temporaries(tmp);
 
     Fd fd(create_temporary(tmp.path));
-    if (fd.get() < 0) return io_error("create", tmp.path, errno);
+    // Named after the file asked for: the temporary name would only puzzle (a missing
+    // directory, no permission, a full disk are all about the target's directory).
+    if (fd.get() < 0) return io_error("write", path, errno);
     auto fail = [&](const char* what, const std::string& name, int err) -> geom::Status {
         ::unlink(tmp.path.c_str());
         return io_error(what, name, err);

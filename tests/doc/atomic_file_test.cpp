@@ -78,6 +78,25 @@ TEST_F(AtomicFile, KeepsTheModeOfTheFileItReplaces) {
     EXPECT_EQ(st.st_mode & 07777, 0640u);
 }
 
+TEST_F(AtomicFile, KeepsTheOwnerWhereTheSystemAllows) {
+    if (::geteuid() != 0) GTEST_SKIP() << "only root may give a file to another user";
+    write_plain(path("a.json"), "old");
+    ASSERT_EQ(::chown(path("a.json").c_str(), 65534, 65534), 0);
+    ASSERT_TRUE(write_file_atomically(path("a.json"), "new"));
+    struct stat st {};
+    ASSERT_EQ(::stat(path("a.json").c_str(), &st), 0);
+    EXPECT_EQ(st.st_uid, 65534u);
+    EXPECT_EQ(st.st_gid, 65534u);
+}
+
+TEST_F(AtomicFile, AMissingDirectoryIsAnErrorNamingTheFileAskedFor) {
+    const auto r = write_file_atomically(path("no/such/dir/a.json"), "x");
+    ASSERT_FALSE(r);
+    EXPECT_NE(r.error().message.find("'" + path("no/such/dir/a.json") + "'"), std::string::npos)
+        << r.error().message;
+    EXPECT_NE(r.error().message.find("No such file or directory"), std::string::npos);
+}
+
 TEST_F(AtomicFile, RefusesADirectoryAFifoAndADevice) {
     fs::create_directory(path("d"));
     ASSERT_EQ(::mkfifo(path("f").c_str(), 0600), 0);
