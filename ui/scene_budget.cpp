@@ -14,8 +14,11 @@ namespace isoparm::ui {
 SceneDisplayCost estimate_scene_display(const doc::Document& d) {
     SceneDisplayCost cost;
     for (const doc::Object& o : d.objects) {
+        if (const auto* c = std::get_if<doc::CurveObject>(&o.shape))
+            cost.control_points += static_cast<double>(c->curve.points.size());
         const auto* s = std::get_if<doc::SurfaceObject>(&o.shape);
         if (!s) continue;
+        cost.control_points += static_cast<double>(s->surface.points.size());
         const auto [su, sv] = display_samples(s->surface, d.display.density);
         const double vertices = static_cast<double>(su) * sv;
         ++cost.surfaces;
@@ -24,6 +27,8 @@ SceneDisplayCost estimate_scene_display(const doc::Document& d) {
             doc::estimate_tessellation(su, sv, s->surface.degree_u, s->surface.degree_v).steps;
         cost.bytes += vertices * display_bytes_per_vertex + display_bytes_per_surface;
     }
+    cost.steps += cost.control_points * display_steps_per_control_point;
+    cost.bytes += cost.control_points * display_bytes_per_control_point;
     return cost;
 }
 
@@ -33,12 +38,14 @@ std::string scene_over_budget(const doc::Document& d) {
     if (cost.bytes <= max_bytes && cost.steps <= doc::max_work_steps) return "";
     const double mib = cost.bytes / (1 << 20);
     return "the scene is too large to show: its " + std::to_string(cost.surfaces) +
-           " surfaces make " + doc::with_thousands(cost.vertices) +
-           " vertices, which would need about " + doc::with_thousands(mib) + " MiB and " +
-           doc::with_thousands(cost.steps) + " basis steps; the work budget allows about " +
+           " surfaces make " + doc::with_thousands(cost.vertices) + " vertices and " +
+           doc::with_thousands(cost.control_points) + " control points, which would need about " +
+           doc::with_thousands(mib) + " MiB and " + doc::with_thousands(cost.steps) +
+           " basis steps; the work budget allows about " +
            doc::with_thousands(max_bytes / (1 << 20)) + " MiB and " +
            doc::with_thousands(doc::max_work_steps) +
-           " steps (about 10 s); a lower display density or fewer surfaces fit";
+           " steps (about 10 s); a lower display density, fewer surfaces or fewer control points "
+           "fit";
 }
 
 namespace {
