@@ -180,20 +180,20 @@ bool append_response(std::string& s, json response) {
     }
 }
 
-// A mesh answer (tessellate, polygonize) written straight from the mesh, chunk by chunk
-// (protocol_stream.hpp); errors and running out of memory before the first byte is written
-// are ordinary error responses.
-bool stream_mesh_response(std::string& s, std::ostream& out, const json& request, MeshOp make) {
+// A streamed answer (tessellate, polygonize, evaluate: protocol_stream.hpp). Errors and
+// running out of memory happen before its first byte is written and are ordinary error
+// responses; once writing starts nothing allocates.
+bool stream_response(std::string& s, std::ostream& out, const json& request, StreamedOp op) {
     arm_memory_reserve();
     const std::size_t mark = s.size();
     try {
-        geom::Expected<geom::Mesh> mesh = make(request);
-        if (!mesh) {
-            write_json(s, error_response(mesh.error()));
+        geom::Expected<StreamedAnswer> answer = op(request);
+        if (!answer) {
+            write_json(s, error_response(answer.error()));
             return false;
         }
         s.reserve(s.size() + stream_chunk_bytes + 4096); // then writing allocates nothing
-        write_mesh_answer(*mesh, s, out);
+        (*answer)(s, out);
         return true;
     } catch (const std::bad_alloc&) {
         s.resize(mark);
@@ -208,12 +208,12 @@ bool stream_mesh_response(std::string& s, std::ostream& out, const json& request
     }
 }
 
-// One request's answer into `s` (mesh answers may already be partly written to `out`).
+// One request's answer into `s` (streamed answers may already be partly written to `out`).
 bool answer_into(std::string& s, std::ostream& out, const json& request,
                  const std::vector<Error>& problems) {
     if (problems.empty())
-        if (const MeshOp make = mesh_op_of(request))
-            return stream_mesh_response(s, out, request, make);
+        if (const StreamedOp op = streamed_op_of(request))
+            return stream_response(s, out, request, op);
     return append_response(s, respond(request, problems));
 }
 

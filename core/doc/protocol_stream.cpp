@@ -4,6 +4,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <memory>
 #include <ostream>
 #include <string_view>
 
@@ -12,20 +13,18 @@
 
 namespace isoparm::doc {
 
-namespace {
-
-// Writes the buffer out once it holds a chunk; clear() keeps its capacity, so the next chunk
-// needs no allocation.
 void flush_if_full(std::string& buffer, std::ostream& out) {
     if (buffer.size() < stream_chunk_bytes) return;
     out.write(buffer.data(), static_cast<std::streamsize>(buffer.size()));
     buffer.clear();
 }
 
-// A vertex's point or normal as point_to_json and write_json write it: null when the vertex
-// does not exist or a coordinate is not finite.
+bool writable_point(const glm::dvec3& p) {
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
 void append_point(std::string& buffer, const glm::dvec3& p, bool exists) {
-    if (!exists || !std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+    if (!exists || !writable_point(p)) {
         buffer += "null";
         return;
     }
@@ -37,6 +36,8 @@ void append_point(std::string& buffer, const glm::dvec3& p, bool exists) {
     append_double(buffer, p.z);
     buffer += ']';
 }
+
+namespace {
 
 void append_index(std::string& buffer, std::uint32_t k) {
     std::array<char, 16> digits{};
@@ -55,15 +56,26 @@ void append_array(std::string& buffer, std::ostream& out, std::size_t count, App
     buffer += ']';
 }
 
+// A mesh op's answer: the mesh, kept until it is written.
+template <geom::Expected<geom::Mesh> (*make)(const nlohmann::json&)>
+geom::Expected<StreamedAnswer> streamed_mesh(const nlohmann::json& request) {
+    geom::Expected<geom::Mesh> mesh = make(request);
+    if (!mesh) return mesh.error();
+    auto kept = std::make_shared<const geom::Mesh>(std::move(mesh).value());
+    return StreamedAnswer(
+        [kept](std::string& buffer, std::ostream& out) { write_mesh_answer(*kept, buffer, out); });
+}
+
 } // namespace
 
-MeshOp mesh_op_of(const nlohmann::json& request) {
+StreamedOp streamed_op_of(const nlohmann::json& request) {
     if (!request.is_object()) return nullptr;
     const auto op = request.find("op");
     if (op == request.end() || !op->is_string()) return nullptr;
     const std::string& name = op->get_ref<const std::string&>();
-    if (name == "tessellate") return protocol::tessellate_mesh;
-    if (name == "polygonize") return protocol::polygonize_mesh;
+    if (name == "tessellate") return streamed_mesh<protocol::tessellate_mesh>;
+    if (name == "polygonize") return streamed_mesh<protocol::polygonize_mesh>;
+    if (name == "evaluate") return protocol::streamed_evaluate;
     return nullptr;
 }
 

@@ -61,7 +61,8 @@ TEST(ProtocolStream, AnswersLongerThanAChunkAreWrittenWhole) {
 }
 
 // The text path (which streams) and handle_request + write_json (which does not) agree, for
-// both mesh ops, alone and in a batch, errors included.
+// the mesh ops and evaluate (curves and surfaces, every derivative order, normals, points that
+// do not exist), alone and in a batch, errors included.
 TEST(ProtocolStream, TheTextPathAgreesWithHandleRequest) {
     const json hill = {{"type", "nurbs"},
                        {"degree", {2, 2}},
@@ -71,17 +72,44 @@ TEST(ProtocolStream, TheTextPathAgreesWithHandleRequest) {
                          {{2, 0, 0}, {2, 1, 0}, {2, 2, 0}}}},
                        {"knots", {{0, 0, 0, 1, 1, 1}, {0, 0, 0, 1, 1, 1}}},
                        {"weights", {{1, 1, 1}, {1, 0, 1}, {1, 1, 1}}}};
-    const json requests =
-        json::array({{{"op", "tessellate"}, {"surface", hill}, {"samples", {7, 5}}},
-                     {{"op", "polygonize"},
-                      {"implicit", "x^2 + y^2 + z^2 - 1"},
-                      {"bounds", {{-1.5, -1.5, -1.5}, {1.5, 1.5, 1.5}}},
-                      {"cell", 0.25}},
-                     {{"op", "tessellate"}, {"surface", hill}, {"samples", {1, 5}}},
-                     {{"op", "polygonize"},
-                      {"implicit", "x +"},
-                      {"bounds", {{0, 0, 0}, {1, 1, 1}}},
-                      {"cell", 0.5}}});
+    // The middle weight is negative: at t = 0.5 the denominator is zero and the point does not
+    // exist (null), and the derivatives around it are large.
+    const json curve = {{"type", "nurbs"},
+                        {"degree", 2},
+                        {"knots", {0, 0, 0, 1, 1, 1}},
+                        {"points", {{0, 0, 0}, {1, 2, 0}, {2, 0, 0}}},
+                        {"weights", {1, -1, 1}}};
+    const json requests = json::array(
+        {{{"op", "tessellate"}, {"surface", hill}, {"samples", {7, 5}}},
+         {{"op", "polygonize"},
+          {"implicit", "x^2 + y^2 + z^2 - 1"},
+          {"bounds", {{-1.5, -1.5, -1.5}, {1.5, 1.5, 1.5}}},
+          {"cell", 0.25}},
+         {{"op", "tessellate"}, {"surface", hill}, {"samples", {1, 5}}},
+         {{"op", "evaluate"},
+          {"surface", hill},
+          {"params", {{0, 0}, {0.5, 0.5}, {0.3, 0.9}, {1, 1}}}},
+         {{"op", "evaluate"},
+          {"surface", hill},
+          {"params", {{0, 0}, {0.5, 0.5}, {0.3, 0.9}, {1, 1}}},
+          {"derivatives", 3},
+          {"normals", true}},
+         {{"op", "evaluate"},
+          {"surface", hill},
+          {"params", {{0.5, 0.5}, {0.2, 0.7}}},
+          {"normals", true}},
+         {{"op", "evaluate"}, {"surface", hill}, {"params", {{0.5, 0.5}}}, {"derivatives", 1}},
+         {{"op", "evaluate"}, {"curve", curve}, {"params", {0, 0.25, 0.5, 0.75, 1}}},
+         {{"op", "evaluate"},
+          {"curve", curve},
+          {"params", {0, 0.25, 0.5, 0.75, 1}},
+          {"derivatives", 2}},
+         {{"op", "evaluate"}, {"curve", curve}, {"params", {2.0}}},
+         {{"op", "evaluate"}, {"curve", curve}, {"params", json::array()}, {"derivatives", 3}},
+         {{"op", "polygonize"},
+          {"implicit", "x +"},
+          {"bounds", {{0, 0, 0}, {1, 1, 1}}},
+          {"cell", 0.5}}});
     std::string expected_batch = "[";
     for (std::size_t k = 0; k < requests.size(); ++k) {
         std::string one;
