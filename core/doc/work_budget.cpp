@@ -54,7 +54,7 @@ WorkEstimate estimate_tessellation(double n_u, double n_v, int p, int q) {
     e.steps = 2 * (n_u * sq(p + 1.0) + n_v * sq(q + 1.0)) + n_u * n_v * (p + 1.0) * (q + 1.0) * 3;
     // positions and normals (3 each per vertex), triangles (3 indices, two per cell).
     e.answer_numbers = n_u * n_v * 6 + (n_u - 1) * (n_v - 1) * 6;
-    e.steps += e.answer_numbers * steps_per_streamed_number;
+    e.steps += e.answer_numbers * steps_per_answer_number;
     return e;
 }
 

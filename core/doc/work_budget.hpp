@@ -20,15 +20,16 @@ namespace isoparm::doc {
 // 0.22 s per parameter), so 1e9 is about 10 s.
 inline constexpr double max_work_steps = 1.0e9;
 // One instruction of an implicit expression at one grid point costs about 2.5 steps (sin, exp:
-// 1,000 terms on a 21^3 grid took 1.2 s), and each number of an answer about 50 (reading the
-// request and writing the text: a 1000 x 1000 tessellation, 12 million numbers, takes ~2 s).
+// 1,000 terms on a 21^3 grid took 1.2 s).
 inline constexpr double steps_per_expression_instruction = 2.5;
-inline constexpr double steps_per_answer_number = 50;
-// Meshes are written straight from the mesh (protocol_stream.hpp), without a JSON tree: a
-// 1000 x 1000 tessellation takes ~0.6 s in all, about 5 steps a number.
-inline constexpr double steps_per_streamed_number = 5;
-// The answer is counted in numbers (a coordinate, an index, a null); each costs about 64 bytes
-// while it is built (the JSON tree, then its text), so 2^24 = 16,777,216 numbers is 1 GiB.
+// Each number of an answer costs about 5 steps to write: the answers of evaluate, tessellate
+// and polygonize are written straight from compact values (protocol_stream.hpp), a 1000 x 1000
+// tessellation (12 million numbers) in ~0.6 s in all. (Built as a JSON tree, as before issue
+// 14, a number cost about 50.)
+inline constexpr double steps_per_answer_number = 5;
+// The answer is counted in numbers (a coordinate, an index, a null) and capped at 2^24 =
+// 16,777,216: 1 GiB had it been a JSON tree (~64 bytes a number while it is built); streamed,
+// its compact values take 8 bytes a number and its text ~20, written out 1 MiB at a time.
 inline constexpr double max_answer_numbers = 16777216;
 inline constexpr double bytes_per_answer_number = 64;
 
