@@ -1,9 +1,11 @@
 // `isoparm geom [FILE]`: the JSON geometry protocol on a file or standard input.
-#include <fstream>
 #include <iostream>
 #include <memory>
+#include <unistd.h>
 
 #include "app/commands.hpp"
+#include "core/doc/input_file.hpp"
+#include "core/doc/json_write.hpp"
 #include "core/doc/protocol.hpp"
 
 namespace isoparm::app {
@@ -14,13 +16,22 @@ Action register_geom_command(CLI::App& app) {
     auto file = std::make_shared<std::string>();
     sub->add_option("FILE", *file, "request file (a JSON object or array); default: stdin");
     return [file]() -> int {
-        if (file->empty()) return doc::run_protocol(std::cin, std::cout, std::cerr);
-        std::ifstream in(*file, std::ios::binary);
-        if (!in) {
-            std::cerr << "isoparm geom: cannot open '" << *file << "'\n";
+        // Read here, not through a stream: only a regular file is opened (a FIFO cannot block,
+        // a directory or /proc/self/mem is a clean error) and no input beyond the cap is kept.
+        geom::Expected<std::string> text =
+            file->empty() ? doc::read_descriptor(STDIN_FILENO, "standard input")
+                          : doc::read_input_file(*file);
+        if (!text) {
+            if (text.error().code == geom::ErrorCode::limit) {
+                std::string s;
+                doc::write_json(s, doc::input_error_response(text.error()));
+                std::cout << s << "\n";
+                return 1;
+            }
+            std::cerr << "isoparm geom: " << text.error().message << "\n";
             return 2;
         }
-        return doc::run_protocol(in, std::cout, std::cerr);
+        return doc::run_protocol_text(std::move(text).value(), std::cout, std::cerr);
     };
 }
 

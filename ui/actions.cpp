@@ -5,6 +5,7 @@
 
 #include "core/doc/scene_io.hpp"
 #include "ui/doc_access.hpp"
+#include "ui/scene_budget.hpp"
 #include "ui/scene_builder.hpp"
 
 namespace isoparm::ui {
@@ -31,6 +32,7 @@ void adopt(AppContext& ctx, doc::Document d, const std::string& path) {
     ctx.history.clear();
     ctx.history.mark_clean();
     ctx.file_path = path;
+    ctx.file_stamp = doc::stamp_of(path);
     ctx.ui.drag = {};
     ctx.ui.sliders = {};
     ctx.ui.plane_drag = {};
@@ -91,6 +93,15 @@ bool open_file(AppContext& ctx, const std::string& path) {
                        error_text(loaded.error()));
         return false;
     }
+    // A scene that would freeze the window is refused with the same sentence as render's.
+    std::string too_large = scene_over_budget(*loaded);
+    if (too_large.empty()) too_large = memory_limit_problem(*loaded, 0); // driver already loaded
+    if (!too_large.empty()) {
+        show_error(ctx, "Could not open scene",
+                   "'" + path + "' was not opened; the current scene is unchanged.\n\n" +
+                       too_large);
+        return false;
+    }
     adopt(ctx, std::move(loaded).value(), path);
     add_recent(ctx.settings.recent, std::filesystem::absolute(path).lexically_normal().string());
     store_settings(ctx);
@@ -107,6 +118,11 @@ void new_document(AppContext& ctx) {
 bool save(AppContext& ctx) {
     if (ctx.file_path.empty()) {
         request_save_as(ctx);
+        return false;
+    }
+    // Someone else wrote the file since we loaded or saved it: ask before replacing their work.
+    if (doc::changed_on_disk(ctx.file_path, ctx.file_stamp)) {
+        ctx.ui.confirm_overwrite_changed = true;
         return false;
     }
     return save_as(ctx, ctx.file_path);
@@ -137,6 +153,7 @@ bool save_as(AppContext& ctx, const std::string& path) {
         return false;
     }
     ctx.file_path = path;
+    ctx.file_stamp = doc::stamp_of(path);
     ctx.history.mark_clean();
     add_recent(ctx.settings.recent, std::filesystem::absolute(path).lexically_normal().string());
     store_settings(ctx);

@@ -19,7 +19,9 @@ void run_pending(AppContext& ctx);
 // Loads a scene; on error shows the error dialog and keeps the current document.
 bool open_file(AppContext& ctx, const std::string& path);
 void new_document(AppContext& ctx);
-// Saves to the current file, or opens the save dialog when untitled. Returns whether saved.
+// Saves to the current file, or opens the save dialog when untitled. When the file changed on
+// disk since it was loaded or last saved, saves nothing and asks (overwrite_changed_dialog).
+// Returns whether saved.
 bool save(AppContext& ctx);
 void request_save_as(AppContext& ctx);
 bool save_as(AppContext& ctx, const std::string& path);

@@ -3,10 +3,12 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "core/doc/command.hpp"
 #include "core/doc/document.hpp"
+#include "core/doc/input_file.hpp"
 #include "ui/settings.hpp"
 #include "ui/ui_state.hpp"
 
@@ -19,6 +21,9 @@ struct AppContext {
     doc::Document doc;
     doc::History history;
     std::string file_path; // empty: untitled
+    // The file as it was on disk when loaded or last saved: Save asks before replacing a file
+    // someone else wrote since (two windows on one scene).
+    std::optional<doc::FileStamp> file_stamp;
     Settings settings;
     bool remember_settings = false; // false in headless runs (deterministic, no side effects)
     UiState ui;

@@ -50,6 +50,7 @@ bool restore_recovery(AppContext& ctx, const doc::RecoveryInfo& recovery) {
         geom::Expected<doc::Document> saved = doc::load_scene(recovery.origin);
         if (saved.ok()) ctx.doc = std::move(saved).value();
         ctx.file_path = recovery.origin;
+        ctx.file_stamp = doc::stamp_of(recovery.origin); // the file as loaded for Undo
     }
     ctx.seal();
     const bool ok = ctx.execute(doc::restore_document(std::move(recovered).value()));

@@ -4,15 +4,21 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <system_error>
+
+#include "core/doc/atomic_file.hpp"
+#include "core/doc/input_file.hpp"
 
 namespace isoparm::ui {
 
 namespace fs = std::filesystem;
 
+// Settings are a few hundred bytes; anything much larger is not ours.
+constexpr std::uintmax_t settings_max_bytes = 1u << 20;
+
 std::string config_dir_from(const char* xdg, const char* home) {
-    if (xdg && *xdg) return std::string(xdg) + "/isoparm";
+    // The XDG Base Directory specification says a relative value is invalid and ignored.
+    if (xdg && xdg[0] == '/') return std::string(xdg) + "/isoparm";
     if (home && *home) return std::string(home) + "/.config/isoparm";
     return {};
 }
@@ -75,9 +81,10 @@ Settings settings_from_json(const nlohmann::json& j) {
 
 Settings load_settings(const std::string& path) {
     if (path.empty()) return {};
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return {};
-    const nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+    // Read like every input: a FIFO or a directory in its place must not block start-up.
+    auto text = doc::read_input_file(path, settings_max_bytes);
+    if (!text) return {};
+    const nlohmann::json j = nlohmann::json::parse(*text, nullptr, /*allow_exceptions=*/false);
     if (j.is_discarded()) return {};
     return settings_from_json(j);
 }
@@ -87,16 +94,7 @@ bool save_settings(const Settings& s, const std::string& path) {
     std::error_code ec;
     const fs::path target(path);
     if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
-    const fs::path tmp = target.string() + ".tmp";
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) return false;
-        out << settings_to_json(s).dump(2) << '\n';
-        out.flush();
-        if (!out) return false;
-    }
-    fs::rename(tmp, target, ec);
-    return !ec;
+    return doc::write_file_atomically(path, settings_to_json(s).dump(2) + "\n").ok();
 }
 
 void add_recent(std::vector<std::string>& recent, const std::string& path, std::size_t max) {

@@ -7,6 +7,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "core/doc/atomic_file.hpp"
 #include "ui/app_context.hpp"
 
 namespace isoparm::ui {
@@ -77,13 +78,8 @@ void flush_ui_report(const AppContext& ctx) {
     r.facts.clear();
     std::string text = j.dump(1);
     if (text == r.last_written) return;
-    // Written beside the target and renamed over it: a reader never sees half a report.
-    const std::string tmp = r.path + ".part";
-    if (std::FILE* f = std::fopen(tmp.c_str(), "wb")) {
-        const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-        if (std::fclose(f) == 0 && ok && std::rename(tmp.c_str(), r.path.c_str()) == 0)
-            r.last_written = std::move(text);
-    }
+    // Through the one atomic writer: a reader never sees half a report.
+    if (doc::write_file_atomically(r.path, text).ok()) r.last_written = std::move(text);
 }
 
 } // namespace isoparm::ui

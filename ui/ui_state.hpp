@@ -209,6 +209,7 @@ struct UiState {
     FileDialog file_dialog;
     PendingAction pending;
     bool confirm_unsaved = false;
+    bool confirm_overwrite_changed = false; // Save found the file changed on disk: ask
     bool show_error = false;
     std::string error_title, error_message;
     bool show_about = false;

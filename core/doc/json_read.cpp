@@ -1,9 +1,12 @@
 // Reading untrusted JSON text through nlohmann's SAX interface (see json_read.hpp).
 #include "core/doc/json_read.hpp"
 
+#include "core/doc/out_of_memory.hpp"
+
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <new>
 #include <utility>
 
 namespace isoparm::doc {
@@ -176,6 +179,7 @@ public:
     }
 
     json root;
+    bool too_many_values = false;
     std::vector<geom::Error> problems_;
     std::size_t error_position_ = 0;
     std::string error_what_;
@@ -203,8 +207,16 @@ private:
             skip_next_ = false;
             return true;
         }
+        if (!count_value()) return false;
         place(std::move(v));
         return true;
+    }
+
+    // Stops the parse (false) once the tree would hold more than max_json_values values.
+    bool count_value() {
+        if (++value_count_ <= max_json_values) return true;
+        too_many_values = true;
+        return false;
     }
 
     bool open(json::value_t type) {
@@ -226,6 +238,7 @@ private:
             skip_depth_ = 1;
             return true;
         }
+        if (!count_value()) return false;
         json* slot = place(json(type));
         frames_.push_back(Frame{slot, {}, 0});
         return true;
@@ -282,6 +295,7 @@ private:
     std::vector<OverflowToken> overflows_;
     std::size_t next_overflow_ = 0;
     std::size_t number_count_ = 0;
+    std::size_t value_count_ = 0;
     int skip_depth_ = 0;
     bool skip_next_ = false;
 };
@@ -326,10 +340,25 @@ geom::Expected<ReadJson> read_json(std::string_view text) {
     bool ok = false;
     try {
         ok = json::sax_parse(input.data(), input.data() + input.size(), &builder);
+    } catch (const std::bad_alloc&) {
+        // The partial tree is emptied without allocating (out_of_memory.hpp says why that
+        // matters), and a new reserve is set aside for whatever comes next.
+        release_json(builder.root);
+        arm_memory_reserve();
+        return geom::make_error_nopath(geom::ErrorCode::limit,
+                                       "not enough memory to read the input");
     } catch (const std::exception& e) {
-        // The builder never throws on purpose; allocation failure lands here.
+        // The builder never throws on purpose.
+        release_json(builder.root);
         return geom::make_error_nopath(geom::ErrorCode::limit,
                                        std::string("the input is too large: ") + e.what());
+    }
+    if (builder.too_many_values) {
+        release_json(builder.root);
+        return geom::make_error_nopath(
+            geom::ErrorCode::limit, "the input holds more than " + std::to_string(max_json_values) +
+                                        " JSON values (numbers, strings, arrays, objects); at "
+                                        "most that many are read, about 1 GiB once parsed");
     }
     if (!ok) {
         std::string message =

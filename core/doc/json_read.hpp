@@ -14,6 +14,13 @@ namespace isoparm::doc {
 // so hostile input cannot exhaust the stack).
 constexpr int max_json_depth = 256;
 
+// More values than this (numbers, strings, booleans, nulls, arrays, objects, counted as read)
+// stop the reader with a `limit` error without a path: the tree would pass the work budget's
+// 1 GiB (work_budget.hpp; ~50 bytes a value). A 256 MiB input could otherwise become a
+// 9 GB tree before anything looks at it. The largest geometry the spec allows (1,000,000
+// points with weights) is ~5 million values.
+constexpr std::size_t max_json_values = std::size_t{1} << 24;
+
 // Text that is valid JSON, with the problems found in it that make it an unacceptable
 // request. Each problem's path is absolute (from the root of the text), in text order:
 // - a duplicate key: `schema`, path to the repeated member (the first value is kept);

@@ -10,10 +10,14 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/doc/input_file.hpp"
 #include "core/doc/json_read.hpp"
 #include "core/doc/json_write.hpp"
+#include "core/doc/out_of_memory.hpp"
 #include "core/doc/protocol_construct.hpp"
 #include "core/doc/protocol_detail.hpp"
+#include "core/doc/protocol_stream.hpp"
+#include "core/doc/work_budget.hpp"
 
 namespace isoparm::doc {
 
@@ -54,6 +58,10 @@ json error_response(const Error& e) {
     return json{{"ok", false}, {"error", std::move(err)}};
 }
 
+json out_of_memory_response() {
+    return error_response(geom::make_error_nopath(ErrorCode::limit, out_of_memory_message));
+}
+
 std::string known_ops() {
     std::string list;
     for (const OpEntry& op : op_table) {
@@ -80,6 +88,7 @@ protocol::OpResult dispatch(const json& request) {
 // One request with the reader's problems inside it (paths relative to the request).
 json respond(const json& request, const std::vector<Error>& problems) {
     if (!problems.empty()) return error_response(problems.front());
+    arm_memory_reserve(); // spent by an earlier request of the batch: set one aside again
     try {
         protocol::OpResult r = dispatch(request);
         if (!r) return error_response(r.error());
@@ -87,8 +96,9 @@ json respond(const json& request, const std::vector<Error>& problems) {
         out["ok"] = true;
         return out;
     } catch (const std::bad_alloc&) {
-        return error_response(geom::make_error_nopath(
-            ErrorCode::limit, "the request needs more memory than is available"));
+        // The reserve (out_of_memory.hpp) let the unwinding finish; set a new one aside.
+        arm_memory_reserve();
+        return out_of_memory_response();
     } catch (const std::exception& e) {
         // Exceptions stop here: a bug must still produce a well-formed answer.
         return error_response(geom::make_error_nopath(ErrorCode::internal,
@@ -125,12 +135,89 @@ json handle_request(const json& request) {
     return respond(request, {});
 }
 
+json input_error_response(const Error& e) {
+    return error_response(e);
+}
+
 int run_protocol(std::istream& in, std::ostream& out, std::ostream& err) {
-    std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    std::string text;
+    char buf[1 << 16];
+    while (in.read(buf, sizeof buf) || in.gcount() > 0) {
+        const auto n = static_cast<std::size_t>(in.gcount());
+        if (text.size() + n > max_input_bytes) {
+            std::string s;
+            write_json(s, error_response(geom::make_error_nopath(
+                              ErrorCode::limit, "the input is larger than 256 MiB; requests may "
+                                                "be at most 256 MiB")));
+            out << s << "\n";
+            return 1;
+        }
+        text.append(buf, n);
+    }
     if (in.bad()) {
         err << "isoparm geom: cannot read the input\n";
         return 2;
     }
+    return run_protocol_text(std::move(text), out, err);
+}
+
+namespace {
+
+// Appends one response's text; running out of memory while writing it replaces it with a
+// `limit` response (the text written so far for it is dropped). Returns whether it succeeded.
+bool append_response(std::string& s, json response) {
+    const ReleaseJsonOnExit release(response); // a big answer is freed without allocating
+    const std::size_t mark = s.size();
+    try {
+        write_json(s, response);
+        return succeeded(response);
+    } catch (const std::bad_alloc&) {
+        s.resize(mark);
+        s.shrink_to_fit();
+        arm_memory_reserve();
+        write_json(s, out_of_memory_response());
+        return false;
+    }
+}
+
+// A streamed answer (tessellate, polygonize, evaluate: protocol_stream.hpp). Errors and
+// running out of memory happen before its first byte is written and are ordinary error
+// responses; once writing starts nothing allocates.
+bool stream_response(std::string& s, std::ostream& out, const json& request, StreamedOp op) {
+    arm_memory_reserve();
+    const std::size_t mark = s.size();
+    try {
+        geom::Expected<StreamedAnswer> answer = op(request);
+        if (!answer) {
+            write_json(s, error_response(answer.error()));
+            return false;
+        }
+        s.reserve(s.size() + stream_chunk_bytes + 4096); // then writing allocates nothing
+        (*answer)(s, out);
+        return true;
+    } catch (const std::bad_alloc&) {
+        s.resize(mark);
+        arm_memory_reserve();
+        write_json(s, out_of_memory_response());
+        return false;
+    } catch (const std::exception& e) {
+        s.resize(mark);
+        write_json(s, error_response(geom::make_error_nopath(
+                          ErrorCode::internal, std::string("internal error: ") + e.what())));
+        return false;
+    }
+}
+
+// One request's answer into `s` (streamed answers may already be partly written to `out`).
+bool answer_into(std::string& s, std::ostream& out, const json& request,
+                 const std::vector<Error>& problems) {
+    if (problems.empty())
+        if (const StreamedOp op = streamed_op_of(request))
+            return stream_response(s, out, request, op);
+    return append_response(s, respond(request, problems));
+}
+
+int answer(std::string text, std::ostream& out, std::ostream& err) {
     geom::Expected<ReadJson> read = read_json(text);
     text.clear();
     text.shrink_to_fit();
@@ -144,33 +231,53 @@ int run_protocol(std::istream& in, std::ostream& out, std::ostream& err) {
         out << s << "\n";
         return 1;
     }
-    const json& value = read->value;
+    json& value = read->value;
+    const ReleaseJsonOnExit release(value); // however this ends, the request is freed safely
     const std::vector<Error>& problems = read->problems;
     std::string s;
     int status = 0;
     if (value.is_array()) {
-        // A batch: each element answered on its own, paths relative to the element.
+        // A batch: each element answered on its own, paths relative to the element, and
+        // written as soon as it is answered (memory follows one answer, not the batch).
         const auto by_element = problems_by_element(problems);
         static const std::vector<Error> none;
-        s += '[';
+        const BatchBudget budget; // one work budget for the whole batch
+        out << '[';
         for (std::size_t i = 0; i < value.size(); ++i) {
             const auto found = by_element.find(i);
-            const json response =
-                respond(value[i], found == by_element.end() ? none : found->second);
-            if (!succeeded(response)) status = 1;
             if (i > 0) s += ", ";
-            write_json(s, response);
+            if (!answer_into(s, out, value[i], found == by_element.end() ? none : found->second))
+                status = 1;
+            release_json(value[i]); // answered: its memory is no longer needed
+            out << s;
+            s.clear();
+            s.shrink_to_fit();
         }
         s += ']';
     } else {
-        const json response = respond(value, problems);
-        if (!succeeded(response)) status = 1;
-        write_json(s, response);
+        if (!answer_into(s, out, value, problems)) status = 1;
     }
     s += '\n';
     out << s;
     out.flush();
     return status;
+}
+
+} // namespace
+
+int run_protocol_text(std::string text, std::ostream& out, std::ostream& err) {
+    arm_memory_reserve();
+    try {
+        return answer(std::move(text), out, err);
+    } catch (const std::bad_alloc&) {
+        // Reading the input itself ran out of memory (an answer never gets here).
+        arm_memory_reserve();
+        std::string s;
+        write_json(s, out_of_memory_response());
+        out << s << "\n";
+        out.flush();
+        return 1;
+    }
 }
 
 } // namespace isoparm::doc

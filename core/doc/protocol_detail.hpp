@@ -2,7 +2,9 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <initializer_list>
+#include <iosfwd>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -34,6 +36,14 @@ OpResult op_insert_knot(const json& request); // protocol_refine.cpp
 OpResult op_elevate_degree(const json& request);
 OpResult op_split(const json& request);
 OpResult op_polygonize(const json& request); // protocol_implicit.cpp
+// The meshes of `tessellate` and `polygonize` before they become JSON: the text path writes
+// them straight to the output (protocol_stream.hpp) instead of building a JSON tree.
+geom::Expected<geom::Mesh> tessellate_mesh(const json& request);
+geom::Expected<geom::Mesh> polygonize_mesh(const json& request);
+// `evaluate` for the text path: checked and computed into compact values, written by the
+// returned writer exactly as op_evaluate's answer would be (protocol_stream.hpp).
+geom::Expected<std::function<void(std::string&, std::ostream&)>>
+streamed_evaluate(const json& request);
 
 // ---- errors ----------------------------------------------------------------------------
 geom::Error schema_error(std::string message, std::string path);

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "core/doc/protocol_detail.hpp"
+#include "core/doc/work_budget.hpp"
 #include "core/geom/implicit/expression.hpp"
 #include "core/geom/implicit/polygonize.hpp"
 #include "core/geom/validate.hpp"
@@ -11,7 +12,7 @@ namespace isoparm::doc::protocol {
 using geom::ErrorCode;
 using geom::Expected;
 
-OpResult op_polygonize(const json& request) {
+Expected<geom::Mesh> polygonize_mesh(const json& request) {
     if (geom::Status s = check_fields(request, "polygonize", {"implicit", "bounds", "cell"}); !s)
         return s.error();
 
@@ -75,6 +76,16 @@ OpResult op_polygonize(const json& request) {
             "/cell");
     }
 
+    const auto instructions = static_cast<double>(program->instruction_count());
+    const WorkEstimate cost = estimate_polygonization(points, instructions);
+    // Blame the long expression when it is long, else the fine grid.
+    if (geom::Status ok =
+            spend_work(cost, instructions > 64 ? "/implicit" : "/cell",
+                       "an expression of " + std::to_string(program->instruction_count()) +
+                           " operations on a grid of " + with_thousands(points) + " points");
+        !ok)
+        return ok.error();
+
     geom::implicit::PolygonizeOptions options;
     options.lo = corner[0];
     options.hi = corner[1];
@@ -91,6 +102,12 @@ OpResult op_polygonize(const json& request) {
         }
         return e;
     }
+    return mesh;
+}
+
+OpResult op_polygonize(const json& request) {
+    Expected<geom::Mesh> mesh = polygonize_mesh(request);
+    if (!mesh) return mesh.error();
     return mesh_to_json(*mesh);
 }
 

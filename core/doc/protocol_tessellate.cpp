@@ -2,6 +2,7 @@
 #include "core/doc/json_geom.hpp"
 #include "core/doc/json_values.hpp"
 #include "core/doc/protocol_detail.hpp"
+#include "core/doc/work_budget.hpp"
 #include "core/geom/implicit/polygonize.hpp" // the mesh caps
 #include "core/geom/tessellate.hpp"
 #include "core/geom/validate.hpp"
@@ -27,7 +28,7 @@ json mesh_to_json(const geom::Mesh& mesh) {
                 {"triangles", std::move(triangles)}};
 }
 
-OpResult op_tessellate(const json& request) {
+Expected<geom::Mesh> tessellate_mesh(const json& request) {
     if (find_field(request, "curve"))
         return schema_error("tessellate takes a surface, not a curve", "/curve");
     if (geom::Status s = check_fields(request, "tessellate", {"surface", "samples"}); !s)
@@ -64,9 +65,23 @@ OpResult op_tessellate(const json& request) {
                                     std::to_string(geom::max_mesh_vertices) + " are allowed",
                                 "/samples");
     }
-    const geom::Mesh mesh =
-        geom::tessellate(subject->surface, static_cast<int>(n[0]), static_cast<int>(n[1]));
-    return mesh_to_json(mesh);
+    const geom::Surface& surface = subject->surface;
+    const WorkEstimate cost = estimate_tessellation(
+        static_cast<double>(n[0]), static_cast<double>(n[1]), surface.degree_u, surface.degree_v);
+    if (geom::Status ok =
+            spend_work(cost, "/samples",
+                       "a " + std::to_string(n[0]) + " x " + std::to_string(n[1]) +
+                           " tessellation of a degree (" + std::to_string(surface.degree_u) + ", " +
+                           std::to_string(surface.degree_v) + ") surface");
+        !ok)
+        return ok.error();
+    return geom::tessellate(subject->surface, static_cast<int>(n[0]), static_cast<int>(n[1]));
+}
+
+OpResult op_tessellate(const json& request) {
+    Expected<geom::Mesh> mesh = tessellate_mesh(request);
+    if (!mesh) return mesh.error();
+    return mesh_to_json(*mesh);
 }
 
 } // namespace isoparm::doc::protocol

@@ -1,20 +1,16 @@
-// Scene files: indented text with exact numbers, reading with limits, atomic saving.
+// Scene files: indented text with exact numbers; reading and writing go through
+// input_file.hpp and atomic_file.hpp.
 #include <algorithm>
 #include <array>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <csignal>
-#include <cstring>
-#include <fcntl.h>
-#include <filesystem>
 #include <limits>
 #include <string_view>
-#include <sys/stat.h>
-#include <sys/types.h>
-#include <unistd.h>
 
+#include "core/doc/atomic_file.hpp"
+#include "core/doc/input_file.hpp"
 #include "core/doc/json_read.hpp"
+#include "core/doc/out_of_memory.hpp"
 #include "core/doc/scene_io.hpp"
 
 namespace isoparm::doc {
@@ -154,105 +150,26 @@ void write_pretty(std::string& out, const json& v, int indent) {
     }
 }
 
-// ---------------------------------------------------------------------------------------
-// Files.
-
-constexpr std::uintmax_t max_scene_bytes = 256u << 20;
-
-geom::Error io_error(const std::string& what, const std::string& path, int err) {
-    return geom::make_error_nopath(geom::ErrorCode::internal,
-                                   "cannot " + what + " '" + path + "': " + std::strerror(err));
-}
-
-bool write_all(int fd, const std::string& text) {
-    const char* p = text.data();
-    std::size_t left = text.size();
-    while (left > 0) {
-        const ssize_t n = ::write(fd, p, left);
-        if (n < 0) {
-            if (errno == EINTR) continue;
-            return false;
-        }
-        p += n;
-        left -= static_cast<std::size_t>(n);
-    }
-    return true;
-}
-
-// Temporary files of saves that never finished ("<target>.tmp-<pid>" whose process no longer
-// exists: it was killed, crashed or lost power mid-save) are removed before a new save, so
-// they do not pile up beside the scene (each can be tens of MB). A temporary file whose
-// process still runs, or might (kill says anything but ESRCH), is left alone: it may be a
-// save in progress.
-void remove_stale_temporaries(const std::string& target) {
-    const std::filesystem::path t(target);
-    const std::filesystem::path dir = t.parent_path().empty() ? "." : t.parent_path();
-    const std::string prefix = t.filename().string() + ".tmp-";
-    std::error_code ec;
-    for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-        const std::string name = it->path().filename().string();
-        if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) continue;
-        long pid = 0;
-        const char* first = name.data() + prefix.size();
-        const char* last = name.data() + name.size();
-        const auto res = std::from_chars(first, last, pid);
-        if (res.ec != std::errc() || res.ptr != last || pid <= 0 || pid == ::getpid() ||
-            pid != static_cast<pid_t>(pid))
-            continue;
-        if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
-        (void)::unlink(it->path().c_str());
-    }
-}
-
 } // namespace
 
 std::string scene_to_text(const Document& doc) {
     std::string out;
-    write_pretty(out, scene_to_json(doc), 0);
+    json tree = scene_to_json(doc);
+    const ReleaseJsonOnExit release(tree); // freed without allocating, even out of memory
+    write_pretty(out, tree, 0);
     out += '\n';
     return out;
 }
 
-geom::Expected<Document> load_scene(const std::string& path) {
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) return io_error("open", path, errno);
-    struct stat st {};
-    if (::fstat(fd, &st) != 0) {
-        const int err = errno;
-        ::close(fd);
-        return io_error("read", path, err);
-    }
-    if (!S_ISREG(st.st_mode)) {
-        ::close(fd);
-        return io_error("read", path, S_ISDIR(st.st_mode) ? EISDIR : EINVAL);
-    }
-    if (static_cast<std::uintmax_t>(st.st_size) > max_scene_bytes) {
-        ::close(fd);
-        return geom::make_error_nopath(geom::ErrorCode::limit,
-                                       "'" + path + "' is " + std::to_string(st.st_size >> 20) +
-                                           " MiB; scenes may be at most 256 MiB");
-    }
-    std::string text;
-    text.reserve(static_cast<std::size_t>(st.st_size));
-    char buf[1 << 16];
-    for (;;) {
-        const ssize_t n = ::read(fd, buf, sizeof buf);
-        if (n < 0) {
-            if (errno == EINTR) continue;
-            const int err = errno;
-            ::close(fd);
-            return io_error("read", path, err);
-        }
-        if (n == 0) break;
-        text.append(buf, static_cast<std::size_t>(n));
-        if (text.size() > max_scene_bytes) { // the file grew while we read it
-            ::close(fd);
-            return geom::make_error_nopath(geom::ErrorCode::limit,
-                                           "'" + path + "' is larger than 256 MiB");
-        }
-    }
-    ::close(fd);
+namespace {
+
+geom::Expected<Document> load_scene_text(const std::string& path) {
+    auto read = read_input_file(path, max_input_bytes);
+    if (!read) return read.error();
+    std::string text = std::move(read).value();
     auto doc = scene_from_text(text);
+    text.clear();
+    text.shrink_to_fit();
     if (!doc && !doc.error().has_path && doc.error().code == geom::ErrorCode::parse) {
         geom::Error e = doc.error();
         e.message = "'" + path + "' is not JSON: " + e.message;
@@ -261,52 +178,30 @@ geom::Expected<Document> load_scene(const std::string& path) {
     return doc;
 }
 
-geom::Status save_scene(const Document& doc, const std::string& path) {
-    // Replace the file a symbolic link points to, not the link.
-    std::string target = path;
-    std::error_code ec;
-    if (std::filesystem::is_symlink(path, ec)) {
-        const auto resolved = std::filesystem::weakly_canonical(path, ec);
-        if (ec) return io_error("resolve", path, ec.value());
-        target = resolved.string();
-    }
-    const std::string tmp = target + ".tmp-" + std::to_string(::getpid());
-    // Before the (possibly long) formatting, so a save killed early leaves nothing behind.
-    remove_stale_temporaries(target);
-    const std::string text = scene_to_text(doc);
+} // namespace
 
-    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-    if (fd < 0) return io_error("create", tmp, errno);
-    auto fail = [&](const char* what, const std::string& name, int err) -> geom::Status {
-        ::unlink(tmp.c_str());
-        return io_error(what, name, err);
-    };
-    // Keep the permissions of the file being replaced.
-    struct stat old_stat {};
-    if (::stat(target.c_str(), &old_stat) == 0 && S_ISREG(old_stat.st_mode))
-        (void)::fchmod(fd, old_stat.st_mode & 07777);
-    if (!write_all(fd, text)) {
-        const int err = errno;
-        ::close(fd);
-        return fail("write", tmp, err);
+geom::Expected<Document> load_scene(const std::string& path) {
+    arm_memory_reserve();
+    try {
+        return load_scene_text(path);
+    } catch (const std::bad_alloc&) {
+        arm_memory_reserve(); // the reserve let the unwinding finish; set a new one aside
+        return geom::make_error_nopath(geom::ErrorCode::limit,
+                                       "not enough memory to load '" + path + "'");
     }
-    // The data must be on disk before the rename makes it the scene.
-    if (::fsync(fd) != 0) {
-        const int err = errno;
-        ::close(fd);
-        return fail("flush", tmp, err);
+}
+
+geom::Status save_scene(const Document& doc, const std::string& path) {
+    // Checked before the (possibly long) formatting: a directory or a device is refused at once.
+    if (auto usable = check_output_path(path); !usable) return usable;
+    arm_memory_reserve();
+    try {
+        return write_file_atomically(path, scene_to_text(doc));
+    } catch (const std::bad_alloc&) {
+        arm_memory_reserve();
+        return geom::make_error_nopath(geom::ErrorCode::limit,
+                                       "not enough memory to save '" + path + "'");
     }
-    if (::close(fd) != 0) return fail("close", tmp, errno);
-    if (::rename(tmp.c_str(), target.c_str()) != 0) return fail("replace", target, errno);
-    // Make the rename itself durable (best effort: some file systems refuse to sync a
-    // directory, and the scene is already complete either way).
-    const std::string dir = std::filesystem::path(target).parent_path().string();
-    const int dfd = ::open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (dfd >= 0) {
-        (void)::fsync(dfd);
-        ::close(dfd);
-    }
-    return geom::Ok{};
 }
 
 } // namespace isoparm::doc

@@ -11,6 +11,7 @@
 #include "core/doc/json_geom.hpp"
 #include "core/doc/json_read.hpp"
 #include "core/doc/json_values.hpp"
+#include "core/doc/out_of_memory.hpp"
 #include "core/doc/patches.hpp"
 
 namespace isoparm::doc {
@@ -638,6 +639,8 @@ Expected<Document> scene_from_text(std::string_view text) {
     if (!read) return read.error();
     // Duplicate keys and excessive nesting are found while reading; the first one wins.
     if (!read->problems.empty()) return read->problems.front();
+    // Freed without allocating, also while unwinding from std::bad_alloc (out_of_memory.hpp).
+    const ReleaseJsonOnExit release(read->value);
     return scene_from_json(read->value);
 }
 

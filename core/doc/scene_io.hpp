@@ -26,13 +26,14 @@ std::string scene_to_text(const Document& doc);
 // this is the entry point the scene fuzzer drives.
 geom::Expected<Document> scene_from_text(std::string_view text);
 
-// Reads and parses a scene file. A file that cannot be read is `internal` without a path
-// (the message names the file and the reason); files above 256 MiB are `limit`.
+// Reads and parses a scene file through read_input_file: only a regular file is read (a FIFO
+// or a directory is refused without blocking). A file that cannot be read is `internal` without
+// a path (the message names the file and the reason); files above 256 MiB are `limit`.
 geom::Expected<Document> load_scene(const std::string& path);
-// Writes a temporary file beside the target ("<path>.tmp-<pid>"), flushes and fsyncs it, then
-// renames it over the target: a crash never leaves a half-written scene, and on any failure
-// (`internal`, message naming the file and the reason) the old file is intact and the
-// temporary file is removed. A symbolic link is followed: the file it points to is replaced.
+// Writes the scene with write_file_atomically (atomic_file.hpp): a crash never leaves a
+// half-written scene; only a regular file (or "-") is written; a symbolic link is followed only
+// where the kernel allows it; on any failure (`internal`, naming the file and the reason) the
+// old file is intact and no temporary file is left.
 geom::Status save_scene(const Document& doc, const std::string& path);
 
 } // namespace isoparm::doc

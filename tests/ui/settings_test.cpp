@@ -13,6 +13,9 @@ TEST(Settings, ConfigDirFollowsXdgThenHome) {
     EXPECT_EQ(config_dir_from("", "/home/a"), "/home/a/.config/isoparm");
     EXPECT_EQ(config_dir_from(nullptr, "/home/a"), "/home/a/.config/isoparm");
     EXPECT_EQ(config_dir_from(nullptr, nullptr), "");
+    // The XDG Base Directory specification: a relative value is invalid and ignored.
+    EXPECT_EQ(config_dir_from("relative/config", "/home/a"), "/home/a/.config/isoparm");
+    EXPECT_EQ(config_dir_from("relative/config", nullptr), "");
 }
 
 TEST(Settings, JsonRoundTrip) {

@@ -6,12 +6,14 @@
 #include <imgui.h>
 #include <vector>
 
+#include "core/doc/atomic_file.hpp"
 #include "core/doc/scene_io.hpp"
 #include "ui/doc_access.hpp"
 #include "ui/headless/egl_context.hpp"
 #include "ui/headless/offscreen_target.hpp"
 #include "ui/headless/png_writer.hpp"
 #include "ui/render/gl.hpp"
+#include "ui/scene_budget.hpp"
 #include "ui/workstation.hpp"
 
 namespace isoparm::ui {
@@ -20,6 +22,13 @@ std::string render_headless(const HeadlessRequest& req) {
     if (req.width < 16 || req.height < 16 || req.width > 8192 || req.height > 8192)
         return "the size " + std::to_string(req.width) + "x" + std::to_string(req.height) +
                " is outside 16x16 .. 8192x8192";
+    // The output before anything else: a directory, a device or the scene itself as output is
+    // refused before any work (and the scene is never overwritten by its own picture).
+    if (const geom::Status usable = doc::check_output_path(req.output); !usable)
+        return usable.error().message;
+    if (const geom::Status distinct = doc::check_output_is_not_input(req.output, {req.scene_path});
+        !distinct)
+        return distinct.error().message;
     // Load first: a bad scene should not cost a GL context.
     doc::Document document = doc::default_document();
     if (!req.scene_path.empty()) {
@@ -34,6 +43,13 @@ std::string render_headless(const HeadlessRequest& req) {
         }
         document = std::move(loaded).value();
     }
+    // A scene that would take minutes or gigabytes to show is refused like a bad one.
+    if (std::string too_large = scene_over_budget(document); !too_large.empty())
+        return req.scene_path.empty() ? too_large : "'" + req.scene_path + "': " + too_large;
+    // Under `ulimit -v`, a render that cannot fit is refused before the driver would crash.
+    if (std::string short_of = memory_limit_problem(document, display_driver_bytes);
+        !short_of.empty())
+        return short_of;
 
     std::string error;
     const std::unique_ptr<EglContext> egl = EglContext::create(error);

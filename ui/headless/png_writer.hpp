@@ -1,5 +1,5 @@
-// Writing RGBA pictures as PNG, atomically: a temporary file renamed over the target, so a
-// failure never leaves a partial PNG.
+// Writing RGBA pictures as PNG through doc::write_file_atomically: a failure (full disk, file
+// size limit, a directory or device named as output) never leaves a partial PNG.
 #pragma once
 
 #include <cstdint>
@@ -8,7 +8,8 @@
 
 namespace isoparm::ui {
 
-// rgba: width * height * 4 bytes, first row at the top. Returns "" or the reason it failed.
+// rgba: width * height * 4 bytes, first row at the top. `path` "-" is standard output.
+// Returns "" or the reason it failed (naming the file and the system's reason).
 std::string write_png(const std::string& path, int width, int height,
                       const std::vector<std::uint8_t>& rgba);
 

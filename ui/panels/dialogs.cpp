@@ -232,6 +232,38 @@ void unsaved_dialog(AppContext& ctx) {
     ImGui::EndPopup();
 }
 
+// Save found the file changed on disk since it was loaded or last saved (another window or
+// program wrote it): replacing it would silently lose that work, so ask.
+void overwrite_changed_dialog(AppContext& ctx) {
+    if (ctx.ui.confirm_overwrite_changed) {
+        ImGui::OpenPopup("File changed on disk");
+        ctx.ui.confirm_overwrite_changed = false;
+    }
+    center_next(480, ctx.ui.scale());
+    if (!ImGui::BeginPopupModal("File changed on disk", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
+        return;
+    ImGui::TextWrapped("'%s' was changed on disk since it was opened or last saved (by another "
+                       "window or program). Saving now replaces those changes with this scene.",
+                       ctx.file_path.c_str());
+    ImGui::Spacing();
+    if (ImGui::Button("Save anyway")) {
+        ImGui::CloseCurrentPopup();
+        if (save_as(ctx, ctx.file_path) && ctx.ui.pending.kind != PendingAction::Kind::none)
+            run_pending(ctx); // the unsaved-changes question asked for this save
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Save as...")) {
+        ImGui::CloseCurrentPopup();
+        request_save_as(ctx);
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel") || escape_pressed()) {
+        ImGui::CloseCurrentPopup();
+        ctx.ui.pending = {};
+    }
+    ImGui::EndPopup();
+}
+
 void error_dialog(AppContext& ctx) {
     if (ctx.ui.show_error) {
         ImGui::OpenPopup("##error");
@@ -326,6 +358,7 @@ void draw_dialogs(AppContext& ctx) {
     new_surface_dialog(ctx);
     file_dialog(ctx);
     unsaved_dialog(ctx);
+    overwrite_changed_dialog(ctx);
     error_dialog(ctx);
     help_dialog(ctx);
     draw_recovery_dialog(ctx); // last: it waits until no other dialog is up

@@ -1,0 +1,50 @@
+# Out of memory is an error, never a signal (issue 14, item 6): `isoparm geom` on every request
+# in assets/requests plus heavy ones, and (with the GUI) `isoparm render` on scenes, each under
+# several `ulimit -v` caps. Before the fix 23 of 112 such geom runs and 10 of 28 render runs
+# ended in SIGABRT or SIGSEGV. Exit statuses must be numbers 0..2; a signal is not.
+# Run as: cmake -DISOPARM=<binary> -DSOURCE_DIR=<repo> -DWORK=<dir> -DRENDER=ON|OFF -P ...
+if(SANITIZE)
+  message(STATUS "skipped: AddressSanitizer cannot start inside an address-space limit")
+  return()
+endif()
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+set(bicubic "{\"type\": \"bezier\", \"degree\": [3, 3], \"points\": [[[0,0,0],[0,1,0],[0,2,0],[0,3,0]], [[1,0,0],[1,1,1],[1,2,1],[1,3,0]], [[2,0,0],[2,1,1],[2,2,1],[2,3,0]], [[3,0,0],[3,1,0],[3,2,0],[3,3,0]]]}")
+file(WRITE ${WORK}/tessellate.json "{\"op\": \"tessellate\", \"surface\": ${bicubic}, \"samples\": [1000, 1000]}")
+file(WRITE ${WORK}/batch.json "[{\"op\": \"tessellate\", \"surface\": ${bicubic}, \"samples\": [1000, 1000]}, {\"op\": \"basis\", \"degree\": 1, \"knots\": [0, 0, 1, 1], \"param\": 0.5}]")
+set(params "[0.0, 0.0]")
+foreach(k RANGE 1 20000)
+  string(APPEND params ", [0.5, 0.25]")
+endforeach()
+file(WRITE ${WORK}/evaluate.json "{\"op\": \"evaluate\", \"surface\": ${bicubic}, \"derivatives\": 3, \"normals\": true, \"params\": [${params}]}")
+file(GLOB requests ${SOURCE_DIR}/assets/requests/*.json)
+list(APPEND requests ${WORK}/tessellate.json ${WORK}/batch.json ${WORK}/evaluate.json)
+
+set(signals 0)
+set(runs 0)
+function(run_limited kib)
+  execute_process(COMMAND sh -c "ulimit -v ${kib} && exec \"$0\" \"$@\"" ${ARGN}
+                  RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err TIMEOUT 120)
+  math(EXPR runs "${runs} + 1")
+  set(runs ${runs} PARENT_SCOPE)
+  if(NOT rc MATCHES "^[0-2]$")
+    message(SEND_ERROR "ulimit -v ${kib}: ${ARGN}: ended with '${rc}'\n${err}")
+    math(EXPR signals "${signals} + 1")
+    set(signals ${signals} PARENT_SCOPE)
+  endif()
+endfunction()
+
+foreach(request ${requests})
+  foreach(kib 30000 60000 150000 300000)
+    run_limited(${kib} ${ISOPARM} geom ${request})
+  endforeach()
+endforeach()
+
+if(RENDER)
+  foreach(scene ${SOURCE_DIR}/assets/scenes/fig3a-bspline.json ${SOURCE_DIR}/assets/scenes/fig9-skinned.json)
+    foreach(kib 100000 300000 600000 800000 900000)
+      run_limited(${kib} ${ISOPARM} render ${scene} -o ${WORK}/out.png --view 3d --size 160x100)
+    endforeach()
+  endforeach()
+endif()
+message(STATUS "${runs} runs under ulimit -v, ${signals} ended by a signal")

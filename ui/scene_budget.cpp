@@ -1,0 +1,78 @@
+// Scene display cost against the work budget (see scene_budget.hpp).
+#include "ui/scene_budget.hpp"
+
+#include <fstream>
+#include <sys/resource.h>
+#include <unistd.h>
+#include <variant>
+
+#include "core/doc/work_budget.hpp"
+#include "ui/render/tessellation_sampling.hpp"
+
+namespace isoparm::ui {
+
+SceneDisplayCost estimate_scene_display(const doc::Document& d) {
+    SceneDisplayCost cost;
+    for (const doc::Object& o : d.objects) {
+        if (const auto* c = std::get_if<doc::CurveObject>(&o.shape))
+            cost.control_points += static_cast<double>(c->curve.points.size());
+        const auto* s = std::get_if<doc::SurfaceObject>(&o.shape);
+        if (!s) continue;
+        cost.control_points += static_cast<double>(s->surface.points.size());
+        const auto [su, sv] = display_samples(s->surface, d.display.density);
+        const double vertices = static_cast<double>(su) * sv;
+        ++cost.surfaces;
+        cost.vertices += vertices;
+        cost.steps +=
+            doc::estimate_tessellation(su, sv, s->surface.degree_u, s->surface.degree_v).steps;
+        cost.bytes += vertices * display_bytes_per_vertex + display_bytes_per_surface;
+    }
+    cost.steps += cost.control_points * display_steps_per_control_point;
+    cost.bytes += cost.control_points * display_bytes_per_control_point;
+    return cost;
+}
+
+std::string scene_over_budget(const doc::Document& d) {
+    const SceneDisplayCost cost = estimate_scene_display(d);
+    const double max_bytes = doc::max_answer_numbers * doc::bytes_per_answer_number;
+    if (cost.bytes <= max_bytes && cost.steps <= doc::max_work_steps) return "";
+    const double mib = cost.bytes / (1 << 20);
+    return "the scene is too large to show: its " + std::to_string(cost.surfaces) +
+           " surfaces make " + doc::with_thousands(cost.vertices) + " vertices and " +
+           doc::with_thousands(cost.control_points) + " control points, which would need about " +
+           doc::with_thousands(mib) + " MiB and " + doc::with_thousands(cost.steps) +
+           " basis steps; the work budget allows about " +
+           doc::with_thousands(max_bytes / (1 << 20)) + " MiB and " +
+           doc::with_thousands(doc::max_work_steps) +
+           " steps (about 10 s); a lower display density, fewer surfaces or fewer control points "
+           "fit";
+}
+
+namespace {
+
+// The address space this process uses now (VmSize), in bytes; 0 when unknown.
+double address_space_in_use() {
+    std::ifstream statm("/proc/self/statm");
+    double pages = 0;
+    if (!(statm >> pages)) return 0;
+    return pages * static_cast<double>(::sysconf(_SC_PAGESIZE));
+}
+
+} // namespace
+
+std::string memory_limit_problem(const doc::Document& d, double driver_bytes) {
+    rlimit limit{};
+    if (::getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return "";
+    const double have = static_cast<double>(limit.rlim_cur);
+    const double need = address_space_in_use() + driver_bytes + estimate_scene_display(d).bytes;
+    if (need <= have) return "";
+    const double mib = 1 << 20;
+    return "not enough memory: the address-space limit (ulimit -v) is " +
+           doc::with_thousands(have / mib) + " MiB, and showing this scene needs about " +
+           doc::with_thousands(need / mib) + " MiB" +
+           (driver_bytes > 0 ? " (the OpenGL driver takes about " +
+                                   doc::with_thousands(driver_bytes / mib) + " of them)"
+                             : std::string{});
+}
+
+} // namespace isoparm::ui
