@@ -14,6 +14,7 @@
 #include "core/geom/knots.hpp"
 #include "ui/doc_access.hpp"
 #include "ui/panels/curve_designer.hpp"
+#include "ui/panels/flow.hpp"
 #include "ui/panels/panels.hpp"
 
 namespace isoparm::ui {
@@ -57,7 +58,7 @@ void plane_row(AppContext& ctx, const doc::Object& obj, const doc::CurveObject& 
     if (ImGui::Combo("Plane", &plane, planes, 4) && plane != static_cast<int>(c.plane))
         run(ctx,
             doc::set_curve_plane(obj.id, static_cast<doc::CurvePlane>(plane), cd.carry_points));
-    ImGui::SameLine();
+    same_line_if_fits(toggle_width("move points with it"));
     ImGui::Checkbox("move points with it", &cd.carry_points);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("On: the drawing moves into the new plane (its two coordinates are\n"
@@ -87,9 +88,14 @@ void point_controls(AppContext& ctx, const doc::Object& obj, const doc::CurveObj
                            ImGui::GetStyle().ItemSpacing.x * 4) /
                               3 -
                           ImGui::CalcTextSize("x").x - ImGui::GetStyle().ItemInnerSpacing.x;
+    // In a row while each field shows a whole value, else one under the other.
+    const float whole = ImGui::CalcTextSize("-00.000").x + ImGui::GetStyle().FramePadding.x * 2;
+    const bool row = field_w >= whole;
+    const float label_w = ImGui::CalcTextSize("x").x + ImGui::GetStyle().ItemInnerSpacing.x;
     for (int a = 0; a < 3; ++a) {
-        ImGui::SameLine();
-        ImGui::SetNextItemWidth(std::max(field_w, 30.f));
+        if (row || a == 0) ImGui::SameLine();
+        ImGui::SetNextItemWidth(row ? field_w
+                                    : std::max(ImGui::GetContentRegionAvail().x - label_w, whole));
         double value = p[a];
         if (ImGui::InputDouble(labels[a], &value, 0, 0, "%.3f") && std::isfinite(value) &&
             value != p[a]) {
@@ -99,7 +105,7 @@ void point_controls(AppContext& ctx, const doc::Object& obj, const doc::CurveObj
         }
         if (ImGui::IsItemDeactivatedAfterEdit()) ctx.seal();
     }
-    ImGui::SameLine();
+    same_line_if_fits(button_width("Delete"));
     // The curve `g` refers to is replaced by a deletion: nothing below may read it this frame.
     if (ImGui::Button("Delete") && run(ctx, doc::delete_curve_point(obj.id, i))) return;
 
@@ -107,7 +113,7 @@ void point_controls(AppContext& ctx, const doc::Object& obj, const doc::CurveObj
     if (!geom::is_rational(g.type)) {
         ImGui::AlignTextToFramePadding();
         ImGui::TextDisabled("w%d = 1 (%s)", i, geom::spline_type_name(g.type));
-        ImGui::SameLine();
+        same_line_if_fits(button_width("Make rational"));
         if (ImGui::SmallButton("Make rational")) {
             doc::CurveObject r = c;
             r.curve.type = geom::is_bezier(g.type) ? geom::SplineType::rational_bezier
@@ -151,7 +157,7 @@ void degree_and_knots(AppContext& ctx, const doc::Object& obj, const doc::CurveO
         ImGui::SetTooltip("Sets the degree p (1..%d for %d points): the knots are recomputed and "
                           "the shape changes.",
                           g.count() - 1, g.count());
-    ImGui::SameLine();
+    same_line_if_fits(button_width("Elevate"));
     if (ImGui::Button("Elevate")) run(ctx, doc::elevate_degree(obj.id, geom::Dir::u));
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
@@ -280,8 +286,8 @@ void draw_curve_designer_panel(AppContext& ctx) {
     const float k = ctx.ui.scale();
     {
         const geom::Curve& g = c->curve;
-        ImGui::Text("%s: %s, degree %d, %d points", obj->name.c_str(),
-                    geom::spline_type_name(g.type), g.degree, g.count());
+        ImGui::TextWrapped("%s: %s, degree %d, %d points", obj->name.c_str(),
+                           geom::spline_type_name(g.type), g.degree, g.count());
     }
     plane_row(ctx, *obj, *c);
     if (!(c = selected_curve(ctx, &obj))) return;

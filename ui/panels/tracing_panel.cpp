@@ -10,6 +10,7 @@
 #include "core/doc/patches.hpp"
 #include "ui/canvas_map.hpp"
 #include "ui/doc_access.hpp"
+#include "ui/panels/flow.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/surface_actions.hpp"
 #include "ui/ui_report.hpp"
@@ -160,13 +161,8 @@ void knot_strip(AppContext& ctx, const doc::Object& obj, const geom::Surface& s,
 // The patch structure's setting (kept with the scene) and which borders it can hold.
 void continuity_controls(AppContext& ctx, const doc::Object& obj) {
     ImGui::TextUnformatted("Keep across borders:");
-    const ImGuiStyle& st = ImGui::GetStyle();
     for (doc::Continuity c : {doc::Continuity::off, doc::Continuity::c0, doc::Continuity::c1}) {
-        // Beside the label while the choice fits, else wrapped (a narrow column).
-        const float need = ImGui::GetFrameHeight() + st.ItemInnerSpacing.x +
-                           ImGui::CalcTextSize(doc::continuity_name(c)).x;
-        ImGui::SameLine();
-        if (ImGui::GetContentRegionAvail().x < need) ImGui::NewLine();
+        same_line_if_fits(toggle_width(doc::continuity_name(c)));
         if (ImGui::RadioButton(doc::continuity_name(c), ctx.doc.continuity == c))
             set_continuity(ctx, c);
     }
