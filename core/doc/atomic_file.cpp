@@ -1,5 +1,6 @@
 // Atomic, checked file output (see atomic_file.hpp for the rules and why).
 #include "core/doc/atomic_file.hpp"
+#include "core/doc/input_file.hpp"
 
 #include <cerrno>
 #include <charconv>
@@ -24,18 +25,9 @@ geom::Error io_error(const std::string& what, const std::string& path, int err) 
                                    "cannot " + what + " '" + path + "': " + std::strerror(err));
 }
 
-const char* kind_of(mode_t mode) {
-    if (S_ISDIR(mode)) return "a directory";
-    if (S_ISFIFO(mode)) return "a FIFO";
-    if (S_ISCHR(mode)) return "a character device";
-    if (S_ISBLK(mode)) return "a block device";
-    if (S_ISSOCK(mode)) return "a socket";
-    return "not a regular file";
-}
-
 geom::Error not_regular(const std::string& path, mode_t mode) {
     return geom::make_error_nopath(geom::ErrorCode::internal,
-                                   "cannot write '" + path + "': it is " + kind_of(mode) +
+                                   "cannot write '" + path + "': it is " + file_kind_name(mode) +
                                        "; only regular files (or '-' for standard output) "
                                        "are written");
 }

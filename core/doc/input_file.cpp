@@ -26,15 +26,6 @@ geom::Error too_large(const std::string& name, std::uintmax_t max_bytes) {
                                        "; inputs may be at most " + mib(max_bytes));
 }
 
-const char* kind_of(mode_t mode) {
-    if (S_ISDIR(mode)) return "a directory";
-    if (S_ISFIFO(mode)) return "a FIFO";
-    if (S_ISCHR(mode)) return "a character device";
-    if (S_ISBLK(mode)) return "a block device";
-    if (S_ISSOCK(mode)) return "a socket";
-    return "not a regular file";
-}
-
 std::int64_t nanoseconds(const struct timespec& t) {
     return static_cast<std::int64_t>(t.tv_sec) * 1000000000 + t.tv_nsec;
 }
@@ -84,8 +75,8 @@ geom::Expected<std::string> read_input_file(const std::string& path, std::uintma
     if (::fstat(fd, &st) != 0) return io_error("read", path, errno);
     if (!S_ISREG(st.st_mode))
         return geom::make_error_nopath(geom::ErrorCode::internal,
-                                       "cannot read '" + path + "': it is " + kind_of(st.st_mode) +
-                                           ", not a regular file");
+                                       "cannot read '" + path + "': it is " +
+                                           file_kind_name(st.st_mode) + ", not a regular file");
     if (static_cast<std::uintmax_t>(st.st_size) > max_bytes)
         return geom::make_error_nopath(geom::ErrorCode::limit,
                                        "'" + path + "' is " +
@@ -111,6 +102,15 @@ std::optional<FileStamp> stamp_of(const std::string& path) {
 
 bool changed_on_disk(const std::string& path, const std::optional<FileStamp>& known) {
     return stamp_of(path) != known;
+}
+
+const char* file_kind_name(unsigned mode) {
+    if (S_ISDIR(mode)) return "a directory";
+    if (S_ISFIFO(mode)) return "a FIFO";
+    if (S_ISCHR(mode)) return "a character device";
+    if (S_ISBLK(mode)) return "a block device";
+    if (S_ISSOCK(mode)) return "a socket";
+    return "not a regular file";
 }
 
 } // namespace isoparm::doc

@@ -11,6 +11,10 @@
 namespace isoparm::doc {
 
 // The most any input file or standard input may hold (scenes and `geom` requests alike).
+// What a file that is not regular is, for messages: "a directory", "a FIFO", "a character
+// device", "a block device", "a socket" (the mode as stat gives it).
+const char* file_kind_name(unsigned mode);
+
 inline constexpr std::uintmax_t max_input_bytes = std::uintmax_t{256} << 20;
 
 // Reads the regular file `path` whole. It is opened with O_NONBLOCK (opening a FIFO never

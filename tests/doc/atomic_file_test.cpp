@@ -19,6 +19,7 @@
 #include <unistd.h>
 
 #include "core/doc/atomic_file.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace fs = std::filesystem;
 using isoparm::doc::check_output_is_not_input;
@@ -29,16 +30,7 @@ namespace {
 
 class AtomicFile : public ::testing::Test {
 protected:
-    void SetUp() override {
-        std::string pattern = (fs::temp_directory_path() / "isoparm-atomic-XXXXXX").string();
-        ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-        dir_ = pattern;
-    }
-    void TearDown() override {
-        std::error_code ec;
-        fs::remove_all(dir_, ec);
-    }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+    std::string path(const std::string& name) const { return tmp_.path(name); }
     // Every name in the directory: a leftover temporary file shows up here.
     std::vector<std::string> names() const { return names_in(dir_); }
     static std::vector<std::string> names_in(const fs::path& dir) {
@@ -47,7 +39,8 @@ protected:
         std::sort(out.begin(), out.end());
         return out;
     }
-    fs::path dir_;
+    isoparm::test::TempDir tmp_{"isoparm-atomic"};
+    const fs::path& dir_ = tmp_.dir();
 };
 
 std::string read_file(const std::string& p) {

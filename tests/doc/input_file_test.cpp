@@ -13,6 +13,7 @@
 
 #include "core/doc/input_file.hpp"
 #include "core/doc/scene_io.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace fs = std::filesystem;
 using isoparm::doc::changed_on_disk;
@@ -26,17 +27,9 @@ namespace {
 
 class InputFile : public ::testing::Test {
 protected:
-    void SetUp() override {
-        std::string pattern = (fs::temp_directory_path() / "isoparm-input-XXXXXX").string();
-        ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-        dir_ = pattern;
-    }
-    void TearDown() override {
-        std::error_code ec;
-        fs::remove_all(dir_, ec);
-    }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-    fs::path dir_;
+    std::string path(const std::string& name) const { return tmp_.path(name); }
+    isoparm::test::TempDir tmp_{"isoparm-input"};
+    const fs::path& dir_ = tmp_.dir();
 };
 
 // Runs `body` in a child with an alarm: a call that blocks (the old open of a FIFO) fails the

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "core/doc/scene_io.hpp"
+#include "tests/support/temp_dir.hpp"
 #include "ui/actions.hpp"
 #include "ui/app_context.hpp"
 #include "ui/scene_budget.hpp"
@@ -22,15 +23,8 @@ namespace {
 class FileSafety : public ::testing::Test {
 protected:
     void SetUp() override {
-        std::string pattern = (fs::temp_directory_path() / "isoparm-ui-files-XXXXXX").string();
-        ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-        dir_ = pattern;
         scene_ = (dir_ / "scene.json").string();
         ASSERT_TRUE(doc::save_scene(doc::default_document(), scene_));
-    }
-    void TearDown() override {
-        std::error_code ec;
-        fs::remove_all(dir_, ec);
     }
     static std::string read(const std::string& p) {
         std::ifstream in(p);
@@ -43,7 +37,8 @@ protected:
         ctx.remember_settings = false;
         return ctx;
     }
-    fs::path dir_;
+    isoparm::test::TempDir tmp_{"isoparm-ui-files"};
+    const fs::path& dir_ = tmp_.dir();
     std::string scene_;
 };
 
