@@ -3,6 +3,7 @@
 #include "ui/workstation.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
@@ -294,6 +295,12 @@ void Workstation::frame(unsigned target_framebuffer) {
     const ImVec4 bg = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg); // the panels' background
     glClearColor(bg.x, bg.y, bg.z, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
+    // The 3D picture by a framebuffer copy (OpenGL rows run bottom-up), then ImGui on top.
+    const ImVec2 fb_scale = io.DisplayFramebufferScale;
+    const int view_x = static_cast<int>(std::lround(ui.view_rect.x * fb_scale.x));
+    const int view_bottom =
+        static_cast<int>(std::lround((ui.view_rect.y + ui.view_rect.h) * fb_scale.y));
+    renderer_->copy_to(target_framebuffer, view_x, fb_h - view_bottom);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 

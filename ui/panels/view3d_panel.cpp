@@ -18,8 +18,8 @@
 #include "core/geom/deboor.hpp"
 #include "ui/actions.hpp"
 #include "ui/canvas_map.hpp"
-#include "ui/deboor_overlay.hpp"
 #include "ui/contrast.hpp"
+#include "ui/deboor_overlay.hpp"
 #include "ui/doc_access.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/render/picking.hpp"
@@ -467,13 +467,10 @@ void draw_view3d_panel(AppContext& ctx) {
     const Viewport vp{p0.x, p0.y, avail.x, avail.y};
     handle_mouse(ctx, vp);
 
+    // The picture itself is copied into the frame under ImGui's drawing (Workstation::frame):
+    // drawn as a textured quad it cost a CPU rasteriser several milliseconds a frame. This
+    // panel has no background, so what it draws here lies on top of the picture.
     ImDrawList* dl = ImGui::GetWindowDrawList();
-    if (ctx.renderer) {
-        const auto tex =
-            reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(ctx.renderer->texture()));
-        // The texture's first row is the bottom of the picture (OpenGL), hence the flipped v.
-        dl->AddImage(tex, p0, ImVec2(p0.x + avail.x, p0.y + avail.y), ImVec2(0, 1), ImVec2(1, 0));
-    }
     dl->PushClipRect(p0, ImVec2(p0.x + avail.x, p0.y + avail.y), true);
     report_projected_points(ctx, vp);
     draw_labels(ctx, vp, dl);

@@ -70,4 +70,12 @@ void RenderTarget::resolve() const {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+void RenderTarget::copy_to(GLuint fbo, int x, int y) const {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, resolve_fbo_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo);
+    glBlitFramebuffer(0, 0, width_, height_, x, y, x + width_, y + height_, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+}
+
 } // namespace isoparm::ui

@@ -1,5 +1,5 @@
 // The 3D view's off-screen target: a multisampled framebuffer resolved into a texture
-// that ImGui::Image shows (the same in the window and headless).
+// that is copied into the frame under ImGui's drawing (the same in the window and headless).
 #pragma once
 
 #include "ui/render/gl.hpp"
@@ -18,6 +18,9 @@ public:
     void resize(int width, int height);
     void bind_for_drawing() const; // the multisampled framebuffer
     void resolve() const;          // multisampled -> texture
+    // The texture's picture into framebuffer `fbo` with its lower-left corner at (x, y), a
+    // plain copy; leaves `fbo` bound.
+    void copy_to(GLuint fbo, int x, int y) const;
     GLuint texture() const { return texture_; }
     int width() const { return width_; }
     int height() const { return height_; }

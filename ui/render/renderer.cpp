@@ -246,6 +246,10 @@ Renderer::Renderer(int msaa_samples) : impl_(std::make_unique<Impl>(msaa_samples
 
 Renderer::~Renderer() = default;
 
+void Renderer::copy_to(unsigned fbo, int x, int y) const {
+    impl_->target.copy_to(fbo, x, y);
+}
+
 unsigned Renderer::texture() const {
     return impl_->target.texture();
 }

@@ -69,6 +69,8 @@ public:
     void render(const SceneView& view, const std::vector<SurfaceDraw>& surfaces,
                 const Overlay& overlay);
     unsigned texture() const;
+    // The last picture into framebuffer `fbo`, lower-left corner at (x, y) in its pixels.
+    void copy_to(unsigned fbo, int x, int y) const;
     const RenderStats& stats() const { return stats_; }
 
 private:
