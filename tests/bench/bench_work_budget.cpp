@@ -11,8 +11,12 @@
 
 #include "core/doc/protocol.hpp"
 #include "core/doc/work_budget.hpp"
+#include "tests/support/protocol_shapes.hpp"
 
 namespace {
+
+using isoparm::test::bicubic;
+using isoparm::test::curve_of_degree;
 
 using nlohmann::json;
 using namespace isoparm::doc;
@@ -30,24 +34,6 @@ void run(benchmark::State& state, const std::string& request, double steps) {
     for (auto _ : state) benchmark::DoNotOptimize(run_protocol_text(request, out, err));
     state.counters["steps/s"] =
         benchmark::Counter(steps, benchmark::Counter::kIsIterationInvariantRate);
-}
-
-json curve_of_degree(int p) {
-    json knots = json::array(), points = json::array();
-    for (int k = 0; k <= p; ++k) knots.push_back(0.0);
-    for (int k = 0; k <= p; ++k) knots.push_back(1.0);
-    for (int k = 0; k <= p; ++k) points.push_back({k, (k * 7) % 5, 0});
-    return {{"type", "bspline"}, {"degree", p}, {"knots", knots}, {"points", points}};
-}
-
-json bicubic() {
-    json points = json::array();
-    for (int i = 0; i < 4; ++i) {
-        json row = json::array();
-        for (int j = 0; j < 4; ++j) row.push_back({i, j, (i * j) % 3});
-        points.push_back(row);
-    }
-    return {{"type", "bezier"}, {"degree", {3, 3}}, {"points", points}};
 }
 
 // The case: (p + 1)^2 steps per parameter dominate.

@@ -11,33 +11,15 @@
 #include "core/doc/json_read.hpp"
 #include "core/doc/protocol.hpp"
 #include "core/doc/work_budget.hpp"
+#include "tests/support/protocol_shapes.hpp"
 
 using nlohmann::json;
 using namespace isoparm::doc;
 
 namespace {
 
-// A clamped B-spline curve of degree p with p + 1 + extra points on [0, 1].
-json curve_of_degree(int p, int extra = 0) {
-    const int n = p + 1 + extra;
-    json knots = json::array();
-    for (int k = 0; k <= p; ++k) knots.push_back(0.0);
-    for (int k = 1; k <= extra; ++k) knots.push_back(static_cast<double>(k) / (extra + 1));
-    for (int k = 0; k <= p; ++k) knots.push_back(1.0);
-    json points = json::array();
-    for (int k = 0; k < n; ++k) points.push_back({k, (k * 7) % 5, 0});
-    return {{"type", "bspline"}, {"degree", p}, {"knots", knots}, {"points", points}};
-}
-
-json bicubic() {
-    json points = json::array();
-    for (int i = 0; i < 4; ++i) {
-        json row = json::array();
-        for (int j = 0; j < 4; ++j) row.push_back({i, j, (i * j) % 3});
-        points.push_back(row);
-    }
-    return {{"type", "bezier"}, {"degree", {3, 3}}, {"points", points}};
-}
+using isoparm::test::bicubic;
+using isoparm::test::curve_of_degree;
 
 json params(std::size_t count) {
     json ts = json::array();
