@@ -4,6 +4,7 @@
 # The window tells where its panels, menus and handles are through ISOPARM_UI_REPORT
 # (ui/ui_report.hpp), so a scenario clicks on "the curve designer's canvas", not on guessed
 # pixels, and fails when a panel stops answering.
+import contextlib
 import json
 import os
 import shutil
@@ -33,6 +34,23 @@ def start_xvfb(size="1600x1000"):
         proc.kill()
         return None, None
     return proc, ":" + number.decode().strip()
+
+
+@contextlib.contextmanager
+def display(private, size="1600x1000"):
+    """A display for the window: a private Xvfb of `size` when `private`, else $DISPLAY.
+    Yields the display name, or None when there is none (the caller says so and stops)."""
+    xvfb = None
+    if private:
+        xvfb, name = start_xvfb(size)
+        if xvfb:
+            os.environ["DISPLAY"] = name
+    try:
+        yield os.environ.get("DISPLAY") if (xvfb or not private) else None
+    finally:
+        if xvfb:
+            xvfb.terminate()
+            xvfb.wait(timeout=10)
 
 
 def sanitizer_report(text):

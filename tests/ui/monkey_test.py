@@ -16,7 +16,7 @@ import sys
 import tempfile
 import time
 
-from gui_session import Session, sanitizer_report, start_xvfb
+from gui_session import Session, display, sanitizer_report
 
 # Keys the workstation or ImGui reacts to, and harmless others (typed into a focused field).
 PLAIN_KEYS = ["f", "p", "1", "2", "3", "c", "n", "i", "k", "Escape", "Escape", "Tab", "Return",
@@ -146,21 +146,11 @@ def main():
     ap.add_argument("--xvfb", action="store_true",
                     help="start a private Xvfb (it picks a free display itself, -displayfd)")
     args = ap.parse_args()
-    xvfb = None
-    if args.xvfb:
-        xvfb, display = start_xvfb()
-        if not xvfb:
-            return 1
-        os.environ["DISPLAY"] = display
-    if not os.environ.get("DISPLAY"):
-        print("monkey: no DISPLAY; pass --xvfb or run under xvfb-run", file=sys.stderr)
-        return 2
-    try:
+    with display(args.xvfb) as name:
+        if not name:
+            print("monkey: no display; pass --xvfb or set DISPLAY", file=sys.stderr)
+            return 2
         return run_monkey(args)
-    finally:
-        if xvfb:
-            xvfb.terminate()
-            xvfb.wait(timeout=10)
 
 
 def run_monkey(args):

@@ -13,7 +13,7 @@ import tempfile
 import time
 import traceback
 
-from gui_session import Failure, Session, start_xvfb
+from gui_session import Failure, Session, display
 
 
 def check(cond, message):
@@ -272,65 +272,59 @@ def main():
     ap.add_argument("--presentation", action="store_true",
                     help="run every scenario in presentation mode (P first)")
     args = ap.parse_args()
-    xvfb = None
-    if args.xvfb:
-        xvfb, display = start_xvfb(args.screen)
-        if not xvfb:
-            return 1
-        os.environ["DISPLAY"] = display
-    if not os.environ.get("DISPLAY"):
-        print("scenario: no DISPLAY; pass --xvfb", file=sys.stderr)
-        return 2
+    with display(args.xvfb, args.screen) as name:
+        if not name:
+            print("scenario: no display; pass --xvfb or set DISPLAY", file=sys.stderr)
+            return 2
+        return run_scenarios(args)
+
+
+def run_scenarios(args):
     if args.shots:
         os.makedirs(args.shots, exist_ok=True)
     ctx = Context(args.shots, args.screen + ("-presentation" if args.presentation else ""))
     passed = failed = 0
-    try:
-        for name, scene, run in SCENARIOS:
-            if args.only and name != args.only:
-                continue
-            ctx.name = name
-            work = tempfile.mkdtemp(prefix=f"isoparm-scenario-{name}-")
-            s = Session(args.isoparm, work, os.path.join(args.scenes, scene))
-            ok = True
-            started = time.time()
+    for name, scene, run in SCENARIOS:
+        if args.only and name != args.only:
+            continue
+        ctx.name = name
+        work = tempfile.mkdtemp(prefix=f"isoparm-scenario-{name}-")
+        s = Session(args.isoparm, work, os.path.join(args.scenes, scene))
+        ok = True
+        started = time.time()
+        try:
+            if not s.find_window():
+                raise Failure("the window did not appear")
+            if args.presentation and run not in (window_fits_the_screen,
+                                                 window_size_is_remembered):
+                s.key("p")
+                s.wait_for("presentation mode", lambda r: r.get("presentation"))
+            run(s, ctx)
+        except Failure as e:
+            ok = False
+            print(f"scenario {name} [{args.screen}]: FAILED: {e}", file=sys.stderr)
+            ctx.shot(s, "failure")
+        except Exception:  # a broken scenario is a failure too, with its trace
+            ok = False
+            traceback.print_exc()
+        finally:
             try:
-                if not s.find_window():
-                    raise Failure("the window did not appear")
-                if args.presentation and run not in (window_fits_the_screen,
-                                                     window_size_is_remembered):
-                    s.key("p")
-                    s.wait_for("presentation mode", lambda r: r.get("presentation"))
-                run(s, ctx)
+                status, text = s.close()
+                if status not in (0, -15):
+                    ok = False
+                    print(f"scenario {name}: exit status {status}:\n{text}", file=sys.stderr)
             except Failure as e:
                 ok = False
-                print(f"scenario {name} [{args.screen}]: FAILED: {e}", file=sys.stderr)
-                ctx.shot(s, "failure")
-            except Exception:  # a broken scenario is a failure too, with its trace
-                ok = False
-                traceback.print_exc()
-            finally:
-                try:
-                    status, text = s.close()
-                    if status not in (0, -15):
-                        ok = False
-                        print(f"scenario {name}: exit status {status}:\n{text}", file=sys.stderr)
-                except Failure as e:
-                    ok = False
-                    print(f"scenario {name}: {e}", file=sys.stderr)
-            took = time.time() - started
-            print(f"scenario {name} [{ctx.screen}]: {'ok' if ok else 'FAILED'} ({took:.1f} s)")
-            if ok:
-                passed += 1
-                if not args.keep:
-                    shutil.rmtree(work, ignore_errors=True)
-            else:
-                failed += 1
-                print(f"scenario {name}: files kept in {work}")
-    finally:
-        if xvfb:
-            xvfb.terminate()
-            xvfb.wait(timeout=10)
+                print(f"scenario {name}: {e}", file=sys.stderr)
+        took = time.time() - started
+        print(f"scenario {name} [{ctx.screen}]: {'ok' if ok else 'FAILED'} ({took:.1f} s)")
+        if ok:
+            passed += 1
+            if not args.keep:
+                shutil.rmtree(work, ignore_errors=True)
+        else:
+            failed += 1
+            print(f"scenario {name}: files kept in {work}")
     print(f"{passed} passed, {failed} failed")
     return 0 if failed == 0 and passed > 0 else 1
 
