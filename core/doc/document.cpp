@@ -5,11 +5,49 @@
 #include <cassert>
 #include <cstring>
 #include <string>
+#include <type_traits>
 
 #include "core/geom/knots.hpp"
 #include "core/geom/validate.hpp"
 
 namespace isoparm::doc {
+
+ObjectKind kind_of(const Shape& shape) {
+    return static_cast<ObjectKind>(shape.index()); // Shape lists the kinds in ObjectKind's order
+}
+static_assert(std::is_same_v<std::variant_alternative_t<0, Shape>, SurfaceObject> &&
+              std::is_same_v<std::variant_alternative_t<1, Shape>, CurveObject> &&
+              std::is_same_v<std::variant_alternative_t<2, Shape>, ImplicitObject>);
+
+const char* kind_name(ObjectKind kind) {
+    switch (kind) {
+    case ObjectKind::surface: return "surface";
+    case ObjectKind::curve: return "curve";
+    case ObjectKind::implicit: return "implicit surface";
+    }
+    return "object";
+}
+
+geom::Surface* surface_of(Shape& shape) {
+    auto* s = std::get_if<SurfaceObject>(&shape);
+    return s ? &s->surface : nullptr;
+}
+const geom::Surface* surface_of(const Shape& shape) {
+    const auto* s = std::get_if<SurfaceObject>(&shape);
+    return s ? &s->surface : nullptr;
+}
+CurveObject* curve_object_of(Shape& shape) { return std::get_if<CurveObject>(&shape); }
+const CurveObject* curve_object_of(const Shape& shape) { return std::get_if<CurveObject>(&shape); }
+geom::Curve* curve_of(Shape& shape) {
+    auto* c = std::get_if<CurveObject>(&shape);
+    return c ? &c->curve : nullptr;
+}
+const geom::Curve* curve_of(const Shape& shape) {
+    const auto* c = std::get_if<CurveObject>(&shape);
+    return c ? &c->curve : nullptr;
+}
+ImplicitObject* implicit_of(Shape& shape) { return std::get_if<ImplicitObject>(&shape); }
+const ImplicitObject* implicit_of(const Shape& shape) { return std::get_if<ImplicitObject>(&shape); }
 
 Object* Document::find(std::uint64_t id) {
     if (id == 0) return nullptr;

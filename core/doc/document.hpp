@@ -44,6 +44,21 @@ struct ImplicitObject {
 
 using Shape = std::variant<SurfaceObject, CurveObject, ImplicitObject>;
 
+// What kind of object a shape is, and its parts: callers ask these instead of testing the
+// variant's alternatives themselves. The accessors return nullptr for another kind.
+enum class ObjectKind { surface, curve, implicit };
+ObjectKind kind_of(const Shape& shape);
+// "surface", "curve", "implicit surface": how messages and panels name the kind.
+const char* kind_name(ObjectKind kind);
+geom::Surface* surface_of(Shape& shape);
+const geom::Surface* surface_of(const Shape& shape);
+CurveObject* curve_object_of(Shape& shape);
+const CurveObject* curve_object_of(const Shape& shape);
+geom::Curve* curve_of(Shape& shape);
+const geom::Curve* curve_of(const Shape& shape);
+ImplicitObject* implicit_of(Shape& shape);
+const ImplicitObject* implicit_of(const Shape& shape);
+
 struct Object {
     std::uint64_t id = 0; // stable across undo/redo; assigned by the document
     std::string name;
@@ -53,6 +68,16 @@ struct Object {
     // original parameters, so together they tile the original domain and the tracing square
     // shows that whole domain (issue 5; core/doc/patches.hpp).
     std::uint64_t patch_group = 0;
+
+    ObjectKind kind() const { return kind_of(shape); }
+    geom::Surface* surface() { return surface_of(shape); }
+    const geom::Surface* surface() const { return surface_of(shape); }
+    CurveObject* curve_object() { return curve_object_of(shape); }
+    const CurveObject* curve_object() const { return curve_object_of(shape); }
+    geom::Curve* curve() { return curve_of(shape); }
+    const geom::Curve* curve() const { return curve_of(shape); }
+    ImplicitObject* implicit() { return implicit_of(shape); }
+    const ImplicitObject* implicit() const { return implicit_of(shape); }
 };
 
 // Whether moving a control point of a subpatch also moves its neighbours' so the border stays
