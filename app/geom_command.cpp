@@ -4,9 +4,9 @@
 #include <unistd.h>
 
 #include "app/commands.hpp"
-#include "core/doc/input_file.hpp"
-#include "core/doc/json_write.hpp"
-#include "core/doc/protocol.hpp"
+#include "core/json/input_file.hpp"
+#include "core/json/writer.hpp"
+#include "core/protocol/protocol.hpp"
 
 namespace isoparm::app {
 
@@ -19,19 +19,19 @@ Action register_geom_command(CLI::App& app) {
         // Read here, not through a stream: only a regular file is opened (a FIFO cannot block,
         // a directory or /proc/self/mem is a clean error) and no input beyond the cap is kept.
         geom::Expected<std::string> text =
-            file->empty() ? doc::read_descriptor(STDIN_FILENO, "standard input")
-                          : doc::read_input_file(*file);
+            file->empty() ? json_io::read_descriptor(STDIN_FILENO, "standard input")
+                          : json_io::read_input_file(*file);
         if (!text) {
             if (text.error().code == geom::ErrorCode::limit) {
                 std::string s;
-                doc::write_json(s, doc::input_error_response(text.error()));
+                json_io::write_json(s, protocol::input_error_response(text.error()));
                 std::cout << s << "\n";
                 return 1;
             }
             std::cerr << "isoparm geom: " << text.error().message << "\n";
             return 2;
         }
-        return doc::run_protocol_text(std::move(text).value(), std::cout, std::cerr);
+        return protocol::run_protocol_text(std::move(text).value(), std::cout, std::cerr);
     };
 }
 

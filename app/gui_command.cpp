@@ -17,8 +17,8 @@
 #include <imgui_impl_glfw.h> // ImGui_ImplGlfw_KeyCallback
 
 #include "app/commands.hpp"
-#include "core/doc/autosave.hpp"
-#include "core/doc/autosave_timer.hpp"
+#include "core/scene/autosave.hpp"
+#include "core/scene/autosave_timer.hpp"
 #include "ui/actions.hpp"
 #include "ui/render/renderer.hpp"
 #include "ui/settings.hpp"
@@ -118,40 +118,40 @@ void on_focus(GLFWwindow* w, int) {
 
 // The start-up's candidates for recovery files: the scene asked for, the untitled document
 // and the recent files (recovery file names hash the path, so only known paths can be found).
-std::vector<doc::RecoveryInfo> recovery_offers(const std::string& scene,
+std::vector<scene::RecoveryInfo> recovery_offers(const std::string& scene,
                                                const std::vector<std::string>& recent) {
     std::vector<std::string> candidates;
     if (!scene.empty()) candidates.push_back(scene);
     candidates.push_back("");
     candidates.insert(candidates.end(), recent.begin(), recent.end());
-    return doc::find_recoveries(candidates);
+    return scene::find_recoveries(candidates);
 }
 
 // One step of autosaving, after every frame: the dialog's answers first, then the timer.
 // A write is a few milliseconds for a scene (serialization, fsync, rename), so it runs on the
 // UI thread; it happens at most once a minute.
-void autosave(ui::AppContext& ctx, doc::AutosaveTimer& timer) {
+void autosave(ui::AppContext& ctx, scene::AutosaveTimer& timer) {
     ui::RecoveryPrompt& r = ctx.ui.recovery;
-    for (const std::string& p : r.held) timer.hold(doc::normalized_scene_path(p));
+    for (const std::string& p : r.held) timer.hold(scene::normalized_scene_path(p));
     r.held.clear();
     for (const std::string& p : r.restored)
-        timer.wrote(doc::normalized_scene_path(p), doc::document_fingerprint(ctx.doc));
+        timer.wrote(scene::normalized_scene_path(p), scene::document_fingerprint(ctx.doc));
     r.restored.clear();
     // Undone back to the saved state with work still on the redo stack: the recovery file
     // keeps that work (it is not discarded) until a redo, a new edit or a save moves on.
     if (!ctx.dirty() && ctx.history.can_redo()) return;
-    const std::string path = doc::normalized_scene_path(ctx.file_path);
-    const doc::AutosaveTimer::Step step =
-        timer.poll(doc::AutosaveTimer::Clock::now(), ctx.dirty(), path,
-                   [&ctx] { return doc::document_fingerprint(ctx.doc); });
-    using Kind = doc::AutosaveTimer::Step::Kind;
+    const std::string path = scene::normalized_scene_path(ctx.file_path);
+    const scene::AutosaveTimer::Step step =
+        timer.poll(scene::AutosaveTimer::Clock::now(), ctx.dirty(), path,
+                   [&ctx] { return scene::document_fingerprint(ctx.doc); });
+    using Kind = scene::AutosaveTimer::Step::Kind;
     if (step.kind == Kind::write) {
-        if (const geom::Status st = doc::write_recovery(ctx.doc, step.path); st.ok())
+        if (const geom::Status st = scene::write_recovery(ctx.doc, step.path); st.ok())
             timer.wrote(step.path, step.fingerprint);
         else
             ctx.ui.status = "Autosave failed: " + st.error().message;
     } else if (step.kind == Kind::discard) {
-        if (const geom::Status st = doc::discard_recovery(step.path); !st.ok())
+        if (const geom::Status st = scene::discard_recovery(step.path); !st.ok())
             ctx.ui.status = st.error().message;
     }
 }
@@ -282,7 +282,7 @@ int run_window(const std::string& scene, int autosave_seconds) {
                 std::cerr << "isoparm: " << ctx.ui.error_message << "\n";
             const bool autosaving = autosave_seconds > 0;
             if (autosaving) ctx.ui.recovery.offers = recovery_offers(scene, ctx.settings.recent);
-            doc::AutosaveTimer timer(doc::AutosaveTimer::Clock::now(),
+            scene::AutosaveTimer timer(scene::AutosaveTimer::Clock::now(),
                                      std::chrono::seconds(std::max(autosave_seconds, 1)));
 
             std::string title;
@@ -332,7 +332,7 @@ int run_window(const std::string& scene, int autosave_seconds) {
             }
             // A normal exit: the unsaved-changes question was answered, the work is safe or
             // deliberately dropped.
-            if (const std::optional<std::string> p = timer.on_exit()) doc::discard_recovery(*p);
+            if (const std::optional<std::string> p = timer.on_exit()) scene::discard_recovery(*p);
             // The size is kept for monitors of this work-area size (not a full-screen size).
             if (glfwGetWindowMonitor(window)) toggle_fullscreen(window, windowed);
             int w = 0, h = 0;

@@ -3,12 +3,12 @@
 #include <iostream>
 
 #include "app/commands.hpp"
-#include "core/doc/atomic_file.hpp"
+#include "core/scene/atomic_file.hpp"
 
 int main(int argc, char** argv) {
     // A file-size limit (ulimit -f) must be an error a write reports, not a signal that kills
     // the program halfway through a save and leaves its temporary file behind.
-    isoparm::doc::make_file_size_limit_an_error();
+    isoparm::scene::make_file_size_limit_an_error();
     CLI::App app{"isoparm: an interactive workstation for learning and designing NURBS surfaces"};
     app.set_version_flag("--version", "isoparm " ISOPARM_VERSION);
     const isoparm::app::Action geom = isoparm::app::register_geom_command(app);

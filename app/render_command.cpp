@@ -9,7 +9,7 @@
 #include <string_view>
 
 #include "app/commands.hpp"
-#include "core/doc/out_of_memory.hpp"
+#include "core/json/out_of_memory.hpp"
 #include "core/doc/patches.hpp"
 #include "core/geom/knots.hpp"
 #include "ui/app_context.hpp"
@@ -201,11 +201,11 @@ Action register_render_command(CLI::App& app) {
         req.view = o->view == "3d" ? ui::ViewMode::view3d_only : ui::ViewMode::workstation;
         req.configure = [o](ui::AppContext& ctx) { return configure(*o, ctx); };
         std::string error;
-        doc::arm_memory_reserve(); // see out_of_memory.hpp: unwinding must find memory
+        json_io::arm_memory_reserve(); // see out_of_memory.hpp: unwinding must find memory
         try {
             error = ui::render_headless(req);
         } catch (const std::bad_alloc&) {
-            error = std::string(doc::out_of_memory_message) + " (rendering '" +
+            error = std::string(json_io::out_of_memory_message) + " (rendering '" +
                     (o->scene.empty() ? std::string("the default scene") : o->scene) + "')";
         }
         if (!error.empty()) {

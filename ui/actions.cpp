@@ -3,7 +3,7 @@
 
 #include <filesystem>
 
-#include "core/doc/scene_io.hpp"
+#include "core/scene/scene_io.hpp"
 #include "ui/doc_access.hpp"
 #include "ui/scene_budget.hpp"
 #include "ui/scene_builder.hpp"
@@ -32,7 +32,7 @@ void adopt(AppContext& ctx, doc::Document d, const std::string& path) {
     ctx.history.clear();
     ctx.history.mark_clean();
     ctx.file_path = path;
-    ctx.file_stamp = doc::stamp_of(path);
+    ctx.file_stamp = json_io::stamp_of(path);
     ctx.ui.drag = {};
     ctx.ui.sliders = {};
     ctx.ui.plane_drag = {};
@@ -86,7 +86,7 @@ void run_pending(AppContext& ctx) {
 }
 
 bool open_file(AppContext& ctx, const std::string& path) {
-    geom::Expected<doc::Document> loaded = doc::load_scene(path);
+    geom::Expected<doc::Document> loaded = scene::load_scene(path);
     if (!loaded.ok()) {
         show_error(ctx, "Could not open scene",
                    "'" + path + "' was not opened; the current scene is unchanged.\n\n" +
@@ -121,7 +121,7 @@ bool save(AppContext& ctx) {
         return false;
     }
     // Someone else wrote the file since we loaded or saved it: ask before replacing their work.
-    if (doc::changed_on_disk(ctx.file_path, ctx.file_stamp)) {
+    if (json_io::changed_on_disk(ctx.file_path, ctx.file_stamp)) {
         ctx.ui.confirm_overwrite_changed = true;
         return false;
     }
@@ -146,14 +146,14 @@ void request_save_as(AppContext& ctx) {
 }
 
 bool save_as(AppContext& ctx, const std::string& path) {
-    const geom::Status st = doc::save_scene(ctx.doc, path);
+    const geom::Status st = scene::save_scene(ctx.doc, path);
     if (!st.ok()) {
         show_error(ctx, "Could not save scene",
                    "'" + path + "' was not written.\n\n" + error_text(st.error()));
         return false;
     }
     ctx.file_path = path;
-    ctx.file_stamp = doc::stamp_of(path);
+    ctx.file_stamp = json_io::stamp_of(path);
     ctx.history.mark_clean();
     add_recent(ctx.settings.recent, std::filesystem::absolute(path).lexically_normal().string());
     store_settings(ctx);

@@ -8,7 +8,7 @@
 
 #include "core/doc/command.hpp"
 #include "core/doc/document.hpp"
-#include "core/doc/input_file.hpp"
+#include "core/json/input_file.hpp"
 #include "ui/settings.hpp"
 #include "ui/ui_state.hpp"
 
@@ -23,7 +23,7 @@ struct AppContext {
     std::string file_path; // empty: untitled
     // The file as it was on disk when loaded or last saved: Save asks before replacing a file
     // someone else wrote since (two windows on one scene).
-    std::optional<doc::FileStamp> file_stamp;
+    std::optional<json_io::FileStamp> file_stamp;
     Settings settings;
     bool remember_settings = false; // false in headless runs (deterministic, no side effects)
     UiState ui;

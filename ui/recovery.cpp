@@ -8,7 +8,7 @@
 #include <utility>
 
 #include "core/doc/restore_command.hpp"
-#include "core/doc/scene_io.hpp"
+#include "core/scene/scene_io.hpp"
 #include "ui/actions.hpp"
 #include "ui/doc_access.hpp"
 
@@ -28,14 +28,14 @@ std::string local_time(std::chrono::system_clock::time_point t) {
 }
 
 void hold_all(RecoveryPrompt& r) {
-    for (const doc::RecoveryInfo& o : r.offers) r.held.push_back(o.origin);
+    for (const scene::RecoveryInfo& o : r.offers) r.held.push_back(o.origin);
     r.offers.clear();
 }
 
 } // namespace
 
-bool restore_recovery(AppContext& ctx, const doc::RecoveryInfo& recovery) {
-    geom::Expected<doc::Document> recovered = doc::load_scene(recovery.path);
+bool restore_recovery(AppContext& ctx, const scene::RecoveryInfo& recovery) {
+    geom::Expected<doc::Document> recovered = scene::load_scene(recovery.path);
     if (!recovered.ok()) {
         std::string why = recovered.error().message;
         show_error(ctx, "Could not restore the autosaved work",
@@ -47,10 +47,10 @@ bool restore_recovery(AppContext& ctx, const doc::RecoveryInfo& recovery) {
     if (!recovery.origin.empty()) {
         // Undo goes back to the scene as saved; a scene that no longer loads (or never was
         // saved there) starts from the new document instead, under the same path.
-        geom::Expected<doc::Document> saved = doc::load_scene(recovery.origin);
+        geom::Expected<doc::Document> saved = scene::load_scene(recovery.origin);
         if (saved.ok()) ctx.doc = std::move(saved).value();
         ctx.file_path = recovery.origin;
-        ctx.file_stamp = doc::stamp_of(recovery.origin); // the file as loaded for Undo
+        ctx.file_stamp = json_io::stamp_of(recovery.origin); // the file as loaded for Undo
     }
     ctx.seal();
     const bool ok = ctx.execute(doc::restore_document(std::move(recovered).value()));
@@ -78,7 +78,7 @@ void draw_recovery_dialog(AppContext& ctx) {
         ImGui::EndPopup();
         return;
     }
-    const doc::RecoveryInfo offer = r.offers.front();
+    const scene::RecoveryInfo offer = r.offers.front();
     const std::string name = offer.origin.empty()
                                  ? std::string("an untitled scene")
                                  : std::filesystem::path(offer.origin).filename().string();
@@ -106,7 +106,7 @@ void draw_recovery_dialog(AppContext& ctx) {
     if (ImGui::Button("Discard")) {
         ImGui::CloseCurrentPopup();
         r.offers.erase(r.offers.begin());
-        if (const geom::Status st = doc::discard_recovery(offer.origin); !st.ok())
+        if (const geom::Status st = scene::discard_recovery(offer.origin); !st.ok())
             ctx.ui.status = st.error().message;
     }
     ImGui::SameLine();

@@ -2,7 +2,7 @@
 // restoring it as unsaved changes of the scene it came from.
 #pragma once
 
-#include "core/doc/autosave.hpp"
+#include "core/scene/autosave.hpp"
 #include "ui/app_context.hpp"
 
 namespace isoparm::ui {
@@ -18,6 +18,6 @@ void draw_recovery_dialog(AppContext& ctx);
 // document is applied as one undoable command ("Restore unsaved changes": the title shows '*',
 // Undo returns to the saved file). A recovery file that does not load shows the error dialog
 // and changes nothing. Returns whether it was restored.
-bool restore_recovery(AppContext& ctx, const doc::RecoveryInfo& recovery);
+bool restore_recovery(AppContext& ctx, const scene::RecoveryInfo& recovery);
 
 } // namespace isoparm::ui

@@ -6,7 +6,7 @@
 #include <unistd.h>
 #include <variant>
 
-#include "core/doc/work_budget.hpp"
+#include "core/geom/work_budget.hpp"
 #include "ui/render/tessellation_sampling.hpp"
 
 namespace isoparm::ui {
@@ -24,7 +24,7 @@ SceneDisplayCost estimate_scene_display(const doc::Document& d) {
         ++cost.surfaces;
         cost.vertices += vertices;
         cost.steps +=
-            doc::estimate_tessellation(su, sv, s->surface.degree_u, s->surface.degree_v).steps;
+            geom::estimate_tessellation(su, sv, s->surface.degree_u, s->surface.degree_v).steps;
         cost.bytes += vertices * display_bytes_per_vertex + display_bytes_per_surface;
     }
     cost.steps += cost.control_points * display_steps_per_control_point;
@@ -34,16 +34,16 @@ SceneDisplayCost estimate_scene_display(const doc::Document& d) {
 
 std::string scene_over_budget(const doc::Document& d) {
     const SceneDisplayCost cost = estimate_scene_display(d);
-    const double max_bytes = doc::max_answer_numbers * doc::bytes_per_answer_number;
-    if (cost.bytes <= max_bytes && cost.steps <= doc::max_work_steps) return "";
+    const double max_bytes = geom::max_answer_numbers * geom::bytes_per_answer_number;
+    if (cost.bytes <= max_bytes && cost.steps <= geom::max_work_steps) return "";
     const double mib = cost.bytes / (1 << 20);
     return "the scene is too large to show: its " + std::to_string(cost.surfaces) +
-           " surfaces make " + doc::with_thousands(cost.vertices) + " vertices and " +
-           doc::with_thousands(cost.control_points) + " control points, which would need about " +
-           doc::with_thousands(mib) + " MiB and " + doc::with_thousands(cost.steps) +
+           " surfaces make " + geom::with_thousands(cost.vertices) + " vertices and " +
+           geom::with_thousands(cost.control_points) + " control points, which would need about " +
+           geom::with_thousands(mib) + " MiB and " + geom::with_thousands(cost.steps) +
            " basis steps; the work budget allows about " +
-           doc::with_thousands(max_bytes / (1 << 20)) + " MiB and " +
-           doc::with_thousands(doc::max_work_steps) +
+           geom::with_thousands(max_bytes / (1 << 20)) + " MiB and " +
+           geom::with_thousands(geom::max_work_steps) +
            " steps (about 10 s); a lower display density, fewer surfaces or fewer control points "
            "fit";
 }
@@ -68,10 +68,10 @@ std::string memory_limit_problem(const doc::Document& d, double driver_bytes) {
     if (need <= have) return "";
     const double mib = 1 << 20;
     return "not enough memory: the address-space limit (ulimit -v) is " +
-           doc::with_thousands(have / mib) + " MiB, and showing this scene needs about " +
-           doc::with_thousands(need / mib) + " MiB" +
+           geom::with_thousands(have / mib) + " MiB, and showing this scene needs about " +
+           geom::with_thousands(need / mib) + " MiB" +
            (driver_bytes > 0 ? " (the OpenGL driver takes about " +
-                                   doc::with_thousands(driver_bytes / mib) + " of them)"
+                                   geom::with_thousands(driver_bytes / mib) + " of them)"
                              : std::string{});
 }
 

@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <system_error>
 
-#include "core/doc/atomic_file.hpp"
-#include "core/doc/input_file.hpp"
+#include "core/scene/atomic_file.hpp"
+#include "core/json/input_file.hpp"
 
 namespace isoparm::ui {
 
@@ -82,7 +82,7 @@ Settings settings_from_json(const nlohmann::json& j) {
 Settings load_settings(const std::string& path) {
     if (path.empty()) return {};
     // Read like every input: a FIFO or a directory in its place must not block start-up.
-    auto text = doc::read_input_file(path, settings_max_bytes);
+    auto text = json_io::read_input_file(path, settings_max_bytes);
     if (!text) return {};
     const nlohmann::json j = nlohmann::json::parse(*text, nullptr, /*allow_exceptions=*/false);
     if (j.is_discarded()) return {};
@@ -94,7 +94,7 @@ bool save_settings(const Settings& s, const std::string& path) {
     std::error_code ec;
     const fs::path target(path);
     if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
-    return doc::write_file_atomically(path, settings_to_json(s).dump(2) + "\n").ok();
+    return scene::write_file_atomically(path, settings_to_json(s).dump(2) + "\n").ok();
 }
 
 void add_recent(std::vector<std::string>& recent, const std::string& path, std::size_t max) {

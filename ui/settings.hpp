@@ -32,7 +32,7 @@ nlohmann::json settings_to_json(const Settings& s);
 // Tolerant: a missing or wrong value keeps its default (settings must never stop start-up).
 Settings settings_from_json(const nlohmann::json& j);
 Settings load_settings(const std::string& path);
-// Creates the directory and writes through doc::write_file_atomically (temporary file, fsync,
+// Creates the directory and writes through scene::write_file_atomically (temporary file, fsync,
 // rename); false when it could not.
 bool save_settings(const Settings& s, const std::string& path);
 

@@ -7,7 +7,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
-#include "core/doc/atomic_file.hpp"
+#include "core/scene/atomic_file.hpp"
 #include "ui/app_context.hpp"
 
 namespace isoparm::ui {
@@ -79,7 +79,7 @@ void flush_ui_report(const AppContext& ctx) {
     std::string text = j.dump(1);
     if (text == r.last_written) return;
     // Through the one atomic writer: a reader never sees half a report.
-    if (doc::write_file_atomically(r.path, text).ok()) r.last_written = std::move(text);
+    if (scene::write_file_atomically(r.path, text).ok()) r.last_written = std::move(text);
 }
 
 } // namespace isoparm::ui

@@ -11,7 +11,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "core/doc/autosave.hpp"
+#include "core/scene/autosave.hpp"
 #include "core/geom/types.hpp"
 #include "ui/canvas_map.hpp"
 #include "ui/layout.hpp"
@@ -93,7 +93,7 @@ struct ImplicitForm {
 // The start-up's offer to restore autosaved work (set by the window only, never headless),
 // and the answers the window's autosave timer picks up (ui/recovery.hpp).
 struct RecoveryPrompt {
-    std::vector<doc::RecoveryInfo> offers; // newest first; the dialog asks about the first
+    std::vector<scene::RecoveryInfo> offers; // newest first; the dialog asks about the first
     std::vector<std::string> restored;     // origins whose recovery file now backs the document
     std::vector<std::string> held;         // origins the user will decide about at a later start
 };

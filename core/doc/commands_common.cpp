@@ -5,6 +5,7 @@
 #include <set>
 
 #include "core/geom/implicit/expression.hpp"
+#include "core/geom/refine_within_limits.hpp"
 #include "core/geom/validate.hpp"
 
 namespace isoparm::doc::detail {
@@ -114,29 +115,8 @@ geom::Status validate_implicit(const ImplicitObject& f) {
 } // namespace
 
 geom::Status check_size(const Shape& shape, const std::string& path) {
-    if (auto* s = std::get_if<SurfaceObject>(&shape)) {
-        const geom::Surface& g = s->surface;
-        if (g.n_u > geom::max_points_per_direction || g.n_v > geom::max_points_per_direction)
-            return make_error(ErrorCode::limit,
-                              "the result would have " + std::to_string(g.n_u) + " x " +
-                                  std::to_string(g.n_v) + " control points; at most " +
-                                  std::to_string(geom::max_points_per_direction) +
-                                  " per direction are allowed",
-                              path);
-        if (static_cast<long>(g.n_u) * g.n_v > geom::max_points_per_surface)
-            return make_error(ErrorCode::limit,
-                              "the result would have " + std::to_string(g.n_u) + " x " +
-                                  std::to_string(g.n_v) + " control points; at most " +
-                                  std::to_string(geom::max_points_per_surface) + " are allowed",
-                              path);
-    } else if (auto* c = std::get_if<CurveObject>(&shape)) {
-        if (c->curve.count() > geom::max_points_per_direction)
-            return make_error(ErrorCode::limit,
-                              "the result would have " + std::to_string(c->curve.count()) +
-                                  " control points; at most " +
-                                  std::to_string(geom::max_points_per_direction) + " are allowed",
-                              path);
-    }
+    if (const geom::Surface* s = surface_of(shape)) return geom::check_net_size(*s, path);
+    if (const geom::Curve* c = curve_of(shape)) return geom::check_net_size(*c, path);
     return geom::Ok{};
 }
 

@@ -12,6 +12,7 @@
 #include "core/doc/patches.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/refine.hpp"
+#include "core/geom/refine_within_limits.hpp"
 #include "core/geom/validate.hpp"
 
 namespace isoparm::doc {
@@ -125,10 +126,6 @@ public:
         auto found = refinable(doc, id_, dir_, what_);
         if (!found) return found.error();
         Object& obj = **found;
-        if (times_ < 1)
-            return make_error(ErrorCode::schema,
-                              "times must be at least 1, got " + std::to_string(times_), "/times");
-        if (auto st = precheck_size(obj.shape); !st) return st;
         Shape result;
         if (auto* s = std::get_if<SurfaceObject>(&obj.shape)) {
             auto r = refine(s->surface);
@@ -140,7 +137,6 @@ public:
             if (!r) return r.error();
             result = CurveObject{std::move(r).value(), c.plane};
         }
-        if (auto st = detail::check_size(result, "/times"); !st) return st;
 
         curve_ = is_curve(obj.shape);
         // A (rational) Bezier has no interior knots: one inserted makes it a B-spline (NURBS).
@@ -193,8 +189,6 @@ protected:
     virtual int backward(const Line& old_line, const Line& new_line, int i) const {
         return nearest_greville(old_line, greville(new_line, i));
     }
-    // A refusal before any allocation (the result's size can be known in advance).
-    virtual geom::Status precheck_size(const Shape&) const { return geom::Ok{}; }
 
     std::uint64_t id_;
     Dir dir_;
@@ -222,10 +216,10 @@ public:
 
 private:
     geom::Expected<geom::Surface> refine(const geom::Surface& s) const override {
-        return geom::insert_knot(s, dir_, t_, times_);
+        return geom::insert_knot_within_limits(s, dir_, t_, times_);
     }
     geom::Expected<geom::Curve> refine(const geom::Curve& c) const override {
-        return geom::insert_knot(c, t_, times_);
+        return geom::insert_knot_within_limits(c, t_, times_);
     }
     // Piegl & Tiller A5.1: with k the span of t (last knot <= t) and s its multiplicity,
     // Q[i] = P[i] for i <= k - p and Q[i + r] = P[i] for i >= k - s; the points between are
@@ -266,38 +260,10 @@ public:
 
 private:
     geom::Expected<geom::Surface> refine(const geom::Surface& s) const override {
-        return geom::elevate_degree(s, dir_, times_);
+        return geom::elevate_degree_within_limits(s, dir_, times_);
     }
     geom::Expected<geom::Curve> refine(const geom::Curve& c) const override {
-        return geom::elevate_degree(c, times_);
-    }
-    // Refuse before allocating: on a clamped vector with `spans` non-empty spans, elevation
-    // by t adds exactly t * spans control points (each distinct knot's multiplicity rises by
-    // t); an unclamped vector is clamped first, which never adds points. So n + t * spans
-    // bounds the result.
-    geom::Status precheck_size(const Shape& shape) const override {
-        const Line L = line_of(shape, dir_);
-        const geom::Knots& U = *L.U;
-        long long spans = 0;
-        for (int k = L.p; k < L.n; ++k)
-            if (U[k] < U[k + 1]) ++spans;
-        const long long est = L.n + static_cast<long long>(times_) * spans;
-        auto too_many = [&](long long count, long long cap) {
-            return make_error(ErrorCode::limit,
-                              "elevating the degree " + std::to_string(times_) +
-                                  " time(s) would give about " + std::to_string(count) +
-                                  " control points; at most " + std::to_string(cap) +
-                                  " are allowed",
-                              "/times");
-        };
-        if (times_ > geom::max_points_per_direction || est > geom::max_points_per_direction)
-            return too_many(est, geom::max_points_per_direction);
-        if (auto* s = std::get_if<SurfaceObject>(&shape)) {
-            const long long other = s->surface.count(dir_ == Dir::u ? Dir::v : Dir::u);
-            if (est * other > geom::max_points_per_surface)
-                return too_many(est * other, geom::max_points_per_surface);
-        }
-        return geom::Ok{};
+        return geom::elevate_degree_within_limits(c, times_);
     }
 };
 

@@ -9,8 +9,8 @@
 #include <streambuf>
 #include <string>
 
-#include "core/doc/protocol.hpp"
-#include "core/doc/work_budget.hpp"
+#include "core/protocol/protocol.hpp"
+#include "core/geom/work_budget.hpp"
 #include "tests/support/protocol_shapes.hpp"
 
 namespace {
@@ -19,7 +19,8 @@ using isoparm::test::bicubic;
 using isoparm::test::curve_of_degree;
 
 using nlohmann::json;
-using namespace isoparm::doc;
+using namespace isoparm;
+using namespace isoparm::protocol;
 
 // An ostream that drops everything (the answer's text is produced, not kept).
 class NullBuffer : public std::streambuf {
@@ -42,7 +43,7 @@ void BM_BudgetEvaluateDegree4095Curve(benchmark::State& state) {
     json params = json::array();
     for (int k = 0; k < count; ++k) params.push_back((k + 0.5) / count);
     const json request = {{"op", "evaluate"}, {"curve", curve_of_degree(4095)}, {"params", params}};
-    run(state, request.dump(), estimate_curve_evaluation(count, 4095, 0).steps);
+    run(state, request.dump(), geom::estimate_curve_evaluation(count, 4095, 0).steps);
 }
 BENCHMARK(BM_BudgetEvaluateDegree4095Curve)->Unit(benchmark::kMillisecond);
 
@@ -53,7 +54,7 @@ void BM_BudgetEvaluateSurfaceAnswerTree(benchmark::State& state) {
     for (int k = 0; k < count; ++k) params.push_back({(k % 1000) / 1000.0, (k / 1000) / 100.0});
     const json request = {
         {"op", "evaluate"}, {"surface", bicubic()}, {"params", params}, {"derivatives", 1}};
-    run(state, request.dump(), estimate_surface_evaluation(count, 3, 3, 1, false).steps);
+    run(state, request.dump(), geom::estimate_surface_evaluation(count, 3, 3, 1, false).steps);
 }
 BENCHMARK(BM_BudgetEvaluateSurfaceAnswerTree)->Unit(benchmark::kMillisecond);
 
@@ -61,7 +62,7 @@ BENCHMARK(BM_BudgetEvaluateSurfaceAnswerTree)->Unit(benchmark::kMillisecond);
 void BM_BudgetTessellateStreamed(benchmark::State& state) {
     const int n = static_cast<int>(state.range(0));
     const json request = {{"op", "tessellate"}, {"surface", bicubic()}, {"samples", {n, n}}};
-    run(state, request.dump(), estimate_tessellation(n, n, 3, 3).steps);
+    run(state, request.dump(), geom::estimate_tessellation(n, n, 3, 3).steps);
 }
 BENCHMARK(BM_BudgetTessellateStreamed)->Arg(300)->Arg(1000)->Unit(benchmark::kMillisecond);
 
@@ -74,7 +75,7 @@ void BM_BudgetPolygonizeLongExpression(benchmark::State& state) {
                           {"bounds", {{-1, -1, -1}, {1, 1, 1}}},
                           {"cell", 0.1}};
     // 5,999 instructions after folding (the protocol's own count, see its limit message).
-    run(state, request.dump(), estimate_polygonization(21.0 * 21 * 21, 5999).steps);
+    run(state, request.dump(), geom::estimate_polygonization(21.0 * 21 * 21, 5999).steps);
 }
 BENCHMARK(BM_BudgetPolygonizeLongExpression)->Unit(benchmark::kMillisecond);
 

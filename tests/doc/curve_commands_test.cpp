@@ -6,13 +6,14 @@
 
 #include "core/doc/commands_curve.hpp"
 #include "core/doc/curve_constructions.hpp"
-#include "core/doc/scene_io.hpp"
+#include "core/scene/scene_io.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/interpolate.hpp"
 #include "tests/doc/doc_fixtures.hpp"
 
 using namespace isoparm;
 using namespace isoparm::doc;
+using namespace isoparm::scene;
 using namespace isoparm::doc::testing;
 using geom::ErrorCode;
 

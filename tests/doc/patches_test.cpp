@@ -6,7 +6,7 @@
 
 #include "core/doc/commands.hpp"
 #include "core/doc/patches.hpp"
-#include "core/doc/scene_io.hpp"
+#include "core/scene/scene_io.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
 
@@ -312,8 +312,8 @@ TEST(Patches, IndicatorAndCurrentPatchStayInStep) {
 TEST(Patches, SceneKeepsGroupsAndContinuity) {
     PaperSplit p;
     p.doc.continuity = Continuity::c1;
-    auto text = scene_to_text(p.doc);
-    auto back = scene_from_text(text);
+    auto text = scene::scene_to_text(p.doc);
+    auto back = scene::scene_from_text(text);
     ASSERT_TRUE(back) << back.error().message;
     EXPECT_TRUE(same_document(*back, p.doc));
 
@@ -323,7 +323,7 @@ TEST(Patches, SceneKeepsGroupsAndContinuity) {
     overlapping.objects.push_back(overlapping.objects[0]);
     overlapping.objects.back().id = overlapping.allocate_id();
     overlapping.objects.back().name = "copy";
-    auto loaded = scene_from_text(scene_to_text(overlapping));
+    auto loaded = scene::scene_from_text(scene::scene_to_text(overlapping));
     ASSERT_TRUE(loaded) << loaded.error().message;
     EXPECT_EQ(patch_at(*loaded, loaded->objects[0].patch_group, {0.1, 0.1}), loaded->objects[0].id);
 
@@ -341,11 +341,11 @@ TEST(Patches, SceneKeepsGroupsAndContinuity) {
     line.weights = {1, 1};
     c.shape = CurveObject{line, CurvePlane::xy};
     curve.objects.push_back(c);
-    auto r = scene_from_text(scene_to_text(curve));
+    auto r = scene::scene_from_text(scene::scene_to_text(curve));
     ASSERT_FALSE(r);
     EXPECT_EQ(r.error().path, "/objects/3/patch_group");
 
-    auto unknown = scene_from_text(
+    auto unknown = scene::scene_from_text(
         R"({"format": "isoparm-scene", "version": 1, "objects": [], "continuity": "C2"})");
     ASSERT_FALSE(unknown);
     EXPECT_EQ(unknown.error().path, "/continuity");

@@ -14,7 +14,7 @@
 #include <sstream>
 #include <string>
 
-#include "core/doc/protocol.hpp"
+#include "core/protocol/protocol.hpp"
 
 namespace {
 
@@ -66,7 +66,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     std::istringstream in(text);
     std::ostringstream out, err;
-    const int status = isoparm::doc::run_protocol(in, out, err);
+    const int status = isoparm::protocol::run_protocol(in, out, err);
     if (status < 0 || status > 2) __builtin_trap();
     // Exit 2 (not JSON) writes nothing to stdout.
     if (status == 2 && !out.str().empty()) __builtin_trap();

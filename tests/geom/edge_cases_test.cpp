@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "core/doc/json_geom.hpp"
-#include "core/doc/protocol.hpp"
+#include "core/json/shapes.hpp"
+#include "core/protocol/protocol.hpp"
 #include "core/geom/basis.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
@@ -57,7 +57,7 @@ std::string brief(const json& j) {
 // Sends one request. Every answer is an object with a boolean `ok` and only finite numbers;
 // a failure has one of `allowed` codes (never `internal`) and a message.
 json ask(const json& request, std::initializer_list<const char*> allowed = {}) {
-    const json r = doc::handle_request(request);
+    const json r = protocol::handle_request(request);
     EXPECT_TRUE(r.is_object() && r.contains("ok") && r["ok"].is_boolean())
         << "no answer to " << brief(request) << ": " << brief(r);
     if (!r.is_object() || !r.contains("ok")) return r;
@@ -171,7 +171,7 @@ void expect_same_curve(const Curve& c, const json& result, const std::vector<dou
 // Every operation on a curve, at every knot and between knots.
 void curve_battery(const Curve& c, const Expect& e = {}) {
     ASSERT_TRUE(geom::validate_curve(c).ok()) << geom::validate_curve(c).error().message;
-    const json cj = doc::curve_to_json(c);
+    const json cj = json_io::curve_to_json(c);
     const int p = c.degree, n = c.count();
     const auto ts = samples(c.knots, p, n);
     const auto inner = interior(ts);
@@ -291,7 +291,7 @@ void expect_same_surface(const Surface& s, const json& result, const std::vector
 // Every operation on a surface, at every pair of knots and between them.
 void surface_battery(const Surface& s, const Expect& e = {}) {
     ASSERT_TRUE(geom::validate_surface(s).ok()) << geom::validate_surface(s).error().message;
-    const json sj = doc::surface_to_json(s);
+    const json sj = json_io::surface_to_json(s);
     const auto us = samples(s.knots_u, s.degree_u, s.n_u);
     const auto vs = samples(s.knots_v, s.degree_v, s.n_v);
 
@@ -399,7 +399,7 @@ TEST(EdgeWeights, ZeroSumIsANullPointNeverNaN) {
         make_curve(2, {{0, 0, 0}, {1, 1, 0}, {2, 0, 0}}, {1, -1, 1}, {0, 0, 0, 1, 1, 1});
     EXPECT_FALSE(geom::curve_point(c, 0.5).has_value());
     EXPECT_FALSE(geom::curve_derivatives(c, 0.5, 3).has_value());
-    const json cj = doc::curve_to_json(c);
+    const json cj = json_io::curve_to_json(c);
     const json r =
         ask({{"op", "evaluate"}, {"curve", cj}, {"params", {0.25, 0.5, 0.75}}, {"derivatives", 2}});
     ASSERT_TRUE(ok(r));
@@ -435,7 +435,7 @@ TEST(EdgeWeights, ZeroSumAlongALineOfASurface) {
     s.points = {{0, 0, 0}, {0, 1, 1}, {1, 0, 0}, {1, 1, 2}};
     s.weights = {1, -1, 1, -1};
     for (double u : {0.0, 0.3, 1.0}) EXPECT_FALSE(geom::surface_point(s, u, 0.5).has_value());
-    const json sj = doc::surface_to_json(s);
+    const json sj = json_io::surface_to_json(s);
     const json r = ask({{"op", "evaluate"},
                         {"surface", sj},
                         {"params", {{0.3, 0.5}, {0.3, 0.25}}},
@@ -575,7 +575,7 @@ TEST(EdgeDegrees, ElevationToDegreeAboveAThousand) {
                                {0, 0, 0, 0, 1, 1, 1, 1});
     for (int times : {1100, 2000}) {
         const json r =
-            ask({{"op", "elevate_degree"}, {"curve", doc::curve_to_json(c)}, {"times", times}},
+            ask({{"op", "elevate_degree"}, {"curve", json_io::curve_to_json(c)}, {"times", times}},
                 {"limit"});
         if (ok(r)) {
             expect_same_curve(c, r["curve"], {0, 0.25, 0.5, 1}, {.shape_tolerance = 1e-6},

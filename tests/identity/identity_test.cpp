@@ -15,8 +15,8 @@
 #include <utility>
 #include <vector>
 
-#include "core/doc/protocol.hpp"
-#include "core/doc/scene_io.hpp"
+#include "core/protocol/protocol.hpp"
+#include "core/scene/scene_io.hpp"
 
 namespace {
 
@@ -90,7 +90,7 @@ TEST(Identity, ProtocolAnswers) {
     for (const auto& [group, path] : all) {
         SCOPED_TRACE(path.string());
         std::ostringstream out, err;
-        const int status = doc::run_protocol_text(slurp(path), out, err);
+        const int status = protocol::run_protocol_text(slurp(path), out, err);
         const std::string answer = "exit " + std::to_string(status) + "\n--- stdout\n" +
                                    out.str() + "--- stderr\n" + err.str();
         check_or_record(recorded_dir / "protocol" / (group + "__" + stem_of(path) + ".txt"),
@@ -107,8 +107,8 @@ TEST(Identity, SceneBytesAfterLoadAndSave) {
     ASSERT_GT(all.size(), 15u);
     for (const auto& [group, path] : all) {
         SCOPED_TRACE(path.string());
-        const auto loaded = doc::scene_from_text(slurp(path));
-        const std::string saved = loaded ? doc::scene_to_text(*loaded)
+        const auto loaded = scene::scene_from_text(slurp(path));
+        const std::string saved = loaded ? scene::scene_to_text(*loaded)
                                          : "error " + std::string(geom::error_code_name(loaded.error().code)) + " at \"" +
                                                loaded.error().path + "\": " +
                                                loaded.error().message + "\n";

@@ -7,14 +7,14 @@
 #include <sstream>
 #include <string>
 
-#include "core/doc/json_geom.hpp"
-#include "core/doc/protocol.hpp"
+#include "core/json/shapes.hpp"
+#include "core/protocol/protocol.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
 
 namespace {
 
-using isoparm::doc::handle_request;
+using isoparm::protocol::handle_request;
 using nlohmann::json;
 namespace geom = isoparm::geom;
 
@@ -32,10 +32,10 @@ const json kProfile = json::parse(
     R"({"type": "nurbs", "degree": 2, "knots": [2, 2, 2, 3, 4, 4, 4], "points": [[1, 0, 0], [2, 0, 1], [1.5, 0, 2], [0.5, 0, 3]], "weights": [1, 2, 0.5, 1]})");
 
 geom::Curve curve(const json& j) {
-    return *isoparm::doc::curve_from_json(j);
+    return *isoparm::json_io::curve_from_json(j);
 }
 geom::Surface surface(const json& j) {
-    auto s = isoparm::doc::surface_from_json(j);
+    auto s = isoparm::json_io::surface_from_json(j);
     EXPECT_TRUE(s.ok()) << s.error().message;
     return *s;
 }
@@ -288,7 +288,7 @@ TEST(ConstructOps, BatchExitStatus) {
                                        {{"op", "revolve"}, {"curve", kArch}, {"angle", 400}}})
                               .dump());
     std::ostringstream out, err;
-    EXPECT_EQ(isoparm::doc::run_protocol(in, out, err), 1);
+    EXPECT_EQ(isoparm::protocol::run_protocol(in, out, err), 1);
     const json r = json::parse(out.str());
     ASSERT_EQ(r.size(), 2u);
     EXPECT_TRUE(r[0]["ok"].get<bool>());

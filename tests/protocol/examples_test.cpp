@@ -1,4 +1,4 @@
-// Conformance: every worked example of the shared spec, answered by doc::handle_request and
+// Conformance: every worked example of the shared spec, answered by protocol::handle_request and
 // by the text path (run_protocol), compared as the examples' README prescribes.
 #include <gtest/gtest.h>
 
@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "core/doc/json_geom.hpp"
-#include "core/doc/protocol.hpp"
+#include "core/json/shapes.hpp"
+#include "core/protocol/protocol.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
 
@@ -109,10 +109,10 @@ void expect_close(const json& expected, const json& actual, double scale, const 
 // only then; convention 5).
 bool clamped_in_direction(const json& request) {
     if (request.contains("curve")) {
-        auto c = doc::curve_from_json(request["curve"]);
+        auto c = json_io::curve_from_json(request["curve"]);
         return c && geom::is_clamped(c->knots, c->degree, c->count());
     }
-    auto s = doc::surface_from_json(request["surface"]);
+    auto s = json_io::surface_from_json(request["surface"]);
     if (!s) return true;
     const geom::Dir d = request.value("direction", "u") == "u" ? geom::Dir::u : geom::Dir::v;
     return geom::is_clamped(s->knots(d), s->degree(d), s->count(d));
@@ -125,8 +125,8 @@ void expect_same_shape(const json& expected, const json& actual, bool surface, d
     ASSERT_EQ(expected["degree"], actual["degree"]) << at;
     const double tol = 1e-9 * std::max(1.0, scale);
     if (!surface) {
-        auto e = doc::curve_from_json(expected);
-        auto a = doc::curve_from_json(actual);
+        auto e = json_io::curve_from_json(expected);
+        auto a = json_io::curve_from_json(actual);
         ASSERT_TRUE(e.ok()) << at << ": reference curve invalid: " << e.error().message;
         ASSERT_TRUE(a.ok()) << at << ": our curve invalid: " << a.error().message;
         const geom::Interval de = geom::domain(e->knots, e->degree, e->count());
@@ -146,8 +146,8 @@ void expect_same_shape(const json& expected, const json& actual, bool surface, d
         }
         return;
     }
-    auto e = doc::surface_from_json(expected);
-    auto a = doc::surface_from_json(actual);
+    auto e = json_io::surface_from_json(expected);
+    auto a = json_io::surface_from_json(actual);
     ASSERT_TRUE(e.ok()) << at << ": reference surface invalid: " << e.error().message;
     ASSERT_TRUE(a.ok()) << at << ": our surface invalid: " << a.error().message;
     const geom::Interval eu = geom::domain(e->knots_u, e->degree_u, e->n_u);
@@ -214,7 +214,7 @@ TEST_P(SpecExample, HandleRequestMatchesTheReference) {
     const std::string stem = GetParam();
     const json request = json::parse(slurp(stem + ".request.json"));
     const json expected = json::parse(slurp(stem + ".response.json"));
-    expect_matches(request, expected, doc::handle_request(request));
+    expect_matches(request, expected, protocol::handle_request(request));
 }
 
 TEST_P(SpecExample, TextPathGivesTheSameAnswerAndExitStatus) {
@@ -224,7 +224,7 @@ TEST_P(SpecExample, TextPathGivesTheSameAnswerAndExitStatus) {
     const json expected = json::parse(slurp(stem + ".response.json"));
     std::istringstream in(text);
     std::ostringstream out, err;
-    const int status = doc::run_protocol(in, out, err);
+    const int status = protocol::run_protocol(in, out, err);
     EXPECT_EQ(status, expected["ok"].get<bool>() ? 0 : 1);
     EXPECT_TRUE(err.str().empty()) << err.str();
     const json actual = json::parse(out.str());

@@ -17,9 +17,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "core/doc/out_of_memory.hpp"
-#include "core/doc/protocol.hpp"
-#include "core/doc/scene_io.hpp"
+#include "core/json/out_of_memory.hpp"
+#include "core/protocol/protocol.hpp"
+#include "core/scene/scene_io.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -61,7 +61,7 @@ ChildResult run_limited(std::size_t headroom, const std::function<int(std::ostre
         std::ostringstream out;
         ::malloc_trim(0);
         // The reserve first, so `headroom` is what the work itself gets.
-        isoparm::doc::arm_memory_reserve();
+        isoparm::json_io::arm_memory_reserve();
         const std::size_t cap = address_space_in_use() + headroom;
         const rlimit limit{cap, cap};
         if (::setrlimit(RLIMIT_AS, &limit) != 0) ::_exit(100);
@@ -119,7 +119,7 @@ constexpr std::size_t mib = std::size_t{1} << 20;
 
 TEST(OutOfMemory, ReleaseJsonEmptiesATreeWithoutChangingItsType) {
     json tree = json::parse(R"({"a": [1, [2, [3, {"b": [4]}]]], "c": "text"})");
-    isoparm::doc::release_json(tree);
+    isoparm::json_io::release_json(tree);
     EXPECT_TRUE(tree.is_object());
     EXPECT_TRUE(tree.empty());
 }
@@ -130,7 +130,7 @@ TEST(OutOfMemory, ARequestThatRunsOutIsALimitErrorNotAnAbort) {
     const std::string request = bicubic_tessellation(1000);
     const ChildResult r = run_limited(50 * mib, [&](std::ostream& out) {
         std::ostringstream err;
-        return isoparm::doc::run_protocol_text(request, out, err);
+        return isoparm::protocol::run_protocol_text(request, out, err);
     });
     ASSERT_TRUE(r.exited) << "killed by signal " << r.status;
     EXPECT_EQ(r.status, 1);
@@ -169,7 +169,7 @@ TEST(OutOfMemory, RunningOutWhileBuildingAnAnswerTreeIsALimitError) {
     const std::string text = request.dump();
     const ChildResult r = run_limited(100 * mib, [&](std::ostream& out) {
         std::ostringstream err;
-        return isoparm::doc::run_protocol_text(text, out, err);
+        return isoparm::protocol::run_protocol_text(text, out, err);
     });
     ASSERT_TRUE(r.exited) << "killed by signal " << r.status;
     EXPECT_EQ(r.status, 1);
@@ -183,7 +183,7 @@ TEST(OutOfMemory, ABatchContinuesAfterAnElementRunsOut) {
                               bicubic_tessellation(1000) + ", " + small_request + "]";
     const ChildResult r = run_limited(50 * mib, [&](std::ostream& out) {
         std::ostringstream err;
-        return isoparm::doc::run_protocol_text(batch, out, err);
+        return isoparm::protocol::run_protocol_text(batch, out, err);
     });
     ASSERT_TRUE(r.exited) << "killed by signal " << r.status;
     EXPECT_EQ(r.status, 1);
@@ -205,7 +205,7 @@ TEST(OutOfMemory, ParsingAHugeInputThatRunsOutIsALimitError) {
     text += "]";
     const ChildResult r = run_limited(150 * mib, [&](std::ostream& out) {
         std::ostringstream err;
-        return isoparm::doc::run_protocol_text(std::move(text), out, err);
+        return isoparm::protocol::run_protocol_text(std::move(text), out, err);
     });
     ASSERT_TRUE(r.exited) << "killed by signal " << r.status;
     EXPECT_EQ(r.status, 1);
@@ -240,11 +240,11 @@ void write_big_scene(const fs::path& file) {
 // child inherits the heap this process freed (tens of MB after the other tests), where the
 // scene would load without the address space growing at all.
 [[noreturn]] void load_scene_under_limit(const std::string& scene, const std::string& report) {
-    isoparm::doc::arm_memory_reserve();
+    isoparm::json_io::arm_memory_reserve();
     const std::size_t cap = address_space_in_use() + 30 * mib;
     const rlimit limit{cap, cap};
     if (::setrlimit(RLIMIT_AS, &limit) != 0) ::_exit(100);
-    const auto doc = isoparm::doc::load_scene(scene);
+    const auto doc = isoparm::scene::load_scene(scene);
     if (doc) ::_exit(2); // the limit did not bite: the test would prove nothing
     std::ofstream(report) << doc.error().message;
     ::_exit(doc.error().code == isoparm::geom::ErrorCode::limit ? 0 : 3);
@@ -266,7 +266,7 @@ TEST(OutOfMemory, LoadingASceneThatRunsOutIsALimitError) {
     constexpr std::size_t unlimited = std::size_t{1} << 40;
     const ChildResult written = run_limited(unlimited, [&](std::ostream&) {
         write_big_scene(file);
-        return isoparm::doc::load_scene(file) ? 0 : 1;
+        return isoparm::scene::load_scene(file) ? 0 : 1;
     });
     ASSERT_TRUE(written.exited && written.status == 0) << "the scene itself must be valid";
     const pid_t child = ::fork();

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <string>
 
-#include "core/doc/protocol.hpp"
+#include "core/protocol/protocol.hpp"
 #include "core/geom/implicit/expression.hpp"
 #include "core/geom/implicit/polygonize.hpp"
 
@@ -17,7 +17,7 @@ using nlohmann::json;
 json run(const std::string& text) {
     std::istringstream in(text);
     std::ostringstream out, err;
-    const int status = isoparm::doc::run_protocol(in, out, err);
+    const int status = isoparm::protocol::run_protocol(in, out, err);
     EXPECT_EQ(status, 1) << out.str();
     return json::parse(out.str());
 }

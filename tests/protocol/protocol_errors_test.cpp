@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "core/doc/protocol.hpp"
+#include "core/protocol/protocol.hpp"
 
 namespace {
 
@@ -21,7 +21,7 @@ Answer run(const std::string& text) {
     std::istringstream in(text);
     std::ostringstream out, err;
     Answer a;
-    a.status = isoparm::doc::run_protocol(in, out, err);
+    a.status = isoparm::protocol::run_protocol(in, out, err);
     a.out = out.str();
     a.err = err.str();
     if (!a.out.empty()) a.response = json::parse(a.out);
@@ -534,7 +534,7 @@ TEST(ProtocolLimits, TooManyParameters) {
     // value (parsing 10 M numbers would dominate the test's time under the sanitizers).
     json request = json::parse(with_curve("evaluate", R"("params": [])"));
     request["params"] = json::array_t(10000001, json(0.5));
-    const json r = isoparm::doc::handle_request(request);
+    const json r = isoparm::protocol::handle_request(request);
     EXPECT_EQ(r["ok"], false);
     EXPECT_EQ(r["error"]["code"], "limit");
     EXPECT_EQ(r["error"]["path"], "/params");
@@ -733,7 +733,7 @@ TEST(ProtocolAccepts, PolygonizeASphere) {
 
 TEST(ProtocolAccepts, HandleRequestOnAParsedValue) {
     const json r =
-        isoparm::doc::handle_request(json::parse(with_curve("evaluate", R"("params": [1])")));
+        isoparm::protocol::handle_request(json::parse(with_curve("evaluate", R"("params": [1])")));
     EXPECT_EQ(r["ok"], true);
     EXPECT_EQ(r["points"], json::parse("[[2.0, 0.0, 0.0]]"));
 }

@@ -9,10 +9,10 @@
 #include <sstream>
 #include <string>
 
-#include "core/doc/json_write.hpp"
-#include "core/doc/protocol.hpp"
-#include "core/doc/protocol_detail.hpp"
-#include "core/doc/protocol_stream.hpp"
+#include "core/json/writer.hpp"
+#include "core/protocol/protocol.hpp"
+#include "core/protocol/detail.hpp"
+#include "core/protocol/stream.hpp"
 
 using nlohmann::json;
 using namespace isoparm;
@@ -20,17 +20,17 @@ using namespace isoparm;
 namespace {
 
 std::string as_tree_text(const geom::Mesh& mesh) {
-    json answer = doc::protocol::mesh_to_json(mesh);
+    json answer = protocol::mesh_to_json(mesh);
     answer["ok"] = true;
     std::string text;
-    doc::write_json(text, answer);
+    json_io::write_json(text, answer);
     return text;
 }
 
 std::string as_streamed_text(const geom::Mesh& mesh) {
     std::ostringstream out;
     std::string buffer;
-    doc::write_mesh_answer(mesh, buffer, out);
+    protocol::write_mesh_answer(mesh, buffer, out);
     out << buffer;
     return out.str();
 }
@@ -56,7 +56,7 @@ TEST(ProtocolStream, AnswersLongerThanAChunkAreWrittenWhole) {
         if (k >= 2) mesh.triangles.push_back({static_cast<std::uint32_t>(k - 2), 0, 1});
     }
     const std::string streamed = as_streamed_text(mesh);
-    ASSERT_GT(streamed.size(), doc::stream_chunk_bytes);
+    ASSERT_GT(streamed.size(), protocol::stream_chunk_bytes);
     EXPECT_EQ(streamed, as_tree_text(mesh));
 }
 
@@ -113,14 +113,14 @@ TEST(ProtocolStream, TheTextPathAgreesWithHandleRequest) {
     std::string expected_batch = "[";
     for (std::size_t k = 0; k < requests.size(); ++k) {
         std::string one;
-        doc::write_json(one, doc::handle_request(requests[k]));
+        json_io::write_json(one, protocol::handle_request(requests[k]));
         std::ostringstream out, err;
-        doc::run_protocol_text(requests[k].dump(), out, err);
+        protocol::run_protocol_text(requests[k].dump(), out, err);
         EXPECT_EQ(out.str(), one + "\n") << k;
         expected_batch += (k ? ", " : "") + one;
     }
     std::ostringstream out, err;
-    EXPECT_EQ(doc::run_protocol_text(requests.dump(), out, err), 1);
+    EXPECT_EQ(protocol::run_protocol_text(requests.dump(), out, err), 1);
     EXPECT_EQ(out.str(), expected_batch + "]\n");
 }
 

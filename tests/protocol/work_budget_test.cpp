@@ -8,13 +8,14 @@
 #include <sstream>
 #include <string>
 
-#include "core/doc/json_read.hpp"
-#include "core/doc/protocol.hpp"
-#include "core/doc/work_budget.hpp"
+#include "core/json/reader.hpp"
+#include "core/protocol/protocol.hpp"
+#include "core/geom/work_budget.hpp"
 #include "tests/support/protocol_shapes.hpp"
 
 using nlohmann::json;
-using namespace isoparm::doc;
+using namespace isoparm;
+using namespace isoparm::protocol;
 
 namespace {
 
@@ -36,17 +37,17 @@ void expect_limit(const json& response, const std::string& path, const std::stri
 }
 
 TEST(WorkBudget, EstimatesFollowTheDocumentedFormulas) {
-    const double per_number = steps_per_answer_number;
+    const double per_number = geom::steps_per_answer_number;
     // (p+1)^2 (d+1) + (p+1)(d+1) steps per curve parameter, plus the answer's numbers.
-    EXPECT_DOUBLE_EQ(estimate_curve_evaluation(10, 3, 0).steps, 10 * (16 + 4) + 30 * per_number);
-    EXPECT_DOUBLE_EQ(estimate_curve_evaluation(10, 3, 2).answer_numbers, 10 * 3 * 4);
+    EXPECT_DOUBLE_EQ(geom::estimate_curve_evaluation(10, 3, 0).steps, 10 * (16 + 4) + 30 * per_number);
+    EXPECT_DOUBLE_EQ(geom::estimate_curve_evaluation(10, 3, 2).answer_numbers, 10 * 3 * 4);
     // ((p+1)^2 + (q+1)^2)(d+1) + (p+1)(q+1)(d+1)(d+2)/2 per surface parameter.
-    EXPECT_DOUBLE_EQ(estimate_surface_evaluation(1, 3, 2, 1, false).steps,
+    EXPECT_DOUBLE_EQ(geom::estimate_surface_evaluation(1, 3, 2, 1, false).steps,
                      (16 + 9) * 2 + 12 * 3 + 3 * 5 * per_number);
-    EXPECT_DOUBLE_EQ(estimate_surface_evaluation(1, 3, 2, 1, true).answer_numbers, 3 * (1 + 4 + 1));
-    EXPECT_DOUBLE_EQ(estimate_tessellation(10, 20, 3, 3).answer_numbers, 10 * 20 * 6 + 9 * 19 * 6);
-    EXPECT_DOUBLE_EQ(estimate_polygonization(1000, 50).steps,
-                     1000 * 50 * steps_per_expression_instruction);
+    EXPECT_DOUBLE_EQ(geom::estimate_surface_evaluation(1, 3, 2, 1, true).answer_numbers, 3 * (1 + 4 + 1));
+    EXPECT_DOUBLE_EQ(geom::estimate_tessellation(10, 20, 3, 3).answer_numbers, 10 * 20 * 6 + 9 * 19 * 6);
+    EXPECT_DOUBLE_EQ(geom::estimate_polygonization(1000, 50).steps,
+                     1000 * 50 * geom::steps_per_expression_instruction);
 }
 
 // Issue repro: evaluate on a degree-4095 curve took 0.15 s per parameter; 10,000 of them ran
@@ -71,7 +72,7 @@ TEST(WorkBudget, AnAnswerAboveAGibibyteIsRefused) {
                           {"derivatives", 3},
                           {"normals", true}};
     expect_limit(handle_request(request), "/params", "400,000 parameters");
-    EXPECT_GT(estimate_surface_evaluation(1e7, 3, 3, 3, false).answer_numbers, max_answer_numbers);
+    EXPECT_GT(geom::estimate_surface_evaluation(1e7, 3, 3, 3, false).answer_numbers, geom::max_answer_numbers);
 }
 
 // Issue repro: polygonize with a 1,000-term expression took 13.6 s.
@@ -92,18 +93,18 @@ TEST(WorkBudget, TessellationWithinTheMeshCapsIsAllowed) {
 
 // A batch shares one budget: each element is checked against what the batch has left.
 TEST(WorkBudget, ABatchSharesOneBudget) {
-    const WorkEstimate big{0.6 * max_work_steps, 0};
+    const geom::WorkEstimate big{0.6 * geom::max_work_steps, 0};
     {
-        const BatchBudget batch;
-        EXPECT_TRUE(spend_work(big, "/params", "the first"));
-        const auto second = spend_work(big, "/params", "the second");
+        const geom::BatchBudget batch;
+        EXPECT_TRUE(geom::spend_work(big, "/params", "the first"));
+        const auto second = geom::spend_work(big, "/params", "the second");
         ASSERT_FALSE(second);
         EXPECT_NE(second.error().message.find("the batch has only"), std::string::npos);
-        EXPECT_TRUE(spend_work({0.3 * max_work_steps, 0}, "/params", "a smaller one"));
+        EXPECT_TRUE(geom::spend_work({0.3 * geom::max_work_steps, 0}, "/params", "a smaller one"));
     }
     // Outside a batch each request has the whole budget.
-    EXPECT_TRUE(spend_work(big, "/params", "alone"));
-    EXPECT_TRUE(spend_work(big, "/params", "alone again"));
+    EXPECT_TRUE(geom::spend_work(big, "/params", "alone"));
+    EXPECT_TRUE(geom::spend_work(big, "/params", "alone again"));
 }
 
 // Through the text path: a batch whose elements each fit the budget but not together answers
@@ -112,12 +113,12 @@ TEST(WorkBudget, ABatchSharesOneBudget) {
 TEST(WorkBudget, ABatchThatWouldTakeTooLongStopsTakingWork) {
     const json evaluate = {
         {"op", "evaluate"}, {"curve", curve_of_degree(3, 4)}, {"params", params(1000)}};
-    const double steps = estimate_curve_evaluation(1000, 3, 0).steps;
+    const double steps = geom::estimate_curve_evaluation(1000, 3, 0).steps;
     const json basis = {{"op", "basis"}, {"degree", 1}, {"knots", {0, 0, 1, 1}}, {"param", 0.5}};
     const json batch = json::array({evaluate, evaluate, evaluate, basis});
     std::ostringstream out, err;
     {
-        const BatchBudget outer(2.5 * steps);
+        const geom::BatchBudget outer(2.5 * steps);
         EXPECT_EQ(run_protocol_text(batch.dump(), out, err), 1);
     }
     const json answers = json::parse(out.str());
@@ -132,8 +133,8 @@ TEST(WorkBudget, ABatchThatWouldTakeTooLongStopsTakingWork) {
 // 2^24 values (about 1 GiB of tree), whatever the text.
 TEST(WorkBudget, TheReaderStopsAtItsValueCap) {
     std::string text = "[0";
-    text.reserve(2 * (max_json_values + 8));
-    for (std::size_t k = 0; k < max_json_values; ++k) text += ",0"; // one value too many
+    text.reserve(2 * (json_io::max_json_values + 8));
+    for (std::size_t k = 0; k < json_io::max_json_values; ++k) text += ",0"; // one value too many
     text += "]";
     std::ostringstream out, err;
     EXPECT_EQ(run_protocol_text(std::move(text), out, err), 1);

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <unistd.h>
 
-#include "core/doc/scene_io.hpp"
+#include "core/scene/scene_io.hpp"
 #include "tests/support/temp_dir.hpp"
 #include "ui/actions.hpp"
 #include "ui/app_context.hpp"
@@ -24,7 +24,7 @@ class FileSafety : public ::testing::Test {
 protected:
     void SetUp() override {
         scene_ = (dir_ / "scene.json").string();
-        ASSERT_TRUE(doc::save_scene(doc::default_document(), scene_));
+        ASSERT_TRUE(scene::save_scene(doc::default_document(), scene_));
     }
     static std::string read(const std::string& p) {
         std::ifstream in(p);
@@ -84,7 +84,7 @@ TEST_F(FileSafety, ASceneTooLargeToShowIsRefusedOnOpen) {
     ASSERT_FALSE(message.empty());
     EXPECT_NE(message.find("250 surfaces"), std::string::npos) << message;
     const std::string path = (dir_ / "big.json").string();
-    ASSERT_TRUE(doc::save_scene(big, path));
+    ASSERT_TRUE(scene::save_scene(big, path));
     AppContext ctx = window();
     EXPECT_FALSE(open_file(ctx, path));
     EXPECT_TRUE(ctx.ui.show_error);

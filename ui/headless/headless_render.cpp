@@ -6,8 +6,8 @@
 #include <imgui.h>
 #include <vector>
 
-#include "core/doc/atomic_file.hpp"
-#include "core/doc/scene_io.hpp"
+#include "core/scene/atomic_file.hpp"
+#include "core/scene/scene_io.hpp"
 #include "ui/doc_access.hpp"
 #include "ui/headless/egl_context.hpp"
 #include "ui/headless/offscreen_target.hpp"
@@ -24,15 +24,15 @@ std::string render_headless(const HeadlessRequest& req) {
                " is outside 16x16 .. 8192x8192";
     // The output before anything else: a directory, a device or the scene itself as output is
     // refused before any work (and the scene is never overwritten by its own picture).
-    if (const geom::Status usable = doc::check_output_path(req.output); !usable)
+    if (const geom::Status usable = scene::check_output_path(req.output); !usable)
         return usable.error().message;
-    if (const geom::Status distinct = doc::check_output_is_not_input(req.output, {req.scene_path});
+    if (const geom::Status distinct = scene::check_output_is_not_input(req.output, {req.scene_path});
         !distinct)
         return distinct.error().message;
     // Load first: a bad scene should not cost a GL context.
     doc::Document document = doc::default_document();
     if (!req.scene_path.empty()) {
-        geom::Expected<doc::Document> loaded = doc::load_scene(req.scene_path);
+        geom::Expected<doc::Document> loaded = scene::load_scene(req.scene_path);
         if (!loaded.ok()) {
             const geom::Error& e = loaded.error();
             const std::string where = e.has_path && !e.path.empty() ? " (at " + e.path + ")" : "";

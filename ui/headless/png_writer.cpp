@@ -4,7 +4,7 @@
 
 #include <string_view>
 
-#include "core/doc/atomic_file.hpp"
+#include "core/scene/atomic_file.hpp"
 
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb/stb_image_write.h>
@@ -27,7 +27,7 @@ std::string write_png(const std::string& path, int width, int height,
     std::string encoded;
     if (!stbi_write_png_to_func(append_bytes, &encoded, width, height, 4, rgba.data(), width * 4))
         return "cannot encode the PNG for '" + path + "' (out of memory)";
-    const geom::Status written = doc::write_file_atomically(path, encoded);
+    const geom::Status written = scene::write_file_atomically(path, encoded);
     return written ? std::string{} : written.error().message;
 }
 

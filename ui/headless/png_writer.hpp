@@ -1,4 +1,4 @@
-// Writing RGBA pictures as PNG through doc::write_file_atomically: a failure (full disk, file
+// Writing RGBA pictures as PNG through scene::write_file_atomically: a failure (full disk, file
 // size limit, a directory or device named as output) never leaves a partial PNG.
 #pragma once
 

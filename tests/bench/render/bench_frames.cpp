@@ -10,7 +10,7 @@
 #include <string>
 
 #include "core/doc/commands.hpp"
-#include "core/doc/scene_io.hpp"
+#include "core/scene/scene_io.hpp"
 #include "ui/doc_access.hpp"
 #include "ui/headless/egl_context.hpp"
 #include "ui/headless/offscreen_target.hpp"
@@ -32,7 +32,7 @@ void BM_Frame1440x900(benchmark::State& state, const char* scene, Gesture gestur
         state.SkipWithError(("no headless OpenGL: " + error).c_str());
         return;
     }
-    auto loaded = doc::load_scene(std::string(ISOPARM_SOURCE_DIR "/assets/scenes/") + scene);
+    auto loaded = scene::load_scene(std::string(ISOPARM_SOURCE_DIR "/assets/scenes/") + scene);
     if (!loaded.ok()) {
         state.SkipWithError(loaded.error().message.c_str());
         return;

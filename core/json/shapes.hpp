@@ -1,0 +1,23 @@
+// Geometry objects <-> JSON as the geom protocol defines them (shared by protocol and scenes).
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "core/geom/status.hpp"
+#include "core/geom/types.hpp"
+
+namespace isoparm::json_io {
+
+// Parse and fully validate (schema, degree, knots, weights, limit). Error paths are relative
+// to j ("/knots/5"); the caller prefixes its own location with Error::under().
+geom::Expected<geom::Curve> curve_from_json(const nlohmann::json& j);
+geom::Expected<geom::Surface> surface_from_json(const nlohmann::json& j);
+
+// Always writes type, degree, knots, points (3D) and, for rational types, weights.
+nlohmann::json curve_to_json(const geom::Curve& c);
+nlohmann::json surface_to_json(const geom::Surface& s);
+
+// A point that may not exist: [x, y, z], or null when any coordinate is not finite.
+nlohmann::json point_to_json(const glm::dvec3& p);
+
+} // namespace isoparm::json_io

@@ -1,0 +1,650 @@
+// Scenes <-> JSON values (docs/scene-format.md): strict reading with JSON Pointer errors.
+#include "core/scene/scene_io.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <set>
+
+#include "core/doc/commands_common.hpp"
+#include "core/json/shapes.hpp"
+#include "core/json/reader.hpp"
+#include "core/json/values.hpp"
+#include "core/json/out_of_memory.hpp"
+#include "core/doc/patches.hpp"
+
+namespace isoparm::scene {
+
+using namespace isoparm::doc;
+using namespace isoparm::json_io;
+
+using geom::Error;
+using geom::ErrorCode;
+using geom::Expected;
+using geom::make_error;
+using nlohmann::json;
+
+namespace {
+
+// ---------------------------------------------------------------------------------------
+// Names of enumerations as the file spells them.
+
+const char* plane_name(CurvePlane p) {
+    switch (p) {
+    case CurvePlane::xy:
+        return "xy";
+    case CurvePlane::xz:
+        return "xz";
+    case CurvePlane::yz:
+        return "yz";
+    case CurvePlane::free3d:
+        return "free3d";
+    }
+    return "xy";
+}
+
+// The curve designer's knot modes as the file spells them ("knot_mode" of a curve object).
+constexpr std::array<std::pair<CurveKnotMode, const char*>, 4> knot_mode_names = {{
+    {CurveKnotMode::clamped_uniform, "clamped_uniform"},
+    {CurveKnotMode::chord, "chord"},
+    {CurveKnotMode::centripetal, "centripetal"},
+    {CurveKnotMode::custom, "custom"},
+}};
+
+const char* style_name(DisplayStyle s) {
+    switch (s) {
+    case DisplayStyle::shaded:
+        return "shaded";
+    case DisplayStyle::wireframe:
+        return "wireframe";
+    case DisplayStyle::both:
+        return "both";
+    }
+    return "both";
+}
+
+// The colours in file order, with their names (shared by writing and reading).
+template <class C> auto color_fields(C& colors) {
+    using R = std::conditional_t<std::is_const_v<C>, const Rgba*, Rgba*>;
+    return std::array<std::pair<const char*, R>, 8>{{
+        {"background", &colors.background},
+        {"surface", &colors.surface},
+        {"selected_surface", &colors.selected_surface},
+        {"control_net", &colors.control_net},
+        {"control_points", &colors.control_points},
+        {"selected_point", &colors.selected_point},
+        {"knot_curves", &colors.knot_curves},
+        {"indicator", &colors.indicator},
+    }};
+}
+
+template <class D> auto display_flags(D& d) {
+    using B = std::conditional_t<std::is_const_v<D>, const bool*, bool*>;
+    return std::array<std::pair<const char*, B>, 6>{{
+        {"control_points", &d.control_points},
+        {"control_net", &d.control_net},
+        {"point_ids", &d.point_ids},
+        {"knot_curves", &d.knot_curves},
+        {"indicator_point", &d.indicator_point},
+        {"deboor", &d.deboor},
+    }};
+}
+
+constexpr int max_density = 256;
+constexpr std::size_t max_objects = 100000;
+constexpr std::uint64_t max_id = 9007199254740992ull; // 2^53: exact in every JSON reader
+
+// A colour channel is a float; it is written as the shortest decimal that reads back as that
+// float ("0.13", not 0.12999999523162842), held in a double.
+double channel_to_double(float f) {
+    char buf[32];
+    const auto res = std::to_chars(buf, buf + sizeof buf, f);
+    *res.ptr = '\0';
+    return std::strtod(buf, nullptr);
+}
+
+json color_to_json(const Rgba& c) {
+    return json::array({channel_to_double(c.r), channel_to_double(c.g), channel_to_double(c.b),
+                        channel_to_double(c.a)});
+}
+
+// ---------------------------------------------------------------------------------------
+// Reading helpers: every error carries the absolute path into the scene.
+
+Error schema(std::string message, std::string path) {
+    return make_error(ErrorCode::schema, std::move(message), std::move(path));
+}
+
+std::string member_path(const std::string& at, const std::string& key) {
+    return at + "/" + escape_pointer_token(key);
+}
+
+const char* type_name(const json& v) {
+    switch (v.type()) {
+    case json::value_t::null:
+        return "null";
+    case json::value_t::boolean:
+        return "a boolean";
+    case json::value_t::string:
+        return "a string";
+    case json::value_t::array:
+        return "an array";
+    case json::value_t::object:
+        return "an object";
+    case json::value_t::binary:
+        return "binary data";
+    case json::value_t::discarded:
+        return "nothing";
+    default:
+        return "a number";
+    }
+}
+
+// Members outside `allowed` are typos or from a newer isoparm: refused, never ignored.
+std::optional<Error> check_members(const json& j, const std::string& at, const char* what,
+                                   std::initializer_list<const char*> allowed) {
+    for (const auto& item : j.items()) {
+        bool ok = false;
+        for (const char* a : allowed) ok = ok || item.key() == a;
+        if (!ok) {
+            std::string list;
+            for (const char* a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
+            return schema("unknown member '" + item.key() + "' in " + what + " (allowed: " + list +
+                              ")",
+                          member_path(at, item.key()));
+        }
+    }
+    return std::nullopt;
+}
+
+std::optional<Error> expect_object(const json& v, const std::string& at, const char* what) {
+    if (v.is_object()) return std::nullopt;
+    return schema(std::string(what) + " must be a JSON object, got " + type_name(v), at);
+}
+
+Expected<bool> read_bool(const json& v, const std::string& at) {
+    if (!v.is_boolean())
+        return schema("expected true or false, got " + std::string(type_name(v)), at);
+    return v.get<bool>();
+}
+
+Expected<double> read_finite(const json& v, const std::string& at, const char* what) {
+    if (!v.is_number())
+        return schema(std::string(what) + " must be a number, got " + type_name(v), at);
+    const double x = v.get<double>();
+    if (!std::isfinite(x))
+        return schema(std::string(what) + " must be a finite number, got " + geom::format_number(x),
+                      at);
+    return x;
+}
+
+Expected<std::int64_t> read_integer(const json& v, const std::string& at, const char* what,
+                                    std::int64_t lo, std::int64_t hi) {
+    const auto n = integer_value(v);
+    if (!n)
+        return schema(std::string(what) + " must be an integer, got " +
+                          (v.is_number() ? v.dump() : std::string(type_name(v))),
+                      at);
+    if (*n < lo || *n > hi)
+        return schema(std::string(what) + " must be between " + std::to_string(lo) + " and " +
+                          std::to_string(hi) + ", got " + std::to_string(*n),
+                      at);
+    return *n;
+}
+
+Expected<glm::dvec3> read_vec3(const json& v, const std::string& at, const char* what) {
+    if (!v.is_array() || v.size() != 3) return schema(std::string(what) + " must be [x, y, z]", at);
+    glm::dvec3 p(0.0);
+    for (int a = 0; a < 3; ++a) {
+        auto x = read_finite(v[a], at + "/" + std::to_string(a), "a coordinate");
+        if (!x) return x.error();
+        p[a] = *x;
+    }
+    return p;
+}
+
+Expected<Rgba> read_color(const json& v, const std::string& at) {
+    if (!v.is_array() || (v.size() != 3 && v.size() != 4))
+        return schema("a colour is [r, g, b] or [r, g, b, a] with channels in [0, 1]", at);
+    float ch[4] = {0, 0, 0, 1};
+    for (std::size_t k = 0; k < v.size(); ++k) {
+        const std::string p = at + "/" + std::to_string(k);
+        auto x = read_finite(v[k], p, "a colour channel");
+        if (!x) return x.error();
+        if (*x < 0 || *x > 1)
+            return schema("colour channels are between 0 and 1, got " + geom::format_number(*x), p);
+        ch[k] = static_cast<float>(*x);
+    }
+    return Rgba{ch[0], ch[1], ch[2], ch[3]};
+}
+
+Expected<std::string> read_string(const json& v, const std::string& at, const char* what) {
+    if (!v.is_string())
+        return schema(std::string(what) + " must be a string, got " + type_name(v), at);
+    return v.get<std::string>();
+}
+
+// ---------------------------------------------------------------------------------------
+// Objects.
+
+Expected<ImplicitObject> implicit_from_json(const json& j, const std::string& at) {
+    if (auto e = expect_object(j, at, "an implicit surface")) return *e;
+    if (auto e = check_members(j, at, "an implicit surface",
+                               {"expression", "parameters", "bounds", "cell"}))
+        return *e;
+    ImplicitObject f;
+    const auto expr = j.find("expression");
+    if (expr == j.end()) return schema("missing member 'expression'", at + "/expression");
+    auto text = read_string(*expr, at + "/expression", "the expression");
+    if (!text) return text.error();
+    f.expression = *text;
+    if (const auto params = j.find("parameters"); params != j.end()) {
+        const std::string pat = at + "/parameters";
+        if (!params->is_array())
+            return schema("parameters is an array of {\"name\": ..., \"value\": ...}", pat);
+        for (std::size_t k = 0; k < params->size(); ++k) {
+            const json& p = (*params)[k];
+            const std::string kat = pat + "/" + std::to_string(k);
+            if (auto e = expect_object(p, kat, "a parameter")) return *e;
+            if (auto e = check_members(p, kat, "a parameter", {"name", "value"})) return *e;
+            if (!p.contains("name")) return schema("missing member 'name'", kat + "/name");
+            if (!p.contains("value")) return schema("missing member 'value'", kat + "/value");
+            auto name = read_string(p["name"], kat + "/name", "a parameter name");
+            if (!name) return name.error();
+            auto value = read_finite(p["value"], kat + "/value", "a parameter value");
+            if (!value) return value.error();
+            f.parameter_names.push_back(*name);
+            f.parameter_values.push_back(*value);
+        }
+    }
+    if (const auto bounds = j.find("bounds"); bounds != j.end()) {
+        if (!bounds->is_array() || bounds->size() != 2)
+            return schema("bounds is [[xmin, ymin, zmin], [xmax, ymax, zmax]]", at + "/bounds");
+        auto lo = read_vec3((*bounds)[0], at + "/bounds/0", "the lower corner");
+        if (!lo) return lo.error();
+        auto hi = read_vec3((*bounds)[1], at + "/bounds/1", "the upper corner");
+        if (!hi) return hi.error();
+        f.lo = *lo;
+        f.hi = *hi;
+    }
+    if (const auto cell = j.find("cell"); cell != j.end()) {
+        auto c = read_finite(*cell, at + "/cell", "the cell size");
+        if (!c) return c.error();
+        f.cell = *c;
+    }
+    return f;
+}
+
+Expected<Object> object_from_json(const json& j, const std::string& at) {
+    if (auto e = expect_object(j, at, "an object")) return *e;
+    const auto kind_it = j.find("kind");
+    if (kind_it == j.end()) return schema("missing member 'kind'", at + "/kind");
+    auto kind = read_string(*kind_it, at + "/kind", "kind");
+    if (!kind) return kind.error();
+    const bool surface = *kind == "surface", curve = *kind == "curve",
+               implicit = *kind == "implicit";
+    if (!surface && !curve && !implicit)
+        return schema("kind must be surface, curve or implicit, got '" + *kind + "'", at + "/kind");
+    if (auto e =
+            surface ? check_members(j, at, "a surface object",
+                                    {"id", "name", "kind", "visible", "patch_group", "surface"})
+            : curve
+                ? check_members(j, at, "a curve object",
+                                {"id", "name", "kind", "visible", "plane", "knot_mode", "curve"})
+                : check_members(j, at, "an implicit object",
+                                {"id", "name", "kind", "visible", "implicit"}))
+        return *e;
+
+    Object o;
+    if (const auto id = j.find("id"); id != j.end()) {
+        auto v =
+            read_integer(*id, at + "/id", "an object id", 1, static_cast<std::int64_t>(max_id));
+        if (!v) return v.error();
+        o.id = static_cast<std::uint64_t>(*v);
+    }
+    const auto name_it = j.find("name");
+    if (name_it == j.end()) return schema("missing member 'name'", at + "/name");
+    auto name = read_string(*name_it, at + "/name", "name");
+    if (!name) return name.error();
+    o.name = *name;
+    if (auto st = detail::validate_name(o.name); !st) return st.error().under(at);
+    if (const auto vis = j.find("visible"); vis != j.end()) {
+        auto v = read_bool(*vis, at + "/visible");
+        if (!v) return v.error();
+        o.visible = *v;
+    }
+    if (const auto group = j.find("patch_group"); group != j.end()) {
+        auto v = read_integer(*group, at + "/patch_group", "a patch group id", 1,
+                              static_cast<std::int64_t>(max_id));
+        if (!v) return v.error();
+        o.patch_group = static_cast<std::uint64_t>(*v);
+    }
+
+    const char* member = surface ? "surface" : curve ? "curve" : "implicit";
+    const std::string gat = at + "/" + member;
+    const auto geometry = j.find(member);
+    if (geometry == j.end())
+        return schema(std::string("missing member '") + member + "' (the " + *kind +
+                          " object's geometry)",
+                      gat);
+    if (surface) {
+        auto s = surface_from_json(*geometry);
+        if (!s) return s.error().under(gat);
+        o.shape = SurfaceObject{std::move(s).value()};
+    } else if (curve) {
+        CurveObject c;
+        if (const auto plane = j.find("plane"); plane != j.end()) {
+            auto p = read_string(*plane, at + "/plane", "plane");
+            if (!p) return p.error();
+            if (*p == "xy")
+                c.plane = CurvePlane::xy;
+            else if (*p == "xz")
+                c.plane = CurvePlane::xz;
+            else if (*p == "yz")
+                c.plane = CurvePlane::yz;
+            else if (*p == "free3d")
+                c.plane = CurvePlane::free3d;
+            else
+                return schema("plane must be xy, xz, yz or free3d, got '" + *p + "'",
+                              at + "/plane");
+        }
+        if (const auto mode = j.find("knot_mode"); mode != j.end()) {
+            auto m = read_string(*mode, at + "/knot_mode", "knot_mode");
+            if (!m) return m.error();
+            const auto* hit = std::find_if(knot_mode_names.begin(), knot_mode_names.end(),
+                                           [&](const auto& e) { return *m == e.second; });
+            if (hit == knot_mode_names.end())
+                return schema("knot_mode must be clamped_uniform, chord, centripetal or "
+                              "custom, got '" +
+                                  *m + "'",
+                              at + "/knot_mode");
+            c.knot_mode = hit->first;
+        }
+        auto g = curve_from_json(*geometry);
+        if (!g) return g.error().under(gat);
+        c.curve = std::move(g).value();
+        o.shape = std::move(c);
+    } else {
+        auto f = implicit_from_json(*geometry, gat);
+        if (!f) return f.error();
+        o.shape = std::move(f).value();
+    }
+    // The document's own rules (size caps, finite points, the implicit's box and parameters).
+    if (auto st = detail::validate_shape(o.shape); !st) return st.error().under(gat);
+    return o;
+}
+
+std::optional<Error> read_colors(const json& j, Colors& colors) {
+    if (auto e = expect_object(j, "/colors", "colors")) return *e;
+    for (const auto& item : j.items()) {
+        bool found = false;
+        for (auto& [name, c] : color_fields(colors)) {
+            if (item.key() != name) continue;
+            auto v = read_color(item.value(), member_path("/colors", item.key()));
+            if (!v) return v.error();
+            *c = *v;
+            found = true;
+        }
+        if (!found)
+            return schema("unknown colour '" + item.key() +
+                              "' (allowed: background, surface, selected_surface, control_net, "
+                              "control_points, selected_point, knot_curves, indicator)",
+                          member_path("/colors", item.key()));
+    }
+    return std::nullopt;
+}
+
+std::optional<Error> read_display(const json& j, DisplaySettings& d) {
+    if (auto e = expect_object(j, "/display", "display")) return *e;
+    for (const auto& item : j.items()) {
+        const std::string at = member_path("/display", item.key());
+        if (item.key() == "style") {
+            auto s = read_string(item.value(), at, "style");
+            if (!s) return s.error();
+            if (*s == "shaded")
+                d.style = DisplayStyle::shaded;
+            else if (*s == "wireframe")
+                d.style = DisplayStyle::wireframe;
+            else if (*s == "both")
+                d.style = DisplayStyle::both;
+            else
+                return schema("style must be shaded, wireframe or both, got '" + *s + "'", at);
+            continue;
+        }
+        if (item.key() == "density") {
+            auto n = read_integer(item.value(), at, "density", 1, max_density);
+            if (!n) return n.error();
+            d.density = static_cast<int>(*n);
+            continue;
+        }
+        bool found = false;
+        for (auto& [name, flag] : display_flags(d)) {
+            if (item.key() != name) continue;
+            auto v = read_bool(item.value(), at);
+            if (!v) return v.error();
+            *flag = *v;
+            found = true;
+        }
+        if (!found)
+            return schema("unknown display setting '" + item.key() +
+                              "' (allowed: style, control_points, control_net, point_ids, "
+                              "knot_curves, indicator_point, deboor, density)",
+                          at);
+    }
+    return std::nullopt;
+}
+
+std::optional<Error> read_selection(const json& j, const Document& doc, Selection& sel) {
+    sel = Selection{};
+    if (j.is_null()) return std::nullopt;
+    if (auto e = expect_object(j, "/selection", "selection (or null)")) return *e;
+    if (auto e = check_members(j, "/selection", "selection", {"object", "point"})) return *e;
+    const auto obj = j.find("object");
+    if (obj == j.end()) return schema("missing member 'object'", "/selection/object");
+    auto id = read_integer(*obj, "/selection/object", "the selected object's id", 1,
+                           static_cast<std::int64_t>(max_id));
+    if (!id) return id.error();
+    const Object* o = doc.find(static_cast<std::uint64_t>(*id));
+    if (!o)
+        return schema("the selection names object " + std::to_string(*id) +
+                          ", but no object has that id",
+                      "/selection/object");
+    sel.object = o->id;
+    const auto point = j.find("point");
+    if (point == j.end()) return std::nullopt;
+    if (std::holds_alternative<ImplicitObject>(o->shape))
+        return schema("an implicit surface has no control points to select", "/selection/point");
+    const bool surface = std::holds_alternative<SurfaceObject>(o->shape);
+    const std::size_t arity = surface ? 2 : 1;
+    if (!point->is_array() || point->size() != arity)
+        return schema(surface ? "a surface's selected point is [i, j]"
+                              : "a curve's selected point is [i]",
+                      "/selection/point");
+    int counts[2];
+    if (surface) {
+        counts[0] = std::get<SurfaceObject>(o->shape).surface.n_u;
+        counts[1] = std::get<SurfaceObject>(o->shape).surface.n_v;
+    } else {
+        counts[0] = std::get<CurveObject>(o->shape).curve.count();
+        counts[1] = 0;
+    }
+    int idx[2] = {-1, -1};
+    for (std::size_t k = 0; k < arity; ++k) {
+        auto v = read_integer((*point)[k], "/selection/point/" + std::to_string(k),
+                              "a control point index", 0, counts[k] - 1);
+        if (!v) return v.error();
+        idx[k] = static_cast<int>(*v);
+    }
+    sel.i = idx[0];
+    sel.j = idx[1];
+    return std::nullopt;
+}
+
+} // namespace
+
+json scene_to_json(const Document& doc) {
+    json objects = json::array();
+    for (const Object& o : doc.objects) {
+        json j = json::object();
+        j["id"] = o.id;
+        j["name"] = o.name;
+        j["visible"] = o.visible;
+        if (o.patch_group != 0) j["patch_group"] = o.patch_group;
+        if (auto* s = std::get_if<SurfaceObject>(&o.shape)) {
+            j["kind"] = "surface";
+            j["surface"] = surface_to_json(s->surface);
+        } else if (auto* c = std::get_if<CurveObject>(&o.shape)) {
+            j["kind"] = "curve";
+            j["plane"] = plane_name(c->plane);
+            // Custom (the default) is omitted, so older scenes save back unchanged.
+            if (c->knot_mode != CurveKnotMode::custom)
+                for (const auto& [mode, name] : knot_mode_names)
+                    if (mode == c->knot_mode) j["knot_mode"] = name;
+            j["curve"] = curve_to_json(c->curve);
+        } else {
+            const auto& f = std::get<ImplicitObject>(o.shape);
+            json params = json::array();
+            const std::size_t count = std::min(f.parameter_names.size(), f.parameter_values.size());
+            for (std::size_t k = 0; k < count; ++k)
+                params.push_back(
+                    {{"name", f.parameter_names[k]}, {"value", f.parameter_values[k]}});
+            j["kind"] = "implicit";
+            j["implicit"] = {{"expression", f.expression},
+                             {"parameters", std::move(params)},
+                             {"bounds", json::array({json::array({f.lo.x, f.lo.y, f.lo.z}),
+                                                     json::array({f.hi.x, f.hi.y, f.hi.z})})},
+                             {"cell", f.cell}};
+        }
+        objects.push_back(std::move(j));
+    }
+
+    json colors = json::object();
+    for (const auto& [name, c] : color_fields(doc.colors)) colors[name] = color_to_json(*c);
+
+    json display = json::object();
+    display["style"] = style_name(doc.display.style);
+    for (const auto& [name, flag] : display_flags(doc.display)) display[name] = *flag;
+    display["density"] = doc.display.density;
+
+    json selection = nullptr;
+    if (doc.find(doc.selection.object)) {
+        selection = {{"object", doc.selection.object}};
+        if (doc.selection.has_point())
+            selection["point"] = doc.selection.j >= 0
+                                     ? json::array({doc.selection.i, doc.selection.j})
+                                     : json::array({doc.selection.i});
+    }
+
+    json scene = json::object();
+    scene["format"] = scene_format_name;
+    scene["version"] = scene_format_version;
+    scene["objects"] = std::move(objects);
+    scene["colors"] = std::move(colors);
+    scene["display"] = std::move(display);
+    scene["selection"] = std::move(selection);
+    scene["indicator"] = json::array({doc.indicator.x, doc.indicator.y});
+    if (doc.continuity != Continuity::off) scene["continuity"] = continuity_name(doc.continuity);
+    return scene;
+}
+
+Expected<Document> scene_from_json(const json& j) {
+    if (!j.is_object())
+        return schema(std::string("a scene is a JSON object, got ") + type_name(j), "");
+    // Format and version first: a newer file may well have members this version lacks.
+    const auto format = j.find("format");
+    if (format == j.end())
+        return schema("missing member 'format' (an isoparm scene has \"format\": \"" +
+                          std::string(scene_format_name) + "\")",
+                      "/format");
+    if (!format->is_string() || format->get<std::string>() != scene_format_name)
+        return schema("not an isoparm scene: format must be \"" + std::string(scene_format_name) +
+                          "\", got " +
+                          (format->is_string() ? "\"" + format->get<std::string>() + "\""
+                                               : std::string(type_name(*format))),
+                      "/format");
+    const auto version = j.find("version");
+    if (version == j.end()) return schema("missing member 'version'", "/version");
+    const auto v = integer_value(*version);
+    if (!v) return schema("version must be an integer, got " + version->dump(), "/version");
+    if (*v > scene_format_version)
+        return schema("this scene has format version " + std::to_string(*v) +
+                          ", newer than this isoparm reads (" +
+                          std::to_string(scene_format_version) + "); update isoparm to open it",
+                      "/version");
+    if (*v < 1) return schema("version must be at least 1, got " + std::to_string(*v), "/version");
+    if (auto e = check_members(j, "", "a scene",
+                               {"format", "version", "objects", "colors", "display", "selection",
+                                "indicator", "continuity"}))
+        return *e;
+
+    Document doc;
+    const auto objects = j.find("objects");
+    if (objects == j.end()) return schema("missing member 'objects'", "/objects");
+    if (!objects->is_array())
+        return schema(std::string("objects must be an array, got ") + type_name(*objects),
+                      "/objects");
+    if (objects->size() > max_objects)
+        return make_error(ErrorCode::limit,
+                          "a scene may hold at most " + std::to_string(max_objects) +
+                              " objects, got " + std::to_string(objects->size()),
+                          "/objects");
+    std::set<std::uint64_t> ids;
+    for (std::size_t k = 0; k < objects->size(); ++k) {
+        const std::string at = "/objects/" + std::to_string(k);
+        auto o = object_from_json((*objects)[k], at);
+        if (!o) return o.error();
+        if (o->id != 0 && !ids.insert(o->id).second)
+            return schema("object id " + std::to_string(o->id) + " is used twice", at + "/id");
+        doc.objects.push_back(std::move(o).value());
+    }
+    // Objects written without an id get fresh ones after the largest given.
+    std::uint64_t next = ids.empty() ? 1 : *ids.rbegin() + 1;
+    for (Object& o : doc.objects)
+        if (o.id == 0) o.id = next++;
+    doc.next_id = next;
+
+    if (const auto c = j.find("colors"); c != j.end())
+        if (auto e = read_colors(*c, doc.colors)) return *e;
+    if (const auto d = j.find("display"); d != j.end())
+        if (auto e = read_display(*d, doc.display)) return *e;
+    if (const auto s = j.find("selection"); s != j.end())
+        if (auto e = read_selection(*s, doc, doc.selection)) return *e;
+    if (const auto c = j.find("continuity"); c != j.end()) {
+        auto name = read_string(*c, "/continuity", "continuity");
+        if (!name) return name.error();
+        bool known = false;
+        for (Continuity k : {Continuity::off, Continuity::c0, Continuity::c1})
+            if (*name == continuity_name(k)) doc.continuity = k, known = true;
+        if (!known)
+            return schema("continuity must be off, C0 or C1, got '" + *name + "'", "/continuity");
+    }
+    if (auto e = check_patch_groups(doc)) return *e;
+    if (const auto ind = j.find("indicator"); ind != j.end()) {
+        if (!ind->is_array() || ind->size() != 2)
+            return schema("indicator is [u, v], each in [0, 1]", "/indicator");
+        for (int a = 0; a < 2; ++a) {
+            const std::string at = "/indicator/" + std::to_string(a);
+            auto x = read_finite((*ind)[a], at, "an indicator coordinate");
+            if (!x) return x.error();
+            if (*x < 0 || *x > 1)
+                return schema("indicator coordinates are in [0, 1] (over the domain), got " +
+                                  geom::format_number(*x),
+                              at);
+            doc.indicator[a] = *x;
+        }
+    }
+    return doc;
+}
+
+Expected<Document> scene_from_text(std::string_view text) {
+    auto read = read_json(text);
+    if (!read) return read.error();
+    // Duplicate keys and excessive nesting are found while reading; the first one wins.
+    if (!read->problems.empty()) return read->problems.front();
+    // Freed without allocating, also while unwinding from std::bad_alloc (out_of_memory.hpp).
+    const ReleaseJsonOnExit release(read->value);
+    return scene_from_json(read->value);
+}
+
+} // namespace isoparm::scene

@@ -1,0 +1,39 @@
+// Scenes as JSON (docs/scene-format.md): load with precise errors, save atomically.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
+
+#include "core/doc/document.hpp"
+#include "core/geom/status.hpp"
+
+namespace isoparm::scene {
+
+// The scene format's name and the newest version this build reads and writes.
+inline constexpr const char* scene_format_name = "isoparm-scene";
+inline constexpr int scene_format_version = 1;
+
+nlohmann::json scene_to_json(const doc::Document& doc);
+// Errors name the offending value with a JSON Pointer into the scene.
+geom::Expected<doc::Document> scene_from_json(const nlohmann::json& j);
+
+// The text save_scene writes: indented for people, every number in shortest round-trip form
+// (so a load gives back the same bits, -0.0 included), ending with a newline.
+std::string scene_to_text(const doc::Document& doc);
+// Parses scene text: not JSON (`parse`, message with line and column), duplicate keys
+// (`schema`), nesting too deep (`limit`), then scene_from_json. Never throws, never crashes:
+// this is the entry point the scene fuzzer drives.
+geom::Expected<doc::Document> scene_from_text(std::string_view text);
+
+// Reads and parses a scene file through read_input_file: only a regular file is read (a FIFO
+// or a directory is refused without blocking). A file that cannot be read is `internal` without
+// a path (the message names the file and the reason); files above 256 MiB are `limit`.
+geom::Expected<doc::Document> load_scene(const std::string& path);
+// Writes the scene with write_file_atomically (atomic_file.hpp): a crash never leaves a
+// half-written scene; only a regular file (or "-") is written; a symbolic link is followed only
+// where the kernel allows it; on any failure (`internal`, naming the file and the reason) the
+// old file is intact and no temporary file is left.
+geom::Status save_scene(const doc::Document& doc, const std::string& path);
+
+} // namespace isoparm::scene
