@@ -26,14 +26,19 @@ Status check_degree(int p, int n, const std::string& path, const char* dir_name)
     return Ok{};
 }
 
-Status check_bezier(const Knots& U, int p, int n, const std::string& degree_path,
-                    const std::string& knots_path, const char* what) {
+// Runs after validate_knots, so the knots fit n and p: with n != p + 1 they make more than one
+// span, and the knots are what is wrong (docs/protocol.md). A Bezier object read without
+// knots gets a^(p+1) b^(p+1), which only fits p + 1 points; its reader refuses a wrong
+// count as a `degree` error before this runs (there are no knots to blame).
+Status check_bezier(const Knots& U, int p, int n, const std::string& knots_path,
+                    const char* what) {
     if (n != p + 1) {
-        return make_error(ErrorCode::degree,
-                          std::string("a Bezier ") + what + " of degree " + std::to_string(p) +
-                              " has exactly " + std::to_string(p + 1) + " control points, got " +
-                              std::to_string(n),
-                          degree_path);
+        return make_error(ErrorCode::knots,
+                          std::string("a Bezier ") + what + " has one span: knots a^(p+1) b^(p+1) " +
+                              "and exactly " + std::to_string(p + 1) +
+                              " control points for degree " + std::to_string(p) + ", got " +
+                              std::to_string(n) + " control points",
+                          knots_path);
     }
     for (int k = 0; k <= p; ++k) {
         if (U[k] != U[0] || U[p + 1 + k] != U.back()) {
@@ -94,7 +99,7 @@ Status validate_curve(const Curve& c) {
         !s)
         return s;
     if (Status s = validate_knots(c.knots, p, n); !s) return s.error().under("/knots");
-    if (is_bezier(c.type)) return check_bezier(c.knots, p, n, "/degree", "/knots", "curve");
+    if (is_bezier(c.type)) return check_bezier(c.knots, p, n, "/knots", "curve");
     return Ok{};
 }
 
@@ -127,11 +132,11 @@ Status validate_surface(const Surface& s) {
         return r.error().under("/knots/1");
     if (is_bezier(s.type)) {
         if (Status r =
-                check_bezier(s.knots_u, s.degree_u, s.n_u, "/degree/0", "/knots/0", "surface");
+                check_bezier(s.knots_u, s.degree_u, s.n_u, "/knots/0", "surface");
             !r)
             return r;
         if (Status r =
-                check_bezier(s.knots_v, s.degree_v, s.n_v, "/degree/1", "/knots/1", "surface");
+                check_bezier(s.knots_v, s.degree_v, s.n_v, "/knots/1", "surface");
             !r)
             return r;
     }

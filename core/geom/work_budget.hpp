@@ -23,7 +23,7 @@ inline constexpr double max_work_steps = 1.0e9;
 // 1,000 terms on a 21^3 grid took 1.2 s).
 inline constexpr double steps_per_expression_instruction = 2.5;
 // Each number of an answer costs about 5 steps to write: the answers of evaluate, tessellate
-// and polygonize are written straight from compact values (protocol_stream.hpp), a 1000 x 1000
+// and polygonize are written straight from compact values (stream.hpp), a 1000 x 1000
 // tessellation (12 million numbers) in ~0.6 s in all. (Built as a JSON tree, as before issue
 // 14, a number cost about 50.)
 inline constexpr double steps_per_answer_number = 5;

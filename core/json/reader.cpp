@@ -1,4 +1,4 @@
-// Reading untrusted JSON text through nlohmann's SAX interface (see json_read.hpp).
+// Reading untrusted JSON text through nlohmann's SAX interface (see reader.hpp).
 #include "core/json/reader.hpp"
 
 #include "core/json/out_of_memory.hpp"
@@ -138,7 +138,7 @@ std::vector<OverflowToken> find_overflows(std::string_view text) {
     return found;
 }
 
-// Builds the DOM like nlohmann's json_sax_dom_parser, plus the checks of json_read.hpp.
+// Builds the DOM like nlohmann's json_sax_dom_parser, plus the checks of reader.hpp.
 // Skipped subtrees (a duplicate's value, a too-deep container) are only counted, not built.
 class Builder {
 public:

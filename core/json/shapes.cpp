@@ -7,7 +7,7 @@
 #include <string>
 
 #include "core/json/reader.hpp"
-#include "core/json/values.hpp"
+#include "core/json/fields.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/validate.hpp"
 
@@ -25,25 +25,13 @@ std::string at(long i) {
     return "/" + std::to_string(i);
 }
 
-Error schema(std::string message, std::string path) {
-    return make_error(ErrorCode::schema, std::move(message), std::move(path));
-}
 Error weights_error(std::string message, std::string path) {
     return make_error(ErrorCode::weights, std::move(message), std::move(path));
 }
 
 // Members a geometry object may have; anything else is a typo and is refused.
-std::optional<Error> check_members(const json& j, const char* what) {
-    for (const auto& [key, value] : j.items()) {
-        (void)value;
-        if (key != "type" && key != "degree" && key != "knots" && key != "points" &&
-            key != "weights") {
-            return schema("unknown field '" + short_name(key) + "' in a " + what +
-                              " (allowed: type, degree, knots, points, weights)",
-                          "/" + escape_pointer_token(key));
-        }
-    }
-    return std::nullopt;
+geom::Status check_geometry_members(const json& j, const char* what) {
+    return check_members(j, "", what, {"type", "degree", "knots", "points", "weights"});
 }
 
 // `type`: one of the four names; default nurbs with weights, else bspline.
@@ -54,7 +42,7 @@ Expected<geom::SplineType> read_type(const json& j) {
     }
     geom::SplineType t{};
     if (!it->is_string() || !geom::parse_spline_type(it->get<std::string>(), t)) {
-        return schema("type must be one of bezier, rational_bezier, bspline, nurbs", "/type");
+        return schema_error("type must be one of bezier, rational_bezier, bspline, nurbs", "/type");
     }
     return t;
 }
@@ -63,7 +51,7 @@ Expected<geom::SplineType> read_type(const json& j) {
 // degree is reported as a `degree` error later instead of overflowing.
 Expected<std::int64_t> read_one_degree(const json& v, const std::string& path) {
     const std::optional<std::int64_t> d = integer_value(v);
-    if (!d) return schema("the degree is an integer", path);
+    if (!d) return schema_error("the degree is an integer", path);
     if (*d < 1) return make_error(ErrorCode::degree, "the degree must be at least 1", path);
     return *d;
 }
@@ -71,32 +59,26 @@ Expected<std::int64_t> read_one_degree(const json& v, const std::string& path) {
 // [x, y] or [x, y, z] of finite numbers.
 Expected<glm::dvec3> read_point(const json& v, const std::string& path) {
     if (!v.is_array() || v.size() < 2 || v.size() > 3)
-        return schema("a control point is [x, y] or [x, y, z]", path);
+        return schema_error("a control point is [x, y] or [x, y, z]", path);
     glm::dvec3 p(0.0);
     for (std::size_t k = 0; k < v.size(); ++k) {
-        if (!v[k].is_number())
-            return schema("a coordinate must be a number", path + at(static_cast<long>(k)));
-        const double x = v[k].get<double>();
-        if (!std::isfinite(x))
-            return schema("a coordinate must be a finite number", path + at(static_cast<long>(k)));
-        p[static_cast<int>(k)] = x;
+        // The message's path is built only for a value that fails (millions of points pass).
+        if (!is_finite_number(v[k]))
+            return read_finite(v[k], path + at(static_cast<long>(k)), "a coordinate").error();
+        p[static_cast<int>(k)] = v[k].get<double>();
     }
     return p;
 }
 
 // A flat array of finite numbers (knots).
 Expected<geom::Knots> read_knot_vector(const json& v, const std::string& path) {
-    if (!v.is_array()) return schema("a knot vector is an array of numbers", path);
+    if (!v.is_array()) return schema_error("a knot vector is an array of numbers", path);
     geom::Knots U;
     U.reserve(v.size());
     for (std::size_t k = 0; k < v.size(); ++k) {
-        const json& x = v[k];
-        if (!x.is_number())
-            return schema("a knot must be a number", path + at(static_cast<long>(k)));
-        const double t = x.get<double>();
-        if (!std::isfinite(t))
-            return schema("a knot must be a finite number", path + at(static_cast<long>(k)));
-        U.push_back(t);
+        if (!is_finite_number(v[k]))
+            return read_finite(v[k], path + at(static_cast<long>(k)), "a knot").error();
+        U.push_back(v[k].get<double>());
     }
     return U;
 }
@@ -150,28 +132,25 @@ std::optional<Error> check_degree_fits(std::int64_t p, long n, bool bezier_defau
     return std::nullopt;
 }
 
-Error missing(const char* field) {
-    return schema(std::string("missing field '") + field + "'", std::string("/") + field);
-}
 
 } // namespace
 
 Expected<geom::Curve> curve_from_json(const json& j) {
-    if (!j.is_object()) return schema("a curve is a JSON object", "");
-    if (auto e = check_members(j, "curve")) return *e;
+    if (!j.is_object()) return schema_error("a curve is a JSON object", "");
+    if (auto st = check_geometry_members(j, "a curve"); !st) return st.error();
     Expected<geom::SplineType> type = read_type(j);
     if (!type) return type.error();
 
     const auto degree_it = j.find("degree");
-    if (degree_it == j.end()) return missing("degree");
-    if (degree_it->is_array()) return schema("a curve's degree is one integer", "/degree");
+    if (degree_it == j.end()) return missing_member("", "degree");
+    if (degree_it->is_array()) return schema_error("a curve's degree is one integer", "/degree");
     Expected<std::int64_t> degree = read_one_degree(*degree_it, "/degree");
     if (!degree) return degree.error();
 
     const auto points_it = j.find("points");
-    if (points_it == j.end()) return missing("points");
+    if (points_it == j.end()) return missing_member("", "points");
     const json& P = *points_it;
-    if (!P.is_array()) return schema("points is an array of [x, y] or [x, y, z]", "/points");
+    if (!P.is_array()) return schema_error("points is an array of [x, y] or [x, y, z]", "/points");
     if (P.size() > static_cast<std::size_t>(geom::max_points_per_direction)) {
         return make_error(ErrorCode::limit,
                           "too many control points (" + std::to_string(P.size()) + " > " +
@@ -190,7 +169,7 @@ Expected<geom::Curve> curve_from_json(const json& j) {
 
     const auto knots_it = j.find("knots");
     const bool default_knots = knots_it == j.end();
-    if (default_knots && !geom::is_bezier(c.type)) return missing("knots");
+    if (default_knots && !geom::is_bezier(c.type)) return missing_member("", "knots");
     if (!default_knots) {
         Expected<geom::Knots> U = read_knot_vector(*knots_it, "/knots");
         if (!U) return U.error();
@@ -200,7 +179,7 @@ Expected<geom::Curve> curve_from_json(const json& j) {
     const auto weights_it = j.find("weights");
     if (weights_it != j.end()) {
         if (!geom::is_rational(c.type)) {
-            return schema(std::string("a ") + geom::spline_type_name(c.type) +
+            return schema_error(std::string("a ") + geom::spline_type_name(c.type) +
                               " curve takes no weights (use rational_bezier or nurbs)",
                           "/weights");
         }
@@ -222,15 +201,15 @@ Expected<geom::Curve> curve_from_json(const json& j) {
 }
 
 Expected<geom::Surface> surface_from_json(const json& j) {
-    if (!j.is_object()) return schema("a surface is a JSON object", "");
-    if (auto e = check_members(j, "surface")) return *e;
+    if (!j.is_object()) return schema_error("a surface is a JSON object", "");
+    if (auto st = check_geometry_members(j, "a surface"); !st) return st.error();
     Expected<geom::SplineType> type = read_type(j);
     if (!type) return type.error();
 
     const auto degree_it = j.find("degree");
-    if (degree_it == j.end()) return missing("degree");
+    if (degree_it == j.end()) return missing_member("", "degree");
     if (!degree_it->is_array() || degree_it->size() != 2)
-        return schema("a surface's degree is [degree_u, degree_v]", "/degree");
+        return schema_error("a surface's degree is [degree_u, degree_v]", "/degree");
     std::int64_t degree[2];
     for (int d = 0; d < 2; ++d) {
         Expected<std::int64_t> p = read_one_degree((*degree_it)[d], "/degree" + at(d));
@@ -239,10 +218,10 @@ Expected<geom::Surface> surface_from_json(const json& j) {
     }
 
     const auto points_it = j.find("points");
-    if (points_it == j.end()) return missing("points");
+    if (points_it == j.end()) return missing_member("", "points");
     const json& P = *points_it;
     if (!P.is_array())
-        return schema("a surface's points are n_u rows of n_v points [x, y, z]", "/points");
+        return schema_error("a surface's points are n_u rows of n_v points [x, y, z]", "/points");
     const long max_dir = geom::max_points_per_direction;
     if (static_cast<long>(P.size()) > max_dir)
         return make_error(ErrorCode::limit, "too many points along u", "/points");
@@ -250,13 +229,13 @@ Expected<geom::Surface> surface_from_json(const json& j) {
     long n_v = -1;
     for (std::size_t i = 0; i < P.size(); ++i) {
         const std::string row = "/points" + at(static_cast<long>(i));
-        if (!P[i].is_array()) return schema("a surface's points are rows (arrays) of points", row);
+        if (!P[i].is_array()) return schema_error("a surface's points are rows (arrays) of points", row);
         const long len = static_cast<long>(P[i].size());
         if (len > max_dir)
             return make_error(ErrorCode::limit, "too many points along v", "/points");
         if (n_v < 0) n_v = len;
         if (len != n_v) {
-            return schema("every row of points must have the same length: row " +
+            return schema_error("every row of points must have the same length: row " +
                               std::to_string(i) + " has " + std::to_string(len) + ", row 0 has " +
                               std::to_string(n_v),
                           row);
@@ -288,11 +267,11 @@ Expected<geom::Surface> surface_from_json(const json& j) {
 
     const auto knots_it = j.find("knots");
     const bool default_knots = knots_it == j.end();
-    if (default_knots && !geom::is_bezier(s.type)) return missing("knots");
+    if (default_knots && !geom::is_bezier(s.type)) return missing_member("", "knots");
     if (!default_knots) {
         const json& K = *knots_it;
         if (!K.is_array() || K.size() != 2)
-            return schema("a surface's knots are [knots_u, knots_v]", "/knots");
+            return schema_error("a surface's knots are [knots_u, knots_v]", "/knots");
         for (int d = 0; d < 2; ++d) {
             Expected<geom::Knots> U =
                 read_knot_vector(K[static_cast<std::size_t>(d)], "/knots" + at(d));
@@ -304,7 +283,7 @@ Expected<geom::Surface> surface_from_json(const json& j) {
     const auto weights_it = j.find("weights");
     if (weights_it != j.end()) {
         if (!geom::is_rational(s.type)) {
-            return schema(std::string("a ") + geom::spline_type_name(s.type) +
+            return schema_error(std::string("a ") + geom::spline_type_name(s.type) +
                               " surface takes no weights (use rational_bezier or nurbs)",
                           "/weights");
         }

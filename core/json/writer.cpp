@@ -1,4 +1,4 @@
-// Writing responses with shortest round-trip numbers (see json_write.hpp).
+// Writing responses with shortest round-trip numbers (see writer.hpp).
 #include "core/json/writer.hpp"
 
 #include <array>

@@ -11,12 +11,12 @@
 #include <string_view>
 
 #include "core/geom/status.hpp"
+#include "core/json/fields.hpp"
 #include "core/geom/types.hpp"
 
 namespace isoparm::geom {
 struct Mesh;
 }
-namespace isoparm::json_io {}
 
 namespace isoparm::protocol {
 
@@ -31,41 +31,28 @@ using OpResult = geom::Expected<json>;
 using OpHandler = OpResult (*)(const json& request);
 
 // One file per op family; each op is one line in protocol.cpp's table.
-OpResult op_evaluate(const json& request);    // protocol_eval.cpp
-OpResult op_basis(const json& request);       // protocol_basis.cpp
-OpResult op_deboor(const json& request);      // protocol_deboor.cpp
-OpResult op_tessellate(const json& request);  // protocol_tessellate.cpp
-OpResult op_insert_knot(const json& request); // protocol_refine.cpp
+OpResult op_evaluate(const json& request);    // op_evaluate.cpp
+OpResult op_basis(const json& request);       // op_basis.cpp
+OpResult op_deboor(const json& request);      // op_deboor.cpp
+OpResult op_tessellate(const json& request);  // op_tessellate.cpp
+OpResult op_insert_knot(const json& request); // op_refine.cpp
 OpResult op_elevate_degree(const json& request);
 OpResult op_split(const json& request);
-OpResult op_polygonize(const json& request); // protocol_implicit.cpp
+OpResult op_polygonize(const json& request); // op_polygonize.cpp
 // The meshes of `tessellate` and `polygonize` before they become JSON: the text path writes
-// them straight to the output (protocol_stream.hpp) instead of building a JSON tree.
+// them straight to the output (stream.hpp) instead of building a JSON tree.
 geom::Expected<geom::Mesh> tessellate_mesh(const json& request);
 geom::Expected<geom::Mesh> polygonize_mesh(const json& request);
 // `evaluate` for the text path: checked and computed into compact values, written by the
-// returned writer exactly as op_evaluate's answer would be (protocol_stream.hpp).
+// returned writer exactly as op_evaluate's answer would be (stream.hpp).
 geom::Expected<std::function<void(std::string&, std::ostream&)>>
 streamed_evaluate(const json& request);
-
-// ---- errors ----------------------------------------------------------------------------
-geom::Error schema_error(std::string message, std::string path);
-// "missing field 'knot'" at "/knot" (convention 10: where the member would be).
-geom::Error missing_field(std::string_view name);
-// "/" + the escaped member name.
-std::string field_path(std::string_view name);
 
 // ---- fields ----------------------------------------------------------------------------
 // Every member other than "op" must be in `allowed` (`schema` at the first unknown member).
 geom::Status check_fields(const json& request, std::string_view op,
                           std::initializer_list<std::string_view> allowed);
 
-// The member, or nullptr when absent.
-const json* find_field(const json& request, std::string_view name);
-
-// A finite number at `path` (`schema` otherwise; 1e999 included, convention 9).
-geom::Expected<double> read_number(const json& value, const std::string& path,
-                                   std::string_view what);
 geom::Expected<double> required_number(const json& request, std::string_view name);
 
 // An integer (integral floats such as 3.0 accepted) within [lo, hi] or the default when
@@ -95,7 +82,7 @@ geom::Status check_in_domain(double t, const geom::Interval& domain, const std::
 geom::Interval curve_domain(const geom::Curve& c);
 geom::Interval surface_domain(const geom::Surface& s, geom::Dir dir);
 
-// positions / normals / triangles; a vertex that does not exist is null (protocol_tessellate.cpp).
+// positions / normals / triangles; a vertex that does not exist is null (op_tessellate.cpp).
 json mesh_to_json(const geom::Mesh& mesh);
 
 // Writes an optional point ([x, y, z] or null).

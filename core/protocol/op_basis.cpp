@@ -1,7 +1,7 @@
 // The `basis` op: all n B-spline (or rational) basis functions and derivatives at a parameter.
 #include <cmath>
 
-#include "core/json/values.hpp"
+#include "core/json/fields.hpp"
 #include "core/protocol/detail.hpp"
 #include "core/geom/basis.hpp"
 #include "core/geom/evaluate.hpp"
@@ -30,20 +30,20 @@ OpResult op_basis(const json& request) {
         return s.error();
 
     // Degree first (an integer >= 1), then the knots validated as a curve's would be.
-    const json* degree = find_field(request, "degree");
-    if (!degree) return missing_field("degree");
+    const json* degree = find_member(request, "degree");
+    if (!degree) return missing_member("", "degree");
     const std::optional<std::int64_t> p64 = integer_value(*degree);
     if (!p64) return schema_error("the degree is an integer", "/degree");
     if (*p64 < 1)
         return geom::make_error(ErrorCode::degree, "the degree must be at least 1", "/degree");
 
-    const json* knots = find_field(request, "knots");
-    if (!knots) return missing_field("knots");
+    const json* knots = find_member(request, "knots");
+    if (!knots) return missing_member("", "knots");
     if (!knots->is_array()) return schema_error("knots is an array of numbers", "/knots");
     geom::Knots U;
     U.reserve(knots->size());
     for (std::size_t k = 0; k < knots->size(); ++k) {
-        Expected<double> t = read_number((*knots)[k], "/knots/" + std::to_string(k), "a knot");
+        Expected<double> t = read_finite((*knots)[k], "/knots/" + std::to_string(k), "a knot");
         if (!t) return t.error();
         U.push_back(*t);
     }
@@ -67,7 +67,7 @@ OpResult op_basis(const json& request) {
     if (geom::Status s = geom::validate_knots(U, p, n); !s) return s.error().under("/knots");
 
     std::vector<double> w;
-    const json* weights = find_field(request, "weights");
+    const json* weights = find_member(request, "weights");
     if (weights) {
         if (!weights->is_array() || weights->size() != static_cast<std::size_t>(n)) {
             return geom::make_error(ErrorCode::weights,

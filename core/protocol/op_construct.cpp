@@ -19,8 +19,8 @@ namespace {
 // errors under "/curves/k".
 Expected<std::vector<Curve>> read_curves(const json& request, std::string_view op, size_t min,
                                          size_t max) {
-    const json* v = find_field(request, "curves");
-    if (!v) return missing_field("curves");
+    const json* v = find_member(request, "curves");
+    if (!v) return missing_member("", "curves");
     if (!v->is_array()) return schema_error("curves must be an array of curves", "/curves");
     if (v->size() < min || v->size() > max) {
         const std::string want =
@@ -41,18 +41,18 @@ Expected<std::vector<Curve>> read_curves(const json& request, std::string_view o
 
 // A required curve field ("curve", "profile", "trajectory"), errors under its own path.
 Expected<Curve> read_curve(const json& request, std::string_view name) {
-    const json* v = find_field(request, name);
-    if (!v) return missing_field(name);
+    const json* v = find_member(request, name);
+    if (!v) return missing_member("", name);
     Expected<Curve> c = curve_from_json(*v);
-    if (!c) return c.error().under(field_path(name));
+    if (!c) return c.error().under(member_path("", name));
     return c;
 }
 
 // An optional finite number with a default.
 Expected<double> number_option(const json& request, std::string_view name, double fallback) {
-    const json* v = find_field(request, name);
+    const json* v = find_member(request, name);
     if (!v) return fallback;
-    return read_number(*v, field_path(name), name);
+    return read_finite(*v, member_path("", name), name);
 }
 
 json curves_to_json(const std::vector<Curve>& curves) {
@@ -133,7 +133,7 @@ OpResult op_skin(const json& request) {
                                      std::to_string(count - 1));
     if (!degree) return degree.error();
     geom::Parametrization mode = geom::Parametrization::chord;
-    if (const json* m = find_field(request, "parametrization")) {
+    if (const json* m = find_member(request, "parametrization")) {
         if (!m->is_string() || !geom::parse_parametrization(m->get<std::string>(), mode)) {
             return schema_error("parametrization is \"chord\", \"centripetal\" or \"uniform\"",
                                 "/parametrization");

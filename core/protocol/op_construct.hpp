@@ -6,7 +6,7 @@
 
 namespace isoparm::protocol {
 
-OpResult op_make_compatible(const json& request); // protocol_construct.cpp
+OpResult op_make_compatible(const json& request); // op_construct.cpp
 OpResult op_ruled(const json& request);
 OpResult op_revolve(const json& request);
 OpResult op_swing(const json& request);

@@ -18,13 +18,19 @@ json triangle_to_json(const geom::DeBoorTriangle& tri) {
             pts.push_back(optional_point(geom::DeBoorTriangle::cartesian(h)));
         levels.push_back(std::move(pts));
     }
-    return json{{"levels", std::move(levels)}, {"first_index", tri.first_index}};
+    // Members assigned one by one: an initializer list would build a [key, value] pair array
+    // per member and destroy it, and nlohmann's destructor allocates (out_of_memory.hpp), so
+    // running out of memory there, thousands of times per answer, could not unwind.
+    json triangle = json::object();
+    triangle["levels"] = std::move(levels);
+    triangle["first_index"] = tri.first_index;
+    return triangle;
 }
 
 Expected<double> parameter(const json& request, std::string_view name, const geom::Interval& dom) {
     Expected<double> t = required_number(request, name);
     if (!t) return t.error();
-    if (geom::Status s = check_in_domain(*t, dom, field_path(name)); !s) return s.error();
+    if (geom::Status s = check_in_domain(*t, dom, member_path("", name)); !s) return s.error();
     return *t;
 }
 
@@ -38,14 +44,14 @@ OpResult op_deboor(const json& request) {
     if (!subject) return subject.error();
     if (!subject->is_surface) {
         for (const char* name : {"u", "v"}) {
-            if (find_field(request, name))
-                return schema_error("a curve takes param, not u and v", field_path(name));
+            if (find_member(request, name))
+                return schema_error("a curve takes param, not u and v", member_path("", name));
         }
         Expected<double> t = parameter(request, "param", curve_domain(subject->curve));
         if (!t) return t.error();
         return triangle_to_json(geom::deboor_curve(subject->curve, *t));
     }
-    if (find_field(request, "param"))
+    if (find_member(request, "param"))
         return schema_error("a surface takes u and v, not param", "/param");
     const geom::Surface& s = subject->surface;
     // Every intermediate point is written: n_v triangles in u and one in v. They count toward

@@ -26,7 +26,7 @@ Expected<std::vector<double>> curve_params(const json& params, const geom::Inter
     for (std::size_t i = 0; i < params.size(); ++i) {
         const std::string path = param_path(i);
         if (params[i].is_array()) return schema_error("a curve parameter is a number t", path);
-        Expected<double> t = read_number(params[i], path, "a curve parameter");
+        Expected<double> t = read_finite(params[i], path, "a curve parameter");
         if (!t) return t.error();
         if (geom::Status s = check_in_domain(*t, dom, path); !s) return s.error();
         ts.push_back(*t);
@@ -49,7 +49,7 @@ Expected<std::vector<std::array<double, 2>>> surface_params(const json& params,
         for (int k = 0; k < 2; ++k) {
             const std::string sub = path + "/" + std::to_string(k);
             Expected<double> t =
-                read_number(params[i][static_cast<std::size_t>(k)], sub, k == 0 ? "u" : "v");
+                read_finite(params[i][static_cast<std::size_t>(k)], sub, k == 0 ? "u" : "v");
             if (!t) return t.error();
             if (geom::Status st = check_in_domain(*t, dom[k], sub, k == 0 ? "u" : "v"); !st)
                 return st.error();
@@ -146,13 +146,13 @@ Expected<EvaluateRequest> read_evaluate(const json& request) {
         request, "derivatives", 0, 0, geom::max_derivative_order, "derivatives is an integer 0..3");
     if (!d) return d.error();
     bool normals = false;
-    if (const json* n = find_field(request, "normals")) {
+    if (const json* n = find_member(request, "normals")) {
         if (!subject->is_surface) return schema_error("normals are for surfaces", "/normals");
         if (!n->is_boolean()) return schema_error("normals is true or false", "/normals");
         normals = n->get<bool>();
     }
-    const json* params = find_field(request, "params");
-    if (!params) return missing_field("params");
+    const json* params = find_member(request, "params");
+    if (!params) return missing_member("", "params");
     if (!params->is_array()) {
         return schema_error(subject->is_surface ? "params is an array of [u, v] pairs"
                                                 : "params is an array of numbers",

@@ -16,8 +16,8 @@ Expected<geom::Mesh> polygonize_mesh(const json& request) {
     if (geom::Status s = check_fields(request, "polygonize", {"implicit", "bounds", "cell"}); !s)
         return s.error();
 
-    const json* implicit = find_field(request, "implicit");
-    if (!implicit) return missing_field("implicit");
+    const json* implicit = find_member(request, "implicit");
+    if (!implicit) return missing_member("", "implicit");
     if (!implicit->is_string())
         return schema_error("implicit is an expression in x, y, z (a string)", "/implicit");
     Expected<geom::implicit::Program> program =
@@ -30,8 +30,8 @@ Expected<geom::Mesh> polygonize_mesh(const json& request) {
     }
 
     // bounds: [[xmin, ymin, zmin], [xmax, ymax, zmax]] with min < max on every axis.
-    const json* bounds = find_field(request, "bounds");
-    if (!bounds) return missing_field("bounds");
+    const json* bounds = find_member(request, "bounds");
+    if (!bounds) return missing_member("", "bounds");
     if (!bounds->is_array() || bounds->size() != 2)
         return schema_error("bounds is [[xmin, ymin, zmin], [xmax, ymax, zmax]]", "/bounds");
     glm::dvec3 corner[2];
@@ -40,7 +40,7 @@ Expected<geom::Mesh> polygonize_mesh(const json& request) {
         const std::string path = "/bounds/" + std::to_string(c);
         if (!b.is_array() || b.size() != 3) return schema_error("a corner is [x, y, z]", path);
         for (int k = 0; k < 3; ++k) {
-            Expected<double> x = read_number(b[static_cast<std::size_t>(k)],
+            Expected<double> x = read_finite(b[static_cast<std::size_t>(k)],
                                              path + "/" + std::to_string(k), "a coordinate");
             if (!x) return x.error();
             corner[c][k] = *x;

@@ -3,7 +3,7 @@
 #include <limits>
 
 #include "core/json/shapes.hpp"
-#include "core/json/values.hpp"
+#include "core/json/fields.hpp"
 #include "core/protocol/detail.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/refine.hpp"

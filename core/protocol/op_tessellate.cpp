@@ -1,6 +1,6 @@
 // The `tessellate` op: a surface over a uniform n_u x n_v parameter grid.
 #include "core/json/shapes.hpp"
-#include "core/json/values.hpp"
+#include "core/json/fields.hpp"
 #include "core/protocol/detail.hpp"
 #include "core/geom/work_budget.hpp"
 #include "core/geom/implicit/polygonize.hpp" // the mesh caps
@@ -29,14 +29,14 @@ json mesh_to_json(const geom::Mesh& mesh) {
 }
 
 Expected<geom::Mesh> tessellate_mesh(const json& request) {
-    if (find_field(request, "curve"))
+    if (find_member(request, "curve"))
         return schema_error("tessellate takes a surface, not a curve", "/curve");
     if (geom::Status s = check_fields(request, "tessellate", {"surface", "samples"}); !s)
         return s.error();
     Expected<Subject> subject = read_subject(request, false, true);
     if (!subject) return subject.error();
-    const json* samples = find_field(request, "samples");
-    if (!samples) return missing_field("samples");
+    const json* samples = find_member(request, "samples");
+    if (!samples) return missing_member("", "samples");
     if (!samples->is_array() || samples->size() != 2)
         return schema_error("samples is [n_u, n_v]", "/samples");
     std::int64_t n[2];

@@ -32,7 +32,7 @@ struct OpEntry {
     protocol::OpHandler handler;
 };
 
-// Adding an op is one line here and one file (see protocol_detail.hpp).
+// Adding an op is one line here and one file (see detail.hpp).
 constexpr std::array<OpEntry, 14> op_table = {{
     {"evaluate", protocol::op_evaluate},
     {"basis", protocol::op_basis},
@@ -74,8 +74,8 @@ std::string known_ops() {
 protocol::OpResult dispatch(const json& request) {
     if (!request.is_object())
         return protocol::schema_error("a request is a JSON object with an \"op\" field", "");
-    const json* op = protocol::find_field(request, "op");
-    if (!op) return protocol::missing_field("op");
+    const json* op = protocol::find_member(request, "op");
+    if (!op) return protocol::missing_member("", "op");
     if (!op->is_string()) return protocol::schema_error("op must be a string", "/op");
     const std::string& name = op->get_ref<const std::string&>();
     for (const OpEntry& entry : op_table)
@@ -180,7 +180,7 @@ bool append_response(std::string& s, json response) {
     }
 }
 
-// A streamed answer (tessellate, polygonize, evaluate: protocol_stream.hpp). Errors and
+// A streamed answer (tessellate, polygonize, evaluate: stream.hpp). Errors and
 // running out of memory happen before its first byte is written and are ordinary error
 // responses; once writing starts nothing allocates.
 bool stream_response(std::string& s, std::ostream& out, const json& request, StreamedOp op) {

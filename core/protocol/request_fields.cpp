@@ -3,7 +3,7 @@
 
 #include "core/json/shapes.hpp"
 #include "core/json/reader.hpp"
-#include "core/json/values.hpp"
+#include "core/json/fields.hpp"
 #include "core/protocol/detail.hpp"
 #include "core/geom/knots.hpp"
 
@@ -13,75 +13,37 @@ using geom::Error;
 using geom::ErrorCode;
 using geom::Expected;
 
-Error schema_error(std::string message, std::string path) {
-    return geom::make_error(ErrorCode::schema, std::move(message), std::move(path));
-}
-
-std::string field_path(std::string_view name) {
-    return "/" + escape_pointer_token(name);
-}
-
-Error missing_field(std::string_view name) {
-    return schema_error("missing field '" + std::string(name) + "'", field_path(name));
-}
-
 geom::Status check_fields(const json& request, std::string_view op,
-                          std::initializer_list<std::string_view> allowed) {
-    for (const auto& [key, value] : request.items()) {
-        (void)value;
-        if (key == "op") continue;
-        bool known = false;
-        for (std::string_view a : allowed) known = known || key == a;
-        if (known) continue;
-        std::string list;
-        for (std::string_view a : allowed) {
-            if (!list.empty()) list += ", ";
-            list += a;
-        }
-        return schema_error("unknown field '" + short_name(key) + "' for op '" + std::string(op) +
-                                "' (it takes: " + list + ")",
-                            field_path(key));
-    }
-    return geom::Ok{};
-}
-
-const json* find_field(const json& request, std::string_view name) {
-    const auto it = request.find(std::string(name));
-    return it == request.end() ? nullptr : &*it;
-}
-
-Expected<double> read_number(const json& value, const std::string& path, std::string_view what) {
-    if (!value.is_number()) return schema_error(std::string(what) + " must be a number", path);
-    const double x = value.get<double>();
-    if (!std::isfinite(x))
-        return schema_error(std::string(what) + " must be a finite number", path);
-    return x;
+                          std::initializer_list<std::string_view> fields) {
+    std::vector<std::string_view> allowed{"op"};
+    allowed.insert(allowed.end(), fields.begin(), fields.end());
+    return check_members(request, "", "op '" + short_name(op) + "'", allowed);
 }
 
 Expected<double> required_number(const json& request, std::string_view name) {
-    const json* v = find_field(request, name);
-    if (!v) return missing_field(name);
-    return read_number(*v, field_path(name), name);
+    const json* v = find_member(request, name);
+    if (!v) return missing_member("", name);
+    return read_finite(*v, member_path("", name), name);
 }
 
 Expected<std::int64_t> integer_option(const json& request, std::string_view name,
                                       std::int64_t fallback, std::int64_t lo, std::int64_t hi,
                                       const std::string& rule) {
-    const json* v = find_field(request, name);
+    const json* v = find_member(request, name);
     if (!v) return fallback;
     const std::optional<std::int64_t> k = integer_value(*v);
-    if (!k || *k < lo || *k > hi) return schema_error(rule, field_path(name));
+    if (!k || *k < lo || *k > hi) return schema_error(rule, member_path("", name));
     return *k;
 }
 
 Expected<Subject> read_subject(const json& request, bool allow_curve, bool allow_surface) {
-    const json* curve = allow_curve ? find_field(request, "curve") : nullptr;
-    const json* surface = allow_surface ? find_field(request, "surface") : nullptr;
+    const json* curve = allow_curve ? find_member(request, "curve") : nullptr;
+    const json* surface = allow_surface ? find_member(request, "surface") : nullptr;
     if (curve && surface) return schema_error("give exactly one of curve or surface", "/surface");
     if (!curve && !surface) {
         if (allow_curve && allow_surface)
             return schema_error("give exactly one of curve or surface", "/curve");
-        return missing_field(allow_curve ? "curve" : "surface");
+        return missing_member("", allow_curve ? "curve" : "surface");
     }
     Subject s;
     if (curve) {
@@ -98,14 +60,14 @@ Expected<Subject> read_subject(const json& request, bool allow_curve, bool allow
 }
 
 Expected<geom::Dir> read_direction(const json& request, const Subject& subject) {
-    const json* d = find_field(request, "direction");
+    const json* d = find_member(request, "direction");
     if (!subject.is_surface) {
         if (d)
             return schema_error("direction is for surfaces; a curve has one direction",
                                 "/direction");
         return geom::Dir::u;
     }
-    if (!d) return missing_field("direction");
+    if (!d) return missing_member("", "direction");
     if (d->is_string() && d->get_ref<const std::string&>() == "u") return geom::Dir::u;
     if (d->is_string() && d->get_ref<const std::string&>() == "v") return geom::Dir::v;
     return schema_error("direction is \"u\" or \"v\"", "/direction");

@@ -1,4 +1,4 @@
-// Mesh answers written as text, chunk by chunk (see protocol_stream.hpp).
+// Mesh answers written as text, chunk by chunk (see stream.hpp).
 #include "core/protocol/stream.hpp"
 
 #include <array>

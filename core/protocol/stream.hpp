@@ -34,7 +34,7 @@ StreamedOp streamed_op_of(const nlohmann::json& request);
 // Appends {"ok": true, "positions": [...], "normals": [...], "triangles": [...]}.
 void write_mesh_answer(const geom::Mesh& mesh, std::string& buffer, std::ostream& out);
 
-// Pieces for writers (protocol_eval.cpp): the buffer goes out once it holds a chunk (clear()
+// Pieces for writers (op_evaluate.cpp): the buffer goes out once it holds a chunk (clear()
 // keeps its capacity); a point as point_to_json writes it (null unless it exists and is
 // finite); whether it would be written as a point.
 void flush_if_full(std::string& buffer, std::ostream& out);

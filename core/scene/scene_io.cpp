@@ -10,7 +10,7 @@
 #include "core/doc/commands_common.hpp"
 #include "core/json/shapes.hpp"
 #include "core/json/reader.hpp"
-#include "core/json/values.hpp"
+#include "core/json/fields.hpp"
 #include "core/json/out_of_memory.hpp"
 #include "core/doc/patches.hpp"
 
@@ -110,91 +110,11 @@ json color_to_json(const Rgba& c) {
 }
 
 // ---------------------------------------------------------------------------------------
-// Reading helpers: every error carries the absolute path into the scene.
-
-Error schema(std::string message, std::string path) {
-    return make_error(ErrorCode::schema, std::move(message), std::move(path));
-}
-
-std::string member_path(const std::string& at, const std::string& key) {
-    return at + "/" + escape_pointer_token(key);
-}
-
-const char* type_name(const json& v) {
-    switch (v.type()) {
-    case json::value_t::null:
-        return "null";
-    case json::value_t::boolean:
-        return "a boolean";
-    case json::value_t::string:
-        return "a string";
-    case json::value_t::array:
-        return "an array";
-    case json::value_t::object:
-        return "an object";
-    case json::value_t::binary:
-        return "binary data";
-    case json::value_t::discarded:
-        return "nothing";
-    default:
-        return "a number";
-    }
-}
-
-// Members outside `allowed` are typos or from a newer isoparm: refused, never ignored.
-std::optional<Error> check_members(const json& j, const std::string& at, const char* what,
-                                   std::initializer_list<const char*> allowed) {
-    for (const auto& item : j.items()) {
-        bool ok = false;
-        for (const char* a : allowed) ok = ok || item.key() == a;
-        if (!ok) {
-            std::string list;
-            for (const char* a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
-            return schema("unknown member '" + item.key() + "' in " + what + " (allowed: " + list +
-                              ")",
-                          member_path(at, item.key()));
-        }
-    }
-    return std::nullopt;
-}
-
-std::optional<Error> expect_object(const json& v, const std::string& at, const char* what) {
-    if (v.is_object()) return std::nullopt;
-    return schema(std::string(what) + " must be a JSON object, got " + type_name(v), at);
-}
-
-Expected<bool> read_bool(const json& v, const std::string& at) {
-    if (!v.is_boolean())
-        return schema("expected true or false, got " + std::string(type_name(v)), at);
-    return v.get<bool>();
-}
-
-Expected<double> read_finite(const json& v, const std::string& at, const char* what) {
-    if (!v.is_number())
-        return schema(std::string(what) + " must be a number, got " + type_name(v), at);
-    const double x = v.get<double>();
-    if (!std::isfinite(x))
-        return schema(std::string(what) + " must be a finite number, got " + geom::format_number(x),
-                      at);
-    return x;
-}
-
-Expected<std::int64_t> read_integer(const json& v, const std::string& at, const char* what,
-                                    std::int64_t lo, std::int64_t hi) {
-    const auto n = integer_value(v);
-    if (!n)
-        return schema(std::string(what) + " must be an integer, got " +
-                          (v.is_number() ? v.dump() : std::string(type_name(v))),
-                      at);
-    if (*n < lo || *n > hi)
-        return schema(std::string(what) + " must be between " + std::to_string(lo) + " and " +
-                          std::to_string(hi) + ", got " + std::to_string(*n),
-                      at);
-    return *n;
-}
+// Reading helpers (the shared ones are in core/json/fields.hpp): every error carries the
+// absolute path into the scene.
 
 Expected<glm::dvec3> read_vec3(const json& v, const std::string& at, const char* what) {
-    if (!v.is_array() || v.size() != 3) return schema(std::string(what) + " must be [x, y, z]", at);
+    if (!v.is_array() || v.size() != 3) return schema_error(std::string(what) + " must be [x, y, z]", at);
     glm::dvec3 p(0.0);
     for (int a = 0; a < 3; ++a) {
         auto x = read_finite(v[a], at + "/" + std::to_string(a), "a coordinate");
@@ -206,50 +126,43 @@ Expected<glm::dvec3> read_vec3(const json& v, const std::string& at, const char*
 
 Expected<Rgba> read_color(const json& v, const std::string& at) {
     if (!v.is_array() || (v.size() != 3 && v.size() != 4))
-        return schema("a colour is [r, g, b] or [r, g, b, a] with channels in [0, 1]", at);
+        return schema_error("a colour is [r, g, b] or [r, g, b, a] with channels in [0, 1]", at);
     float ch[4] = {0, 0, 0, 1};
     for (std::size_t k = 0; k < v.size(); ++k) {
         const std::string p = at + "/" + std::to_string(k);
         auto x = read_finite(v[k], p, "a colour channel");
         if (!x) return x.error();
         if (*x < 0 || *x > 1)
-            return schema("colour channels are between 0 and 1, got " + geom::format_number(*x), p);
+            return schema_error("colour channels are between 0 and 1, got " + geom::format_number(*x), p);
         ch[k] = static_cast<float>(*x);
     }
     return Rgba{ch[0], ch[1], ch[2], ch[3]};
-}
-
-Expected<std::string> read_string(const json& v, const std::string& at, const char* what) {
-    if (!v.is_string())
-        return schema(std::string(what) + " must be a string, got " + type_name(v), at);
-    return v.get<std::string>();
 }
 
 // ---------------------------------------------------------------------------------------
 // Objects.
 
 Expected<ImplicitObject> implicit_from_json(const json& j, const std::string& at) {
-    if (auto e = expect_object(j, at, "an implicit surface")) return *e;
-    if (auto e = check_members(j, at, "an implicit surface",
-                               {"expression", "parameters", "bounds", "cell"}))
-        return *e;
+    if (auto st = expect_object(j, at, "an implicit surface"); !st) return st.error();
+    if (auto st = check_members(j, at, "an implicit surface",
+                               {"expression", "parameters", "bounds", "cell"}); !st) return st.error();
     ImplicitObject f;
     const auto expr = j.find("expression");
-    if (expr == j.end()) return schema("missing member 'expression'", at + "/expression");
+    if (expr == j.end()) return missing_member(at, "expression");
     auto text = read_string(*expr, at + "/expression", "the expression");
     if (!text) return text.error();
     f.expression = *text;
     if (const auto params = j.find("parameters"); params != j.end()) {
         const std::string pat = at + "/parameters";
         if (!params->is_array())
-            return schema("parameters is an array of {\"name\": ..., \"value\": ...}", pat);
+            return schema_error("parameters is an array of {\"name\": ..., \"value\": ...}", pat);
         for (std::size_t k = 0; k < params->size(); ++k) {
             const json& p = (*params)[k];
             const std::string kat = pat + "/" + std::to_string(k);
-            if (auto e = expect_object(p, kat, "a parameter")) return *e;
-            if (auto e = check_members(p, kat, "a parameter", {"name", "value"})) return *e;
-            if (!p.contains("name")) return schema("missing member 'name'", kat + "/name");
-            if (!p.contains("value")) return schema("missing member 'value'", kat + "/value");
+            if (auto st = expect_object(p, kat, "a parameter"); !st) return st.error();
+            if (auto st = check_members(p, kat, "a parameter", {"name", "value"}); !st) return st.error();
+            if (!p.contains("name")) return missing_member(kat, "name");
+            if (!p.contains("value")) return missing_member(kat, "value");
             auto name = read_string(p["name"], kat + "/name", "a parameter name");
             if (!name) return name.error();
             auto value = read_finite(p["value"], kat + "/value", "a parameter value");
@@ -260,7 +173,7 @@ Expected<ImplicitObject> implicit_from_json(const json& j, const std::string& at
     }
     if (const auto bounds = j.find("bounds"); bounds != j.end()) {
         if (!bounds->is_array() || bounds->size() != 2)
-            return schema("bounds is [[xmin, ymin, zmin], [xmax, ymax, zmax]]", at + "/bounds");
+            return schema_error("bounds is [[xmin, ymin, zmin], [xmax, ymax, zmax]]", at + "/bounds");
         auto lo = read_vec3((*bounds)[0], at + "/bounds/0", "the lower corner");
         if (!lo) return lo.error();
         auto hi = read_vec3((*bounds)[1], at + "/bounds/1", "the upper corner");
@@ -277,24 +190,24 @@ Expected<ImplicitObject> implicit_from_json(const json& j, const std::string& at
 }
 
 Expected<Object> object_from_json(const json& j, const std::string& at) {
-    if (auto e = expect_object(j, at, "an object")) return *e;
+    if (auto st = expect_object(j, at, "an object"); !st) return st.error();
     const auto kind_it = j.find("kind");
-    if (kind_it == j.end()) return schema("missing member 'kind'", at + "/kind");
+    if (kind_it == j.end()) return missing_member(at, "kind");
     auto kind = read_string(*kind_it, at + "/kind", "kind");
     if (!kind) return kind.error();
     const bool surface = *kind == "surface", curve = *kind == "curve",
                implicit = *kind == "implicit";
     if (!surface && !curve && !implicit)
-        return schema("kind must be surface, curve or implicit, got '" + *kind + "'", at + "/kind");
-    if (auto e =
-            surface ? check_members(j, at, "a surface object",
-                                    {"id", "name", "kind", "visible", "patch_group", "surface"})
-            : curve
-                ? check_members(j, at, "a curve object",
-                                {"id", "name", "kind", "visible", "plane", "knot_mode", "curve"})
-                : check_members(j, at, "an implicit object",
-                                {"id", "name", "kind", "visible", "implicit"}))
-        return *e;
+        return schema_error("kind must be surface, curve or implicit, got '" + *kind + "'", at + "/kind");
+    if (auto st = surface ? check_members(j, at, "a surface object",
+                                          {"id", "name", "kind", "visible", "patch_group", "surface"})
+                  : curve ? check_members(j, at, "a curve object",
+                                          {"id", "name", "kind", "visible", "plane", "knot_mode",
+                                           "curve"})
+                          : check_members(j, at, "an implicit object",
+                                          {"id", "name", "kind", "visible", "implicit"});
+        !st)
+        return st.error();
 
     Object o;
     if (const auto id = j.find("id"); id != j.end()) {
@@ -304,7 +217,7 @@ Expected<Object> object_from_json(const json& j, const std::string& at) {
         o.id = static_cast<std::uint64_t>(*v);
     }
     const auto name_it = j.find("name");
-    if (name_it == j.end()) return schema("missing member 'name'", at + "/name");
+    if (name_it == j.end()) return missing_member(at, "name");
     auto name = read_string(*name_it, at + "/name", "name");
     if (!name) return name.error();
     o.name = *name;
@@ -325,7 +238,7 @@ Expected<Object> object_from_json(const json& j, const std::string& at) {
     const std::string gat = at + "/" + member;
     const auto geometry = j.find(member);
     if (geometry == j.end())
-        return schema(std::string("missing member '") + member + "' (the " + *kind +
+        return schema_error(std::string("missing member '") + member + "' (the " + *kind +
                           " object's geometry)",
                       gat);
     if (surface) {
@@ -346,7 +259,7 @@ Expected<Object> object_from_json(const json& j, const std::string& at) {
             else if (*p == "free3d")
                 c.plane = CurvePlane::free3d;
             else
-                return schema("plane must be xy, xz, yz or free3d, got '" + *p + "'",
+                return schema_error("plane must be xy, xz, yz or free3d, got '" + *p + "'",
                               at + "/plane");
         }
         if (const auto mode = j.find("knot_mode"); mode != j.end()) {
@@ -355,7 +268,7 @@ Expected<Object> object_from_json(const json& j, const std::string& at) {
             const auto* hit = std::find_if(knot_mode_names.begin(), knot_mode_names.end(),
                                            [&](const auto& e) { return *m == e.second; });
             if (hit == knot_mode_names.end())
-                return schema("knot_mode must be clamped_uniform, chord, centripetal or "
+                return schema_error("knot_mode must be clamped_uniform, chord, centripetal or "
                               "custom, got '" +
                                   *m + "'",
                               at + "/knot_mode");
@@ -376,27 +289,26 @@ Expected<Object> object_from_json(const json& j, const std::string& at) {
 }
 
 std::optional<Error> read_colors(const json& j, Colors& colors) {
-    if (auto e = expect_object(j, "/colors", "colors")) return *e;
-    for (const auto& item : j.items()) {
-        bool found = false;
-        for (auto& [name, c] : color_fields(colors)) {
-            if (item.key() != name) continue;
-            auto v = read_color(item.value(), member_path("/colors", item.key()));
-            if (!v) return v.error();
-            *c = *v;
-            found = true;
-        }
-        if (!found)
-            return schema("unknown colour '" + item.key() +
-                              "' (allowed: background, surface, selected_surface, control_net, "
-                              "control_points, selected_point, knot_curves, indicator)",
-                          member_path("/colors", item.key()));
+    if (auto st = expect_object(j, "/colors", "colors"); !st) return st.error();
+    std::vector<std::string_view> allowed;
+    for (auto& [name, c] : color_fields(colors)) allowed.push_back(name);
+    if (auto st = check_members(j, "/colors", "colors", allowed); !st) return st.error();
+    for (auto& [name, c] : color_fields(colors)) {
+        const auto v = j.find(name);
+        if (v == j.end()) continue;
+        auto colour = read_color(*v, member_path("/colors", name));
+        if (!colour) return colour.error();
+        *c = *colour;
     }
     return std::nullopt;
 }
 
 std::optional<Error> read_display(const json& j, DisplaySettings& d) {
-    if (auto e = expect_object(j, "/display", "display")) return *e;
+    if (auto st = expect_object(j, "/display", "display"); !st) return st.error();
+    std::vector<std::string_view> allowed{"style"};
+    for (auto& [name, flag] : display_flags(d)) allowed.push_back(name);
+    allowed.push_back("density");
+    if (auto st = check_members(j, "/display", "display", allowed); !st) return st.error();
     for (const auto& item : j.items()) {
         const std::string at = member_path("/display", item.key());
         if (item.key() == "style") {
@@ -409,7 +321,7 @@ std::optional<Error> read_display(const json& j, DisplaySettings& d) {
             else if (*s == "both")
                 d.style = DisplayStyle::both;
             else
-                return schema("style must be shaded, wireframe or both, got '" + *s + "'", at);
+                return schema_error("style must be shaded, wireframe or both, got '" + *s + "'", at);
             continue;
         }
         if (item.key() == "density") {
@@ -418,19 +330,12 @@ std::optional<Error> read_display(const json& j, DisplaySettings& d) {
             d.density = static_cast<int>(*n);
             continue;
         }
-        bool found = false;
         for (auto& [name, flag] : display_flags(d)) {
             if (item.key() != name) continue;
             auto v = read_bool(item.value(), at);
             if (!v) return v.error();
             *flag = *v;
-            found = true;
         }
-        if (!found)
-            return schema("unknown display setting '" + item.key() +
-                              "' (allowed: style, control_points, control_net, point_ids, "
-                              "knot_curves, indicator_point, deboor, density)",
-                          at);
     }
     return std::nullopt;
 }
@@ -438,27 +343,27 @@ std::optional<Error> read_display(const json& j, DisplaySettings& d) {
 std::optional<Error> read_selection(const json& j, const Document& doc, Selection& sel) {
     sel = Selection{};
     if (j.is_null()) return std::nullopt;
-    if (auto e = expect_object(j, "/selection", "selection (or null)")) return *e;
-    if (auto e = check_members(j, "/selection", "selection", {"object", "point"})) return *e;
+    if (auto st = expect_object(j, "/selection", "selection (or null)"); !st) return st.error();
+    if (auto st = check_members(j, "/selection", "selection", {"object", "point"}); !st) return st.error();
     const auto obj = j.find("object");
-    if (obj == j.end()) return schema("missing member 'object'", "/selection/object");
+    if (obj == j.end()) return missing_member("/selection", "object");
     auto id = read_integer(*obj, "/selection/object", "the selected object's id", 1,
                            static_cast<std::int64_t>(max_id));
     if (!id) return id.error();
     const Object* o = doc.find(static_cast<std::uint64_t>(*id));
     if (!o)
-        return schema("the selection names object " + std::to_string(*id) +
+        return schema_error("the selection names object " + std::to_string(*id) +
                           ", but no object has that id",
                       "/selection/object");
     sel.object = o->id;
     const auto point = j.find("point");
     if (point == j.end()) return std::nullopt;
     if (std::holds_alternative<ImplicitObject>(o->shape))
-        return schema("an implicit surface has no control points to select", "/selection/point");
+        return schema_error("an implicit surface has no control points to select", "/selection/point");
     const bool surface = std::holds_alternative<SurfaceObject>(o->shape);
     const std::size_t arity = surface ? 2 : 1;
     if (!point->is_array() || point->size() != arity)
-        return schema(surface ? "a surface's selected point is [i, j]"
+        return schema_error(surface ? "a surface's selected point is [i, j]"
                               : "a curve's selected point is [i]",
                       "/selection/point");
     int counts[2];
@@ -550,39 +455,38 @@ json scene_to_json(const Document& doc) {
 
 Expected<Document> scene_from_json(const json& j) {
     if (!j.is_object())
-        return schema(std::string("a scene is a JSON object, got ") + type_name(j), "");
+        return schema_error(std::string("a scene is a JSON object, got ") + type_name(j), "");
     // Format and version first: a newer file may well have members this version lacks.
     const auto format = j.find("format");
     if (format == j.end())
-        return schema("missing member 'format' (an isoparm scene has \"format\": \"" +
+        return schema_error("missing member 'format' (an isoparm scene has \"format\": \"" +
                           std::string(scene_format_name) + "\")",
                       "/format");
     if (!format->is_string() || format->get<std::string>() != scene_format_name)
-        return schema("not an isoparm scene: format must be \"" + std::string(scene_format_name) +
+        return schema_error("not an isoparm scene: format must be \"" + std::string(scene_format_name) +
                           "\", got " +
                           (format->is_string() ? "\"" + format->get<std::string>() + "\""
                                                : std::string(type_name(*format))),
                       "/format");
     const auto version = j.find("version");
-    if (version == j.end()) return schema("missing member 'version'", "/version");
+    if (version == j.end()) return missing_member("", "version");
     const auto v = integer_value(*version);
-    if (!v) return schema("version must be an integer, got " + version->dump(), "/version");
+    if (!v) return schema_error("version must be an integer, got " + version->dump(), "/version");
     if (*v > scene_format_version)
-        return schema("this scene has format version " + std::to_string(*v) +
+        return schema_error("this scene has format version " + std::to_string(*v) +
                           ", newer than this isoparm reads (" +
                           std::to_string(scene_format_version) + "); update isoparm to open it",
                       "/version");
-    if (*v < 1) return schema("version must be at least 1, got " + std::to_string(*v), "/version");
-    if (auto e = check_members(j, "", "a scene",
+    if (*v < 1) return schema_error("version must be at least 1, got " + std::to_string(*v), "/version");
+    if (auto st = check_members(j, "", "a scene",
                                {"format", "version", "objects", "colors", "display", "selection",
-                                "indicator", "continuity"}))
-        return *e;
+                                "indicator", "continuity"}); !st) return st.error();
 
     Document doc;
     const auto objects = j.find("objects");
-    if (objects == j.end()) return schema("missing member 'objects'", "/objects");
+    if (objects == j.end()) return missing_member("", "objects");
     if (!objects->is_array())
-        return schema(std::string("objects must be an array, got ") + type_name(*objects),
+        return schema_error(std::string("objects must be an array, got ") + type_name(*objects),
                       "/objects");
     if (objects->size() > max_objects)
         return make_error(ErrorCode::limit,
@@ -595,7 +499,7 @@ Expected<Document> scene_from_json(const json& j) {
         auto o = object_from_json((*objects)[k], at);
         if (!o) return o.error();
         if (o->id != 0 && !ids.insert(o->id).second)
-            return schema("object id " + std::to_string(o->id) + " is used twice", at + "/id");
+            return schema_error("object id " + std::to_string(o->id) + " is used twice", at + "/id");
         doc.objects.push_back(std::move(o).value());
     }
     // Objects written without an id get fresh ones after the largest given.
@@ -617,18 +521,18 @@ Expected<Document> scene_from_json(const json& j) {
         for (Continuity k : {Continuity::off, Continuity::c0, Continuity::c1})
             if (*name == continuity_name(k)) doc.continuity = k, known = true;
         if (!known)
-            return schema("continuity must be off, C0 or C1, got '" + *name + "'", "/continuity");
+            return schema_error("continuity must be off, C0 or C1, got '" + *name + "'", "/continuity");
     }
     if (auto e = check_patch_groups(doc)) return *e;
     if (const auto ind = j.find("indicator"); ind != j.end()) {
         if (!ind->is_array() || ind->size() != 2)
-            return schema("indicator is [u, v], each in [0, 1]", "/indicator");
+            return schema_error("indicator is [u, v], each in [0, 1]", "/indicator");
         for (int a = 0; a < 2; ++a) {
             const std::string at = "/indicator/" + std::to_string(a);
             auto x = read_finite((*ind)[a], at, "an indicator coordinate");
             if (!x) return x.error();
             if (*x < 0 || *x > 1)
-                return schema("indicator coordinates are in [0, 1] (over the domain), got " +
+                return schema_error("indicator coordinates are in [0, 1] (over the domain), got " +
                                   geom::format_number(*x),
                               at);
             doc.indicator[a] = *x;

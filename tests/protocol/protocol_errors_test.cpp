@@ -281,6 +281,23 @@ std::vector<Case> cases() {
             "evaluate", R"("params": [0.75])",
             R"({"type": "bezier", "degree": 2, "knots": [0, 0, 0.5, 1, 1, 1], "points": [[0, 0], [1, 1], [2, 0]]})"),
         "knots", "/curve/knots");
+    // Knots that make a second span (so more than p + 1 points) blame the knots, not the
+    // degree: docs/protocol.md, for every Bezier type and for surfaces too.
+    add("bezier_knots_with_a_second_span_and_more_points",
+        with_curve(
+            "evaluate", R"("params": [0.5])",
+            R"({"type": "bezier", "degree": 2, "knots": [0, 0, 0, 0.5, 1, 1, 1], "points": [[0, 0], [1, 1], [2, 0], [3, 1]]})"),
+        "knots", "/curve/knots");
+    add("rational_bezier_knots_with_a_second_span_and_more_points",
+        with_curve(
+            "evaluate", R"("params": [0.5])",
+            R"({"type": "rational_bezier", "degree": 2, "knots": [0, 0, 0, 0.5, 1, 1, 1], "points": [[0, 0], [1, 1], [2, 0], [3, 1]]})"),
+        "knots", "/curve/knots");
+    add("bezier_surface_knots_with_a_second_span_and_more_points_in_u",
+        with_surface(
+            "evaluate", R"("params": [[0, 0]])",
+            R"({"type": "bezier", "degree": [1, 1], "knots": [[0, 0, 0.5, 1, 1], [0, 0, 1, 1]], "points": [[[0, 0], [0, 1]], [[1, 0], [1, 1]], [[2, 0], [2, 1]]]})"),
+        "knots", "/surface/knots/0");
     add("bezier_too_many_points_without_knots",
         with_curve(
             "evaluate", R"("params": [0.5])",

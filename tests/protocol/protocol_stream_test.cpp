@@ -1,4 +1,4 @@
-// Streamed mesh answers (protocol_stream.hpp) are byte for byte the text write_json gives for
+// Streamed mesh answers (stream.hpp) are byte for byte the text write_json gives for
 // the same answer as a JSON tree: missing vertices, non-finite values, empty meshes, answers
 // longer than a chunk, and the whole text path against handle_request.
 #include <gtest/gtest.h>
