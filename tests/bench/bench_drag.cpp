@@ -70,7 +70,7 @@ namespace {
 
 // What the renderer actually does per drag step: the incremental mesh re-evaluates only the
 // grid rows the moved point's basis function reaches, so the cost stays flat as the net
-// grows (8x8 to 64x64) at the default density (issue 8).
+// grows (8x8 to 64x64) at the default density.
 void BM_DragStepIncrementalByNet(benchmark::State& state) {
     const int n = static_cast<int>(state.range(0));
     doc::Document d = drag_scene(n);

@@ -1,5 +1,5 @@
 // Core geometry figures: a 256x256 grid on a 32x32 bicubic NURBS surface, single points,
-// knot insertion and degree elevation (issue 2's reported figures).
+// knot insertion and degree elevation (the figures the first speed work reported).
 #include <benchmark/benchmark.h>
 
 #include <glm/vec2.hpp>

@@ -1,4 +1,4 @@
-// Inputs that cannot block or abort (issue 14, item 7): a FIFO, a directory, /proc/self/mem,
+// Inputs that cannot block or abort: a FIFO, a directory, /proc/self/mem,
 // a device, inputs above the cap; and the on-disk stamp that tells a file changed (item 5).
 #include <gtest/gtest.h>
 

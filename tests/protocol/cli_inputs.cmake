@@ -1,5 +1,5 @@
-# `isoparm geom FILE` and standard input never block, abort or grow without end (issue 14,
-# items 7 and 8): a directory, /proc/self/mem, a device, a FIFO, and input above the 256 MiB
+# `isoparm geom FILE` and standard input never block, abort or grow without end:
+# a directory, /proc/self/mem, a device, a FIFO, and input above the 256 MiB
 # cap. Run as: cmake -DISOPARM=<binary> -DWORK=<scratch directory> -P cli_inputs.cmake
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK}/dir)

@@ -1,4 +1,4 @@
-# Out of memory is an error, never a signal (issue 14, item 6): `isoparm geom` on every request
+# Out of memory is an error, never a signal: `isoparm geom` on every request
 # in assets/requests plus heavy ones, and (with the GUI) `isoparm render` on scenes, each under
 # several `ulimit -v` caps. Before the fix 23 of 112 such geom runs and 10 of 28 render runs
 # ended in SIGABRT or SIGSEGV. Exit statuses must be numbers 0..2; a signal is not.

@@ -1,4 +1,4 @@
-// Out of memory is an error, not an abort (issue 14, item 6). Under `ulimit -v` every run
+// Out of memory is an error, not an abort. Under `ulimit -v` every run
 // that hit the cap used to end in SIGABRT: nlohmann::json's destructor allocates while the
 // first std::bad_alloc unwinds. These tests run the protocol and the scene loader in a child
 // process under RLIMIT_AS; a child killed by a signal fails the test.

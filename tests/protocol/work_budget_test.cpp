@@ -1,4 +1,4 @@
-// The work budget (issue 14, item 8): requests within the spec's caps that would take minutes
+// The work budget: requests within the spec's caps that would take minutes
 // or gigabytes are refused with `limit` before any work, naming what is too large; a batch
 // shares one budget. The estimates themselves are checked against the formulas in
 // docs/protocol.md; no test here measures time.

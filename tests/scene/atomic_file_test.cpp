@@ -1,4 +1,4 @@
-// The one atomic-write routine (issue 14, items 1-4): regular files only, same-file refusal,
+// The one atomic-write routine: regular files only, same-file refusal,
 // symbolic links followed only where the kernel allows, mode kept, file-size limits and full
 // disks as errors with the old file untouched and no temporary file left, NAME_MAX-long names.
 #include <gtest/gtest.h>
@@ -138,7 +138,7 @@ TEST_F(AtomicFile, ALinkToNothingIsRefused) {
     EXPECT_FALSE(fs::exists(path("missing.json")));
 }
 
-// Issue 14 item 4: a link planted in a sticky world-writable directory by another user must
+// A link planted in a sticky world-writable directory by another user must
 // not be followed where the kernel (fs.protected_symlinks) would refuse. The old code resolved
 // the link itself and overwrote the file behind it; this one lets the kernel follow it. Only
 // meaningful as root (to plant a link owned by someone else) with protected_symlinks on.
