@@ -1,6 +1,7 @@
 // Internal to the geom protocol: the op table's handler type and the shared field readers.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <initializer_list>
@@ -9,6 +10,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/geom/status.hpp"
 #include "core/json/fields.hpp"
@@ -34,6 +36,7 @@ using OpHandler = OpResult (*)(const json& request);
 OpResult op_evaluate(const json& request);    // op_evaluate.cpp
 OpResult op_basis(const json& request);       // op_basis.cpp
 OpResult op_deboor(const json& request);      // op_deboor.cpp
+OpResult op_curvature(const json& request);   // op_curvature.cpp
 OpResult op_tessellate(const json& request);  // op_tessellate.cpp
 OpResult op_insert_knot(const json& request); // op_refine.cpp
 OpResult op_elevate_degree(const json& request);
@@ -70,6 +73,13 @@ struct Subject {
 // Exactly one of "curve" / "surface" (`schema` at "/surface" when both are given), parsed
 // and validated, errors under "/curve" or "/surface".
 geom::Expected<Subject> read_subject(const json& request, bool allow_curve, bool allow_surface);
+
+// `params`: a curve's, each a finite number in the domain; a surface's, each [u, v] with u and
+// v in their domains (`schema` / `domain` at "/params/3", "/params/3/1").
+geom::Expected<std::vector<double>> read_curve_params(const json& params,
+                                                     const geom::Interval& domain);
+geom::Expected<std::vector<std::array<double, 2>>> read_surface_params(const json& params,
+                                                                       const geom::Surface& s);
 
 // `direction` ("u" or "v"): required with a surface, refused with a curve (convention 2).
 geom::Expected<geom::Dir> read_direction(const json& request, const Subject& subject);

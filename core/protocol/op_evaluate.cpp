@@ -15,51 +15,6 @@ using geom::Expected;
 
 namespace {
 
-std::string param_path(std::size_t i) {
-    return "/params/" + std::to_string(i);
-}
-
-// The curve's parameters, each a finite number in the domain.
-Expected<std::vector<double>> curve_params(const json& params, const geom::Interval& dom) {
-    std::vector<double> ts;
-    ts.reserve(params.size());
-    for (std::size_t i = 0; i < params.size(); ++i) {
-        const std::string path = param_path(i);
-        if (params[i].is_array()) return schema_error("a curve parameter is a number t", path);
-        Expected<double> t = read_finite(params[i], path, "a curve parameter");
-        if (!t) return t.error();
-        if (geom::Status s = check_in_domain(*t, dom, path); !s) return s.error();
-        ts.push_back(*t);
-    }
-    return ts;
-}
-
-// The surface's parameters, each [u, v] with u and v in their domains.
-Expected<std::vector<std::array<double, 2>>> surface_params(const json& params,
-                                                            const geom::Surface& s) {
-    const geom::Interval dom[2] = {surface_domain(s, geom::Dir::u),
-                                   surface_domain(s, geom::Dir::v)};
-    std::vector<std::array<double, 2>> uv;
-    uv.reserve(params.size());
-    for (std::size_t i = 0; i < params.size(); ++i) {
-        const std::string path = param_path(i);
-        if (!params[i].is_array() || params[i].size() != 2)
-            return schema_error("a surface parameter is [u, v]", path);
-        std::array<double, 2> x{};
-        for (int k = 0; k < 2; ++k) {
-            const std::string sub = path + "/" + std::to_string(k);
-            Expected<double> t =
-                read_finite(params[i][static_cast<std::size_t>(k)], sub, k == 0 ? "u" : "v");
-            if (!t) return t.error();
-            if (geom::Status st = check_in_domain(*t, dom[k], sub, k == 0 ? "u" : "v"); !st)
-                return st.error();
-            x[static_cast<std::size_t>(k)] = *t;
-        }
-        uv.push_back(x);
-    }
-    return uv;
-}
-
 json curve_results(const geom::Curve& c, const std::vector<double>& ts, int d) {
     json points = json::array();
     json ders = json::array();
@@ -195,11 +150,11 @@ Expected<EvaluateRequest> read_evaluate(const json& request) {
     e.order = order;
     e.normals = normals;
     if (subject->is_surface) {
-        auto uv = surface_params(*params, subject->surface);
+        auto uv = read_surface_params(*params, subject->surface);
         if (!uv) return uv.error();
         e.uv = std::move(uv).value();
     } else {
-        auto ts = curve_params(*params, curve_domain(subject->curve));
+        auto ts = read_curve_params(*params, curve_domain(subject->curve));
         if (!ts) return ts.error();
         e.ts = std::move(ts).value();
     }

@@ -95,4 +95,50 @@ json optional_point(const std::optional<glm::dvec3>& p) {
     return p ? point_to_json(*p) : json(nullptr);
 }
 
+namespace {
+
+std::string param_path(std::size_t i) {
+    return "/params/" + std::to_string(i);
+}
+
+} // namespace
+
+Expected<std::vector<double>> read_curve_params(const json& params, const geom::Interval& dom) {
+    std::vector<double> ts;
+    ts.reserve(params.size());
+    for (std::size_t i = 0; i < params.size(); ++i) {
+        const std::string path = param_path(i);
+        if (params[i].is_array()) return schema_error("a curve parameter is a number t", path);
+        Expected<double> t = read_finite(params[i], path, "a curve parameter");
+        if (!t) return t.error();
+        if (geom::Status s = check_in_domain(*t, dom, path); !s) return s.error();
+        ts.push_back(*t);
+    }
+    return ts;
+}
+
+Expected<std::vector<std::array<double, 2>>> read_surface_params(const json& params, const geom::Surface& s) {
+    const geom::Interval dom[2] = {surface_domain(s, geom::Dir::u),
+                                   surface_domain(s, geom::Dir::v)};
+    std::vector<std::array<double, 2>> uv;
+    uv.reserve(params.size());
+    for (std::size_t i = 0; i < params.size(); ++i) {
+        const std::string path = param_path(i);
+        if (!params[i].is_array() || params[i].size() != 2)
+            return schema_error("a surface parameter is [u, v]", path);
+        std::array<double, 2> x{};
+        for (int k = 0; k < 2; ++k) {
+            const std::string sub = path + "/" + std::to_string(k);
+            Expected<double> t =
+                read_finite(params[i][static_cast<std::size_t>(k)], sub, k == 0 ? "u" : "v");
+            if (!t) return t.error();
+            if (geom::Status st = check_in_domain(*t, dom[k], sub, k == 0 ? "u" : "v"); !st)
+                return st.error();
+            x[static_cast<std::size_t>(k)] = *t;
+        }
+        uv.push_back(x);
+    }
+    return uv;
+}
+
 } // namespace isoparm::protocol
