@@ -82,46 +82,6 @@ Expected<Curve> elevate_in_pieces(const Curve& c, int times) {
     return joined;
 }
 
-// Piegl & Tiller A5.4 RefineKnotVectCurve on homogeneous points: inserts the sorted knots X
-// (all strictly inside the domain) in one pass, O((n + r) p) instead of one Boehm pass per
-// knot; it also reaches multiplicity p + 1. U and Pw are replaced by the refined ones.
-void refine_knot_vector(int p, Knots& U, std::vector<HPoint>& Pw, const std::vector<double>& X) {
-    const int n = static_cast<int>(Pw.size()) - 1, m = n + p + 1;
-    const int r = static_cast<int>(X.size()) - 1;
-    const int a = find_span(U, p, n + 1, X[0]);
-    const int b = find_span(U, p, n + 1, X[r]) + 1;
-    std::vector<HPoint> Qw(static_cast<size_t>(n) + r + 2);
-    Knots Ubar(static_cast<size_t>(m) + r + 2);
-    for (int j = 0; j <= a - p; ++j) Qw[j] = Pw[j];
-    for (int j = b - 1; j <= n; ++j) Qw[j + r + 1] = Pw[j];
-    for (int j = 0; j <= a; ++j) Ubar[j] = U[j];
-    for (int j = b + p; j <= m; ++j) Ubar[j + r + 1] = U[j];
-    int i = b + p - 1, k = b + p + r;
-    for (int j = r; j >= 0; --j) {
-        while (X[j] <= U[i] && i > a) {
-            Qw[k - p - 1] = Pw[i - p - 1];
-            Ubar[k] = U[i];
-            --k;
-            --i;
-        }
-        Qw[k - p - 1] = Qw[k - p];
-        for (int l = 1; l <= p; ++l) {
-            const int ind = k - p + l;
-            double alfa = Ubar[k + l] - X[j];
-            if (alfa == 0.0) {
-                Qw[ind - 1] = Qw[ind];
-            } else {
-                alfa /= Ubar[k + l] - U[i - p + l];
-                Qw[ind - 1] = alfa * Qw[ind - 1] + (1.0 - alfa) * Qw[ind];
-            }
-        }
-        Ubar[k] = X[j];
-        --k;
-    }
-    U = std::move(Ubar);
-    Pw = std::move(Qw);
-}
-
 // The curve with every knot of `merged` raised to its multiplicity there, shape unchanged.
 Expected<Curve> refine_to(const Curve& c, const std::map<double, int>& merged) {
     std::vector<double> X;
@@ -130,8 +90,7 @@ Expected<Curve> refine_to(const Curve& c, const std::map<double, int>& merged) {
     if (X.empty()) return c;
     const bool rational = is_rational(c.type);
     Knots U = c.knots;
-    std::vector<HPoint> Pw(c.count());
-    for (int i = 0; i < c.count(); ++i) Pw[i] = rational ? c.hpoint(i) : HPoint(c.points[i], 1.0);
+    std::vector<HPoint> Pw = homogeneous_points(c);
     refine_knot_vector(c.degree, U, Pw, X);
     // A zero homogeneous point takes its position from the same refinement of the Cartesian
     // points (curve_from_homogeneous's fallback).

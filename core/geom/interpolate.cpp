@@ -94,28 +94,66 @@ Expected<Knots> knots_for_points(const std::vector<glm::dvec3>& points, int p, K
     return averaged_knots(*t, p);
 }
 
-bool solve_collocation(const Knots& U, int p, const std::vector<double>& params,
-                       std::vector<double>& data, int columns) {
-    const int n = static_cast<int>(params.size());
-    assert(static_cast<int>(U.size()) == n + p + 1);
+NetParams averaged_net_params(int K, int lines,
+                              const std::function<glm::dvec3(int k, int l)>& point,
+                              Parametrization mode, bool skip_degenerate_lines) {
+    NetParams out;
+    std::vector<double>& t = out.params;
+    t.assign(K + 1, 0.0);
+    if (mode == Parametrization::uniform) {
+        for (int k = 1; k < K; ++k) t[k] = static_cast<double>(k) / K;
+        t[K] = 1.0;
+        return out;
+    }
+    std::vector<double> d(K + 1);
+    int used = 0;
+    for (int l = 0; l < lines; ++l) {
+        double total = 0.0;
+        for (int k = 1; k <= K; ++k) {
+            d[k] = glm::distance(point(k, l), point(k - 1, l));
+            if (mode == Parametrization::centripetal) d[k] = std::sqrt(d[k]);
+            total += d[k];
+        }
+        if (!(total > 0.0)) {
+            if (skip_degenerate_lines) continue;
+            out.degenerate_line = l;
+            return out;
+        }
+        ++used;
+        double acc = 0.0;
+        for (int k = 1; k < K; ++k) {
+            acc += d[k];
+            t[k] += acc / total;
+        }
+    }
+    if (used == 0) {
+        out.all_degenerate = true;
+        return out;
+    }
+    for (int k = 1; k < K; ++k) t[k] /= used;
+    t[K] = 1.0;
+    for (int k = 1; k <= K; ++k) {
+        if (!(t[k] > t[k - 1])) {
+            out.coincident = k;
+            return out;
+        }
+    }
+    return out;
+}
+
+bool solve_banded_rows(const std::vector<BandedRow>& rows, std::vector<double>& data, int columns) {
+    const int n = static_cast<int>(rows.size());
     assert(static_cast<int>(data.size()) == n * columns);
-    // Row k holds N_{s-p..s}(t_k): find the band first, then fill it.
-    std::vector<int> first(n);
-    std::vector<double> N(static_cast<size_t>(n) * (p + 1));
     int kl = 0, ku = 0;
     for (int k = 0; k < n; ++k) {
-        const int s = find_span(U, p, n, params[k]);
-        basis_funs(s, params[k], p, U, &N[static_cast<size_t>(k) * (p + 1)]);
-        first[k] = s - p;
-        kl = std::max(kl, k - first[k]);
-        ku = std::max(ku, s - k);
+        const int last = rows[k].first + static_cast<int>(rows[k].values.size()) - 1;
+        kl = std::max(kl, k - rows[k].first);
+        ku = std::max(ku, last - k);
     }
     BandedLU lu(n, kl, ku);
     for (int k = 0; k < n; ++k)
-        for (int r = 0; r <= p; ++r) {
-            const int j = first[k] + r;
-            if (j - k <= ku && k - j <= kl) lu.set(k, j, N[static_cast<size_t>(k) * (p + 1) + r]);
-        }
+        for (size_t r = 0; r < rows[k].values.size(); ++r)
+            lu.set(k, rows[k].first + static_cast<int>(r), rows[k].values[r]);
     if (!lu.factor()) return false;
     std::vector<double> column(n);
     for (int c = 0; c < columns; ++c) {
@@ -124,6 +162,38 @@ bool solve_collocation(const Knots& U, int p, const std::vector<double>& params,
         for (int k = 0; k < n; ++k) data[static_cast<size_t>(k) * columns + c] = column[k];
     }
     return true;
+}
+
+std::vector<BandedRow> collocation_rows(const Knots& U, int p, const std::vector<double>& params) {
+    const int n = static_cast<int>(U.size()) - p - 1;
+    std::vector<BandedRow> rows(params.size());
+    for (size_t k = 0; k < params.size(); ++k) {
+        const int s = find_span(U, p, n, params[k]);
+        rows[k].first = s - p;
+        rows[k].values.resize(p + 1);
+        basis_funs(s, params[k], p, U, rows[k].values.data());
+    }
+    return rows;
+}
+
+std::vector<double> points_as_rows(const std::vector<glm::dvec3>& points) {
+    std::vector<double> data(points.size() * 3);
+    for (size_t k = 0; k < points.size(); ++k)
+        for (int a = 0; a < 3; ++a) data[k * 3 + a] = points[k][a];
+    return data;
+}
+
+std::vector<glm::dvec3> rows_as_points(const std::vector<double>& data) {
+    std::vector<glm::dvec3> points(data.size() / 3);
+    for (size_t k = 0; k < points.size(); ++k)
+        points[k] = {data[k * 3], data[k * 3 + 1], data[k * 3 + 2]};
+    return points;
+}
+
+bool solve_collocation(const Knots& U, int p, const std::vector<double>& params,
+                       std::vector<double>& data, int columns) {
+    assert(U.size() == params.size() + p + 1);
+    return solve_banded_rows(collocation_rows(U, p, params), data, columns);
 }
 
 Expected<Interpolated> interpolate_curve(const std::vector<glm::dvec3>& points, int degree,
@@ -147,16 +217,11 @@ Expected<Interpolated> interpolate_curve(const std::vector<glm::dvec3>& points, 
     c.type = SplineType::bspline;
     c.degree = degree;
     c.knots = averaged_knots(out.params, degree);
-    std::vector<double> data(static_cast<size_t>(n) * 3);
-    for (int k = 0; k < n; ++k)
-        for (int a = 0; a < 3; ++a) data[static_cast<size_t>(k) * 3 + a] = points[k][a];
+    std::vector<double> data = points_as_rows(points);
     if (!solve_collocation(c.knots, degree, out.params, data, 3))
         return make_error(ErrorCode::geometry, "the interpolation system is singular", "/points");
-    c.points.resize(n);
+    c.points = rows_as_points(data);
     c.weights.assign(n, 1.0);
-    for (int k = 0; k < n; ++k)
-        c.points[k] = {data[static_cast<size_t>(k) * 3], data[static_cast<size_t>(k) * 3 + 1],
-                       data[static_cast<size_t>(k) * 3 + 2]};
     return out;
 }
 

@@ -1,6 +1,7 @@
 // Curve design from points: parametrizations, averaged knots and global interpolation (A9.1).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,43 @@ Knots averaged_knots(const std::vector<double>& params, int p);
 // polygon itself, always on [0, 1]. Errors as point_params (a degenerate polygon).
 enum class KnotMode { clamped_uniform, chord, centripetal };
 Expected<Knots> knots_for_points(const std::vector<glm::dvec3>& points, int p, KnotMode mode);
+
+// Parameters for a net of points, averaged over its lines (Piegl & Tiller A9.4 and eq.
+// 9.16-9.18; 9.2.5 for skinning): `lines` lines of K + 1 points each, point(k, l) the k-th point
+// of line l. Each line's chord (or centripetal) lengths are normalized to total 1 and the
+// resulting parameters averaged over the lines; uniform gives k / K. A line whose lengths sum
+// to zero either stops the computation (degenerate_line names it) or, with
+// skip_degenerate_lines, is left out of the average as A9.4 does (all_degenerate when no line
+// is left). coincident names the first k whose parameter equals the one before (no data can be
+// interpolated there); it is not checked for uniform parameters, which never coincide.
+struct NetParams {
+    std::vector<double> params; // t_0 = 0 < ... < t_K = 1 when nothing below is set
+    int degenerate_line = -1;
+    bool all_degenerate = false;
+    int coincident = -1;
+};
+NetParams averaged_net_params(int K, int lines,
+                              const std::function<glm::dvec3(int k, int l)>& point,
+                              Parametrization mode, bool skip_degenerate_lines);
+
+// One row of a banded linear system: the coefficients of unknowns first, first + 1, ...
+struct BandedRow {
+    int first = 0;
+    std::vector<double> values;
+};
+
+// Solves the square system whose k-th row is rows[k] for `columns` right-hand sides:
+// data[k * columns + c] in, solution in the same layout out. Banded LU with partial pivoting
+// (the band is read off the rows). False when the system is singular.
+bool solve_banded_rows(const std::vector<BandedRow>& rows, std::vector<double>& data, int columns);
+
+// The collocation rows N_{s-p..s}(t_k) of the degree-p basis on U at each parameter.
+std::vector<BandedRow> collocation_rows(const Knots& U, int p, const std::vector<double>& params);
+
+// Points as rows of 3 numbers (the data layout of the solvers below: data[k * 3 + axis]) and
+// back.
+std::vector<double> points_as_rows(const std::vector<glm::dvec3>& points);
+std::vector<glm::dvec3> rows_as_points(const std::vector<double>& data);
 
 // Solves the collocation system sum_j N_j(t_k) X_j = D_k (k, j = 0..n-1) for `columns`
 // right-hand sides: data[k * columns + c] in, solution in the same layout out. Banded LU with

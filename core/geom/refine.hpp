@@ -13,6 +13,11 @@ namespace isoparm::geom {
 Expected<Curve> insert_knot(const Curve& c, double t, int times = 1);
 Expected<Surface> insert_knot(const Surface& s, Dir dir, double t, int times = 1);
 
+// Piegl & Tiller A5.4 RefineKnotVectCurve on homogeneous points: inserts the sorted knots X
+// (all strictly inside the domain) in one pass, O((n + r) p) instead of one Boehm pass per
+// knot; it also reaches multiplicity p + 1. U and Pw are replaced by the refined ones.
+void refine_knot_vector(int p, Knots& U, std::vector<HPoint>& Pw, const std::vector<double>& X);
+
 // Raises the degree by `times` (Piegl & Tiller A5.9 on the clamped form; an unclamped
 // vector is clamped first, which keeps the shape over the domain).
 Expected<Curve> elevate_degree(const Curve& c, int times = 1);
@@ -25,6 +30,10 @@ Expected<std::pair<Surface, Surface>> split(const Surface& s, Dir dir, double t)
 
 // Clamps an unclamped curve at both domain ends without changing its shape on the domain.
 Expected<Curve> clamp(const Curve& c);
+
+// The control points in homogeneous form (w P, w), the space where knot insertion, removal and
+// degree changes are linear; unit weights for non-rational types.
+std::vector<HPoint> homogeneous_points(const Curve& c);
 
 // From homogeneous points back to the Cartesian curve: a zero weight with non-zero
 // weighted coordinates is a point at infinity (error `weights`, convention 6); a zero

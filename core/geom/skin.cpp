@@ -1,6 +1,5 @@
 // The skinned surface through compatible sections (Piegl & Tiller 10.3 with 9.2.5, A9.1).
 #include <cmath>
-#include <glm/geometric.hpp>
 
 #include "core/geom/construct.hpp"
 #include "core/geom/construct_common.hpp"
@@ -12,51 +11,30 @@ namespace {
 
 // Convention 15: for each control-point index i the lengths (or their square roots) between
 // consecutive sections' i-th Cartesian control points, normalized to total 1, then averaged
-// over i (P&T 9.2.5, eq. 9.5 applied per index and averaged like A9.4).
+// over i (P&T 9.2.5, eq. 9.5 applied per index and averaged like A9.4: averaged_net_params).
 Expected<std::vector<double>> section_params(const std::vector<Curve>& sections,
                                              Parametrization mode) {
     const int K = static_cast<int>(sections.size()) - 1;
-    const int n = sections.front().count();
-    std::vector<double> v(K + 1, 0.0);
-    if (mode == Parametrization::uniform) {
-        for (int k = 1; k < K; ++k) v[k] = static_cast<double>(k) / K;
-        v[K] = 1.0;
-        return v;
+    NetParams v = averaged_net_params(
+        K, sections.front().count(), [&](int k, int i) { return sections[k].points[i]; }, mode,
+        false);
+    if (v.degenerate_line >= 0) {
+        return make_error(ErrorCode::geometry,
+                          "the sections coincide at control point " +
+                              std::to_string(v.degenerate_line) +
+                              " (the same point in every compatible curve), so the " +
+                              parametrization_name(mode) + " lengths between sections sum to zero",
+                          "/curves");
     }
-    std::vector<double> d(K + 1);
-    for (int i = 0; i < n; ++i) {
-        double total = 0.0;
-        for (int k = 1; k <= K; ++k) {
-            d[k] = glm::distance(sections[k].points[i], sections[k - 1].points[i]);
-            if (mode == Parametrization::centripetal) d[k] = std::sqrt(d[k]);
-            total += d[k];
-        }
-        if (!(total > 0.0)) {
-            return make_error(ErrorCode::geometry,
-                              "the sections coincide at control point " + std::to_string(i) +
-                                  " (the same point in every compatible curve), so the " +
-                                  parametrization_name(mode) +
-                                  " lengths between sections sum to zero",
-                              "/curves");
-        }
-        double acc = 0.0;
-        for (int k = 1; k < K; ++k) {
-            acc += d[k];
-            v[k] += acc / total;
-        }
+    if (v.coincident >= 0) {
+        const int k = v.coincident;
+        return make_error(ErrorCode::geometry,
+                          "curve " + std::to_string(k) + " coincides with curve " +
+                              std::to_string(k - 1) + " (equal parameters v = " +
+                              format_number(v.params[k]) + "), so no surface can pass through both",
+                          "/curves/" + std::to_string(k));
     }
-    for (int k = 1; k < K; ++k) v[k] /= n;
-    v[K] = 1.0;
-    for (int k = 1; k <= K; ++k) {
-        if (!(v[k] > v[k - 1])) {
-            return make_error(ErrorCode::geometry,
-                              "curve " + std::to_string(k) + " coincides with curve " +
-                                  std::to_string(k - 1) + " (equal parameters v = " +
-                                  format_number(v[k]) + "), so no surface can pass through both",
-                              "/curves/" + std::to_string(k));
-        }
-    }
-    return v;
+    return std::move(v.params);
 }
 
 } // namespace

@@ -66,6 +66,19 @@ WorkEstimate estimate_polygonization(double grid_points, double instructions) {
     return e;
 }
 
+WorkEstimate estimate_banded_fit(double rows, double n, int p, double columns) {
+    WorkEstimate e;
+    // Per data parameter: its basis, its products in the normal equations, the fitted curve
+    // there (the errors of a least-squares fit): (p+1)^2 each. The factorization: p rows below
+    // each pivot, each 3p + 1 wide; each right-hand side: forward and back, 3p + 1 a row.
+    const double width = 3.0 * p + 1.0;
+    e.steps = rows * 3 * sq(p + 1.0) + n * p * width + columns * n * width;
+    // The control points and the parameters.
+    e.answer_numbers = n * columns + rows;
+    e.steps += e.answer_numbers * steps_per_answer_number;
+    return e;
+}
+
 std::string with_thousands(double value) {
     if (!(value < 1e18)) return "more than 10^18";
     std::string digits = std::to_string(static_cast<long long>(std::llround(value)));

@@ -47,6 +47,10 @@ WorkEstimate estimate_surface_evaluation(double count, int p, int q, int d, bool
 WorkEstimate estimate_tessellation(double n_u, double n_v, int p, int q);
 // Polygonizing an expression of `instructions` (after folding) on a grid of `grid_points`.
 WorkEstimate estimate_polygonization(double grid_points, double instructions);
+// Fitting n control points of degree p to `rows` data parameters: the basis at each parameter,
+// the banded factorization (p sub- and super-diagonals, widened by pivoting) and the solves for
+// `columns` right-hand sides (interpolation, least squares, one direction of a surface).
+WorkEstimate estimate_banded_fit(double rows, double n, int p, double columns);
 
 // Checks `cost` against the budget and against what the current batch has left, and charges
 // the batch. Refused: `limit` at `path`, the message naming `what` ("12,000,000 parameters of

@@ -56,20 +56,6 @@ Expected<std::int64_t> read_one_degree(const json& v, const std::string& path) {
     return *d;
 }
 
-// [x, y] or [x, y, z] of finite numbers.
-Expected<glm::dvec3> read_point(const json& v, const std::string& path) {
-    if (!v.is_array() || v.size() < 2 || v.size() > 3)
-        return schema_error("a control point is [x, y] or [x, y, z]", path);
-    glm::dvec3 p(0.0);
-    for (std::size_t k = 0; k < v.size(); ++k) {
-        // The message's path is built only for a value that fails (millions of points pass).
-        if (!is_finite_number(v[k]))
-            return read_finite(v[k], path + at(static_cast<long>(k)), "a coordinate").error();
-        p[static_cast<int>(k)] = v[k].get<double>();
-    }
-    return p;
-}
-
 // A flat array of finite numbers (knots).
 Expected<geom::Knots> read_knot_vector(const json& v, const std::string& path) {
     if (!v.is_array()) return schema_error("a knot vector is an array of numbers", path);
@@ -319,6 +305,19 @@ Expected<geom::Surface> surface_from_json(const json& j) {
     }
     if (geom::Status st = geom::validate_surface(s); !st) return st.error();
     return s;
+}
+
+Expected<glm::dvec3> read_point(const json& v, const std::string& path, std::string_view what) {
+    if (!v.is_array() || v.size() < 2 || v.size() > 3)
+        return schema_error(std::string(what) + " is [x, y] or [x, y, z]", path);
+    glm::dvec3 p(0.0);
+    for (std::size_t k = 0; k < v.size(); ++k) {
+        // The message's path is built only for a value that fails (millions of points pass).
+        if (!is_finite_number(v[k]))
+            return read_finite(v[k], path + at(static_cast<long>(k)), "a coordinate").error();
+        p[static_cast<int>(k)] = v[k].get<double>();
+    }
+    return p;
 }
 
 json point_to_json(const glm::dvec3& p) {

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
 
 #include "core/geom/status.hpp"
 #include "core/geom/types.hpp"
@@ -16,6 +18,11 @@ geom::Expected<geom::Surface> surface_from_json(const nlohmann::json& j);
 // Always writes type, degree, knots, points (3D) and, for rational types, weights.
 nlohmann::json curve_to_json(const geom::Curve& c);
 nlohmann::json surface_to_json(const geom::Surface& s);
+
+// A point [x, y] or [x, y, z] of finite numbers (z = 0 when omitted); `what` names it in the
+// message ("a control point is [x, y] or [x, y, z]").
+geom::Expected<glm::dvec3> read_point(const nlohmann::json& v, const std::string& path,
+                                      std::string_view what = "a control point");
 
 // A point that may not exist: [x, y, z], or null when any coordinate is not finite.
 nlohmann::json point_to_json(const glm::dvec3& p);

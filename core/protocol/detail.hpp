@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/geom/interpolate.hpp"
 #include "core/geom/status.hpp"
 #include "core/json/fields.hpp"
 #include "core/geom/types.hpp"
@@ -43,6 +44,10 @@ OpResult op_insert_knot(const json& request); // op_refine.cpp
 OpResult op_elevate_degree(const json& request);
 OpResult op_split(const json& request);
 OpResult op_polygonize(const json& request); // op_polygonize.cpp
+OpResult op_interpolate(const json& request); // op_fitting.cpp
+OpResult op_approximate(const json& request);
+OpResult op_remove_knot(const json& request); // op_reduce.cpp
+OpResult op_reduce_degree(const json& request);
 // The meshes of `tessellate` and `polygonize` before they become JSON: the text path writes
 // them straight to the output (stream.hpp) instead of building a JSON tree.
 geom::Expected<geom::Mesh> tessellate_mesh(const json& request);
@@ -64,6 +69,15 @@ geom::Expected<double> required_number(const json& request, std::string_view nam
 geom::Expected<std::int64_t> integer_option(const json& request, std::string_view name,
                                             std::int64_t fallback, std::int64_t lo, std::int64_t hi,
                                             const std::string& rule);
+
+// `parametrization`: "chord" (the default), "centripetal" or "uniform"; anything else is
+// `schema` at "/parametrization".
+geom::Expected<geom::Parametrization> read_parametrization(const json& request);
+
+// An integer (integral floats such as 3.0 accepted) at `path`, saturated to the range of int so
+// that the geometry code refuses a huge value with its own code and message; `schema` when it
+// is not an integer.
+geom::Expected<int> read_int(const json& v, const std::string& path, std::string_view what);
 
 // ---- the geometry an op works on --------------------------------------------------------
 struct Subject {

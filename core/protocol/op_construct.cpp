@@ -132,14 +132,9 @@ OpResult op_skin(const json& request) {
                                  "count - 1 = " +
                                      std::to_string(count - 1));
     if (!degree) return degree.error();
-    geom::Parametrization mode = geom::Parametrization::chord;
-    if (const json* m = find_member(request, "parametrization")) {
-        if (!m->is_string() || !geom::parse_parametrization(m->get<std::string>(), mode)) {
-            return schema_error("parametrization is \"chord\", \"centripetal\" or \"uniform\"",
-                                "/parametrization");
-        }
-    }
-    auto s = geom::skin(*curves, static_cast<int>(*degree), mode);
+    auto mode = read_parametrization(request);
+    if (!mode) return mode.error();
+    auto s = geom::skin(*curves, static_cast<int>(*degree), *mode);
     if (!s) return s.error();
     return json{{"surface", surface_to_json(s->surface)}, {"params", s->params}};
 }

@@ -33,7 +33,7 @@ struct OpEntry {
 };
 
 // Adding an op is one line here and one file (see detail.hpp).
-constexpr std::array<OpEntry, 16> op_table = {{
+constexpr std::array<OpEntry, 20> op_table = {{
     {"evaluate", protocol::op_evaluate},
     {"basis", protocol::op_basis},
     {"deboor", protocol::op_deboor},
@@ -42,6 +42,10 @@ constexpr std::array<OpEntry, 16> op_table = {{
     {"insert_knot", protocol::op_insert_knot},
     {"elevate_degree", protocol::op_elevate_degree},
     {"split", protocol::op_split},
+    {"interpolate", protocol::op_interpolate},
+    {"approximate", protocol::op_approximate},
+    {"remove_knot", protocol::op_remove_knot},
+    {"reduce_degree", protocol::op_reduce_degree},
     {"tessellate", protocol::op_tessellate},
     {"polygonize", protocol::op_polygonize},
     {"make_compatible", protocol::op_make_compatible},

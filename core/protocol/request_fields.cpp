@@ -1,5 +1,7 @@
 // The protocol's shared field readers: precise `schema` errors, subjects, directions, domains.
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/json/shapes.hpp"
 #include "core/json/reader.hpp"
@@ -34,6 +36,24 @@ Expected<std::int64_t> integer_option(const json& request, std::string_view name
     const std::optional<std::int64_t> k = integer_value(*v);
     if (!k || *k < lo || *k > hi) return schema_error(rule, member_path("", name));
     return *k;
+}
+
+Expected<geom::Parametrization> read_parametrization(const json& request) {
+    geom::Parametrization mode = geom::Parametrization::chord;
+    if (const json* m = find_member(request, "parametrization")) {
+        if (!m->is_string() || !geom::parse_parametrization(m->get<std::string>(), mode)) {
+            return schema_error("parametrization is \"chord\", \"centripetal\" or \"uniform\"",
+                                "/parametrization");
+        }
+    }
+    return mode;
+}
+
+Expected<int> read_int(const json& v, const std::string& path, std::string_view what) {
+    const std::optional<std::int64_t> k = integer_value(v);
+    if (!k) return schema_error(std::string(what) + " must be an integer", path);
+    constexpr std::int64_t bound = std::numeric_limits<int>::max();
+    return static_cast<int>(std::clamp<std::int64_t>(*k, -bound, bound));
 }
 
 Expected<Subject> read_subject(const json& request, bool allow_curve, bool allow_surface) {

@@ -1,0 +1,41 @@
+// Degree reduction within a tolerance (Piegl & Tiller 5.6, A5.11 DegreeReduceCurve).
+#pragma once
+
+#include "core/geom/status.hpp"
+#include "core/geom/types.hpp"
+#include "core/geom/work_budget.hpp"
+
+namespace isoparm::geom {
+
+// The curve of degree p - 1 closest in A5.11's sense, and a bound on how far it lies from the
+// original (max_error). As A5.11: the curve is cut into its Bezier pieces (knot refinement,
+// A5.4; an unclamped curve is clamped first), each piece is reduced (eq. 5.41, 5.42) with its
+// error bound (eq. 5.45 for even p, 5.46 for odd p), and each interior knot is removed back
+// (A5.8) down to its multiplicity in the original minus one, the inverse of degree elevation
+// (A5.9 raises every multiplicity by one): a simple knot disappears. Each removal adds its own
+// bound to the knot spans it can move; max_error is the largest sum over the spans, in model
+// units (for a rational curve the bound in 4D scaled by eq. 5.30, (1 + |P|_max) / w_min; with a
+// weight <= 0 no bound is known: infinite unless the 4D bound is exactly 0). A surface reduces
+// every line along `dir` the same way; its bound is the largest of the lines'.
+// Errors (paths of the protocol's request): degree 1 (`degree`, "/curve/degree",
+// "/surface/degree/0" or "/1"); a negative or non-finite tolerance (`schema`, "/tolerance");
+// a bound above the tolerance (`geometry`, "/curve" or "/surface", the bound in the message); a
+// result with a control point at infinity (`weights`).
+struct CurveDegreeReduction {
+    Curve curve;
+    double max_error = 0;
+};
+struct SurfaceDegreeReduction {
+    Surface surface;
+    double max_error = 0;
+};
+Expected<CurveDegreeReduction> reduce_degree(const Curve& c, double tolerance);
+Expected<SurfaceDegreeReduction> reduce_degree(const Surface& s, Dir dir, double tolerance);
+
+// The work of the calls above, for the work budget: the Bezier pieces of every line (about p
+// control points each), each refined into, reduced and removed back, (p + 1)^2 steps a piece
+// and pass.
+WorkEstimate degree_reduction_cost(const Curve& c);
+WorkEstimate degree_reduction_cost(const Surface& s, Dir dir);
+
+} // namespace isoparm::geom
