@@ -126,8 +126,9 @@ Expected<CurveDegreeReduction> reduce_line(const Curve& line) {
     Expected<Curve> reduced =
         curve_from_homogeneous(line, line.degree - 1, std::move(r.knots), r.points, nullptr);
     if (!reduced) return reduced.error();
-    const double scale = cartesian_per_homogeneous(clamped->points, clamped->weights, rational);
-    return CurveDegreeReduction{std::move(reduced).value(), r.bound == 0.0 ? 0.0 : r.bound * scale};
+    return CurveDegreeReduction{
+        std::move(reduced).value(),
+        cartesian_bound(r.bound, clamped->points, clamped->weights, rational)};
 }
 
 Status check_bound(double bound, double tolerance, int p, const char* what,
@@ -138,8 +139,8 @@ Status check_bound(double bound, double tolerance, int p, const char* what,
     if (!std::isfinite(bound)) {
         return make_error(ErrorCode::geometry,
                           reduction +
-                              " has no error bound (a weight <= 0 gives none in model "
-                              "units), so the tolerance " +
+                              " has no error bound in model units (a weight <= 0, or a bound "
+                              "in 4D above the smallest weight), so the tolerance " +
                               format_number(tolerance) + " cannot be guaranteed",
                           path);
     }

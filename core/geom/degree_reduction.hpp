@@ -14,8 +14,9 @@ namespace isoparm::geom {
 // (A5.8) down to its multiplicity in the original minus one, the inverse of degree elevation
 // (A5.9 raises every multiplicity by one): a simple knot disappears. Each removal adds its own
 // bound to the knot spans it can move; max_error is the largest sum over the spans, in model
-// units (for a rational curve the bound in 4D scaled by eq. 5.30, (1 + |P|_max) / w_min; with a
-// weight <= 0 no bound is known: infinite unless the 4D bound is exactly 0). A surface reduces
+// units (for a rational curve the bound e in 4D turned into model units by eq. 5.30,
+// cartesian_bound: e (1 + |P|_max) / (w_min - e); none is known with a weight <= 0 or e >=
+// w_min, and the reduction is then refused unless e is exactly 0). A surface reduces
 // every line along `dir` the same way; its bound is the largest of the lines'.
 // Errors (paths of the protocol's request): degree 1 (`degree`, "/curve/degree",
 // "/surface/degree/0" or "/1"); a negative or non-finite tolerance (`schema`, "/tolerance");

@@ -17,34 +17,43 @@ OneKnotRemoval remove_knot_once(int p, const Knots& U, const std::vector<HPoint>
                                 bool with_weights) {
     const double u = U[r];
     const int s = multiplicity(U, u), n = static_cast<int>(Pw.size());
-    // A5.8's indices: the new points first..last-1 replace the old first..last; temp[k] holds
-    // new point first - 1 + k when computed from the left, first - 2 + k from the right.
-    const int first = r - p, last = r - s, off = first - 1;
+    // The new points first..last-1 replace the old first..last (A5.8's indices); Q[k] holds new
+    // point first - 1 + k, with Q_(first-1) = P_(first-1) and Q_last = P_(last+1) unchanged.
+    const int first = r - p, last = r - s;
+    auto alpha = [&](int i) { return (u - U[i]) / (U[i + p + 1] - U[i]); };
     auto distance = [&](const HPoint& a, const HPoint& b) {
         return with_weights ? glm::distance(a, b) : glm::distance(glm::dvec3(a), glm::dvec3(b));
     };
-    std::vector<HPoint> temp(static_cast<size_t>(last - off) + 2);
-    temp[0] = Pw[off];
-    temp[last + 1 - off] = Pw[last + 1];
-    int i = first, j = last, ii = 1, jj = last - off;
-    while (j - i > 0) { // eq. 5.28 from the left, eq. 5.29 from the right
-        const double alfi = (u - U[i]) / (U[i + p + 1] - U[i]);
-        const double alfj = (u - U[j]) / (U[j + p + 1] - U[j]);
-        temp[ii] = (Pw[i] - (1.0 - alfi) * temp[ii - 1]) / alfi;
-        temp[jj] = (Pw[j] - alfj * temp[jj + 1]) / (1.0 - alfj);
-        ++i;
-        ++ii;
-        --j;
-        --jj;
-    }
     OneKnotRemoval out;
-    if (j - i < 0) { // both ends computed the middle point: they must agree
-        out.distance = distance(temp[ii - 1], temp[jj + 1]);
-    } else { // the middle equation was not used: it must hold
-        const double alfi = (u - U[i]) / (U[i + p + 1] - U[i]);
-        out.distance = distance(Pw[i], alfi * temp[ii + 1] + (1.0 - alfi) * temp[ii - 1]);
+    int moved = first - 1; // the one old point that differs after inserting the knot back
+    std::vector<HPoint> Q(static_cast<size_t>(std::max(last - first + 2, 2)));
+    Q.front() = Pw[first - 1];
+    Q.back() = Pw[last + 1];
+    if (last < first) {
+        // Multiplicity p + 1: no equation, the two points on either side of the gap must agree
+        // (the right one is kept, as in the book).
+        out.distance = distance(Pw[first - 1], Pw[first]);
+    } else {
+        // Equation i (P_i = alpha_i Q_i + (1 - alpha_i) Q_(i-1), i = first..last) gives Q_i
+        // from the left (eq. 5.28, dividing by alpha_i) or Q_(i-1) from the right (eq. 5.29,
+        // dividing by 1 - alpha_i). The book meets in the middle; taking each time the end with
+        // the larger divisor solves the same equations with less rounding where knots crowd.
+        int i = first, j = last;
+        while (i < j) {
+            const double ai = alpha(i), aj = alpha(j);
+            if (ai >= 1.0 - aj) {
+                Q[i - first + 1] = (Pw[i] - (1.0 - ai) * Q[i - first]) / ai;
+                ++i;
+            } else {
+                Q[j - first] = (Pw[j] - aj * Q[j - first + 1]) / (1.0 - aj);
+                --j;
+            }
+        }
+        // The equation left over is A5.8's test: how far its old point would move.
+        const double ai = alpha(i);
+        out.distance = distance(Pw[i], ai * Q[i - first + 1] + (1.0 - ai) * Q[i - first]);
+        moved = i;
     }
-    const int from_right = last - (last - first + 1) / 2; // the first point computed from the right
     out.points.resize(n - 1);
     for (int k = 0; k < n - 1; ++k) {
         if (k >= last)
@@ -52,27 +61,47 @@ OneKnotRemoval remove_knot_once(int p, const Knots& U, const std::vector<HPoint>
         else if (k < first)
             out.points[k] = Pw[k];
         else
-            out.points[k] = k >= from_right ? temp[k + 1 - off] : temp[k - off];
+            out.points[k] = Q[k - first + 1];
     }
     out.knots = U;
     out.knots.erase(out.knots.begin() + r);
-    // Only old point (first + last) / 2 differs after inserting the knot back: its support.
-    const int moved = (first + last) / 2;
     out.moved_from = U[moved];
     out.moved_to = U[moved + p + 1];
     return out;
 }
 
-double cartesian_per_homogeneous(const std::vector<glm::dvec3>& points,
-                                 const std::vector<double>& weights, bool rational) {
-    if (!rational) return 1.0;
-    double w_min = std::numeric_limits<double>::infinity(), p_max = 0.0;
+namespace {
+
+struct WeightRange {
+    double w_min = std::numeric_limits<double>::infinity();
+    double p_max = 0.0;
+};
+WeightRange weight_range(const std::vector<glm::dvec3>& points,
+                         const std::vector<double>& weights) {
+    WeightRange r;
     for (size_t i = 0; i < points.size(); ++i) {
-        w_min = std::min(w_min, weights[i]);
-        p_max = std::max(p_max, glm::length(points[i]));
+        r.w_min = std::min(r.w_min, weights[i]);
+        r.p_max = std::max(r.p_max, glm::length(points[i]));
     }
-    if (!(w_min > 0.0)) return std::numeric_limits<double>::infinity();
-    return (1.0 + p_max) / w_min;
+    return r;
+}
+
+} // namespace
+
+double cartesian_bound(double homogeneous_bound, const std::vector<glm::dvec3>& points,
+                       const std::vector<double>& weights, bool rational) {
+    if (!rational || homogeneous_bound == 0.0) return homogeneous_bound;
+    const WeightRange r = weight_range(points, weights);
+    if (!(r.w_min > homogeneous_bound)) return std::numeric_limits<double>::infinity();
+    return homogeneous_bound * (1.0 + r.p_max) / (r.w_min - homogeneous_bound);
+}
+
+double homogeneous_tolerance(double tolerance, const std::vector<glm::dvec3>& points,
+                             const std::vector<double>& weights, bool rational) {
+    if (!rational) return tolerance;
+    const WeightRange r = weight_range(points, weights);
+    if (!(r.w_min > 0.0)) return 0.0;
+    return tolerance * r.w_min / (1.0 + r.p_max + tolerance);
 }
 
 namespace {
@@ -168,8 +197,7 @@ Expected<CurveKnotRemoval> remove_knot(const Curve& c, double knot, int times, d
     const int p = c.degree, n = c.count();
     if (Status ok = check_request(c.knots, p, n, knot, times, tolerance); !ok) return ok.error();
     const bool rational = is_rational(c.type);
-    const double homogeneous_tolerance =
-        tolerance / cartesian_per_homogeneous(c.points, c.weights, rational);
+    const double tolerance_4d = homogeneous_tolerance(tolerance, c.points, c.weights, rational);
     const int steps = std::min(times, multiplicity(c.knots, knot));
     const std::vector<double> ts =
         sample_params(c.knots, removal_reach(c.knots, p, n, knot, steps), samples_along(p));
@@ -181,7 +209,7 @@ Expected<CurveKnotRemoval> remove_knot(const Curve& c, double knot, int times, d
     std::vector<HPoint> Pw = homogeneous_points(c);
     for (int step = 0; step < steps; ++step) {
         OneKnotRemoval one = remove_knot_once(p, U, Pw, last_index(U, knot), rational);
-        if (!(one.distance <= homogeneous_tolerance)) break;
+        if (!(one.distance <= tolerance_4d)) break;
         Expected<Curve> candidate = curve_from_homogeneous(c, p, one.knots, one.points, nullptr);
         if (!candidate) break; // a point at infinity: not removable
         double deviation = 0.0;
@@ -207,13 +235,12 @@ Expected<SurfaceKnotRemoval> remove_knot(const Surface& s, Dir dir, double knot,
     const int across = s.count(dir == Dir::u ? Dir::v : Dir::u);
     std::vector<Curve> lines;
     std::vector<std::vector<HPoint>> Pw;
-    std::vector<double> homogeneous_tolerance;
+    std::vector<double> tolerance_4d;
     for (int l = 0; l < across; ++l) {
         lines.push_back(surface_line(s, dir, l));
         Pw.push_back(homogeneous_points(lines.back()));
-        homogeneous_tolerance.push_back(tolerance / cartesian_per_homogeneous(lines.back().points,
-                                                                              lines.back().weights,
-                                                                              rational));
+        tolerance_4d.push_back(
+            homogeneous_tolerance(tolerance, lines.back().points, lines.back().weights, rational));
     }
     const int steps = std::min(times, multiplicity(s.knots(dir), knot));
     const SurfaceSamples grid = surface_samples(s, dir, knot, steps);
@@ -230,7 +257,7 @@ Expected<SurfaceKnotRemoval> remove_knot(const Surface& s, Dir dir, double knot,
         std::vector<Curve> candidate_lines;
         for (int l = 0; l < across; ++l) {
             ones.push_back(remove_knot_once(p, U, Pw[l], r, rational));
-            if (!(ones.back().distance <= homogeneous_tolerance[l])) break;
+            if (!(ones.back().distance <= tolerance_4d[l])) break;
             Expected<Curve> line =
                 curve_from_homogeneous(lines[l], p, ones.back().knots, ones.back().points, nullptr);
             if (!line) break;

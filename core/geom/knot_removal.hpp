@@ -11,12 +11,14 @@
 namespace isoparm::geom {
 
 // One removal of the knot U[r] (r the index of its last copy, strictly inside the domain) from
-// the homogeneous curve (p, U, Pw): A5.8 with num = 1. The new points are computed from both
-// ends (eq. 5.28, 5.29); where the two computations meet, the book's choice is kept (the one
-// from the right). `distance` is A5.8's test, how far the two computations disagree (in 4D with
-// the weights, else in 3D). Inserting the knot back would give the old points except one, which
-// moves by at most `distance`; so the curve (homogeneous, for a rational curve) moves by at most
-// `distance`, and only on [moved_from, moved_to].
+// the homogeneous curve (p, U, Pw): A5.8 with num = 1. Of the p - s + 1 equations of knot
+// insertion (eq. 5.28 solved from the left, eq. 5.29 from the right) for the p - s new points,
+// each is used from the end that divides by the larger factor (the book meets in the middle;
+// this rounds less where knots crowd) and the one left over is A5.8's test: `distance` is how
+// far its old point would move if the knot were inserted back (in 4D with the weights, else in
+// 3D); at multiplicity p + 1, the distance between the two points on either side of the gap.
+// That one point is all that changes, so the curve (homogeneous, for a rational curve) moves by
+// at most `distance`, and only on its support [moved_from, moved_to].
 struct OneKnotRemoval {
     Knots knots;
     std::vector<HPoint> points;
@@ -26,12 +28,17 @@ struct OneKnotRemoval {
 OneKnotRemoval remove_knot_once(int p, const Knots& U, const std::vector<HPoint>& Pw, int r,
                                 bool with_weights);
 
-// The largest distance a rational curve may move for each unit of homogeneous distance
-// (Piegl & Tiller eq. 5.30: a tolerance d in model units is d w_min / (1 + |P|_max) in 4D):
-// (1 + |P|_max) / w_min over the given points, infinite when a weight is zero or negative
-// (no bound is known there); 1 for non-rational points.
-double cartesian_per_homogeneous(const std::vector<glm::dvec3>& points,
-                                 const std::vector<double>& weights, bool rational);
+// From distances in homogeneous space to model units for a rational curve with these control
+// points (Piegl & Tiller eq. 5.30). If the homogeneous curve moves by at most e, the curve moves
+// by at most e (1 + |P|_max) / (w_min - e): the weight function stays above w_min - e and the
+// curve inside the ball of radius |P|_max. homogeneous_tolerance is its inverse, the 4D
+// tolerance d w_min / (1 + |P|_max + d) for d in model units (the book's d w_min / (1 + |P|_max)
+// drops the last d). No bound is known (infinity; tolerance 0) when a weight is zero or negative
+// or e >= w_min. Non-rational curves: distances are model units.
+double cartesian_bound(double homogeneous_bound, const std::vector<glm::dvec3>& points,
+                       const std::vector<double>& weights, bool rational);
+double homogeneous_tolerance(double tolerance, const std::vector<glm::dvec3>& points,
+                             const std::vector<double>& weights, bool rational);
 
 // The knot `knot` removed up to `times` times, one removal at a time: each must pass A5.8's test
 // (its distance, scaled by eq. 5.30 for rational curves, within `tolerance`) and the result,
