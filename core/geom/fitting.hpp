@@ -34,7 +34,8 @@ Expected<Interpolated> interpolate_curve_with_end_derivatives(const std::vector<
 // once), then the rows of the result. Errors: fewer than 2 rows or columns (`schema`, "/grid"
 // or "/grid/0"); p or q outside 1..rows - 1, 1..columns - 1 (`degree`, "/degree/0", "/degree/1");
 // all points coincide (`geometry`, "/grid"); row k equal to row k - 1 (`geometry`, "/grid/k");
-// column l equal to column l - 1 (`geometry`, "/grid/0/l", its first point).
+// column l equal to column l - 1 (`geometry`, "/grid/0/l", its first point); when every row
+// (column) is the same, k = 1 (l = 1).
 struct InterpolatedSurface {
     Surface surface;
     std::vector<double> u_params, v_params;

@@ -7,10 +7,6 @@ namespace isoparm::geom {
 
 namespace {
 
-std::string step(int k) {
-    return "/" + std::to_string(k);
-}
-
 // The degree along one direction of `count` points: 1..count - 1 (`degree`, "/degree/axis").
 Status check_degree(int degree, int count, int axis, const char* dir_name) {
     if (degree >= 1 && degree <= count - 1) return Ok{};
@@ -18,7 +14,7 @@ Status check_degree(int degree, int count, int axis, const char* dir_name) {
                       std::string("the degree in ") + dir_name +
                           " must lie between 1 and the number of points along " + dir_name +
                           " - 1 = " + std::to_string(count - 1) + ", got " + std::to_string(degree),
-                      "/degree" + step(axis));
+                      "/degree" + pointer_step(axis));
 }
 
 } // namespace
@@ -43,24 +39,26 @@ Expected<InterpolatedSurface> interpolate_surface(const std::vector<glm::dvec3>&
         rows - 1, columns, [&](int k, int l) { return at(k, l); }, mode, true);
     NetParams v = averaged_net_params(
         columns - 1, rows, [&](int l, int k) { return at(k, l); }, mode, true);
-    if (u.all_degenerate || v.all_degenerate) {
+    if (u.all_degenerate && v.all_degenerate) {
         return make_error(ErrorCode::geometry,
                           "all points of the grid coincide, so they cannot be parametrized",
                           "/grid");
     }
-    if (u.coincident >= 0) {
-        const int k = u.coincident;
+    // Every column collapsed to a point means every row equals the first (and likewise).
+    const int row = u.all_degenerate ? 1 : u.coincident;
+    const int column = v.all_degenerate ? 1 : v.coincident;
+    if (row >= 0) {
         return make_error(ErrorCode::geometry,
-                          "row " + std::to_string(k) + " of the grid coincides with row " +
-                              std::to_string(k - 1) + ", which gives two equal parameters u",
-                          "/grid" + step(k));
+                          "row " + std::to_string(row) + " of the grid coincides with row " +
+                              std::to_string(row - 1) + ", which gives two equal parameters u",
+                          "/grid" + pointer_step(row));
     }
-    if (v.coincident >= 0) {
-        const int l = v.coincident;
+    if (column >= 0) {
         return make_error(ErrorCode::geometry,
-                          "column " + std::to_string(l) + " of the grid coincides with column " +
-                              std::to_string(l - 1) + ", which gives two equal parameters v",
-                          "/grid/0" + step(l));
+                          "column " + std::to_string(column) +
+                              " of the grid coincides with column " + std::to_string(column - 1) +
+                              ", which gives two equal parameters v",
+                          "/grid/0" + pointer_step(column));
     }
 
     InterpolatedSurface out;
