@@ -33,9 +33,9 @@ struct SurfaceDegreeReduction {
 Expected<CurveDegreeReduction> reduce_degree(const Curve& c, double tolerance);
 Expected<SurfaceDegreeReduction> reduce_degree(const Surface& s, Dir dir, double tolerance);
 
-// The work of the calls above, for the work budget: the Bezier pieces of every line (about p
-// control points each), each refined into, reduced and removed back, (p + 1)^2 steps a piece
-// and pass.
+// The work of the calls above, for the work budget: 4 (p + 1)^2 + 200 steps for each Bezier
+// piece of every line (about p control points each): refined into, reduced, and up to p - 1
+// removals back, each copying a window of about 3p points.
 WorkEstimate degree_reduction_cost(const Curve& c);
 WorkEstimate degree_reduction_cost(const Surface& s, Dir dir);
 

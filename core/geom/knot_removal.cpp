@@ -106,13 +106,18 @@ double homogeneous_tolerance(double tolerance, const std::vector<glm::dvec3>& po
 
 namespace {
 
-// Samples per knot span: along the removal, enough for the degree-p difference (capped, the
-// test of A5.8 bounds each removal anyway); across a surface's other direction, fewer.
+// Samples per knot span: along the removal, enough for the degree-p difference (capped: the
+// test of A5.8 bounds each removal anyway); across a surface's other direction, fewer (its
+// basis functions only blend the lines' differences). A surface is sampled more thinly along
+// too: its samples multiply.
 int samples_along(int p) {
     return std::min(2 * p + 8, 32);
 }
+int surface_samples_along(int p) {
+    return std::min(p + 4, 12);
+}
 int samples_across(int q) {
-    return std::min(q + 3, 12);
+    return std::min(q + 2, 6);
 }
 
 Status check_request(const Knots& U, int p, int n, double knot, int times, double tolerance) {
@@ -182,7 +187,7 @@ SurfaceSamples surface_samples(const Surface& s, Dir dir, double knot, int steps
     const int p = s.degree(dir), n = s.count(dir);
     const Knots& V = s.knots(other);
     return {sample_params(s.knots(dir), removal_reach(s.knots(dir), p, n, knot, steps),
-                          samples_along(p)),
+                          surface_samples_along(p)),
             sample_params(V, domain(V, s.degree(other), s.count(other)),
                           samples_across(s.degree(other)))};
 }
