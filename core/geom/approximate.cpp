@@ -82,17 +82,11 @@ std::optional<std::vector<glm::dvec3>> interior_points(const std::vector<glm::dv
 Expected<Approximated> approximate_curve(const std::vector<glm::dvec3>& points, int degree,
                                          int count, Parametrization mode) {
     const int total = static_cast<int>(points.size());
-    if (total < 2) {
-        return make_error(ErrorCode::schema,
-                          "approximation needs at least 2 points, got " + std::to_string(total),
-                          "/points");
-    }
-    if (degree < 1 || degree > total - 1) {
-        return make_error(ErrorCode::degree,
-                          "the degree must lie between 1 and the point count - 1 = " +
-                              std::to_string(total - 1) + ", got " + std::to_string(degree),
-                          "/degree");
-    }
+    if (Status s = check_fit_points(total, "approximation"); !s) return s.error();
+    if (Status s = check_fit_degree(degree, 1, total - 1,
+                                    "the degree must lie between 1 and the point count - 1");
+        !s)
+        return s.error();
     if (count < degree + 1) {
         return make_error(ErrorCode::degree,
                           "a degree-" + std::to_string(degree) + " curve needs at least " +

@@ -196,19 +196,27 @@ bool solve_collocation(const Knots& U, int p, const std::vector<double>& params,
     return solve_banded_rows(collocation_rows(U, p, params), data, columns);
 }
 
+Status check_fit_points(int count, const std::string& fit) {
+    if (count >= 2) return Ok{};
+    return make_error(ErrorCode::schema,
+                      fit + " needs at least 2 points, got " + std::to_string(count), "/points");
+}
+
+Status check_fit_degree(int degree, int lo, int hi, const std::string& rule) {
+    if (degree >= lo && degree <= hi) return Ok{};
+    return make_error(ErrorCode::degree,
+                      rule + " = " + std::to_string(hi) + ", got " + std::to_string(degree),
+                      "/degree");
+}
+
 Expected<Interpolated> interpolate_curve(const std::vector<glm::dvec3>& points, int degree,
                                          Parametrization mode) {
     const int n = static_cast<int>(points.size());
-    if (n < 2)
-        return make_error(ErrorCode::schema,
-                          "interpolation needs at least 2 points, got " + std::to_string(n),
-                          "/points");
-    if (degree < 1 || degree > n - 1) {
-        return make_error(ErrorCode::degree,
-                          "the degree must lie between 1 and the point count - 1 = " +
-                              std::to_string(n - 1) + ", got " + std::to_string(degree),
-                          "/degree");
-    }
+    if (Status s = check_fit_points(n, "interpolation"); !s) return s.error();
+    if (Status s = check_fit_degree(degree, 1, n - 1,
+                                    "the degree must lie between 1 and the point count - 1");
+        !s)
+        return s.error();
     auto t = point_params(points, mode);
     if (!t) return t.error();
     Interpolated out;

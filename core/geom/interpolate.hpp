@@ -76,6 +76,13 @@ std::vector<glm::dvec3> rows_as_points(const std::vector<double>& data);
 bool solve_collocation(const Knots& U, int p, const std::vector<double>& params,
                        std::vector<double>& data, int columns);
 
+// The checks every fit of a curve to points starts with: at least 2 points (`schema`,
+// "/points"; `fit` names the fit, "interpolation needs at least 2 points, got 1") and a degree
+// from lo to hi (`degree`, "/degree"; the message is `rule` = hi, "the degree must lie between
+// 1 and the point count - 1 = 4, got 5").
+Status check_fit_points(int count, const std::string& fit);
+Status check_fit_degree(int degree, int lo, int hi, const std::string& rule);
+
 // Piegl & Tiller A9.1 GlobalCurveInterp: the degree-p B-spline through the points at the
 // given mode's parameters, knots by averaging; the curve passes through points[k] at
 // params[k]. Errors: fewer than 2 points (`schema`, "/points"), degree < 1 or above

@@ -43,21 +43,14 @@ Expected<Interpolated> interpolate_curve_with_end_derivatives(const std::vector<
                                                               const glm::dvec3& start,
                                                               const glm::dvec3& end) {
     const int points_count = static_cast<int>(points.size());
-    if (points_count < 2) {
-        return make_error(ErrorCode::schema,
-                          "interpolation needs at least 2 points, got " +
-                              std::to_string(points_count),
-                          "/points");
-    }
+    if (Status s = check_fit_points(points_count, "interpolation"); !s) return s.error();
     const int count = points_count + 2, p = degree;
-    if (p < 2 || p > count - 1) {
-        return make_error(ErrorCode::degree,
-                          "with end derivatives the degree must lie between 2 (a degree-1 "
-                          "curve's end derivatives are its first and last legs) and the control "
-                          "point count - 1 = " +
-                              std::to_string(count - 1) + ", got " + std::to_string(p),
-                          "/degree");
-    }
+    if (Status s = check_fit_degree(p, 2, count - 1,
+                                    "with end derivatives the degree must lie between 2 (a "
+                                    "degree-1 curve's end derivatives are its first and last "
+                                    "legs) and the control point count - 1");
+        !s)
+        return s.error();
     auto t = point_params(points, mode);
     if (!t) return t.error();
     Interpolated out;

@@ -99,6 +99,19 @@ geom::Expected<std::vector<std::array<double, 2>>> read_surface_params(const jso
 // `direction` ("u" or "v"): required with a surface, refused with a curve (convention 2).
 geom::Expected<geom::Dir> read_direction(const json& request, const Subject& subject);
 
+// The start of an op on a curve, or a surface along a direction: its fields (check_fields),
+// its subject (read_subject) and its direction (read_direction), in that order.
+struct DirectedSubject {
+    Subject subject;
+    geom::Dir dir = geom::Dir::u;
+};
+geom::Expected<DirectedSubject>
+read_directed_subject(const json& request, std::string_view op,
+                      std::initializer_list<std::string_view> fields);
+
+// `times`: an integer >= 1 (convention 11), default 1; kept as 64 bits, the ops bound it.
+geom::Expected<std::int64_t> read_times(const json& request);
+
 // `domain` error unless t lies in [lo, hi]: "parameter 1.5 outside the domain [0, 1]".
 geom::Status check_in_domain(double t, const geom::Interval& domain, const std::string& path,
                              std::string_view what = "parameter");

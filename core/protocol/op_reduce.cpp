@@ -25,22 +25,18 @@ Expected<double> read_tolerance(const json& request) {
     return read_finite(*v, "/tolerance", "tolerance");
 }
 
-// The common start: fields, subject, direction, tolerance.
+// The common start: fields, subject, direction, then the tolerance.
 struct Parsed {
-    Subject subject;
-    geom::Dir dir = geom::Dir::u;
+    DirectedSubject subject;
     double tolerance = default_tolerance;
 };
 Expected<Parsed> parse_common(const json& request, std::string_view op,
                               std::initializer_list<std::string_view> fields) {
-    if (geom::Status s = check_fields(request, op, fields); !s) return s.error();
-    Expected<Subject> subject = read_subject(request, true, true);
+    Expected<DirectedSubject> subject = read_directed_subject(request, op, fields);
     if (!subject) return subject.error();
-    Expected<geom::Dir> dir = read_direction(request, *subject);
-    if (!dir) return dir.error();
     Expected<double> tolerance = read_tolerance(request);
     if (!tolerance) return tolerance.error();
-    return Parsed{std::move(subject).value(), *dir, *tolerance};
+    return Parsed{std::move(subject).value(), *tolerance};
 }
 
 std::string subject_path(const Subject& s) {
@@ -55,23 +51,21 @@ OpResult op_remove_knot(const json& request) {
     if (!parsed) return parsed.error();
     Expected<double> knot = required_number(request, "knot");
     if (!knot) return knot.error();
-    Expected<std::int64_t> times =
-        integer_option(request, "times", 1, 1, std::numeric_limits<std::int64_t>::max(),
-                       "times is an integer >= 1");
+    Expected<std::int64_t> times = read_times(request);
     if (!times) return times.error();
     // No knot has more copies than an int holds: more removals than that are as many as there are.
     const int n = static_cast<int>(std::min<std::int64_t>(*times, std::numeric_limits<int>::max()));
-    const Subject& sub = parsed->subject;
+    const Subject& sub = parsed->subject.subject;
     const double tol = parsed->tolerance;
     const geom::WorkEstimate cost =
-        sub.is_surface ? geom::knot_removal_cost(sub.surface, parsed->dir, *knot, n)
+        sub.is_surface ? geom::knot_removal_cost(sub.surface, parsed->subject.dir, *knot, n)
                        : geom::knot_removal_cost(sub.curve, *knot, n);
     if (geom::Status ok = geom::spend_work(cost, subject_path(sub),
                                            "removing the knot " + geom::format_number(*knot));
         !ok)
         return ok.error();
     if (sub.is_surface) {
-        auto r = geom::remove_knot(sub.surface, parsed->dir, *knot, n, tol);
+        auto r = geom::remove_knot(sub.surface, parsed->subject.dir, *knot, n, tol);
         if (!r) return r.error();
         return json{{"surface", surface_to_json(r->surface)},
                     {"removed", r->removed},
@@ -88,14 +82,14 @@ OpResult op_reduce_degree(const json& request) {
     Expected<Parsed> parsed =
         parse_common(request, "reduce_degree", {"curve", "surface", "direction", "tolerance"});
     if (!parsed) return parsed.error();
-    const Subject& sub = parsed->subject;
-    const geom::WorkEstimate cost = sub.is_surface
-                                        ? geom::degree_reduction_cost(sub.surface, parsed->dir)
-                                        : geom::degree_reduction_cost(sub.curve);
+    const Subject& sub = parsed->subject.subject;
+    const geom::WorkEstimate cost =
+        sub.is_surface ? geom::degree_reduction_cost(sub.surface, parsed->subject.dir)
+                       : geom::degree_reduction_cost(sub.curve);
     if (geom::Status ok = geom::spend_work(cost, subject_path(sub), "reducing the degree"); !ok)
         return ok.error();
     if (sub.is_surface) {
-        auto r = geom::reduce_degree(sub.surface, parsed->dir, parsed->tolerance);
+        auto r = geom::reduce_degree(sub.surface, parsed->subject.dir, parsed->tolerance);
         if (!r) return r.error();
         return json{{"surface", surface_to_json(r->surface)}, {"max_error", r->max_error}};
     }

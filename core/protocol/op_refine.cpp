@@ -37,35 +37,14 @@ OpResult refined_answer(const Subject& sub, Curve refine_curve, Surface refine_s
     return json{{sub.is_surface ? "surface" : "curve", shape_to_json(result)}};
 }
 
-// The common start: fields, subject, direction.
-struct Parsed {
-    Subject subject;
-    geom::Dir dir = geom::Dir::u;
-};
-Expected<Parsed> parse_common(const json& request, std::string_view op,
-                              std::initializer_list<std::string_view> fields) {
-    if (geom::Status s = check_fields(request, op, fields); !s) return s.error();
-    Expected<Subject> subject = read_subject(request, true, true);
-    if (!subject) return subject.error();
-    Expected<geom::Dir> dir = read_direction(request, *subject);
-    if (!dir) return dir.error();
-    return Parsed{std::move(subject).value(), *dir};
-}
-
-// times: an integer >= 1 (convention 11), default 1. Kept as 64 bits: the ops bound it.
-Expected<std::int64_t> read_times(const json& request) {
-    return integer_option(request, "times", 1, 1, std::numeric_limits<std::int64_t>::max(),
-                          "times is an integer >= 1");
-}
-
 // Commands take an int; beyond this no degree or size could accept the request anyway.
 constexpr std::int64_t times_ceiling = std::int64_t{1} << 24;
 
 } // namespace
 
 OpResult op_insert_knot(const json& request) {
-    Expected<Parsed> parsed =
-        parse_common(request, "insert_knot", {"curve", "surface", "direction", "knot", "times"});
+    Expected<DirectedSubject> parsed = read_directed_subject(
+        request, "insert_knot", {"curve", "surface", "direction", "knot", "times"});
     if (!parsed) return parsed.error();
     Expected<double> knot = required_number(request, "knot");
     if (!knot) return knot.error();
@@ -93,8 +72,8 @@ OpResult op_insert_knot(const json& request) {
 }
 
 OpResult op_elevate_degree(const json& request) {
-    Expected<Parsed> parsed =
-        parse_common(request, "elevate_degree", {"curve", "surface", "direction", "times"});
+    Expected<DirectedSubject> parsed = read_directed_subject(
+        request, "elevate_degree", {"curve", "surface", "direction", "times"});
     if (!parsed) return parsed.error();
     Expected<std::int64_t> times = read_times(request);
     if (!times) return times.error();
@@ -115,8 +94,8 @@ OpResult op_elevate_degree(const json& request) {
 }
 
 OpResult op_split(const json& request) {
-    Expected<Parsed> parsed =
-        parse_common(request, "split", {"curve", "surface", "direction", "param"});
+    Expected<DirectedSubject> parsed =
+        read_directed_subject(request, "split", {"curve", "surface", "direction", "param"});
     if (!parsed) return parsed.error();
     Expected<double> t = required_number(request, "param");
     if (!t) return t.error();

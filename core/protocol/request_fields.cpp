@@ -93,6 +93,21 @@ Expected<geom::Dir> read_direction(const json& request, const Subject& subject) 
     return schema_error("direction is \"u\" or \"v\"", "/direction");
 }
 
+Expected<DirectedSubject> read_directed_subject(const json& request, std::string_view op,
+                                                std::initializer_list<std::string_view> fields) {
+    if (geom::Status s = check_fields(request, op, fields); !s) return s.error();
+    Expected<Subject> subject = read_subject(request, true, true);
+    if (!subject) return subject.error();
+    Expected<geom::Dir> dir = read_direction(request, *subject);
+    if (!dir) return dir.error();
+    return DirectedSubject{std::move(subject).value(), *dir};
+}
+
+Expected<std::int64_t> read_times(const json& request) {
+    return integer_option(request, "times", 1, 1, std::numeric_limits<std::int64_t>::max(),
+                          "times is an integer >= 1");
+}
+
 geom::Status check_in_domain(double t, const geom::Interval& domain, const std::string& path,
                              std::string_view what) {
     if (domain.contains(t)) return geom::Ok{};

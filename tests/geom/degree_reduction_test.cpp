@@ -11,23 +11,11 @@
 #include "core/geom/refine.hpp"
 #include "core/geom/validate.hpp"
 #include "tests/support/random_geometry.hpp"
+#include "tests/support/sampled_distance.hpp"
 
 using namespace isoparm::geom;
 using isoparm::testing::RandomGeometry;
-
-namespace {
-
-double curve_distance(const Curve& a, const Curve& b) {
-    const Interval d = domain(a.knots, a.degree, a.count());
-    double worst = 0;
-    for (int k = 0; k <= 2000; ++k) {
-        const double t = k == 2000 ? d.hi : d.lo + (d.hi - d.lo) * k / 2000;
-        worst = std::max(worst, glm::distance(*curve_point(a, t), *curve_point(b, t)));
-    }
-    return worst;
-}
-
-} // namespace
+using isoparm::testing::sampled_distance;
 
 TEST(ReduceDegree, UndoesElevation) {
     RandomGeometry g(9401);
@@ -92,7 +80,7 @@ TEST(ReduceDegree, UnclampedAndBezierInputs) {
     ASSERT_TRUE(elevated.ok());
     auto r = reduce_degree(*elevated, 1e-9);
     ASSERT_TRUE(r.ok()) << r.error().message;
-    EXPECT_LT(curve_distance(open, r->curve), 1e-9);
+    EXPECT_LT(sampled_distance(open, r->curve), 1e-9);
 
     Curve bezier = g.curve(4, 5, true);
     bezier.type = SplineType::rational_bezier;
@@ -117,7 +105,7 @@ TEST(ReduceDegree, TheBoundHoldsAndIsEquation545ForAQuadratic) {
     auto r = reduce_degree(c, 5.0);
     ASSERT_TRUE(r.ok());
     EXPECT_DOUBLE_EQ(r->max_error, 2.0);
-    EXPECT_NEAR(curve_distance(c, r->curve), 1.0, 1e-12);
+    EXPECT_NEAR(sampled_distance(c, r->curve), 1.0, 1e-12);
 
     RandomGeometry g(9404);
     for (int trial = 0; trial < 60; ++trial) {
@@ -132,7 +120,7 @@ TEST(ReduceDegree, TheBoundHoldsAndIsEquation545ForAQuadratic) {
         }
         auto loose = reduce_degree(any, 1e300);
         ASSERT_TRUE(loose.ok()) << loose.error().message;
-        EXPECT_LE(curve_distance(any, loose->curve), loose->max_error * (1 + 1e-9) + 1e-12)
+        EXPECT_LE(sampled_distance(any, loose->curve), loose->max_error * (1 + 1e-9) + 1e-12)
             << "trial " << trial;
     }
 }
@@ -178,5 +166,5 @@ TEST(ReduceDegree, ASimpleKnotDisappearsAsElevationWouldHaveMadeIt) {
     auto r = reduce_degree(cubic, 1e-9);
     ASSERT_TRUE(r.ok()) << r.error().message;
     EXPECT_EQ(r->curve.knots, bezier_knots(2));
-    EXPECT_LT(curve_distance(quadratic, r->curve), 1e-12);
+    EXPECT_LT(sampled_distance(quadratic, r->curve), 1e-12);
 }

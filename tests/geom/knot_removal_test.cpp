@@ -10,37 +10,13 @@
 #include "core/geom/refine.hpp"
 #include "core/geom/validate.hpp"
 #include "tests/support/random_geometry.hpp"
+#include "tests/support/sampled_distance.hpp"
 
 using namespace isoparm::geom;
 using isoparm::testing::RandomGeometry;
+using isoparm::testing::sampled_distance;
 
 namespace {
-
-// The largest distance between two curves over a dense sample of the domain (an independent
-// measure: 2000 parameters, not the spans the removal samples).
-double curve_distance(const Curve& a, const Curve& b) {
-    const Interval d = domain(a.knots, a.degree, a.count());
-    double worst = 0;
-    for (int k = 0; k <= 2000; ++k) {
-        const double t = k == 2000 ? d.hi : d.lo + (d.hi - d.lo) * k / 2000;
-        worst = std::max(worst, glm::distance(*curve_point(a, t), *curve_point(b, t)));
-    }
-    return worst;
-}
-
-double surface_distance(const Surface& a, const Surface& b) {
-    const Interval du = domain(a.knots_u, a.degree_u, a.n_u);
-    const Interval dv = domain(a.knots_v, a.degree_v, a.n_v);
-    double worst = 0;
-    for (int i = 0; i <= 60; ++i)
-        for (int j = 0; j <= 60; ++j) {
-            const double u = i == 60 ? du.hi : du.lo + (du.hi - du.lo) * i / 60;
-            const double v = j == 60 ? dv.hi : dv.lo + (dv.hi - dv.lo) * j / 60;
-            worst =
-                std::max(worst, glm::distance(*surface_point(a, u, v), *surface_point(b, u, v)));
-        }
-    return worst;
-}
 
 void expect_same_net(const Curve& a, const Curve& b, double tol) {
     ASSERT_EQ(a.knots.size(), b.knots.size());
@@ -109,7 +85,7 @@ TEST(RemoveKnot, NeverReportsARemovalBeyondTheTolerance) {
         ASSERT_TRUE(r.ok());
         EXPECT_LE(r->max_deviation, tolerance);
         // An independent dense sample agrees (up to what the sampling may miss).
-        EXPECT_LE(curve_distance(refined, r->curve), tolerance * 1.05) << "trial " << trial;
+        EXPECT_LE(sampled_distance(refined, r->curve), tolerance * 1.05) << "trial " << trial;
         EXPECT_EQ(r->curve.count(), refined.count() - r->removed);
     }
 }
@@ -155,7 +131,7 @@ TEST(RemoveKnot, ASurfaceRemovalCountsOnlyIfEveryLinePasses) {
     ASSERT_TRUE(loose.ok());
     EXPECT_EQ(loose->removed, 1);
     EXPECT_LE(loose->max_deviation, 1.0);
-    EXPECT_LE(surface_distance(refined, loose->surface), 1.0);
+    EXPECT_LE(sampled_distance(refined, loose->surface), 1.0);
 }
 
 TEST(RemoveKnot, RefusesValuesThatAreNotInteriorKnots) {
@@ -195,5 +171,5 @@ TEST(RemoveKnot, MergesTheTwoPointsOfAContinuousFullMultiplicityKnot) {
     ASSERT_TRUE(r.ok());
     EXPECT_EQ(r->removed, 1);
     EXPECT_EQ(multiplicity(r->curve.knots, 0.5), 2);
-    EXPECT_LT(curve_distance(c, r->curve), 1e-12);
+    EXPECT_LT(sampled_distance(c, r->curve), 1e-12);
 }
