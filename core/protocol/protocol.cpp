@@ -33,7 +33,7 @@ struct OpEntry {
 };
 
 // Adding an op is one line here and one file (see detail.hpp).
-constexpr std::array<OpEntry, 16> op_table = {{
+constexpr std::array<OpEntry, 17> op_table = {{
     {"evaluate", protocol::op_evaluate},
     {"basis", protocol::op_basis},
     {"deboor", protocol::op_deboor},
@@ -50,6 +50,7 @@ constexpr std::array<OpEntry, 16> op_table = {{
     {"swing", protocol::op_swing},
     {"sweep", protocol::op_sweep},
     {"skin", protocol::op_skin},
+    {"coons", protocol::op_coons},
 }};
 
 json error_response(const Error& e) {
