@@ -10,28 +10,34 @@ std::optional<glm::dvec3> DeBoorTriangle::cartesian(const HPoint& h) {
     return glm::dvec3(h) / h.w;
 }
 
-DeBoorTriangle deboor_homogeneous(const Knots& U, int p, const std::vector<HPoint>& Pw, double t) {
-    const int n = static_cast<int>(Pw.size());
+DeBoorTriangle deboor_polar(const Knots& U, int p, const std::vector<HPoint>& Pw, int span,
+                            const std::vector<double>& args) {
     DeBoorTriangle tri;
-    tri.span = find_span(U, p, n, t);
-    tri.first_index = tri.span - p;
+    tri.span = span;
+    tri.first_index = span - p;
     tri.levels.resize(p + 1);
-    tri.levels[0].assign(Pw.begin() + tri.first_index, Pw.begin() + tri.span + 1);
+    tri.levels[0].assign(Pw.begin() + tri.first_index, Pw.begin() + span + 1);
     // Level k, entry r stands for P_i^k with i = s - p + k + r:
-    // P_i^k = (1 - a) P_{i-1}^{k-1} + a P_i^{k-1},  a = (t - U_i) / (U_{i+p+1-k} - U_i).
+    // P_i^k = (1 - a) P_{i-1}^{k-1} + a P_i^{k-1},  a = (t_k - U_i) / (U_{i+p+1-k} - U_i).
     // On the span s the denominators are positive (U_{i+p+1-k} >= U_{s+1} > U_s >= U_i), so
     // this is right at knots of any multiplicity.
     for (int k = 1; k <= p; ++k) {
+        const double t = args[k - 1];
         const auto& prev = tri.levels[k - 1];
         auto& cur = tri.levels[k];
         cur.resize(p + 1 - k);
         for (int r = 0; r <= p - k; ++r) {
-            const int i = tri.span - p + k + r;
+            const int i = span - p + k + r;
             const double a = (t - U[i]) / (U[i + p + 1 - k] - U[i]);
             cur[r] = (1.0 - a) * prev[r] + a * prev[r + 1];
         }
     }
     return tri;
+}
+
+DeBoorTriangle deboor_homogeneous(const Knots& U, int p, const std::vector<HPoint>& Pw, double t) {
+    const int span = find_span(U, p, static_cast<int>(Pw.size()), t);
+    return deboor_polar(U, p, Pw, span, std::vector<double>(p, t));
 }
 
 DeBoorTriangle deboor_curve(const Curve& c, double t) {

@@ -23,6 +23,15 @@ struct DeBoorTriangle {
 DeBoorTriangle deboor_curve(const Curve& c, double t);
 DeBoorTriangle deboor_homogeneous(const Knots& U, int p, const std::vector<HPoint>& Pw, double t);
 
+// The same triangle with a different argument at each level: level k uses args[k - 1]. Its
+// apex is the blossom (polar form) f(args[0], ..., args[p-1]) of the polynomial piece on the
+// non-empty span [U[span], U[span+1]) (Ramshaw; Farin ch. 4, Piegl & Tiller sec. 5.5): symmetric
+// and multi-affine in its arguments, f(t, ..., t) the curve point, f(U[i+1], ..., U[i+p]) the
+// control point P_i for span - p <= i <= span. Arguments outside the span extend the
+// polynomial. Preconditions: p <= span < n, U[span] < U[span+1], args.size() == p.
+DeBoorTriangle deboor_polar(const Knots& U, int p, const std::vector<HPoint>& Pw, int span,
+                            const std::vector<double>& args);
+
 // As the paper does it: each u-row curve (through P_{*,j}) at u, then the curve through
 // those results at v.
 struct DeBoorSurfaceTrace {

@@ -37,6 +37,8 @@ OpResult op_evaluate(const json& request);    // op_evaluate.cpp
 OpResult op_basis(const json& request);       // op_basis.cpp
 OpResult op_deboor(const json& request);      // op_deboor.cpp
 OpResult op_curvature(const json& request);   // op_curvature.cpp
+OpResult op_blossom(const json& request);     // op_blossom.cpp
+OpResult op_convert(const json& request);     // op_convert.cpp
 OpResult op_tessellate(const json& request);  // op_tessellate.cpp
 OpResult op_insert_knot(const json& request); // op_refine.cpp
 OpResult op_elevate_degree(const json& request);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/json/shapes.hpp"
+#include "core/geom/coons.hpp"
 #include "core/geom/construct.hpp"
 
 namespace isoparm::protocol {
@@ -142,6 +143,17 @@ OpResult op_skin(const json& request) {
     auto s = geom::skin(*curves, static_cast<int>(*degree), mode);
     if (!s) return s.error();
     return json{{"surface", surface_to_json(s->surface)}, {"params", s->params}};
+}
+
+OpResult op_coons(const json& request) {
+    if (geom::Status s = check_fields(request, "coons", {"curves"}); !s) return s.error();
+    auto curves = read_curves(request, "coons", 4, 4);
+    if (!curves) return curves.error();
+    auto s = geom::coons({(*curves)[0], (*curves)[1], (*curves)[2], (*curves)[3]});
+    if (!s) return s.error();
+    json answer = json::object();
+    answer["surface"] = surface_to_json(*s);
+    return answer;
 }
 
 } // namespace isoparm::protocol

@@ -33,11 +33,12 @@ struct OpEntry {
 };
 
 // Adding an op is one line here and one file (see detail.hpp).
-constexpr std::array<OpEntry, 15> op_table = {{
+constexpr std::array<OpEntry, 18> op_table = {{
     {"evaluate", protocol::op_evaluate},
     {"basis", protocol::op_basis},
     {"deboor", protocol::op_deboor},
     {"curvature", protocol::op_curvature},
+    {"blossom", protocol::op_blossom},
     {"insert_knot", protocol::op_insert_knot},
     {"elevate_degree", protocol::op_elevate_degree},
     {"split", protocol::op_split},
@@ -49,6 +50,8 @@ constexpr std::array<OpEntry, 15> op_table = {{
     {"swing", protocol::op_swing},
     {"sweep", protocol::op_sweep},
     {"skin", protocol::op_skin},
+    {"coons", protocol::op_coons},
+    {"convert", protocol::op_convert},
 }};
 
 json error_response(const Error& e) {

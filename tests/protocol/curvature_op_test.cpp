@@ -67,3 +67,48 @@ TEST(CurvatureOp, RefusesLikeEvaluate) {
 }
 
 } // namespace
+
+namespace {
+
+TEST(BlossomOp, AnswersThePolarFormAndItsSpan) {
+    const json curve = {{"degree", 2},
+                        {"knots", {0, 0, 0, 0.5, 1, 1, 1}},
+                        {"points", {{0, 0}, {1, 2}, {2, 0}, {3, 1}}}};
+    // f(t_2, t_3) on piece 2 ([0, 0.5)) is P_1 = (1, 2).
+    json a = protocol::handle_request({{"op", "blossom"}, {"curve", curve}, {"args", {0, 0.5}}});
+    ASSERT_TRUE(a["ok"].get<bool>()) << a.dump();
+    EXPECT_EQ(a["span"], 2);
+    EXPECT_EQ(a["point"], json::array({1.0, 2.0, 0.0}));
+    // The same arguments on the next piece: f(t_3, t_4) = P_2 needs (0.5, 1).
+    a = protocol::handle_request(
+        {{"op", "blossom"}, {"curve", curve}, {"args", {0.5, 1}}, {"span", 3}});
+    EXPECT_EQ(a["point"], json::array({2.0, 0.0, 0.0}));
+    a = protocol::handle_request({{"op", "blossom"}, {"curve", curve}, {"args", {0.5}}});
+    EXPECT_EQ(a["error"]["code"], "schema");
+    EXPECT_EQ(a["error"]["path"], "/args");
+    a = protocol::handle_request(
+        {{"op", "blossom"}, {"curve", curve}, {"args", {0.5, 0.5}}, {"span", 1}});
+    EXPECT_EQ(a["error"]["path"], "/span");
+    a = protocol::handle_request(
+        {{"op", "blossom"}, {"curve", curve}, {"args", {0.5, 0.5}}, {"u_args", {1}}});
+    EXPECT_EQ(a["error"]["path"], "/u_args");
+}
+
+TEST(BlossomOp, SurfacePieceIsNamedByBothSpans) {
+    const json surface = {{"degree", {1, 1}},
+                          {"knots", {{0, 0, 1, 1}, {0, 0, 1, 1}}},
+                          {"points", {{{0, 0, 0}, {0, 1, 0}}, {{1, 0, 0}, {1, 1, 1}}}}};
+    json a = protocol::handle_request(
+        {{"op", "blossom"}, {"surface", surface}, {"u_args", {0.5}}, {"v_args", {0.5}}});
+    ASSERT_TRUE(a["ok"].get<bool>()) << a.dump();
+    EXPECT_EQ(a["span"], json::array({1, 1}));
+    EXPECT_EQ(a["point"], json::array({0.5, 0.5, 0.25}));
+    a = protocol::handle_request({{"op", "blossom"},
+                                  {"surface", surface},
+                                  {"u_args", {0.5}},
+                                  {"v_args", {0.5}},
+                                  {"span", {1, 2}}});
+    EXPECT_EQ(a["error"]["path"], "/span/1");
+}
+
+} // namespace
