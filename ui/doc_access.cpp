@@ -29,19 +29,20 @@ const geom::Surface* current_surface(const doc::Document& d, const doc::Object**
 
 bool has_valid_point(const doc::Document& d) {
     const doc::Object* o = d.selected();
-    if (!o || !d.selection.has_point()) return false;
+    if (!o || !d.view.selection.has_point()) return false;
     if (const geom::Surface* s = surface_of(*o))
-        return d.selection.i < s->n_u && d.selection.j >= 0 && d.selection.j < s->n_v;
+        return d.view.selection.i < s->n_u && d.view.selection.j >= 0 &&
+               d.view.selection.j < s->n_v;
     if (const auto* c = std::get_if<doc::CurveObject>(&o->shape))
-        return d.selection.i < c->curve.count();
+        return d.view.selection.i < c->curve.count();
     return false;
 }
 
 void normalize_selection(doc::Document& d) {
-    if (d.selection.object != 0 && !d.find(d.selection.object)) d.selection = {};
-    if (d.selection.has_point() && !has_valid_point(d)) {
-        d.selection.i = -1;
-        d.selection.j = -1;
+    if (d.view.selection.object != 0 && !d.find(d.view.selection.object)) d.view.selection = {};
+    if (d.view.selection.has_point() && !has_valid_point(d)) {
+        d.view.selection.i = -1;
+        d.view.selection.j = -1;
     }
 }
 
@@ -71,8 +72,8 @@ glm::dvec2 indicator_params(const doc::Document& d, const doc::Object& surface_o
     // patch's part of the square (for a frame, or in a hole of the group), and evaluation
     // needs a parameter inside the domain.
     const doc::ParamRect own = doc::surface_domain(*surface_of(surface_object));
-    return {std::clamp(denormalize_param(r.u, d.indicator.x), own.u.lo, own.u.hi),
-            std::clamp(denormalize_param(r.v, d.indicator.y), own.v.lo, own.v.hi)};
+    return {std::clamp(denormalize_param(r.u, d.view.indicator.x), own.u.lo, own.u.hi),
+            std::clamp(denormalize_param(r.v, d.view.indicator.y), own.v.lo, own.v.hi)};
 }
 
 glm::dvec2 indicator_in_own_domain(const doc::Document& d, const doc::Object& surface_object) {

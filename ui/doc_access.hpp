@@ -29,12 +29,12 @@ std::string point_name(char prefix, int i, int j, const doc::Document& d);
 std::string point_name(char prefix, int i, int j, int n_u, int n_v);
 
 // The indicator's (u, v) in the surface's own parameters, always inside its domain.
-// doc.indicator is normalized over the tracing domain: the surface's own, or for a subpatch
+// doc.view.indicator is normalized over the tracing domain: the surface's own, or for a subpatch
 // the whole original domain its group tiles (core/doc/patches.hpp); outside the subpatch's
 // own part it is clamped to the nearest point of that part.
 glm::dvec2 indicator_params(const doc::Document& d, const doc::Object& surface_object);
 // The indicator normalized over the object's own domain (for panels that show one patch),
-// and back to doc.indicator's normalization.
+// and back to doc.view.indicator's normalization.
 glm::dvec2 indicator_in_own_domain(const doc::Document& d, const doc::Object& surface_object);
 glm::dvec2 indicator_from_own_domain(const doc::Document& d, const doc::Object& surface_object,
                                      glm::dvec2 own);

@@ -19,7 +19,7 @@ SceneDisplayCost estimate_scene_display(const doc::Document& d) {
         const auto* s = std::get_if<doc::SurfaceObject>(&o.shape);
         if (!s) continue;
         cost.control_points += static_cast<double>(s->surface.points.size());
-        const auto [su, sv] = display_samples(s->surface, d.display.density);
+        const auto [su, sv] = display_samples(s->surface, d.view.display.density);
         const double vertices = static_cast<double>(su) * sv;
         ++cost.surfaces;
         cost.vertices += vertices;

@@ -103,7 +103,7 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
     const float k = style.scale;
     const doc::Colors col = readable_overlay_colors(d.colors);
     const glm::vec3 background(col.background.r, col.background.g, col.background.b);
-    const doc::DisplaySettings& disp = d.display;
+    const doc::DisplaySettings& disp = d.view.display;
     const bool shaded = disp.style != doc::DisplayStyle::wireframe;
     const bool wire = disp.style != doc::DisplayStyle::shaded;
 
@@ -126,7 +126,7 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
 
     for (const doc::Object& o : d.objects) {
         if (!o.visible) continue;
-        const bool is_selected = o.id == d.selection.object;
+        const bool is_selected = o.id == d.view.selection.object;
         if (const geom::Surface* s = surface_of(o)) {
             SurfaceDraw sd;
             sd.id = o.id;
@@ -147,7 +147,8 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
             if (disp.control_points)
                 for (int i = 0; i < s->n_u; ++i)
                     for (int j = 0; j < s->n_v; ++j) {
-                        const bool sel = is_selected && d.selection.i == i && d.selection.j == j;
+                        const bool sel =
+                            is_selected && d.view.selection.i == i && d.view.selection.j == j;
                         if (sel) continue;
                         points.points.push_back(
                             {glm::vec3(s->point(i, j)), to_vec4(col.control_points)});
@@ -199,7 +200,7 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
             }
             if (disp.control_points)
                 for (int i = 0; i < c->curve.count(); ++i)
-                    if (!(is_selected && d.selection.i == i))
+                    if (!(is_selected && d.view.selection.i == i))
                         points.points.push_back(
                             {glm::vec3(c->curve.points[i]), to_vec4(col.control_points)});
         }
@@ -210,9 +211,9 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
         const doc::Object* o = d.selected();
         glm::dvec3 p{0};
         if (const geom::Surface* s = surface_of(*o))
-            p = s->point(d.selection.i, d.selection.j);
+            p = s->point(d.view.selection.i, d.view.selection.j);
         else if (const auto* c = std::get_if<doc::CurveObject>(&o->shape))
-            p = c->curve.points[d.selection.i];
+            p = c->curve.points[d.view.selection.i];
         selected.points.push_back({glm::vec3(p), to_vec4(col.selected_point)});
     }
 

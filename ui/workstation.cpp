@@ -230,8 +230,8 @@ void Workstation::frame(unsigned target_framebuffer) {
     normalize_selection(ctx_.doc);
     // Whenever de Boor's construction is switched on (menu, key, a loaded scene), its tab
     // comes forward.
-    if (ctx_.doc.display.deboor && !deboor_was_on_) ui.deboor.show_tab = true;
-    deboor_was_on_ = ctx_.doc.display.deboor;
+    if (ctx_.doc.view.display.deboor && !deboor_was_on_) ui.deboor.show_tab = true;
+    deboor_was_on_ = ctx_.doc.view.display.deboor;
     // De Boor's animation steps on a clock; frames keep coming while it plays.
     if (deboor_tick(ctx_, ImGui::GetTime()) && request_frame_) request_frame_();
     ui.implicit.dragging = false; // set again by the implicit panel while a slider is held
@@ -263,7 +263,7 @@ void Workstation::frame(unsigned target_framebuffer) {
         last_current_ = current ? doc::sync_patch_and_indicator(ctx_.doc, current->id,
                                                                 last_indicator_, last_current_)
                                 : 0;
-        last_indicator_ = ctx_.doc.indicator;
+        last_indicator_ = ctx_.doc.view.indicator;
     }
 
     // The 3D view into its texture, with the camera and document of this very frame.

@@ -149,10 +149,13 @@ bool same_geometry(const Document& a, const Document& b) {
     return same_colors(a.colors, b.colors);
 }
 
+bool same_view(const ViewState& a, const ViewState& b) {
+    return a.selection == b.selection && same_bits(a.indicator.x, b.indicator.x) &&
+           same_bits(a.indicator.y, b.indicator.y) && a.display == b.display;
+}
+
 bool same_document(const Document& a, const Document& b) {
-    return same_geometry(a, b) && a.selection == b.selection &&
-           same_bits(a.indicator.x, b.indicator.x) && same_bits(a.indicator.y, b.indicator.y) &&
-           a.display == b.display && a.continuity == b.continuity;
+    return same_geometry(a, b) && same_view(a.view, b.view) && a.continuity == b.continuity;
 }
 
 const char* continuity_name(Continuity c) {
@@ -201,8 +204,8 @@ Document default_document() {
     hill.name = "hill";
     hill.shape = SurfaceObject{std::move(s)};
     doc.objects.push_back(std::move(hill));
-    doc.selection = Selection{doc.objects[0].id, 2, 2};
-    doc.indicator = {0.5, 0.5};
+    doc.view.selection = Selection{doc.objects[0].id, 2, 2};
+    doc.view.indicator = {0.5, 0.5};
     return doc;
 }
 

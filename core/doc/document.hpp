@@ -105,7 +105,7 @@ struct Colors {
 
 enum class DisplayStyle { shaded, wireframe, both };
 
-// View state: saved with the scene, but not part of undo.
+// What is drawn and how (part of the view state below).
 struct DisplaySettings {
     DisplayStyle style = DisplayStyle::both;
     bool control_points = true;
@@ -125,20 +125,25 @@ struct Selection {
     bool operator==(const Selection&) const = default;
 };
 
-struct Document {
-    std::vector<Object> objects;
-    Colors colors;
-    // View state (not undoable):
+// What the user is looking at rather than what the scene is: saved with the scene, but not
+// part of undo (an undo restores geometry and leaves the view where it is).
+struct ViewState {
     Selection selection;
     glm::dvec2 indicator{0.5, 0.5}; // (u, v) normalized to [0,1]^2 over the current domain
     DisplaySettings display;
+};
+
+struct Document {
+    std::vector<Object> objects;
+    Colors colors;
+    ViewState view;
     Continuity continuity = Continuity::off; // a setting, saved with the scene; not undoable
     std::uint64_t next_id = 1;
 
     Object* find(std::uint64_t id);
     const Object* find(std::uint64_t id) const;
     int index_of(std::uint64_t id) const; // -1 if absent
-    const Object* selected() const { return find(selection.object); }
+    const Object* selected() const { return find(view.selection.object); }
     std::uint64_t allocate_id() { return next_id++; }
 };
 
@@ -147,7 +152,9 @@ struct Document {
 bool same_geometry(const Document& a, const Document& b);
 // One object, bit for bit (as same_geometry compares them).
 bool same_object(const Object& a, const Object& b);
-// same_geometry plus the view state (selection, indicator, display settings), bit for bit.
+// The view state (selection, indicator, display settings), bit for bit.
+bool same_view(const ViewState& a, const ViewState& b);
+// same_geometry plus the view state and the continuity setting, bit for bit.
 bool same_document(const Document& a, const Document& b);
 
 // The welcoming default scene: a shaped 5x5 bicubic NURBS surface.

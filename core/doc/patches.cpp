@@ -169,8 +169,8 @@ std::uint64_t patch_for_indicator(const Document& doc, std::uint64_t current) {
     const Object* o = doc.find(current);
     if (!o || o->patch_group == 0 || !surface_of(*o)) return current;
     const ParamRect r = tracing_domain(doc, *o);
-    const glm::dvec2 uv{r.u.lo + doc.indicator.x * (r.u.hi - r.u.lo),
-                        r.v.lo + doc.indicator.y * (r.v.hi - r.v.lo)};
+    const glm::dvec2 uv{r.u.lo + doc.view.indicator.x * (r.u.hi - r.u.lo),
+                        r.v.lo + doc.view.indicator.y * (r.v.hi - r.v.lo)};
     const std::uint64_t found = patch_at(doc, o->patch_group, uv, current);
     return found != 0 ? found : current;
 }
@@ -178,7 +178,7 @@ std::uint64_t patch_for_indicator(const Document& doc, std::uint64_t current) {
 bool follow_indicator(Document& doc, std::uint64_t current) {
     const std::uint64_t next = patch_for_indicator(doc, current);
     if (next == current) return false;
-    doc.selection = {next, -1, -1};
+    doc.view.selection = {next, -1, -1};
     return true;
 }
 
@@ -186,9 +186,9 @@ std::uint64_t sync_patch_and_indicator(Document& doc, std::uint64_t current,
                                        glm::dvec2 last_indicator, std::uint64_t last_current) {
     const Object* o = doc.find(current);
     if (!o || o->patch_group == 0 || !surface_of(*o)) return current;
-    if (!(doc.indicator == last_indicator)) {
+    if (!(doc.view.indicator == last_indicator)) {
         const std::uint64_t next = patch_for_indicator(doc, current);
-        if (next != current) doc.selection = {next, -1, -1};
+        if (next != current) doc.view.selection = {next, -1, -1};
         return next;
     }
     if (current == last_current) return current;
@@ -198,7 +198,8 @@ std::uint64_t sync_patch_and_indicator(Document& doc, std::uint64_t current,
         const double t = std::clamp(whole.lo + s * (whole.hi - whole.lo), part.lo, part.hi);
         return whole.hi > whole.lo ? (t - whole.lo) / (whole.hi - whole.lo) : 0.0;
     };
-    doc.indicator = {into(all.u, own.u, doc.indicator.x), into(all.v, own.v, doc.indicator.y)};
+    doc.view.indicator = {into(all.u, own.u, doc.view.indicator.x),
+                          into(all.v, own.v, doc.view.indicator.y)};
     return current;
 }
 

@@ -428,17 +428,17 @@ json scene_to_json(const Document& doc) {
     for (const auto& [name, c] : color_fields(doc.colors)) colors[name] = color_to_json(*c);
 
     json display = json::object();
-    display["style"] = style_name(doc.display.style);
-    for (const auto& [name, flag] : display_flags(doc.display)) display[name] = *flag;
-    display["density"] = doc.display.density;
+    display["style"] = style_name(doc.view.display.style);
+    for (const auto& [name, flag] : display_flags(doc.view.display)) display[name] = *flag;
+    display["density"] = doc.view.display.density;
 
     json selection = nullptr;
-    if (doc.find(doc.selection.object)) {
-        selection = {{"object", doc.selection.object}};
-        if (doc.selection.has_point())
-            selection["point"] = doc.selection.j >= 0
-                                     ? json::array({doc.selection.i, doc.selection.j})
-                                     : json::array({doc.selection.i});
+    if (doc.find(doc.view.selection.object)) {
+        selection = {{"object", doc.view.selection.object}};
+        if (doc.view.selection.has_point())
+            selection["point"] = doc.view.selection.j >= 0
+                                     ? json::array({doc.view.selection.i, doc.view.selection.j})
+                                     : json::array({doc.view.selection.i});
     }
 
     json scene = json::object();
@@ -448,7 +448,7 @@ json scene_to_json(const Document& doc) {
     scene["colors"] = std::move(colors);
     scene["display"] = std::move(display);
     scene["selection"] = std::move(selection);
-    scene["indicator"] = json::array({doc.indicator.x, doc.indicator.y});
+    scene["indicator"] = json::array({doc.view.indicator.x, doc.view.indicator.y});
     if (doc.continuity != Continuity::off) scene["continuity"] = continuity_name(doc.continuity);
     return scene;
 }
@@ -511,9 +511,9 @@ Expected<Document> scene_from_json(const json& j) {
     if (const auto c = j.find("colors"); c != j.end())
         if (auto e = read_colors(*c, doc.colors)) return *e;
     if (const auto d = j.find("display"); d != j.end())
-        if (auto e = read_display(*d, doc.display)) return *e;
+        if (auto e = read_display(*d, doc.view.display)) return *e;
     if (const auto s = j.find("selection"); s != j.end())
-        if (auto e = read_selection(*s, doc, doc.selection)) return *e;
+        if (auto e = read_selection(*s, doc, doc.view.selection)) return *e;
     if (const auto c = j.find("continuity"); c != j.end()) {
         auto name = read_string(*c, "/continuity", "continuity");
         if (!name) return name.error();
@@ -535,7 +535,7 @@ Expected<Document> scene_from_json(const json& j) {
                 return schema_error("indicator coordinates are in [0, 1] (over the domain), got " +
                                   geom::format_number(*x),
                               at);
-            doc.indicator[a] = *x;
+            doc.view.indicator[a] = *x;
         }
     }
     return doc;

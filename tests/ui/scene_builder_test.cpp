@@ -61,21 +61,21 @@ TEST(SceneBuilder, DefaultDocumentDrawsSurfaceNetPointsAndIndicator) {
     for (const LineBatch& l : scene.overlay.lines) net_segments += l.vertices.size() / 2;
     // Every control point plus S(u,v); at least the net's segments among the lines.
     EXPECT_EQ(points,
-              static_cast<std::size_t>(s->n_u * s->n_v) + (d.display.indicator_point ? 1 : 0));
+              static_cast<std::size_t>(s->n_u * s->n_v) + (d.view.display.indicator_point ? 1 : 0));
     EXPECT_GE(net_segments,
               static_cast<std::size_t>(s->n_u * (s->n_v - 1) + s->n_v * (s->n_u - 1)));
 }
 
 TEST(SceneBuilder, TogglesRemoveWhatTheyHide) {
     doc::Document d = doc::default_document();
-    d.display.control_net = false;
-    d.display.control_points = false;
-    d.display.indicator_point = false;
-    d.display.knot_curves = false;
+    d.view.display.control_net = false;
+    d.view.display.control_points = false;
+    d.view.display.indicator_point = false;
+    d.view.display.knot_curves = false;
     const BuiltScene scene = build_scene(d, {});
     EXPECT_TRUE(scene.overlay.points.empty());
     EXPECT_TRUE(scene.overlay.lines.empty());
-    d.display.style = doc::DisplayStyle::wireframe;
+    d.view.display.style = doc::DisplayStyle::wireframe;
     const BuiltScene wire = build_scene(d, {});
     EXPECT_FALSE(wire.surfaces.front().shaded);
     EXPECT_TRUE(wire.surfaces.front().wireframe);

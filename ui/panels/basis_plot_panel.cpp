@@ -112,7 +112,7 @@ void heat_canvas(AppContext& ctx, const doc::Object& obj, const geom::Surface& s
     // Pressing in the map moves the indicator, as in the tracing panel.
     if (ImGui::IsItemActive()) {
         const ImVec2 m = ImGui::GetIO().MousePos;
-        ctx.doc.indicator =
+        ctx.doc.view.indicator =
             indicator_from_own_domain(ctx.doc, obj, pixel_to_domain(sq, {m.x, m.y}));
     }
 }
@@ -168,8 +168,8 @@ void draw_basis_plot_panel(AppContext& ctx) {
         return;
     }
     const glm::dvec2 uv = indicator_params(ctx.doc, *obj);
-    const bool point = has_valid_point(ctx.doc) && ctx.doc.selection.object == obj->id;
-    const int i = point ? ctx.doc.selection.i : -1, j = point ? ctx.doc.selection.j : -1;
+    const bool point = has_valid_point(ctx.doc) && ctx.doc.view.selection.object == obj->id;
+    const int i = point ? ctx.doc.view.selection.i : -1, j = point ? ctx.doc.view.selection.j : -1;
 
     // Partition of unity at the indicator: the sum of the non-zero R_kl.
     const geom::BasisAt bu = geom::basis_at(s->knots_u, s->degree_u, s->n_u, uv.x);

@@ -90,7 +90,7 @@ void handle_press(AppContext& ctx, std::uint64_t id, const geom::Curve& g, const
     // Points drawn last are on top: search from the end.
     for (int i = g.count() - 1; i >= 0; --i)
         if (glm::length(px(i) - mouse) <= 8 * k) {
-            ctx.doc.selection = {id, i, -1};
+            ctx.doc.view.selection = {id, i, -1};
             start_drag(cd, i, map, mouse - px(i));
             return;
         }
@@ -248,7 +248,7 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const doc::CurveObjec
         }
     }
     // Control points, labelled P0..Pn while the labels stay readable.
-    const int sel = ctx.doc.selection.object == id ? ctx.doc.selection.i : -1;
+    const int sel = ctx.doc.view.selection.object == id ? ctx.doc.view.selection.i : -1;
     const ImU32 text_col = ImGui::GetColorU32(ImGuiCol_Text);
     for (int i = 0; i < g.count(); ++i) {
         const ImVec2 q = px(g.points[static_cast<std::size_t>(i)]);

@@ -73,7 +73,7 @@ void plane_row(AppContext& ctx, const doc::Object& obj, const doc::CurveObject& 
 }
 
 void point_controls(AppContext& ctx, const doc::Object& obj, const doc::CurveObject& c) {
-    const int i = ctx.doc.selection.object == obj.id ? ctx.doc.selection.i : -1;
+    const int i = ctx.doc.view.selection.object == obj.id ? ctx.doc.view.selection.i : -1;
     const geom::Curve& g = c.curve;
     if (i < 0 || i >= g.count()) {
         hint_text("Click a point on the canvas to select it.");
@@ -249,7 +249,7 @@ void primitives(AppContext& ctx, const doc::CurveObject* c) {
         }
         ctx.seal();
         if (ctx.execute(doc::add_object(std::move(o).value())))
-            ctx.doc.selection = {ctx.doc.objects.back().id, -1, -1};
+            ctx.doc.view.selection = {ctx.doc.objects.back().id, -1, -1};
         ctx.seal();
     };
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
@@ -305,8 +305,8 @@ void draw_curve_designer_panel(AppContext& ctx) {
     // Delete key: the selected point of this curve, unless a field has the keyboard.
     if (!ImGui::GetIO().WantTextInput && ImGui::IsWindowFocused() &&
         ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Delete), false) &&
-        ctx.doc.selection.object == id && ctx.doc.selection.has_point())
-        run(ctx, doc::delete_curve_point(id, ctx.doc.selection.i));
+        ctx.doc.view.selection.object == id && ctx.doc.view.selection.has_point())
+        run(ctx, doc::delete_curve_point(id, ctx.doc.view.selection.i));
 
     if (!(c = selected_curve(ctx, &obj))) return;
     point_controls(ctx, *obj, *c);
@@ -323,7 +323,7 @@ void draw_curve_designer_panel(AppContext& ctx) {
     refine_controls(ctx, *obj, *c);
     if (!(c = selected_curve(ctx, &obj))) return;
     if (ImGui::CollapsingHeader("Basis functions", ImGuiTreeNodeFlags_DefaultOpen)) {
-        const int sel = ctx.doc.selection.object == id ? ctx.doc.selection.i : -1;
+        const int sel = ctx.doc.view.selection.object == id ? ctx.doc.view.selection.i : -1;
         const ImVec2 p = ImGui::GetCursorScreenPos();
         basis_plot(ctx, *c, sel, {p.x, p.y, ImGui::GetContentRegionAvail().x, 90 * k});
         // Partition of unity at t: the functions sum to 1 wherever the curve exists.

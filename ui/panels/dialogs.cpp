@@ -95,7 +95,7 @@ void new_surface_dialog(AppContext& ctx) {
         doc::place_beside_scene(ctx.doc, o.shape);
         ctx.seal();
         if (ctx.execute(doc::add_object(std::move(o)))) {
-            ctx.doc.selection = {ctx.doc.objects.back().id, -1, -1};
+            ctx.doc.view.selection = {ctx.doc.objects.back().id, -1, -1};
             fit_view(ctx);
         }
         ctx.seal();

@@ -77,7 +77,7 @@ void draw_object_list_panel(AppContext& ctx) {
                     st.renaming = 0; // Esc or a click elsewhere: the name stays
                 }
             } else {
-                const bool selected = o.id == ctx.doc.selection.object;
+                const bool selected = o.id == ctx.doc.view.selection.object;
                 const bool clicked = ImGui::Selectable(label.c_str(), selected,
                                                        ImGuiSelectableFlags_AllowDoubleClick);
                 report_item("objects/" + label);
@@ -103,7 +103,8 @@ void draw_object_list_panel(AppContext& ctx) {
         ImGui::EndTable();
     }
     // Applied after the loop: the commands change the list being drawn.
-    if (select != 0 && select != ctx.doc.selection.object) ctx.doc.selection = {select, -1, -1};
+    if (select != 0 && select != ctx.doc.view.selection.object)
+        ctx.doc.view.selection = {select, -1, -1};
     if (show.first != 0) run_alone(ctx, doc::set_visible(show.first, show.second));
     if (remove != 0 && run_alone(ctx, doc::remove_object(remove))) normalize_selection(ctx.doc);
 }

@@ -256,7 +256,7 @@ void draw_tracing_panel(AppContext& ctx) {
     report_item("tracing/square");
     if (ImGui::IsItemActive()) {
         const ImVec2 m = ImGui::GetIO().MousePos;
-        ctx.doc.indicator = pixel_to_domain(sq, {m.x, m.y}); // view state, not undoable
+        ctx.doc.view.indicator = pixel_to_domain(sq, {m.x, m.y}); // view state, not undoable
     }
     ctx.ui.indicator_drag = ImGui::IsItemActive();
 
@@ -367,7 +367,7 @@ void draw_tracing_panel(AppContext& ctx) {
     dl->AddText(ImVec2(a.x + 4 * k, a.y + 2 * k), pal.text, "v");
 
     // The indicator with its two isoparametric lines.
-    const ImVec2 ip = iv(domain_to_pixel(sq, ctx.doc.indicator));
+    const ImVec2 ip = iv(domain_to_pixel(sq, ctx.doc.view.indicator));
     dl->AddLine(ImVec2(ip.x, a.y), ImVec2(ip.x, b.y), pal.cross, 1.5f * k);
     dl->AddLine(ImVec2(a.x, ip.y), ImVec2(b.x, ip.y), pal.cross, 1.5f * k);
     dl->AddCircleFilled(ip, 7 * k, pal.indicator, 24);
@@ -393,12 +393,12 @@ void draw_tracing_panel(AppContext& ctx) {
                                 : std::max(avail.x - label, field);
     ImGui::SetNextItemWidth(width);
     if (ImGui::InputDouble("u", &u, 0.01, 0.1, "%.4f"))
-        ctx.doc.indicator.x = std::clamp(normalize_param(dom.u, u), 0.0, 1.0);
+        ctx.doc.view.indicator.x = std::clamp(normalize_param(dom.u, u), 0.0, 1.0);
     report_item("tracing/u");
     if (one_row) ImGui::SameLine();
     ImGui::SetNextItemWidth(width);
     if (ImGui::InputDouble("v", &v, 0.01, 0.1, "%.4f"))
-        ctx.doc.indicator.y = std::clamp(normalize_param(dom.v, v), 0.0, 1.0);
+        ctx.doc.view.indicator.y = std::clamp(normalize_param(dom.v, v), 0.0, 1.0);
     report_item("tracing/v");
     if (note) action_note_line(ctx, *note);
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));

@@ -41,7 +41,7 @@ struct Candidate {
 // Every control point the user can click: those of visible objects, when points are shown.
 std::vector<Candidate> pick_candidates(const doc::Document& d) {
     std::vector<Candidate> out;
-    if (!d.display.control_points) return out;
+    if (!d.view.display.control_points) return out;
     for (const doc::Object& o : d.objects) {
         if (!o.visible) continue;
         if (const geom::Surface* s = surface_of(o)) {
@@ -97,7 +97,7 @@ void handle_mouse(AppContext& ctx, const Viewport& vp) {
         drag.start_mouse = mouse;
         if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !io.KeyCtrl) {
             if (const auto hit = pick(ctx, vp, mouse)) {
-                ctx.doc.selection = {hit->ref.object, hit->ref.i, hit->ref.j};
+                ctx.doc.view.selection = {hit->ref.object, hit->ref.i, hit->ref.j};
                 drag.kind = ViewDrag::Kind::point;
                 drag.point = hit->ref;
                 drag.start = hit->position;
@@ -145,7 +145,7 @@ void handle_mouse(AppContext& ctx, const Viewport& vp) {
 
     if (ImGui::IsItemDeactivated()) {
         if (drag.kind == ViewDrag::Kind::orbit && !drag.moved) {
-            ctx.doc.selection.i = ctx.doc.selection.j = -1; // a click on empty space
+            ctx.doc.view.selection.i = ctx.doc.view.selection.j = -1; // a click on empty space
         }
         drag = {};
         ctx.seal();
@@ -173,7 +173,7 @@ void report_projected_points(const AppContext& ctx, const Viewport& vp) {
 
 void draw_labels(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
     const doc::Document& d = ctx.doc;
-    if (!d.display.point_ids) return;
+    if (!d.view.display.point_ids) return;
     const doc::Object* obj = nullptr;
     const geom::Surface* s = current_surface(d, &obj);
     if (!s) return;
@@ -202,7 +202,7 @@ void draw_labels(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
 // the level's colour: the lecture can say "d^2_3,1" and the room finds it.
 void draw_deboor_labels(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
     const doc::Document& d = ctx.doc;
-    if (!d.display.deboor || ctx.ui.deboor.step < 0) return;
+    if (!d.view.display.deboor || ctx.ui.deboor.step < 0) return;
     const doc::Object* obj = nullptr;
     const geom::Surface* s = current_surface(d, &obj);
     if (!s) return;
