@@ -2,13 +2,12 @@
 
 #include <algorithm>
 #include <glm/geometric.hpp>
-#include <map>
 
 #include "core/geom/construct.hpp"
 #include "core/geom/construct_common.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
-#include "core/geom/refine.hpp"
+#include "core/geom/surface_sum.hpp"
 
 namespace isoparm::geom {
 
@@ -44,34 +43,6 @@ Expected<Curve> polynomial(const Curve& c, int k) {
     p.weights.assign(p.points.size(), 1.0);
     p.type = is_bezier(c.type) ? SplineType::bezier : SplineType::bspline;
     return p;
-}
-
-// Raises both directions to the given degrees and inserts knots so that the surface has
-// exactly the knot vectors U and V (which contain its own, as multisets). Shape unchanged.
-Expected<Surface> refine_to(Surface s, int p, int q, const Knots& U, const Knots& V) {
-    if (s.degree_u < p) {
-        auto e = elevate_degree(s, Dir::u, p - s.degree_u);
-        if (!e) return e.error();
-        s = std::move(e).value();
-    }
-    if (s.degree_v < q) {
-        auto e = elevate_degree(s, Dir::v, q - s.degree_v);
-        if (!e) return e.error();
-        s = std::move(e).value();
-    }
-    for (Dir dir : {Dir::u, Dir::v}) {
-        const Knots& target = dir == Dir::u ? U : V;
-        std::map<double, int> missing;
-        for (double t : target) ++missing[t];
-        for (double t : s.knots(dir)) --missing[t];
-        for (const auto& [t, times] : missing) {
-            if (times <= 0) continue;
-            auto r = insert_knot(s, dir, t, times);
-            if (!r) return r.error();
-            s = std::move(r).value();
-        }
-    }
-    return s;
 }
 
 } // namespace
@@ -128,22 +99,13 @@ Expected<Surface> coons(const std::array<Curve, 4>& curves) {
     bilinear.points = {end(0, false), end(1, false), end(0, true), end(1, true)};
     bilinear.weights.assign(4, 1.0);
 
-    const int p = ru->degree_u, q = rv.degree_v;
-    // The ruled surfaces' degree-1 directions are raised to p (q) and take the other's knots.
-    const Knots &U = ru->knots_u, &V = rv.knots_v;
-    auto a = refine_to(*ru, p, q, U, V);
-    if (!a) return a.error();
-    auto b = refine_to(rv, p, q, U, V);
-    if (!b) return b.error();
-    auto t = refine_to(bilinear, p, q, U, V);
-    if (!t) return t.error();
-    if (Status st = construct_detail::check_result_size(a->n_u, a->n_v); !st) return st.error();
-    Surface s = *a;
-    for (std::size_t k = 0; k < s.points.size(); ++k)
-        s.points[k] = a->points[k] + b->points[k] - t->points[k];
+    auto sum = sum_of_surfaces({{1.0, *ru}, {1.0, rv}, {-1.0, bilinear}});
+    if (!sum) return sum.error();
+    Surface& s = *sum;
     const bool all_bezier = std::all_of(curves.begin(), curves.end(),
                                         [](const Curve& cv) { return is_bezier(cv.type); });
-    s.type = construct_detail::result_type(false, all_bezier && s.n_u == p + 1 && s.n_v == q + 1);
+    s.type = construct_detail::result_type(
+        false, all_bezier && s.n_u == s.degree_u + 1 && s.n_v == s.degree_v + 1);
     return s;
 }
 

@@ -373,4 +373,62 @@ json surface_to_json(const geom::Surface& s) {
     return j;
 }
 
+Expected<geom::TrianglePatch> triangle_from_json(const json& j) {
+    if (!j.is_object()) return schema_error("a triangle is a JSON object", "");
+    if (auto st = check_members(j, "", "a triangle", {"type", "degree", "points", "weights"}); !st)
+        return st.error();
+    const json* type = find_member(j, "type");
+    if (!type) return missing_member("", "type");
+    geom::TrianglePatch t;
+    if (*type == "rational_triangle_bezier")
+        t.rational = true;
+    else if (*type != "triangle_bezier")
+        return schema_error("type must be triangle_bezier or rational_triangle_bezier", "/type");
+    const json* degree = find_member(j, "degree");
+    if (!degree) return missing_member("", "degree");
+    Expected<std::int64_t> n = read_one_degree(*degree, "/degree");
+    if (!n) return n.error();
+    if (*n > geom::max_triangle_degree)
+        return make_error(ErrorCode::limit,
+                          "degree " + std::to_string(*n) + " is above the cap of " +
+                              std::to_string(geom::max_triangle_degree),
+                          "/degree");
+    t.degree = static_cast<int>(*n);
+    const json* points = find_member(j, "points");
+    if (!points) return missing_member("", "points");
+    const std::size_t want = static_cast<std::size_t>(geom::TrianglePatch::count_for(t.degree));
+    if (!points->is_array() || points->size() != want)
+        return schema_error("a triangle of degree " + std::to_string(t.degree) + " has " +
+                                std::to_string(want) + " control points [x, y] or [x, y, z]",
+                            "/points");
+    for (std::size_t k = 0; k < want; ++k) {
+        Expected<glm::dvec3> p = read_point((*points)[k], "/points" + at(static_cast<long>(k)));
+        if (!p) return p.error();
+        t.points.push_back(*p);
+    }
+    if (const json* w = find_member(j, "weights")) {
+        if (!t.rational)
+            return schema_error("a triangle_bezier takes no weights (use rational_triangle_bezier)",
+                                "/weights");
+        Expected<std::vector<double>> weights = read_weight_row(*w, want, "/weights", "weights");
+        if (!weights) return weights.error();
+        t.weights = std::move(weights).value();
+    } else {
+        t.weights.assign(want, 1.0);
+    }
+    if (geom::Status st = geom::validate_triangle(t); !st) return st.error();
+    return t;
+}
+
+json triangle_to_json(const geom::TrianglePatch& t) {
+    json j = json::object();
+    j["type"] = t.rational ? "rational_triangle_bezier" : "triangle_bezier";
+    j["degree"] = t.degree;
+    json pts = json::array();
+    for (const glm::dvec3& p : t.points) pts.push_back(point_to_json(p));
+    j["points"] = std::move(pts);
+    if (t.rational) j["weights"] = numbers(t.weights);
+    return j;
+}
+
 } // namespace isoparm::json_io

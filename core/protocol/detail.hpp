@@ -39,6 +39,14 @@ OpResult op_deboor(const json& request);      // op_deboor.cpp
 OpResult op_curvature(const json& request);   // op_curvature.cpp
 OpResult op_blossom(const json& request);     // op_blossom.cpp
 OpResult op_convert(const json& request);     // op_convert.cpp
+OpResult op_close(const json& request);       // op_reshape.cpp
+// Triangular patches (op_triangle.cpp): evaluate, elevate_degree and split hand a request with
+// a `triangle` to these; de_casteljau is theirs alone.
+OpResult op_triangle_evaluate(const json& request);
+OpResult op_triangle_elevate(const json& request);
+OpResult op_triangle_split(const json& request);
+OpResult op_de_casteljau(const json& request);
+OpResult op_split_knot(const json& request);
 OpResult op_tessellate(const json& request);  // op_tessellate.cpp
 OpResult op_insert_knot(const json& request); // op_refine.cpp
 OpResult op_elevate_degree(const json& request);

@@ -1,5 +1,5 @@
 // The construction ops of the geom protocol (make_compatible, ruled, revolve, swing, sweep,
-// skin, coons): one handler each, registered in protocol.cpp's op table.
+// skin, coons, gordon): one handler each, registered in protocol.cpp's op table.
 #pragma once
 
 #include "core/protocol/detail.hpp"
@@ -13,5 +13,6 @@ OpResult op_swing(const json& request);
 OpResult op_sweep(const json& request);
 OpResult op_skin(const json& request);
 OpResult op_coons(const json& request);
+OpResult op_gordon(const json& request);
 
 } // namespace isoparm::protocol

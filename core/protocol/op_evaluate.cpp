@@ -291,6 +291,7 @@ void write_evaluated(const EvaluateRequest& e, const Evaluated& r, std::string& 
 } // namespace
 
 OpResult op_evaluate(const json& request) {
+    if (find_member(request, "triangle")) return op_triangle_evaluate(request);
     Expected<EvaluateRequest> e = read_evaluate(request);
     if (!e) return e.error();
     if (e->subject.is_surface)

@@ -93,6 +93,7 @@ OpResult op_insert_knot(const json& request) {
 }
 
 OpResult op_elevate_degree(const json& request) {
+    if (find_member(request, "triangle")) return op_triangle_elevate(request);
     Expected<Parsed> parsed =
         parse_common(request, "elevate_degree", {"curve", "surface", "direction", "times"});
     if (!parsed) return parsed.error();
@@ -115,6 +116,7 @@ OpResult op_elevate_degree(const json& request) {
 }
 
 OpResult op_split(const json& request) {
+    if (find_member(request, "triangle")) return op_triangle_split(request);
     Expected<Parsed> parsed =
         parse_common(request, "split", {"curve", "surface", "direction", "param"});
     if (!parsed) return parsed.error();

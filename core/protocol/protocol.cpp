@@ -33,7 +33,7 @@ struct OpEntry {
 };
 
 // Adding an op is one line here and one file (see detail.hpp).
-constexpr std::array<OpEntry, 18> op_table = {{
+constexpr std::array<OpEntry, 22> op_table = {{
     {"evaluate", protocol::op_evaluate},
     {"basis", protocol::op_basis},
     {"deboor", protocol::op_deboor},
@@ -51,7 +51,11 @@ constexpr std::array<OpEntry, 18> op_table = {{
     {"sweep", protocol::op_sweep},
     {"skin", protocol::op_skin},
     {"coons", protocol::op_coons},
+    {"gordon", protocol::op_gordon},
     {"convert", protocol::op_convert},
+    {"close", protocol::op_close},
+    {"split_knot", protocol::op_split_knot},
+    {"de_casteljau", protocol::op_de_casteljau},
 }};
 
 json error_response(const Error& e) {
