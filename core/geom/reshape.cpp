@@ -97,8 +97,8 @@ Expected<KnotSplit<Curve>> split_knot(const Curve& c, double knot, std::optional
     KnotSplit<Curve> out{c, 0.0};
     out.result.knots[place->index] = place->value;
     if (is_bezier(c.type)) out.result.type = without_bezier(c.type);
-    const Interval a = domain(c.knots, c.degree, c.count());
-    const Interval b = domain(out.result.knots, c.degree, c.count());
+    const Interval a = domain(c);
+    const Interval b = domain(out.result);
     for (double t : sample_params(std::max(a.lo, b.lo), std::min(a.hi, b.hi),
                                   spans_of(out.result.knots, c.degree, c.count()))) {
         const auto before = curve_point(c, t), after = curve_point(out.result, t);
@@ -116,8 +116,8 @@ Expected<KnotSplit<Surface>> split_knot(const Surface& s, Dir dir, double knot,
     if (is_bezier(s.type)) out.result.type = without_bezier(s.type);
     std::vector<double> params[2];
     for (Dir d : {Dir::u, Dir::v}) {
-        const Interval a = domain(s.knots(d), s.degree(d), s.count(d));
-        const Interval b = domain(out.result.knots(d), s.degree(d), s.count(d));
+        const Interval a = domain(s, d);
+        const Interval b = domain(out.result, d);
         // Fewer samples across the split direction's partner keep the grid near 4096 x 64.
         params[d == Dir::u ? 0 : 1] = sample_params(
             std::max(a.lo, b.lo), std::min(a.hi, b.hi),
