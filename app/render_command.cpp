@@ -6,7 +6,9 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "app/commands.hpp"
 #include "core/json/out_of_memory.hpp"
@@ -84,9 +86,9 @@ void apply_toggle(int flag, bool& setting) {
 std::string configure(const RenderOptions& o, ui::AppContext& ctx) {
     doc::Document& d = ctx.doc;
     if (!o.style.empty()) {
-        d.view.display.style = o.style == "shaded"      ? doc::DisplayStyle::shaded
-                               : o.style == "wireframe" ? doc::DisplayStyle::wireframe
-                                                        : doc::DisplayStyle::both;
+        // The option's values were checked against the same names (add_options).
+        d.view.display.style =
+            geom::parse_name<doc::DisplayStyle>(o.style).value_or(doc::DisplayStyle::both);
     }
     apply_toggle(o.points, d.view.display.control_points);
     apply_toggle(o.net, d.view.display.control_net);
@@ -158,6 +160,13 @@ std::string configure(const RenderOptions& o, ui::AppContext& ctx) {
     return "";
 }
 
+// The names --style accepts: the scene file's, from the same table.
+std::vector<std::string> display_style_names() {
+    std::vector<std::string> out;
+    for (const auto& entry : doc::display_style_names) out.emplace_back(entry.name);
+    return out;
+}
+
 } // namespace
 
 Action register_render_command(CLI::App& app) {
@@ -173,7 +182,7 @@ Action register_render_command(CLI::App& app) {
                     "position indicator U,V (parameters in the domain)");
     sub->add_option("--select", o->select, "select control point I,J of the current surface");
     sub->add_option("--style", o->style, "shaded, wireframe or both")
-        ->check(CLI::IsMember({"shaded", "wireframe", "both"}));
+        ->check(CLI::IsMember(display_style_names()));
     sub->add_option("--camera", o->camera,
                     "YAW,PITCH[,ZOOM]: orbit angles in degrees, zoom in percent of fit-to-view");
     sub->add_flag("--points,!--no-points", o->points, "show / hide control points");

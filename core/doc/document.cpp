@@ -19,15 +19,6 @@ static_assert(std::is_same_v<std::variant_alternative_t<0, Shape>, SurfaceObject
               std::is_same_v<std::variant_alternative_t<1, Shape>, CurveObject> &&
               std::is_same_v<std::variant_alternative_t<2, Shape>, ImplicitObject>);
 
-const char* kind_name(ObjectKind kind) {
-    switch (kind) {
-    case ObjectKind::surface: return "surface";
-    case ObjectKind::curve: return "curve";
-    case ObjectKind::implicit: return "implicit surface";
-    }
-    return "object";
-}
-
 geom::Surface* surface_of(Shape& shape) {
     auto* s = std::get_if<SurfaceObject>(&shape);
     return s ? &s->surface : nullptr;
@@ -171,18 +162,6 @@ bool same_view(const ViewState& a, const ViewState& b) {
 
 bool same_document(const Document& a, const Document& b) {
     return same_geometry(a, b) && same_view(a.view, b.view) && a.continuity == b.continuity;
-}
-
-const char* continuity_name(Continuity c) {
-    switch (c) {
-    case Continuity::off:
-        return "off";
-    case Continuity::c0:
-        return "C0";
-    case Continuity::c1:
-        return "C1";
-    }
-    return "off";
 }
 
 Document default_document() {

@@ -189,7 +189,7 @@ std::optional<geom::Error> check_patch_groups(const Document& doc) {
         if (!A.surface())
             return geom::make_error(geom::ErrorCode::schema,
                                     "only surfaces can be subpatches; object '" + A.name +
-                                        "' is a " + kind_name(A.kind()),
+                                        "' is a " + geom::label_of(A.kind()),
                                     at);
     }
     return std::nullopt;
@@ -217,7 +217,7 @@ std::vector<SharedBorder> shared_borders(const Document& doc, std::uint64_t grou
                 b.along = {lo, hi};
                 const Restriction la = restrict_line(sa.knots(e), sa.degree(e), lo, hi);
                 const Restriction lb = restrict_line(sb.knots(e), sb.degree(e), lo, hi);
-                const char* along = e == Dir::u ? "u" : "v";
+                const char* along = geom::name_of(e);
                 if (sa.degree(e) != sb.degree(e)) {
                     b.why_not = std::string("the degrees in ") + along + " differ (" +
                                 std::to_string(sa.degree(e)) + " and " +

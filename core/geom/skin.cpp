@@ -35,8 +35,7 @@ Expected<std::vector<double>> section_params(const std::vector<Curve>& sections,
             return make_error(ErrorCode::geometry,
                               "the sections coincide at control point " + std::to_string(i) +
                                   " (the same point in every compatible curve), so the " +
-                                  parametrization_name(mode) +
-                                  " lengths between sections sum to zero",
+                                  name_of(mode) + " lengths between sections sum to zero",
                               "/curves");
         }
         double acc = 0.0;

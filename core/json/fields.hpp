@@ -40,6 +40,13 @@ inline std::optional<std::int64_t> integer_value(const nlohmann::json& v) {
     return std::nullopt;
 }
 
+// The enumeration value a JSON string names (geom::parse_name); nothing for other text or any
+// other JSON type. Callers word the refusal: it lists what that place accepts.
+template <class E> std::optional<E> enum_value(const nlohmann::json& v) {
+    if (!v.is_string()) return std::nullopt;
+    return geom::parse_name<E>(v.get_ref<const std::string&>());
+}
+
 // A `schema` error: the value at `path` breaks the rule the message states.
 geom::Error schema_error(std::string message, std::string path);
 // The path of member `key` of the object at `at` ("/objects/2" + "name"), escaped (RFC 6901).

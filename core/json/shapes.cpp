@@ -40,11 +40,10 @@ Expected<geom::SplineType> read_type(const json& j) {
     if (it == j.end()) {
         return j.contains("weights") ? geom::SplineType::nurbs : geom::SplineType::bspline;
     }
-    geom::SplineType t{};
-    if (!it->is_string() || !geom::parse_spline_type(it->get<std::string>(), t)) {
+    const std::optional<geom::SplineType> t = enum_value<geom::SplineType>(*it);
+    if (!t)
         return schema_error("type must be one of bezier, rational_bezier, bspline, nurbs", "/type");
-    }
-    return t;
+    return *t;
 }
 
 // One degree: an integer (integral floats accepted) >= 1. Saturated to int64 so that a huge
@@ -179,9 +178,9 @@ Expected<geom::Curve> curve_from_json(const json& j) {
     const auto weights_it = j.find("weights");
     if (weights_it != j.end()) {
         if (!geom::is_rational(c.type)) {
-            return schema_error(std::string("a ") + geom::spline_type_name(c.type) +
-                              " curve takes no weights (use rational_bezier or nurbs)",
-                          "/weights");
+            return schema_error(std::string("a ") + geom::name_of(c.type) +
+                                    " curve takes no weights (use rational_bezier or nurbs)",
+                                "/weights");
         }
         Expected<std::vector<double>> w =
             read_weight_row(*weights_it, c.points.size(), "/weights", "weights");
@@ -283,9 +282,9 @@ Expected<geom::Surface> surface_from_json(const json& j) {
     const auto weights_it = j.find("weights");
     if (weights_it != j.end()) {
         if (!geom::is_rational(s.type)) {
-            return schema_error(std::string("a ") + geom::spline_type_name(s.type) +
-                              " surface takes no weights (use rational_bezier or nurbs)",
-                          "/weights");
+            return schema_error(std::string("a ") + geom::name_of(s.type) +
+                                    " surface takes no weights (use rational_bezier or nurbs)",
+                                "/weights");
         }
         const json& W = *weights_it;
         if (!W.is_array()) return weights_error("weights are n_u rows of n_v numbers", "/weights");
@@ -341,7 +340,7 @@ json numbers(const std::vector<double>& v) {
 
 json curve_to_json(const geom::Curve& c) {
     json j = json::object();
-    j["type"] = geom::spline_type_name(c.type);
+    j["type"] = geom::name_of(c.type);
     j["degree"] = c.degree;
     j["knots"] = numbers(c.knots);
     json pts = json::array();
@@ -353,7 +352,7 @@ json curve_to_json(const geom::Curve& c) {
 
 json surface_to_json(const geom::Surface& s) {
     json j = json::object();
-    j["type"] = geom::spline_type_name(s.type);
+    j["type"] = geom::name_of(s.type);
     j["degree"] = json::array({s.degree_u, s.degree_v});
     j["knots"] = json::array({numbers(s.knots_u), numbers(s.knots_v)});
     json rows = json::array();

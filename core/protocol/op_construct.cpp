@@ -142,10 +142,12 @@ OpResult op_skin(const json& request) {
     if (!degree) return degree.error();
     geom::Parametrization mode = geom::Parametrization::chord;
     if (const json* m = find_member(request, "parametrization")) {
-        if (!m->is_string() || !geom::parse_parametrization(m->get<std::string>(), mode)) {
+        const std::optional<geom::Parametrization> named = enum_value<geom::Parametrization>(*m);
+        if (!named) {
             return schema_error("parametrization is \"chord\", \"centripetal\" or \"uniform\"",
                                 "/parametrization");
         }
+        mode = *named;
     }
     auto s = geom::skin(*curves, static_cast<int>(*degree), mode);
     if (!s) return s.error();

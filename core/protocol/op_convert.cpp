@@ -13,9 +13,10 @@ OpResult op_convert(const json& request) {
     if (!subject) return subject.error();
     const json* to = find_member(request, "to");
     if (!to) return missing_member("", "to");
-    geom::SplineType type{};
-    if (!to->is_string() || !geom::parse_spline_type(to->get<std::string>(), type))
+    const std::optional<geom::SplineType> to_type = enum_value<geom::SplineType>(*to);
+    if (!to_type)
         return schema_error("to must be one of bezier, rational_bezier, bspline, nurbs", "/to");
+    const geom::SplineType type = *to_type;
     json pieces = json::array();
     if (subject->is_surface) {
         auto converted = geom::convert(subject->surface, type);

@@ -60,7 +60,7 @@ constexpr std::array<OpEntry, 22> op_table = {{
 
 json error_response(const Error& e) {
     json err = json::object();
-    err["code"] = geom::error_code_name(e.code);
+    err["code"] = geom::name_of(e.code);
     err["message"] = e.message;
     if (e.has_path) err["path"] = e.path;
     return json{{"ok", false}, {"error", std::move(err)}};

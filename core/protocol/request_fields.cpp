@@ -68,8 +68,7 @@ Expected<geom::Dir> read_direction(const json& request, const Subject& subject) 
         return geom::Dir::u;
     }
     if (!d) return missing_member("", "direction");
-    if (d->is_string() && d->get_ref<const std::string&>() == "u") return geom::Dir::u;
-    if (d->is_string() && d->get_ref<const std::string&>() == "v") return geom::Dir::v;
+    if (const std::optional<geom::Dir> dir = enum_value<geom::Dir>(*d)) return *dir;
     return schema_error("direction is \"u\" or \"v\"", "/direction");
 }
 

@@ -69,7 +69,7 @@ Document round_trip(const Document& doc) {
 void expect_error(const std::string& text, ErrorCode code, const std::string& path) {
     auto doc = scene_from_text(text);
     ASSERT_FALSE(doc.ok()) << text;
-    EXPECT_EQ(std::string(geom::error_code_name(doc.error().code)), geom::error_code_name(code))
+    EXPECT_EQ(std::string(geom::name_of(doc.error().code)), geom::name_of(code))
         << doc.error().path << ": " << doc.error().message;
     EXPECT_TRUE(doc.error().has_path);
     EXPECT_EQ(doc.error().path, path) << doc.error().message;

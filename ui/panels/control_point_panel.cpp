@@ -166,7 +166,7 @@ void weight_controls(AppContext& ctx, const doc::Object& obj, const geom::Surfac
     if (!geom::is_rational(s.type)) {
         ImGui::TextWrapped("Weight: this %s surface is non-rational (all weights 1). Weights "
                            "belong to rational Bezier and NURBS surfaces.",
-                           geom::spline_type_name(s.type));
+                           geom::name_of(s.type));
         return;
     }
     double w = s.weight(i, j);
@@ -240,7 +240,7 @@ void draw_control_point_panel(AppContext& ctx) {
     const int i = ctx.doc.view.selection.i, j = ctx.doc.view.selection.j;
     ImGui::Text("%s of %s", point_name('P', i, j, s->n_u, s->n_v).c_str(), obj->name.c_str());
     ImGui::SameLine();
-    ImGui::TextDisabled("(%s)", geom::spline_type_name(s->type));
+    ImGui::TextDisabled("(%s)", geom::name_of(s->type));
 
     // The three planes: in a row when the panel is wide, else wrapped.
     const float k = ctx.ui.scale();

@@ -56,7 +56,7 @@ void knot_strip(AppContext& ctx, const doc::Object& obj, const doc::CurveObject&
         if (hit && ticks[*hit].interior && custom) {
             cd.drag_knot = ticks[*hit].first_index;
         } else if (hit && ticks[*hit].interior) {
-            cd.message = std::string("Knots follow the ") + doc::knot_mode_label(c.knot_mode) +
+            cd.message = std::string("Knots follow the ") + geom::label_of(c.knot_mode) +
                          " mode; choose the custom mode to drag them.";
         } else {
             cd.trace_t = s_mouse; // elsewhere: a press moves the parameter t

@@ -13,10 +13,10 @@ namespace isoparm::ui {
 
 namespace {
 
-// The Kind column: a surface by its spline type.
+// The Kind column: a surface by its spline type, else the kind as scene files name it.
 const char* kind_label(const doc::Object& o) {
-    if (const geom::Surface* s = o.surface()) return geom::spline_type_name(s->type);
-    return o.kind() == doc::ObjectKind::curve ? "curve" : "implicit";
+    if (const geom::Surface* s = o.surface()) return geom::name_of(s->type);
+    return geom::name_of(o.kind());
 }
 
 // One edit, one undo step, apart from whatever gesture came before.

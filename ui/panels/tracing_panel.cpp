@@ -163,9 +163,8 @@ void knot_strip(AppContext& ctx, const doc::Object& obj, const geom::Surface& s,
 void continuity_controls(AppContext& ctx, const doc::Object& obj) {
     ImGui::TextUnformatted("Keep across borders:");
     for (doc::Continuity c : {doc::Continuity::off, doc::Continuity::c0, doc::Continuity::c1}) {
-        same_line_if_fits(toggle_width(doc::continuity_name(c)));
-        if (ImGui::RadioButton(doc::continuity_name(c), ctx.doc.continuity == c))
-            set_continuity(ctx, c);
+        same_line_if_fits(toggle_width(geom::name_of(c)));
+        if (ImGui::RadioButton(geom::name_of(c), ctx.doc.continuity == c)) set_continuity(ctx, c);
     }
     if (ctx.doc.continuity == doc::Continuity::off) return;
     const bool c1 = ctx.doc.continuity == doc::Continuity::c1;
@@ -190,7 +189,7 @@ void continuity_controls(AppContext& ctx, const doc::Object& obj) {
     report_fact("borders", static_cast<double>(borders.size()));
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("%d of %d borders kept %s when a point moves", held,
-                       static_cast<int>(borders.size()), doc::continuity_name(ctx.doc.continuity));
+                       static_cast<int>(borders.size()), geom::name_of(ctx.doc.continuity));
     ImGui::PopStyleColor();
     // Why the others are not, in the panel itself (a tooltip would hide most of it).
     if (!why.empty()) {
@@ -218,8 +217,8 @@ void draw_tracing_panel(AppContext& ctx) {
     const geom::ParamRect dom = doc::tracing_domain(ctx.doc, *obj);
     const std::vector<const doc::Object*> patches = doc::patch_members(ctx.doc, obj->patch_group);
     const glm::dvec2 uv = indicator_params(ctx.doc, *obj);
-    ImGui::TextWrapped("%s  (%s, degree %d x %d)", obj->name.c_str(),
-                       geom::spline_type_name(s->type), s->degree_u, s->degree_v);
+    ImGui::TextWrapped("%s  (%s, degree %d x %d)", obj->name.c_str(), geom::name_of(s->type),
+                       s->degree_u, s->degree_v);
     if (!patches.empty()) {
         char part[48];
         std::snprintf(
