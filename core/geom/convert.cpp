@@ -100,8 +100,8 @@ Expected<std::vector<Surface>> convert(const Surface& s, SplineType to) {
         const int n_v = s.n_v;
         if (Status st = drop_equal_weights(base.weights,
                                            [n_v](std::size_t k) {
-                                               return "/weights/" + std::to_string(k / n_v) +
-                                                      "/" + std::to_string(k % n_v);
+                                               return "/weights/" + std::to_string(k / n_v) + "/" +
+                                                      std::to_string(k % n_v);
                                            });
             !st)
             return st.error();

@@ -26,9 +26,10 @@ Net step(const Net& net, const Barycentric& p) {
     Net next(static_cast<std::size_t>(TrianglePatch::count_for(m)));
     for (int i = m; i >= 0; --i)
         for (int j = m - i; j >= 0; --j)
-            next[TrianglePatch::index(m, i, j)] = p[0] * net[TrianglePatch::index(m + 1, i + 1, j)] +
-                                                  p[1] * net[TrianglePatch::index(m + 1, i, j + 1)] +
-                                                  p[2] * net[TrianglePatch::index(m + 1, i, j)];
+            next[TrianglePatch::index(m, i, j)] =
+                p[0] * net[TrianglePatch::index(m + 1, i + 1, j)] +
+                p[1] * net[TrianglePatch::index(m + 1, i, j + 1)] +
+                p[2] * net[TrianglePatch::index(m + 1, i, j)];
     return next;
 }
 
@@ -59,7 +60,8 @@ std::optional<glm::dvec3> cartesian(const HPoint& h) {
 } // namespace
 
 Status validate_triangle(const TrianglePatch& t) {
-    if (t.degree < 1) return make_error(ErrorCode::degree, "the degree must be at least 1", "/degree");
+    if (t.degree < 1)
+        return make_error(ErrorCode::degree, "the degree must be at least 1", "/degree");
     if (t.degree > max_triangle_degree)
         return make_error(ErrorCode::limit,
                           "degree " + std::to_string(t.degree) + " is above the cap of " +
@@ -93,9 +95,8 @@ std::optional<glm::dvec3> triangle_point(const TrianglePatch& t, const Barycentr
     return cartesian(apex(homogeneous(t), p));
 }
 
-std::optional<std::array<std::array<glm::dvec3, 3>, 3>> triangle_derivatives(const TrianglePatch& t,
-                                                                          const Barycentric& p,
-                                                                          int d) {
+std::optional<std::array<std::array<glm::dvec3, 3>, 3>>
+triangle_derivatives(const TrianglePatch& t, const Barycentric& p, int d) {
     // Homogeneous derivatives H[a][b] = (n! / (n - a - b)!) x the difference net's value.
     const Net net = homogeneous(t);
     const int n = t.degree;
@@ -120,7 +121,8 @@ std::optional<std::array<std::array<glm::dvec3, 3>, 3>> triangle_derivatives(con
             glm::dvec3 v(H[a][b]);
             for (int i = 0; i <= a; ++i)
                 for (int j = 0; j <= b; ++j)
-                    if (i + j > 0) v -= binomial[a][i] * binomial[b][j] * H[i][j].w * S[a - i][b - j];
+                    if (i + j > 0)
+                        v -= binomial[a][i] * binomial[b][j] * H[i][j].w * S[a - i][b - j];
             S[a][b] = v / w;
         }
     return S;
@@ -167,7 +169,8 @@ TrianglePatch elevate_triangle(const TrianglePatch& t, int times) {
     return out;
 }
 
-Expected<std::array<TrianglePatch, 3>> split_triangle(const TrianglePatch& t, const Barycentric& p) {
+Expected<std::array<TrianglePatch, 3>> split_triangle(const TrianglePatch& t,
+                                                      const Barycentric& p) {
     // levels[l][index(n - l, i, j)] = b^l_ijk. Piece v takes, for its control point with index
     // a in place of vertex v, the level-a point whose v-th index is 0 (Farin 17.5).
     std::vector<Net> levels{homogeneous(t)};

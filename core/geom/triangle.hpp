@@ -43,9 +43,8 @@ std::optional<glm::dvec3> triangle_point(const TrianglePatch& t, const Barycentr
 // D[a][b] = d^(a+b) S / dr^a ds^b for a + b <= d <= 2, with t = 1 - r - s (so d/dr runs along
 // the edge from b_00n to b_n00 and d/ds from b_00n to b_0n0); rational derivatives by the
 // quotient rule. nullopt where the point does not exist.
-std::optional<std::array<std::array<glm::dvec3, 3>, 3>> triangle_derivatives(const TrianglePatch& t,
-                                                                          const Barycentric& p,
-                                                                          int d);
+std::optional<std::array<std::array<glm::dvec3, 3>, 3>>
+triangle_derivatives(const TrianglePatch& t, const Barycentric& p, int d);
 
 // Every level of de Casteljau's construction: level 0 the control points, level l the
 // (n - l + 1)(n - l + 2)/2 points of degree n - l in the same order, the last one point (the

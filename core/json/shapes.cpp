@@ -6,10 +6,10 @@
 #include <optional>
 #include <string>
 
-#include "core/json/reader.hpp"
-#include "core/json/fields.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/validate.hpp"
+#include "core/json/fields.hpp"
+#include "core/json/reader.hpp"
 
 namespace isoparm::json_io {
 
@@ -132,7 +132,6 @@ std::optional<Error> check_degree_fits(std::int64_t p, long n, bool bezier_defau
     return std::nullopt;
 }
 
-
 } // namespace
 
 Expected<geom::Curve> curve_from_json(const json& j) {
@@ -180,8 +179,8 @@ Expected<geom::Curve> curve_from_json(const json& j) {
     if (weights_it != j.end()) {
         if (!geom::is_rational(c.type)) {
             return schema_error(std::string("a ") + geom::spline_type_name(c.type) +
-                              " curve takes no weights (use rational_bezier or nurbs)",
-                          "/weights");
+                                    " curve takes no weights (use rational_bezier or nurbs)",
+                                "/weights");
         }
         Expected<std::vector<double>> w =
             read_weight_row(*weights_it, c.points.size(), "/weights", "weights");
@@ -229,16 +228,17 @@ Expected<geom::Surface> surface_from_json(const json& j) {
     long n_v = -1;
     for (std::size_t i = 0; i < P.size(); ++i) {
         const std::string row = "/points" + at(static_cast<long>(i));
-        if (!P[i].is_array()) return schema_error("a surface's points are rows (arrays) of points", row);
+        if (!P[i].is_array())
+            return schema_error("a surface's points are rows (arrays) of points", row);
         const long len = static_cast<long>(P[i].size());
         if (len > max_dir)
             return make_error(ErrorCode::limit, "too many points along v", "/points");
         if (n_v < 0) n_v = len;
         if (len != n_v) {
             return schema_error("every row of points must have the same length: row " +
-                              std::to_string(i) + " has " + std::to_string(len) + ", row 0 has " +
-                              std::to_string(n_v),
-                          row);
+                                    std::to_string(i) + " has " + std::to_string(len) +
+                                    ", row 0 has " + std::to_string(n_v),
+                                row);
         }
     }
     if (n_v < 0) n_v = 0;
@@ -284,8 +284,8 @@ Expected<geom::Surface> surface_from_json(const json& j) {
     if (weights_it != j.end()) {
         if (!geom::is_rational(s.type)) {
             return schema_error(std::string("a ") + geom::spline_type_name(s.type) +
-                              " surface takes no weights (use rational_bezier or nurbs)",
-                          "/weights");
+                                    " surface takes no weights (use rational_bezier or nurbs)",
+                                "/weights");
         }
         const json& W = *weights_it;
         if (!W.is_array()) return weights_error("weights are n_u rows of n_v numbers", "/weights");

@@ -1,7 +1,7 @@
 // The `deboor` op: every intermediate point of de Boor's algorithm, for curves and surfaces.
-#include "core/protocol/detail.hpp"
 #include "core/geom/deboor.hpp"
 #include "core/geom/validate.hpp"
+#include "core/protocol/detail.hpp"
 
 namespace isoparm::protocol {
 

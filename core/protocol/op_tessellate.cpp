@@ -1,11 +1,11 @@
 // The `tessellate` op: a surface over a uniform n_u x n_v parameter grid.
-#include "core/json/shapes.hpp"
-#include "core/json/fields.hpp"
-#include "core/protocol/detail.hpp"
-#include "core/geom/work_budget.hpp"
 #include "core/geom/implicit/polygonize.hpp" // the mesh caps
 #include "core/geom/tessellate.hpp"
 #include "core/geom/validate.hpp"
+#include "core/geom/work_budget.hpp"
+#include "core/json/fields.hpp"
+#include "core/json/shapes.hpp"
+#include "core/protocol/detail.hpp"
 
 namespace isoparm::protocol {
 
@@ -70,9 +70,9 @@ Expected<geom::Mesh> tessellate_mesh(const json& request) {
         static_cast<double>(n[0]), static_cast<double>(n[1]), surface.degree_u, surface.degree_v);
     if (geom::Status ok =
             geom::spend_work(cost, "/samples",
-                       "a " + std::to_string(n[0]) + " x " + std::to_string(n[1]) +
-                           " tessellation of a degree (" + std::to_string(surface.degree_u) + ", " +
-                           std::to_string(surface.degree_v) + ") surface");
+                             "a " + std::to_string(n[0]) + " x " + std::to_string(n[1]) +
+                                 " tessellation of a degree (" + std::to_string(surface.degree_u) +
+                                 ", " + std::to_string(surface.degree_v) + ") surface");
         !ok)
         return ok.error();
     return geom::tessellate(subject->surface, static_cast<int>(n[0]), static_cast<int>(n[1]));

@@ -32,21 +32,21 @@ Expected<geom::Barycentric> read_barycentric(const json& v, const std::string& p
         return schema_error("a triangle parameter is [r, s, t]", path);
     geom::Barycentric p{};
     for (std::size_t k = 0; k < 3; ++k) {
-        Expected<double> x = read_finite(v[k], path + "/" + std::to_string(k), "a barycentric coordinate");
+        Expected<double> x =
+            read_finite(v[k], path + "/" + std::to_string(k), "a barycentric coordinate");
         if (!x) return x.error();
         p[k] = *x;
     }
     const double sum = p[0] + p[1] + p[2];
-    const bool inside = strict ? p[0] > 0 && p[1] > 0 && p[2] > 0
-                               : p[0] >= 0 && p[1] >= 0 && p[2] >= 0;
+    const bool inside =
+        strict ? p[0] > 0 && p[1] > 0 && p[2] > 0 : p[0] >= 0 && p[1] >= 0 && p[2] >= 0;
     if (!inside || !(std::abs(sum - 1) <= barycentric_tolerance))
-        return geom::make_error(geom::ErrorCode::domain,
-                                "[" + geom::format_number(p[0]) + ", " + geom::format_number(p[1]) +
-                                    ", " + geom::format_number(p[2]) + "] is not " +
-                                    (strict ? "strictly inside" : "in") +
-                                    " the triangle (each coordinate " + (strict ? "> 0" : ">= 0") +
-                                    ", sum 1)",
-                                path);
+        return geom::make_error(
+            geom::ErrorCode::domain,
+            "[" + geom::format_number(p[0]) + ", " + geom::format_number(p[1]) + ", " +
+                geom::format_number(p[2]) + "] is not " + (strict ? "strictly inside" : "in") +
+                " the triangle (each coordinate " + (strict ? "> 0" : ">= 0") + ", sum 1)",
+            path);
     return p;
 }
 
@@ -59,12 +59,13 @@ json optional_points(const std::vector<std::optional<glm::dvec3>>& level) {
 } // namespace
 
 OpResult op_triangle_evaluate(const json& request) {
-    if (geom::Status s = check_fields(request, "evaluate", {"triangle", "params", "derivatives"}); !s)
+    if (geom::Status s = check_fields(request, "evaluate", {"triangle", "params", "derivatives"});
+        !s)
         return s.error();
     Expected<geom::TrianglePatch> t = read_triangle(request);
     if (!t) return t.error();
-    Expected<std::int64_t> d =
-        integer_option(request, "derivatives", 0, 0, 2, "derivatives is an integer 0..2 for a triangle");
+    Expected<std::int64_t> d = integer_option(request, "derivatives", 0, 0, 2,
+                                              "derivatives is an integer 0..2 for a triangle");
     if (!d) return d.error();
     const json* params = find_member(request, "params");
     if (!params) return missing_member("", "params");
@@ -85,7 +86,8 @@ OpResult op_triangle_evaluate(const json& request) {
         return ok.error();
     json points = json::array(), derivatives = json::array();
     for (std::size_t k = 0; k < params->size(); ++k) {
-        Expected<geom::Barycentric> p = read_barycentric((*params)[k], "/params/" + std::to_string(k), false);
+        Expected<geom::Barycentric> p =
+            read_barycentric((*params)[k], "/params/" + std::to_string(k), false);
         if (!p) return p.error();
         if (*d == 0) {
             points.push_back(optional_point(geom::triangle_point(*t, *p)));
@@ -122,7 +124,8 @@ OpResult op_de_casteljau(const json& request) {
     Expected<geom::Barycentric> p = read_barycentric(*param, "/param", false);
     if (!p) return p.error();
     json levels = json::array();
-    for (const auto& level : geom::triangle_de_casteljau(*t, *p)) levels.push_back(optional_points(level));
+    for (const auto& level : geom::triangle_de_casteljau(*t, *p))
+        levels.push_back(optional_points(level));
     json answer = json::object();
     answer["levels"] = std::move(levels);
     return answer;
@@ -133,9 +136,9 @@ OpResult op_triangle_elevate(const json& request) {
         return s.error();
     Expected<geom::TrianglePatch> t = read_triangle(request);
     if (!t) return t.error();
-    Expected<std::int64_t> times = integer_option(request, "times", 1, 1,
-                                                  std::numeric_limits<std::int64_t>::max(),
-                                                  "times is an integer >= 1");
+    Expected<std::int64_t> times =
+        integer_option(request, "times", 1, 1, std::numeric_limits<std::int64_t>::max(),
+                       "times is an integer >= 1");
     if (!times) return times.error();
     if (t->degree + *times > geom::max_triangle_degree)
         return geom::make_error(geom::ErrorCode::limit,
@@ -149,7 +152,8 @@ OpResult op_triangle_elevate(const json& request) {
 }
 
 OpResult op_triangle_split(const json& request) {
-    if (geom::Status s = check_fields(request, "split", {"triangle", "param"}); !s) return s.error();
+    if (geom::Status s = check_fields(request, "split", {"triangle", "param"}); !s)
+        return s.error();
     Expected<geom::TrianglePatch> t = read_triangle(request);
     if (!t) return t.error();
     const json* param = find_member(request, "param");
