@@ -98,7 +98,7 @@ std::string configure(const RenderOptions& o, ui::AppContext& ctx) {
         if (!ui::current_surface(d)) {
             // Select the first surface so the options have something to act on.
             for (const doc::Object& obj : d.objects)
-                if (std::holds_alternative<doc::SurfaceObject>(obj.shape)) {
+                if (obj.surface()) {
                     d.view.selection = {obj.id, -1, -1};
                     break;
                 }
@@ -111,7 +111,7 @@ std::string configure(const RenderOptions& o, ui::AppContext& ctx) {
             // Subpatches take the original domain their group tiles (core/doc/patches.hpp).
             const doc::Object* current = nullptr;
             ui::current_surface(d, &current);
-            const doc::ParamRect r = doc::tracing_domain(d, *current);
+            const geom::ParamRect r = doc::tracing_domain(d, *current);
             const geom::Interval du = r.u, dv = r.v;
             if (!uv || !du.contains((*uv)[0]) || !dv.contains((*uv)[1]))
                 return "--indicator '" + o.indicator + "' must be U,V inside the domain [" +

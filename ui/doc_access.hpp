@@ -11,7 +11,6 @@
 
 namespace isoparm::ui {
 
-const geom::Surface* surface_of(const doc::Object& o);
 // The surface the tracing and basis panels work on: the selected object when it is a
 // surface, else the first visible surface; its object in `object` when asked.
 const geom::Surface* current_surface(const doc::Document& d, const doc::Object** object = nullptr);
@@ -21,8 +20,6 @@ bool has_valid_point(const doc::Document& d);
 // object that no longer exists or a point out of range is dropped.
 void normalize_selection(doc::Document& d);
 
-geom::Interval domain_u(const geom::Surface& s);
-geom::Interval domain_v(const geom::Surface& s);
 // "P22" as the paper writes it; "P26,11" once an index has two digits; "P3" for curves
 // (j < 0). prefix: 'P', 'w', 'R'.
 std::string point_name(char prefix, int i, int j, const doc::Document& d);

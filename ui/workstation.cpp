@@ -7,7 +7,6 @@
 #include <cstdio>
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
-#include <variant>
 
 #include "core/doc/patches.hpp"
 #include "ui/actions.hpp"
@@ -182,9 +181,9 @@ void Workstation::layout_panels() {
     ImGui::PopStyleVar();
     // An implicit surface has no control points: its editor takes their place.
     const doc::Object* sel = ctx_.doc.selected();
-    if (sel && std::holds_alternative<doc::ImplicitObject>(sel->shape)) {
+    if (sel && sel->kind() == doc::ObjectKind::implicit) {
         if (begin_panel("Implicit surface", l.right[0])) draw_implicit_panel(ctx_);
-    } else if (sel && std::holds_alternative<doc::CurveObject>(sel->shape)) {
+    } else if (sel && sel->kind() == doc::ObjectKind::curve) {
         if (begin_panel("Curve designer", l.right[0])) draw_curve_designer_panel(ctx_);
     } else {
         if (begin_panel("Control point", l.right[0])) draw_control_point_panel(ctx_);

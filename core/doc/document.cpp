@@ -48,6 +48,16 @@ const geom::Curve* curve_of(const Shape& shape) {
 }
 ImplicitObject* implicit_of(Shape& shape) { return std::get_if<ImplicitObject>(&shape); }
 const ImplicitObject* implicit_of(const Shape& shape) { return std::get_if<ImplicitObject>(&shape); }
+std::span<glm::dvec3> control_points_of(Shape& shape) {
+    if (geom::Surface* s = surface_of(shape)) return s->points;
+    if (geom::Curve* c = curve_of(shape)) return c->points;
+    return {};
+}
+std::span<const glm::dvec3> control_points_of(const Shape& shape) {
+    if (const geom::Surface* s = surface_of(shape)) return s->points;
+    if (const geom::Curve* c = curve_of(shape)) return c->points;
+    return {};
+}
 
 Object* Document::find(std::uint64_t id) {
     if (id == 0) return nullptr;
@@ -116,14 +126,19 @@ bool same_implicit(const ImplicitObject& a, const ImplicitObject& b) {
 }
 
 bool same_shape(const Shape& a, const Shape& b) {
-    if (a.index() != b.index()) return false;
-    if (auto* s = std::get_if<SurfaceObject>(&a))
-        return same_surface(s->surface, std::get<SurfaceObject>(b).surface);
-    if (auto* c = std::get_if<CurveObject>(&a)) {
-        const auto& d = std::get<CurveObject>(b);
-        return c->plane == d.plane && c->knot_mode == d.knot_mode && same_curve(c->curve, d.curve);
+    if (kind_of(a) != kind_of(b)) return false;
+    switch (kind_of(a)) {
+    case ObjectKind::surface:
+        return same_surface(*surface_of(a), *surface_of(b));
+    case ObjectKind::curve: {
+        const CurveObject& c = *curve_object_of(a);
+        const CurveObject& d = *curve_object_of(b);
+        return c.plane == d.plane && c.knot_mode == d.knot_mode && same_curve(c.curve, d.curve);
     }
-    return same_implicit(std::get<ImplicitObject>(a), std::get<ImplicitObject>(b));
+    case ObjectKind::implicit:
+        return same_implicit(*implicit_of(a), *implicit_of(b));
+    }
+    return false;
 }
 
 bool same_colors(const Colors& a, const Colors& b) {

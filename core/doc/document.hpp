@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <glm/vec2.hpp>
+#include <span>
 #include <string>
 #include <variant>
 #include <vector>
@@ -58,6 +59,9 @@ geom::Curve* curve_of(Shape& shape);
 const geom::Curve* curve_of(const Shape& shape);
 ImplicitObject* implicit_of(Shape& shape);
 const ImplicitObject* implicit_of(const Shape& shape);
+// The control points of a surface (row-major) or a curve; none for an implicit surface.
+std::span<glm::dvec3> control_points_of(Shape& shape);
+std::span<const glm::dvec3> control_points_of(const Shape& shape);
 
 struct Object {
     std::uint64_t id = 0; // stable across undo/redo; assigned by the document

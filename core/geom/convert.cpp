@@ -60,7 +60,7 @@ Expected<Surface> clamped(const Surface& s) {
         if (is_clamped(out.knots(dir), out.degree(dir), out.count(dir))) continue;
         // Clamping a surface is clamping each of its lines (one implementation: clamp()).
         std::vector<Curve> lines;
-        const int across = out.count(dir == Dir::u ? Dir::v : Dir::u);
+        const int across = out.count(opposite(dir));
         for (int k = 0; k < across; ++k) {
             auto line = clamp(surface_line(out, dir, k));
             if (!line) return line.error();

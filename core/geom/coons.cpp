@@ -56,7 +56,7 @@ Expected<Surface> coons(const std::array<Curve, 4>& curves) {
     }
     // Corners, each curve taken on its own domain's ends.
     auto end = [&](int k, bool last) {
-        const Interval d = domain(c[k].knots, c[k].degree, c[k].count());
+        const Interval d = domain(c[k]);
         return *curve_point(c[k], last ? d.hi : d.lo);
     };
     double size = 0;

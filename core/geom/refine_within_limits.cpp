@@ -65,7 +65,7 @@ Expected<Curve> elevate_degree_within_limits(const Curve& c, int times) {
 
 Expected<Surface> elevate_degree_within_limits(const Surface& s, Dir dir, int times) {
     if (Status st = check_times(times); !st) return st.error();
-    const Dir other = dir == Dir::u ? Dir::v : Dir::u;
+    const Dir other = opposite(dir);
     if (Status st =
             check_elevation_size(s.knots(dir), s.degree(dir), s.count(dir), s.count(other), times);
         !st)

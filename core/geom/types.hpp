@@ -1,6 +1,7 @@
 // The one rational tensor-product representation behind all four spline types.
 #pragma once
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <string>
@@ -21,6 +22,10 @@ inline bool is_bezier(SplineType t) {
 }
 
 enum class Dir { u, v };
+// The other parameter direction (u for v, v for u).
+inline Dir opposite(Dir d) {
+    return d == Dir::u ? Dir::v : Dir::u;
+}
 
 using Knots = std::vector<double>;
 
@@ -63,6 +68,13 @@ struct Surface {
 struct Interval {
     double lo = 0, hi = 1;
     bool contains(double t) const { return lo <= t && t <= hi; }
+};
+
+// A rectangle of parameters (u, v): a surface's domain, or the box a patch group tiles.
+struct ParamRect {
+    Interval u, v;
+    bool contains(glm::dvec2 p) const { return u.contains(p.x) && v.contains(p.y); }
+    const Interval& interval(Dir d) const { return d == Dir::u ? u : v; }
 };
 
 // Curve <-> surface slicing, so each curve algorithm has one implementation that surfaces

@@ -98,10 +98,6 @@ geom::Expected<geom::Dir> read_direction(const json& request, const Subject& sub
 geom::Status check_in_domain(double t, const geom::Interval& domain, const std::string& path,
                              std::string_view what = "parameter");
 
-// The domain of a curve, or of a surface along a direction.
-geom::Interval curve_domain(const geom::Curve& c);
-geom::Interval surface_domain(const geom::Surface& s, geom::Dir dir);
-
 // positions / normals / triangles; a vertex that does not exist is null (op_tessellate.cpp).
 json mesh_to_json(const geom::Mesh& mesh);
 

@@ -1,6 +1,7 @@
 // The `curvature` op (geom-protocol-2.md, Analysis): Gaussian, mean and principal curvatures
 // of a surface, or the Frenet frame, curvature and torsion of a curve, from exact derivatives.
 #include "core/geom/curvature.hpp"
+#include "core/geom/knots.hpp"
 #include "core/geom/validate.hpp"
 #include "core/geom/work_budget.hpp"
 #include "core/json/shapes.hpp"
@@ -74,7 +75,7 @@ OpResult op_curvature(const json& request) {
         for (const auto& [u, v] : *uv)
             curvatures.push_back(surface_entry(geom::surface_curvature(subject->surface, u, v)));
     } else {
-        auto ts = read_curve_params(*params, curve_domain(subject->curve));
+        auto ts = read_curve_params(*params, geom::domain(subject->curve));
         if (!ts) return ts.error();
         for (double t : *ts)
             curvatures.push_back(curve_entry(geom::curve_curvature(subject->curve, t)));

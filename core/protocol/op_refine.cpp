@@ -76,7 +76,7 @@ OpResult op_insert_knot(const json& request) {
         // Too many for an int, and certainly above any degree: answer as the command would
         // (domain first, then multiplicity) but name the number given.
         const geom::Interval dom =
-            sub.is_surface ? surface_domain(sub.surface, parsed->dir) : curve_domain(sub.curve);
+            sub.is_surface ? geom::domain(sub.surface, parsed->dir) : geom::domain(sub.curve);
         if (geom::Status s = check_in_domain(*knot, dom, "/knot", "knot"); !s) return s.error();
         const int p = sub.is_surface ? sub.surface.degree(parsed->dir) : sub.curve.degree;
         return geom::make_error(

@@ -83,14 +83,6 @@ geom::Status check_in_domain(double t, const geom::Interval& domain, const std::
                             path);
 }
 
-geom::Interval curve_domain(const geom::Curve& c) {
-    return geom::domain(c.knots, c.degree, c.count());
-}
-
-geom::Interval surface_domain(const geom::Surface& s, geom::Dir dir) {
-    return geom::domain(s.knots(dir), s.degree(dir), s.count(dir));
-}
-
 json optional_point(const std::optional<glm::dvec3>& p) {
     return p ? point_to_json(*p) : json(nullptr);
 }
@@ -118,8 +110,7 @@ Expected<std::vector<double>> read_curve_params(const json& params, const geom::
 }
 
 Expected<std::vector<std::array<double, 2>>> read_surface_params(const json& params, const geom::Surface& s) {
-    const geom::Interval dom[2] = {surface_domain(s, geom::Dir::u),
-                                   surface_domain(s, geom::Dir::v)};
+    const geom::Interval dom[2] = {geom::domain(s, geom::Dir::u), geom::domain(s, geom::Dir::v)};
     std::vector<std::array<double, 2>> uv;
     uv.reserve(params.size());
     for (std::size_t i = 0; i < params.size(); ++i) {

@@ -358,9 +358,9 @@ std::optional<Error> read_selection(const json& j, const Document& doc, Selectio
     sel.object = o->id;
     const auto point = j.find("point");
     if (point == j.end()) return std::nullopt;
-    if (std::holds_alternative<ImplicitObject>(o->shape))
+    if (o->implicit())
         return schema_error("an implicit surface has no control points to select", "/selection/point");
-    const bool surface = std::holds_alternative<SurfaceObject>(o->shape);
+    const geom::Surface* surface = o->surface();
     const std::size_t arity = surface ? 2 : 1;
     if (!point->is_array() || point->size() != arity)
         return schema_error(surface ? "a surface's selected point is [i, j]"
@@ -368,10 +368,10 @@ std::optional<Error> read_selection(const json& j, const Document& doc, Selectio
                       "/selection/point");
     int counts[2];
     if (surface) {
-        counts[0] = std::get<SurfaceObject>(o->shape).surface.n_u;
-        counts[1] = std::get<SurfaceObject>(o->shape).surface.n_v;
+        counts[0] = surface->n_u;
+        counts[1] = surface->n_v;
     } else {
-        counts[0] = std::get<CurveObject>(o->shape).curve.count();
+        counts[0] = o->curve()->count();
         counts[1] = 0;
     }
     int idx[2] = {-1, -1};
@@ -396,10 +396,10 @@ json scene_to_json(const Document& doc) {
         j["name"] = o.name;
         j["visible"] = o.visible;
         if (o.patch_group != 0) j["patch_group"] = o.patch_group;
-        if (auto* s = std::get_if<SurfaceObject>(&o.shape)) {
+        if (const geom::Surface* s = o.surface()) {
             j["kind"] = "surface";
-            j["surface"] = surface_to_json(s->surface);
-        } else if (auto* c = std::get_if<CurveObject>(&o.shape)) {
+            j["surface"] = surface_to_json(*s);
+        } else if (const CurveObject* c = o.curve_object()) {
             j["kind"] = "curve";
             j["plane"] = plane_name(c->plane);
             // Custom (the default) is omitted, so older scenes save back unchanged.
@@ -408,7 +408,7 @@ json scene_to_json(const Document& doc) {
                     if (mode == c->knot_mode) j["knot_mode"] = name;
             j["curve"] = curve_to_json(c->curve);
         } else {
-            const auto& f = std::get<ImplicitObject>(o.shape);
+            const ImplicitObject& f = *o.implicit();
             json params = json::array();
             const std::size_t count = std::min(f.parameter_names.size(), f.parameter_values.size());
             for (std::size_t k = 0; k < count; ++k)

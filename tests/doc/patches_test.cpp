@@ -47,7 +47,7 @@ TEST(Patches, SplitPiecesShareTheOriginalDomain) {
     EXPECT_EQ(p.doc.find(p.left_low)->patch_group, group);
     EXPECT_EQ(p.doc.find(p.left_high)->patch_group, group);
     EXPECT_EQ(patch_members(p.doc, group).size(), 3u);
-    const ParamRect r = tracing_domain(p.doc, *p.doc.find(p.left_low));
+    const geom::ParamRect r = tracing_domain(p.doc, *p.doc.find(p.left_low));
     EXPECT_EQ(r.u.lo, 0.0);
     EXPECT_EQ(r.u.hi, 1.0);
     EXPECT_EQ(r.v.lo, 0.0);

@@ -31,7 +31,7 @@ std::array<Curve, 4> network() {
 }
 
 double param_on(const Curve& c, double s) { // s in [0, 1] mapped to the curve's domain
-    const Interval d = domain(c.knots, c.degree, c.count());
+    const Interval d = domain(c);
     return d.lo + s * (d.hi - d.lo);
 }
 

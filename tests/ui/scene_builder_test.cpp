@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "core/doc/document.hpp"
+#include "core/doc/placement.hpp"
+#include "core/geom/knots.hpp"
 #include "ui/doc_access.hpp"
 #include "ui/render/mesh_data.hpp"
 #include "ui/render/tessellation_sampling.hpp"
@@ -54,7 +56,7 @@ TEST(SceneBuilder, DefaultDocumentDrawsSurfaceNetPointsAndIndicator) {
     doc::Document d = doc::default_document();
     const BuiltScene scene = build_scene(d, {});
     ASSERT_EQ(scene.surfaces.size(), 1u);
-    const geom::Surface* s = surface_of(d.objects.front());
+    const geom::Surface* s = d.objects.front().surface();
     ASSERT_NE(s, nullptr);
     std::size_t points = 0, net_segments = 0;
     for (const PointBatch& b : scene.overlay.points) points += b.points.size();
@@ -83,8 +85,8 @@ TEST(SceneBuilder, TogglesRemoveWhatTheyHide) {
 
 TEST(SceneBuilder, IsoCurveLiesOnTheSurfaceEnds) {
     const doc::Document d = doc::default_document();
-    const geom::Surface& s = *surface_of(d.objects.front());
-    const auto pieces = iso_curve(s, geom::Dir::u, domain_u(s).lo, 11);
+    const geom::Surface& s = *d.objects.front().surface();
+    const auto pieces = iso_curve(s, geom::Dir::u, geom::domain(s, geom::Dir::u).lo, 11);
     ASSERT_EQ(pieces.size(), 1u);
     ASSERT_EQ(pieces[0].size(), 11u);
     // Clamped: the corner of the surface is the corner control point.
@@ -95,12 +97,12 @@ TEST(SceneBuilder, IsoCurveLiesOnTheSurfaceEnds) {
 
 TEST(SceneBounds, CoversAllControlPoints) {
     const doc::Document d = doc::default_document();
-    const auto box = scene_bounds(d);
+    const auto box = doc::scene_bounds(d);
     ASSERT_TRUE(box.has_value());
-    for (const glm::dvec3& p : surface_of(d.objects.front())->points)
+    for (const glm::dvec3& p : d.objects.front().surface()->points)
         for (int k = 0; k < 3; ++k) {
             EXPECT_LE(box->lo[k], p[k]);
             EXPECT_GE(box->hi[k], p[k]);
         }
-    EXPECT_FALSE(scene_bounds(doc::Document{}).has_value());
+    EXPECT_FALSE(doc::scene_bounds(doc::Document{}).has_value());
 }

@@ -222,7 +222,7 @@ void weight_controls(AppContext& ctx, const doc::Object& obj, const geom::Surfac
 
 void draw_control_point_panel(AppContext& ctx) {
     const doc::Object* obj = ctx.doc.selected();
-    const geom::Surface* s = obj ? surface_of(*obj) : nullptr;
+    const geom::Surface* s = obj ? obj->surface() : nullptr;
     if (!s || !has_valid_point(ctx.doc)) {
         ImGui::TextWrapped("Click a control point in the 3D view to select it; it can then "
                            "be moved here in the xy, xz and yz planes.");
@@ -270,7 +270,7 @@ void draw_control_point_panel(AppContext& ctx) {
                           origin.y + static_cast<float>(r) * (side + spacing), side, side};
         // Re-read each time: the previous canvas may have executed a command.
         obj = ctx.doc.selected();
-        s = obj ? surface_of(*obj) : nullptr;
+        s = obj ? obj->surface() : nullptr;
         if (s && has_valid_point(ctx.doc)) plane_canvas(ctx, *obj, *s, p, canvas);
     }
     ImGui::SetCursorScreenPos(
@@ -278,7 +278,7 @@ void draw_control_point_panel(AppContext& ctx) {
 
     // The command may have changed the document: re-read before the fields.
     obj = ctx.doc.selected();
-    s = obj ? surface_of(*obj) : nullptr;
+    s = obj ? obj->surface() : nullptr;
     if (!s || !has_valid_point(ctx.doc)) return;
     coordinate_fields(ctx, *obj, *s);
     weight_controls(ctx, *obj, *s);

@@ -64,7 +64,7 @@ double distance_to_segment(const glm::dvec2& p, const glm::dvec2& a, const glm::
 
 const doc::CurveObject* curve_in(const AppContext& ctx, std::uint64_t id) {
     const doc::Object* o = ctx.doc.find(id);
-    return o ? std::get_if<doc::CurveObject>(&o->shape) : nullptr;
+    return o ? o->curve_object() : nullptr;
 }
 
 // Starts a drag of point i whose centre is under the mouse (a point just placed).
@@ -161,7 +161,7 @@ int canvas_plane(const AppContext& ctx, const doc::CurveObject& c) {
 }
 
 double trace_param(const AppContext& ctx, const geom::Curve& c) {
-    const geom::Interval d = geom::domain(c.knots, c.degree, c.count());
+    const geom::Interval d = geom::domain(c);
     return denormalize_param(d, std::clamp(ctx.ui.curve.trace_t, 0.0, 1.0));
 }
 
@@ -218,7 +218,7 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const doc::CurveObjec
     dl->AddPolyline(line.data(), static_cast<int>(line.size()), rgba(col.control_net, 0.7f), 0,
                     1.2f * k);
     // The curve: uniform samples plus the knots, so corners at multiple knots stay sharp.
-    const geom::Interval d = geom::domain(g.knots, g.degree, g.count());
+    const geom::Interval d = geom::domain(g);
     std::vector<double> ts = geom::uniform_params(d.lo, d.hi, 401);
     for (int i = g.degree + 1; i < g.count(); ++i)
         ts.push_back(g.knots[static_cast<std::size_t>(i)]);

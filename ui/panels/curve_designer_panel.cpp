@@ -25,7 +25,7 @@ using namespace curve_designer;
 
 const doc::CurveObject* selected_curve(const AppContext& ctx, const doc::Object** obj) {
     *obj = ctx.doc.selected();
-    return *obj ? std::get_if<doc::CurveObject>(&(*obj)->shape) : nullptr;
+    return *obj ? (*obj)->curve_object() : nullptr;
 }
 
 void warn_text(const AppContext& ctx, const std::string& text) {
@@ -189,7 +189,7 @@ void degree_and_knots(AppContext& ctx, const doc::Object& obj, const doc::CurveO
 void refine_controls(AppContext& ctx, const doc::Object& obj, const doc::CurveObject& c) {
     CurveDesignerState& cd = ctx.ui.curve;
     const geom::Curve& g = c.curve;
-    const geom::Interval d = geom::domain(g.knots, g.degree, g.count());
+    const geom::Interval d = geom::domain(g);
     const double t = trace_param(ctx, g);
     char label[64];
     std::snprintf(label, sizeof label, "t = %.4g", t);

@@ -88,7 +88,7 @@ void new_surface_dialog(AppContext& ctx) {
         doc::Object o;
         int n = 1;
         for (const doc::Object& x : ctx.doc.objects)
-            n += std::holds_alternative<doc::SurfaceObject>(x.shape) ? 1 : 0;
+            n += x.kind() == doc::ObjectKind::surface ? 1 : 0;
         o.name = "Surface " + std::to_string(n);
         o.shape = doc::SurfaceObject{doc::make_planar_grid(f.rows, f.cols, f.degree_u, f.degree_v,
                                                            static_cast<geom::SplineType>(f.type))};

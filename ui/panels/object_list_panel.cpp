@@ -3,7 +3,6 @@
 #include <cstdio>
 #include <imgui.h>
 #include <string>
-#include <variant>
 
 #include "core/doc/commands.hpp"
 #include "ui/doc_access.hpp"
@@ -14,11 +13,10 @@ namespace isoparm::ui {
 
 namespace {
 
-const char* kind_name(const doc::Object& o) {
-    if (const auto* s = std::get_if<doc::SurfaceObject>(&o.shape))
-        return geom::spline_type_name(s->surface.type);
-    if (std::holds_alternative<doc::CurveObject>(o.shape)) return "curve";
-    return "implicit";
+// The Kind column: a surface by its spline type.
+const char* kind_label(const doc::Object& o) {
+    if (const geom::Surface* s = o.surface()) return geom::spline_type_name(s->type);
+    return o.kind() == doc::ObjectKind::curve ? "curve" : "implicit";
 }
 
 // One edit, one undo step, apart from whatever gesture came before.
@@ -93,7 +91,7 @@ void draw_object_list_panel(AppContext& ctx) {
                     ImGui::SetTooltip("Click: select. Double-click: rename.");
             }
             ImGui::TableNextColumn();
-            ImGui::TextDisabled("%s", kind_name(o));
+            ImGui::TextDisabled("%s", kind_label(o));
             ImGui::TableNextColumn();
             if (ImGui::SmallButton("x")) remove = o.id;
             if (ImGui::IsItemHovered())

@@ -8,6 +8,7 @@
 
 #include "core/doc/commands.hpp"
 #include "core/doc/patches.hpp"
+#include "core/geom/knots.hpp"
 #include "ui/canvas_map.hpp"
 #include "ui/doc_access.hpp"
 #include "ui/panels/flow.hpp"
@@ -94,7 +95,7 @@ void action_note_line(const AppContext& ctx, const ActionNote& note) {
 // move that knot, all its copies together, between its neighbours; the surface follows live.
 void knot_strip(AppContext& ctx, const doc::Object& obj, const geom::Surface& s, geom::Dir dir,
                 const std::vector<KnotTick>& ticks, const std::vector<double>& px,
-                const Rect& strip, const Rect& sq, const doc::ParamRect& dom) {
+                const Rect& strip, const Rect& sq, const geom::ParamRect& dom) {
     const bool along_x = dir == geom::Dir::u;
     ImGui::SetCursorScreenPos(ImVec2(strip.x, strip.y));
     ImGui::InvisibleButton(along_x ? "##uknots" : "##vknots", ImVec2(strip.w, strip.h));
@@ -214,7 +215,7 @@ void draw_tracing_panel(AppContext& ctx) {
     }
     const float k = ctx.ui.scale();
     // Subpatches share the original domain: the square shows all of it (issue 5).
-    const doc::ParamRect dom = doc::tracing_domain(ctx.doc, *obj);
+    const geom::ParamRect dom = doc::tracing_domain(ctx.doc, *obj);
     const std::vector<const doc::Object*> patches = doc::patch_members(ctx.doc, obj->patch_group);
     const glm::dvec2 uv = indicator_params(ctx.doc, *obj);
     ImGui::TextWrapped("%s  (%s, degree %d x %d)", obj->name.c_str(),
@@ -268,8 +269,7 @@ void draw_tracing_panel(AppContext& ctx) {
     // The other subpatches, and the current one's part of the square.
     if (!patches.empty()) {
         for (const doc::Object* p : patches) {
-            const doc::ParamRect r =
-                doc::surface_domain(std::get<doc::SurfaceObject>(p->shape).surface);
+            const geom::ParamRect r = geom::domain(*p->surface());
             const ImVec2 lo = iv(domain_to_pixel(sq, to_square(r.u.lo, r.v.hi)));
             const ImVec2 hi = iv(domain_to_pixel(sq, to_square(r.u.hi, r.v.lo)));
             if (p == obj) dl->AddRectFilled(lo, hi, pal.current);
@@ -281,7 +281,7 @@ void draw_tracing_panel(AppContext& ctx) {
     }
 
     // Knot lines across the current patch (where the knot curves run) and ticks with labels.
-    const doc::ParamRect own = doc::surface_domain(*s);
+    const geom::ParamRect own = geom::domain(*s);
     const std::vector<KnotTick> tu = knot_ticks(s->knots_u, s->degree_u, s->n_u);
     const std::vector<KnotTick> tv = knot_ticks(s->knots_v, s->degree_v, s->n_v);
     const float tick = 7 * k;
