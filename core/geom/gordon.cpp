@@ -20,6 +20,7 @@ constexpr double parameter_agreement = 1e-6;
 // Two curves meet when their closest points are within this of the network's size.
 constexpr double meeting_tolerance = 1e-6;
 constexpr int start_samples = 64;
+constexpr std::size_t max_network_pairs = 4096;
 
 std::string at(const char* family, std::size_t k) {
     return std::string("/") + family + "/" + std::to_string(k);
@@ -178,6 +179,13 @@ Expected<Gordon> gordon(const std::vector<Curve>& u_curves, const std::vector<Cu
     auto D = polynomial_family(v_curves, "v_curves");
     if (!D) return D.error();
     const std::size_t K = C->size(), L = D->size();
+    // Every pair is searched on a 65 x 65 grid: bound the pairs, so a request stays in seconds.
+    if (K * L > max_network_pairs)
+        return make_error(ErrorCode::limit,
+                          "a network of " + std::to_string(K) + " x " + std::to_string(L) +
+                              " curves has more than " + std::to_string(max_network_pairs) +
+                              " crossings to find",
+                          "/v_curves");
     const double tolerance = meeting_tolerance * std::max(network_size(*C, *D), 1e-300);
 
     // meetings[k][l]: where u-curve k and v-curve l meet.

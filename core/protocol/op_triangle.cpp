@@ -50,6 +50,15 @@ Expected<geom::Barycentric> read_barycentric(const json& v, const std::string& p
     return p;
 }
 
+// de Casteljau's cost (work_budget.hpp) charged before anything is computed.
+geom::Status spend_on_triangle(const geom::TrianglePatch& t, double count, int d, bool all_levels,
+                               const std::string& path) {
+    return geom::spend_work(
+        geom::estimate_triangle_de_casteljau(count, t.degree, d, all_levels), path,
+        geom::with_thousands(count) + " de Casteljau constructions on a degree-" +
+            std::to_string(t.degree) + " triangle");
+}
+
 json optional_points(const std::vector<std::optional<glm::dvec3>>& level) {
     json out = json::array();
     for (const auto& p : level) out.push_back(optional_point(p));
@@ -74,15 +83,8 @@ OpResult op_triangle_evaluate(const json& request) {
         return geom::make_error(geom::ErrorCode::limit,
                                 "too many parameters (" + std::to_string(params->size()) + ")",
                                 "/params");
-    // de Casteljau costs about the number of control points per evaluation, like a surface of
-    // that many points per span.
     const double count = static_cast<double>(params->size());
-    const geom::WorkEstimate cost =
-        geom::estimate_surface_evaluation(count, t->degree, t->degree, static_cast<int>(*d), false);
-    if (geom::Status ok = geom::spend_work(cost, "/params",
-                                           geom::with_thousands(count) + " points of a degree-" +
-                                               std::to_string(t->degree) + " triangle");
-        !ok)
+    if (geom::Status ok = spend_on_triangle(*t, count, static_cast<int>(*d), false, "/params"); !ok)
         return ok.error();
     json points = json::array(), derivatives = json::array();
     for (std::size_t k = 0; k < params->size(); ++k) {
@@ -123,6 +125,7 @@ OpResult op_de_casteljau(const json& request) {
     if (!param) return missing_member("", "param");
     Expected<geom::Barycentric> p = read_barycentric(*param, "/param", false);
     if (!p) return p.error();
+    if (geom::Status ok = spend_on_triangle(*t, 1, 0, true, "/triangle"); !ok) return ok.error();
     json levels = json::array();
     for (const auto& level : geom::triangle_de_casteljau(*t, *p))
         levels.push_back(optional_points(level));
@@ -160,6 +163,7 @@ OpResult op_triangle_split(const json& request) {
     if (!param) return missing_member("", "param");
     Expected<geom::Barycentric> p = read_barycentric(*param, "/param", true);
     if (!p) return p.error();
+    if (geom::Status ok = spend_on_triangle(*t, 1, 0, false, "/triangle"); !ok) return ok.error();
     auto pieces = geom::split_triangle(*t, *p);
     if (!pieces) return pieces.error();
     json list = json::array();
