@@ -1,6 +1,7 @@
 #include "core/geom/triangle.hpp"
 
 #include <cmath>
+#include <glm/geometric.hpp>
 
 namespace isoparm::geom {
 
@@ -201,6 +202,43 @@ Expected<std::array<TrianglePatch, 3>> split_triangle(const TrianglePatch& t,
             }
     }
     return pieces;
+}
+
+Mesh tessellate_triangle(const TrianglePatch& t, int n) {
+    Mesh mesh;
+    for (int i = n; i >= 0; --i)
+        for (int j = n - i; j >= 0; --j) {
+            const Barycentric p = {static_cast<double>(i) / n, static_cast<double>(j) / n,
+                                   static_cast<double>(n - i - j) / n};
+            const auto D = triangle_derivatives(t, p, 1);
+            if (!D) {
+                if (mesh.exists.empty())
+                    mesh.exists.assign(static_cast<std::size_t>(TrianglePatch::count_for(n)), 1);
+                mesh.exists[mesh.positions.size()] = 0;
+                mesh.positions.push_back(glm::dvec3(0.0));
+                mesh.normals.push_back({0, 0, 1});
+                continue;
+            }
+            const glm::dvec3 normal = glm::cross((*D)[1][0], (*D)[0][1]);
+            const double length = glm::length(normal);
+            mesh.positions.push_back((*D)[0][0]);
+            mesh.normals.push_back(length > 0 ? normal / length : glm::dvec3(0, 0, 1));
+        }
+    // Grid cell below (i, j): vertices (i, j), (i - 1, j), (i - 1, j + 1) up, and the down
+    // triangle beside it; ordered so that +r, +s turn counter-clockwise about S_r x S_s.
+    auto at = [&](int i, int j) {
+        return static_cast<std::uint32_t>(TrianglePatch::index(n, i, j));
+    };
+    auto usable = [&](std::uint32_t v) { return mesh.vertex_exists(v); };
+    auto add = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        if (usable(a) && usable(b) && usable(c)) mesh.triangles.push_back({a, b, c});
+    };
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; i + j < n; ++j) {
+            add(at(i, j), at(i + 1, j), at(i, j + 1));
+            if (i + j + 2 <= n) add(at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+        }
+    return mesh;
 }
 
 } // namespace isoparm::geom

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/geom/status.hpp"
+#include "core/geom/tessellate.hpp"
 #include "core/geom/types.hpp"
 
 namespace isoparm::geom {
@@ -60,5 +61,10 @@ TrianglePatch elevate_triangle(const TrianglePatch& t, int times);
 // together they cover the patch exactly. A piece is `weights` where a level point has zero
 // weight (a point at infinity cannot be a control point).
 Expected<std::array<TrianglePatch, 3>> split_triangle(const TrianglePatch& t, const Barycentric& p);
+
+// A mesh of the patch: the barycentric grid (i, j, k) / n, i + j + k = n, vertices in the
+// control points' order, n^2 triangles counter-clockwise about S_r x S_s, unit normals from
+// the exact derivatives (S_r x S_s; +z where it degenerates). Precondition: n >= 1.
+Mesh tessellate_triangle(const TrianglePatch& t, int n);
 
 } // namespace isoparm::geom
