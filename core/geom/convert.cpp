@@ -4,6 +4,7 @@
 
 #include "core/geom/knots.hpp"
 #include "core/geom/refine.hpp"
+#include "core/geom/validate.hpp"
 
 namespace isoparm::geom {
 
@@ -100,8 +101,8 @@ Expected<std::vector<Surface>> convert(const Surface& s, SplineType to) {
         const int n_v = s.n_v;
         if (Status st = drop_equal_weights(base.weights,
                                            [n_v](std::size_t k) {
-                                               return "/weights/" + std::to_string(k / n_v) +
-                                                      "/" + std::to_string(k % n_v);
+                                               return "/weights/" + std::to_string(k / n_v) + "/" +
+                                                      std::to_string(k % n_v);
                                            });
             !st)
             return st.error();
@@ -113,6 +114,17 @@ Expected<std::vector<Surface>> convert(const Surface& s, SplineType to) {
     }
     auto whole = clamped(base);
     if (!whole) return whole.error();
+    const double pieces_points =
+        static_cast<double>(interior_breaks(whole->knots_u, whole->degree_u, whole->n_u).size() +
+                            1) *
+        static_cast<double>(interior_breaks(whole->knots_v, whole->degree_v, whole->n_v).size() +
+                            1) *
+        (whole->degree_u + 1) * (whole->degree_v + 1);
+    if (pieces_points > static_cast<double>(max_points_per_surface))
+        return make_error_nopath(ErrorCode::limit,
+                                 "the Bezier patches would hold " + format_number(pieces_points) +
+                                     " control points in all; at most " +
+                                     std::to_string(max_points_per_surface) + " are allowed");
     auto strips = cut(*whole, interior_breaks(whole->knots_u, whole->degree_u, whole->n_u),
                       [](const Surface& x, double t) { return split(x, Dir::u, t); });
     if (!strips) return strips.error();

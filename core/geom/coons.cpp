@@ -61,7 +61,8 @@ Expected<Surface> coons(const std::array<Curve, 4>& curves) {
     };
     double size = 0;
     for (const Curve& cv : c)
-        for (const glm::dvec3& P : cv.points) size = std::max(size, glm::length(P - c[0].points[0]));
+        for (const glm::dvec3& P : cv.points)
+            size = std::max(size, glm::length(P - c[0].points[0]));
     const double tolerance = 1e-9 * std::max(size, 1e-300);
     // (curve, its end) against (earlier curve, its end): C_0v starts at C_u0(0) and ends at
     // C_u1(0); C_1v starts at C_u0(1) and ends at C_u1(1).
@@ -104,8 +105,8 @@ Expected<Surface> coons(const std::array<Curve, 4>& curves) {
     Surface& s = *sum;
     const bool all_bezier = std::all_of(curves.begin(), curves.end(),
                                         [](const Curve& cv) { return is_bezier(cv.type); });
-    s.type = construct_detail::result_type(
-        false, all_bezier && s.n_u == s.degree_u + 1 && s.n_v == s.degree_v + 1);
+    s.type = construct_detail::result_type(false, all_bezier && s.n_u == s.degree_u + 1 &&
+                                                      s.n_v == s.degree_v + 1);
     return s;
 }
 

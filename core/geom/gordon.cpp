@@ -20,13 +20,15 @@ constexpr double parameter_agreement = 1e-6;
 // Two curves meet when their closest points are within this of the network's size.
 constexpr double meeting_tolerance = 1e-6;
 constexpr int start_samples = 64;
+constexpr std::size_t max_network_pairs = 4096;
 
 std::string at(const char* family, std::size_t k) {
     return std::string("/") + family + "/" + std::to_string(k);
 }
 
 // Equal weights describe the polynomial curve of the Cartesian points.
-Expected<std::vector<Curve>> polynomial_family(const std::vector<Curve>& curves, const char* family) {
+Expected<std::vector<Curve>> polynomial_family(const std::vector<Curve>& curves,
+                                               const char* family) {
     if (curves.size() < 2)
         return make_error(ErrorCode::schema,
                           std::string("a Gordon network needs at least 2 ") + family + ", got " +
@@ -49,15 +51,17 @@ Expected<std::vector<Curve>> polynomial_family(const std::vector<Curve>& curves,
     if (!compatible) {
         Error e = compatible.error();
         const std::string prefix = "/curves";
-        if (e.path.rfind(prefix, 0) == 0) e.path = std::string("/") + family + e.path.substr(prefix.size());
+        if (e.path.rfind(prefix, 0) == 0)
+            e.path = std::string("/") + family + e.path.substr(prefix.size());
         return e;
     }
     return compatible;
 }
 
 // The closest points of C(u) and D(v) on [0, 1]^2: damped Newton on the gradient of
-// |C - D|^2 / 2 from the nearest pairs and local minima of a sampled grid (two curves may pass close to each
-// other in several places; the meeting is the deepest valley, not always the first found).
+// |C - D|^2 / 2 from the nearest pairs and local minima of a sampled grid (two curves may pass
+// close to each other in several places; the meeting is the deepest valley, not always the first
+// found).
 struct Meeting {
     double u = 0, v = 0, distance = 0;
 };
@@ -65,7 +69,9 @@ struct Meeting {
 Meeting polish(const Curve& C, const Curve& D, Meeting m) {
     // A step is taken only where it brings the curves closer (halved up to 20 times
     // otherwise), so the search never leaves its valley for a worse one.
-    auto gap = [&](double u, double v) { return glm::length(*curve_point(C, u) - *curve_point(D, v)); };
+    auto gap = [&](double u, double v) {
+        return glm::length(*curve_point(C, u) - *curve_point(D, v));
+    };
     for (int iteration = 0; iteration < 50 && m.distance > 0; ++iteration) {
         const auto c = *curve_derivatives(C, m.u, 2), d = *curve_derivatives(D, m.v, 2);
         const glm::dvec3 r = c[0] - d[0];
@@ -115,8 +121,9 @@ Meeting closest(const Curve& C, const Curve& D) {
     std::vector<Meeting> grid;
     for (auto* list : {&nearest, &valleys}) {
         const std::size_t keep = std::min<std::size_t>(list->size(), 16);
-        std::partial_sort(list->begin(), list->begin() + static_cast<long>(keep), list->end(),
-                          [](const Meeting& x, const Meeting& y) { return x.distance < y.distance; });
+        std::partial_sort(
+            list->begin(), list->begin() + static_cast<long>(keep), list->end(),
+            [](const Meeting& x, const Meeting& y) { return x.distance < y.distance; });
         grid.insert(grid.end(), list->begin(), list->begin() + static_cast<long>(keep));
     }
     const std::size_t starts = grid.size();
@@ -172,6 +179,13 @@ Expected<Gordon> gordon(const std::vector<Curve>& u_curves, const std::vector<Cu
     auto D = polynomial_family(v_curves, "v_curves");
     if (!D) return D.error();
     const std::size_t K = C->size(), L = D->size();
+    // Every pair is searched on a 65 x 65 grid: bound the pairs, so a request stays in seconds.
+    if (K * L > max_network_pairs)
+        return make_error(ErrorCode::limit,
+                          "a network of " + std::to_string(K) + " x " + std::to_string(L) +
+                              " curves has more than " + std::to_string(max_network_pairs) +
+                              " crossings to find",
+                          "/v_curves");
     const double tolerance = meeting_tolerance * std::max(network_size(*C, *D), 1e-300);
 
     // meetings[k][l]: where u-curve k and v-curve l meet.
@@ -225,7 +239,8 @@ Expected<Gordon> gordon(const std::vector<Curve>& u_curves, const std::vector<Cu
     std::vector<double> vs, us;
     for (std::size_t k : *v_order) Cs.push_back((*C)[k]), vs.push_back(out.v_params[k]);
     for (std::size_t l : *u_order) Ds.push_back((*D)[l]), us.push_back(out.u_params[l]);
-    const int qv = std::min<int>(3, static_cast<int>(K) - 1), pu = std::min<int>(3, static_cast<int>(L) - 1);
+    const int qv = std::min<int>(3, static_cast<int>(K) - 1),
+              pu = std::min<int>(3, static_cast<int>(L) - 1);
 
     auto Pu = skin_compatible(Cs, qv, vs); // P_u(u, v_k) = C_k(u)
     if (!Pu) return Pu.error();
@@ -242,17 +257,21 @@ Expected<Gordon> gordon(const std::vector<Curve>& u_curves, const std::vector<Cu
         std::vector<double> data;
         for (std::size_t l : *u_order) {
             const Meeting& m = meetings[(*v_order)[k]][l];
-            const glm::dvec3 q = 0.5 * (*curve_point((*C)[(*v_order)[k]], m.u) + *curve_point((*D)[l], m.v));
+            const glm::dvec3 q =
+                0.5 * (*curve_point((*C)[(*v_order)[k]], m.u) + *curve_point((*D)[l], m.v));
             data.insert(data.end(), {q.x, q.y, q.z});
         }
         if (!solve_collocation(row.knots, pu, us, data, 3))
-            return make_error(ErrorCode::geometry, "the intersection grid is singular", "/v_curves");
-        for (std::size_t l = 0; l < L; ++l) row.points.push_back({data[3 * l], data[3 * l + 1], data[3 * l + 2]});
+            return make_error(ErrorCode::geometry, "the intersection grid is singular",
+                              "/v_curves");
+        for (std::size_t l = 0; l < L; ++l)
+            row.points.push_back({data[3 * l], data[3 * l + 1], data[3 * l + 2]});
         rows.push_back(std::move(row));
     }
     auto T = skin_compatible(rows, qv, vs);
     if (!T) return T.error();
-    auto sum = sum_of_surfaces({{1.0, Pu->surface}, {1.0, transposed(Pv->surface)}, {-1.0, T->surface}});
+    auto sum =
+        sum_of_surfaces({{1.0, Pu->surface}, {1.0, transposed(Pv->surface)}, {-1.0, T->surface}});
     if (!sum) return sum.error();
     out.surface = std::move(sum).value();
     out.surface.type = SplineType::bspline;

@@ -102,7 +102,8 @@ Expected<KnotSplit<Curve>> split_knot(const Curve& c, double knot, std::optional
     for (double t : sample_params(std::max(a.lo, b.lo), std::min(a.hi, b.hi),
                                   spans_of(out.result.knots, c.degree, c.count()))) {
         const auto before = curve_point(c, t), after = curve_point(out.result, t);
-        if (before && after) out.max_change = std::max(out.max_change, glm::length(*after - *before));
+        if (before && after)
+            out.max_change = std::max(out.max_change, glm::length(*after - *before));
     }
     return out;
 }
@@ -119,9 +120,9 @@ Expected<KnotSplit<Surface>> split_knot(const Surface& s, Dir dir, double knot,
         const Interval a = domain(s, d);
         const Interval b = domain(out.result, d);
         // Fewer samples across the split direction's partner keep the grid near 4096 x 64.
-        params[d == Dir::u ? 0 : 1] = sample_params(
-            std::max(a.lo, b.lo), std::min(a.hi, b.hi),
-            d == dir ? spans_of(out.result.knots(d), s.degree(d), s.count(d)) : 2);
+        params[d == Dir::u ? 0 : 1] =
+            sample_params(std::max(a.lo, b.lo), std::min(a.hi, b.hi),
+                          d == dir ? spans_of(out.result.knots(d), s.degree(d), s.count(d)) : 2);
     }
     for (double u : params[0])
         for (double v : params[1]) {

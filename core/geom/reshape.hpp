@@ -23,8 +23,7 @@ Surface close_periodic(const Surface& s, Dir dir);
 // appears just before it; the shape changes slightly. delta defaults to 1% of the span before
 // the knot. Errors (`schema`): a value that is not a knot, or is simple, or has no knot before
 // it ("/knot"); delta not > 0 or reaching the previous distinct knot ("/delta").
-template <class Shape>
-struct KnotSplit {
+template <class Shape> struct KnotSplit {
     Shape result;
     double max_change = 0; // largest distance between old and new over a dense sample
 };

@@ -42,7 +42,8 @@ Expected<Surface> sum_of_surfaces(const std::vector<std::pair<double, Surface>>&
     for (Dir dir : {Dir::u, Dir::v}) {
         std::map<double, int> merged;
         for (const Surface& r : raised)
-            for (const auto& [t, m] : multiplicities(r.knots(dir))) merged[t] = std::max(merged[t], m);
+            for (const auto& [t, m] : multiplicities(r.knots(dir)))
+                merged[t] = std::max(merged[t], m);
         for (Surface& r : raised) {
             const std::map<double, int> own = multiplicities(r.knots(dir));
             for (const auto& [t, m] : merged) {

@@ -1,6 +1,7 @@
 #include "core/geom/triangle.hpp"
 
 #include <cmath>
+#include <glm/geometric.hpp>
 
 namespace isoparm::geom {
 
@@ -26,9 +27,10 @@ Net step(const Net& net, const Barycentric& p) {
     Net next(static_cast<std::size_t>(TrianglePatch::count_for(m)));
     for (int i = m; i >= 0; --i)
         for (int j = m - i; j >= 0; --j)
-            next[TrianglePatch::index(m, i, j)] = p[0] * net[TrianglePatch::index(m + 1, i + 1, j)] +
-                                                  p[1] * net[TrianglePatch::index(m + 1, i, j + 1)] +
-                                                  p[2] * net[TrianglePatch::index(m + 1, i, j)];
+            next[TrianglePatch::index(m, i, j)] =
+                p[0] * net[TrianglePatch::index(m + 1, i + 1, j)] +
+                p[1] * net[TrianglePatch::index(m + 1, i, j + 1)] +
+                p[2] * net[TrianglePatch::index(m + 1, i, j)];
     return next;
 }
 
@@ -59,7 +61,8 @@ std::optional<glm::dvec3> cartesian(const HPoint& h) {
 } // namespace
 
 Status validate_triangle(const TrianglePatch& t) {
-    if (t.degree < 1) return make_error(ErrorCode::degree, "the degree must be at least 1", "/degree");
+    if (t.degree < 1)
+        return make_error(ErrorCode::degree, "the degree must be at least 1", "/degree");
     if (t.degree > max_triangle_degree)
         return make_error(ErrorCode::limit,
                           "degree " + std::to_string(t.degree) + " is above the cap of " +
@@ -93,9 +96,8 @@ std::optional<glm::dvec3> triangle_point(const TrianglePatch& t, const Barycentr
     return cartesian(apex(homogeneous(t), p));
 }
 
-std::optional<std::array<std::array<glm::dvec3, 3>, 3>> triangle_derivatives(const TrianglePatch& t,
-                                                                          const Barycentric& p,
-                                                                          int d) {
+std::optional<std::array<std::array<glm::dvec3, 3>, 3>>
+triangle_derivatives(const TrianglePatch& t, const Barycentric& p, int d) {
     // Homogeneous derivatives H[a][b] = (n! / (n - a - b)!) x the difference net's value.
     const Net net = homogeneous(t);
     const int n = t.degree;
@@ -120,7 +122,8 @@ std::optional<std::array<std::array<glm::dvec3, 3>, 3>> triangle_derivatives(con
             glm::dvec3 v(H[a][b]);
             for (int i = 0; i <= a; ++i)
                 for (int j = 0; j <= b; ++j)
-                    if (i + j > 0) v -= binomial[a][i] * binomial[b][j] * H[i][j].w * S[a - i][b - j];
+                    if (i + j > 0)
+                        v -= binomial[a][i] * binomial[b][j] * H[i][j].w * S[a - i][b - j];
             S[a][b] = v / w;
         }
     return S;
@@ -167,7 +170,8 @@ TrianglePatch elevate_triangle(const TrianglePatch& t, int times) {
     return out;
 }
 
-Expected<std::array<TrianglePatch, 3>> split_triangle(const TrianglePatch& t, const Barycentric& p) {
+Expected<std::array<TrianglePatch, 3>> split_triangle(const TrianglePatch& t,
+                                                      const Barycentric& p) {
     // levels[l][index(n - l, i, j)] = b^l_ijk. Piece v takes, for its control point with index
     // a in place of vertex v, the level-a point whose v-th index is 0 (Farin 17.5).
     std::vector<Net> levels{homogeneous(t)};
@@ -198,6 +202,43 @@ Expected<std::array<TrianglePatch, 3>> split_triangle(const TrianglePatch& t, co
             }
     }
     return pieces;
+}
+
+Mesh tessellate_triangle(const TrianglePatch& t, int n) {
+    Mesh mesh;
+    for (int i = n; i >= 0; --i)
+        for (int j = n - i; j >= 0; --j) {
+            const Barycentric p = {static_cast<double>(i) / n, static_cast<double>(j) / n,
+                                   static_cast<double>(n - i - j) / n};
+            const auto D = triangle_derivatives(t, p, 1);
+            if (!D) {
+                if (mesh.exists.empty())
+                    mesh.exists.assign(static_cast<std::size_t>(TrianglePatch::count_for(n)), 1);
+                mesh.exists[mesh.positions.size()] = 0;
+                mesh.positions.push_back(glm::dvec3(0.0));
+                mesh.normals.push_back({0, 0, 1});
+                continue;
+            }
+            const glm::dvec3 normal = glm::cross((*D)[1][0], (*D)[0][1]);
+            const double length = glm::length(normal);
+            mesh.positions.push_back((*D)[0][0]);
+            mesh.normals.push_back(length > 0 ? normal / length : glm::dvec3(0, 0, 1));
+        }
+    // Grid cell below (i, j): vertices (i, j), (i - 1, j), (i - 1, j + 1) up, and the down
+    // triangle beside it; ordered so that +r, +s turn counter-clockwise about S_r x S_s.
+    auto at = [&](int i, int j) {
+        return static_cast<std::uint32_t>(TrianglePatch::index(n, i, j));
+    };
+    auto usable = [&](std::uint32_t v) { return mesh.vertex_exists(v); };
+    auto add = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        if (usable(a) && usable(b) && usable(c)) mesh.triangles.push_back({a, b, c});
+    };
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; i + j < n; ++j) {
+            add(at(i, j), at(i + 1, j), at(i, j + 1));
+            if (i + j + 2 <= n) add(at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+        }
+    return mesh;
 }
 
 } // namespace isoparm::geom

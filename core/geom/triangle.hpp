@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/geom/status.hpp"
+#include "core/geom/tessellate.hpp"
 #include "core/geom/types.hpp"
 
 namespace isoparm::geom {
@@ -43,9 +44,8 @@ std::optional<glm::dvec3> triangle_point(const TrianglePatch& t, const Barycentr
 // D[a][b] = d^(a+b) S / dr^a ds^b for a + b <= d <= 2, with t = 1 - r - s (so d/dr runs along
 // the edge from b_00n to b_n00 and d/ds from b_00n to b_0n0); rational derivatives by the
 // quotient rule. nullopt where the point does not exist.
-std::optional<std::array<std::array<glm::dvec3, 3>, 3>> triangle_derivatives(const TrianglePatch& t,
-                                                                          const Barycentric& p,
-                                                                          int d);
+std::optional<std::array<std::array<glm::dvec3, 3>, 3>>
+triangle_derivatives(const TrianglePatch& t, const Barycentric& p, int d);
 
 // Every level of de Casteljau's construction: level 0 the control points, level l the
 // (n - l + 1)(n - l + 2)/2 points of degree n - l in the same order, the last one point (the
@@ -61,5 +61,10 @@ TrianglePatch elevate_triangle(const TrianglePatch& t, int times);
 // together they cover the patch exactly. A piece is `weights` where a level point has zero
 // weight (a point at infinity cannot be a control point).
 Expected<std::array<TrianglePatch, 3>> split_triangle(const TrianglePatch& t, const Barycentric& p);
+
+// A mesh of the patch: the barycentric grid (i, j, k) / n, i + j + k = n, vertices in the
+// control points' order, n^2 triangles counter-clockwise about S_r x S_s, unit normals from
+// the exact derivatives (S_r x S_s; +z where it degenerates). Precondition: n >= 1.
+Mesh tessellate_triangle(const TrianglePatch& t, int n);
 
 } // namespace isoparm::geom

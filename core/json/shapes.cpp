@@ -6,10 +6,10 @@
 #include <optional>
 #include <string>
 
-#include "core/json/reader.hpp"
-#include "core/json/fields.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/validate.hpp"
+#include "core/json/fields.hpp"
+#include "core/json/reader.hpp"
 
 namespace isoparm::json_io {
 
@@ -131,7 +131,6 @@ std::optional<Error> check_degree_fits(std::int64_t p, long n, bool bezier_defau
     return std::nullopt;
 }
 
-
 } // namespace
 
 Expected<geom::Curve> curve_from_json(const json& j) {
@@ -228,16 +227,17 @@ Expected<geom::Surface> surface_from_json(const json& j) {
     long n_v = -1;
     for (std::size_t i = 0; i < P.size(); ++i) {
         const std::string row = "/points" + at(static_cast<long>(i));
-        if (!P[i].is_array()) return schema_error("a surface's points are rows (arrays) of points", row);
+        if (!P[i].is_array())
+            return schema_error("a surface's points are rows (arrays) of points", row);
         const long len = static_cast<long>(P[i].size());
         if (len > max_dir)
             return make_error(ErrorCode::limit, "too many points along v", "/points");
         if (n_v < 0) n_v = len;
         if (len != n_v) {
             return schema_error("every row of points must have the same length: row " +
-                              std::to_string(i) + " has " + std::to_string(len) + ", row 0 has " +
-                              std::to_string(n_v),
-                          row);
+                                    std::to_string(i) + " has " + std::to_string(len) +
+                                    ", row 0 has " + std::to_string(n_v),
+                                row);
         }
     }
     if (n_v < 0) n_v = 0;

@@ -46,6 +46,7 @@ OpResult op_triangle_evaluate(const json& request);
 OpResult op_triangle_elevate(const json& request);
 OpResult op_triangle_split(const json& request);
 OpResult op_de_casteljau(const json& request);
+OpResult op_export(const json& request); // op_export.cpp
 OpResult op_split_knot(const json& request);
 OpResult op_tessellate(const json& request);  // op_tessellate.cpp
 OpResult op_insert_knot(const json& request); // op_refine.cpp
@@ -97,6 +98,11 @@ geom::Expected<geom::Dir> read_direction(const json& request, const Subject& sub
 // `domain` error unless t lies in [lo, hi]: "parameter 1.5 outside the domain [0, 1]".
 geom::Status check_in_domain(double t, const geom::Interval& domain, const std::string& path,
                              std::string_view what = "parameter");
+
+// `samples` [n_u, n_v] of a surface grid: integers >= 2 (`schema`), within the grid and mesh
+// caps and the work budget of a degree (degree_u, degree_v) tessellation (`limit`), all at
+// "/samples" ("/samples/k"). Shared by tessellate and export.
+geom::Expected<std::array<int, 2>> read_grid_samples(const json& request, int degree_u, int degree_v);
 
 // positions / normals / triangles; a vertex that does not exist is null (op_tessellate.cpp).
 json mesh_to_json(const geom::Mesh& mesh);

@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <vector>
 
-#include "core/json/shapes.hpp"
-#include "core/geom/coons.hpp"
 #include "core/geom/construct.hpp"
+#include "core/geom/coons.hpp"
 #include "core/geom/gordon.hpp"
+#include "core/json/shapes.hpp"
 
 namespace isoparm::protocol {
 
@@ -24,7 +24,8 @@ Expected<std::vector<Curve>> read_curve_list(const json& request, std::string_vi
     const json* v = find_member(request, name);
     if (!v) return missing_member("", name);
     const std::string path = member_path("", name);
-    if (!v->is_array()) return schema_error(std::string(name) + " must be an array of curves", path);
+    if (!v->is_array())
+        return schema_error(std::string(name) + " must be an array of curves", path);
     if (v->size() < min || v->size() > max) {
         const std::string want =
             min == max ? "exactly " + std::to_string(min) : "at least " + std::to_string(min);

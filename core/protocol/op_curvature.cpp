@@ -60,10 +60,9 @@ OpResult op_curvature(const json& request) {
     const double count = static_cast<double>(params->size());
     // Second derivatives for a surface (with the normal), third for a curve's torsion.
     const geom::WorkEstimate cost =
-        subject->is_surface
-            ? geom::estimate_surface_evaluation(count, subject->surface.degree_u,
-                                                subject->surface.degree_v, 2, true)
-            : geom::estimate_curve_evaluation(count, subject->curve.degree, 3);
+        subject->is_surface ? geom::estimate_surface_evaluation(count, subject->surface.degree_u,
+                                                                subject->surface.degree_v, 2, true)
+                            : geom::estimate_curve_evaluation(count, subject->curve.degree, 3);
     if (geom::Status ok = geom::spend_work(cost, "/params",
                                            geom::with_thousands(count) + " curvature evaluations");
         !ok)
@@ -78,7 +77,8 @@ OpResult op_curvature(const json& request) {
     } else {
         auto ts = read_curve_params(*params, geom::domain(subject->curve));
         if (!ts) return ts.error();
-        for (double t : *ts) curvatures.push_back(curve_entry(geom::curve_curvature(subject->curve, t)));
+        for (double t : *ts)
+            curvatures.push_back(curve_entry(geom::curve_curvature(subject->curve, t)));
     }
     json answer = json::object();
     answer["curvatures"] = std::move(curvatures);

@@ -37,8 +37,8 @@ OpResult op_close(const json& request) {
 }
 
 OpResult op_split_knot(const json& request) {
-    if (geom::Status s = check_fields(request, "split_knot",
-                                      {"curve", "surface", "direction", "knot", "delta"});
+    if (geom::Status s =
+            check_fields(request, "split_knot", {"curve", "surface", "direction", "knot", "delta"});
         !s)
         return s.error();
     geom::Expected<Subject> subject = read_subject(request, true, true);

@@ -32,22 +32,31 @@ Expected<geom::Barycentric> read_barycentric(const json& v, const std::string& p
         return schema_error("a triangle parameter is [r, s, t]", path);
     geom::Barycentric p{};
     for (std::size_t k = 0; k < 3; ++k) {
-        Expected<double> x = read_finite(v[k], path + "/" + std::to_string(k), "a barycentric coordinate");
+        Expected<double> x =
+            read_finite(v[k], path + "/" + std::to_string(k), "a barycentric coordinate");
         if (!x) return x.error();
         p[k] = *x;
     }
     const double sum = p[0] + p[1] + p[2];
-    const bool inside = strict ? p[0] > 0 && p[1] > 0 && p[2] > 0
-                               : p[0] >= 0 && p[1] >= 0 && p[2] >= 0;
+    const bool inside =
+        strict ? p[0] > 0 && p[1] > 0 && p[2] > 0 : p[0] >= 0 && p[1] >= 0 && p[2] >= 0;
     if (!inside || !(std::abs(sum - 1) <= barycentric_tolerance))
-        return geom::make_error(geom::ErrorCode::domain,
-                                "[" + geom::format_number(p[0]) + ", " + geom::format_number(p[1]) +
-                                    ", " + geom::format_number(p[2]) + "] is not " +
-                                    (strict ? "strictly inside" : "in") +
-                                    " the triangle (each coordinate " + (strict ? "> 0" : ">= 0") +
-                                    ", sum 1)",
-                                path);
+        return geom::make_error(
+            geom::ErrorCode::domain,
+            "[" + geom::format_number(p[0]) + ", " + geom::format_number(p[1]) + ", " +
+                geom::format_number(p[2]) + "] is not " + (strict ? "strictly inside" : "in") +
+                " the triangle (each coordinate " + (strict ? "> 0" : ">= 0") + ", sum 1)",
+            path);
     return p;
+}
+
+// de Casteljau's cost (work_budget.hpp) charged before anything is computed.
+geom::Status spend_on_triangle(const geom::TrianglePatch& t, double count, int d, bool all_levels,
+                               const std::string& path) {
+    return geom::spend_work(
+        geom::estimate_triangle_de_casteljau(count, t.degree, d, all_levels), path,
+        geom::with_thousands(count) + " de Casteljau constructions on a degree-" +
+            std::to_string(t.degree) + " triangle");
 }
 
 json optional_points(const std::vector<std::optional<glm::dvec3>>& level) {
@@ -59,12 +68,13 @@ json optional_points(const std::vector<std::optional<glm::dvec3>>& level) {
 } // namespace
 
 OpResult op_triangle_evaluate(const json& request) {
-    if (geom::Status s = check_fields(request, "evaluate", {"triangle", "params", "derivatives"}); !s)
+    if (geom::Status s = check_fields(request, "evaluate", {"triangle", "params", "derivatives"});
+        !s)
         return s.error();
     Expected<geom::TrianglePatch> t = read_triangle(request);
     if (!t) return t.error();
-    Expected<std::int64_t> d =
-        integer_option(request, "derivatives", 0, 0, 2, "derivatives is an integer 0..2 for a triangle");
+    Expected<std::int64_t> d = integer_option(request, "derivatives", 0, 0, 2,
+                                              "derivatives is an integer 0..2 for a triangle");
     if (!d) return d.error();
     const json* params = find_member(request, "params");
     if (!params) return missing_member("", "params");
@@ -73,19 +83,13 @@ OpResult op_triangle_evaluate(const json& request) {
         return geom::make_error(geom::ErrorCode::limit,
                                 "too many parameters (" + std::to_string(params->size()) + ")",
                                 "/params");
-    // de Casteljau costs about the number of control points per evaluation, like a surface of
-    // that many points per span.
     const double count = static_cast<double>(params->size());
-    const geom::WorkEstimate cost =
-        geom::estimate_surface_evaluation(count, t->degree, t->degree, static_cast<int>(*d), false);
-    if (geom::Status ok = geom::spend_work(cost, "/params",
-                                           geom::with_thousands(count) + " points of a degree-" +
-                                               std::to_string(t->degree) + " triangle");
-        !ok)
+    if (geom::Status ok = spend_on_triangle(*t, count, static_cast<int>(*d), false, "/params"); !ok)
         return ok.error();
     json points = json::array(), derivatives = json::array();
     for (std::size_t k = 0; k < params->size(); ++k) {
-        Expected<geom::Barycentric> p = read_barycentric((*params)[k], "/params/" + std::to_string(k), false);
+        Expected<geom::Barycentric> p =
+            read_barycentric((*params)[k], "/params/" + std::to_string(k), false);
         if (!p) return p.error();
         if (*d == 0) {
             points.push_back(optional_point(geom::triangle_point(*t, *p)));
@@ -121,8 +125,10 @@ OpResult op_de_casteljau(const json& request) {
     if (!param) return missing_member("", "param");
     Expected<geom::Barycentric> p = read_barycentric(*param, "/param", false);
     if (!p) return p.error();
+    if (geom::Status ok = spend_on_triangle(*t, 1, 0, true, "/triangle"); !ok) return ok.error();
     json levels = json::array();
-    for (const auto& level : geom::triangle_de_casteljau(*t, *p)) levels.push_back(optional_points(level));
+    for (const auto& level : geom::triangle_de_casteljau(*t, *p))
+        levels.push_back(optional_points(level));
     json answer = json::object();
     answer["levels"] = std::move(levels);
     return answer;
@@ -133,9 +139,9 @@ OpResult op_triangle_elevate(const json& request) {
         return s.error();
     Expected<geom::TrianglePatch> t = read_triangle(request);
     if (!t) return t.error();
-    Expected<std::int64_t> times = integer_option(request, "times", 1, 1,
-                                                  std::numeric_limits<std::int64_t>::max(),
-                                                  "times is an integer >= 1");
+    Expected<std::int64_t> times =
+        integer_option(request, "times", 1, 1, std::numeric_limits<std::int64_t>::max(),
+                       "times is an integer >= 1");
     if (!times) return times.error();
     if (t->degree + *times > geom::max_triangle_degree)
         return geom::make_error(geom::ErrorCode::limit,
@@ -149,13 +155,15 @@ OpResult op_triangle_elevate(const json& request) {
 }
 
 OpResult op_triangle_split(const json& request) {
-    if (geom::Status s = check_fields(request, "split", {"triangle", "param"}); !s) return s.error();
+    if (geom::Status s = check_fields(request, "split", {"triangle", "param"}); !s)
+        return s.error();
     Expected<geom::TrianglePatch> t = read_triangle(request);
     if (!t) return t.error();
     const json* param = find_member(request, "param");
     if (!param) return missing_member("", "param");
     Expected<geom::Barycentric> p = read_barycentric(*param, "/param", true);
     if (!p) return p.error();
+    if (geom::Status ok = spend_on_triangle(*t, 1, 0, false, "/triangle"); !ok) return ok.error();
     auto pieces = geom::split_triangle(*t, *p);
     if (!pieces) return pieces.error();
     json list = json::array();

@@ -33,7 +33,7 @@ struct OpEntry {
 };
 
 // Adding an op is one line here and one file (see detail.hpp).
-constexpr std::array<OpEntry, 22> op_table = {{
+constexpr std::array<OpEntry, 23> op_table = {{
     {"evaluate", protocol::op_evaluate},
     {"basis", protocol::op_basis},
     {"deboor", protocol::op_deboor},
@@ -56,6 +56,7 @@ constexpr std::array<OpEntry, 22> op_table = {{
     {"close", protocol::op_close},
     {"split_knot", protocol::op_split_knot},
     {"de_casteljau", protocol::op_de_casteljau},
+    {"export", protocol::op_export},
 }};
 
 json error_response(const Error& e) {

@@ -16,8 +16,7 @@ using isoparm::testing::RandomGeometry;
 namespace {
 
 // The piece whose domain holds t (the first one on a shared end).
-template <class Pieces>
-const Curve& piece_at(const Pieces& pieces, double t) {
+template <class Pieces> const Curve& piece_at(const Pieces& pieces, double t) {
     for (const Curve& c : pieces)
         if (t <= c.knots.back()) return c;
     return pieces.back();
@@ -55,8 +54,8 @@ TEST(Convert, ASurfaceBecomesItsGridOfBezierPatchesInUMajorOrder) {
     auto pieces = convert(s, SplineType::bezier);
     ASSERT_TRUE(pieces.ok());
     ASSERT_EQ(pieces->size(), 4u);
-    EXPECT_EQ((*pieces)[1].knots_u.front(), 0.0);  // second piece: first u-strip,
-    EXPECT_EQ((*pieces)[1].knots_v.front(), 0.5);  // second v-piece
+    EXPECT_EQ((*pieces)[1].knots_u.front(), 0.0); // second piece: first u-strip,
+    EXPECT_EQ((*pieces)[1].knots_v.front(), 0.5); // second v-piece
     const Surface& last = (*pieces)[3];
     EXPECT_LT(glm::length(*surface_point(last, 0.8, 0.9) - *surface_point(s, 0.8, 0.9)), 1e-12);
 }

@@ -49,7 +49,8 @@ TEST(Gordon, ReproducesABicubicFromFourByFourIsocurves) {
     }
     for (double u : {0.1, 0.5, 0.93})
         for (double v : {0.05, 0.45, 0.8})
-            EXPECT_LT(glm::length(*surface_point(g->surface, u, v) - *surface_point(S, u, v)), 1e-9);
+            EXPECT_LT(glm::length(*surface_point(g->surface, u, v) - *surface_point(S, u, v)),
+                      1e-9);
 }
 
 TEST(Gordon, InterpolatesEveryCurveOfAThreeByFiveNetwork) {

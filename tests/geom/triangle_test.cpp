@@ -45,8 +45,13 @@ glm::dvec3 bernstein_sum(const TrianglePatch& T, const Barycentric& p) {
     return num / den;
 }
 
-const Barycentric samples[] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.2, 0.3, 0.5},
-                               {0.6, 0.1, 0.3}, {0.5, 0.5, 0}, {1.0 / 3, 1.0 / 3, 1.0 / 3}};
+const Barycentric samples[] = {{1, 0, 0},
+                               {0, 1, 0},
+                               {0, 0, 1},
+                               {0.2, 0.3, 0.5},
+                               {0.6, 0.1, 0.3},
+                               {0.5, 0.5, 0},
+                               {1.0 / 3, 1.0 / 3, 1.0 / 3}};
 
 TEST(Triangle, OrderPutsBn00FirstAndB00nLast) {
     EXPECT_EQ(TrianglePatch::index(3, 3, 0), 0);
@@ -102,8 +107,9 @@ TEST(Triangle, SplitPiecesCoverThePatchExactly) {
                     const double vertex = c == v ? 0.0 : 1.0; // the kept vertices
                     original[c] = q[v] * P[c] + (c == v ? 0.0 : q[c] * vertex);
                 }
-                EXPECT_LT(glm::length(*triangle_point((*pieces)[v], q) - *triangle_point(T, original)),
-                          1e-13)
+                EXPECT_LT(
+                    glm::length(*triangle_point((*pieces)[v], q) - *triangle_point(T, original)),
+                    1e-13)
                     << v;
             }
         }
@@ -121,7 +127,8 @@ TEST(Triangle, DerivativesMatchCentralDifferences) {
         auto at = [&](double dr, double ds) {
             return *triangle_point(T, {p[0] + dr, p[1] + ds, p[2] - dr - ds});
         };
-        const glm::dvec3 Sr = (at(h, 0) - at(-h, 0)) / (2 * h), Ss = (at(0, h) - at(0, -h)) / (2 * h);
+        const glm::dvec3 Sr = (at(h, 0) - at(-h, 0)) / (2 * h),
+                         Ss = (at(0, h) - at(0, -h)) / (2 * h);
         const glm::dvec3 Srr = (at(h, 0) - 2.0 * at(0, 0) + at(-h, 0)) / (h * h);
         const glm::dvec3 Srs = (at(h, h) - at(h, -h) - at(-h, h) + at(-h, -h)) / (4 * h * h);
         EXPECT_LT(glm::length((*D)[1][0] - Sr), 1e-7);

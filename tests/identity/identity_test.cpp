@@ -91,8 +91,8 @@ TEST(Identity, ProtocolAnswers) {
         SCOPED_TRACE(path.string());
         std::ostringstream out, err;
         const int status = protocol::run_protocol_text(slurp(path), out, err);
-        const std::string answer = "exit " + std::to_string(status) + "\n--- stdout\n" +
-                                   out.str() + "--- stderr\n" + err.str();
+        const std::string answer = "exit " + std::to_string(status) + "\n--- stdout\n" + out.str() +
+                                   "--- stderr\n" + err.str();
         check_or_record(recorded_dir / "protocol" / (group + "__" + stem_of(path) + ".txt"),
                         answer);
     }

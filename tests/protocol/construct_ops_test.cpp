@@ -7,10 +7,10 @@
 #include <sstream>
 #include <string>
 
-#include "core/json/shapes.hpp"
-#include "core/protocol/protocol.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
+#include "core/json/shapes.hpp"
+#include "core/protocol/protocol.hpp"
 
 namespace {
 

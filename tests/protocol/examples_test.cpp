@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "core/json/shapes.hpp"
-#include "core/protocol/protocol.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
+#include "core/json/shapes.hpp"
+#include "core/protocol/protocol.hpp"
 
 namespace {
 
