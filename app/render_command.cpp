@@ -6,7 +6,9 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "app/commands.hpp"
 #include "core/json/out_of_memory.hpp"
@@ -84,22 +86,22 @@ void apply_toggle(int flag, bool& setting) {
 std::string configure(const RenderOptions& o, ui::AppContext& ctx) {
     doc::Document& d = ctx.doc;
     if (!o.style.empty()) {
-        d.display.style = o.style == "shaded"      ? doc::DisplayStyle::shaded
-                          : o.style == "wireframe" ? doc::DisplayStyle::wireframe
-                                                   : doc::DisplayStyle::both;
+        // The option's values were checked against the same names (add_options).
+        d.view.display.style =
+            geom::parse_name<doc::DisplayStyle>(o.style).value_or(doc::DisplayStyle::both);
     }
-    apply_toggle(o.points, d.display.control_points);
-    apply_toggle(o.net, d.display.control_net);
-    apply_toggle(o.ids, d.display.point_ids);
-    apply_toggle(o.knot_curves, d.display.knot_curves);
-    apply_toggle(o.indicator_point, d.display.indicator_point);
-    apply_toggle(o.deboor, d.display.deboor);
+    apply_toggle(o.points, d.view.display.control_points);
+    apply_toggle(o.net, d.view.display.control_net);
+    apply_toggle(o.ids, d.view.display.point_ids);
+    apply_toggle(o.knot_curves, d.view.display.knot_curves);
+    apply_toggle(o.indicator_point, d.view.display.indicator_point);
+    apply_toggle(o.deboor, d.view.display.deboor);
     if (!o.select.empty() || !o.indicator.empty()) {
         if (!ui::current_surface(d)) {
             // Select the first surface so the options have something to act on.
             for (const doc::Object& obj : d.objects)
-                if (std::holds_alternative<doc::SurfaceObject>(obj.shape)) {
-                    d.selection = {obj.id, -1, -1};
+                if (obj.surface()) {
+                    d.view.selection = {obj.id, -1, -1};
                     break;
                 }
         }
@@ -111,14 +113,14 @@ std::string configure(const RenderOptions& o, ui::AppContext& ctx) {
             // Subpatches take the original domain their group tiles (core/doc/patches.hpp).
             const doc::Object* current = nullptr;
             ui::current_surface(d, &current);
-            const doc::ParamRect r = doc::tracing_domain(d, *current);
+            const geom::ParamRect r = doc::tracing_domain(d, *current);
             const geom::Interval du = r.u, dv = r.v;
             if (!uv || !du.contains((*uv)[0]) || !dv.contains((*uv)[1]))
                 return "--indicator '" + o.indicator + "' must be U,V inside the domain [" +
                        geom::format_number(du.lo) + ", " + geom::format_number(du.hi) + "] x [" +
                        geom::format_number(dv.lo) + ", " + geom::format_number(dv.hi) + "]";
-            d.indicator = {((*uv)[0] - du.lo) / (du.hi - du.lo),
-                           ((*uv)[1] - dv.lo) / (dv.hi - dv.lo)};
+            d.view.indicator = {((*uv)[0] - du.lo) / (du.hi - du.lo),
+                                ((*uv)[1] - dv.lo) / (dv.hi - dv.lo)};
             doc::follow_indicator(d, current->id);
         }
         if (!o.select.empty()) {
@@ -132,7 +134,7 @@ std::string configure(const RenderOptions& o, ui::AppContext& ctx) {
                 return "--select '" + o.select + "' must be I,J with 0 <= I < " +
                        std::to_string(s->n_u) + " and 0 <= J < " + std::to_string(s->n_v) +
                        " (a point of " + current->name + ")";
-            d.selection = {current->id, i, j};
+            d.view.selection = {current->id, i, j};
         }
     }
     if (o.deboor_step != -1) {
@@ -142,7 +144,7 @@ std::string configure(const RenderOptions& o, ui::AppContext& ctx) {
         if (!s || o.deboor_step < 0 || o.deboor_step > last)
             return "--deboor-step " + std::to_string(o.deboor_step) + " must be 0.." +
                    std::to_string(last) + " (p_u + p_v + 1 steps for the current surface)";
-        d.display.deboor = true;
+        d.view.display.deboor = true;
         ctx.ui.deboor.step = o.deboor_step;
     }
     if (!o.camera.empty()) {
@@ -156,6 +158,13 @@ std::string configure(const RenderOptions& o, ui::AppContext& ctx) {
         if (c->size() == 3) ctx.ui.zoom_after_fit = (*c)[2] / 100.0;
     }
     return "";
+}
+
+// The names --style accepts: the scene file's, from the same table.
+std::vector<std::string> display_style_names() {
+    std::vector<std::string> out;
+    for (const auto& entry : doc::display_style_names) out.emplace_back(entry.name);
+    return out;
 }
 
 } // namespace
@@ -173,7 +182,7 @@ Action register_render_command(CLI::App& app) {
                     "position indicator U,V (parameters in the domain)");
     sub->add_option("--select", o->select, "select control point I,J of the current surface");
     sub->add_option("--style", o->style, "shaded, wireframe or both")
-        ->check(CLI::IsMember({"shaded", "wireframe", "both"}));
+        ->check(CLI::IsMember(display_style_names()));
     sub->add_option("--camera", o->camera,
                     "YAW,PITCH[,ZOOM]: orbit angles in degrees, zoom in percent of fit-to-view");
     sub->add_flag("--points,!--no-points", o->points, "show / hide control points");

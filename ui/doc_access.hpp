@@ -11,7 +11,6 @@
 
 namespace isoparm::ui {
 
-const geom::Surface* surface_of(const doc::Object& o);
 // The surface the tracing and basis panels work on: the selected object when it is a
 // surface, else the first visible surface; its object in `object` when asked.
 const geom::Surface* current_surface(const doc::Document& d, const doc::Object** object = nullptr);
@@ -21,20 +20,18 @@ bool has_valid_point(const doc::Document& d);
 // object that no longer exists or a point out of range is dropped.
 void normalize_selection(doc::Document& d);
 
-geom::Interval domain_u(const geom::Surface& s);
-geom::Interval domain_v(const geom::Surface& s);
 // "P22" as the paper writes it; "P26,11" once an index has two digits; "P3" for curves
 // (j < 0). prefix: 'P', 'w', 'R'.
 std::string point_name(char prefix, int i, int j, const doc::Document& d);
 std::string point_name(char prefix, int i, int j, int n_u, int n_v);
 
 // The indicator's (u, v) in the surface's own parameters, always inside its domain.
-// doc.indicator is normalized over the tracing domain: the surface's own, or for a subpatch
+// doc.view.indicator is normalized over the tracing domain: the surface's own, or for a subpatch
 // the whole original domain its group tiles (core/doc/patches.hpp); outside the subpatch's
 // own part it is clamped to the nearest point of that part.
 glm::dvec2 indicator_params(const doc::Document& d, const doc::Object& surface_object);
 // The indicator normalized over the object's own domain (for panels that show one patch),
-// and back to doc.indicator's normalization.
+// and back to doc.view.indicator's normalization.
 glm::dvec2 indicator_in_own_domain(const doc::Document& d, const doc::Object& surface_object);
 glm::dvec2 indicator_from_own_domain(const doc::Document& d, const doc::Object& surface_object,
                                      glm::dvec2 own);

@@ -14,17 +14,14 @@ namespace isoparm::ui {
 SceneDisplayCost estimate_scene_display(const doc::Document& d) {
     SceneDisplayCost cost;
     for (const doc::Object& o : d.objects) {
-        if (const auto* c = std::get_if<doc::CurveObject>(&o.shape))
-            cost.control_points += static_cast<double>(c->curve.points.size());
-        const auto* s = std::get_if<doc::SurfaceObject>(&o.shape);
+        cost.control_points += static_cast<double>(doc::control_points_of(o.shape).size());
+        const geom::Surface* s = o.surface();
         if (!s) continue;
-        cost.control_points += static_cast<double>(s->surface.points.size());
-        const auto [su, sv] = display_samples(s->surface, d.display.density);
+        const auto [su, sv] = display_samples(*s, d.view.display.density);
         const double vertices = static_cast<double>(su) * sv;
         ++cost.surfaces;
         cost.vertices += vertices;
-        cost.steps +=
-            geom::estimate_tessellation(su, sv, s->surface.degree_u, s->surface.degree_v).steps;
+        cost.steps += geom::estimate_tessellation(su, sv, s->degree_u, s->degree_v).steps;
         cost.bytes += vertices * display_bytes_per_vertex + display_bytes_per_surface;
     }
     cost.steps += cost.control_points * display_steps_per_control_point;

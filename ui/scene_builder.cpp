@@ -5,6 +5,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "core/doc/placement.hpp"
 #include "core/geom/deboor.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
@@ -53,7 +54,7 @@ void add_box(LineBatch& b, const glm::dvec3& lo, const glm::dvec3& hi, const glm
 
 std::vector<glm::vec3> curve_polyline(const geom::Curve& c, int samples) {
     std::vector<glm::vec3> out;
-    const geom::Interval d = geom::domain(c.knots, c.degree, c.count());
+    const geom::Interval d = geom::domain(c);
     for (double t : geom::uniform_params(d.lo, d.hi, samples))
         if (const auto p = geom::curve_point(c, t)) out.emplace_back(*p);
     return out;
@@ -68,7 +69,7 @@ glm::vec4 to_vec4(const doc::Rgba& c) {
 std::vector<std::vector<glm::vec3>> iso_curve(const geom::Surface& s, geom::Dir fixed, double t,
                                               int samples) {
     std::vector<std::vector<glm::vec3>> pieces(1);
-    const geom::Interval other = fixed == geom::Dir::u ? domain_v(s) : domain_u(s);
+    const geom::Interval other = geom::domain(s, geom::opposite(fixed));
     for (double x : geom::uniform_params(other.lo, other.hi, samples)) {
         const auto p =
             fixed == geom::Dir::u ? geom::surface_point(s, t, x) : geom::surface_point(s, x, t);
@@ -103,7 +104,7 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
     const float k = style.scale;
     const doc::Colors col = readable_overlay_colors(d.colors);
     const glm::vec3 background(col.background.r, col.background.g, col.background.b);
-    const doc::DisplaySettings& disp = d.display;
+    const doc::DisplaySettings& disp = d.view.display;
     const bool shaded = disp.style != doc::DisplayStyle::wireframe;
     const bool wire = disp.style != doc::DisplayStyle::shaded;
 
@@ -118,7 +119,7 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
     // Many points (a 32x32 net) would bury the surface: they shrink with their number.
     std::size_t total_points = 0;
     for (const doc::Object& o : d.objects)
-        if (const geom::Surface* s = o.visible ? surface_of(o) : nullptr)
+        if (const geom::Surface* s = o.visible ? o.surface() : nullptr)
             total_points += s->points.size();
     const float point_size = total_points > 400 ? 6.f : total_points > 100 ? 7.5f : 9.f;
     PointBatch points{{}, point_size * k, false, false};
@@ -126,8 +127,8 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
 
     for (const doc::Object& o : d.objects) {
         if (!o.visible) continue;
-        const bool is_selected = o.id == d.selection.object;
-        if (const geom::Surface* s = surface_of(o)) {
+        const bool is_selected = o.id == d.view.selection.object;
+        if (const geom::Surface* s = o.surface()) {
             SurfaceDraw sd;
             sd.id = o.id;
             sd.surface = s;
@@ -147,7 +148,8 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
             if (disp.control_points)
                 for (int i = 0; i < s->n_u; ++i)
                     for (int j = 0; j < s->n_v; ++j) {
-                        const bool sel = is_selected && d.selection.i == i && d.selection.j == j;
+                        const bool sel =
+                            is_selected && d.view.selection.i == i && d.view.selection.j == j;
                         if (sel) continue;
                         points.points.push_back(
                             {glm::vec3(s->point(i, j)), to_vec4(col.control_points)});
@@ -155,7 +157,7 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
             if (disp.knot_curves) {
                 // Knot curves S(u_k, v) and S(u, v_k); a repeated knot draws thicker.
                 for (geom::Dir dir : {geom::Dir::u, geom::Dir::v}) {
-                    const geom::Interval dom = dir == geom::Dir::u ? domain_u(*s) : domain_v(*s);
+                    const geom::Interval dom = geom::domain(*s, dir);
                     for (const geom::KnotRun& r : geom::knot_runs(s->knots(dir))) {
                         if (r.value < dom.lo || r.value > dom.hi) continue;
                         const bool interior = r.value > dom.lo && r.value < dom.hi;
@@ -167,7 +169,7 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
                     }
                 }
             }
-        } else if (const auto* im = std::get_if<doc::ImplicitObject>(&o.shape)) {
+        } else if (const doc::ImplicitObject* im = o.implicit()) {
             const ImplicitMeshes::View v = implicit ? implicit->view(o.id) : ImplicitMeshes::View{};
             if (v.mesh && !v.mesh->triangles.empty()) {
                 SurfaceDraw sd;
@@ -184,24 +186,24 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
                 out.surfaces.push_back(sd);
             }
             if (is_selected) add_box(box, im->lo, im->hi, to_vec4(col.selected_surface));
-        } else if (const auto* c = std::get_if<doc::CurveObject>(&o.shape)) {
+        } else if (const geom::Curve* c = o.curve()) {
             // A curve in the surface colour disappears against a surface built from it (a
             // ruled or skinned surface runs through its curves): curves take a pale tint.
             const glm::vec4 cc =
                 is_selected ? to_vec4(col.selected_surface)
                             : readable_on(glm::mix(to_vec4(col.surface), glm::vec4(1), 0.6f),
                                           background, line_contrast);
-            Overlay::add_polyline(curves, curve_polyline(c->curve, 200), cc);
+            Overlay::add_polyline(curves, curve_polyline(*c, 200), cc);
             if (disp.control_net) {
                 std::vector<glm::vec3> poly;
-                for (const glm::dvec3& p : c->curve.points) poly.emplace_back(p);
+                for (const glm::dvec3& p : c->points) poly.emplace_back(p);
                 Overlay::add_polyline(net, poly, to_vec4(col.control_net));
             }
             if (disp.control_points)
-                for (int i = 0; i < c->curve.count(); ++i)
-                    if (!(is_selected && d.selection.i == i))
+                for (int i = 0; i < c->count(); ++i)
+                    if (!(is_selected && d.view.selection.i == i))
                         points.points.push_back(
-                            {glm::vec3(c->curve.points[i]), to_vec4(col.control_points)});
+                            {glm::vec3(c->points[i]), to_vec4(col.control_points)});
         }
     }
 
@@ -209,10 +211,10 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
     if (disp.control_points && has_valid_point(d)) {
         const doc::Object* o = d.selected();
         glm::dvec3 p{0};
-        if (const geom::Surface* s = surface_of(*o))
-            p = s->point(d.selection.i, d.selection.j);
-        else if (const auto* c = std::get_if<doc::CurveObject>(&o->shape))
-            p = c->curve.points[d.selection.i];
+        if (const geom::Surface* s = o->surface())
+            p = s->point(d.view.selection.i, d.view.selection.j);
+        else if (const geom::Curve* c = o->curve())
+            p = c->points[d.view.selection.i];
         selected.points.push_back({glm::vec3(p), to_vec4(col.selected_point)});
     }
 
@@ -238,7 +240,7 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
     if (style.guide_axis >= 0) {
         glm::dvec3 dir(0);
         dir[style.guide_axis] = 1;
-        const auto box = scene_bounds(d);
+        const auto box = doc::scene_bounds(d);
         const double len = box ? std::max(glm::length(box->hi - box->lo), 1.0) * 2 : 10.0;
         const glm::vec4 gc = axis_color(style.guide_axis);
         guide.vertices.push_back({glm::vec3(style.guide_point - dir * len), gc});
@@ -269,28 +271,15 @@ std::vector<glm::dvec3> scene_points(const doc::Document& d) {
     std::vector<glm::dvec3> out;
     for (const doc::Object& o : d.objects) {
         if (!o.visible) continue;
-        if (const geom::Surface* s = surface_of(o)) {
-            out.insert(out.end(), s->points.begin(), s->points.end());
-        } else if (const auto* c = std::get_if<doc::CurveObject>(&o.shape)) {
-            out.insert(out.end(), c->curve.points.begin(), c->curve.points.end());
-        } else if (const auto* im = std::get_if<doc::ImplicitObject>(&o.shape)) {
+        const std::span<const glm::dvec3> points = doc::control_points_of(o.shape);
+        out.insert(out.end(), points.begin(), points.end());
+        if (const doc::ImplicitObject* im = o.implicit()) {
             for (int k = 0; k < 8; ++k)
                 out.push_back({k & 1 ? im->hi.x : im->lo.x, k & 2 ? im->hi.y : im->lo.y,
                                k & 4 ? im->hi.z : im->lo.z});
         }
     }
     return out;
-}
-
-std::optional<Box> scene_bounds(const doc::Document& d) {
-    const std::vector<glm::dvec3> pts = scene_points(d);
-    if (pts.empty()) return std::nullopt;
-    Box box{pts[0], pts[0]};
-    for (const glm::dvec3& p : pts) {
-        box.lo = glm::min(box.lo, p);
-        box.hi = glm::max(box.hi, p);
-    }
-    return box;
 }
 
 } // namespace isoparm::ui

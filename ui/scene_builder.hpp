@@ -2,7 +2,6 @@
 // overlay (control nets, points, indicator S(u,v), knot curves, drag guides). No GL here.
 #pragma once
 
-#include <optional>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -38,11 +37,6 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
 std::vector<std::vector<glm::vec3>> iso_curve(const geom::Surface& s, geom::Dir fixed, double t,
                                               int samples);
 
-// Bounding box of the control points of visible objects; nullopt for an empty scene.
-struct Box {
-    glm::dvec3 lo, hi;
-};
-std::optional<Box> scene_bounds(const doc::Document& d);
 // The control points of visible objects (corners of an implicit object's box): what "fit
 // to view" frames.
 std::vector<glm::dvec3> scene_points(const doc::Document& d);

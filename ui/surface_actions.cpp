@@ -231,7 +231,7 @@ int deboor_step_count(const AppContext& ctx) {
 void deboor_step(AppContext& ctx, int delta) {
     DeBoorPlayer& p = ctx.ui.deboor;
     const int last = deboor_step_count(ctx);
-    ctx.doc.display.deboor = true;
+    ctx.doc.view.display.deboor = true;
     p.playing = false;
     if (p.step < 0) p.step = delta > 0 ? -1 : last;
     p.step = std::clamp(p.step + delta, 0, last);
@@ -239,7 +239,7 @@ void deboor_step(AppContext& ctx, int delta) {
 
 void deboor_toggle_play(AppContext& ctx, double now_seconds) {
     DeBoorPlayer& p = ctx.ui.deboor;
-    ctx.doc.display.deboor = true;
+    ctx.doc.view.display.deboor = true;
     p.playing = !p.playing;
     if (p.playing) {
         if (p.step < 0 || p.step >= deboor_step_count(ctx)) p.step = 0;
@@ -265,7 +265,7 @@ void zoom_to_acting_patch(AppContext& ctx) {
     const Rect& r = ctx.ui.view_rect;
     // fit_distance stays the whole scene's: the Zoom slider then reads above 100%.
     fit_to_points(ctx.ui.camera, pts, r.h > 0 ? static_cast<double>(r.w) / r.h : 1.6);
-    ctx.doc.display.deboor = true;
+    ctx.doc.view.display.deboor = true;
 }
 
 bool deboor_tick(AppContext& ctx, double now_seconds) {

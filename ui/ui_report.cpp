@@ -66,13 +66,13 @@ void flush_ui_report(const AppContext& ctx) {
     j["objects"] = ctx.doc.objects.size();
     const doc::Object* sel = ctx.doc.selected();
     j["selected"] = sel ? sel->name : "";
-    j["point"] = {ctx.doc.selection.i, ctx.doc.selection.j};
+    j["point"] = {ctx.doc.view.selection.i, ctx.doc.view.selection.j};
     j["dirty"] = ctx.dirty();
     j["undo"] = ctx.history.can_undo() ? ctx.history.undo_label() : "";
     j["presentation"] = ctx.ui.presentation;
-    j["indicator"] = {ctx.doc.indicator.x, ctx.doc.indicator.y};
+    j["indicator"] = {ctx.doc.view.indicator.x, ctx.doc.view.indicator.y};
     j["typing"] = ImGui::GetIO().WantTextInput; // a text field has the keyboard
-    j["control_points"] = ctx.doc.display.control_points;
+    j["control_points"] = ctx.doc.view.display.control_points;
     j["font_pixels"] = ImGui::GetFontSize();
     r.rects.clear(); // what the next frame draws, it reports again
     r.facts.clear();

@@ -7,7 +7,6 @@
 #include <cstdio>
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
-#include <variant>
 
 #include "core/doc/patches.hpp"
 #include "ui/actions.hpp"
@@ -182,9 +181,9 @@ void Workstation::layout_panels() {
     ImGui::PopStyleVar();
     // An implicit surface has no control points: its editor takes their place.
     const doc::Object* sel = ctx_.doc.selected();
-    if (sel && std::holds_alternative<doc::ImplicitObject>(sel->shape)) {
+    if (sel && sel->kind() == doc::ObjectKind::implicit) {
         if (begin_panel("Implicit surface", l.right[0])) draw_implicit_panel(ctx_);
-    } else if (sel && std::holds_alternative<doc::CurveObject>(sel->shape)) {
+    } else if (sel && sel->kind() == doc::ObjectKind::curve) {
         if (begin_panel("Curve designer", l.right[0])) draw_curve_designer_panel(ctx_);
     } else {
         if (begin_panel("Control point", l.right[0])) draw_control_point_panel(ctx_);
@@ -230,8 +229,8 @@ void Workstation::frame(unsigned target_framebuffer) {
     normalize_selection(ctx_.doc);
     // Whenever de Boor's construction is switched on (menu, key, a loaded scene), its tab
     // comes forward.
-    if (ctx_.doc.display.deboor && !deboor_was_on_) ui.deboor.show_tab = true;
-    deboor_was_on_ = ctx_.doc.display.deboor;
+    if (ctx_.doc.view.display.deboor && !deboor_was_on_) ui.deboor.show_tab = true;
+    deboor_was_on_ = ctx_.doc.view.display.deboor;
     // De Boor's animation steps on a clock; frames keep coming while it plays.
     if (deboor_tick(ctx_, ImGui::GetTime()) && request_frame_) request_frame_();
     ui.implicit.dragging = false; // set again by the implicit panel while a slider is held
@@ -263,7 +262,7 @@ void Workstation::frame(unsigned target_framebuffer) {
         last_current_ = current ? doc::sync_patch_and_indicator(ctx_.doc, current->id,
                                                                 last_indicator_, last_current_)
                                 : 0;
-        last_indicator_ = ctx_.doc.indicator;
+        last_indicator_ = ctx_.doc.view.indicator;
     }
 
     // The 3D view into its texture, with the camera and document of this very frame.

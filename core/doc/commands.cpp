@@ -34,12 +34,12 @@ bool selection_valid(const Document& doc, const Selection& sel) {
 // Restores the selection a command found, unless the user selected something else since
 // (selection is view state, not undone); a selection left dangling is dropped.
 void restore_selection(Document& doc, const Selection& before, const Selection& after) {
-    if (doc.selection == after) doc.selection = before;
-    if (!selection_valid(doc, doc.selection)) {
-        if (doc.find(doc.selection.object))
-            doc.selection.i = doc.selection.j = -1;
+    if (doc.view.selection == after) doc.view.selection = before;
+    if (!selection_valid(doc, doc.view.selection)) {
+        if (doc.find(doc.view.selection.object))
+            doc.view.selection.i = doc.view.selection.j = -1;
         else
-            doc.selection = Selection{};
+            doc.view.selection = Selection{};
     }
 }
 
@@ -109,7 +109,7 @@ public:
         assert(!doc.objects.empty() && doc.objects.back().id == object_.id);
         doc.objects.pop_back();
         doc.next_id = prev_next_id_;
-        if (doc.selection.object == object_.id) doc.selection = Selection{};
+        if (doc.view.selection.object == object_.id) doc.view.selection = Selection{};
     }
 
     std::string label() const override { return "Add " + object_.name; }
@@ -132,9 +132,9 @@ public:
         index_ = doc.index_of(id_);
         object_ = std::move(**found);
         doc.objects.erase(doc.objects.begin() + index_);
-        sel_before_ = doc.selection;
-        if (doc.selection.object == id_) doc.selection = Selection{};
-        sel_after_ = doc.selection;
+        sel_before_ = doc.view.selection;
+        if (doc.view.selection.object == id_) doc.view.selection = Selection{};
+        sel_after_ = doc.view.selection;
         return geom::Ok{};
     }
 
@@ -224,9 +224,10 @@ public:
         Object& obj = **found;
         old_ = obj.shape;
         obj.shape = shape_;
-        sel_before_ = doc.selection;
-        if (!selection_valid(doc, doc.selection)) doc.selection.i = doc.selection.j = -1;
-        sel_after_ = doc.selection;
+        sel_before_ = doc.view.selection;
+        if (!selection_valid(doc, doc.view.selection))
+            doc.view.selection.i = doc.view.selection.j = -1;
+        sel_after_ = doc.view.selection;
         return geom::Ok{};
     }
 

@@ -137,11 +137,11 @@ public:
         }
         old_ = *c;
         *c = *new_;
-        sel_before_ = doc.selection;
-        if (selection_) doc.selection = selection_(doc.selection, *new_);
-        if (doc.selection.object == id_ && doc.selection.i >= new_->curve.count())
-            doc.selection.i = new_->curve.count() - 1;
-        sel_after_ = doc.selection;
+        sel_before_ = doc.view.selection;
+        if (selection_) doc.view.selection = selection_(doc.view.selection, *new_);
+        if (doc.view.selection.object == id_ && doc.view.selection.i >= new_->curve.count())
+            doc.view.selection.i = new_->curve.count() - 1;
+        sel_after_ = doc.view.selection;
         return geom::Ok{};
     }
 
@@ -151,9 +151,9 @@ public:
         obj->shape = *old_;
         // Selection is view state: put it back unless the user selected something since; a
         // point index the old curve does not have is dropped.
-        if (doc.selection == sel_after_) doc.selection = sel_before_;
-        if (doc.selection.object == id_ && doc.selection.i >= old_->curve.count())
-            doc.selection.i = doc.selection.j = -1;
+        if (doc.view.selection == sel_after_) doc.view.selection = sel_before_;
+        if (doc.view.selection.object == id_ && doc.view.selection.i >= old_->curve.count())
+            doc.view.selection.i = doc.view.selection.j = -1;
     }
 
     bool merge_with(const Command& next) override {
@@ -513,11 +513,11 @@ public:
             c.curve = (*r)[k];
             c.knot_mode = CurveKnotMode::custom;
         }
-        sel_before_ = doc.selection;
+        sel_before_ = doc.view.selection;
         for (std::size_t k = 0; k < ids_.size(); ++k)
-            if (doc.selection.object == ids_[k] && doc.selection.has_point())
-                doc.selection.i = std::min(doc.selection.i, (*r)[k].count() - 1);
-        sel_after_ = doc.selection;
+            if (doc.view.selection.object == ids_[k] && doc.view.selection.has_point())
+                doc.view.selection.i = std::min(doc.view.selection.i, (*r)[k].count() - 1);
+        sel_after_ = doc.view.selection;
         return geom::Ok{};
     }
 
@@ -527,7 +527,7 @@ public:
             assert(o);
             o->shape = old_[k];
         }
-        if (doc.selection == sel_after_) doc.selection = sel_before_;
+        if (doc.view.selection == sel_after_) doc.view.selection = sel_before_;
     }
 
     std::string label() const override {

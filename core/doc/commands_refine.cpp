@@ -145,10 +145,10 @@ public:
         if (type_of(obj.shape) != type_of(result))
             type_change_ = std::string(type_title(type_of(obj.shape))) + " becomes " +
                            type_title(type_of(result));
-        sel_before_ = doc.selection;
-        if (int* idx = selected_index(doc.selection, id_, curve_, dir_))
+        sel_before_ = doc.view.selection;
+        if (int* idx = selected_index(doc.view.selection, id_, curve_, dir_))
             *idx = forward(line_of(obj.shape, dir_), line_of(result, dir_), *idx);
-        sel_after_ = doc.selection;
+        sel_after_ = doc.view.selection;
         before_ = std::move(obj.shape);
         obj.shape = std::move(result);
         return geom::Ok{};
@@ -157,9 +157,9 @@ public:
     void revert(Document& doc) override {
         Object* obj = doc.find(id_);
         assert(obj);
-        if (doc.selection == sel_after_) {
-            doc.selection = sel_before_;
-        } else if (int* idx = selected_index(doc.selection, id_, curve_, dir_)) {
+        if (doc.view.selection == sel_after_) {
+            doc.view.selection = sel_before_;
+        } else if (int* idx = selected_index(doc.view.selection, id_, curve_, dir_)) {
             *idx = backward(line_of(before_, dir_), line_of(obj->shape, dir_), *idx);
         }
         obj->shape = before_;
@@ -379,7 +379,7 @@ public:
         std::set<std::tuple<std::uint64_t, std::uint64_t, int>> conformed_before;
         for (const SharedBorder& b : shared_borders(doc, old_group))
             if (b.conforming) conformed_before.insert({b.low, b.high, static_cast<int>(b.across)});
-        sel_before_ = doc.selection;
+        sel_before_ = doc.view.selection;
         index_ = doc.index_of(id_);
         prev_next_id_ = doc.next_id;
         if (ids_.first == 0) {
@@ -390,8 +390,8 @@ public:
             doc.next_id = std::max(doc.next_id, ids_.second + 1);
         }
 
-        remap_forward(doc.selection, obj.shape, first, second);
-        sel_after_ = doc.selection;
+        remap_forward(doc.view.selection, obj.shape, first, second);
+        sel_after_ = doc.view.selection;
 
         // Surface pieces stay one patch structure over the original domain (issue 5); the
         // first split names the group after the surface it started from.
@@ -454,13 +454,14 @@ private:
     void revert_split(Document& doc) {
         assert(index_ >= 0 && index_ + 1 < static_cast<int>(doc.objects.size()));
         assert(doc.objects[index_].id == ids_.first && doc.objects[index_ + 1].id == ids_.second);
-        if (doc.selection == sel_after_) {
-            doc.selection = sel_before_;
-        } else if (doc.selection.object == ids_.first || doc.selection.object == ids_.second) {
+        if (doc.view.selection == sel_after_) {
+            doc.view.selection = sel_before_;
+        } else if (doc.view.selection.object == ids_.first ||
+                   doc.view.selection.object == ids_.second) {
             const Object& piece =
-                doc.objects[doc.selection.object == ids_.first ? index_ : index_ + 1];
-            doc.selection.object = id_;
-            if (int* idx = selected_index(doc.selection, id_, curve_, dir_))
+                doc.objects[doc.view.selection.object == ids_.first ? index_ : index_ + 1];
+            doc.view.selection.object = id_;
+            if (int* idx = selected_index(doc.view.selection, id_, curve_, dir_))
                 *idx = nearest_greville(line_of(before_.shape, dir_),
                                         greville(line_of(piece.shape, dir_), *idx));
         }

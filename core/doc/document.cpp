@@ -19,15 +19,6 @@ static_assert(std::is_same_v<std::variant_alternative_t<0, Shape>, SurfaceObject
               std::is_same_v<std::variant_alternative_t<1, Shape>, CurveObject> &&
               std::is_same_v<std::variant_alternative_t<2, Shape>, ImplicitObject>);
 
-const char* kind_name(ObjectKind kind) {
-    switch (kind) {
-    case ObjectKind::surface: return "surface";
-    case ObjectKind::curve: return "curve";
-    case ObjectKind::implicit: return "implicit surface";
-    }
-    return "object";
-}
-
 geom::Surface* surface_of(Shape& shape) {
     auto* s = std::get_if<SurfaceObject>(&shape);
     return s ? &s->surface : nullptr;
@@ -48,6 +39,16 @@ const geom::Curve* curve_of(const Shape& shape) {
 }
 ImplicitObject* implicit_of(Shape& shape) { return std::get_if<ImplicitObject>(&shape); }
 const ImplicitObject* implicit_of(const Shape& shape) { return std::get_if<ImplicitObject>(&shape); }
+std::span<glm::dvec3> control_points_of(Shape& shape) {
+    if (geom::Surface* s = surface_of(shape)) return s->points;
+    if (geom::Curve* c = curve_of(shape)) return c->points;
+    return {};
+}
+std::span<const glm::dvec3> control_points_of(const Shape& shape) {
+    if (const geom::Surface* s = surface_of(shape)) return s->points;
+    if (const geom::Curve* c = curve_of(shape)) return c->points;
+    return {};
+}
 
 Object* Document::find(std::uint64_t id) {
     if (id == 0) return nullptr;
@@ -116,14 +117,19 @@ bool same_implicit(const ImplicitObject& a, const ImplicitObject& b) {
 }
 
 bool same_shape(const Shape& a, const Shape& b) {
-    if (a.index() != b.index()) return false;
-    if (auto* s = std::get_if<SurfaceObject>(&a))
-        return same_surface(s->surface, std::get<SurfaceObject>(b).surface);
-    if (auto* c = std::get_if<CurveObject>(&a)) {
-        const auto& d = std::get<CurveObject>(b);
-        return c->plane == d.plane && c->knot_mode == d.knot_mode && same_curve(c->curve, d.curve);
+    if (kind_of(a) != kind_of(b)) return false;
+    switch (kind_of(a)) {
+    case ObjectKind::surface:
+        return same_surface(*surface_of(a), *surface_of(b));
+    case ObjectKind::curve: {
+        const CurveObject& c = *curve_object_of(a);
+        const CurveObject& d = *curve_object_of(b);
+        return c.plane == d.plane && c.knot_mode == d.knot_mode && same_curve(c.curve, d.curve);
     }
-    return same_implicit(std::get<ImplicitObject>(a), std::get<ImplicitObject>(b));
+    case ObjectKind::implicit:
+        return same_implicit(*implicit_of(a), *implicit_of(b));
+    }
+    return false;
 }
 
 bool same_colors(const Colors& a, const Colors& b) {
@@ -149,22 +155,13 @@ bool same_geometry(const Document& a, const Document& b) {
     return same_colors(a.colors, b.colors);
 }
 
-bool same_document(const Document& a, const Document& b) {
-    return same_geometry(a, b) && a.selection == b.selection &&
-           same_bits(a.indicator.x, b.indicator.x) && same_bits(a.indicator.y, b.indicator.y) &&
-           a.display == b.display && a.continuity == b.continuity;
+bool same_view(const ViewState& a, const ViewState& b) {
+    return a.selection == b.selection && same_bits(a.indicator.x, b.indicator.x) &&
+           same_bits(a.indicator.y, b.indicator.y) && a.display == b.display;
 }
 
-const char* continuity_name(Continuity c) {
-    switch (c) {
-    case Continuity::off:
-        return "off";
-    case Continuity::c0:
-        return "C0";
-    case Continuity::c1:
-        return "C1";
-    }
-    return "off";
+bool same_document(const Document& a, const Document& b) {
+    return same_geometry(a, b) && same_view(a.view, b.view) && a.continuity == b.continuity;
 }
 
 Document default_document() {
@@ -201,8 +198,8 @@ Document default_document() {
     hill.name = "hill";
     hill.shape = SurfaceObject{std::move(s)};
     doc.objects.push_back(std::move(hill));
-    doc.selection = Selection{doc.objects[0].id, 2, 2};
-    doc.indicator = {0.5, 0.5};
+    doc.view.selection = Selection{doc.objects[0].id, 2, 2};
+    doc.view.indicator = {0.5, 0.5};
     return doc;
 }
 

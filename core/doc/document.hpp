@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <glm/vec2.hpp>
+#include <span>
 #include <string>
 #include <variant>
 #include <vector>
@@ -15,12 +16,32 @@ namespace isoparm::doc {
 
 // Which plane a designed curve lives in (the curve designer edits it there).
 enum class CurvePlane { xy, xz, yz, free3d };
+inline constexpr geom::EnumName<CurvePlane> curve_plane_names[] = {
+    {CurvePlane::xy, "xy"},
+    {CurvePlane::xz, "xz"},
+    {CurvePlane::yz, "yz"},
+    {CurvePlane::free3d, "free3d", "3D"},
+};
+static_assert(geom::in_declaration_order(curve_plane_names));
+constexpr std::span<const geom::EnumName<CurvePlane>> enum_names(CurvePlane) {
+    return curve_plane_names;
+}
 
 // How the curve designer chooses the knots when control points are inserted or deleted or
 // the degree changes (docs/constructions.md): clamped uniform, averaged from the chord /
 // centripetal parameters of the control polygon (Piegl & Tiller eq. 9.8), or custom: the
 // user's own knots, kept as they are and dragged with set_knot.
 enum class CurveKnotMode { clamped_uniform, chord, centripetal, custom };
+inline constexpr geom::EnumName<CurveKnotMode> curve_knot_mode_names[] = {
+    {CurveKnotMode::clamped_uniform, "clamped_uniform", "clamped uniform"},
+    {CurveKnotMode::chord, "chord", "chord length"},
+    {CurveKnotMode::centripetal, "centripetal"},
+    {CurveKnotMode::custom, "custom"},
+};
+static_assert(geom::in_declaration_order(curve_knot_mode_names));
+constexpr std::span<const geom::EnumName<CurveKnotMode>> enum_names(CurveKnotMode) {
+    return curve_knot_mode_names;
+}
 
 struct CurveObject {
     geom::Curve curve;
@@ -47,9 +68,21 @@ using Shape = std::variant<SurfaceObject, CurveObject, ImplicitObject>;
 // What kind of object a shape is, and its parts: callers ask these instead of testing the
 // variant's alternatives themselves. The accessors return nullptr for another kind.
 enum class ObjectKind { surface, curve, implicit };
+// Scene files write "kind": "implicit"; messages and panels say "implicit surface".
+inline constexpr geom::EnumName<ObjectKind> object_kind_names[] = {
+    {ObjectKind::surface, "surface"},
+    {ObjectKind::curve, "curve"},
+    {ObjectKind::implicit, "implicit", "implicit surface"},
+};
+static_assert(geom::in_declaration_order(object_kind_names));
+constexpr std::span<const geom::EnumName<ObjectKind>> enum_names(ObjectKind) {
+    return object_kind_names;
+}
 ObjectKind kind_of(const Shape& shape);
-// "surface", "curve", "implicit surface": how messages and panels name the kind.
-const char* kind_name(ObjectKind kind);
+// "surface", "curve", "implicit surface": how messages and panels name the kind (label_of).
+inline const char* kind_name(ObjectKind kind) {
+    return geom::label_of(kind);
+}
 geom::Surface* surface_of(Shape& shape);
 const geom::Surface* surface_of(const Shape& shape);
 CurveObject* curve_object_of(Shape& shape);
@@ -58,6 +91,9 @@ geom::Curve* curve_of(Shape& shape);
 const geom::Curve* curve_of(const Shape& shape);
 ImplicitObject* implicit_of(Shape& shape);
 const ImplicitObject* implicit_of(const Shape& shape);
+// The control points of a surface (row-major) or a curve; none for an implicit surface.
+std::span<glm::dvec3> control_points_of(Shape& shape);
+std::span<const glm::dvec3> control_points_of(const Shape& shape);
 
 struct Object {
     std::uint64_t id = 0; // stable across undo/redo; assigned by the document
@@ -83,7 +119,16 @@ struct Object {
 // Whether moving a control point of a subpatch also moves its neighbours' so the border stays
 // closed (c0) and, where degrees and knots allow it, tangent-continuous (c1).
 enum class Continuity { off, c0, c1 };
-const char* continuity_name(Continuity c);
+inline constexpr geom::EnumName<Continuity> continuity_names[] = {
+    {Continuity::off, "off"}, {Continuity::c0, "C0"}, {Continuity::c1, "C1"}};
+static_assert(geom::in_declaration_order(continuity_names));
+constexpr std::span<const geom::EnumName<Continuity>> enum_names(Continuity) {
+    return continuity_names;
+}
+// "off", "C0", "C1" (name_of), for callers that say it this way.
+inline const char* continuity_name(Continuity c) {
+    return geom::name_of(c);
+}
 
 struct Rgba {
     float r = 0, g = 0, b = 0, a = 1;
@@ -104,8 +149,17 @@ struct Colors {
 };
 
 enum class DisplayStyle { shaded, wireframe, both };
+inline constexpr geom::EnumName<DisplayStyle> display_style_names[] = {
+    {DisplayStyle::shaded, "shaded"},
+    {DisplayStyle::wireframe, "wireframe"},
+    {DisplayStyle::both, "both"},
+};
+static_assert(geom::in_declaration_order(display_style_names));
+constexpr std::span<const geom::EnumName<DisplayStyle>> enum_names(DisplayStyle) {
+    return display_style_names;
+}
 
-// View state: saved with the scene, but not part of undo.
+// What is drawn and how (part of the view state below).
 struct DisplaySettings {
     DisplayStyle style = DisplayStyle::both;
     bool control_points = true;
@@ -125,20 +179,25 @@ struct Selection {
     bool operator==(const Selection&) const = default;
 };
 
-struct Document {
-    std::vector<Object> objects;
-    Colors colors;
-    // View state (not undoable):
+// What the user is looking at rather than what the scene is: saved with the scene, but not
+// part of undo (an undo restores geometry and leaves the view where it is).
+struct ViewState {
     Selection selection;
     glm::dvec2 indicator{0.5, 0.5}; // (u, v) normalized to [0,1]^2 over the current domain
     DisplaySettings display;
+};
+
+struct Document {
+    std::vector<Object> objects;
+    Colors colors;
+    ViewState view;
     Continuity continuity = Continuity::off; // a setting, saved with the scene; not undoable
     std::uint64_t next_id = 1;
 
     Object* find(std::uint64_t id);
     const Object* find(std::uint64_t id) const;
     int index_of(std::uint64_t id) const; // -1 if absent
-    const Object* selected() const { return find(selection.object); }
+    const Object* selected() const { return find(view.selection.object); }
     std::uint64_t allocate_id() { return next_id++; }
 };
 
@@ -147,7 +206,9 @@ struct Document {
 bool same_geometry(const Document& a, const Document& b);
 // One object, bit for bit (as same_geometry compares them).
 bool same_object(const Object& a, const Object& b);
-// same_geometry plus the view state (selection, indicator, display settings), bit for bit.
+// The view state (selection, indicator, display settings), bit for bit.
+bool same_view(const ViewState& a, const ViewState& b);
+// same_geometry plus the view state and the continuity setting, bit for bit.
 bool same_document(const Document& a, const Document& b);
 
 // The welcoming default scene: a shaped 5x5 bicubic NURBS surface.

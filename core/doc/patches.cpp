@@ -15,24 +15,6 @@ namespace {
 
 using geom::Dir;
 
-const geom::Surface* surface_of(const Object& o) {
-    const auto* s = std::get_if<SurfaceObject>(&o.shape);
-    return s ? &s->surface : nullptr;
-}
-
-geom::Surface* surface_of(Object& o) {
-    auto* s = std::get_if<SurfaceObject>(&o.shape);
-    return s ? &s->surface : nullptr;
-}
-
-const geom::Interval& side(const ParamRect& r, Dir d) {
-    return d == Dir::u ? r.u : r.v;
-}
-
-Dir other(Dir d) {
-    return d == Dir::u ? Dir::v : Dir::u;
-}
-
 int multiplicity_of(const geom::Knots& U, double t) {
     return static_cast<int>(std::count(U.begin(), U.end(), t));
 }
@@ -131,23 +113,19 @@ bool set_point(geom::Surface& s, int i, int j, const glm::dvec4& Q) {
 
 } // namespace
 
-ParamRect surface_domain(const geom::Surface& s) {
-    return {geom::domain(s.knots_u, s.degree_u, s.n_u), geom::domain(s.knots_v, s.degree_v, s.n_v)};
-}
-
 std::vector<const Object*> patch_members(const Document& doc, std::uint64_t group) {
     std::vector<const Object*> out;
     if (group == 0) return out;
     for (const Object& o : doc.objects)
-        if (o.patch_group == group && surface_of(o)) out.push_back(&o);
+        if (o.patch_group == group && o.surface()) out.push_back(&o);
     return out;
 }
 
-ParamRect tracing_domain(const Document& doc, const Object& surface_object) {
-    const geom::Surface* s = surface_of(surface_object);
-    ParamRect r = s ? surface_domain(*s) : ParamRect{};
+geom::ParamRect tracing_domain(const Document& doc, const Object& surface_object) {
+    const geom::Surface* s = surface_object.surface();
+    geom::ParamRect r = s ? geom::domain(*s) : geom::ParamRect{};
     for (const Object* m : patch_members(doc, surface_object.patch_group)) {
-        const ParamRect d = surface_domain(*surface_of(*m));
+        const geom::ParamRect d = geom::domain(*m->surface());
         r.u = {std::min(r.u.lo, d.u.lo), std::max(r.u.hi, d.u.hi)};
         r.v = {std::min(r.v.lo, d.v.lo), std::max(r.v.hi, d.v.hi)};
     }
@@ -158,7 +136,7 @@ std::uint64_t patch_at(const Document& doc, std::uint64_t group, glm::dvec2 uv,
                        std::uint64_t prefer) {
     std::uint64_t first = 0;
     for (const Object* m : patch_members(doc, group)) {
-        if (!surface_domain(*surface_of(*m)).contains(uv)) continue;
+        if (!geom::domain(*m->surface()).contains(uv)) continue;
         if (m->id == prefer) return prefer;
         if (first == 0) first = m->id;
     }
@@ -167,10 +145,10 @@ std::uint64_t patch_at(const Document& doc, std::uint64_t group, glm::dvec2 uv,
 
 std::uint64_t patch_for_indicator(const Document& doc, std::uint64_t current) {
     const Object* o = doc.find(current);
-    if (!o || o->patch_group == 0 || !surface_of(*o)) return current;
-    const ParamRect r = tracing_domain(doc, *o);
-    const glm::dvec2 uv{r.u.lo + doc.indicator.x * (r.u.hi - r.u.lo),
-                        r.v.lo + doc.indicator.y * (r.v.hi - r.v.lo)};
+    if (!o || o->patch_group == 0 || !o->surface()) return current;
+    const geom::ParamRect r = tracing_domain(doc, *o);
+    const glm::dvec2 uv{r.u.lo + doc.view.indicator.x * (r.u.hi - r.u.lo),
+                        r.v.lo + doc.view.indicator.y * (r.v.hi - r.v.lo)};
     const std::uint64_t found = patch_at(doc, o->patch_group, uv, current);
     return found != 0 ? found : current;
 }
@@ -178,27 +156,28 @@ std::uint64_t patch_for_indicator(const Document& doc, std::uint64_t current) {
 bool follow_indicator(Document& doc, std::uint64_t current) {
     const std::uint64_t next = patch_for_indicator(doc, current);
     if (next == current) return false;
-    doc.selection = {next, -1, -1};
+    doc.view.selection = {next, -1, -1};
     return true;
 }
 
 std::uint64_t sync_patch_and_indicator(Document& doc, std::uint64_t current,
                                        glm::dvec2 last_indicator, std::uint64_t last_current) {
     const Object* o = doc.find(current);
-    if (!o || o->patch_group == 0 || !surface_of(*o)) return current;
-    if (!(doc.indicator == last_indicator)) {
+    if (!o || o->patch_group == 0 || !o->surface()) return current;
+    if (!(doc.view.indicator == last_indicator)) {
         const std::uint64_t next = patch_for_indicator(doc, current);
-        if (next != current) doc.selection = {next, -1, -1};
+        if (next != current) doc.view.selection = {next, -1, -1};
         return next;
     }
     if (current == last_current) return current;
-    const ParamRect all = tracing_domain(doc, *o);
-    const ParamRect own = surface_domain(*surface_of(*o));
+    const geom::ParamRect all = tracing_domain(doc, *o);
+    const geom::ParamRect own = geom::domain(*o->surface());
     auto into = [](const geom::Interval& whole, const geom::Interval& part, double s) {
         const double t = std::clamp(whole.lo + s * (whole.hi - whole.lo), part.lo, part.hi);
         return whole.hi > whole.lo ? (t - whole.lo) / (whole.hi - whole.lo) : 0.0;
     };
-    doc.indicator = {into(all.u, own.u, doc.indicator.x), into(all.v, own.v, doc.indicator.y)};
+    doc.view.indicator = {into(all.u, own.u, doc.view.indicator.x),
+                          into(all.v, own.v, doc.view.indicator.y)};
     return current;
 }
 
@@ -207,12 +186,11 @@ std::optional<geom::Error> check_patch_groups(const Document& doc) {
         const Object& A = doc.objects[a];
         if (A.patch_group == 0) continue;
         const std::string at = "/objects/" + std::to_string(a) + "/patch_group";
-        if (!surface_of(A))
-            return geom::make_error(
-                geom::ErrorCode::schema,
-                "only surfaces can be subpatches; object '" + A.name + "' is a " +
-                    (std::holds_alternative<CurveObject>(A.shape) ? "curve" : "implicit surface"),
-                at);
+        if (!A.surface())
+            return geom::make_error(geom::ErrorCode::schema,
+                                    "only surfaces can be subpatches; object '" + A.name +
+                                        "' is a " + geom::label_of(A.kind()),
+                                    at);
     }
     return std::nullopt;
 }
@@ -223,14 +201,14 @@ std::vector<SharedBorder> shared_borders(const Document& doc, std::uint64_t grou
     for (const Object* A : members)
         for (const Object* B : members) {
             if (A == B) continue;
-            const geom::Surface& sa = *surface_of(*A);
-            const geom::Surface& sb = *surface_of(*B);
-            const ParamRect ra = surface_domain(sa), rb = surface_domain(sb);
+            const geom::Surface& sa = *A->surface();
+            const geom::Surface& sb = *B->surface();
+            const geom::ParamRect ra = geom::domain(sa), rb = geom::domain(sb);
             for (Dir d : {Dir::u, Dir::v}) {
-                if (side(ra, d).hi != side(rb, d).lo) continue;
-                const Dir e = other(d);
-                const double lo = std::max(side(ra, e).lo, side(rb, e).lo);
-                const double hi = std::min(side(ra, e).hi, side(rb, e).hi);
+                if (ra.interval(d).hi != rb.interval(d).lo) continue;
+                const Dir e = geom::opposite(d);
+                const double lo = std::max(ra.interval(e).lo, rb.interval(e).lo);
+                const double hi = std::min(ra.interval(e).hi, rb.interval(e).hi);
                 if (!(lo < hi)) continue;
                 SharedBorder b;
                 b.low = A->id;
@@ -239,7 +217,7 @@ std::vector<SharedBorder> shared_borders(const Document& doc, std::uint64_t grou
                 b.along = {lo, hi};
                 const Restriction la = restrict_line(sa.knots(e), sa.degree(e), lo, hi);
                 const Restriction lb = restrict_line(sb.knots(e), sb.degree(e), lo, hi);
-                const char* along = e == Dir::u ? "u" : "v";
+                const char* along = geom::name_of(e);
                 if (sa.degree(e) != sb.degree(e)) {
                     b.why_not = std::string("the degrees in ") + along + " differ (" +
                                 std::to_string(sa.degree(e)) + " and " +
@@ -281,9 +259,9 @@ conforming_insertions(const Document& doc, std::uint64_t group,
     };
     for (const SharedBorder& b : shared_borders(doc, group)) {
         if (b.conforming || (wanted && !wanted(b))) continue;
-        const Dir e = other(b.across);
-        const geom::Surface& sa = *surface_of(*doc.find(b.low));
-        const geom::Surface& sb = *surface_of(*doc.find(b.high));
+        const Dir e = geom::opposite(b.across);
+        const geom::Surface& sa = *doc.find(b.low)->surface();
+        const geom::Surface& sb = *doc.find(b.high)->surface();
         const int p = sa.degree(e);
         if (sb.degree(e) != p) continue;
         const double lo = b.along.lo, hi = b.along.hi;
@@ -291,7 +269,7 @@ conforming_insertions(const Document& doc, std::uint64_t group,
         // there (clamped): insertion cannot add copies at the end of a domain.
         bool fixable = true;
         for (const geom::Surface* s : {&sa, &sb}) {
-            const geom::Interval d = side(surface_domain(*s), e);
+            const geom::Interval d = geom::domain(*s, e);
             for (double t : {lo, hi})
                 if ((t == d.lo || t == d.hi) && multiplicity_of(s->knots(e), t) < p)
                     fixable = false;
@@ -318,7 +296,7 @@ std::vector<PointChange> keep_continuity(Document& doc, std::uint64_t id, int i,
                                          Continuity mode) {
     std::vector<PointChange> changes;
     const Object* start = doc.find(id);
-    if (mode == Continuity::off || !start || start->patch_group == 0 || !surface_of(*start))
+    if (mode == Continuity::off || !start || start->patch_group == 0 || !start->surface())
         return changes;
     const std::vector<SharedBorder> borders = shared_borders(doc, start->patch_group);
     // Each point changes at most once and the moved patch never: the propagation ends even
@@ -335,8 +313,8 @@ std::vector<PointChange> keep_continuity(Document& doc, std::uint64_t id, int i,
             if (yid == id) continue;
             Object* X = doc.find(xid);
             Object* Y = doc.find(yid);
-            const geom::Surface& sx = *surface_of(*X);
-            geom::Surface& sy = *surface_of(*Y);
+            const geom::Surface& sx = *X->surface();
+            geom::Surface& sy = *Y->surface();
             const BorderSide bx = border_side(sx, b, x_low);
             const BorderSide by = border_side(sy, b, !x_low);
             const int c = b.across == Dir::u ? xi : xj;
@@ -380,7 +358,7 @@ std::vector<PointChange> keep_continuity(Document& doc, std::uint64_t id, int i,
 void restore_points(Document& doc, const std::vector<PointChange>& changes) {
     for (auto it = changes.rbegin(); it != changes.rend(); ++it) {
         Object* o = doc.find(it->object);
-        geom::Surface* s = o ? surface_of(*o) : nullptr;
+        geom::Surface* s = o ? o->surface() : nullptr;
         if (!s) continue;
         s->point(it->i, it->j) = it->position;
         s->weight(it->i, it->j) = it->weight;
@@ -391,13 +369,13 @@ bool continuity_holds(const Document& doc, std::uint64_t group, Continuity mode,
     if (mode == Continuity::off) return true;
     double size = 1;
     for (const Object* m : patch_members(doc, group))
-        for (const glm::dvec3& p : surface_of(*m)->points)
+        for (const glm::dvec3& p : m->surface()->points)
             size = std::max({size, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
     const double tol = tolerance * size;
     for (const SharedBorder& b : shared_borders(doc, group)) {
         if (!b.conforming) continue;
-        const geom::Surface& sl = *surface_of(*doc.find(b.low));
-        const geom::Surface& sh = *surface_of(*doc.find(b.high));
+        const geom::Surface& sl = *doc.find(b.low)->surface();
+        const geom::Surface& sh = *doc.find(b.high)->surface();
         const BorderSide bl = border_side(sl, b, true);
         const BorderSide bh = border_side(sh, b, false);
         for (int k = 0; k < b.count; ++k) {

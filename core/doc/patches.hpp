@@ -16,19 +16,12 @@
 
 namespace isoparm::doc {
 
-struct ParamRect {
-    geom::Interval u, v;
-    bool contains(glm::dvec2 p) const { return u.contains(p.x) && v.contains(p.y); }
-};
-
-ParamRect surface_domain(const geom::Surface& s);
-
 // The surfaces of group `group`, in document order.
 std::vector<const Object*> patch_members(const Document& doc, std::uint64_t group);
 
 // The rectangle the tracing square shows for a surface object: the box its group's patches
 // tile (the original surface's domain), or the surface's own domain outside a group.
-ParamRect tracing_domain(const Document& doc, const Object& surface_object);
+geom::ParamRect tracing_domain(const Document& doc, const Object& surface_object);
 
 // The patch of `group` whose domain holds (u, v) (group parameters). On a border shared by
 // several patches `prefer` wins when it is one of them (so the current patch does not flicker

@@ -2,7 +2,6 @@
 #include "core/doc/placement.hpp"
 
 #include <algorithm>
-#include <variant>
 
 #include <glm/common.hpp>
 
@@ -26,19 +25,14 @@ template <class Points> std::optional<Box> box_of_points(const Points& points) {
 }
 
 void translate(Shape& shape, const glm::dvec3& d) {
-    if (auto* s = std::get_if<SurfaceObject>(&shape))
-        for (auto& p : s->surface.points) p += d;
-    else if (auto* c = std::get_if<CurveObject>(&shape))
-        for (auto& p : c->curve.points) p += d;
+    for (glm::dvec3& p : control_points_of(shape)) p += d;
 }
 
 } // namespace
 
 std::optional<Box> bounds_of(const Shape& shape) {
-    if (const auto* s = std::get_if<SurfaceObject>(&shape)) return box_of_points(s->surface.points);
-    if (const auto* c = std::get_if<CurveObject>(&shape)) return box_of_points(c->curve.points);
-    const auto& f = std::get<ImplicitObject>(shape);
-    return Box{f.lo, f.hi};
+    if (const ImplicitObject* f = implicit_of(shape)) return Box{f->lo, f->hi};
+    return box_of_points(control_points_of(shape));
 }
 
 std::optional<Box> scene_bounds(const Document& doc) {
@@ -56,7 +50,7 @@ std::optional<Box> scene_bounds(const Document& doc) {
 void place_beside_scene(const Document& doc, Shape& shape) {
     // An implicit surface's expression is in absolute coordinates: moving its box alone
     // would cut the field, so it stays where its formula puts it.
-    if (std::holds_alternative<ImplicitObject>(shape)) return;
+    if (kind_of(shape) == ObjectKind::implicit) return;
     const std::optional<Box> scene = scene_bounds(doc);
     const std::optional<Box> own = bounds_of(shape);
     if (!scene || !own) return;

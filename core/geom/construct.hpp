@@ -66,6 +66,12 @@ constexpr int default_skin_degree(int curve_count) {
 }
 Expected<Skinned> skin(const std::vector<Curve>& curves, int degree,
                        Parametrization mode = Parametrization::chord);
+// The same at given parameters v_k (strictly increasing, one per curve; the Gordon surface
+// needs its network's own), and on curves already compatible (make_compatible's output).
+Expected<Skinned> skin_through(const std::vector<Curve>& curves, int degree,
+                               const std::vector<double>& params);
+Expected<Skinned> skin_compatible(const std::vector<Curve>& compatible, int degree,
+                                  const std::vector<double>& params);
 
 // Beyond the protocol: the oriented sweep. The profile moves along the trajectory and turns
 // with it, following the rotation-minimizing frame (double reflection, Wang, Juttler, Zheng and

@@ -49,9 +49,9 @@ std::optional<SurfaceCurvature> curvature_from_derivatives(const SurfaceDerivati
     // d1 from the eigenvector of k1; at an umbilic (every direction principal) S_u.
     const glm::dvec2 ab = principal_coefficients(L, M, N, E, F, G, k.k1);
     glm::dvec3 d1 = ab.x * Su + ab.y * Sv;
-    const double scale = std::max({std::abs(L), std::abs(M), std::abs(N), std::abs(k.k1) * E,
-                                   std::abs(k.k1) * G}) *
-                         std::sqrt(std::max(E, G));
+    const double scale =
+        std::max({std::abs(L), std::abs(M), std::abs(N), std::abs(k.k1) * E, std::abs(k.k1) * G}) *
+        std::sqrt(std::max(E, G));
     if (!(glm::length(d1) > relative_zero * scale)) d1 = Su;
     // Remove any normal component rounding left, so that d1, d2 and n are orthonormal.
     d1 -= glm::dot(d1, n) * n;

@@ -135,8 +135,8 @@ glm::dvec3 surface_normal_or_limit(const Surface& s, double u, double v) {
     if (d) {
         if (auto n = normal_from_derivatives(*d)) return *n;
     }
-    const Interval du_dom = domain(s.knots_u, s.degree_u, s.n_u);
-    const Interval dv_dom = domain(s.knots_v, s.degree_v, s.n_v);
+    const Interval du_dom = domain(s, Dir::u);
+    const Interval dv_dom = domain(s, Dir::v);
     // Approach from inside the domain: towards its centre in each direction.
     const double du = u < 0.5 * (du_dom.lo + du_dom.hi) ? 1.0 : -1.0;
     const double dv = v < 0.5 * (dv_dom.lo + dv_dom.hi) ? 1.0 : -1.0;

@@ -12,29 +12,6 @@
 
 namespace isoparm::geom {
 
-const char* parametrization_name(Parametrization m) {
-    switch (m) {
-    case Parametrization::chord:
-        return "chord";
-    case Parametrization::centripetal:
-        return "centripetal";
-    case Parametrization::uniform:
-        return "uniform";
-    }
-    return "chord";
-}
-
-bool parse_parametrization(const std::string& name, Parametrization& out) {
-    for (Parametrization m :
-         {Parametrization::chord, Parametrization::centripetal, Parametrization::uniform}) {
-        if (name == parametrization_name(m)) {
-            out = m;
-            return true;
-        }
-    }
-    return false;
-}
-
 Expected<std::vector<double>> point_params(const std::vector<glm::dvec3>& points,
                                            Parametrization mode) {
     const int K = static_cast<int>(points.size()) - 1;

@@ -13,8 +13,19 @@ namespace isoparm::geom {
 // How parameters follow the data (Piegl & Tiller 9.2.1): chord length (eq. 9.5), centripetal
 // (eq. 9.6, square roots of the chord lengths) or uniform (eq. 9.4, k / K).
 enum class Parametrization { chord, centripetal, uniform };
-const char* parametrization_name(Parametrization m);
-bool parse_parametrization(const std::string& name, Parametrization& out);
+inline constexpr EnumName<Parametrization> parametrization_names[] = {
+    {Parametrization::chord, "chord"},
+    {Parametrization::centripetal, "centripetal"},
+    {Parametrization::uniform, "uniform"},
+};
+static_assert(in_declaration_order(parametrization_names));
+constexpr std::span<const EnumName<Parametrization>> enum_names(Parametrization) {
+    return parametrization_names;
+}
+// The name (name_of), for callers that say it this way.
+inline const char* parametrization_name(Parametrization m) {
+    return name_of(m);
+}
 
 // Parameters t_0 = 0 < ... < t_K = 1 for K + 1 points. Errors (`geometry`): all points
 // coincide (path "/points"), or two consecutive points coincide under chord/centripetal, which

@@ -15,6 +15,17 @@ Status validate_knots(const Knots& U, int p, int n);
 inline Interval domain(const Knots& U, int p, int n) {
     return {U[p], U[n]};
 }
+// The same for a curve, a surface along one direction and a surface in both: the one place
+// every caller (panels, commands, the protocol) asks for a domain.
+inline Interval domain(const Curve& c) {
+    return domain(c.knots, c.degree, c.count());
+}
+inline Interval domain(const Surface& s, Dir dir) {
+    return domain(s.knots(dir), s.degree(dir), s.count(dir));
+}
+inline ParamRect domain(const Surface& s) {
+    return {domain(s, Dir::u), domain(s, Dir::v)};
+}
 
 // Piegl & Tiller A2.1 FindSpan, with the protocol's convention: the span s with
 // U[s] <= t < U[s+1] (right limit at interior knots, whatever their multiplicity), except

@@ -33,7 +33,7 @@ struct Track {
 };
 
 Expected<Track> sample_track(const Curve& T, int steps) {
-    const Interval dom = domain(T.knots, T.degree, T.count());
+    const Interval dom = domain(T);
     auto point_at = [&](double t) -> Expected<glm::dvec3> {
         const auto X = curve_point(T, t);
         if (!X) {
@@ -165,7 +165,7 @@ Expected<OrientedSweep> oriented_sweep(const Curve& profile, const Curve& trajec
     // The deviation: the skin S(u, v) against the ideal S*(u, t(v)) = X(t) + R(t) (P(u) - X(a))
     // at every frame sample (v = m / M at arc length m / M of the trajectory, t = t_m) and
     // samples_u + 1 profile parameters; the skin's u is the profile's domain mapped to [0, 1].
-    const Interval pd = domain(profile.knots, profile.degree, profile.count());
+    const Interval pd = domain(profile);
     const int NU = std::max(2, options.samples_u);
     for (int a = 0; a <= NU; ++a) {
         const double u01 = static_cast<double>(a) / NU;

@@ -9,28 +9,6 @@
 
 namespace isoparm::geom {
 
-const char* plane_name(Plane p) {
-    switch (p) {
-    case Plane::xy:
-        return "xy";
-    case Plane::xz:
-        return "xz";
-    case Plane::yz:
-        return "yz";
-    }
-    return "xy";
-}
-
-bool parse_plane(const std::string& name, Plane& out) {
-    for (Plane p : {Plane::xy, Plane::xz, Plane::yz}) {
-        if (name == plane_name(p)) {
-            out = p;
-            return true;
-        }
-    }
-    return false;
-}
-
 void plane_axes(Plane p, glm::dvec3& X, glm::dvec3& Y) {
     switch (p) {
     case Plane::xy:

@@ -12,8 +12,12 @@ namespace isoparm::geom {
 // The plane a primitive lies in, with its two axes (angles run from the first toward the
 // second): xy = (x, y), xz = (x, z), yz = (y, z).
 enum class Plane { xy, xz, yz };
-const char* plane_name(Plane p);
-bool parse_plane(const std::string& name, Plane& out);
+inline constexpr EnumName<Plane> plane_names[] = {
+    {Plane::xy, "xy"}, {Plane::xz, "xz"}, {Plane::yz, "yz"}};
+static_assert(in_declaration_order(plane_names));
+constexpr std::span<const EnumName<Plane>> enum_names(Plane) {
+    return plane_names;
+}
 void plane_axes(Plane p, glm::dvec3& X, glm::dvec3& Y);
 
 // The arc layout of Piegl & Tiller A7.1 / A8.1 for a sweep of `degrees` in (0, 360]: one

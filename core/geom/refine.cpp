@@ -227,7 +227,7 @@ template <class Algorithm> Expected<Curve> run_homogeneous(const Curve& c, Algor
 // The surface form of a curve operation: applied to every line along dir.
 template <class CurveOp>
 Expected<Surface> per_line(const Surface& s, Dir dir, CurveOp op, SplineType result_type) {
-    const int across = s.count(dir == Dir::u ? Dir::v : Dir::u);
+    const int across = s.count(opposite(dir));
     std::vector<Curve> lines;
     lines.reserve(across);
     for (int l = 0; l < across; ++l) {
@@ -339,8 +339,8 @@ void refine_knot_vector(int p, Knots& U, std::vector<HPoint>& Pw, const std::vec
 
 Expected<Curve> insert_knot(const Curve& c, double t, int times) {
     if (Status s = check_times(times); !s) return s.error();
-    const int p = c.degree, n = c.count();
-    const Interval dom = domain(c.knots, p, n);
+    const int p = c.degree;
+    const Interval dom = domain(c);
     if (!std::isfinite(t) || !dom.contains(t)) {
         return make_error(ErrorCode::domain,
                           "knot " + format_number(t) + " outside the domain [" +
@@ -385,7 +385,7 @@ Expected<Surface> elevate_degree(const Surface& s, Dir dir, int times) {
 }
 
 Expected<std::pair<Curve, Curve>> split(const Curve& c, double t) {
-    const Interval dom = domain(c.knots, c.degree, c.count());
+    const Interval dom = domain(c);
     if (!std::isfinite(t) || !(dom.lo < t && t < dom.hi)) {
         return make_error(ErrorCode::domain,
                           "split parameter " + format_number(t) +
@@ -406,7 +406,7 @@ Expected<std::pair<Curve, Curve>> split(const Curve& c, double t) {
 
 Expected<std::pair<Surface, Surface>> split(const Surface& s, Dir dir, double t) {
     std::vector<Curve> firsts, seconds;
-    const int across = s.count(dir == Dir::u ? Dir::v : Dir::u);
+    const int across = s.count(opposite(dir));
     for (int l = 0; l < across; ++l) {
         auto r = split(surface_line(s, dir, l), t);
         if (!r) return r.error();

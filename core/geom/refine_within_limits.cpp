@@ -38,8 +38,7 @@ Status check_elevation_size(const Knots& U, int p, int n, long long across, int 
     return Ok{};
 }
 
-template <class Shape>
-Expected<Shape> within_limits(Expected<Shape> refined) {
+template <class Shape> Expected<Shape> within_limits(Expected<Shape> refined) {
     if (!refined) return refined;
     if (Status st = check_net_size(*refined, "/times"); !st) return st.error();
     return refined;
@@ -66,9 +65,9 @@ Expected<Curve> elevate_degree_within_limits(const Curve& c, int times) {
 
 Expected<Surface> elevate_degree_within_limits(const Surface& s, Dir dir, int times) {
     if (Status st = check_times(times); !st) return st.error();
-    const Dir other = dir == Dir::u ? Dir::v : Dir::u;
-    if (Status st = check_elevation_size(s.knots(dir), s.degree(dir), s.count(dir),
-                                         s.count(other), times);
+    const Dir other = opposite(dir);
+    if (Status st =
+            check_elevation_size(s.knots(dir), s.degree(dir), s.count(dir), s.count(other), times);
         !st)
         return st.error();
     return within_limits(elevate_degree(s, dir, times));

@@ -23,7 +23,7 @@ Expected<std::vector<double>> section_params(const std::vector<Curve>& sections,
                           "the sections coincide at control point " +
                               std::to_string(v.degenerate_line) +
                               " (the same point in every compatible curve), so the " +
-                              parametrization_name(mode) + " lengths between sections sum to zero",
+                              name_of(mode) + " lengths between sections sum to zero",
                           "/curves");
     }
     if (v.coincident >= 0) {
@@ -53,12 +53,28 @@ Expected<Skinned> skin(const std::vector<Curve>& curves, int degree, Parametriza
     }
     auto compatible = make_compatible(curves);
     if (!compatible) return compatible.error();
-    const std::vector<Curve>& C = *compatible;
-    const int n = C.front().count(), K = count - 1, q = degree;
-    if (Status s = construct_detail::check_result_size(n, count); !s) return s.error();
-    auto params = section_params(C, mode);
+    if (Status s = construct_detail::check_result_size(compatible->front().count(), count); !s)
+        return s.error();
+    auto params = section_params(*compatible, mode);
     if (!params) return params.error();
-    const std::vector<double>& v = *params;
+    return skin_compatible(*compatible, degree, *params);
+}
+
+Expected<Skinned> skin_through(const std::vector<Curve>& curves, int degree,
+                               const std::vector<double>& params) {
+    auto compatible = make_compatible(curves);
+    if (!compatible) return compatible.error();
+    if (Status s = construct_detail::check_result_size(compatible->front().count(),
+                                                       static_cast<long>(curves.size()));
+        !s)
+        return s.error();
+    return skin_compatible(*compatible, degree, params);
+}
+
+Expected<Skinned> skin_compatible(const std::vector<Curve>& C, int degree,
+                                  const std::vector<double>& v) {
+    const int count = static_cast<int>(C.size());
+    const int n = C.front().count(), K = count - 1, q = degree;
 
     bool rational = false, bezier = true;
     for (const Curve& c : C) {

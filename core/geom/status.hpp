@@ -6,6 +6,8 @@
 #include <utility>
 #include <variant>
 
+#include "core/geom/enum_names.hpp"
+
 namespace isoparm::geom {
 
 enum class ErrorCode {
@@ -23,7 +25,25 @@ enum class ErrorCode {
     internal,
 };
 
-const char* error_code_name(ErrorCode code);
+// As answers and messages name them: "parse", "schema", ..., "unknown_op", "internal".
+inline constexpr EnumName<ErrorCode> error_code_names[] = {
+    {ErrorCode::parse, "parse"},
+    {ErrorCode::schema, "schema"},
+    {ErrorCode::knots, "knots"},
+    {ErrorCode::degree, "degree"},
+    {ErrorCode::weights, "weights"},
+    {ErrorCode::domain, "domain"},
+    {ErrorCode::multiplicity, "multiplicity"},
+    {ErrorCode::compatibility, "compatibility"},
+    {ErrorCode::geometry, "geometry"},
+    {ErrorCode::limit, "limit"},
+    {ErrorCode::unknown_op, "unknown_op"},
+    {ErrorCode::internal, "internal"},
+};
+static_assert(in_declaration_order(error_code_names));
+constexpr std::span<const EnumName<ErrorCode>> enum_names(ErrorCode) {
+    return error_code_names;
+}
 
 struct Error {
     ErrorCode code = ErrorCode::internal;

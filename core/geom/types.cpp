@@ -1,34 +1,9 @@
-// Spline type names and the curve <-> surface line slicing shared by all refinements.
+// The curve <-> surface line slicing shared by all refinements.
 #include "core/geom/types.hpp"
 
 #include <cassert>
 
 namespace isoparm::geom {
-
-const char* spline_type_name(SplineType type) {
-    switch (type) {
-    case SplineType::bezier:
-        return "bezier";
-    case SplineType::rational_bezier:
-        return "rational_bezier";
-    case SplineType::bspline:
-        return "bspline";
-    case SplineType::nurbs:
-        return "nurbs";
-    }
-    return "nurbs";
-}
-
-bool parse_spline_type(const std::string& name, SplineType& out) {
-    for (SplineType t : {SplineType::bezier, SplineType::rational_bezier, SplineType::bspline,
-                         SplineType::nurbs}) {
-        if (name == spline_type_name(t)) {
-            out = t;
-            return true;
-        }
-    }
-    return false;
-}
 
 Curve surface_line(const Surface& s, Dir dir, int index) {
     Curve c;

@@ -1,18 +1,34 @@
 // The one rational tensor-product representation behind all four spline types.
 #pragma once
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <string>
 #include <vector>
+
+#include "core/geom/enum_names.hpp"
 
 namespace isoparm::geom {
 
 // The type is a tag: all four share one representation. Non-rational types keep unit
 // weights; Bezier types keep a single span (knots a^(p+1) b^(p+1), n = p + 1).
 enum class SplineType { bezier, rational_bezier, bspline, nurbs };
-const char* spline_type_name(SplineType type);
-bool parse_spline_type(const std::string& name, SplineType& out);
+// Files and requests spell them bezier ... nurbs; menus and messages say them as the paper does.
+inline constexpr EnumName<SplineType> spline_type_names[] = {
+    {SplineType::bezier, "bezier", "Bezier"},
+    {SplineType::rational_bezier, "rational_bezier", "rational Bezier"},
+    {SplineType::bspline, "bspline", "B-spline"},
+    {SplineType::nurbs, "nurbs", "NURBS"},
+};
+static_assert(in_declaration_order(spline_type_names));
+constexpr std::span<const EnumName<SplineType>> enum_names(SplineType) {
+    return spline_type_names;
+}
+// The file name (name_of), for callers that say it this way.
+inline const char* spline_type_name(SplineType type) {
+    return name_of(type);
+}
 inline bool is_rational(SplineType t) {
     return t == SplineType::rational_bezier || t == SplineType::nurbs;
 }
@@ -21,6 +37,15 @@ inline bool is_bezier(SplineType t) {
 }
 
 enum class Dir { u, v };
+inline constexpr EnumName<Dir> dir_names[] = {{Dir::u, "u"}, {Dir::v, "v"}};
+static_assert(in_declaration_order(dir_names));
+constexpr std::span<const EnumName<Dir>> enum_names(Dir) {
+    return dir_names;
+}
+// The other parameter direction (u for v, v for u).
+inline Dir opposite(Dir d) {
+    return d == Dir::u ? Dir::v : Dir::u;
+}
 
 using Knots = std::vector<double>;
 
@@ -63,6 +88,13 @@ struct Surface {
 struct Interval {
     double lo = 0, hi = 1;
     bool contains(double t) const { return lo <= t && t <= hi; }
+};
+
+// A rectangle of parameters (u, v): a surface's domain, or the box a patch group tiles.
+struct ParamRect {
+    Interval u, v;
+    bool contains(glm::dvec2 p) const { return u.contains(p.x) && v.contains(p.y); }
+    const Interval& interval(Dir d) const { return d == Dir::u ? u : v; }
 };
 
 // Curve <-> surface slicing, so each curve algorithm has one implementation that surfaces

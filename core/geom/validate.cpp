@@ -30,14 +30,13 @@ Status check_degree(int p, int n, const std::string& path, const char* dir_name)
 // span, and the knots are what is wrong (docs/protocol.md). A Bezier object read without
 // knots gets a^(p+1) b^(p+1), which only fits p + 1 points; its reader refuses a wrong
 // count as a `degree` error before this runs (there are no knots to blame).
-Status check_bezier(const Knots& U, int p, int n, const std::string& knots_path,
-                    const char* what) {
+Status check_bezier(const Knots& U, int p, int n, const std::string& knots_path, const char* what) {
     if (n != p + 1) {
         return make_error(ErrorCode::knots,
-                          std::string("a Bezier ") + what + " has one span: knots a^(p+1) b^(p+1) " +
-                              "and exactly " + std::to_string(p + 1) +
-                              " control points for degree " + std::to_string(p) + ", got " +
-                              std::to_string(n) + " control points",
+                          std::string("a Bezier ") + what +
+                              " has one span: knots a^(p+1) b^(p+1) " + "and exactly " +
+                              std::to_string(p + 1) + " control points for degree " +
+                              std::to_string(p) + ", got " + std::to_string(n) + " control points",
                           knots_path);
     }
     for (int k = 0; k <= p; ++k) {
@@ -131,13 +130,9 @@ Status validate_surface(const Surface& s) {
     if (Status r = validate_knots(s.knots_v, s.degree_v, s.n_v); !r)
         return r.error().under("/knots/1");
     if (is_bezier(s.type)) {
-        if (Status r =
-                check_bezier(s.knots_u, s.degree_u, s.n_u, "/knots/0", "surface");
-            !r)
+        if (Status r = check_bezier(s.knots_u, s.degree_u, s.n_u, "/knots/0", "surface"); !r)
             return r;
-        if (Status r =
-                check_bezier(s.knots_v, s.degree_v, s.n_v, "/knots/1", "surface");
-            !r)
+        if (Status r = check_bezier(s.knots_v, s.degree_v, s.n_v, "/knots/1", "surface"); !r)
             return r;
     }
     return Ok{};

@@ -47,6 +47,17 @@ WorkEstimate estimate_surface_evaluation(double count, int p, int q, int d, bool
     return e;
 }
 
+WorkEstimate estimate_triangle_de_casteljau(double count, int n, int d, bool all_levels) {
+    const double level_points = (n + 1.0) * (n + 2.0) * (n + 3.0) / 6; // every level's points
+    const double nets = (d + 1.0) * (d + 2.0) / 2;
+    WorkEstimate e;
+    e.steps = count * level_points * 3 * nets;
+    e.answer_numbers =
+        all_levels ? count * level_points * 3 : count * 3 * (1 + (d >= 1 ? sq(d + 1.0) : 0));
+    e.steps += e.answer_numbers * steps_per_answer_number;
+    return e;
+}
+
 WorkEstimate estimate_tessellation(double n_u, double n_v, int p, int q) {
     WorkEstimate e;
     // Basis values and first derivatives once per grid line, then point and two partials per

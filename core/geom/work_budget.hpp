@@ -45,6 +45,10 @@ WorkEstimate estimate_curve_evaluation(double count, int p, int d);
 WorkEstimate estimate_surface_evaluation(double count, int p, int q, int d, bool normals);
 // Tessellating a surface of degrees (p, q) on an n_u x n_v grid.
 WorkEstimate estimate_tessellation(double n_u, double n_v, int p, int q);
+// de Casteljau on a degree-n triangle at `count` parameters: about n^3/6 level points of three
+// multiply-adds each, once per derivative net ((d+1)(d+2)/2 of them). `all_levels` answers
+// every level's points (de_casteljau), else a point and the derivative table per parameter.
+WorkEstimate estimate_triangle_de_casteljau(double count, int n, int d, bool all_levels);
 // Polygonizing an expression of `instructions` (after folding) on a grid of `grid_points`.
 WorkEstimate estimate_polygonization(double grid_points, double instructions);
 // Fitting n control points of degree p to `rows` data parameters: the basis at each parameter,

@@ -16,14 +16,22 @@ std::string member_path(std::string_view at, std::string_view key) {
 
 const char* type_name(const json& v) {
     switch (v.type()) {
-    case json::value_t::null: return "null";
-    case json::value_t::boolean: return "a boolean";
-    case json::value_t::string: return "a string";
-    case json::value_t::array: return "an array";
-    case json::value_t::object: return "an object";
-    case json::value_t::binary: return "binary data";
-    case json::value_t::discarded: return "nothing";
-    default: return "a number";
+    case json::value_t::null:
+        return "null";
+    case json::value_t::boolean:
+        return "a boolean";
+    case json::value_t::string:
+        return "a string";
+    case json::value_t::array:
+        return "an array";
+    case json::value_t::object:
+        return "an object";
+    case json::value_t::binary:
+        return "binary data";
+    case json::value_t::discarded:
+        return "nothing";
+    default:
+        return "a number";
     }
 }
 
@@ -76,16 +84,15 @@ geom::Expected<double> read_finite(const json& v, const std::string& path, std::
 }
 
 geom::Expected<std::int64_t> read_integer(const json& v, const std::string& path,
-                                          std::string_view what, std::int64_t lo,
-                                          std::int64_t hi) {
+                                          std::string_view what, std::int64_t lo, std::int64_t hi) {
     const std::optional<std::int64_t> n = integer_value(v);
     if (!n)
         return schema_error(std::string(what) + " must be an integer, got " +
                                 (v.is_number() ? v.dump() : std::string(type_name(v))),
                             path);
     if (*n < lo || *n > hi)
-        return schema_error(std::string(what) + " must be between " + std::to_string(lo) +
-                                " and " + std::to_string(hi) + ", got " + std::to_string(*n),
+        return schema_error(std::string(what) + " must be between " + std::to_string(lo) + " and " +
+                                std::to_string(hi) + ", got " + std::to_string(*n),
                             path);
     return *n;
 }

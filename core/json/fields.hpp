@@ -40,6 +40,13 @@ inline std::optional<std::int64_t> integer_value(const nlohmann::json& v) {
     return std::nullopt;
 }
 
+// The enumeration value a JSON string names (geom::parse_name); nothing for other text or any
+// other JSON type. Callers word the refusal: it lists what that place accepts.
+template <class E> std::optional<E> enum_value(const nlohmann::json& v) {
+    if (!v.is_string()) return std::nullopt;
+    return geom::parse_name<E>(v.get_ref<const std::string&>());
+}
+
 // A `schema` error: the value at `path` breaks the rule the message states.
 geom::Error schema_error(std::string message, std::string path);
 // The path of member `key` of the object at `at` ("/objects/2" + "name"), escaped (RFC 6901).
@@ -50,10 +57,10 @@ const char* type_name(const nlohmann::json& v);
 // Members outside `allowed` are typos or from a newer isoparm: refused, never ignored.
 // "unknown member 'colour' in a curve (allowed: type, degree, knots, points, weights)", at
 // the member; `what` names the object ("a curve", "op 'evaluate'", "the scene").
-geom::Status check_members(const nlohmann::json& object, std::string_view at,
-                           std::string_view what, std::span<const std::string_view> allowed);
-geom::Status check_members(const nlohmann::json& object, std::string_view at,
-                           std::string_view what, std::initializer_list<std::string_view> allowed);
+geom::Status check_members(const nlohmann::json& object, std::string_view at, std::string_view what,
+                           std::span<const std::string_view> allowed);
+geom::Status check_members(const nlohmann::json& object, std::string_view at, std::string_view what,
+                           std::initializer_list<std::string_view> allowed);
 // "missing member 'degree'", at the path where the member would be.
 geom::Error missing_member(std::string_view at, std::string_view name);
 // The member, or nullptr when absent.
@@ -68,8 +75,7 @@ geom::Expected<double> read_finite(const nlohmann::json& v, const std::string& p
 // An integer (integral floats such as 3.0 accepted) in [lo, hi]: "<what> must be an integer,
 // got 2.5"; "<what> must be between 1 and 64, got 99".
 geom::Expected<std::int64_t> read_integer(const nlohmann::json& v, const std::string& path,
-                                          std::string_view what, std::int64_t lo,
-                                          std::int64_t hi);
+                                          std::string_view what, std::int64_t lo, std::int64_t hi);
 geom::Expected<bool> read_bool(const nlohmann::json& v, const std::string& path);
 geom::Expected<std::string> read_string(const nlohmann::json& v, const std::string& path,
                                         std::string_view what);

@@ -6,10 +6,10 @@
 #include <optional>
 #include <string>
 
-#include "core/json/reader.hpp"
-#include "core/json/fields.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/validate.hpp"
+#include "core/json/fields.hpp"
+#include "core/json/reader.hpp"
 
 namespace isoparm::json_io {
 
@@ -40,11 +40,10 @@ Expected<geom::SplineType> read_type(const json& j) {
     if (it == j.end()) {
         return j.contains("weights") ? geom::SplineType::nurbs : geom::SplineType::bspline;
     }
-    geom::SplineType t{};
-    if (!it->is_string() || !geom::parse_spline_type(it->get<std::string>(), t)) {
+    const std::optional<geom::SplineType> t = enum_value<geom::SplineType>(*it);
+    if (!t)
         return schema_error("type must be one of bezier, rational_bezier, bspline, nurbs", "/type");
-    }
-    return t;
+    return *t;
 }
 
 // One degree: an integer (integral floats accepted) >= 1. Saturated to int64 so that a huge
@@ -118,7 +117,6 @@ std::optional<Error> check_degree_fits(std::int64_t p, long n, bool bezier_defau
     return std::nullopt;
 }
 
-
 } // namespace
 
 Expected<geom::Curve> curve_from_json(const json& j) {
@@ -165,9 +163,9 @@ Expected<geom::Curve> curve_from_json(const json& j) {
     const auto weights_it = j.find("weights");
     if (weights_it != j.end()) {
         if (!geom::is_rational(c.type)) {
-            return schema_error(std::string("a ") + geom::spline_type_name(c.type) +
-                              " curve takes no weights (use rational_bezier or nurbs)",
-                          "/weights");
+            return schema_error(std::string("a ") + geom::name_of(c.type) +
+                                    " curve takes no weights (use rational_bezier or nurbs)",
+                                "/weights");
         }
         Expected<std::vector<double>> w =
             read_weight_row(*weights_it, c.points.size(), "/weights", "weights");
@@ -215,16 +213,17 @@ Expected<geom::Surface> surface_from_json(const json& j) {
     long n_v = -1;
     for (std::size_t i = 0; i < P.size(); ++i) {
         const std::string row = "/points" + at(static_cast<long>(i));
-        if (!P[i].is_array()) return schema_error("a surface's points are rows (arrays) of points", row);
+        if (!P[i].is_array())
+            return schema_error("a surface's points are rows (arrays) of points", row);
         const long len = static_cast<long>(P[i].size());
         if (len > max_dir)
             return make_error(ErrorCode::limit, "too many points along v", "/points");
         if (n_v < 0) n_v = len;
         if (len != n_v) {
             return schema_error("every row of points must have the same length: row " +
-                              std::to_string(i) + " has " + std::to_string(len) + ", row 0 has " +
-                              std::to_string(n_v),
-                          row);
+                                    std::to_string(i) + " has " + std::to_string(len) +
+                                    ", row 0 has " + std::to_string(n_v),
+                                row);
         }
     }
     if (n_v < 0) n_v = 0;
@@ -269,9 +268,9 @@ Expected<geom::Surface> surface_from_json(const json& j) {
     const auto weights_it = j.find("weights");
     if (weights_it != j.end()) {
         if (!geom::is_rational(s.type)) {
-            return schema_error(std::string("a ") + geom::spline_type_name(s.type) +
-                              " surface takes no weights (use rational_bezier or nurbs)",
-                          "/weights");
+            return schema_error(std::string("a ") + geom::name_of(s.type) +
+                                    " surface takes no weights (use rational_bezier or nurbs)",
+                                "/weights");
         }
         const json& W = *weights_it;
         if (!W.is_array()) return weights_error("weights are n_u rows of n_v numbers", "/weights");
@@ -340,7 +339,7 @@ json numbers(const std::vector<double>& v) {
 
 json curve_to_json(const geom::Curve& c) {
     json j = json::object();
-    j["type"] = geom::spline_type_name(c.type);
+    j["type"] = geom::name_of(c.type);
     j["degree"] = c.degree;
     j["knots"] = numbers(c.knots);
     json pts = json::array();
@@ -352,7 +351,7 @@ json curve_to_json(const geom::Curve& c) {
 
 json surface_to_json(const geom::Surface& s) {
     json j = json::object();
-    j["type"] = geom::spline_type_name(s.type);
+    j["type"] = geom::name_of(s.type);
     j["degree"] = json::array({s.degree_u, s.degree_v});
     j["knots"] = json::array({numbers(s.knots_u), numbers(s.knots_v)});
     json rows = json::array();
@@ -369,6 +368,64 @@ json surface_to_json(const geom::Surface& s) {
     }
     j["points"] = std::move(rows);
     if (geom::is_rational(s.type)) j["weights"] = std::move(wrows);
+    return j;
+}
+
+Expected<geom::TrianglePatch> triangle_from_json(const json& j) {
+    if (!j.is_object()) return schema_error("a triangle is a JSON object", "");
+    if (auto st = check_members(j, "", "a triangle", {"type", "degree", "points", "weights"}); !st)
+        return st.error();
+    const json* type = find_member(j, "type");
+    if (!type) return missing_member("", "type");
+    geom::TrianglePatch t;
+    if (*type == "rational_triangle_bezier")
+        t.rational = true;
+    else if (*type != "triangle_bezier")
+        return schema_error("type must be triangle_bezier or rational_triangle_bezier", "/type");
+    const json* degree = find_member(j, "degree");
+    if (!degree) return missing_member("", "degree");
+    Expected<std::int64_t> n = read_one_degree(*degree, "/degree");
+    if (!n) return n.error();
+    if (*n > geom::max_triangle_degree)
+        return make_error(ErrorCode::limit,
+                          "degree " + std::to_string(*n) + " is above the cap of " +
+                              std::to_string(geom::max_triangle_degree),
+                          "/degree");
+    t.degree = static_cast<int>(*n);
+    const json* points = find_member(j, "points");
+    if (!points) return missing_member("", "points");
+    const std::size_t want = static_cast<std::size_t>(geom::TrianglePatch::count_for(t.degree));
+    if (!points->is_array() || points->size() != want)
+        return schema_error("a triangle of degree " + std::to_string(t.degree) + " has " +
+                                std::to_string(want) + " control points [x, y] or [x, y, z]",
+                            "/points");
+    for (std::size_t k = 0; k < want; ++k) {
+        Expected<glm::dvec3> p = read_point((*points)[k], "/points" + at(static_cast<long>(k)));
+        if (!p) return p.error();
+        t.points.push_back(*p);
+    }
+    if (const json* w = find_member(j, "weights")) {
+        if (!t.rational)
+            return schema_error("a triangle_bezier takes no weights (use rational_triangle_bezier)",
+                                "/weights");
+        Expected<std::vector<double>> weights = read_weight_row(*w, want, "/weights", "weights");
+        if (!weights) return weights.error();
+        t.weights = std::move(weights).value();
+    } else {
+        t.weights.assign(want, 1.0);
+    }
+    if (geom::Status st = geom::validate_triangle(t); !st) return st.error();
+    return t;
+}
+
+json triangle_to_json(const geom::TrianglePatch& t) {
+    json j = json::object();
+    j["type"] = t.rational ? "rational_triangle_bezier" : "triangle_bezier";
+    j["degree"] = t.degree;
+    json pts = json::array();
+    for (const glm::dvec3& p : t.points) pts.push_back(point_to_json(p));
+    j["points"] = std::move(pts);
+    if (t.rational) j["weights"] = numbers(t.weights);
     return j;
 }
 

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "core/geom/status.hpp"
+#include "core/geom/triangle.hpp"
 #include "core/geom/types.hpp"
 
 namespace isoparm::json_io {
@@ -17,6 +18,11 @@ geom::Expected<geom::Surface> surface_from_json(const nlohmann::json& j);
 
 // Always writes type, degree, knots, points (3D) and, for rational types, weights.
 nlohmann::json curve_to_json(const geom::Curve& c);
+
+// Triangular Bezier patches: {"type": "triangle_bezier" | "rational_triangle_bezier",
+// "degree": n, "points": [...], "weights": [...]} (geom/triangle.hpp gives the order).
+geom::Expected<geom::TrianglePatch> triangle_from_json(const nlohmann::json& j);
+nlohmann::json triangle_to_json(const geom::TrianglePatch& t);
 nlohmann::json surface_to_json(const geom::Surface& s);
 
 // A point [x, y] or [x, y, z] of finite numbers (z = 0 when omitted); `what` names it in the

@@ -39,6 +39,16 @@ OpResult op_basis(const json& request);       // op_basis.cpp
 OpResult op_deboor(const json& request);      // op_deboor.cpp
 OpResult op_curvature(const json& request);   // op_curvature.cpp
 OpResult op_blossom(const json& request);     // op_blossom.cpp
+OpResult op_convert(const json& request);     // op_convert.cpp
+OpResult op_close(const json& request);       // op_reshape.cpp
+// Triangular patches (op_triangle.cpp): evaluate, elevate_degree and split hand a request with
+// a `triangle` to these; de_casteljau is theirs alone.
+OpResult op_triangle_evaluate(const json& request);
+OpResult op_triangle_elevate(const json& request);
+OpResult op_triangle_split(const json& request);
+OpResult op_de_casteljau(const json& request);
+OpResult op_export(const json& request); // op_export.cpp
+OpResult op_split_knot(const json& request);
 OpResult op_tessellate(const json& request);  // op_tessellate.cpp
 OpResult op_insert_knot(const json& request); // op_refine.cpp
 OpResult op_elevate_degree(const json& request);
@@ -116,9 +126,10 @@ geom::Expected<std::int64_t> read_times(const json& request);
 geom::Status check_in_domain(double t, const geom::Interval& domain, const std::string& path,
                              std::string_view what = "parameter");
 
-// The domain of a curve, or of a surface along a direction.
-geom::Interval curve_domain(const geom::Curve& c);
-geom::Interval surface_domain(const geom::Surface& s, geom::Dir dir);
+// `samples` [n_u, n_v] of a surface grid: integers >= 2 (`schema`), within the grid and mesh
+// caps and the work budget of a degree (degree_u, degree_v) tessellation (`limit`), all at
+// "/samples" ("/samples/k"). Shared by tessellate and export.
+geom::Expected<std::array<int, 2>> read_grid_samples(const json& request, int degree_u, int degree_v);
 
 // positions / normals / triangles; a vertex that does not exist is null (op_tessellate.cpp).
 json mesh_to_json(const geom::Mesh& mesh);

@@ -1,12 +1,12 @@
 // The `basis` op: all n B-spline (or rational) basis functions and derivatives at a parameter.
 #include <cmath>
 
-#include "core/json/fields.hpp"
-#include "core/protocol/detail.hpp"
 #include "core/geom/basis.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/validate.hpp"
+#include "core/json/fields.hpp"
+#include "core/protocol/detail.hpp"
 
 namespace isoparm::protocol {
 

@@ -65,7 +65,8 @@ OpResult op_blossom(const json& request) {
         if (span) {
             Expected<int> k = read_span_index(*span, "/span");
             if (!k) return k.error();
-            if (geom::Status st = geom::check_blossom_span(c.knots, c.degree, c.count(), *k, "/span");
+            if (geom::Status st =
+                    geom::check_blossom_span(c.knots, c.degree, c.count(), *k, "/span");
                 !st)
                 return st.error();
             J = *k;

@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <vector>
 
-#include "core/json/shapes.hpp"
 #include "core/geom/construct.hpp"
+#include "core/geom/coons.hpp"
+#include "core/geom/gordon.hpp"
+#include "core/json/shapes.hpp"
 
 namespace isoparm::protocol {
 
@@ -15,28 +17,35 @@ using geom::Expected;
 
 namespace {
 
-// `curves`: an array of at least `min` (and at most `max`) curves, each parsed and validated,
-// errors under "/curves/k".
-Expected<std::vector<Curve>> read_curves(const json& request, std::string_view op, size_t min,
-                                         size_t max) {
-    const json* v = find_member(request, "curves");
-    if (!v) return missing_member("", "curves");
-    if (!v->is_array()) return schema_error("curves must be an array of curves", "/curves");
+// An array of at least `min` (and at most `max`) curves at member `name` ("curves",
+// "u_curves"), each parsed and validated, errors under "/<name>/k".
+Expected<std::vector<Curve>> read_curve_list(const json& request, std::string_view name,
+                                             std::string_view op, size_t min, size_t max) {
+    const json* v = find_member(request, name);
+    if (!v) return missing_member("", name);
+    const std::string path = member_path("", name);
+    if (!v->is_array())
+        return schema_error(std::string(name) + " must be an array of curves", path);
     if (v->size() < min || v->size() > max) {
         const std::string want =
             min == max ? "exactly " + std::to_string(min) : "at least " + std::to_string(min);
-        return schema_error(std::string(op) + " takes " + want + " curves, got " +
-                                std::to_string(v->size()),
-                            "/curves");
+        return schema_error(std::string(op) + " takes " + want + " " + std::string(name) +
+                                ", got " + std::to_string(v->size()),
+                            path);
     }
     std::vector<Curve> curves;
     curves.reserve(v->size());
     for (size_t k = 0; k < v->size(); ++k) {
         Expected<Curve> c = curve_from_json((*v)[k]);
-        if (!c) return c.error().under("/curves/" + std::to_string(k));
+        if (!c) return c.error().under(path + "/" + std::to_string(k));
         curves.push_back(std::move(c).value());
     }
     return curves;
+}
+
+Expected<std::vector<Curve>> read_curves(const json& request, std::string_view op, size_t min,
+                                         size_t max) {
+    return read_curve_list(request, "curves", op, min, max);
 }
 
 // A required curve field ("curve", "profile", "trajectory"), errors under its own path.
@@ -137,6 +146,33 @@ OpResult op_skin(const json& request) {
     auto s = geom::skin(*curves, static_cast<int>(*degree), *mode);
     if (!s) return s.error();
     return json{{"surface", surface_to_json(s->surface)}, {"params", s->params}};
+}
+
+OpResult op_coons(const json& request) {
+    if (geom::Status s = check_fields(request, "coons", {"curves"}); !s) return s.error();
+    auto curves = read_curves(request, "coons", 4, 4);
+    if (!curves) return curves.error();
+    auto s = geom::coons({(*curves)[0], (*curves)[1], (*curves)[2], (*curves)[3]});
+    if (!s) return s.error();
+    json answer = json::object();
+    answer["surface"] = surface_to_json(*s);
+    return answer;
+}
+
+OpResult op_gordon(const json& request) {
+    if (geom::Status s = check_fields(request, "gordon", {"u_curves", "v_curves"}); !s)
+        return s.error();
+    auto u_curves = read_curve_list(request, "u_curves", "gordon", 2, unbounded);
+    if (!u_curves) return u_curves.error();
+    auto v_curves = read_curve_list(request, "v_curves", "gordon", 2, unbounded);
+    if (!v_curves) return v_curves.error();
+    auto g = geom::gordon(*u_curves, *v_curves);
+    if (!g) return g.error();
+    json answer = json::object();
+    answer["surface"] = surface_to_json(g->surface);
+    answer["u_params"] = g->u_params;
+    answer["v_params"] = g->v_params;
+    return answer;
 }
 
 } // namespace isoparm::protocol

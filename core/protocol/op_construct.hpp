@@ -1,5 +1,5 @@
-// The cross-section construction ops of the geom protocol (make_compatible, ruled, revolve,
-// swing, sweep, skin): one handler each, registered in protocol.cpp's op table.
+// The construction ops of the geom protocol (make_compatible, ruled, revolve, swing, sweep,
+// skin, coons, gordon): one handler each, registered in protocol.cpp's op table.
 #pragma once
 
 #include "core/protocol/detail.hpp"
@@ -12,5 +12,7 @@ OpResult op_revolve(const json& request);
 OpResult op_swing(const json& request);
 OpResult op_sweep(const json& request);
 OpResult op_skin(const json& request);
+OpResult op_coons(const json& request);
+OpResult op_gordon(const json& request);
 
 } // namespace isoparm::protocol

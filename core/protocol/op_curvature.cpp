@@ -1,6 +1,7 @@
 // The `curvature` op (geom-protocol-2.md, Analysis): Gaussian, mean and principal curvatures
 // of a surface, or the Frenet frame, curvature and torsion of a curve, from exact derivatives.
 #include "core/geom/curvature.hpp"
+#include "core/geom/knots.hpp"
 #include "core/geom/validate.hpp"
 #include "core/geom/work_budget.hpp"
 #include "core/json/shapes.hpp"
@@ -59,10 +60,9 @@ OpResult op_curvature(const json& request) {
     const double count = static_cast<double>(params->size());
     // Second derivatives for a surface (with the normal), third for a curve's torsion.
     const geom::WorkEstimate cost =
-        subject->is_surface
-            ? geom::estimate_surface_evaluation(count, subject->surface.degree_u,
-                                                subject->surface.degree_v, 2, true)
-            : geom::estimate_curve_evaluation(count, subject->curve.degree, 3);
+        subject->is_surface ? geom::estimate_surface_evaluation(count, subject->surface.degree_u,
+                                                                subject->surface.degree_v, 2, true)
+                            : geom::estimate_curve_evaluation(count, subject->curve.degree, 3);
     if (geom::Status ok = geom::spend_work(cost, "/params",
                                            geom::with_thousands(count) + " curvature evaluations");
         !ok)
@@ -75,9 +75,10 @@ OpResult op_curvature(const json& request) {
         for (const auto& [u, v] : *uv)
             curvatures.push_back(surface_entry(geom::surface_curvature(subject->surface, u, v)));
     } else {
-        auto ts = read_curve_params(*params, curve_domain(subject->curve));
+        auto ts = read_curve_params(*params, geom::domain(subject->curve));
         if (!ts) return ts.error();
-        for (double t : *ts) curvatures.push_back(curve_entry(geom::curve_curvature(subject->curve, t)));
+        for (double t : *ts)
+            curvatures.push_back(curve_entry(geom::curve_curvature(subject->curve, t)));
     }
     json answer = json::object();
     answer["curvatures"] = std::move(curvatures);

@@ -1,7 +1,8 @@
 // The `deboor` op: every intermediate point of de Boor's algorithm, for curves and surfaces.
-#include "core/protocol/detail.hpp"
 #include "core/geom/deboor.hpp"
+#include "core/geom/knots.hpp"
 #include "core/geom/validate.hpp"
+#include "core/protocol/detail.hpp"
 
 namespace isoparm::protocol {
 
@@ -47,7 +48,7 @@ OpResult op_deboor(const json& request) {
             if (find_member(request, name))
                 return schema_error("a curve takes param, not u and v", member_path("", name));
         }
-        Expected<double> t = parameter(request, "param", curve_domain(subject->curve));
+        Expected<double> t = parameter(request, "param", geom::domain(subject->curve));
         if (!t) return t.error();
         return triangle_to_json(geom::deboor_curve(subject->curve, *t));
     }
@@ -65,9 +66,9 @@ OpResult op_deboor(const json& request) {
                                     std::to_string(geom::max_evaluation_points) + " are allowed",
                                 "/surface");
     }
-    Expected<double> u = parameter(request, "u", surface_domain(s, geom::Dir::u));
+    Expected<double> u = parameter(request, "u", geom::domain(s, geom::Dir::u));
     if (!u) return u.error();
-    Expected<double> v = parameter(request, "v", surface_domain(s, geom::Dir::v));
+    Expected<double> v = parameter(request, "v", geom::domain(s, geom::Dir::v));
     if (!v) return v.error();
     const geom::DeBoorSurfaceTrace trace = geom::deboor_surface(s, *u, *v);
     json u_stage = json::array();

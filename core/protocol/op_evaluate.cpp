@@ -2,12 +2,13 @@
 #include <cmath>
 #include <memory>
 
+#include "core/geom/evaluate.hpp"
+#include "core/geom/knots.hpp"
+#include "core/geom/validate.hpp"
+#include "core/geom/work_budget.hpp"
 #include "core/json/shapes.hpp"
 #include "core/protocol/detail.hpp"
 #include "core/protocol/stream.hpp"
-#include "core/geom/work_budget.hpp"
-#include "core/geom/evaluate.hpp"
-#include "core/geom/validate.hpp"
 
 namespace isoparm::protocol {
 
@@ -154,7 +155,7 @@ Expected<EvaluateRequest> read_evaluate(const json& request) {
         if (!uv) return uv.error();
         e.uv = std::move(uv).value();
     } else {
-        auto ts = read_curve_params(*params, curve_domain(subject->curve));
+        auto ts = read_curve_params(*params, geom::domain(subject->curve));
         if (!ts) return ts.error();
         e.ts = std::move(ts).value();
     }
@@ -290,6 +291,7 @@ void write_evaluated(const EvaluateRequest& e, const Evaluated& r, std::string& 
 } // namespace
 
 OpResult op_evaluate(const json& request) {
+    if (find_member(request, "triangle")) return op_triangle_evaluate(request);
     Expected<EvaluateRequest> e = read_evaluate(request);
     if (!e) return e.error();
     if (e->subject.is_surface)

@@ -1,11 +1,11 @@
 // The `polygonize` op: a triangle mesh of f(x, y, z) = 0 inside a box.
 #include <cmath>
 
-#include "core/protocol/detail.hpp"
-#include "core/geom/work_budget.hpp"
 #include "core/geom/implicit/expression.hpp"
 #include "core/geom/implicit/polygonize.hpp"
 #include "core/geom/validate.hpp"
+#include "core/geom/work_budget.hpp"
+#include "core/protocol/detail.hpp"
 
 namespace isoparm::protocol {
 
@@ -79,10 +79,10 @@ Expected<geom::Mesh> polygonize_mesh(const json& request) {
     const auto instructions = static_cast<double>(program->instruction_count());
     const geom::WorkEstimate cost = geom::estimate_polygonization(points, instructions);
     // Blame the long expression when it is long, else the fine grid.
-    if (geom::Status ok =
-            geom::spend_work(cost, instructions > 64 ? "/implicit" : "/cell",
-                       "an expression of " + std::to_string(program->instruction_count()) +
-                           " operations on a grid of " + geom::with_thousands(points) + " points");
+    if (geom::Status ok = geom::spend_work(
+            cost, instructions > 64 ? "/implicit" : "/cell",
+            "an expression of " + std::to_string(program->instruction_count()) +
+                " operations on a grid of " + geom::with_thousands(points) + " points");
         !ok)
         return ok.error();
 

@@ -55,7 +55,7 @@ OpResult op_insert_knot(const json& request) {
         // Too many for an int, and certainly above any degree: answer as the command would
         // (domain first, then multiplicity) but name the number given.
         const geom::Interval dom =
-            sub.is_surface ? surface_domain(sub.surface, parsed->dir) : curve_domain(sub.curve);
+            sub.is_surface ? geom::domain(sub.surface, parsed->dir) : geom::domain(sub.curve);
         if (geom::Status s = check_in_domain(*knot, dom, "/knot", "knot"); !s) return s.error();
         const int p = sub.is_surface ? sub.surface.degree(parsed->dir) : sub.curve.degree;
         return geom::make_error(
@@ -72,6 +72,7 @@ OpResult op_insert_knot(const json& request) {
 }
 
 OpResult op_elevate_degree(const json& request) {
+    if (find_member(request, "triangle")) return op_triangle_elevate(request);
     Expected<DirectedSubject> parsed = read_directed_subject(
         request, "elevate_degree", {"curve", "surface", "direction", "times"});
     if (!parsed) return parsed.error();
@@ -94,6 +95,7 @@ OpResult op_elevate_degree(const json& request) {
 }
 
 OpResult op_split(const json& request) {
+    if (find_member(request, "triangle")) return op_triangle_split(request);
     Expected<DirectedSubject> parsed =
         read_directed_subject(request, "split", {"curve", "surface", "direction", "param"});
     if (!parsed) return parsed.error();

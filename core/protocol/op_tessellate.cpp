@@ -1,11 +1,11 @@
 // The `tessellate` op: a surface over a uniform n_u x n_v parameter grid.
-#include "core/json/shapes.hpp"
-#include "core/json/fields.hpp"
-#include "core/protocol/detail.hpp"
-#include "core/geom/work_budget.hpp"
 #include "core/geom/implicit/polygonize.hpp" // the mesh caps
 #include "core/geom/tessellate.hpp"
 #include "core/geom/validate.hpp"
+#include "core/geom/work_budget.hpp"
+#include "core/json/fields.hpp"
+#include "core/json/shapes.hpp"
+#include "core/protocol/detail.hpp"
 
 namespace isoparm::protocol {
 
@@ -28,13 +28,7 @@ json mesh_to_json(const geom::Mesh& mesh) {
                 {"triangles", std::move(triangles)}};
 }
 
-Expected<geom::Mesh> tessellate_mesh(const json& request) {
-    if (find_member(request, "curve"))
-        return schema_error("tessellate takes a surface, not a curve", "/curve");
-    if (geom::Status s = check_fields(request, "tessellate", {"surface", "samples"}); !s)
-        return s.error();
-    Expected<Subject> subject = read_subject(request, false, true);
-    if (!subject) return subject.error();
+Expected<std::array<int, 2>> read_grid_samples(const json& request, int degree_u, int degree_v) {
     const json* samples = find_member(request, "samples");
     if (!samples) return missing_member("", "samples");
     if (!samples->is_array() || samples->size() != 2)
@@ -65,17 +59,29 @@ Expected<geom::Mesh> tessellate_mesh(const json& request) {
                                     std::to_string(geom::max_mesh_vertices) + " are allowed",
                                 "/samples");
     }
-    const geom::Surface& surface = subject->surface;
     const geom::WorkEstimate cost = geom::estimate_tessellation(
-        static_cast<double>(n[0]), static_cast<double>(n[1]), surface.degree_u, surface.degree_v);
+        static_cast<double>(n[0]), static_cast<double>(n[1]), degree_u, degree_v);
     if (geom::Status ok =
             geom::spend_work(cost, "/samples",
-                       "a " + std::to_string(n[0]) + " x " + std::to_string(n[1]) +
-                           " tessellation of a degree (" + std::to_string(surface.degree_u) + ", " +
-                           std::to_string(surface.degree_v) + ") surface");
+                             "a " + std::to_string(n[0]) + " x " + std::to_string(n[1]) +
+                                 " tessellation of a degree (" + std::to_string(degree_u) + ", " +
+                                 std::to_string(degree_v) + ") surface");
         !ok)
         return ok.error();
-    return geom::tessellate(subject->surface, static_cast<int>(n[0]), static_cast<int>(n[1]));
+    return std::array<int, 2>{static_cast<int>(n[0]), static_cast<int>(n[1])};
+}
+
+Expected<geom::Mesh> tessellate_mesh(const json& request) {
+    if (find_member(request, "curve"))
+        return schema_error("tessellate takes a surface, not a curve", "/curve");
+    if (geom::Status s = check_fields(request, "tessellate", {"surface", "samples"}); !s)
+        return s.error();
+    Expected<Subject> subject = read_subject(request, false, true);
+    if (!subject) return subject.error();
+    Expected<std::array<int, 2>> n =
+        read_grid_samples(request, subject->surface.degree_u, subject->surface.degree_v);
+    if (!n) return n.error();
+    return geom::tessellate(subject->surface, (*n)[0], (*n)[1]);
 }
 
 OpResult op_tessellate(const json& request) {

@@ -33,7 +33,7 @@ struct OpEntry {
 };
 
 // Adding an op is one line here and one file (see detail.hpp).
-constexpr std::array<OpEntry, 20> op_table = {{
+constexpr std::array<OpEntry, 27> op_table = {{
     {"evaluate", protocol::op_evaluate},
     {"basis", protocol::op_basis},
     {"deboor", protocol::op_deboor},
@@ -54,11 +54,18 @@ constexpr std::array<OpEntry, 20> op_table = {{
     {"swing", protocol::op_swing},
     {"sweep", protocol::op_sweep},
     {"skin", protocol::op_skin},
+    {"coons", protocol::op_coons},
+    {"gordon", protocol::op_gordon},
+    {"convert", protocol::op_convert},
+    {"close", protocol::op_close},
+    {"split_knot", protocol::op_split_knot},
+    {"de_casteljau", protocol::op_de_casteljau},
+    {"export", protocol::op_export},
 }};
 
 json error_response(const Error& e) {
     json err = json::object();
-    err["code"] = geom::error_code_name(e.code);
+    err["code"] = geom::name_of(e.code);
     err["message"] = e.message;
     if (e.has_path) err["path"] = e.path;
     return json{{"ok", false}, {"error", std::move(err)}};

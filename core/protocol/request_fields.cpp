@@ -39,14 +39,12 @@ Expected<std::int64_t> integer_option(const json& request, std::string_view name
 }
 
 Expected<geom::Parametrization> read_parametrization(const json& request) {
-    geom::Parametrization mode = geom::Parametrization::chord;
-    if (const json* m = find_member(request, "parametrization")) {
-        if (!m->is_string() || !geom::parse_parametrization(m->get<std::string>(), mode)) {
-            return schema_error("parametrization is \"chord\", \"centripetal\" or \"uniform\"",
-                                "/parametrization");
-        }
-    }
-    return mode;
+    const json* m = find_member(request, "parametrization");
+    if (!m) return geom::Parametrization::chord;
+    if (const std::optional<geom::Parametrization> named = enum_value<geom::Parametrization>(*m))
+        return *named;
+    return schema_error("parametrization is \"chord\", \"centripetal\" or \"uniform\"",
+                        "/parametrization");
 }
 
 Expected<int> read_int(const json& v, const std::string& path, std::string_view what) {
@@ -88,8 +86,7 @@ Expected<geom::Dir> read_direction(const json& request, const Subject& subject) 
         return geom::Dir::u;
     }
     if (!d) return missing_member("", "direction");
-    if (d->is_string() && d->get_ref<const std::string&>() == "u") return geom::Dir::u;
-    if (d->is_string() && d->get_ref<const std::string&>() == "v") return geom::Dir::v;
+    if (const std::optional<geom::Dir> dir = enum_value<geom::Dir>(*d)) return *dir;
     return schema_error("direction is \"u\" or \"v\"", "/direction");
 }
 
@@ -116,14 +113,6 @@ geom::Status check_in_domain(double t, const geom::Interval& domain, const std::
                                 " outside the domain [" + geom::format_number(domain.lo) + ", " +
                                 geom::format_number(domain.hi) + "]",
                             path);
-}
-
-geom::Interval curve_domain(const geom::Curve& c) {
-    return geom::domain(c.knots, c.degree, c.count());
-}
-
-geom::Interval surface_domain(const geom::Surface& s, geom::Dir dir) {
-    return geom::domain(s.knots(dir), s.degree(dir), s.count(dir));
 }
 
 json optional_point(const std::optional<glm::dvec3>& p) {
@@ -153,8 +142,7 @@ Expected<std::vector<double>> read_curve_params(const json& params, const geom::
 }
 
 Expected<std::vector<std::array<double, 2>>> read_surface_params(const json& params, const geom::Surface& s) {
-    const geom::Interval dom[2] = {surface_domain(s, geom::Dir::u),
-                                   surface_domain(s, geom::Dir::v)};
+    const geom::Interval dom[2] = {geom::domain(s, geom::Dir::u), geom::domain(s, geom::Dir::v)};
     std::vector<std::array<double, 2>> uv;
     uv.reserve(params.size());
     for (std::size_t i = 0; i < params.size(); ++i) {

@@ -75,7 +75,8 @@ StreamedOp streamed_op_of(const nlohmann::json& request) {
     const std::string& name = op->get_ref<const std::string&>();
     if (name == "tessellate") return streamed_mesh<protocol::tessellate_mesh>;
     if (name == "polygonize") return streamed_mesh<protocol::polygonize_mesh>;
-    if (name == "evaluate") return protocol::streamed_evaluate;
+    // A triangle's evaluation is answered as a tree (op_triangle.cpp), not streamed.
+    if (name == "evaluate" && !request.contains("triangle")) return protocol::streamed_evaluate;
     return nullptr;
 }
 

@@ -7,10 +7,10 @@
 #include <limits>
 #include <string_view>
 
-#include "core/scene/atomic_file.hpp"
 #include "core/json/input_file.hpp"
-#include "core/json/reader.hpp"
 #include "core/json/out_of_memory.hpp"
+#include "core/json/reader.hpp"
+#include "core/scene/atomic_file.hpp"
 #include "core/scene/scene_io.hpp"
 
 namespace isoparm::scene {

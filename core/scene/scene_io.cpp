@@ -27,43 +27,6 @@ using nlohmann::json;
 
 namespace {
 
-// ---------------------------------------------------------------------------------------
-// Names of enumerations as the file spells them.
-
-const char* plane_name(CurvePlane p) {
-    switch (p) {
-    case CurvePlane::xy:
-        return "xy";
-    case CurvePlane::xz:
-        return "xz";
-    case CurvePlane::yz:
-        return "yz";
-    case CurvePlane::free3d:
-        return "free3d";
-    }
-    return "xy";
-}
-
-// The curve designer's knot modes as the file spells them ("knot_mode" of a curve object).
-constexpr std::array<std::pair<CurveKnotMode, const char*>, 4> knot_mode_names = {{
-    {CurveKnotMode::clamped_uniform, "clamped_uniform"},
-    {CurveKnotMode::chord, "chord"},
-    {CurveKnotMode::centripetal, "centripetal"},
-    {CurveKnotMode::custom, "custom"},
-}};
-
-const char* style_name(DisplayStyle s) {
-    switch (s) {
-    case DisplayStyle::shaded:
-        return "shaded";
-    case DisplayStyle::wireframe:
-        return "wireframe";
-    case DisplayStyle::both:
-        return "both";
-    }
-    return "both";
-}
-
 // The colours in file order, with their names (shared by writing and reading).
 template <class C> auto color_fields(C& colors) {
     using R = std::conditional_t<std::is_const_v<C>, const Rgba*, Rgba*>;
@@ -195,10 +158,10 @@ Expected<Object> object_from_json(const json& j, const std::string& at) {
     if (kind_it == j.end()) return missing_member(at, "kind");
     auto kind = read_string(*kind_it, at + "/kind", "kind");
     if (!kind) return kind.error();
-    const bool surface = *kind == "surface", curve = *kind == "curve",
-               implicit = *kind == "implicit";
-    if (!surface && !curve && !implicit)
+    const std::optional<ObjectKind> named = geom::parse_name<ObjectKind>(*kind);
+    if (!named)
         return schema_error("kind must be surface, curve or implicit, got '" + *kind + "'", at + "/kind");
+    const bool surface = *named == ObjectKind::surface, curve = *named == ObjectKind::curve;
     if (auto st = surface ? check_members(j, at, "a surface object",
                                           {"id", "name", "kind", "visible", "patch_group", "surface"})
                   : curve ? check_members(j, at, "a curve object",
@@ -250,29 +213,22 @@ Expected<Object> object_from_json(const json& j, const std::string& at) {
         if (const auto plane = j.find("plane"); plane != j.end()) {
             auto p = read_string(*plane, at + "/plane", "plane");
             if (!p) return p.error();
-            if (*p == "xy")
-                c.plane = CurvePlane::xy;
-            else if (*p == "xz")
-                c.plane = CurvePlane::xz;
-            else if (*p == "yz")
-                c.plane = CurvePlane::yz;
-            else if (*p == "free3d")
-                c.plane = CurvePlane::free3d;
-            else
+            const std::optional<CurvePlane> plane_named = geom::parse_name<CurvePlane>(*p);
+            if (!plane_named)
                 return schema_error("plane must be xy, xz, yz or free3d, got '" + *p + "'",
                               at + "/plane");
+            c.plane = *plane_named;
         }
         if (const auto mode = j.find("knot_mode"); mode != j.end()) {
             auto m = read_string(*mode, at + "/knot_mode", "knot_mode");
             if (!m) return m.error();
-            const auto* hit = std::find_if(knot_mode_names.begin(), knot_mode_names.end(),
-                                           [&](const auto& e) { return *m == e.second; });
-            if (hit == knot_mode_names.end())
+            const std::optional<CurveKnotMode> mode_named = geom::parse_name<CurveKnotMode>(*m);
+            if (!mode_named)
                 return schema_error("knot_mode must be clamped_uniform, chord, centripetal or "
                               "custom, got '" +
                                   *m + "'",
                               at + "/knot_mode");
-            c.knot_mode = hit->first;
+            c.knot_mode = *mode_named;
         }
         auto g = curve_from_json(*geometry);
         if (!g) return g.error().under(gat);
@@ -314,14 +270,10 @@ std::optional<Error> read_display(const json& j, DisplaySettings& d) {
         if (item.key() == "style") {
             auto s = read_string(item.value(), at, "style");
             if (!s) return s.error();
-            if (*s == "shaded")
-                d.style = DisplayStyle::shaded;
-            else if (*s == "wireframe")
-                d.style = DisplayStyle::wireframe;
-            else if (*s == "both")
-                d.style = DisplayStyle::both;
-            else
+            const std::optional<DisplayStyle> style = geom::parse_name<DisplayStyle>(*s);
+            if (!style)
                 return schema_error("style must be shaded, wireframe or both, got '" + *s + "'", at);
+            d.style = *style;
             continue;
         }
         if (item.key() == "density") {
@@ -358,9 +310,9 @@ std::optional<Error> read_selection(const json& j, const Document& doc, Selectio
     sel.object = o->id;
     const auto point = j.find("point");
     if (point == j.end()) return std::nullopt;
-    if (std::holds_alternative<ImplicitObject>(o->shape))
+    if (o->implicit())
         return schema_error("an implicit surface has no control points to select", "/selection/point");
-    const bool surface = std::holds_alternative<SurfaceObject>(o->shape);
+    const geom::Surface* surface = o->surface();
     const std::size_t arity = surface ? 2 : 1;
     if (!point->is_array() || point->size() != arity)
         return schema_error(surface ? "a surface's selected point is [i, j]"
@@ -368,10 +320,10 @@ std::optional<Error> read_selection(const json& j, const Document& doc, Selectio
                       "/selection/point");
     int counts[2];
     if (surface) {
-        counts[0] = std::get<SurfaceObject>(o->shape).surface.n_u;
-        counts[1] = std::get<SurfaceObject>(o->shape).surface.n_v;
+        counts[0] = surface->n_u;
+        counts[1] = surface->n_v;
     } else {
-        counts[0] = std::get<CurveObject>(o->shape).curve.count();
+        counts[0] = o->curve()->count();
         counts[1] = 0;
     }
     int idx[2] = {-1, -1};
@@ -396,25 +348,21 @@ json scene_to_json(const Document& doc) {
         j["name"] = o.name;
         j["visible"] = o.visible;
         if (o.patch_group != 0) j["patch_group"] = o.patch_group;
-        if (auto* s = std::get_if<SurfaceObject>(&o.shape)) {
-            j["kind"] = "surface";
-            j["surface"] = surface_to_json(s->surface);
-        } else if (auto* c = std::get_if<CurveObject>(&o.shape)) {
-            j["kind"] = "curve";
-            j["plane"] = plane_name(c->plane);
+        j["kind"] = geom::name_of(o.kind());
+        if (const geom::Surface* s = o.surface()) {
+            j["surface"] = surface_to_json(*s);
+        } else if (const CurveObject* c = o.curve_object()) {
+            j["plane"] = geom::name_of(c->plane);
             // Custom (the default) is omitted, so older scenes save back unchanged.
-            if (c->knot_mode != CurveKnotMode::custom)
-                for (const auto& [mode, name] : knot_mode_names)
-                    if (mode == c->knot_mode) j["knot_mode"] = name;
+            if (c->knot_mode != CurveKnotMode::custom) j["knot_mode"] = geom::name_of(c->knot_mode);
             j["curve"] = curve_to_json(c->curve);
         } else {
-            const auto& f = std::get<ImplicitObject>(o.shape);
+            const ImplicitObject& f = *o.implicit();
             json params = json::array();
             const std::size_t count = std::min(f.parameter_names.size(), f.parameter_values.size());
             for (std::size_t k = 0; k < count; ++k)
                 params.push_back(
                     {{"name", f.parameter_names[k]}, {"value", f.parameter_values[k]}});
-            j["kind"] = "implicit";
             j["implicit"] = {{"expression", f.expression},
                              {"parameters", std::move(params)},
                              {"bounds", json::array({json::array({f.lo.x, f.lo.y, f.lo.z}),
@@ -428,17 +376,17 @@ json scene_to_json(const Document& doc) {
     for (const auto& [name, c] : color_fields(doc.colors)) colors[name] = color_to_json(*c);
 
     json display = json::object();
-    display["style"] = style_name(doc.display.style);
-    for (const auto& [name, flag] : display_flags(doc.display)) display[name] = *flag;
-    display["density"] = doc.display.density;
+    display["style"] = geom::name_of(doc.view.display.style);
+    for (const auto& [name, flag] : display_flags(doc.view.display)) display[name] = *flag;
+    display["density"] = doc.view.display.density;
 
     json selection = nullptr;
-    if (doc.find(doc.selection.object)) {
-        selection = {{"object", doc.selection.object}};
-        if (doc.selection.has_point())
-            selection["point"] = doc.selection.j >= 0
-                                     ? json::array({doc.selection.i, doc.selection.j})
-                                     : json::array({doc.selection.i});
+    if (doc.find(doc.view.selection.object)) {
+        selection = {{"object", doc.view.selection.object}};
+        if (doc.view.selection.has_point())
+            selection["point"] = doc.view.selection.j >= 0
+                                     ? json::array({doc.view.selection.i, doc.view.selection.j})
+                                     : json::array({doc.view.selection.i});
     }
 
     json scene = json::object();
@@ -448,8 +396,8 @@ json scene_to_json(const Document& doc) {
     scene["colors"] = std::move(colors);
     scene["display"] = std::move(display);
     scene["selection"] = std::move(selection);
-    scene["indicator"] = json::array({doc.indicator.x, doc.indicator.y});
-    if (doc.continuity != Continuity::off) scene["continuity"] = continuity_name(doc.continuity);
+    scene["indicator"] = json::array({doc.view.indicator.x, doc.view.indicator.y});
+    if (doc.continuity != Continuity::off) scene["continuity"] = geom::name_of(doc.continuity);
     return scene;
 }
 
@@ -511,17 +459,16 @@ Expected<Document> scene_from_json(const json& j) {
     if (const auto c = j.find("colors"); c != j.end())
         if (auto e = read_colors(*c, doc.colors)) return *e;
     if (const auto d = j.find("display"); d != j.end())
-        if (auto e = read_display(*d, doc.display)) return *e;
+        if (auto e = read_display(*d, doc.view.display)) return *e;
     if (const auto s = j.find("selection"); s != j.end())
-        if (auto e = read_selection(*s, doc, doc.selection)) return *e;
+        if (auto e = read_selection(*s, doc, doc.view.selection)) return *e;
     if (const auto c = j.find("continuity"); c != j.end()) {
         auto name = read_string(*c, "/continuity", "continuity");
         if (!name) return name.error();
-        bool known = false;
-        for (Continuity k : {Continuity::off, Continuity::c0, Continuity::c1})
-            if (*name == continuity_name(k)) doc.continuity = k, known = true;
-        if (!known)
+        const std::optional<Continuity> continuity = geom::parse_name<Continuity>(*name);
+        if (!continuity)
             return schema_error("continuity must be off, C0 or C1, got '" + *name + "'", "/continuity");
+        doc.continuity = *continuity;
     }
     if (auto e = check_patch_groups(doc)) return *e;
     if (const auto ind = j.find("indicator"); ind != j.end()) {
@@ -535,7 +482,7 @@ Expected<Document> scene_from_json(const json& j) {
                 return schema_error("indicator coordinates are in [0, 1] (over the domain), got " +
                                   geom::format_number(*x),
                               at);
-            doc.indicator[a] = *x;
+            doc.view.indicator[a] = *x;
         }
     }
     return doc;

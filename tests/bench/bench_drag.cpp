@@ -38,7 +38,7 @@ void BM_DragStep32x32(benchmark::State& state) {
     doc::History history;
     const std::uint64_t id = d.objects.front().id;
     const auto [su, sv] = ui::display_samples(
-        std::get<doc::SurfaceObject>(d.objects.front().shape).surface, d.display.density);
+        std::get<doc::SurfaceObject>(d.objects.front().shape).surface, d.view.display.density);
     double t = 0;
     for (auto _ : state) {
         t += 0.01;
@@ -56,7 +56,7 @@ BENCHMARK(BM_DragStep32x32)->Unit(benchmark::kMillisecond);
 void BM_Retessellate32x32(benchmark::State& state) {
     const doc::Document d = drag_scene();
     const geom::Surface& s = std::get<doc::SurfaceObject>(d.objects.front().shape).surface;
-    const auto [su, sv] = ui::display_samples(s, d.display.density);
+    const auto [su, sv] = ui::display_samples(s, d.view.display.density);
     for (auto _ : state) {
         geom::Mesh m = geom::tessellate(s, su, sv);
         benchmark::DoNotOptimize(m.positions.data());
@@ -77,7 +77,7 @@ void BM_DragStepIncrementalByNet(benchmark::State& state) {
     doc::History history;
     const std::uint64_t id = d.objects.front().id;
     const geom::Surface& s = std::get<doc::SurfaceObject>(d.objects.front().shape).surface;
-    const auto [su, sv] = ui::display_samples(s, d.display.density);
+    const auto [su, sv] = ui::display_samples(s, d.view.display.density);
     ui::IncrementalMesh mesh;
     mesh.update(s, su, sv);
     double t = 0;

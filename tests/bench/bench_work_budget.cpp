@@ -9,8 +9,8 @@
 #include <streambuf>
 #include <string>
 
-#include "core/protocol/protocol.hpp"
 #include "core/geom/work_budget.hpp"
+#include "core/protocol/protocol.hpp"
 #include "tests/support/protocol_shapes.hpp"
 
 namespace {

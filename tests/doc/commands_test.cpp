@@ -277,12 +277,12 @@ TEST(ObjectCommands, AddRefusals) {
 
 TEST(ObjectCommands, RemoveRestoresPositionAndSelection) {
     Document doc = sample_document();
-    doc.selection = Selection{grid_id, 1, 2};
+    doc.view.selection = Selection{grid_id, 1, 2};
     History h;
     const Document before = doc;
     ASSERT_TRUE(h.execute(doc, remove_object(grid_id)).ok());
     EXPECT_EQ(doc.find(grid_id), nullptr);
-    EXPECT_EQ(doc.selection, Selection{});
+    EXPECT_EQ(doc.view.selection, Selection{});
     EXPECT_EQ(h.undo_label(), "Delete grid");
     h.undo(doc);
     EXPECT_TRUE(same_document(doc, before));
@@ -311,12 +311,12 @@ TEST(ObjectCommands, HideAndShow) {
 
 TEST(ObjectCommands, ReplaceShape) {
     Document doc = sample_document();
-    doc.selection = Selection{hill_id, 4, 4};
+    doc.view.selection = Selection{hill_id, 4, 4};
     geom::Surface s = make_planar_grid(3, 3, 2, 2, geom::SplineType::bspline);
     const Document after =
         expect_undo_redo_exact(doc, replace_shape(hill_id, SurfaceObject{s}, "Make B-spline"));
     // P44 no longer exists: the object stays selected without a point.
-    EXPECT_EQ(after.selection, (Selection{hill_id, -1, -1}));
+    EXPECT_EQ(after.view.selection, (Selection{hill_id, -1, -1}));
     History h;
     ASSERT_TRUE(h.execute(doc, replace_shape(hill_id, SurfaceObject{s}, "Make B-spline")).ok());
     EXPECT_EQ(h.undo_label(), "Make B-spline");

@@ -77,7 +77,7 @@ TEST(NewCurveObject, Refusals) {
 
 TEST(InsertCurvePoint, RecomputesKnotsSelectsItAndUndoesExactly) {
     Document doc = designer_document();
-    doc.selection = {designed_id, 4, -1};
+    doc.view.selection = {designed_id, 4, -1};
     const Document after =
         expect_undo_redo_exact(doc, insert_curve_point(designed_id, 2, {1.5, 3, 0}));
     const geom::Curve& c = curve_of(after, designed_id);
@@ -85,7 +85,7 @@ TEST(InsertCurvePoint, RecomputesKnotsSelectsItAndUndoesExactly) {
     EXPECT_EQ(c.points[2], glm::dvec3(1.5, 3, 0));
     EXPECT_EQ(c.weights[2], 1.0);
     EXPECT_EQ(c.knots, geom::clamped_uniform_knots(6, 3));
-    EXPECT_EQ(after.selection, (Selection{designed_id, 2, -1}));
+    EXPECT_EQ(after.view.selection, (Selection{designed_id, 2, -1}));
     // Appending: index = count.
     const Document appended =
         expect_undo_redo_exact(doc, insert_curve_point(designed_id, 6, {9, 9, 0}));
@@ -139,17 +139,17 @@ TEST(InsertCurvePoint, Refusals) {
 
 TEST(DeleteCurvePoint, RecomputesKnotsAndKeepsTheSelectionNear) {
     Document doc = designer_document(CurveKnotMode::centripetal);
-    doc.selection = {designed_id, 3, -1};
+    doc.view.selection = {designed_id, 3, -1};
     const Document after = expect_undo_redo_exact(doc, delete_curve_point(designed_id, 1));
     const geom::Curve& c = curve_of(after, designed_id);
     ASSERT_EQ(c.count(), 4);
     EXPECT_EQ(c.points[1], glm::dvec3(2, -1, 0));
     EXPECT_EQ(c.knots, mode_knots(c, geom::KnotMode::centripetal));
-    EXPECT_EQ(after.selection.i, 2); // P3 is now P2
+    EXPECT_EQ(after.view.selection.i, 2); // P3 is now P2
     Document fresh = designer_document(CurveKnotMode::centripetal);
-    fresh.selection = {designed_id, 4, -1};
+    fresh.view.selection = {designed_id, 4, -1};
     const Document last = expect_undo_redo_exact(fresh, delete_curve_point(designed_id, 4));
-    EXPECT_EQ(last.selection.i, 3);
+    EXPECT_EQ(last.view.selection.i, 3);
 }
 
 TEST(DeleteCurvePoint, Refusals) {

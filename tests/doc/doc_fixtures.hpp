@@ -104,7 +104,7 @@ inline void expect_refused(Document& doc, std::unique_ptr<Command> cmd, geom::Er
     const Document before = doc;
     const auto st = history.execute(doc, std::move(cmd));
     ASSERT_FALSE(st.ok());
-    EXPECT_EQ(geom::error_code_name(st.error().code), std::string(geom::error_code_name(code)))
+    EXPECT_EQ(geom::name_of(st.error().code), std::string(geom::name_of(code)))
         << st.error().message;
     EXPECT_EQ(st.error().path, path) << st.error().message;
     EXPECT_FALSE(st.error().message.empty());

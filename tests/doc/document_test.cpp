@@ -47,9 +47,9 @@ TEST(Document, DefaultSceneIsAShapedBicubicNurbs) {
     const auto corner = geom::surface_point(s, 0.0, 0.0);
     ASSERT_TRUE(mid && corner);
     EXPECT_GT(mid->z, corner->z + 0.5);
-    EXPECT_EQ(doc.selection.object, doc.objects[0].id);
-    EXPECT_TRUE(doc.selection.has_point());
-    EXPECT_EQ(doc.indicator, glm::dvec2(0.5, 0.5));
+    EXPECT_EQ(doc.view.selection.object, doc.objects[0].id);
+    EXPECT_TRUE(doc.view.selection.has_point());
+    EXPECT_EQ(doc.view.indicator, glm::dvec2(0.5, 0.5));
     EXPECT_GT(doc.next_id, doc.objects[0].id);
     EXPECT_TRUE(same_document(doc, default_document())); // deterministic
 }
@@ -94,9 +94,9 @@ TEST(Document, SameGeometryComparesEveryField) {
     EXPECT_TRUE(differs([](Document& d) { d.colors.background.r = -0.0f; }));
     // View state is not geometry, but same_document sees it.
     Document d = sample_document();
-    d.selection = Selection{};
-    d.indicator.x = 0.25;
-    d.display.knot_curves = true;
+    d.view.selection = Selection{};
+    d.view.indicator.x = 0.25;
+    d.view.display.knot_curves = true;
     EXPECT_TRUE(same_geometry(base, d));
     EXPECT_FALSE(same_document(base, d));
 }

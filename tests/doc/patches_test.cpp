@@ -47,7 +47,7 @@ TEST(Patches, SplitPiecesShareTheOriginalDomain) {
     EXPECT_EQ(p.doc.find(p.left_low)->patch_group, group);
     EXPECT_EQ(p.doc.find(p.left_high)->patch_group, group);
     EXPECT_EQ(patch_members(p.doc, group).size(), 3u);
-    const ParamRect r = tracing_domain(p.doc, *p.doc.find(p.left_low));
+    const geom::ParamRect r = tracing_domain(p.doc, *p.doc.find(p.left_low));
     EXPECT_EQ(r.u.lo, 0.0);
     EXPECT_EQ(r.u.hi, 1.0);
     EXPECT_EQ(r.v.lo, 0.0);
@@ -67,18 +67,18 @@ TEST(Patches, ActivationByParameter) {
     EXPECT_EQ(patch_at(p.doc, group, {1.5, 0.3}), 0u);
 
     // The indicator is normalized over the group's domain.
-    p.doc.indicator = {0.9, 0.6};
+    p.doc.view.indicator = {0.9, 0.6};
     EXPECT_EQ(patch_for_indicator(p.doc, p.left_low), p.right);
-    p.doc.indicator = {0.1, 0.6};
+    p.doc.view.indicator = {0.1, 0.6};
     EXPECT_EQ(patch_for_indicator(p.doc, p.right), p.left_high);
-    p.doc.indicator = {0.1, 0.4};
+    p.doc.view.indicator = {0.1, 0.4};
     EXPECT_EQ(patch_for_indicator(p.doc, p.left_low), p.left_low);
 
     // Following the indicator changes the selection (its point is dropped), once.
-    p.doc.selection = {p.left_low, 1, 1};
-    p.doc.indicator = {0.95, 0.95};
+    p.doc.view.selection = {p.left_low, 1, 1};
+    p.doc.view.indicator = {0.95, 0.95};
     EXPECT_TRUE(follow_indicator(p.doc, p.left_low));
-    EXPECT_EQ(p.doc.selection, (Selection{p.right, -1, -1}));
+    EXPECT_EQ(p.doc.view.selection, (Selection{p.right, -1, -1}));
     EXPECT_FALSE(follow_indicator(p.doc, p.right));
 }
 
@@ -235,7 +235,7 @@ TEST(Patches, SplitWithContinuityRefinesTheNeighbourSoBordersConform) {
     History h;
     const auto [left, right] = split(doc, h, doc.objects[0].id, Dir::u, 0.75);
     const Document before = doc;
-    doc.selection = {right, 1, 2};
+    doc.view.selection = {right, 1, 2};
     const geom::Surface right_before = std::get<SurfaceObject>(doc.find(right)->shape).surface;
     auto second = split_object(left, Dir::v, 0.5);
     const Command* r2 = second.get();
@@ -260,7 +260,7 @@ TEST(Patches, SplitWithContinuityRefinesTheNeighbourSoBordersConform) {
     h.undo(doc);
     h.undo(doc);
     EXPECT_TRUE(same_geometry(doc, before));
-    EXPECT_EQ(doc.selection, (Selection{right, 1, 2}));
+    EXPECT_EQ(doc.view.selection, (Selection{right, 1, 2}));
     (void)high;
 }
 
@@ -291,20 +291,20 @@ TEST(Patches, RedoReplaysTheContinuityTheEditWasMadeWith) {
 TEST(Patches, IndicatorAndCurrentPatchStayInStep) {
     PaperSplit p;
     // The indicator moved into the right part: that patch becomes current.
-    p.doc.selection = {p.left_low, 2, 2};
-    const glm::dvec2 before = p.doc.indicator;
-    p.doc.indicator = {0.9, 0.3};
+    p.doc.view.selection = {p.left_low, 2, 2};
+    const glm::dvec2 before = p.doc.view.indicator;
+    p.doc.view.indicator = {0.9, 0.3};
     EXPECT_EQ(sync_patch_and_indicator(p.doc, p.left_low, before, p.left_low), p.right);
-    EXPECT_EQ(p.doc.selection, (Selection{p.right, -1, -1}));
+    EXPECT_EQ(p.doc.view.selection, (Selection{p.right, -1, -1}));
     // A patch picked otherwise (the 3D view) takes the indicator along, to its nearest point.
-    const glm::dvec2 still = p.doc.indicator;
-    p.doc.selection = {p.left_high, -1, -1};
+    const glm::dvec2 still = p.doc.view.indicator;
+    p.doc.view.selection = {p.left_high, -1, -1};
     EXPECT_EQ(sync_patch_and_indicator(p.doc, p.left_high, still, p.right), p.left_high);
-    EXPECT_DOUBLE_EQ(p.doc.indicator.x, 0.75); // the right edge of the left part
-    EXPECT_DOUBLE_EQ(p.doc.indicator.y, 0.5);  // the bottom edge of the upper part
+    EXPECT_DOUBLE_EQ(p.doc.view.indicator.x, 0.75); // the right edge of the left part
+    EXPECT_DOUBLE_EQ(p.doc.view.indicator.y, 0.5);  // the bottom edge of the upper part
     // Nothing moved and nothing else picked: nothing changes.
     const Document same = p.doc;
-    EXPECT_EQ(sync_patch_and_indicator(p.doc, p.left_high, p.doc.indicator, p.left_high),
+    EXPECT_EQ(sync_patch_and_indicator(p.doc, p.left_high, p.doc.view.indicator, p.left_high),
               p.left_high);
     EXPECT_TRUE(same_document(p.doc, same));
 }
@@ -374,7 +374,7 @@ TEST(Patches, Fig6LiveSequenceKeepsEveryBorderC1) {
     History h;
     const std::uint64_t group = doc.objects[0].id;
     const auto [left, right] = split(doc, h, doc.objects[0].id, Dir::u, 0.75);
-    doc.selection = {left, -1, -1}; // the left piece picked
+    doc.view.selection = {left, -1, -1}; // the left piece picked
     const Document after_first = doc;
     const std::size_t steps = h.size();
     auto second = split_object(left, Dir::v, 0.5);

@@ -116,33 +116,33 @@ TEST(InsertKnotCommand, SelectionFollowsItsControlPoint) {
     };
     for (Case c : {Case{0, 0}, Case{1, 1}, Case{4, 5}, Case{2, 2}}) {
         Document doc = sample_document();
-        doc.selection = Selection{hill_id, c.i, 3};
+        doc.view.selection = Selection{hill_id, c.i, 3};
         const Document before = doc;
         History h;
         ASSERT_TRUE(h.execute(doc, insert_knot(hill_id, Dir::u, 0.75)).ok());
-        EXPECT_EQ(doc.selection, (Selection{hill_id, c.expected, 3})) << "i = " << c.i;
+        EXPECT_EQ(doc.view.selection, (Selection{hill_id, c.expected, 3})) << "i = " << c.i;
         h.undo(doc);
-        EXPECT_EQ(doc.selection, before.selection);
+        EXPECT_EQ(doc.view.selection, before.view.selection);
     }
     // Along v, only j moves; selection on another object is untouched.
     Document doc = sample_document();
-    doc.selection = Selection{hill_id, 3, 4};
+    doc.view.selection = Selection{hill_id, 3, 4};
     History h;
     ASSERT_TRUE(h.execute(doc, insert_knot(hill_id, Dir::v, 0.25)).ok());
-    EXPECT_EQ(doc.selection, (Selection{hill_id, 3, 5}));
-    doc.selection = Selection{grid_id, 1, 1};
+    EXPECT_EQ(doc.view.selection, (Selection{hill_id, 3, 5}));
+    doc.view.selection = Selection{grid_id, 1, 1};
     ASSERT_TRUE(h.execute(doc, insert_knot(hill_id, Dir::v, 0.3)).ok());
-    EXPECT_EQ(doc.selection, (Selection{grid_id, 1, 1}));
+    EXPECT_EQ(doc.view.selection, (Selection{grid_id, 1, 1}));
 }
 
 TEST(InsertKnotCommand, UndoMapsALaterSelectionBack) {
     Document doc = sample_document();
-    doc.selection = Selection{hill_id, 1, 1};
+    doc.view.selection = Selection{hill_id, 1, 1};
     History h;
     ASSERT_TRUE(h.execute(doc, insert_knot(hill_id, Dir::u, 0.75)).ok());
-    doc.selection = Selection{hill_id, 5, 2}; // the user picks the last row after inserting
+    doc.view.selection = Selection{hill_id, 5, 2}; // the user picks the last row after inserting
     h.undo(doc);
-    EXPECT_EQ(doc.selection, (Selection{hill_id, 4, 2}));
+    EXPECT_EQ(doc.view.selection, (Selection{hill_id, 4, 2}));
 }
 
 TEST(ElevateDegreeCommand, UndoRedoExactAndShapeUnchanged) {
@@ -192,19 +192,19 @@ TEST(ElevateDegreeCommand, Refusals) {
 TEST(ElevateDegreeCommand, SelectionKeepsEndsAndNearestPoint) {
     for (int i : {0, 4}) {
         Document doc = sample_document();
-        doc.selection = Selection{hill_id, i, 2};
+        doc.view.selection = Selection{hill_id, i, 2};
         History h;
         ASSERT_TRUE(h.execute(doc, elevate_degree(hill_id, Dir::u)).ok());
-        EXPECT_EQ(doc.selection, (Selection{hill_id, i == 0 ? 0 : 6, 2}));
+        EXPECT_EQ(doc.view.selection, (Selection{hill_id, i == 0 ? 0 : 6, 2}));
         h.undo(doc);
-        EXPECT_EQ(doc.selection, (Selection{hill_id, i, 2}));
+        EXPECT_EQ(doc.view.selection, (Selection{hill_id, i, 2}));
     }
     // The middle point (Greville abscissa 0.5) goes to the new point at 0.5 (index 3 of 7).
     Document doc = sample_document();
-    doc.selection = Selection{hill_id, 2, 2};
+    doc.view.selection = Selection{hill_id, 2, 2};
     History h;
     ASSERT_TRUE(h.execute(doc, elevate_degree(hill_id, Dir::u)).ok());
-    EXPECT_EQ(doc.selection, (Selection{hill_id, 3, 2}));
+    EXPECT_EQ(doc.view.selection, (Selection{hill_id, 3, 2}));
 }
 
 TEST(SplitCommand, PiecesReplaceTheObjectInPlace) {
@@ -296,35 +296,36 @@ TEST(SplitCommand, SelectionGoesToThePieceHoldingThePoint) {
     // first piece with their indices; P3 and P4 go to the second piece.
     for (Case c : {Case{0, 0, 0}, Case{1, 0, 1}, Case{2, 0, 2}, Case{4, 1, 3}}) {
         Document doc = sample_document();
-        doc.selection = Selection{hill_id, c.i, 1};
+        doc.view.selection = Selection{hill_id, c.i, 1};
         History h;
         auto cmd = split_object(hill_id, Dir::u, 0.75);
         const Command* raw = cmd.get();
         ASSERT_TRUE(h.execute(doc, std::move(cmd)).ok());
         const auto ids = split_piece_ids(*raw);
-        EXPECT_EQ(doc.selection, (Selection{c.piece == 0 ? ids.first : ids.second, c.expected, 1}))
+        EXPECT_EQ(doc.view.selection,
+                  (Selection{c.piece == 0 ? ids.first : ids.second, c.expected, 1}))
             << "i = " << c.i;
         // The remapped point is the same point when the piece kept it.
-        const geom::Surface& piece = surface_of(doc, doc.selection.object);
+        const geom::Surface& piece = surface_of(doc, doc.view.selection.object);
         if (c.i != 2) {
             EXPECT_EQ(piece.point(c.expected, 1),
                       surface_of(sample_document(), hill_id).point(c.i, 1));
         }
         h.undo(doc);
-        EXPECT_EQ(doc.selection, (Selection{hill_id, c.i, 1}));
+        EXPECT_EQ(doc.view.selection, (Selection{hill_id, c.i, 1}));
     }
     // Object selected without a point: the first piece.
     Document doc = sample_document();
-    doc.selection = Selection{hill_id, -1, -1};
+    doc.view.selection = Selection{hill_id, -1, -1};
     History h;
     ASSERT_TRUE(h.execute(doc, split_object(hill_id, Dir::v, 0.5)).ok());
-    EXPECT_EQ(doc.selection, (Selection{doc.objects[0].id, -1, -1}));
+    EXPECT_EQ(doc.view.selection, (Selection{doc.objects[0].id, -1, -1}));
     // Selecting a point of the second piece, then undoing, selects it on the whole object.
-    doc.selection = Selection{doc.objects[1].id, 2, 3}; // the last column of the second piece
+    doc.view.selection = Selection{doc.objects[1].id, 2, 3}; // the last column of the second piece
     h.undo(doc);
-    EXPECT_EQ(doc.selection.object, hill_id);
-    EXPECT_EQ(doc.selection.i, 2);
-    EXPECT_EQ(doc.selection.j, 4);
+    EXPECT_EQ(doc.view.selection.object, hill_id);
+    EXPECT_EQ(doc.view.selection.i, 2);
+    EXPECT_EQ(doc.view.selection.j, 4);
 }
 
 } // namespace

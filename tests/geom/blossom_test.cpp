@@ -63,7 +63,8 @@ TEST_P(Blossom, DiagonalIsTheCurveAndConsecutiveKnotsAreControlPoints) {
             EXPECT_LT(gap(*curve_blossom(c, J, std::vector<double>(p, t)), *curve_point(c, t)),
                       1e-13);
             for (int i = J - p; i <= J; ++i) {
-                const std::vector<double> knots(c.knots.begin() + i + 1, c.knots.begin() + i + p + 1);
+                const std::vector<double> knots(c.knots.begin() + i + 1,
+                                                c.knots.begin() + i + p + 1);
                 EXPECT_LT(gap(*curve_blossom(c, J, knots), c.points[i]), 1e-13) << p << " " << i;
             }
         }

@@ -25,8 +25,8 @@ double turn(const glm::dvec3& a, const glm::dvec3& b) {
 // exact angles at v = 0, the arc knots and v = 1.
 void expect_revolution(const Curve& profile, double degrees, const Surface& s, double tol) {
     ASSERT_TRUE(validate_surface(s).ok()) << validate_surface(s).error().message;
-    const Interval du = domain(s.knots_u, s.degree_u, s.n_u);
-    const Interval dp = domain(profile.knots, profile.degree, profile.count());
+    const Interval du = domain(s, Dir::u);
+    const Interval dp = domain(profile);
     EXPECT_EQ(du.lo, dp.lo);
     EXPECT_EQ(du.hi, dp.hi);
     EXPECT_EQ(s.knots_v.front(), 0.0);

@@ -21,10 +21,6 @@ Curve flattened(Curve c, int axis) {
     return c;
 }
 
-Interval dom(const Curve& c) {
-    return domain(c.knots, c.degree, c.count());
-}
-
 } // namespace
 
 TEST(Swing, MatchesTheDefiningFormula) {
@@ -40,7 +36,7 @@ TEST(Swing, MatchesTheDefiningFormula) {
         ASSERT_TRUE(s.ok()) << s.error().message;
         ASSERT_TRUE(validate_surface(*s).ok());
         EXPECT_EQ(is_rational(s->type), is_rational(P.type) || is_rational(T.type));
-        const Interval du = dom(P), dv = dom(T);
+        const Interval du = domain(P), dv = domain(T);
         for (double u : samples(du.lo, du.hi, 16)) {
             const glm::dvec3 Pu = *curve_point(P, u);
             for (double v : samples(dv.lo, dv.hi, 16)) {
@@ -61,7 +57,7 @@ TEST(Swing, ACircleTrajectoryGivesASurfaceOfRevolution) {
     ASSERT_TRUE(T.ok());
     auto s = swing(P, *T, 1.0);
     ASSERT_TRUE(s.ok());
-    for (double u : samples(dom(P).lo, dom(P).hi, 10))
+    for (double u : samples(domain(P).lo, domain(P).hi, 10))
         for (double v : samples(0, 1, 20)) {
             const glm::dvec3 S = *surface_point(*s, u, v), C = *curve_point(P, u);
             EXPECT_NEAR(std::hypot(S.x, S.y), std::abs(C.x), 1e-12);
@@ -101,7 +97,7 @@ TEST(Sweep, MatchesTheDefiningFormulaForRationalAndUnclampedCurves) {
         auto s = sweep(P, T);
         ASSERT_TRUE(s.ok()) << s.error().message;
         ASSERT_TRUE(validate_surface(*s).ok());
-        const Interval du = dom(P), dv = dom(T);
+        const Interval du = domain(P), dv = domain(T);
         EXPECT_EQ(s->knots_u, P.knots);
         EXPECT_EQ(s->knots_v, T.knots);
         const glm::dvec3 T0 = *curve_point(T, dv.lo);
@@ -124,7 +120,7 @@ TEST(OrientedSweep, AStraightTrajectoryIsTheTranslationalSweep) {
     EXPECT_LT(o->max_deviation, 1e-9);
     auto t = sweep(P, T);
     ASSERT_TRUE(t.ok());
-    const Interval du = dom(P);
+    const Interval du = domain(P);
     for (double s : samples(0, 1, 12))
         for (double v : samples(0, 1, 12)) {
             const glm::dvec3 a = *surface_point(o->skinned.surface, s, v);

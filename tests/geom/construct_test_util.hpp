@@ -19,7 +19,7 @@ inline std::vector<double> samples(double lo, double hi, int n) {
 
 // The curve's point at s in [0, 1] of its own domain (what make_compatible maps to s).
 inline std::optional<glm::dvec3> point_at_unit(const geom::Curve& c, double s) {
-    const geom::Interval d = geom::domain(c.knots, c.degree, c.count());
+    const geom::Interval d = geom::domain(c);
     return geom::curve_point(c, s >= 1.0 ? d.hi : d.lo + (d.hi - d.lo) * s);
 }
 

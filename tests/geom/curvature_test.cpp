@@ -81,8 +81,8 @@ TEST(Curvature, TorusMatchesItsClosedForm) {
             // cos a from the distance to the axis: rho = R + r cos a.
             const double cos_a = (std::hypot(p.x, p.y) - R) / r;
             EXPECT_NEAR(k->gaussian, cos_a / (r * (R + r * cos_a)), 1e-12) << u;
-            EXPECT_NEAR(std::abs(k->mean), std::abs((R + 2 * r * cos_a) / (2 * r * (R + r * cos_a))),
-                        1e-12);
+            EXPECT_NEAR(std::abs(k->mean),
+                        std::abs((R + 2 * r * cos_a) / (2 * r * (R + r * cos_a))), 1e-12);
             EXPECT_GE(k->k1, k->k2);
         }
     }
@@ -108,8 +108,8 @@ TEST(Curvature, PrincipalDirectionsAreEigenvectorsOfTheShapeOperator) {
             const double E = glm::dot(Su, Su), F = glm::dot(Su, Sv), G = glm::dot(Sv, Sv);
             const double x = glm::dot(dir, Su), y = glm::dot(dir, Sv), det = E * G - F * F;
             const double a = (G * x - F * y) / det, b = (E * y - F * x) / det;
-            const double II = a * a * glm::dot(d->D[2][0], n) + 2 * a * b * glm::dot(d->D[1][1], n) +
-                              b * b * glm::dot(d->D[0][2], n);
+            const double II = a * a * glm::dot(d->D[2][0], n) +
+                              2 * a * b * glm::dot(d->D[1][1], n) + b * b * glm::dot(d->D[0][2], n);
             const glm::dvec3 w = a * Su + b * Sv;
             return II / glm::dot(w, w);
         };
@@ -153,8 +153,8 @@ TEST(Curvature, TwistedCubicMatchesItsClosedForms) {
         auto k = curve_curvature(c, t);
         ASSERT_TRUE(k && k->curvature && k->torsion);
         const double q = 9 * t * t * t * t + 9 * t * t + 1;
-        EXPECT_NEAR(*k->curvature, 2 * std::sqrt(q) / std::pow(1 + 4 * t * t + 9 * t * t * t * t, 1.5),
-                    1e-13);
+        EXPECT_NEAR(*k->curvature,
+                    2 * std::sqrt(q) / std::pow(1 + 4 * t * t + 9 * t * t * t * t, 1.5), 1e-13);
         EXPECT_NEAR(*k->torsion, 3 / q, 1e-13);
         // A right-handed orthonormal frame.
         EXPECT_NEAR(glm::dot(glm::cross(*k->tangent, *k->normal), *k->binormal), 1, 1e-12);

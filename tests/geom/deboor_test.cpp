@@ -49,8 +49,8 @@ TEST(DeBoor, SurfaceTraceMatchesEvaluation) {
     RandomGeometry g(23);
     for (int trial = 0; trial < 40; ++trial) {
         const Surface s = g.surface(g.integer(1, 4), g.integer(1, 4), 6, 5, trial % 2 == 0);
-        const Interval du = domain(s.knots_u, s.degree_u, s.n_u);
-        const Interval dv = domain(s.knots_v, s.degree_v, s.n_v);
+        const Interval du = domain(s, Dir::u);
+        const Interval dv = domain(s, Dir::v);
         const double u = g.uniform(du.lo, du.hi),
                      v = trial % 5 == 0 ? dv.hi : g.uniform(dv.lo, dv.hi);
         const DeBoorSurfaceTrace tr = deboor_surface(s, u, v);

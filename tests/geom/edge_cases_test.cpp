@@ -12,14 +12,14 @@
 #include <string>
 #include <vector>
 
-#include "core/json/shapes.hpp"
-#include "core/protocol/protocol.hpp"
 #include "core/geom/basis.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/refine.hpp"
 #include "core/geom/tessellate.hpp"
 #include "core/geom/validate.hpp"
+#include "core/json/shapes.hpp"
+#include "core/protocol/protocol.hpp"
 #include "tests/support/random_geometry.hpp"
 
 using namespace isoparm;

@@ -24,7 +24,7 @@ TEST(Evaluate, ClampedCurveInterpolatesEndPoints) {
     RandomGeometry g(1);
     for (int trial = 0; trial < 50; ++trial) {
         const Curve c = g.curve(g.integer(1, 9), 12, trial % 2);
-        const Interval d = domain(c.knots, c.degree, c.count());
+        const Interval d = domain(c);
         expect_near(*curve_point(c, d.lo), c.points.front(), 1e-12);
         expect_near(*curve_point(c, d.hi), c.points.back(), 1e-12);
     }
@@ -48,7 +48,7 @@ TEST(Evaluate, CurveDerivativesMatchFiniteDifferences) {
     RandomGeometry g(5);
     for (int trial = 0; trial < 80; ++trial) {
         const Curve c = g.curve(g.integer(1, 5), g.integer(6, 10), trial % 2 == 0, trial % 3 != 0);
-        const Interval dom = domain(c.knots, c.degree, c.count());
+        const Interval dom = domain(c);
         const double t = g.uniform(dom.lo, dom.hi), h = 1e-5;
         bool near_knot = t - 2 * h < dom.lo || t + 2 * h > dom.hi;
         for (double k : c.knots) near_knot |= std::abs(k - t) < 3 * h;
@@ -67,8 +67,8 @@ TEST(Evaluate, SurfaceDerivativesMatchFiniteDifferences) {
     RandomGeometry g(9);
     for (int trial = 0; trial < 60; ++trial) {
         const Surface s = g.surface(g.integer(1, 4), g.integer(1, 4), 6, 7, trial % 2 == 0);
-        const Interval du = domain(s.knots_u, s.degree_u, s.n_u);
-        const Interval dv = domain(s.knots_v, s.degree_v, s.n_v);
+        const Interval du = domain(s, Dir::u);
+        const Interval dv = domain(s, Dir::v);
         const double u = g.uniform(du.lo, du.hi), v = g.uniform(dv.lo, dv.hi), h = 1e-5;
         bool bad = u - 2 * h < du.lo || u + 2 * h > du.hi || v - 2 * h < dv.lo || v + 2 * h > dv.hi;
         for (double k : s.knots_u) bad |= std::abs(k - u) < 3 * h;

@@ -125,7 +125,7 @@ TEST(Refine, ElevationKeepsShapeClampedAndUnclamped) {
         EXPECT_EQ(r->degree, p + times);
         ASSERT_TRUE(validate_curve(*r).ok()) << validate_curve(*r).error().message;
         const Interval d = domain(c.knots, p, c.count());
-        const Interval e = domain(r->knots, r->degree, r->count());
+        const Interval e = domain(*r);
         EXPECT_EQ(d.lo, e.lo);
         EXPECT_EQ(d.hi, e.hi);
         if (clamped) { // the unique result: every distinct knot's multiplicity raised by times
@@ -206,8 +206,8 @@ TEST(Refine, SurfaceOperationsKeepShapeInBothDirections) {
     for (int trial = 0; trial < 16; ++trial) {
         const Surface s =
             g.surface(g.integer(1, 4), g.integer(1, 4), 6, 5, trial % 2 == 0, trial % 4 != 0);
-        const Interval du = domain(s.knots_u, s.degree_u, s.n_u);
-        const Interval dv = domain(s.knots_v, s.degree_v, s.n_v);
+        const Interval du = domain(s, Dir::u);
+        const Interval dv = domain(s, Dir::v);
         const Dir dir = trial % 2 ? Dir::u : Dir::v;
         const Interval dd = dir == Dir::u ? du : dv;
         const double t = dd.lo + 0.37 * (dd.hi - dd.lo);

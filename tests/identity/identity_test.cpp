@@ -91,8 +91,8 @@ TEST(Identity, ProtocolAnswers) {
         SCOPED_TRACE(path.string());
         std::ostringstream out, err;
         const int status = protocol::run_protocol_text(slurp(path), out, err);
-        const std::string answer = "exit " + std::to_string(status) + "\n--- stdout\n" +
-                                   out.str() + "--- stderr\n" + err.str();
+        const std::string answer = "exit " + std::to_string(status) + "\n--- stdout\n" + out.str() +
+                                   "--- stderr\n" + err.str();
         check_or_record(recorded_dir / "protocol" / (group + "__" + stem_of(path) + ".txt"),
                         answer);
     }
@@ -108,10 +108,10 @@ TEST(Identity, SceneBytesAfterLoadAndSave) {
     for (const auto& [group, path] : all) {
         SCOPED_TRACE(path.string());
         const auto loaded = scene::scene_from_text(slurp(path));
-        const std::string saved = loaded ? scene::scene_to_text(*loaded)
-                                         : "error " + std::string(geom::error_code_name(loaded.error().code)) + " at \"" +
-                                               loaded.error().path + "\": " +
-                                               loaded.error().message + "\n";
+        const std::string saved =
+            loaded ? scene::scene_to_text(*loaded)
+                   : "error " + std::string(geom::name_of(loaded.error().code)) + " at \"" +
+                         loaded.error().path + "\": " + loaded.error().message + "\n";
         check_or_record(recorded_dir / "scenes" / (group + "__" + stem_of(path) + ".txt"), saved);
     }
 }

@@ -40,7 +40,8 @@ TEST(JsonFields, UnknownMemberIsWordedAlikeInRequestsGeometryAndScenes) {
 }
 
 TEST(JsonFields, MissingMemberIsWordedAlikeAndPointsWhereItWouldBe) {
-    const json answer = protocol::handle_request(json::parse(R"({"op": "evaluate", "params": [0]})"));
+    const json answer =
+        protocol::handle_request(json::parse(R"({"op": "evaluate", "params": [0]})"));
     EXPECT_EQ(answer["error"]["path"], "/curve");
     const auto curve = json_io::curve_from_json(json::parse(R"({"points": [[0, 0], [1, 1]]})"));
     ASSERT_FALSE(curve);

@@ -16,12 +16,12 @@
 #include "tests/support/temp_dir.hpp"
 
 namespace fs = std::filesystem;
+using isoparm::geom::ErrorCode;
 using isoparm::json_io::changed_on_disk;
-using isoparm::scene::load_scene;
 using isoparm::json_io::read_descriptor;
 using isoparm::json_io::read_input_file;
 using isoparm::json_io::stamp_of;
-using isoparm::geom::ErrorCode;
+using isoparm::scene::load_scene;
 
 namespace {
 

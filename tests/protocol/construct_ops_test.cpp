@@ -7,10 +7,10 @@
 #include <sstream>
 #include <string>
 
-#include "core/json/shapes.hpp"
-#include "core/protocol/protocol.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
+#include "core/json/shapes.hpp"
+#include "core/protocol/protocol.hpp"
 
 namespace {
 
@@ -39,11 +39,8 @@ geom::Surface surface(const json& j) {
     EXPECT_TRUE(s.ok()) << s.error().message;
     return *s;
 }
-geom::Interval dom(const geom::Curve& c) {
-    return geom::domain(c.knots, c.degree, c.count());
-}
 glm::dvec3 at(const geom::Curve& c, double s01) {
-    const geom::Interval d = dom(c);
+    const geom::Interval d = geom::domain(c);
     return *geom::curve_point(c, s01 >= 1 ? d.hi : d.lo + (d.hi - d.lo) * s01);
 }
 

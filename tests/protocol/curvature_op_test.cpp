@@ -43,7 +43,8 @@ TEST(CurvatureOp, AgreesWithTheFundamentalFormsOfEvaluate) {
             EXPECT_TRUE(k["gaussian"].is_null());
             continue;
         }
-        const double E = dot(D[1][0], D[1][0]), F = dot(D[1][0], D[0][1]), G = dot(D[0][1], D[0][1]);
+        const double E = dot(D[1][0], D[1][0]), F = dot(D[1][0], D[0][1]),
+                     G = dot(D[0][1], D[0][1]);
         const double L = dot(D[2][0], n), M = dot(D[1][1], n), N = dot(D[0][2], n);
         const double K = (L * N - M * M) / (E * G - F * F);
         const double H = (E * N - 2 * F * M + G * L) / (2 * (E * G - F * F));
@@ -59,7 +60,8 @@ TEST(CurvatureOp, RefusesLikeEvaluate) {
     json a = protocol::handle_request({{"op", "curvature"}, {"curve", curve}, {"params", {2.0}}});
     EXPECT_EQ(a["error"]["code"], "domain");
     EXPECT_EQ(a["error"]["path"], "/params/0");
-    a = protocol::handle_request({{"op", "curvature"}, {"curve", curve}, {"params", {0.5}}, {"derivatives", 1}});
+    a = protocol::handle_request(
+        {{"op", "curvature"}, {"curve", curve}, {"params", {0.5}}, {"derivatives", 1}});
     EXPECT_EQ(a["error"]["code"], "schema");
     EXPECT_EQ(a["error"]["path"], "/derivatives");
     a = protocol::handle_request({{"op", "curvature"}, {"curve", curve}});

@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "core/json/shapes.hpp"
-#include "core/protocol/protocol.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
+#include "core/json/shapes.hpp"
+#include "core/protocol/protocol.hpp"
 
 namespace {
 
@@ -129,8 +129,8 @@ void expect_same_shape(const json& expected, const json& actual, bool surface, d
         auto a = json_io::curve_from_json(actual);
         ASSERT_TRUE(e.ok()) << at << ": reference curve invalid: " << e.error().message;
         ASSERT_TRUE(a.ok()) << at << ": our curve invalid: " << a.error().message;
-        const geom::Interval de = geom::domain(e->knots, e->degree, e->count());
-        const geom::Interval da = geom::domain(a->knots, a->degree, a->count());
+        const geom::Interval de = geom::domain(*e);
+        const geom::Interval da = geom::domain(*a);
         EXPECT_NEAR(de.lo, da.lo, tol) << at;
         EXPECT_NEAR(de.hi, da.hi, tol) << at;
         for (int k = 0; k <= 40; ++k) {
@@ -150,10 +150,10 @@ void expect_same_shape(const json& expected, const json& actual, bool surface, d
     auto a = json_io::surface_from_json(actual);
     ASSERT_TRUE(e.ok()) << at << ": reference surface invalid: " << e.error().message;
     ASSERT_TRUE(a.ok()) << at << ": our surface invalid: " << a.error().message;
-    const geom::Interval eu = geom::domain(e->knots_u, e->degree_u, e->n_u);
-    const geom::Interval ev = geom::domain(e->knots_v, e->degree_v, e->n_v);
-    const geom::Interval au = geom::domain(a->knots_u, a->degree_u, a->n_u);
-    const geom::Interval av = geom::domain(a->knots_v, a->degree_v, a->n_v);
+    const geom::Interval eu = geom::domain(*e, geom::Dir::u);
+    const geom::Interval ev = geom::domain(*e, geom::Dir::v);
+    const geom::Interval au = geom::domain(*a, geom::Dir::u);
+    const geom::Interval av = geom::domain(*a, geom::Dir::v);
     EXPECT_NEAR(eu.lo, au.lo, tol) << at;
     EXPECT_NEAR(eu.hi, au.hi, tol) << at;
     EXPECT_NEAR(ev.lo, av.lo, tol) << at;

@@ -6,9 +6,9 @@
 #include <sstream>
 #include <string>
 
-#include "core/protocol/protocol.hpp"
 #include "core/geom/implicit/expression.hpp"
 #include "core/geom/implicit/polygonize.hpp"
+#include "core/protocol/protocol.hpp"
 
 namespace {
 

@@ -69,7 +69,7 @@ Document round_trip(const Document& doc) {
 void expect_error(const std::string& text, ErrorCode code, const std::string& path) {
     auto doc = scene_from_text(text);
     ASSERT_FALSE(doc.ok()) << text;
-    EXPECT_EQ(std::string(geom::error_code_name(doc.error().code)), geom::error_code_name(code))
+    EXPECT_EQ(std::string(geom::name_of(doc.error().code)), geom::name_of(code))
         << doc.error().path << ": " << doc.error().message;
     EXPECT_TRUE(doc.error().has_path);
     EXPECT_EQ(doc.error().path, path) << doc.error().message;
@@ -96,11 +96,11 @@ TEST(SceneRoundTrip, DefaultDocumentIsBitIdentical) {
 
 TEST(SceneRoundTrip, EveryKindOfObject) {
     Document doc = sample_document();
-    doc.selection = Selection{curve_id, 3, -1};
-    doc.indicator = {0.25, 1.0};
-    doc.display.style = DisplayStyle::wireframe;
-    doc.display.point_ids = true;
-    doc.display.density = 7;
+    doc.view.selection = Selection{curve_id, 3, -1};
+    doc.view.indicator = {0.25, 1.0};
+    doc.view.display.style = DisplayStyle::wireframe;
+    doc.view.display.point_ids = true;
+    doc.view.display.density = 7;
     doc.objects[1].name = "prof\"ile / ~ é";
     std::get<CurveObject>(doc.objects[1].shape).plane = CurvePlane::free3d;
     const Document back = round_trip(doc);
@@ -171,8 +171,8 @@ TEST(SceneRead, OptionalMembersTakeDefaults) {
     EXPECT_EQ(doc->objects[0].id, 1u);
     EXPECT_TRUE(doc->objects[0].visible);
     EXPECT_EQ(doc->colors, Colors{});
-    EXPECT_EQ(doc->display, DisplaySettings{});
-    EXPECT_EQ(doc->selection, Selection{});
+    EXPECT_EQ(doc->view.display, DisplaySettings{});
+    EXPECT_EQ(doc->view.selection, Selection{});
     EXPECT_EQ(doc->next_id, 2u);
 }
 
@@ -369,7 +369,7 @@ TEST(SceneRead, TextProblems) {
 // still loads saves and loads again to the same document.
 TEST(SceneRead, DamagedScenesAreRefusedOrLoadConsistently) {
     Document base = sample_document();
-    base.selection = Selection{curve_id, 2, -1};
+    base.view.selection = Selection{curve_id, 2, -1};
     const std::string text = scene_to_text(base);
     const std::vector<std::string> tokens = {"1e999",
                                              "-1e999",

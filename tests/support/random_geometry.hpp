@@ -74,8 +74,4 @@ struct RandomGeometry {
     }
 };
 
-inline geom::Interval curve_domain(const geom::Curve& c) {
-    return geom::domain(c.knots, c.degree, c.count());
-}
-
 } // namespace isoparm::testing

@@ -73,7 +73,7 @@ TEST_F(FileSafety, SavingAgainWithoutOutsideChangesDoesNotAsk) {
 TEST_F(FileSafety, ASceneTooLargeToShowIsRefusedOnOpen) {
     // 250 copies of the default 5x5 bicubic surface at density 256: 16,384 vertices each.
     doc::Document big = doc::default_document();
-    big.display.density = 256;
+    big.view.display.density = 256;
     const doc::Object hill = big.objects[0];
     for (int k = 1; k < 250; ++k) {
         doc::Object copy = hill;

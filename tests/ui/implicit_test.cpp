@@ -201,7 +201,7 @@ TEST(ImplicitMeshes, FineGridFinishesInTheBackground) {
 TEST(ImplicitScene, ImplicitObjectsBecomeMeshDrawsWithTheirBox) {
     std::uint64_t id = 0;
     doc::Document d = one_implicit(id);
-    d.selection.object = id;
+    d.view.selection.object = id;
     EXPECT_TRUE(build_scene(d, {}).surfaces.empty()); // no cache: not drawn
     ImplicitMeshes cache;
     ImplicitMeshes::Mode wait;

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "core/doc/document.hpp"
+#include "core/doc/placement.hpp"
+#include "core/geom/knots.hpp"
 #include "ui/doc_access.hpp"
 #include "ui/render/mesh_data.hpp"
 #include "ui/render/tessellation_sampling.hpp"
@@ -54,28 +56,28 @@ TEST(SceneBuilder, DefaultDocumentDrawsSurfaceNetPointsAndIndicator) {
     doc::Document d = doc::default_document();
     const BuiltScene scene = build_scene(d, {});
     ASSERT_EQ(scene.surfaces.size(), 1u);
-    const geom::Surface* s = surface_of(d.objects.front());
+    const geom::Surface* s = d.objects.front().surface();
     ASSERT_NE(s, nullptr);
     std::size_t points = 0, net_segments = 0;
     for (const PointBatch& b : scene.overlay.points) points += b.points.size();
     for (const LineBatch& l : scene.overlay.lines) net_segments += l.vertices.size() / 2;
     // Every control point plus S(u,v); at least the net's segments among the lines.
     EXPECT_EQ(points,
-              static_cast<std::size_t>(s->n_u * s->n_v) + (d.display.indicator_point ? 1 : 0));
+              static_cast<std::size_t>(s->n_u * s->n_v) + (d.view.display.indicator_point ? 1 : 0));
     EXPECT_GE(net_segments,
               static_cast<std::size_t>(s->n_u * (s->n_v - 1) + s->n_v * (s->n_u - 1)));
 }
 
 TEST(SceneBuilder, TogglesRemoveWhatTheyHide) {
     doc::Document d = doc::default_document();
-    d.display.control_net = false;
-    d.display.control_points = false;
-    d.display.indicator_point = false;
-    d.display.knot_curves = false;
+    d.view.display.control_net = false;
+    d.view.display.control_points = false;
+    d.view.display.indicator_point = false;
+    d.view.display.knot_curves = false;
     const BuiltScene scene = build_scene(d, {});
     EXPECT_TRUE(scene.overlay.points.empty());
     EXPECT_TRUE(scene.overlay.lines.empty());
-    d.display.style = doc::DisplayStyle::wireframe;
+    d.view.display.style = doc::DisplayStyle::wireframe;
     const BuiltScene wire = build_scene(d, {});
     EXPECT_FALSE(wire.surfaces.front().shaded);
     EXPECT_TRUE(wire.surfaces.front().wireframe);
@@ -83,8 +85,8 @@ TEST(SceneBuilder, TogglesRemoveWhatTheyHide) {
 
 TEST(SceneBuilder, IsoCurveLiesOnTheSurfaceEnds) {
     const doc::Document d = doc::default_document();
-    const geom::Surface& s = *surface_of(d.objects.front());
-    const auto pieces = iso_curve(s, geom::Dir::u, domain_u(s).lo, 11);
+    const geom::Surface& s = *d.objects.front().surface();
+    const auto pieces = iso_curve(s, geom::Dir::u, geom::domain(s, geom::Dir::u).lo, 11);
     ASSERT_EQ(pieces.size(), 1u);
     ASSERT_EQ(pieces[0].size(), 11u);
     // Clamped: the corner of the surface is the corner control point.
@@ -95,12 +97,12 @@ TEST(SceneBuilder, IsoCurveLiesOnTheSurfaceEnds) {
 
 TEST(SceneBounds, CoversAllControlPoints) {
     const doc::Document d = doc::default_document();
-    const auto box = scene_bounds(d);
+    const auto box = doc::scene_bounds(d);
     ASSERT_TRUE(box.has_value());
-    for (const glm::dvec3& p : surface_of(d.objects.front())->points)
+    for (const glm::dvec3& p : d.objects.front().surface()->points)
         for (int k = 0; k < 3; ++k) {
             EXPECT_LE(box->lo[k], p[k]);
             EXPECT_GE(box->hi[k], p[k]);
         }
-    EXPECT_FALSE(scene_bounds(doc::Document{}).has_value());
+    EXPECT_FALSE(doc::scene_bounds(doc::Document{}).has_value());
 }

@@ -22,7 +22,7 @@ namespace {
 AppContext hill_context() {
     AppContext ctx;
     ctx.doc = doc::default_document(); // bicubic 5x5 NURBS
-    ctx.doc.selection = {ctx.doc.objects[0].id, -1, -1};
+    ctx.doc.view.selection = {ctx.doc.objects[0].id, -1, -1};
     return ctx;
 }
 
@@ -41,7 +41,7 @@ TEST(DeBoorSteps, StepBackAndForthAndPlayToTheEnd) {
     EXPECT_EQ(deboor_step_count(ctx), 7); // 3 + 3 + 1
     deboor_step(ctx, +1);                 // from "all": the first step
     EXPECT_EQ(ctx.ui.deboor.step, 0);
-    EXPECT_TRUE(ctx.doc.display.deboor);
+    EXPECT_TRUE(ctx.doc.view.display.deboor);
     deboor_step(ctx, +1);
     deboor_step(ctx, +1);
     deboor_step(ctx, -1);
@@ -198,11 +198,11 @@ TEST(DeBoorSteps, ZoomFramesTheActingPatch) {
     AppContext ctx = hill_context();
     ctx.ui.view_rect = {0, 0, 800, 500};
     const Viewport vp{0, 0, 800, 500};
-    ctx.doc.indicator = {0.9, 0.9};
+    ctx.doc.view.indicator = {0.9, 0.9};
     fit_to_points(ctx.ui.camera, scene_points(ctx.doc), vp.aspect());
     const double whole = ctx.ui.camera.distance;
     zoom_to_acting_patch(ctx);
-    EXPECT_TRUE(ctx.doc.display.deboor);
+    EXPECT_TRUE(ctx.doc.view.display.deboor);
     EXPECT_LT(ctx.ui.camera.distance, whole);
     const doc::Object& o = ctx.doc.objects[0];
     const geom::Surface& s = std::get<doc::SurfaceObject>(o.shape).surface;
@@ -227,10 +227,10 @@ TEST(DeBoorSteps, ZoomFramesTheActingPatch) {
 
 TEST(DeBoorOverlay, SceneBuilderFollowsTheDisplayFlagAndTheStep) {
     doc::Document d = doc::default_document();
-    d.selection = {d.objects[0].id, -1, -1};
+    d.view.selection = {d.objects[0].id, -1, -1};
     SceneStyle style;
     const std::size_t without = build_scene(d, style).overlay.points.size();
-    d.display.deboor = true;
+    d.view.display.deboor = true;
     style.deboor_step = 0;
     const BuiltScene some = build_scene(d, style);
     style.deboor_step = -1;
@@ -241,7 +241,7 @@ TEST(DeBoorOverlay, SceneBuilderFollowsTheDisplayFlagAndTheStep) {
 
 TEST(SurfaceActions, InsertUpToTheDegreeThenRefuseShapeUnchanged) {
     AppContext ctx = hill_context();
-    ctx.doc.indicator = {0.25, 0.5};
+    ctx.doc.view.indicator = {0.25, 0.5};
     const geom::Surface before = std::get<doc::SurfaceObject>(ctx.doc.objects[0].shape).surface;
     for (int k = 0; k < 3; ++k) {
         EXPECT_TRUE(insert_knot_state(ctx, Dir::u).enabled) << k;
@@ -284,7 +284,7 @@ TEST(SurfaceActions, ARationalBezierBecomingNurbsIsSaid) {
     s.degree_u = s.degree_v = 4;
     ASSERT_TRUE(ctx.execute(
         doc::replace_shape(ctx.doc.objects[0].id, doc::SurfaceObject{s}, "Rational Bezier")));
-    ctx.doc.indicator = {0.5, 0.5};
+    ctx.doc.view.indicator = {0.5, 0.5};
     insert_knot_at_indicator(ctx, Dir::v);
     EXPECT_EQ(std::get<doc::SurfaceObject>(ctx.doc.objects[0].shape).surface.type,
               geom::SplineType::nurbs);
@@ -299,7 +299,7 @@ TEST(SurfaceActions, ElevateAndSplitAtTheIndicator) {
     AppContext ctx = hill_context();
     elevate_current(ctx, Dir::v);
     EXPECT_EQ(std::get<doc::SurfaceObject>(ctx.doc.objects[0].shape).surface.degree_v, 4);
-    ctx.doc.indicator = {0.75, 0.4};
+    ctx.doc.view.indicator = {0.75, 0.4};
     ASSERT_TRUE(split_state(ctx, Dir::u).enabled);
     split_at_indicator(ctx, Dir::u);
     ASSERT_EQ(ctx.doc.objects.size(), 2u);
@@ -307,15 +307,15 @@ TEST(SurfaceActions, ElevateAndSplitAtTheIndicator) {
     const doc::Object& left = ctx.doc.objects[0];
     EXPECT_EQ(indicator_params(ctx.doc, left), glm::dvec2(0.75, 0.4));
     // On the edge of the current patch a split is refused with a reason.
-    ctx.doc.selection = {left.id, -1, -1};
-    ctx.doc.indicator = {0.75, 0.4};
+    ctx.doc.view.selection = {left.id, -1, -1};
+    ctx.doc.view.indicator = {0.75, 0.4};
     const ActionState edge = split_state(ctx, Dir::u);
     EXPECT_FALSE(edge.enabled);
     EXPECT_FALSE(edge.why.empty());
     // Moving the indicator right of 0.75 makes the second piece current.
-    ctx.doc.indicator = {0.9, 0.4};
+    ctx.doc.view.indicator = {0.9, 0.4};
     EXPECT_TRUE(doc::follow_indicator(ctx.doc, left.id));
-    EXPECT_EQ(ctx.doc.selection.object, ctx.doc.objects[1].id);
+    EXPECT_EQ(ctx.doc.view.selection.object, ctx.doc.objects[1].id);
     // Evaluation never leaves a patch's own domain, even for a frame in which the indicator
     // lies in another patch's part of the square.
     EXPECT_EQ(indicator_params(ctx.doc, ctx.doc.objects[0]), glm::dvec2(0.75, 0.4));
@@ -327,14 +327,14 @@ TEST(SurfaceActions, ElevateAndSplitAtTheIndicator) {
 TEST(SurfaceActions, Fig6SplitSequenceLiveKeepsEveryBorder) {
     AppContext ctx = hill_context();
     ctx.doc.continuity = doc::Continuity::c1;
-    ctx.doc.indicator = {0.75, 0.5};
+    ctx.doc.view.indicator = {0.75, 0.5};
     split_at_indicator(ctx, Dir::u);
     ASSERT_EQ(ctx.doc.objects.size(), 2u);
     const std::uint64_t group = ctx.doc.objects[0].patch_group;
-    ctx.doc.indicator = {0.3, 0.5};
-    doc::sync_patch_and_indicator(ctx.doc, ctx.doc.selection.object, {0.75, 0.5},
-                                  ctx.doc.selection.object);
-    ASSERT_EQ(ctx.doc.selection.object, ctx.doc.objects[0].id); // the left piece
+    ctx.doc.view.indicator = {0.3, 0.5};
+    doc::sync_patch_and_indicator(ctx.doc, ctx.doc.view.selection.object, {0.75, 0.5},
+                                  ctx.doc.view.selection.object);
+    ASSERT_EQ(ctx.doc.view.selection.object, ctx.doc.objects[0].id); // the left piece
     const doc::Document after_first = ctx.doc;
     split_at_indicator(ctx, Dir::v);
     ASSERT_EQ(ctx.doc.objects.size(), 3u);
@@ -352,7 +352,7 @@ TEST(SurfaceActions, Fig6SplitSequenceLiveKeepsEveryBorder) {
 // "Keep across borders"): the borders are paired up then, in one undo step, and said so.
 TEST(SurfaceActions, ContinuitySwitchedOnLaterPairsTheBordersUp) {
     AppContext ctx = hill_context();
-    ctx.doc.indicator = {0.75, 0.5};
+    ctx.doc.view.indicator = {0.75, 0.5};
     split_at_indicator(ctx, Dir::u);
     const std::uint64_t group = ctx.doc.objects[0].patch_group;
     split_at_indicator(ctx, Dir::v); // the left piece is current after the first split

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/geom/basis.hpp"
+#include "core/geom/knots.hpp"
 #include "core/geom/tessellate.hpp"
 #include "ui/canvas_map.hpp"
 #include "ui/doc_access.hpp"
@@ -54,7 +55,7 @@ const HeatMapCache& heat_map(AppContext& ctx, const geom::Surface& s, int i, int
     const int r = heat_resolution;
     h.values.assign(static_cast<std::size_t>(r * r), 0.f);
     h.max_value = 0;
-    const geom::Interval du = domain_u(s), dv = domain_v(s);
+    const geom::Interval du = geom::domain(s, geom::Dir::u), dv = geom::domain(s, geom::Dir::v);
     for (int row = 0; row < r; ++row)
         for (int c = 0; c < r; ++c) {
             const double u = denormalize_param(du, (c + 0.5) / r);
@@ -88,7 +89,7 @@ void heat_canvas(AppContext& ctx, const doc::Object& obj, const geom::Surface& s
             dl->AddRectFilled(a, ImVec2(a.x + cw + 0.5f, a.y + ch + 0.5f), col);
         }
     // The support [u_i, u_{i+p+1}] x [v_j, v_{j+q+1}], clipped to the domain.
-    const geom::Interval du = domain_u(s), dv = domain_v(s);
+    const geom::Interval du = geom::domain(s, geom::Dir::u), dv = geom::domain(s, geom::Dir::v);
     auto clamp01 = [](double x) { return std::clamp(x, 0.0, 1.0); };
     const double u0 = clamp01(normalize_param(du, s.knots_u[i]));
     const double u1 = clamp01(normalize_param(du, s.knots_u[i + s.degree_u + 1]));
@@ -112,7 +113,7 @@ void heat_canvas(AppContext& ctx, const doc::Object& obj, const geom::Surface& s
     // Pressing in the map moves the indicator, as in the tracing panel.
     if (ImGui::IsItemActive()) {
         const ImVec2 m = ImGui::GetIO().MousePos;
-        ctx.doc.indicator =
+        ctx.doc.view.indicator =
             indicator_from_own_domain(ctx.doc, obj, pixel_to_domain(sq, {m.x, m.y}));
     }
 }
@@ -168,8 +169,8 @@ void draw_basis_plot_panel(AppContext& ctx) {
         return;
     }
     const glm::dvec2 uv = indicator_params(ctx.doc, *obj);
-    const bool point = has_valid_point(ctx.doc) && ctx.doc.selection.object == obj->id;
-    const int i = point ? ctx.doc.selection.i : -1, j = point ? ctx.doc.selection.j : -1;
+    const bool point = has_valid_point(ctx.doc) && ctx.doc.view.selection.object == obj->id;
+    const int i = point ? ctx.doc.view.selection.i : -1, j = point ? ctx.doc.view.selection.j : -1;
 
     // Partition of unity at the indicator: the sum of the non-zero R_kl.
     const geom::BasisAt bu = geom::basis_at(s->knots_u, s->degree_u, s->n_u, uv.x);

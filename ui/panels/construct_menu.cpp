@@ -37,7 +37,7 @@ void add_and_select(AppContext& ctx, geom::Expected<doc::Object> o, const char* 
     }
     ctx.seal();
     if (ctx.execute(doc::add_object(std::move(o).value()))) {
-        ctx.doc.selection = {ctx.doc.objects.back().id, -1, -1};
+        ctx.doc.view.selection = {ctx.doc.objects.back().id, -1, -1};
         fit_view(ctx);
     }
     ctx.seal();
@@ -286,7 +286,7 @@ bool build(AppContext& ctx) {
         return false;
     }
     ctx.seal();
-    ctx.doc.selection = {ctx.doc.objects.back().id, -1, -1};
+    ctx.doc.view.selection = {ctx.doc.objects.back().id, -1, -1};
     fit_view(ctx);
     cd.note = "Added '" + name + "' (selected; edit it like any surface)." +
               (result->note.empty() ? "" : "\n" + result->note);

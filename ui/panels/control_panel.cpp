@@ -57,7 +57,7 @@ void draw_control_panel(AppContext& ctx) {
 
     ImGui::Separator();
     ImGui::TextDisabled("Display");
-    doc::DisplaySettings& d = ctx.doc.display; // view state: not undoable
+    doc::DisplaySettings& d = ctx.doc.view.display; // view state: not undoable
     int style = static_cast<int>(d.style);
     ImGui::RadioButton("Shaded", &style, static_cast<int>(doc::DisplayStyle::shaded));
     ImGui::SameLine();

@@ -46,7 +46,7 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const geom::Surface& 
     const float k = ctx.ui.scale();
     PlaneDrag& pd = ctx.ui.plane_drag;
     const PlaneMap map = pd.plane == plane ? pd.frozen : frame_plane(s, canvas, ax.a, ax.b, 8 * k);
-    const int si = ctx.doc.selection.i, sj = ctx.doc.selection.j;
+    const int si = ctx.doc.view.selection.i, sj = ctx.doc.view.selection.j;
     const glm::dvec3 sel = s.point(si, sj);
     const glm::dvec2 disk = plane_to_pixel(map, {sel[ax.a], sel[ax.b]});
     const float disk_r = 7 * k;
@@ -71,7 +71,7 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const geom::Surface& 
                 for (int j = 0; j < s.n_v; ++j) {
                     const glm::dvec3& p = s.point(i, j);
                     if (glm::length(plane_to_pixel(map, {p[ax.a], p[ax.b]}) - mouse) <= 5 * k)
-                        ctx.doc.selection = {obj.id, i, j};
+                        ctx.doc.view.selection = {obj.id, i, j};
                 }
         }
     }
@@ -137,7 +137,7 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const geom::Surface& 
 }
 
 void coordinate_fields(AppContext& ctx, const doc::Object& obj, const geom::Surface& s) {
-    const int i = ctx.doc.selection.i, j = ctx.doc.selection.j;
+    const int i = ctx.doc.view.selection.i, j = ctx.doc.view.selection.j;
     glm::dvec3 p = s.point(i, j);
     const char* labels[3] = {"x", "y", "z"};
     const ImGuiStyle& st = ImGui::GetStyle();
@@ -162,11 +162,11 @@ void coordinate_fields(AppContext& ctx, const doc::Object& obj, const geom::Surf
 }
 
 void weight_controls(AppContext& ctx, const doc::Object& obj, const geom::Surface& s) {
-    const int i = ctx.doc.selection.i, j = ctx.doc.selection.j;
+    const int i = ctx.doc.view.selection.i, j = ctx.doc.view.selection.j;
     if (!geom::is_rational(s.type)) {
         ImGui::TextWrapped("Weight: this %s surface is non-rational (all weights 1). Weights "
                            "belong to rational Bezier and NURBS surfaces.",
-                           geom::spline_type_name(s.type));
+                           geom::name_of(s.type));
         return;
     }
     double w = s.weight(i, j);
@@ -222,7 +222,7 @@ void weight_controls(AppContext& ctx, const doc::Object& obj, const geom::Surfac
 
 void draw_control_point_panel(AppContext& ctx) {
     const doc::Object* obj = ctx.doc.selected();
-    const geom::Surface* s = obj ? surface_of(*obj) : nullptr;
+    const geom::Surface* s = obj ? obj->surface() : nullptr;
     if (!s || !has_valid_point(ctx.doc)) {
         ImGui::TextWrapped("Click a control point in the 3D view to select it; it can then "
                            "be moved here in the xy, xz and yz planes.");
@@ -233,14 +233,14 @@ void draw_control_point_panel(AppContext& ctx) {
             ImGui::SetNextItemWidth(120 * ctx.ui.scale());
             if (ImGui::InputInt2("i, j", ij, ImGuiInputTextFlags_EnterReturnsTrue) && ij[0] >= 0 &&
                 ij[0] < cur->n_u && ij[1] >= 0 && ij[1] < cur->n_v)
-                ctx.doc.selection = {obj->id, ij[0], ij[1]};
+                ctx.doc.view.selection = {obj->id, ij[0], ij[1]};
         }
         return;
     }
-    const int i = ctx.doc.selection.i, j = ctx.doc.selection.j;
+    const int i = ctx.doc.view.selection.i, j = ctx.doc.view.selection.j;
     ImGui::Text("%s of %s", point_name('P', i, j, s->n_u, s->n_v).c_str(), obj->name.c_str());
     ImGui::SameLine();
-    ImGui::TextDisabled("(%s)", geom::spline_type_name(s->type));
+    ImGui::TextDisabled("(%s)", geom::name_of(s->type));
 
     // The three planes: in a row when the panel is wide, else wrapped.
     const float k = ctx.ui.scale();
@@ -270,7 +270,7 @@ void draw_control_point_panel(AppContext& ctx) {
                           origin.y + static_cast<float>(r) * (side + spacing), side, side};
         // Re-read each time: the previous canvas may have executed a command.
         obj = ctx.doc.selected();
-        s = obj ? surface_of(*obj) : nullptr;
+        s = obj ? obj->surface() : nullptr;
         if (s && has_valid_point(ctx.doc)) plane_canvas(ctx, *obj, *s, p, canvas);
     }
     ImGui::SetCursorScreenPos(
@@ -278,7 +278,7 @@ void draw_control_point_panel(AppContext& ctx) {
 
     // The command may have changed the document: re-read before the fields.
     obj = ctx.doc.selected();
-    s = obj ? surface_of(*obj) : nullptr;
+    s = obj ? obj->surface() : nullptr;
     if (!s || !has_valid_point(ctx.doc)) return;
     coordinate_fields(ctx, *obj, *s);
     weight_controls(ctx, *obj, *s);

@@ -64,7 +64,7 @@ double distance_to_segment(const glm::dvec2& p, const glm::dvec2& a, const glm::
 
 const doc::CurveObject* curve_in(const AppContext& ctx, std::uint64_t id) {
     const doc::Object* o = ctx.doc.find(id);
-    return o ? std::get_if<doc::CurveObject>(&o->shape) : nullptr;
+    return o ? o->curve_object() : nullptr;
 }
 
 // Starts a drag of point i whose centre is under the mouse (a point just placed).
@@ -90,7 +90,7 @@ void handle_press(AppContext& ctx, std::uint64_t id, const geom::Curve& g, const
     // Points drawn last are on top: search from the end.
     for (int i = g.count() - 1; i >= 0; --i)
         if (glm::length(px(i) - mouse) <= 8 * k) {
-            ctx.doc.selection = {id, i, -1};
+            ctx.doc.view.selection = {id, i, -1};
             start_drag(cd, i, map, mouse - px(i));
             return;
         }
@@ -161,7 +161,7 @@ int canvas_plane(const AppContext& ctx, const doc::CurveObject& c) {
 }
 
 double trace_param(const AppContext& ctx, const geom::Curve& c) {
-    const geom::Interval d = geom::domain(c.knots, c.degree, c.count());
+    const geom::Interval d = geom::domain(c);
     return denormalize_param(d, std::clamp(ctx.ui.curve.trace_t, 0.0, 1.0));
 }
 
@@ -218,7 +218,7 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const doc::CurveObjec
     dl->AddPolyline(line.data(), static_cast<int>(line.size()), rgba(col.control_net, 0.7f), 0,
                     1.2f * k);
     // The curve: uniform samples plus the knots, so corners at multiple knots stay sharp.
-    const geom::Interval d = geom::domain(g.knots, g.degree, g.count());
+    const geom::Interval d = geom::domain(g);
     std::vector<double> ts = geom::uniform_params(d.lo, d.hi, 401);
     for (int i = g.degree + 1; i < g.count(); ++i)
         ts.push_back(g.knots[static_cast<std::size_t>(i)]);
@@ -248,7 +248,7 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const doc::CurveObjec
         }
     }
     // Control points, labelled P0..Pn while the labels stay readable.
-    const int sel = ctx.doc.selection.object == id ? ctx.doc.selection.i : -1;
+    const int sel = ctx.doc.view.selection.object == id ? ctx.doc.view.selection.i : -1;
     const ImU32 text_col = ImGui::GetColorU32(ImGuiCol_Text);
     for (int i = 0; i < g.count(); ++i) {
         const ImVec2 q = px(g.points[static_cast<std::size_t>(i)]);

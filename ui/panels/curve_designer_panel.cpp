@@ -14,6 +14,7 @@
 #include "core/geom/knots.hpp"
 #include "ui/doc_access.hpp"
 #include "ui/panels/curve_designer.hpp"
+#include "ui/panels/enum_combo.hpp"
 #include "ui/panels/flow.hpp"
 #include "ui/panels/panels.hpp"
 
@@ -25,7 +26,7 @@ using namespace curve_designer;
 
 const doc::CurveObject* selected_curve(const AppContext& ctx, const doc::Object** obj) {
     *obj = ctx.doc.selected();
-    return *obj ? std::get_if<doc::CurveObject>(&(*obj)->shape) : nullptr;
+    return *obj ? (*obj)->curve_object() : nullptr;
 }
 
 void warn_text(const AppContext& ctx, const std::string& text) {
@@ -52,12 +53,9 @@ bool run(AppContext& ctx, std::unique_ptr<doc::Command> cmd) {
 
 void plane_row(AppContext& ctx, const doc::Object& obj, const doc::CurveObject& c) {
     CurveDesignerState& cd = ctx.ui.curve;
-    const char* planes[] = {"xy", "xz", "yz", "3D"};
-    int plane = static_cast<int>(c.plane);
+    doc::CurvePlane plane = c.plane;
     ImGui::SetNextItemWidth(70 * ctx.ui.scale());
-    if (ImGui::Combo("Plane", &plane, planes, 4) && plane != static_cast<int>(c.plane))
-        run(ctx,
-            doc::set_curve_plane(obj.id, static_cast<doc::CurvePlane>(plane), cd.carry_points));
+    if (enum_combo("Plane", plane)) run(ctx, doc::set_curve_plane(obj.id, plane, cd.carry_points));
     same_line_if_fits(toggle_width("move points with it"));
     ImGui::Checkbox("move points with it", &cd.carry_points);
     if (ImGui::IsItemHovered())
@@ -73,7 +71,7 @@ void plane_row(AppContext& ctx, const doc::Object& obj, const doc::CurveObject& 
 }
 
 void point_controls(AppContext& ctx, const doc::Object& obj, const doc::CurveObject& c) {
-    const int i = ctx.doc.selection.object == obj.id ? ctx.doc.selection.i : -1;
+    const int i = ctx.doc.view.selection.object == obj.id ? ctx.doc.view.selection.i : -1;
     const geom::Curve& g = c.curve;
     if (i < 0 || i >= g.count()) {
         hint_text("Click a point on the canvas to select it.");
@@ -112,7 +110,7 @@ void point_controls(AppContext& ctx, const doc::Object& obj, const doc::CurveObj
     // The weight of a rational curve; a non-rational one can be made rational.
     if (!geom::is_rational(g.type)) {
         ImGui::AlignTextToFramePadding();
-        ImGui::TextDisabled("w%d = 1 (%s)", i, geom::spline_type_name(g.type));
+        ImGui::TextDisabled("w%d = 1 (%s)", i, geom::name_of(g.type));
         same_line_if_fits(button_width("Make rational"));
         if (ImGui::SmallButton("Make rational")) {
             doc::CurveObject r = c;
@@ -163,11 +161,9 @@ void degree_and_knots(AppContext& ctx, const doc::Object& obj, const doc::CurveO
         ImGui::SetTooltip(
             "Degree elevation (Piegl & Tiller A5.9): p + 1, more points, same shape.");
 
-    const char* modes[] = {"clamped uniform", "chord length", "centripetal", "custom"};
-    int mode = static_cast<int>(c.knot_mode);
+    doc::CurveKnotMode mode = c.knot_mode;
     ImGui::SetNextItemWidth(150 * k);
-    if (ImGui::Combo("Knots", &mode, modes, 4) && mode != static_cast<int>(c.knot_mode))
-        run(ctx, doc::set_curve_knot_mode(obj.id, static_cast<doc::CurveKnotMode>(mode)));
+    if (enum_combo("Knots", mode)) run(ctx, doc::set_curve_knot_mode(obj.id, mode));
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("How knots are chosen when points are added or deleted or the degree\n"
                           "changes: clamped uniform; averaged (P&T eq. 9.8) from the chord\n"
@@ -189,7 +185,7 @@ void degree_and_knots(AppContext& ctx, const doc::Object& obj, const doc::CurveO
 void refine_controls(AppContext& ctx, const doc::Object& obj, const doc::CurveObject& c) {
     CurveDesignerState& cd = ctx.ui.curve;
     const geom::Curve& g = c.curve;
-    const geom::Interval d = geom::domain(g.knots, g.degree, g.count());
+    const geom::Interval d = geom::domain(g);
     const double t = trace_param(ctx, g);
     char label[64];
     std::snprintf(label, sizeof label, "t = %.4g", t);
@@ -249,7 +245,7 @@ void primitives(AppContext& ctx, const doc::CurveObject* c) {
         }
         ctx.seal();
         if (ctx.execute(doc::add_object(std::move(o).value())))
-            ctx.doc.selection = {ctx.doc.objects.back().id, -1, -1};
+            ctx.doc.view.selection = {ctx.doc.objects.back().id, -1, -1};
         ctx.seal();
     };
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
@@ -286,8 +282,8 @@ void draw_curve_designer_panel(AppContext& ctx) {
     const float k = ctx.ui.scale();
     {
         const geom::Curve& g = c->curve;
-        ImGui::TextWrapped("%s: %s, degree %d, %d points", obj->name.c_str(),
-                           geom::spline_type_name(g.type), g.degree, g.count());
+        ImGui::TextWrapped("%s: %s, degree %d, %d points", obj->name.c_str(), geom::name_of(g.type),
+                           g.degree, g.count());
     }
     plane_row(ctx, *obj, *c);
     if (!(c = selected_curve(ctx, &obj))) return;
@@ -305,8 +301,8 @@ void draw_curve_designer_panel(AppContext& ctx) {
     // Delete key: the selected point of this curve, unless a field has the keyboard.
     if (!ImGui::GetIO().WantTextInput && ImGui::IsWindowFocused() &&
         ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Delete), false) &&
-        ctx.doc.selection.object == id && ctx.doc.selection.has_point())
-        run(ctx, doc::delete_curve_point(id, ctx.doc.selection.i));
+        ctx.doc.view.selection.object == id && ctx.doc.view.selection.has_point())
+        run(ctx, doc::delete_curve_point(id, ctx.doc.view.selection.i));
 
     if (!(c = selected_curve(ctx, &obj))) return;
     point_controls(ctx, *obj, *c);
@@ -323,7 +319,7 @@ void draw_curve_designer_panel(AppContext& ctx) {
     refine_controls(ctx, *obj, *c);
     if (!(c = selected_curve(ctx, &obj))) return;
     if (ImGui::CollapsingHeader("Basis functions", ImGuiTreeNodeFlags_DefaultOpen)) {
-        const int sel = ctx.doc.selection.object == id ? ctx.doc.selection.i : -1;
+        const int sel = ctx.doc.view.selection.object == id ? ctx.doc.view.selection.i : -1;
         const ImVec2 p = ImGui::GetCursorScreenPos();
         basis_plot(ctx, *c, sel, {p.x, p.y, ImGui::GetContentRegionAvail().x, 90 * k});
         // Partition of unity at t: the functions sum to 1 wherever the curve exists.

@@ -37,7 +37,7 @@ void knot_strip(AppContext& ctx, const doc::Object& obj, const doc::CurveObject&
     const float pad = 12 * k;
     const geom::Curve& g = c.curve;
     const int p = g.degree, n = g.count();
-    const geom::Interval d = geom::domain(g.knots, p, n);
+    const geom::Interval d = geom::domain(g);
     const bool custom = c.knot_mode == doc::CurveKnotMode::custom;
     const std::uint64_t id = obj.id;
 
@@ -56,7 +56,7 @@ void knot_strip(AppContext& ctx, const doc::Object& obj, const doc::CurveObject&
         if (hit && ticks[*hit].interior && custom) {
             cd.drag_knot = ticks[*hit].first_index;
         } else if (hit && ticks[*hit].interior) {
-            cd.message = std::string("Knots follow the ") + doc::knot_mode_label(c.knot_mode) +
+            cd.message = std::string("Knots follow the ") + geom::label_of(c.knot_mode) +
                          " mode; choose the custom mode to drag them.";
         } else {
             cd.trace_t = s_mouse; // elsewhere: a press moves the parameter t
@@ -95,9 +95,9 @@ void knot_strip(AppContext& ctx, const doc::Object& obj, const doc::CurveObject&
 
     // Draw the knots the document holds now.
     const doc::Object* o = ctx.doc.find(id);
-    const auto* cur = o ? std::get_if<doc::CurveObject>(&o->shape) : nullptr;
+    const geom::Curve* cur = o ? o->curve() : nullptr;
     if (!cur) return;
-    const geom::Curve& h = cur->curve;
+    const geom::Curve& h = *cur;
     const std::vector<KnotTick> now_ticks = knot_ticks(h.knots, h.degree, h.count());
     ImDrawList* dl = ImGui::GetWindowDrawList();
     const bool light = ctx.ui.presentation;
@@ -150,7 +150,7 @@ void basis_plot(AppContext& ctx, const doc::CurveObject& c, int selected, const 
     const bool light = ctx.ui.presentation;
     dl->AddRectFilled(ImVec2(box.x, box.y), ImVec2(box.x + box.w, box.y + box.h),
                       light ? IM_COL32(250, 250, 250, 255) : IM_COL32(26, 28, 34, 255));
-    const geom::Interval d = geom::domain(g.knots, p, n);
+    const geom::Interval d = geom::domain(g);
     const std::vector<double> ts = geom::uniform_params(d.lo, d.hi, 201);
     std::vector<std::vector<double>> values; // values[sample][i]; empty where undefined
     double lo = 0, hi = 1;

@@ -73,7 +73,7 @@ void draw_deboor_panel(AppContext& ctx) {
     // The surface may have changed under the counter (degree, net, another patch): never
     // "step 7 of 4".
     clamp_deboor_step(ctx);
-    ImGui::Checkbox("Show in 3D (D)", &ctx.doc.display.deboor);
+    ImGui::Checkbox("Show in 3D (D)", &ctx.doc.view.display.deboor);
     // Beside the checkbox when it fits (presentation mode's narrow column: below it).
     const ImGuiStyle& style = ImGui::GetStyle();
     const float zoom_w = ImGui::CalcTextSize("Zoom to patch").x + style.FramePadding.x * 2;
@@ -97,7 +97,7 @@ void draw_deboor_panel(AppContext& ctx) {
     if (ImGui::Button("All")) {
         player.step = -1;
         player.playing = false;
-        ctx.doc.display.deboor = true;
+        ctx.doc.view.display.deboor = true;
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Keys: [ and ] step, Space plays");
     const DeBoorStepInfo info = deboor_step_info(player.step, p_u, p_v);

@@ -11,18 +11,17 @@
 #include "core/doc/commands.hpp"
 #include "core/doc/placement.hpp"
 #include "ui/actions.hpp"
+#include "ui/panels/enum_combo.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/recovery.hpp"
-#include "ui/ui_report.hpp"
 #include "ui/theme.hpp"
+#include "ui/ui_report.hpp"
 
 namespace isoparm::ui {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-const char* const type_names[] = {"Bezier", "Rational Bezier", "B-spline", "NURBS"};
 
 bool escape_pressed() {
     return ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
@@ -62,7 +61,8 @@ void new_surface_dialog(AppContext& ctx) {
     center_next(360, ctx.ui.scale());
     if (!ImGui::BeginPopupModal("New surface", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
     ImGui::TextWrapped("A flat grid of control points in the xy-plane; shape it by moving points.");
-    ImGui::Combo("Type", &f.type, type_names, 4);
+    auto type = static_cast<geom::SplineType>(f.type);
+    if (enum_combo("Type", type, ItemCase::capitalized)) f.type = static_cast<int>(type);
     const bool bezier = f.type <= 1;
     ImGui::InputInt("Rows (u)", &f.rows);
     ImGui::InputInt("Columns (v)", &f.cols);
@@ -88,14 +88,14 @@ void new_surface_dialog(AppContext& ctx) {
         doc::Object o;
         int n = 1;
         for (const doc::Object& x : ctx.doc.objects)
-            n += std::holds_alternative<doc::SurfaceObject>(x.shape) ? 1 : 0;
+            n += x.kind() == doc::ObjectKind::surface ? 1 : 0;
         o.name = "Surface " + std::to_string(n);
         o.shape = doc::SurfaceObject{doc::make_planar_grid(f.rows, f.cols, f.degree_u, f.degree_v,
                                                            static_cast<geom::SplineType>(f.type))};
         doc::place_beside_scene(ctx.doc, o.shape);
         ctx.seal();
         if (ctx.execute(doc::add_object(std::move(o)))) {
-            ctx.doc.selection = {ctx.doc.objects.back().id, -1, -1};
+            ctx.doc.view.selection = {ctx.doc.objects.back().id, -1, -1};
             fit_view(ctx);
         }
         ctx.seal();

@@ -151,7 +151,7 @@ void mesh_state(AppContext& ctx, const doc::Object& obj, const doc::ImplicitObje
 
 void draw_implicit_panel(AppContext& ctx) {
     const doc::Object* obj = ctx.doc.selected();
-    const auto* im = obj ? std::get_if<doc::ImplicitObject>(&obj->shape) : nullptr;
+    const doc::ImplicitObject* im = obj ? obj->implicit() : nullptr;
     if (!im) {
         ImGui::TextDisabled("Select an implicit surface.");
         return;

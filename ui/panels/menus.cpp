@@ -60,7 +60,7 @@ void edit_menu(AppContext& ctx) {
     ImGui::Separator();
     const bool has_point = has_valid_point(ctx.doc);
     if (menu_item("Deselect point", "Esc", false, has_point)) {
-        ctx.doc.selection.i = ctx.doc.selection.j = -1;
+        ctx.doc.view.selection.i = ctx.doc.view.selection.j = -1;
     }
     ImGui::EndMenu();
 }
@@ -101,7 +101,7 @@ void surface_menu(AppContext& ctx) {
         o.shape = implicit_presets().front().object;
         ctx.seal();
         if (ctx.execute(doc::add_object(std::move(o))))
-            ctx.doc.selection = {ctx.doc.objects.back().id, -1, -1};
+            ctx.doc.view.selection = {ctx.doc.objects.back().id, -1, -1};
         ctx.seal();
     }
     ImGui::Separator();
@@ -109,9 +109,9 @@ void surface_menu(AppContext& ctx) {
     std::uint64_t pick = 0;
     for (const doc::Object& o : ctx.doc.objects) {
         const std::string label = o.name.empty() ? "object " + std::to_string(o.id) : o.name;
-        if (menu_item(label.c_str(), nullptr, o.id == ctx.doc.selection.object)) pick = o.id;
+        if (menu_item(label.c_str(), nullptr, o.id == ctx.doc.view.selection.object)) pick = o.id;
     }
-    if (pick != 0 && pick != ctx.doc.selection.object) ctx.doc.selection = {pick, -1, -1};
+    if (pick != 0 && pick != ctx.doc.view.selection.object) ctx.doc.view.selection = {pick, -1, -1};
     ImGui::Separator();
     refine_items(ctx);
     ImGui::Separator();
@@ -127,7 +127,7 @@ void surface_menu(AppContext& ctx) {
 
 void display_menu(AppContext& ctx) {
     if (!begin_menu("Display")) return;
-    doc::DisplaySettings& d = ctx.doc.display;
+    doc::DisplaySettings& d = ctx.doc.view.display;
     if (menu_item("Shaded", "1", d.style == doc::DisplayStyle::shaded))
         d.style = doc::DisplayStyle::shaded;
     if (menu_item("Wireframe", "2", d.style == doc::DisplayStyle::wireframe))
@@ -181,7 +181,7 @@ void handle_shortcuts(AppContext& ctx) {
     const ImGuiIO& io = ImGui::GetIO();
     if (io.WantTextInput) return; // typing in a field: keys belong to the field
     if (ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId)) return;
-    doc::DisplaySettings& d = ctx.doc.display;
+    doc::DisplaySettings& d = ctx.doc.view.display;
     for (const KeyPress& k : keys) {
         if (k.alt) continue;
         if (k.ctrl) {
@@ -278,7 +278,7 @@ void handle_shortcuts(AppContext& ctx) {
             if (ctx.ui.view_mode == ViewMode::view3d_only && !ctx.ui.headless)
                 toggle_view_only(ctx);
             else
-                ctx.doc.selection.i = ctx.doc.selection.j = -1;
+                ctx.doc.view.selection.i = ctx.doc.view.selection.j = -1;
             break;
         default:
             break;

@@ -3,7 +3,6 @@
 #include <cstdio>
 #include <imgui.h>
 #include <string>
-#include <variant>
 
 #include "core/doc/commands.hpp"
 #include "ui/doc_access.hpp"
@@ -14,11 +13,10 @@ namespace isoparm::ui {
 
 namespace {
 
-const char* kind_name(const doc::Object& o) {
-    if (const auto* s = std::get_if<doc::SurfaceObject>(&o.shape))
-        return geom::spline_type_name(s->surface.type);
-    if (std::holds_alternative<doc::CurveObject>(o.shape)) return "curve";
-    return "implicit";
+// The Kind column: a surface by its spline type, else the kind as scene files name it.
+const char* kind_label(const doc::Object& o) {
+    if (const geom::Surface* s = o.surface()) return geom::name_of(s->type);
+    return geom::name_of(o.kind());
 }
 
 // One edit, one undo step, apart from whatever gesture came before.
@@ -77,7 +75,7 @@ void draw_object_list_panel(AppContext& ctx) {
                     st.renaming = 0; // Esc or a click elsewhere: the name stays
                 }
             } else {
-                const bool selected = o.id == ctx.doc.selection.object;
+                const bool selected = o.id == ctx.doc.view.selection.object;
                 const bool clicked = ImGui::Selectable(label.c_str(), selected,
                                                        ImGuiSelectableFlags_AllowDoubleClick);
                 report_item("objects/" + label);
@@ -93,7 +91,7 @@ void draw_object_list_panel(AppContext& ctx) {
                     ImGui::SetTooltip("Click: select. Double-click: rename.");
             }
             ImGui::TableNextColumn();
-            ImGui::TextDisabled("%s", kind_name(o));
+            ImGui::TextDisabled("%s", kind_label(o));
             ImGui::TableNextColumn();
             if (ImGui::SmallButton("x")) remove = o.id;
             if (ImGui::IsItemHovered())
@@ -103,7 +101,8 @@ void draw_object_list_panel(AppContext& ctx) {
         ImGui::EndTable();
     }
     // Applied after the loop: the commands change the list being drawn.
-    if (select != 0 && select != ctx.doc.selection.object) ctx.doc.selection = {select, -1, -1};
+    if (select != 0 && select != ctx.doc.view.selection.object)
+        ctx.doc.view.selection = {select, -1, -1};
     if (show.first != 0) run_alone(ctx, doc::set_visible(show.first, show.second));
     if (remove != 0 && run_alone(ctx, doc::remove_object(remove))) normalize_selection(ctx.doc);
 }

@@ -38,13 +38,13 @@ void draw_status_bar(AppContext& ctx) {
         ImGui::SameLine(0, 24 * ctx.ui.scale());
         const doc::Object* obj = nullptr;
         if (const geom::Surface* s = current_surface(ctx.doc, &obj)) {
-            ImGui::Text("%s: %s %dx%d, degree (%d,%d)", obj->name.c_str(),
-                        geom::spline_type_name(s->type), s->n_u, s->n_v, s->degree_u, s->degree_v);
+            ImGui::Text("%s: %s %dx%d, degree (%d,%d)", obj->name.c_str(), geom::name_of(s->type),
+                        s->n_u, s->n_v, s->degree_u, s->degree_v);
             if (has_valid_point(ctx.doc)) {
                 ImGui::SameLine();
-                ImGui::Text(
-                    "  %s",
-                    point_name('P', ctx.doc.selection.i, ctx.doc.selection.j, ctx.doc).c_str());
+                ImGui::Text("  %s", point_name('P', ctx.doc.view.selection.i,
+                                               ctx.doc.view.selection.j, ctx.doc)
+                                        .c_str());
             }
         } else {
             ImGui::TextUnformatted("no surface");

@@ -8,6 +8,7 @@
 
 #include "core/doc/commands.hpp"
 #include "core/doc/patches.hpp"
+#include "core/geom/knots.hpp"
 #include "ui/canvas_map.hpp"
 #include "ui/doc_access.hpp"
 #include "ui/panels/flow.hpp"
@@ -94,7 +95,7 @@ void action_note_line(const AppContext& ctx, const ActionNote& note) {
 // move that knot, all its copies together, between its neighbours; the surface follows live.
 void knot_strip(AppContext& ctx, const doc::Object& obj, const geom::Surface& s, geom::Dir dir,
                 const std::vector<KnotTick>& ticks, const std::vector<double>& px,
-                const Rect& strip, const Rect& sq, const doc::ParamRect& dom) {
+                const Rect& strip, const Rect& sq, const geom::ParamRect& dom) {
     const bool along_x = dir == geom::Dir::u;
     ImGui::SetCursorScreenPos(ImVec2(strip.x, strip.y));
     ImGui::InvisibleButton(along_x ? "##uknots" : "##vknots", ImVec2(strip.w, strip.h));
@@ -162,9 +163,8 @@ void knot_strip(AppContext& ctx, const doc::Object& obj, const geom::Surface& s,
 void continuity_controls(AppContext& ctx, const doc::Object& obj) {
     ImGui::TextUnformatted("Keep across borders:");
     for (doc::Continuity c : {doc::Continuity::off, doc::Continuity::c0, doc::Continuity::c1}) {
-        same_line_if_fits(toggle_width(doc::continuity_name(c)));
-        if (ImGui::RadioButton(doc::continuity_name(c), ctx.doc.continuity == c))
-            set_continuity(ctx, c);
+        same_line_if_fits(toggle_width(geom::name_of(c)));
+        if (ImGui::RadioButton(geom::name_of(c), ctx.doc.continuity == c)) set_continuity(ctx, c);
     }
     if (ctx.doc.continuity == doc::Continuity::off) return;
     const bool c1 = ctx.doc.continuity == doc::Continuity::c1;
@@ -189,7 +189,7 @@ void continuity_controls(AppContext& ctx, const doc::Object& obj) {
     report_fact("borders", static_cast<double>(borders.size()));
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("%d of %d borders kept %s when a point moves", held,
-                       static_cast<int>(borders.size()), doc::continuity_name(ctx.doc.continuity));
+                       static_cast<int>(borders.size()), geom::name_of(ctx.doc.continuity));
     ImGui::PopStyleColor();
     // Why the others are not, in the panel itself (a tooltip would hide most of it).
     if (!why.empty()) {
@@ -214,11 +214,11 @@ void draw_tracing_panel(AppContext& ctx) {
     }
     const float k = ctx.ui.scale();
     // Subpatches share the original domain: the square shows all of it (issue 5).
-    const doc::ParamRect dom = doc::tracing_domain(ctx.doc, *obj);
+    const geom::ParamRect dom = doc::tracing_domain(ctx.doc, *obj);
     const std::vector<const doc::Object*> patches = doc::patch_members(ctx.doc, obj->patch_group);
     const glm::dvec2 uv = indicator_params(ctx.doc, *obj);
-    ImGui::TextWrapped("%s  (%s, degree %d x %d)", obj->name.c_str(),
-                       geom::spline_type_name(s->type), s->degree_u, s->degree_v);
+    ImGui::TextWrapped("%s  (%s, degree %d x %d)", obj->name.c_str(), geom::name_of(s->type),
+                       s->degree_u, s->degree_v);
     if (!patches.empty()) {
         char part[48];
         std::snprintf(
@@ -256,7 +256,7 @@ void draw_tracing_panel(AppContext& ctx) {
     report_item("tracing/square");
     if (ImGui::IsItemActive()) {
         const ImVec2 m = ImGui::GetIO().MousePos;
-        ctx.doc.indicator = pixel_to_domain(sq, {m.x, m.y}); // view state, not undoable
+        ctx.doc.view.indicator = pixel_to_domain(sq, {m.x, m.y}); // view state, not undoable
     }
     ctx.ui.indicator_drag = ImGui::IsItemActive();
 
@@ -268,8 +268,7 @@ void draw_tracing_panel(AppContext& ctx) {
     // The other subpatches, and the current one's part of the square.
     if (!patches.empty()) {
         for (const doc::Object* p : patches) {
-            const doc::ParamRect r =
-                doc::surface_domain(std::get<doc::SurfaceObject>(p->shape).surface);
+            const geom::ParamRect r = geom::domain(*p->surface());
             const ImVec2 lo = iv(domain_to_pixel(sq, to_square(r.u.lo, r.v.hi)));
             const ImVec2 hi = iv(domain_to_pixel(sq, to_square(r.u.hi, r.v.lo)));
             if (p == obj) dl->AddRectFilled(lo, hi, pal.current);
@@ -281,7 +280,7 @@ void draw_tracing_panel(AppContext& ctx) {
     }
 
     // Knot lines across the current patch (where the knot curves run) and ticks with labels.
-    const doc::ParamRect own = doc::surface_domain(*s);
+    const geom::ParamRect own = geom::domain(*s);
     const std::vector<KnotTick> tu = knot_ticks(s->knots_u, s->degree_u, s->n_u);
     const std::vector<KnotTick> tv = knot_ticks(s->knots_v, s->degree_v, s->n_v);
     const float tick = 7 * k;
@@ -367,7 +366,7 @@ void draw_tracing_panel(AppContext& ctx) {
     dl->AddText(ImVec2(a.x + 4 * k, a.y + 2 * k), pal.text, "v");
 
     // The indicator with its two isoparametric lines.
-    const ImVec2 ip = iv(domain_to_pixel(sq, ctx.doc.indicator));
+    const ImVec2 ip = iv(domain_to_pixel(sq, ctx.doc.view.indicator));
     dl->AddLine(ImVec2(ip.x, a.y), ImVec2(ip.x, b.y), pal.cross, 1.5f * k);
     dl->AddLine(ImVec2(a.x, ip.y), ImVec2(b.x, ip.y), pal.cross, 1.5f * k);
     dl->AddCircleFilled(ip, 7 * k, pal.indicator, 24);
@@ -393,12 +392,12 @@ void draw_tracing_panel(AppContext& ctx) {
                                 : std::max(avail.x - label, field);
     ImGui::SetNextItemWidth(width);
     if (ImGui::InputDouble("u", &u, 0.01, 0.1, "%.4f"))
-        ctx.doc.indicator.x = std::clamp(normalize_param(dom.u, u), 0.0, 1.0);
+        ctx.doc.view.indicator.x = std::clamp(normalize_param(dom.u, u), 0.0, 1.0);
     report_item("tracing/u");
     if (one_row) ImGui::SameLine();
     ImGui::SetNextItemWidth(width);
     if (ImGui::InputDouble("v", &v, 0.01, 0.1, "%.4f"))
-        ctx.doc.indicator.y = std::clamp(normalize_param(dom.v, v), 0.0, 1.0);
+        ctx.doc.view.indicator.y = std::clamp(normalize_param(dom.v, v), 0.0, 1.0);
     report_item("tracing/v");
     if (note) action_note_line(ctx, *note);
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));

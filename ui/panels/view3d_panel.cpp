@@ -15,6 +15,7 @@
 
 #include "core/doc/commands.hpp"
 #include "core/doc/commands_curve.hpp"
+#include "core/doc/placement.hpp"
 #include "core/geom/deboor.hpp"
 #include "ui/actions.hpp"
 #include "ui/canvas_map.hpp"
@@ -41,15 +42,14 @@ struct Candidate {
 // Every control point the user can click: those of visible objects, when points are shown.
 std::vector<Candidate> pick_candidates(const doc::Document& d) {
     std::vector<Candidate> out;
-    if (!d.display.control_points) return out;
+    if (!d.view.display.control_points) return out;
     for (const doc::Object& o : d.objects) {
         if (!o.visible) continue;
-        if (const geom::Surface* s = surface_of(o)) {
+        if (const geom::Surface* s = o.surface()) {
             for (int i = 0; i < s->n_u; ++i)
                 for (int j = 0; j < s->n_v; ++j) out.push_back({{o.id, i, j}, s->point(i, j)});
-        } else if (const auto* c = std::get_if<doc::CurveObject>(&o.shape)) {
-            for (int i = 0; i < c->curve.count(); ++i)
-                out.push_back({{o.id, i, -1}, c->curve.points[i]});
+        } else if (const geom::Curve* c = o.curve()) {
+            for (int i = 0; i < c->count(); ++i) out.push_back({{o.id, i, -1}, c->points[i]});
         }
     }
     return out;
@@ -97,7 +97,7 @@ void handle_mouse(AppContext& ctx, const Viewport& vp) {
         drag.start_mouse = mouse;
         if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !io.KeyCtrl) {
             if (const auto hit = pick(ctx, vp, mouse)) {
-                ctx.doc.selection = {hit->ref.object, hit->ref.i, hit->ref.j};
+                ctx.doc.view.selection = {hit->ref.object, hit->ref.i, hit->ref.j};
                 drag.kind = ViewDrag::Kind::point;
                 drag.point = hit->ref;
                 drag.start = hit->position;
@@ -145,7 +145,7 @@ void handle_mouse(AppContext& ctx, const Viewport& vp) {
 
     if (ImGui::IsItemDeactivated()) {
         if (drag.kind == ViewDrag::Kind::orbit && !drag.moved) {
-            ctx.doc.selection.i = ctx.doc.selection.j = -1; // a click on empty space
+            ctx.doc.view.selection.i = ctx.doc.view.selection.j = -1; // a click on empty space
         }
         drag = {};
         ctx.seal();
@@ -173,7 +173,7 @@ void report_projected_points(const AppContext& ctx, const Viewport& vp) {
 
 void draw_labels(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
     const doc::Document& d = ctx.doc;
-    if (!d.display.point_ids) return;
+    if (!d.view.display.point_ids) return;
     const doc::Object* obj = nullptr;
     const geom::Surface* s = current_surface(d, &obj);
     if (!s) return;
@@ -202,7 +202,7 @@ void draw_labels(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
 // the level's colour: the lecture can say "d^2_3,1" and the room finds it.
 void draw_deboor_labels(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
     const doc::Document& d = ctx.doc;
-    if (!d.display.deboor || ctx.ui.deboor.step < 0) return;
+    if (!d.view.display.deboor || ctx.ui.deboor.step < 0) return;
     const doc::Object* obj = nullptr;
     const geom::Surface* s = current_surface(d, &obj);
     if (!s) return;
@@ -246,7 +246,7 @@ void draw_hover_ring(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) 
         dl->AddCircle(ImVec2(static_cast<float>(p.pixel.x), static_cast<float>(p.pixel.y)),
                       9.f * ctx.ui.scale(), IM_COL32(255, 255, 255, 220), 24, 2.f * ctx.ui.scale());
         const doc::Object* o = ctx.doc.find(hit->ref.object);
-        const geom::Surface* s = o ? surface_of(*o) : nullptr;
+        const geom::Surface* s = o ? o->surface() : nullptr;
         const std::string tip = point_label(hit->ref.i, hit->ref.j, s ? s->n_u : 0, s ? s->n_v : 0);
         ImGui::SetTooltip("%s  (%.3g, %.3g, %.3g)", tip.c_str(), hit->position.x, hit->position.y,
                           hit->position.z);
@@ -339,12 +339,12 @@ void transform_slider(AppContext& ctx, int k, float width) {
         sl.applied = 0;
         ctx.seal();
         // Pivot and step size are fixed for the whole gesture.
-        if (const geom::Surface* s = surface_of(*sel)) {
+        if (const geom::Surface* s = sel->surface()) {
             glm::dvec3 c(0);
             for (const glm::dvec3& p : s->points) c += p;
             sl.pivot = c / static_cast<double>(std::max<std::size_t>(s->points.size(), 1));
         }
-        const auto box = scene_bounds(ctx.doc);
+        const auto box = doc::scene_bounds(ctx.doc);
         sl.scale = box ? std::max(glm::length(box->hi - box->lo), 1e-3) : 1.0;
     }
     if (ImGui::IsItemActive() && held && id != 0 && *value != sl.applied) {

@@ -61,7 +61,7 @@ void ImplicitMeshes::adopt(Entry& e, const ImplicitKey& key, std::optional<geom:
 void ImplicitMeshes::update(const doc::Document& d, const Mode& mode) {
     for (auto& [id, e] : entries_) e.used = false;
     for (const doc::Object& o : d.objects) {
-        const auto* im = std::get_if<doc::ImplicitObject>(&o.shape);
+        const doc::ImplicitObject* im = o.implicit();
         if (!im || !o.visible) continue;
         Entry& e = entries_[o.id];
         e.used = true;

@@ -64,7 +64,7 @@ void BM_Frame1440x900(benchmark::State& state, const char* scene, Gesture gestur
             case Gesture::idle:
                 break;
             case Gesture::indicator:
-                ctx.doc.indicator = {0.1 + t, 0.3 + 0.5 * t};
+                ctx.doc.view.indicator = {0.1 + t, 0.3 + 0.5 * t};
                 break;
             case Gesture::point:
                 ctx.execute(doc::move_control_point(id, pi, pj, p0 + glm::dvec3(0, 0, t)));

@@ -1,0 +1,218 @@
+#include "core/exchange/iges_writer.hpp"
+
+#include <cstdio>
+
+#include "core/exchange/real_text.hpp"
+#include "core/geom/knots.hpp"
+
+namespace isoparm::exchange {
+
+namespace {
+
+constexpr int data_columns = 64; // Parameter Data: columns 1-64 data, 65-72 the DE pointer
+
+// One 80-column record: `text` padded to 72 columns, the section letter, the sequence number.
+std::string record(const std::string& text, char section, int sequence) {
+    char tail[16];
+    std::snprintf(tail, sizeof tail, "%c%7d", section, sequence);
+    std::string line = text;
+    line.resize(72, ' ');
+    return line + tail + "\n";
+}
+
+// IGES strings are Hollerith constants: "5Hhello".
+std::string hollerith(const std::string& s) {
+    return std::to_string(s.size()) + "H" + s;
+}
+
+// Free-format parameter records: tokens joined by commas, ended by ';', broken between tokens
+// so that no line passes column 64; each line carries the entity's DE pointer in 65-72.
+void parameter_records(const std::vector<std::string>& tokens, int de_pointer, int& sequence,
+                       std::string& out) {
+    std::string line;
+    for (std::size_t k = 0; k < tokens.size(); ++k) {
+        const std::string token = tokens[k] + (k + 1 == tokens.size() ? ";" : ",");
+        if (!line.empty() && line.size() + token.size() > data_columns) {
+            line.resize(data_columns, ' ');
+            char pointer[16];
+            std::snprintf(pointer, sizeof pointer, "%8d", de_pointer);
+            out += record(line + pointer, 'P', sequence++);
+            line.clear();
+        }
+        line += token;
+    }
+    line.resize(data_columns, ' ');
+    char pointer[16];
+    std::snprintf(pointer, sizeof pointer, "%8d", de_pointer);
+    out += record(line + pointer, 'P', sequence++);
+}
+
+// The two Directory Entry records of an entity (fields of 8 columns).
+std::string directory_entry(int type, int parameter_start, int parameter_lines, int form,
+                            int& sequence) {
+    char first[80], second[80];
+    // type, parameter data, structure, line font, level, view, transformation, label display,
+    // status (visible, independent, geometry, top down).
+    std::snprintf(first, sizeof first, "%8d%8d%8d%8d%8d%8d%8d%8d%8s", type, parameter_start, 0, 0,
+                  0, 0, 0, 0, "00000000");
+    // type, line weight, colour, parameter line count, form, reserved x2, label, subscript.
+    std::snprintf(second, sizeof second, "%8d%8d%8d%8d%8d%8s%8s%8s%8d", type, 0, 0, parameter_lines,
+                  form, "", "", "", 0);
+    std::string out = record(first, 'D', sequence++);
+    out += record(second, 'D', sequence++);
+    return out;
+}
+
+std::vector<std::string> curve_tokens(const geom::Curve& c) {
+    const int K = c.count() - 1, M = c.degree;
+    const bool polynomial = !geom::is_rational(c.type);
+    std::vector<std::string> t = {
+        "126", std::to_string(K), std::to_string(M), "0", "0", polynomial ? "1" : "0", "0"};
+    for (double u : c.knots) t.push_back(real_text(u));
+    for (double w : c.weights) t.push_back(real_text(w));
+    for (const glm::dvec3& p : c.points)
+        for (int a = 0; a < 3; ++a) t.push_back(real_text(p[a]));
+    const geom::Interval d = geom::domain(c.knots, c.degree, c.count());
+    t.push_back(real_text(d.lo));
+    t.push_back(real_text(d.hi));
+    for (const char* n : {"0.0", "0.0", "1.0"}) t.push_back(n); // normal, used when planar
+    return t;
+}
+
+std::vector<std::string> surface_tokens(const geom::Surface& s) {
+    const bool polynomial = !geom::is_rational(s.type);
+    std::vector<std::string> t = {"128",
+                                  std::to_string(s.n_u - 1),
+                                  std::to_string(s.n_v - 1),
+                                  std::to_string(s.degree_u),
+                                  std::to_string(s.degree_v),
+                                  "0",
+                                  "0",
+                                  polynomial ? "1" : "0",
+                                  "0",
+                                  "0"};
+    for (double u : s.knots_u) t.push_back(real_text(u));
+    for (double v : s.knots_v) t.push_back(real_text(v));
+    // Weights and points with the first index (u) varying fastest: W(0,0), W(1,0), ...
+    for (int j = 0; j < s.n_v; ++j)
+        for (int i = 0; i < s.n_u; ++i) t.push_back(real_text(s.weight(i, j)));
+    for (int j = 0; j < s.n_v; ++j)
+        for (int i = 0; i < s.n_u; ++i)
+            for (int a = 0; a < 3; ++a) t.push_back(real_text(s.point(i, j)[a]));
+    const geom::Interval du = geom::domain(s.knots_u, s.degree_u, s.n_u);
+    const geom::Interval dv = geom::domain(s.knots_v, s.degree_v, s.n_v);
+    for (double x : {du.lo, du.hi, dv.lo, dv.hi}) t.push_back(real_text(x));
+    return t;
+}
+
+} // namespace
+
+geom::Status check_positive_weights(const ExactShape& shape) {
+    if (const auto* c = std::get_if<geom::Curve>(&shape)) {
+        for (std::size_t k = 0; k < c->weights.size(); ++k)
+            if (!(c->weights[k] > 0))
+                return geom::make_error(geom::ErrorCode::weights,
+                                        "weight " + geom::format_number(c->weights[k]) +
+                                            " of control point " + std::to_string(k) +
+                                            " is not positive: IGES and STEP readers accept "
+                                            "only positive weights; export a mesh (obj_mesh, "
+                                            "stl_ascii, ply) instead",
+                                        "/weights/" + std::to_string(k));
+        return geom::Ok{};
+    }
+    const auto& s = std::get<geom::Surface>(shape);
+    for (int i = 0; i < s.n_u; ++i)
+        for (int j = 0; j < s.n_v; ++j)
+            if (!(s.weight(i, j) > 0))
+                return geom::make_error(geom::ErrorCode::weights,
+                                        "weight " + geom::format_number(s.weight(i, j)) +
+                                            " of control point (" + std::to_string(i) + ", " +
+                                            std::to_string(j) +
+                                            ") is not positive: IGES and STEP readers accept "
+                                            "only positive weights; export a mesh (obj_mesh, "
+                                            "stl_ascii, ply) instead",
+                                        "/weights/" + std::to_string(i) + "/" + std::to_string(j));
+    return geom::Ok{};
+}
+
+geom::Expected<std::string> iges_text(const std::vector<ExactShape>& shapes,
+                                      const std::string& name) {
+    for (std::size_t k = 0; k < shapes.size(); ++k)
+        if (geom::Status st = check_positive_weights(shapes[k]); !st)
+            return shapes.size() == 1 ? st.error()
+                                      : st.error().under("/objects/" + std::to_string(k));
+
+    std::string start, global, directory, parameters;
+    int s_seq = 1, g_seq = 1, d_seq = 1, p_seq = 1;
+    start += record("isoparm: exact NURBS geometry (IGES 5.3, entities 126 and 128)", 'S', s_seq++);
+
+    double max_coordinate = 0;
+    for (const ExactShape& shape : shapes)
+        std::visit(
+            [&](const auto& g) {
+                for (const glm::dvec3& p : g.points)
+                    for (int a = 0; a < 3; ++a)
+                        max_coordinate = std::max(max_coordinate, std::abs(p[a]));
+            },
+            shape);
+    // The Global parameters 1-25 (the 26th, an application protocol, defaults): delimiters,
+    // product and file names, system, number formats, scale, units (2 = millimetres), line
+    // weights, date, resolution, size, author, version 11 (= 5.3), drafting standard, last change.
+    const std::string date = hollerith("20261124.000000");
+    const std::vector<std::string> globals = {"1H,",
+                                              "1H;",
+                                              hollerith(name),
+                                              hollerith(name),
+                                              hollerith("isoparm"),
+                                              hollerith("isoparm"),
+                                              "32",
+                                              "38",
+                                              "6",
+                                              "308",
+                                              "15",
+                                              hollerith(name),
+                                              "1.0",
+                                              "2",
+                                              hollerith("MM"),
+                                              "1",
+                                              "1.0",
+                                              date,
+                                              "1.0E-9",
+                                              real_text(max_coordinate),
+                                              hollerith("isoparm user"),
+                                              hollerith("isoparm"),
+                                              "11",
+                                              "0",
+                                              date};
+    {
+        std::string line;
+        for (std::size_t k = 0; k < globals.size(); ++k) {
+            const std::string token = globals[k] + (k + 1 == globals.size() ? ";" : ",");
+            if (!line.empty() && line.size() + token.size() > 72) {
+                global += record(line, 'G', g_seq++);
+                line.clear();
+            }
+            line += token;
+        }
+        global += record(line, 'G', g_seq++);
+    }
+
+    for (const ExactShape& shape : shapes) {
+        const bool is_curve = std::holds_alternative<geom::Curve>(shape);
+        const std::vector<std::string> tokens =
+            is_curve ? curve_tokens(std::get<geom::Curve>(shape))
+                     : surface_tokens(std::get<geom::Surface>(shape));
+        const int de_pointer = d_seq, parameter_start = p_seq;
+        std::string records;
+        parameter_records(tokens, de_pointer, p_seq, records);
+        parameters += records;
+        directory += directory_entry(is_curve ? 126 : 128, parameter_start, p_seq - parameter_start,
+                                     0, d_seq);
+    }
+    char terminate[80];
+    std::snprintf(terminate, sizeof terminate, "S%07dG%07dD%07dP%07d", s_seq - 1, g_seq - 1,
+                  d_seq - 1, p_seq - 1);
+    return start + global + directory + parameters + record(terminate, 'T', 1);
+}
+
+} // namespace isoparm::exchange

@@ -1,0 +1,34 @@
+// Edits that change the shape on purpose, as DesignMentor's curve system offered them: closing
+// a curve periodically, and splitting a multiple knot.
+#pragma once
+
+#include <optional>
+
+#include "core/geom/status.hpp"
+#include "core/geom/types.hpp"
+
+namespace isoparm::geom {
+
+// The closed (periodic) curve of the same control polygon: the first p control points (and
+// weights) repeated at the end, unclamped uniform knots (k - p) / n for n original points, so
+// the domain [knots[p], knots[n]] of the new count is [0, 1] and the ends meet with
+// C^(p-1) continuity. The shape is a new one: the polygon is now closed. Bezier types become
+// bspline (rational ones nurbs).
+Curve close_periodic(const Curve& c);
+// Each line along `dir` closed the same way.
+Surface close_periodic(const Surface& s, Dir dir);
+
+// DesignMentor's knot splitting: the control points stay and the first copy of `knot` (of
+// multiplicity m >= 2) moves to knot - delta, so `knot` keeps m - 1 copies and a simple knot
+// appears just before it; the shape changes slightly. delta defaults to 1% of the span before
+// the knot. Errors (`schema`): a value that is not a knot, or is simple, or has no knot before
+// it ("/knot"); delta not > 0 or reaching the previous distinct knot ("/delta").
+template <class Shape> struct KnotSplit {
+    Shape result;
+    double max_change = 0; // largest distance between old and new over a dense sample
+};
+Expected<KnotSplit<Curve>> split_knot(const Curve& c, double knot, std::optional<double> delta);
+Expected<KnotSplit<Surface>> split_knot(const Surface& s, Dir dir, double knot,
+                                        std::optional<double> delta);
+
+} // namespace isoparm::geom
