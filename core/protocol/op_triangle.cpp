@@ -59,6 +59,26 @@ geom::Status spend_on_triangle(const geom::TrianglePatch& t, double count, int d
             std::to_string(t.degree) + " triangle");
 }
 
+// The fields of de_casteljau and split: a triangle and one `param`, with de Casteljau's cost
+// charged (`strict`: strictly inside; `all_levels`: the answer holds every level).
+struct TriangleAt {
+    geom::TrianglePatch triangle;
+    geom::Barycentric param{};
+};
+Expected<TriangleAt> read_triangle_at(const json& request, std::string_view op, bool strict,
+                                      bool all_levels) {
+    if (geom::Status s = check_fields(request, op, {"triangle", "param"}); !s) return s.error();
+    Expected<geom::TrianglePatch> t = read_triangle(request);
+    if (!t) return t.error();
+    const json* param = find_member(request, "param");
+    if (!param) return missing_member("", "param");
+    Expected<geom::Barycentric> p = read_barycentric(*param, "/param", strict);
+    if (!p) return p.error();
+    if (geom::Status ok = spend_on_triangle(*t, 1, 0, all_levels, "/triangle"); !ok)
+        return ok.error();
+    return TriangleAt{std::move(t).value(), *p};
+}
+
 json optional_points(const std::vector<std::optional<glm::dvec3>>& level) {
     json out = json::array();
     for (const auto& p : level) out.push_back(optional_point(p));
@@ -117,17 +137,10 @@ OpResult op_triangle_evaluate(const json& request) {
 }
 
 OpResult op_de_casteljau(const json& request) {
-    if (geom::Status s = check_fields(request, "de_casteljau", {"triangle", "param"}); !s)
-        return s.error();
-    Expected<geom::TrianglePatch> t = read_triangle(request);
-    if (!t) return t.error();
-    const json* param = find_member(request, "param");
-    if (!param) return missing_member("", "param");
-    Expected<geom::Barycentric> p = read_barycentric(*param, "/param", false);
-    if (!p) return p.error();
-    if (geom::Status ok = spend_on_triangle(*t, 1, 0, true, "/triangle"); !ok) return ok.error();
+    Expected<TriangleAt> at = read_triangle_at(request, "de_casteljau", false, true);
+    if (!at) return at.error();
     json levels = json::array();
-    for (const auto& level : geom::triangle_de_casteljau(*t, *p))
+    for (const auto& level : geom::triangle_de_casteljau(at->triangle, at->param))
         levels.push_back(optional_points(level));
     json answer = json::object();
     answer["levels"] = std::move(levels);
@@ -155,16 +168,9 @@ OpResult op_triangle_elevate(const json& request) {
 }
 
 OpResult op_triangle_split(const json& request) {
-    if (geom::Status s = check_fields(request, "split", {"triangle", "param"}); !s)
-        return s.error();
-    Expected<geom::TrianglePatch> t = read_triangle(request);
-    if (!t) return t.error();
-    const json* param = find_member(request, "param");
-    if (!param) return missing_member("", "param");
-    Expected<geom::Barycentric> p = read_barycentric(*param, "/param", true);
-    if (!p) return p.error();
-    if (geom::Status ok = spend_on_triangle(*t, 1, 0, false, "/triangle"); !ok) return ok.error();
-    auto pieces = geom::split_triangle(*t, *p);
+    Expected<TriangleAt> at = read_triangle_at(request, "split", true, false);
+    if (!at) return at.error();
+    auto pieces = geom::split_triangle(at->triangle, at->param);
     if (!pieces) return pieces.error();
     json list = json::array();
     for (const geom::TrianglePatch& piece : *pieces) list.push_back(triangle_to_json(piece));
