@@ -3,7 +3,7 @@
 #include <iostream>
 
 #include "app/commands.hpp"
-#include "ui/data_dir.hpp"
+#include "ui/view/data_dir.hpp"
 
 namespace isoparm::app {
 

@@ -21,8 +21,8 @@
 #include "core/scene/autosave_timer.hpp"
 #include "ui/actions.hpp"
 #include "ui/render/renderer.hpp"
-#include "ui/settings.hpp"
-#include "ui/window_placement.hpp"
+#include "ui/view/settings.hpp"
+#include "ui/view/window_placement.hpp"
 #include "ui/workstation.hpp"
 
 namespace isoparm::app {

@@ -11,12 +11,13 @@
 #include <vector>
 
 #include "app/commands.hpp"
-#include "core/json/out_of_memory.hpp"
 #include "core/doc/patches.hpp"
 #include "core/geom/knots.hpp"
+#include "core/json/out_of_memory.hpp"
 #include "ui/app_context.hpp"
-#include "ui/doc_access.hpp"
 #include "ui/headless/headless_render.hpp"
+#include "ui/view/current_patch.hpp"
+#include "ui/view/doc_access.hpp"
 
 namespace isoparm::app {
 
@@ -121,7 +122,7 @@ std::string configure(const RenderOptions& o, ui::AppContext& ctx) {
                        geom::format_number(dv.lo) + ", " + geom::format_number(dv.hi) + "]";
             d.view.indicator = {((*uv)[0] - du.lo) / (du.hi - du.lo),
                                 ((*uv)[1] - dv.lo) / (dv.hi - dv.lo)};
-            doc::follow_indicator(d, current->id);
+            ui::follow_indicator(d, current->id);
         }
         if (!o.select.empty()) {
             const doc::Object* current = nullptr;

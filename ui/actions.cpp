@@ -4,9 +4,9 @@
 #include <filesystem>
 
 #include "core/scene/scene_io.hpp"
-#include "ui/doc_access.hpp"
-#include "ui/scene_budget.hpp"
-#include "ui/scene_builder.hpp"
+#include "ui/view/doc_access.hpp"
+#include "ui/view/scene_budget.hpp"
+#include "ui/view/scene_builder.hpp"
 
 namespace isoparm::ui {
 

@@ -9,8 +9,8 @@
 #include "core/doc/command.hpp"
 #include "core/doc/document.hpp"
 #include "core/json/input_file.hpp"
-#include "ui/settings.hpp"
 #include "ui/ui_state.hpp"
+#include "ui/view/settings.hpp"
 
 namespace isoparm::ui {
 

@@ -10,7 +10,7 @@
 #include "core/doc/restore_command.hpp"
 #include "core/scene/scene_io.hpp"
 #include "ui/actions.hpp"
-#include "ui/doc_access.hpp"
+#include "ui/view/doc_access.hpp"
 
 namespace isoparm::ui {
 

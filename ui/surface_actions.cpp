@@ -7,9 +7,9 @@
 #include "core/doc/patches.hpp"
 #include "core/geom/deboor.hpp"
 #include "core/geom/knots.hpp"
-#include "ui/deboor_overlay.hpp"
-#include "ui/doc_access.hpp"
-#include "ui/render/camera.hpp"
+#include "ui/view/camera.hpp"
+#include "ui/view/deboor_overlay.hpp"
+#include "ui/view/doc_access.hpp"
 
 namespace isoparm::ui {
 

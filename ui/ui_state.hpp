@@ -11,12 +11,12 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "core/scene/autosave.hpp"
 #include "core/geom/types.hpp"
-#include "ui/canvas_map.hpp"
-#include "ui/layout.hpp"
-#include "ui/render/camera.hpp"
-#include "ui/render/picking.hpp"
+#include "core/scene/autosave.hpp"
+#include "ui/view/camera.hpp"
+#include "ui/view/canvas_map.hpp"
+#include "ui/view/layout.hpp"
+#include "ui/view/picking.hpp"
 
 namespace isoparm::ui {
 
@@ -129,7 +129,7 @@ struct CurveDesignerState {
     std::string error; // why the last Build was refused, shown in the dialog until the next
 };
 
-// De Boor's construction shown one level at a time (issue 5): the u-stage's levels over all
+// De Boor's construction shown one level at a time: the u-stage's levels over all
 // rows, then the v-stage's. step -1 shows everything; 0 only the control points.
 struct DeBoorPlayer {
     int step = -1;

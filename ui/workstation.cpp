@@ -8,17 +8,17 @@
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
 
-#include "core/doc/patches.hpp"
 #include "ui/actions.hpp"
-#include "ui/doc_access.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/render/gl.hpp"
-#include "ui/render/implicit_meshes.hpp"
 #include "ui/render/renderer.hpp"
-#include "ui/scene_builder.hpp"
 #include "ui/surface_actions.hpp"
 #include "ui/theme.hpp"
 #include "ui/ui_report.hpp"
+#include "ui/view/current_patch.hpp"
+#include "ui/view/doc_access.hpp"
+#include "ui/view/implicit_meshes.hpp"
+#include "ui/view/scene_builder.hpp"
 
 namespace isoparm::ui {
 
@@ -255,12 +255,12 @@ void Workstation::frame(unsigned target_framebuffer) {
     ImGui::Render();
     flush_ui_report(ctx_);
     // Subpatches: the indicator moved into another patch's part makes it current; a patch
-    // picked otherwise takes the indicator along (core/doc/patches.hpp).
+    // picked otherwise takes the indicator along (ui/view/current_patch.hpp).
     {
         const doc::Object* current = nullptr;
         current_surface(ctx_.doc, &current);
-        last_current_ = current ? doc::sync_patch_and_indicator(ctx_.doc, current->id,
-                                                                last_indicator_, last_current_)
+        last_current_ = current ? sync_patch_and_indicator(ctx_.doc, current->id, last_indicator_,
+                                                           last_current_)
                                 : 0;
         last_indicator_ = ctx_.doc.view.indicator;
     }

@@ -54,7 +54,7 @@ struct SurfaceObject {
     geom::Surface surface;
 };
 
-// An implicit surface f(x, y, z) = 0 (issue 7 fills in its editing).
+// An implicit surface f(x, y, z) = 0.
 struct ImplicitObject {
     std::string expression;
     std::vector<std::string> parameter_names;
@@ -102,7 +102,7 @@ struct Object {
     bool visible = true;
     // Subpatches split from one surface share a group id (0: not a subpatch). They keep the
     // original parameters, so together they tile the original domain and the tracing square
-    // shows that whole domain (issue 5; core/doc/patches.hpp).
+    // shows that whole domain (core/doc/patches.hpp).
     std::uint64_t patch_group = 0;
 
     ObjectKind kind() const { return kind_of(shape); }

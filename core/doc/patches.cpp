@@ -143,44 +143,6 @@ std::uint64_t patch_at(const Document& doc, std::uint64_t group, glm::dvec2 uv,
     return first;
 }
 
-std::uint64_t patch_for_indicator(const Document& doc, std::uint64_t current) {
-    const Object* o = doc.find(current);
-    if (!o || o->patch_group == 0 || !o->surface()) return current;
-    const geom::ParamRect r = tracing_domain(doc, *o);
-    const glm::dvec2 uv{r.u.lo + doc.view.indicator.x * (r.u.hi - r.u.lo),
-                        r.v.lo + doc.view.indicator.y * (r.v.hi - r.v.lo)};
-    const std::uint64_t found = patch_at(doc, o->patch_group, uv, current);
-    return found != 0 ? found : current;
-}
-
-bool follow_indicator(Document& doc, std::uint64_t current) {
-    const std::uint64_t next = patch_for_indicator(doc, current);
-    if (next == current) return false;
-    doc.view.selection = {next, -1, -1};
-    return true;
-}
-
-std::uint64_t sync_patch_and_indicator(Document& doc, std::uint64_t current,
-                                       glm::dvec2 last_indicator, std::uint64_t last_current) {
-    const Object* o = doc.find(current);
-    if (!o || o->patch_group == 0 || !o->surface()) return current;
-    if (!(doc.view.indicator == last_indicator)) {
-        const std::uint64_t next = patch_for_indicator(doc, current);
-        if (next != current) doc.view.selection = {next, -1, -1};
-        return next;
-    }
-    if (current == last_current) return current;
-    const geom::ParamRect all = tracing_domain(doc, *o);
-    const geom::ParamRect own = geom::domain(*o->surface());
-    auto into = [](const geom::Interval& whole, const geom::Interval& part, double s) {
-        const double t = std::clamp(whole.lo + s * (whole.hi - whole.lo), part.lo, part.hi);
-        return whole.hi > whole.lo ? (t - whole.lo) / (whole.hi - whole.lo) : 0.0;
-    };
-    doc.view.indicator = {into(all.u, own.u, doc.view.indicator.x),
-                          into(all.v, own.v, doc.view.indicator.y)};
-    return current;
-}
-
 std::optional<geom::Error> check_patch_groups(const Document& doc) {
     for (std::size_t a = 0; a < doc.objects.size(); ++a) {
         const Object& A = doc.objects[a];

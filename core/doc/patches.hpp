@@ -1,4 +1,4 @@
-// Subpatches that keep sharing their original domain (issue 5): the group's domain, which
+// Subpatches that keep sharing their original domain: the group's domain, which
 // patch holds a parameter, the borders patches share, and continuity kept across them.
 #pragma once
 
@@ -28,23 +28,6 @@ geom::ParamRect tracing_domain(const Document& doc, const Object& surface_object
 // while the indicator runs along a border), else the first in document order. 0: none.
 std::uint64_t patch_at(const Document& doc, std::uint64_t group, glm::dvec2 uv,
                        std::uint64_t prefer = 0);
-
-// Moving the indicator into another subpatch's part of the square makes that subpatch
-// current: the object the indicator (normalized over the group's domain) falls in, given the
-// current object. Returns `current` itself outside a group or when it already holds it.
-std::uint64_t patch_for_indicator(const Document& doc, std::uint64_t current);
-
-// Makes that subpatch current (the selection, view state; its control point selection is
-// dropped). Returns whether the current patch changed.
-bool follow_indicator(Document& doc, std::uint64_t current);
-
-// Keeps the current patch and the indicator in step from frame to frame: when the indicator
-// moved (it differs from `last_indicator`; NaN on the first frame) the patch under it becomes
-// current (follow_indicator); when the current patch changed otherwise (picked in the 3D view
-// or a menu), the indicator moves into that patch's part of the square (its nearest point
-// there). Returns the current object afterwards.
-std::uint64_t sync_patch_and_indicator(Document& doc, std::uint64_t current,
-                                       glm::dvec2 last_indicator, std::uint64_t last_current);
 
 // A scene's groups hold surfaces only (error `schema` at "/objects/<k>/patch_group"). Domains
 // that overlap (a hand-edited file) are allowed: the first patch in document order holds the

@@ -72,7 +72,7 @@ std::vector<std::string> curve_tokens(const geom::Curve& c) {
     for (double w : c.weights) t.push_back(real_text(w));
     for (const glm::dvec3& p : c.points)
         for (int a = 0; a < 3; ++a) t.push_back(real_text(p[a]));
-    const geom::Interval d = geom::domain(c.knots, c.degree, c.count());
+    const geom::Interval d = geom::domain(c);
     t.push_back(real_text(d.lo));
     t.push_back(real_text(d.hi));
     for (const char* n : {"0.0", "0.0", "1.0"}) t.push_back(n); // normal, used when planar
@@ -99,8 +99,8 @@ std::vector<std::string> surface_tokens(const geom::Surface& s) {
     for (int j = 0; j < s.n_v; ++j)
         for (int i = 0; i < s.n_u; ++i)
             for (int a = 0; a < 3; ++a) t.push_back(real_text(s.point(i, j)[a]));
-    const geom::Interval du = geom::domain(s.knots_u, s.degree_u, s.n_u);
-    const geom::Interval dv = geom::domain(s.knots_v, s.degree_v, s.n_v);
+    const geom::Interval du = geom::domain(s, geom::Dir::u);
+    const geom::Interval dv = geom::domain(s, geom::Dir::v);
     for (double x : {du.lo, du.hi, dv.lo, dv.hi}) t.push_back(real_text(x));
     return t;
 }

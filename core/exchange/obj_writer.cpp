@@ -31,7 +31,7 @@ std::string obj_freeform_text(const std::vector<ExactShape>& shapes) {
             for (int i = 0; i < c->count(); ++i, ++next_vertex)
                 out += "v " + point_text(c->points[i]) +
                        (rational ? " " + real_text(c->weights[i]) : "") + "\n";
-            const geom::Interval d = geom::domain(c->knots, c->degree, c->count());
+            const geom::Interval d = geom::domain(*c);
             out += std::string("cstype ") + (rational ? "rat " : "") + "bspline\ndeg " +
                    std::to_string(c->degree) + "\ncurv " + real_text(d.lo) + " " + real_text(d.hi);
             for (long k = first; k < next_vertex; ++k) out += " " + std::to_string(k);
@@ -45,8 +45,8 @@ std::string obj_freeform_text(const std::vector<ExactShape>& shapes) {
             for (int i = 0; i < s.n_u; ++i, ++next_vertex)
                 out += "v " + point_text(s.point(i, j)) +
                        (rational ? " " + real_text(s.weight(i, j)) : "") + "\n";
-        const geom::Interval du = geom::domain(s.knots_u, s.degree_u, s.n_u);
-        const geom::Interval dv = geom::domain(s.knots_v, s.degree_v, s.n_v);
+        const geom::Interval du = geom::domain(s, geom::Dir::u);
+        const geom::Interval dv = geom::domain(s, geom::Dir::v);
         out += std::string("cstype ") + (rational ? "rat " : "") + "bspline\ndeg " +
                std::to_string(s.degree_u) + " " + std::to_string(s.degree_v) + "\nsurf " +
                real_text(du.lo) + " " + real_text(du.hi) + " " + real_text(dv.lo) + " " +

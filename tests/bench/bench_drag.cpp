@@ -9,8 +9,8 @@
 #include "core/doc/commands.hpp"
 #include "core/doc/document.hpp"
 #include "core/geom/tessellate.hpp"
-#include "ui/render/incremental_mesh.hpp"
-#include "ui/render/tessellation_sampling.hpp"
+#include "ui/view/incremental_mesh.hpp"
+#include "ui/view/tessellation_sampling.hpp"
 
 using namespace isoparm;
 

@@ -1,4 +1,4 @@
-// Subpatches sharing the original domain: activation by parameter, borders, continuity kept
+// Subpatches sharing the original domain: lookup by parameter, borders, continuity kept
 // by point and weight edits (C0, C1), undo, and the scene round trip.
 #include <gtest/gtest.h>
 
@@ -55,7 +55,7 @@ TEST(Patches, SplitPiecesShareTheOriginalDomain) {
     EXPECT_FALSE(check_patch_groups(p.doc));
 }
 
-TEST(Patches, ActivationByParameter) {
+TEST(Patches, PatchByParameter) {
     PaperSplit p;
     const std::uint64_t group = p.doc.find(p.right)->patch_group;
     EXPECT_EQ(patch_at(p.doc, group, {0.2, 0.2}), p.left_low);
@@ -65,21 +65,6 @@ TEST(Patches, ActivationByParameter) {
     EXPECT_EQ(patch_at(p.doc, group, {0.75, 0.3}, p.right), p.right);
     EXPECT_EQ(patch_at(p.doc, group, {0.75, 0.3}, p.left_low), p.left_low);
     EXPECT_EQ(patch_at(p.doc, group, {1.5, 0.3}), 0u);
-
-    // The indicator is normalized over the group's domain.
-    p.doc.view.indicator = {0.9, 0.6};
-    EXPECT_EQ(patch_for_indicator(p.doc, p.left_low), p.right);
-    p.doc.view.indicator = {0.1, 0.6};
-    EXPECT_EQ(patch_for_indicator(p.doc, p.right), p.left_high);
-    p.doc.view.indicator = {0.1, 0.4};
-    EXPECT_EQ(patch_for_indicator(p.doc, p.left_low), p.left_low);
-
-    // Following the indicator changes the selection (its point is dropped), once.
-    p.doc.view.selection = {p.left_low, 1, 1};
-    p.doc.view.indicator = {0.95, 0.95};
-    EXPECT_TRUE(follow_indicator(p.doc, p.left_low));
-    EXPECT_EQ(p.doc.view.selection, (Selection{p.right, -1, -1}));
-    EXPECT_FALSE(follow_indicator(p.doc, p.right));
 }
 
 TEST(Patches, BordersSayWhichConform) {
@@ -286,27 +271,6 @@ TEST(Patches, RedoReplaysTheContinuityTheEditWasMadeWith) {
     ASSERT_TRUE(h.redo(doc));
     EXPECT_TRUE(same_geometry(doc, split_twice));
     (void)right;
-}
-
-TEST(Patches, IndicatorAndCurrentPatchStayInStep) {
-    PaperSplit p;
-    // The indicator moved into the right part: that patch becomes current.
-    p.doc.view.selection = {p.left_low, 2, 2};
-    const glm::dvec2 before = p.doc.view.indicator;
-    p.doc.view.indicator = {0.9, 0.3};
-    EXPECT_EQ(sync_patch_and_indicator(p.doc, p.left_low, before, p.left_low), p.right);
-    EXPECT_EQ(p.doc.view.selection, (Selection{p.right, -1, -1}));
-    // A patch picked otherwise (the 3D view) takes the indicator along, to its nearest point.
-    const glm::dvec2 still = p.doc.view.indicator;
-    p.doc.view.selection = {p.left_high, -1, -1};
-    EXPECT_EQ(sync_patch_and_indicator(p.doc, p.left_high, still, p.right), p.left_high);
-    EXPECT_DOUBLE_EQ(p.doc.view.indicator.x, 0.75); // the right edge of the left part
-    EXPECT_DOUBLE_EQ(p.doc.view.indicator.y, 0.5);  // the bottom edge of the upper part
-    // Nothing moved and nothing else picked: nothing changes.
-    const Document same = p.doc;
-    EXPECT_EQ(sync_patch_and_indicator(p.doc, p.left_high, p.doc.view.indicator, p.left_high),
-              p.left_high);
-    EXPECT_TRUE(same_document(p.doc, same));
 }
 
 TEST(Patches, SceneKeepsGroupsAndContinuity) {

@@ -1,6 +1,6 @@
-// The window's side of issue 14: two windows saving one scene (item 5) ask before replacing
-// each other's work, and a scene too large to show is refused on open (item 8) with the same
-// sentence `isoparm render` prints.
+// Files in the window: two windows saving one scene ask before replacing each other's work,
+// and a scene too large to show is refused on open with the same sentence `isoparm render`
+// prints.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -12,7 +12,7 @@
 #include "tests/support/temp_dir.hpp"
 #include "ui/actions.hpp"
 #include "ui/app_context.hpp"
-#include "ui/scene_budget.hpp"
+#include "ui/view/scene_budget.hpp"
 
 using namespace isoparm;
 using namespace isoparm::ui;

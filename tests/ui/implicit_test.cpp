@@ -8,9 +8,9 @@
 #include "core/geom/implicit/expression.hpp"
 #include "core/geom/implicit/polygonize.hpp"
 #include "ui/implicit/implicit_edit.hpp"
-#include "ui/implicit/implicit_support.hpp"
-#include "ui/render/implicit_meshes.hpp"
-#include "ui/scene_builder.hpp"
+#include "ui/view/implicit_meshes.hpp"
+#include "ui/view/implicit_support.hpp"
+#include "ui/view/scene_builder.hpp"
 
 using namespace isoparm;
 using namespace isoparm::ui;

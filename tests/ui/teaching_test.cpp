@@ -1,4 +1,4 @@
-// Issue 5 in the workstation: de Boor's step control and overlay, the actions at the
+// Teaching in the workstation: de Boor's step control and overlay, the actions at the
 // indicator (insert, elevate, split) and the indicator over a patch group's shared domain.
 #include <gtest/gtest.h>
 
@@ -7,11 +7,12 @@
 #include "core/geom/deboor.hpp"
 #include "core/geom/knots.hpp"
 #include "ui/app_context.hpp"
-#include "ui/deboor_overlay.hpp"
-#include "ui/doc_access.hpp"
-#include "ui/render/camera.hpp"
-#include "ui/scene_builder.hpp"
 #include "ui/surface_actions.hpp"
+#include "ui/view/camera.hpp"
+#include "ui/view/current_patch.hpp"
+#include "ui/view/deboor_overlay.hpp"
+#include "ui/view/doc_access.hpp"
+#include "ui/view/scene_builder.hpp"
 
 using namespace isoparm;
 using namespace isoparm::ui;
@@ -314,7 +315,7 @@ TEST(SurfaceActions, ElevateAndSplitAtTheIndicator) {
     EXPECT_FALSE(edge.why.empty());
     // Moving the indicator right of 0.75 makes the second piece current.
     ctx.doc.view.indicator = {0.9, 0.4};
-    EXPECT_TRUE(doc::follow_indicator(ctx.doc, left.id));
+    EXPECT_TRUE(ui::follow_indicator(ctx.doc, left.id));
     EXPECT_EQ(ctx.doc.view.selection.object, ctx.doc.objects[1].id);
     // Evaluation never leaves a patch's own domain, even for a frame in which the indicator
     // lies in another patch's part of the square.
@@ -332,8 +333,8 @@ TEST(SurfaceActions, Fig6SplitSequenceLiveKeepsEveryBorder) {
     ASSERT_EQ(ctx.doc.objects.size(), 2u);
     const std::uint64_t group = ctx.doc.objects[0].patch_group;
     ctx.doc.view.indicator = {0.3, 0.5};
-    doc::sync_patch_and_indicator(ctx.doc, ctx.doc.view.selection.object, {0.75, 0.5},
-                                  ctx.doc.view.selection.object);
+    ui::sync_patch_and_indicator(ctx.doc, ctx.doc.view.selection.object, {0.75, 0.5},
+                                 ctx.doc.view.selection.object);
     ASSERT_EQ(ctx.doc.view.selection.object, ctx.doc.objects[0].id); // the left piece
     const doc::Document after_first = ctx.doc;
     split_at_indicator(ctx, Dir::v);

@@ -8,12 +8,12 @@
 
 #include "core/scene/atomic_file.hpp"
 #include "core/scene/scene_io.hpp"
-#include "ui/doc_access.hpp"
 #include "ui/headless/egl_context.hpp"
 #include "ui/headless/offscreen_target.hpp"
 #include "ui/headless/png_writer.hpp"
 #include "ui/render/gl.hpp"
-#include "ui/scene_budget.hpp"
+#include "ui/view/doc_access.hpp"
+#include "ui/view/scene_budget.hpp"
 #include "ui/workstation.hpp"
 
 namespace isoparm::ui {

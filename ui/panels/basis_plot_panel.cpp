@@ -10,10 +10,10 @@
 #include "core/geom/basis.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/tessellate.hpp"
-#include "ui/canvas_map.hpp"
-#include "ui/doc_access.hpp"
 #include "ui/panels/panels.hpp"
-#include "ui/render/mesh_data.hpp"
+#include "ui/view/canvas_map.hpp"
+#include "ui/view/doc_access.hpp"
+#include "ui/view/mesh_data.hpp"
 
 namespace isoparm::ui {
 

@@ -10,11 +10,11 @@
 #include <vector>
 
 #include "core/doc/commands.hpp"
-#include "ui/canvas_map.hpp"
-#include "ui/doc_access.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/panels/plane_canvas.hpp"
 #include "ui/ui_report.hpp"
+#include "ui/view/canvas_map.hpp"
+#include "ui/view/doc_access.hpp"
 
 namespace isoparm::ui {
 

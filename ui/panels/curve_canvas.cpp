@@ -15,6 +15,7 @@
 #include "ui/panels/curve_designer.hpp"
 #include "ui/panels/plane_canvas.hpp"
 #include "ui/ui_report.hpp"
+#include "ui/view/polygon_hits.hpp"
 
 namespace isoparm::ui::curve_designer {
 
@@ -55,13 +56,6 @@ PlaneMap frame(CurveDesignerState& cd, std::uint64_t id, int plane, const geom::
     return fit_plane(canvas, cd.frame_lo, cd.frame_hi, 0);
 }
 
-double distance_to_segment(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
-    const glm::dvec2 ab = b - a;
-    const double len2 = glm::dot(ab, ab);
-    const double s = len2 > 0 ? std::clamp(glm::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-    return glm::length(p - (a + s * ab));
-}
-
 const doc::CurveObject* curve_in(const AppContext& ctx, std::uint64_t id) {
     const doc::Object* o = ctx.doc.find(id);
     return o ? o->curve_object() : nullptr;
@@ -80,38 +74,28 @@ void handle_press(AppContext& ctx, std::uint64_t id, const geom::Curve& g, const
     CurveDesignerState& cd = ctx.ui.curve;
     const float k = ctx.ui.scale();
     const int normal = 3 - ax.a - ax.b;
-    auto px = [&](int i) {
-        const glm::dvec3& p = g.points[static_cast<std::size_t>(i)];
-        return plane_to_pixel(map, {p[ax.a], p[ax.b]});
-    };
+    std::vector<glm::dvec2> px;
+    for (const glm::dvec3& p : g.points) px.push_back(plane_to_pixel(map, {p[ax.a], p[ax.b]}));
     ctx.seal();
     cd.message.clear();
     cd.press = mouse;
-    // Points drawn last are on top: search from the end.
-    for (int i = g.count() - 1; i >= 0; --i)
-        if (glm::length(px(i) - mouse) <= 8 * k) {
-            ctx.doc.view.selection = {id, i, -1};
-            start_drag(cd, i, map, mouse - px(i));
-            return;
-        }
+    const double radius = 8 * k;
+    if (const std::optional<int> i = point_under(px, mouse, radius)) {
+        ctx.doc.view.selection = {id, *i, -1};
+        start_drag(cd, *i, map, mouse - px[static_cast<std::size_t>(*i)]);
+        return;
+    }
     const glm::dvec2 ab = pixel_to_plane(map, mouse);
     if (ImGui::GetIO().KeyCtrl) {
-        int leg = -1;
-        double best = 8 * k;
-        for (int i = 0; i + 1 < g.count(); ++i) {
-            const double d = distance_to_segment(mouse, px(i), px(i + 1));
-            if (d <= best) best = d, leg = i;
-        }
-        if (leg < 0) {
+        const std::optional<LegHit> hit = leg_under(px, mouse, radius);
+        if (!hit) {
             cd.message = "Ctrl+click on a leg of the control polygon to insert a point there.";
             return;
         }
+        const int leg = hit->leg;
         // The normal coordinate follows the leg, so a planar curve stays in its plane.
-        const glm::dvec2 a = px(leg), b = px(leg + 1);
-        const double len = glm::length(b - a);
-        const double s = len > 0 ? std::clamp(glm::dot(mouse - a, b - a) / (len * len), 0., 1.) : 0;
         glm::dvec3 p = glm::mix(g.points[static_cast<std::size_t>(leg)],
-                                g.points[static_cast<std::size_t>(leg + 1)], s);
+                                g.points[static_cast<std::size_t>(leg + 1)], hit->s);
         p[ax.a] = ab.x;
         p[ax.b] = ab.y;
         if (ctx.execute(doc::insert_curve_point(id, leg + 1, p)))

@@ -6,7 +6,7 @@
 
 #include "core/doc/document.hpp"
 #include "ui/app_context.hpp"
-#include "ui/canvas_map.hpp"
+#include "ui/view/canvas_map.hpp"
 
 namespace isoparm::ui::curve_designer {
 

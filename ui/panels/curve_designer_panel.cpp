@@ -12,11 +12,11 @@
 #include "core/geom/basis.hpp"
 #include "core/geom/deboor.hpp"
 #include "core/geom/knots.hpp"
-#include "ui/doc_access.hpp"
 #include "ui/panels/curve_designer.hpp"
 #include "ui/panels/enum_combo.hpp"
 #include "ui/panels/flow.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/view/doc_access.hpp"
 
 namespace isoparm::ui {
 

@@ -1,14 +1,14 @@
 // The de Boor tab: step control (level by level, back and forth, animated play) and every
-// intermediate value of the construction at the indicator, u-stage then v-stage (issue 5).
+// intermediate value of the construction at the indicator, u-stage then v-stage.
 #include <cstdio>
 #include <imgui.h>
 #include <string>
 
 #include "core/geom/deboor.hpp"
-#include "ui/deboor_overlay.hpp"
-#include "ui/doc_access.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/surface_actions.hpp"
+#include "ui/view/deboor_overlay.hpp"
+#include "ui/view/doc_access.hpp"
 
 namespace isoparm::ui {
 

@@ -10,10 +10,10 @@
 
 #include "core/geom/implicit/expression.hpp"
 #include "ui/implicit/implicit_edit.hpp"
-#include "ui/implicit/implicit_support.hpp"
 #include "ui/panels/panels.hpp"
-#include "ui/render/implicit_meshes.hpp"
 #include "ui/ui_report.hpp"
+#include "ui/view/implicit_meshes.hpp"
+#include "ui/view/implicit_support.hpp"
 
 namespace isoparm::ui {
 

@@ -9,12 +9,12 @@
 
 #include "core/doc/commands.hpp"
 #include "ui/actions.hpp"
-#include "ui/data_dir.hpp"
-#include "ui/doc_access.hpp"
-#include "ui/implicit/implicit_support.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/surface_actions.hpp"
 #include "ui/ui_report.hpp"
+#include "ui/view/data_dir.hpp"
+#include "ui/view/doc_access.hpp"
+#include "ui/view/implicit_support.hpp"
 
 namespace isoparm::ui {
 
@@ -73,7 +73,7 @@ void action_item(AppContext& ctx, const ActionState& a, const char* shortcut,
 }
 
 // Knot insertion, degree elevation and splitting at the indicator, and how subpatches stay
-// joined (issue 5).
+// joined.
 void refine_items(AppContext& ctx) {
     using geom::Dir;
     ImGui::TextDisabled("At the indicator (shape unchanged)");

@@ -5,9 +5,9 @@
 #include <string>
 
 #include "core/doc/commands.hpp"
-#include "ui/doc_access.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/ui_report.hpp"
+#include "ui/view/doc_access.hpp"
 
 namespace isoparm::ui {
 

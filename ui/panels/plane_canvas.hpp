@@ -4,7 +4,7 @@
 
 #include <imgui.h>
 
-#include "ui/canvas_map.hpp"
+#include "ui/view/canvas_map.hpp"
 
 namespace isoparm::ui {
 

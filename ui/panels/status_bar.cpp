@@ -3,9 +3,9 @@
 #include <imgui.h>
 #include <string>
 
-#include "ui/doc_access.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/render/renderer.hpp"
+#include "ui/view/doc_access.hpp"
 
 namespace isoparm::ui {
 

@@ -9,12 +9,13 @@
 #include "core/doc/commands.hpp"
 #include "core/doc/patches.hpp"
 #include "core/geom/knots.hpp"
-#include "ui/canvas_map.hpp"
-#include "ui/doc_access.hpp"
 #include "ui/panels/flow.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/surface_actions.hpp"
 #include "ui/ui_report.hpp"
+#include "ui/view/canvas_map.hpp"
+#include "ui/view/doc_access.hpp"
+#include "ui/view/knot_drag.hpp"
 
 namespace isoparm::ui {
 
@@ -138,24 +139,15 @@ void knot_strip(AppContext& ctx, const doc::Object& obj, const geom::Surface& s,
         return;
     }
     if (!kd.active || kd.dir != dir || kd.object != obj.id) return;
-    // The pointer's parameter, kept strictly between the neighbouring knots: the knot stays
-    // between its neighbours as the issue asks, and the drag never asks for a refused value.
-    const geom::Knots& U = s.knots(dir);
     // A key pressed during the drag (insert, elevate, undo) may have changed the knots: the
     // held run must still be one run between two distinct neighbours, else the drag ends.
-    const int knot_count = static_cast<int>(U.size());
-    bool still = kd.first >= 1 && kd.first + kd.count < knot_count;
-    for (int q = kd.first; still && q < kd.first + kd.count; ++q) still = U[q] == U[kd.first];
-    if (still) still = U[kd.first - 1] < U[kd.first] && U[kd.first] < U[kd.first + kd.count];
-    if (!still) {
+    const geom::Knots& U = s.knots(dir);
+    if (!is_inner_knot_run(U, kd.first, kd.count)) {
         kd.active = false;
         return;
     }
-    const geom::Interval range = along_x ? dom.u : dom.v;
     const double f = along_x ? (m.x - sq.x) / sq.w : 1.0 - (m.y - sq.y) / sq.h;
-    const double lo = U[kd.first - 1], hi = U[kd.first + kd.count];
-    const double eps = (hi - lo) * 1e-3;
-    const double t = std::clamp(denormalize_param(range, f), lo + eps, hi - eps);
+    const double t = dragged_knot_value(U, kd.first, kd.count, dom.interval(dir), f);
     if (t != U[kd.first]) ctx.execute(doc::move_knot_run(obj.id, dir, kd.first, kd.count, t));
 }
 
@@ -213,7 +205,7 @@ void draw_tracing_panel(AppContext& ctx) {
         return;
     }
     const float k = ctx.ui.scale();
-    // Subpatches share the original domain: the square shows all of it (issue 5).
+    // Subpatches share the original domain: the square shows all of it.
     const geom::ParamRect dom = doc::tracing_domain(ctx.doc, *obj);
     const std::vector<const doc::Object*> patches = doc::patch_members(ctx.doc, obj->patch_group);
     const glm::dvec2 uv = indicator_params(ctx.doc, *obj);

@@ -7,9 +7,6 @@
 #include <string>
 #include <vector>
 
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h> // key codes only
-
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -18,15 +15,15 @@
 #include "core/doc/placement.hpp"
 #include "core/geom/deboor.hpp"
 #include "ui/actions.hpp"
-#include "ui/canvas_map.hpp"
-#include "ui/contrast.hpp"
-#include "ui/deboor_overlay.hpp"
-#include "ui/doc_access.hpp"
 #include "ui/panels/panels.hpp"
-#include "ui/render/picking.hpp"
 #include "ui/render/renderer.hpp"
-#include "ui/scene_builder.hpp"
 #include "ui/ui_report.hpp"
+#include "ui/view/canvas_map.hpp"
+#include "ui/view/contrast.hpp"
+#include "ui/view/deboor_overlay.hpp"
+#include "ui/view/doc_access.hpp"
+#include "ui/view/picking.hpp"
+#include "ui/view/scene_builder.hpp"
 
 namespace isoparm::ui {
 
@@ -73,9 +70,9 @@ std::unique_ptr<doc::Command> move_point(const PointRef& r, const glm::dvec3& p)
 }
 
 int held_axis_key() {
-    if (ImGui::IsKeyDown(GLFW_KEY_X)) return 0;
-    if (ImGui::IsKeyDown(GLFW_KEY_Y)) return 1;
-    if (ImGui::IsKeyDown(GLFW_KEY_Z)) return 2;
+    if (ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_X))) return 0;
+    if (ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_Y))) return 1;
+    if (ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_Z))) return 2;
     return -1;
 }
 

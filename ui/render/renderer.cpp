@@ -8,11 +8,11 @@
 
 #include "ui/render/gl.hpp"
 #include "ui/render/gl_program.hpp"
-#include "ui/render/incremental_mesh.hpp"
-#include "ui/render/mesh_data.hpp"
 #include "ui/render/render_target.hpp"
 #include "ui/render/shaders.hpp"
-#include "ui/render/tessellation_sampling.hpp"
+#include "ui/view/incremental_mesh.hpp"
+#include "ui/view/mesh_data.hpp"
+#include "ui/view/tessellation_sampling.hpp"
 
 namespace isoparm::ui {
 

@@ -8,38 +8,10 @@
 #include <unordered_map>
 #include <vector>
 
-#include <glm/vec4.hpp>
-
-#include "core/geom/tessellate.hpp"
-#include "core/geom/types.hpp"
-#include "ui/render/camera.hpp"
-#include "ui/render/overlay.hpp"
+#include "ui/view/overlay.hpp"
+#include "ui/view/scene_draw.hpp"
 
 namespace isoparm::ui {
-
-// One surface to draw. The renderer never owns geometry: it keeps only derived GPU buffers,
-// keyed by object id, and re-tessellates when the surface or density differs from the cache.
-struct SurfaceDraw {
-    std::uint64_t id = 0;
-    const geom::Surface* surface = nullptr;
-    int density = 32;
-    bool shaded = true;
-    bool wireframe = false;
-    glm::vec4 fill{0.3f, 0.55f, 0.85f, 1};
-    glm::vec4 wire{0.9f, 0.9f, 0.9f, 1};
-    float wire_width = 1.0f;
-    // A ready-made mesh instead of a surface (implicit objects): uploaded whenever
-    // mesh_revision differs from the cached one; its wireframe is the triangle edges.
-    const geom::Mesh* mesh = nullptr;
-    std::uint64_t mesh_revision = 0;
-};
-
-struct SceneView {
-    Camera camera;
-    int width = 1, height = 1; // framebuffer pixels
-    glm::vec4 background{0.13f, 0.14f, 0.17f, 1};
-    bool operator==(const SceneView&) const = default;
-};
 
 struct RenderStats {
     bool redrawn = false;     // false: nothing changed, the last picture stands

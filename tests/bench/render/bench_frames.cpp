@@ -11,12 +11,12 @@
 
 #include "core/doc/commands.hpp"
 #include "core/scene/scene_io.hpp"
-#include "ui/doc_access.hpp"
 #include "ui/headless/egl_context.hpp"
 #include "ui/headless/offscreen_target.hpp"
-#include "ui/render/camera.hpp"
 #include "ui/render/gl.hpp"
 #include "ui/render/renderer.hpp"
+#include "ui/view/camera.hpp"
+#include "ui/view/doc_access.hpp"
 #include "ui/workstation.hpp"
 
 namespace {

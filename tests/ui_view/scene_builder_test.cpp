@@ -1,0 +1,108 @@
+// The renderer's inputs built from a document: sampling policy, wireframe indices, change
+// detection, overlay contents.
+#include <gtest/gtest.h>
+
+#include "core/doc/document.hpp"
+#include "core/doc/placement.hpp"
+#include "core/geom/knots.hpp"
+#include "ui/view/doc_access.hpp"
+#include "ui/view/mesh_data.hpp"
+#include "ui/view/scene_builder.hpp"
+#include "ui/view/tessellation_sampling.hpp"
+
+using namespace isoparm;
+using namespace isoparm::ui;
+
+TEST(Sampling, DensityPerSpanWithinTheBudget) {
+    const geom::Surface small =
+        doc::make_planar_grid(5, 5, 3, 3, geom::SplineType::nurbs); // 2 spans
+    EXPECT_EQ(display_samples(small, 32), (std::pair<int, int>{65, 65}));
+    const geom::Surface big =
+        doc::make_planar_grid(32, 32, 3, 3, geom::SplineType::nurbs); // 29 spans
+    const auto [su, sv] = display_samples(big, 32);
+    EXPECT_LE(static_cast<long>(su) * sv, max_display_vertices);
+    EXPECT_GE(su, 100);
+    EXPECT_EQ(su, sv);
+    EXPECT_EQ(display_samples(small, 0), (std::pair<int, int>{5, 5})); // at least 2 per span
+}
+
+TEST(MeshData, SameSurfaceSeesEveryChange) {
+    const geom::Surface a = doc::make_planar_grid(4, 4, 2, 2, geom::SplineType::nurbs);
+    geom::Surface b = a;
+    EXPECT_TRUE(same_surface(a, b));
+    b.weight(1, 1) = 2;
+    EXPECT_FALSE(same_surface(a, b));
+    b = a;
+    b.point(3, 0).z = 1e-300;
+    EXPECT_FALSE(same_surface(a, b));
+    b = a;
+    b.knots_u[3] = std::nextafter(b.knots_u[3], 0.0);
+    EXPECT_FALSE(same_surface(a, b));
+}
+
+TEST(MeshData, WireIndicesCoverBoundariesAndSkipMissingVertices) {
+    // 3 x 3 grid, every line: 3 rows * 2 + 3 columns * 2 = 12 segments.
+    EXPECT_EQ(wire_indices(3, 3, {}, 100).size(), 24u);
+    // 65 x 65 with at most ~16 lines: the stride is 4, lines 0, 4, ..., 64.
+    const auto w = wire_indices(65, 65, {}, 16);
+    EXPECT_EQ(w.size(), 2u * (17 * 64) * 2);
+    // A missing centre vertex removes the four segments touching it.
+    std::vector<std::uint8_t> exists(9, 1);
+    exists[4] = 0;
+    EXPECT_EQ(wire_indices(3, 3, exists, 100).size(), 16u);
+}
+
+TEST(SceneBuilder, DefaultDocumentDrawsSurfaceNetPointsAndIndicator) {
+    doc::Document d = doc::default_document();
+    const BuiltScene scene = build_scene(d, {});
+    ASSERT_EQ(scene.surfaces.size(), 1u);
+    const geom::Surface* s = d.objects.front().surface();
+    ASSERT_NE(s, nullptr);
+    std::size_t points = 0, net_segments = 0;
+    for (const PointBatch& b : scene.overlay.points) points += b.points.size();
+    for (const LineBatch& l : scene.overlay.lines) net_segments += l.vertices.size() / 2;
+    // Every control point plus S(u,v); at least the net's segments among the lines.
+    EXPECT_EQ(points,
+              static_cast<std::size_t>(s->n_u * s->n_v) + (d.view.display.indicator_point ? 1 : 0));
+    EXPECT_GE(net_segments,
+              static_cast<std::size_t>(s->n_u * (s->n_v - 1) + s->n_v * (s->n_u - 1)));
+}
+
+TEST(SceneBuilder, TogglesRemoveWhatTheyHide) {
+    doc::Document d = doc::default_document();
+    d.view.display.control_net = false;
+    d.view.display.control_points = false;
+    d.view.display.indicator_point = false;
+    d.view.display.knot_curves = false;
+    const BuiltScene scene = build_scene(d, {});
+    EXPECT_TRUE(scene.overlay.points.empty());
+    EXPECT_TRUE(scene.overlay.lines.empty());
+    d.view.display.style = doc::DisplayStyle::wireframe;
+    const BuiltScene wire = build_scene(d, {});
+    EXPECT_FALSE(wire.surfaces.front().shaded);
+    EXPECT_TRUE(wire.surfaces.front().wireframe);
+}
+
+TEST(SceneBuilder, IsoCurveLiesOnTheSurfaceEnds) {
+    const doc::Document d = doc::default_document();
+    const geom::Surface& s = *d.objects.front().surface();
+    const auto pieces = iso_curve(s, geom::Dir::u, geom::domain(s, geom::Dir::u).lo, 11);
+    ASSERT_EQ(pieces.size(), 1u);
+    ASSERT_EQ(pieces[0].size(), 11u);
+    // Clamped: the corner of the surface is the corner control point.
+    const glm::dvec3 p00 = s.point(0, 0);
+    EXPECT_NEAR(pieces[0].front().x, p00.x, 1e-5);
+    EXPECT_NEAR(pieces[0].front().z, p00.z, 1e-5);
+}
+
+TEST(SceneBounds, CoversAllControlPoints) {
+    const doc::Document d = doc::default_document();
+    const auto box = doc::scene_bounds(d);
+    ASSERT_TRUE(box.has_value());
+    for (const glm::dvec3& p : d.objects.front().surface()->points)
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_LE(box->lo[k], p[k]);
+            EXPECT_GE(box->hi[k], p[k]);
+        }
+    EXPECT_FALSE(doc::scene_bounds(doc::Document{}).has_value());
+}

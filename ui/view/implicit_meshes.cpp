@@ -1,0 +1,134 @@
+// The implicit mesh cache: synchronous coarse and headless polygonization, background jobs
+// with progress and cancel-on-change for fine grids.
+#include "ui/view/implicit_meshes.hpp"
+
+#include <cmath>
+
+#include "core/geom/implicit/expression.hpp"
+#include "core/geom/implicit/polygonize.hpp"
+
+namespace isoparm::ui {
+
+namespace {
+
+// Grids up to this many cells polygonize on the UI thread (a few milliseconds).
+constexpr double synchronous_cells = 48.0 * 48.0 * 48.0;
+
+double grid_cells(const ImplicitKey& k) {
+    const glm::dvec3 e = k.hi - k.lo;
+    return std::ceil(e.x / k.cell) * std::ceil(e.y / k.cell) * std::ceil(e.z / k.cell);
+}
+
+} // namespace
+
+PolygonizeResult polygonize_key(const ImplicitKey& key,
+                                const std::function<bool(double)>& progress) {
+    PolygonizeResult r;
+    auto program = geom::implicit::compile(key.expression, key.names);
+    if (!program) {
+        r.error = program.error().message;
+        return r;
+    }
+    geom::implicit::PolygonizeOptions opt;
+    opt.lo = key.lo;
+    opt.hi = key.hi;
+    opt.cell = key.cell;
+    opt.parameters = key.values;
+    opt.progress = progress;
+    auto mesh = geom::implicit::polygonize(*program, opt);
+    if (!mesh) {
+        r.error = mesh.error().message;
+        return r;
+    }
+    if (mesh->triangles.empty()) r.error = "the surface was not found in the bounds";
+    r.mesh = std::move(*mesh);
+    return r;
+}
+
+ImplicitMeshes::~ImplicitMeshes() {
+    // Ask every worker to stop before joining any of them.
+    for (auto& [id, e] : entries_) e.worker.request_stop();
+}
+
+void ImplicitMeshes::adopt(Entry& e, const ImplicitKey& key, std::optional<geom::Mesh> mesh,
+                           std::string error) {
+    e.shown = key;
+    e.error = std::move(error);
+    e.mesh = mesh ? std::move(*mesh) : geom::Mesh{};
+    e.revision = next_revision_++;
+}
+
+void ImplicitMeshes::update(const doc::Document& d, const Mode& mode) {
+    for (auto& [id, e] : entries_) e.used = false;
+    for (const doc::Object& o : d.objects) {
+        const doc::ImplicitObject* im = o.implicit();
+        if (!im || !o.visible) continue;
+        Entry& e = entries_[o.id];
+        e.used = true;
+        const double cell =
+            o.id == mode.coarse_id ? coarse_cell(im->lo, im->hi, im->cell) : im->cell;
+        const ImplicitKey key = implicit_key(*im, cell);
+
+        // A finished job: show its mesh if it is still wanted.
+        if (e.job && e.job->done.load()) {
+            std::shared_ptr<Job> job = std::move(e.job);
+            e.worker = {};
+            if (job->key == key) {
+                std::lock_guard lock(job->m);
+                adopt(e, key, std::move(job->mesh), job->error);
+            }
+        }
+        if (e.shown && *e.shown == key) {
+            if (e.job) {       // a job for an older key: no longer wanted
+                e.worker = {}; // requests stop and joins
+                e.job.reset();
+            }
+            continue;
+        }
+        if (e.job && e.job->key == key) continue; // still running
+
+        e.worker = {}; // cancel a job for another key
+        e.job.reset();
+        if (mode.wait || grid_cells(key) <= synchronous_cells || !(key.cell > 0)) {
+            PolygonizeResult r = polygonize_key(key);
+            ++synchronous_runs_;
+            adopt(e, key, std::move(r.mesh), std::move(r.error));
+            continue;
+        }
+        auto job = std::make_shared<Job>();
+        job->key = key;
+        e.job = job;
+        e.worker = std::jthread([job, wake = mode.wake](std::stop_token stop) {
+            PolygonizeResult r = polygonize_key(job->key, [&](double p) {
+                job->progress.store(p);
+                return !stop.stop_requested();
+            });
+            {
+                std::lock_guard lock(job->m);
+                job->mesh = std::move(r.mesh);
+                job->error = std::move(r.error);
+            }
+            job->done.store(true);
+            if (wake && !stop.stop_requested()) wake();
+        });
+    }
+    for (auto it = entries_.begin(); it != entries_.end();)
+        it = it->second.used ? std::next(it) : entries_.erase(it);
+}
+
+ImplicitMeshes::View ImplicitMeshes::view(std::uint64_t id) const {
+    View v;
+    const auto it = entries_.find(id);
+    if (it == entries_.end()) return v;
+    const Entry& e = it->second;
+    if (e.shown) {
+        v.mesh = &e.mesh;
+        v.cell = e.shown->cell;
+    }
+    v.revision = e.revision;
+    v.error = e.error;
+    if (e.job && !e.job->done.load()) v.progress = e.job->progress.load();
+    return v;
+}
+
+} // namespace isoparm::ui

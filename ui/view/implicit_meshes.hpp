@@ -1,0 +1,83 @@
+// The polygonized meshes of the document's implicit objects, cached per object by
+// ImplicitKey: re-polygonized only when the expression, parameters, bounds or cell change.
+// Fine grids run on a background std::jthread (cancelled when the object changes again);
+// headless runs polygonize synchronously so renders are deterministic.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <unordered_map>
+
+#include "core/doc/document.hpp"
+#include "core/geom/tessellate.hpp"
+#include "ui/view/implicit_support.hpp"
+
+namespace isoparm::ui {
+
+class ImplicitMeshes {
+public:
+    struct Mode {
+        bool wait = false;           // polygonize synchronously (headless)
+        std::uint64_t coarse_id = 0; // this object's parameter slider is moving: coarse grid
+        std::function<void()> wake;  // called from the worker when a mesh is ready
+    };
+    // What the renderer and the panel see of one object.
+    struct View {
+        const geom::Mesh* mesh = nullptr; // the mesh shown (possibly of an older key)
+        std::uint64_t revision = 0;       // changes whenever *mesh changes
+        double progress = -1;             // of the running background job; < 0 none
+        double cell = 0;                  // cell of the mesh shown
+        std::string error;                // polygonization error of the current key
+    };
+
+    ImplicitMeshes() = default;
+    ~ImplicitMeshes();
+    ImplicitMeshes(const ImplicitMeshes&) = delete;
+    ImplicitMeshes& operator=(const ImplicitMeshes&) = delete;
+
+    // Brings every visible implicit object up to date and drops objects no longer present.
+    void update(const doc::Document& d, const Mode& mode);
+    View view(std::uint64_t id) const;
+
+    // Polygonizations run on the calling thread so far (coarse and headless ones).
+    int synchronous_runs() const { return synchronous_runs_; }
+
+private:
+    struct Job {
+        ImplicitKey key;
+        std::atomic<double> progress{0};
+        std::atomic<bool> done{false};
+        std::mutex m;
+        std::optional<geom::Mesh> mesh; // set when done without error
+        std::string error;
+    };
+    struct Entry {
+        std::optional<ImplicitKey> shown; // key of `mesh` (or of `error`)
+        geom::Mesh mesh;
+        std::uint64_t revision = 0;
+        std::string error;
+        std::shared_ptr<Job> job;
+        std::jthread worker; // declared last: joined first on destruction
+        bool used = false;
+    };
+    void adopt(Entry& e, const ImplicitKey& key, std::optional<geom::Mesh> mesh, std::string error);
+    std::unordered_map<std::uint64_t, Entry> entries_;
+    std::uint64_t next_revision_ = 1;
+    int synchronous_runs_ = 0;
+};
+
+// Polygonizes one key; progress gets [0, 1] and returns false to cancel.
+struct PolygonizeResult {
+    std::optional<geom::Mesh> mesh;
+    std::string error;
+};
+PolygonizeResult polygonize_key(const ImplicitKey& key,
+                                const std::function<bool(double)>& progress = {});
+
+} // namespace isoparm::ui

@@ -1,0 +1,75 @@
+// Scene display cost against the work budget (see scene_budget.hpp).
+#include "ui/view/scene_budget.hpp"
+
+#include <fstream>
+#include <sys/resource.h>
+#include <unistd.h>
+#include <variant>
+
+#include "core/geom/work_budget.hpp"
+#include "ui/view/tessellation_sampling.hpp"
+
+namespace isoparm::ui {
+
+SceneDisplayCost estimate_scene_display(const doc::Document& d) {
+    SceneDisplayCost cost;
+    for (const doc::Object& o : d.objects) {
+        cost.control_points += static_cast<double>(doc::control_points_of(o.shape).size());
+        const geom::Surface* s = o.surface();
+        if (!s) continue;
+        const auto [su, sv] = display_samples(*s, d.view.display.density);
+        const double vertices = static_cast<double>(su) * sv;
+        ++cost.surfaces;
+        cost.vertices += vertices;
+        cost.steps += geom::estimate_tessellation(su, sv, s->degree_u, s->degree_v).steps;
+        cost.bytes += vertices * display_bytes_per_vertex + display_bytes_per_surface;
+    }
+    cost.steps += cost.control_points * display_steps_per_control_point;
+    cost.bytes += cost.control_points * display_bytes_per_control_point;
+    return cost;
+}
+
+std::string scene_over_budget(const doc::Document& d) {
+    const SceneDisplayCost cost = estimate_scene_display(d);
+    const double max_bytes = geom::max_answer_numbers * geom::bytes_per_answer_number;
+    if (cost.bytes <= max_bytes && cost.steps <= geom::max_work_steps) return "";
+    const double mib = cost.bytes / (1 << 20);
+    return "the scene is too large to show: its " + std::to_string(cost.surfaces) +
+           " surfaces make " + geom::with_thousands(cost.vertices) + " vertices and " +
+           geom::with_thousands(cost.control_points) + " control points, which would need about " +
+           geom::with_thousands(mib) + " MiB and " + geom::with_thousands(cost.steps) +
+           " basis steps; the work budget allows about " +
+           geom::with_thousands(max_bytes / (1 << 20)) + " MiB and " +
+           geom::with_thousands(geom::max_work_steps) +
+           " steps (about 10 s); a lower display density, fewer surfaces or fewer control points "
+           "fit";
+}
+
+namespace {
+
+// The address space this process uses now (VmSize), in bytes; 0 when unknown.
+double address_space_in_use() {
+    std::ifstream statm("/proc/self/statm");
+    double pages = 0;
+    if (!(statm >> pages)) return 0;
+    return pages * static_cast<double>(::sysconf(_SC_PAGESIZE));
+}
+
+} // namespace
+
+std::string memory_limit_problem(const doc::Document& d, double driver_bytes) {
+    rlimit limit{};
+    if (::getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return "";
+    const double have = static_cast<double>(limit.rlim_cur);
+    const double need = address_space_in_use() + driver_bytes + estimate_scene_display(d).bytes;
+    if (need <= have) return "";
+    const double mib = 1 << 20;
+    return "not enough memory: the address-space limit (ulimit -v) is " +
+           geom::with_thousands(have / mib) + " MiB, and showing this scene needs about " +
+           geom::with_thousands(need / mib) + " MiB" +
+           (driver_bytes > 0 ? " (the OpenGL driver takes about " +
+                                   geom::with_thousands(driver_bytes / mib) + " of them)"
+                             : std::string{});
+}
+
+} // namespace isoparm::ui

@@ -1,0 +1,285 @@
+// Builds the renderer's input from the document each frame.
+#include "ui/view/scene_builder.hpp"
+
+#include <algorithm>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include "core/doc/placement.hpp"
+#include "core/geom/deboor.hpp"
+#include "core/geom/evaluate.hpp"
+#include "core/geom/knots.hpp"
+#include "core/geom/tessellate.hpp"
+#include "ui/view/contrast.hpp"
+#include "ui/view/deboor_overlay.hpp"
+#include "ui/view/doc_access.hpp"
+#include "ui/view/implicit_meshes.hpp"
+
+namespace isoparm::ui {
+
+namespace {
+
+glm::vec4 with_alpha(glm::vec4 c, float a) {
+    c.a *= a;
+    return c;
+}
+
+glm::vec4 axis_color(int axis) {
+    static const glm::vec4 colors[3] = {
+        {0.95f, 0.3f, 0.3f, 1}, {0.35f, 0.85f, 0.35f, 1}, {0.35f, 0.55f, 1.0f, 1}};
+    return colors[std::clamp(axis, 0, 2)];
+}
+
+void add_net(LineBatch& b, const geom::Surface& s, const glm::vec4& c) {
+    for (int i = 0; i < s.n_u; ++i)
+        for (int j = 0; j < s.n_v; ++j) {
+            const glm::vec3 p(s.point(i, j));
+            if (j + 1 < s.n_v)
+                b.vertices.insert(b.vertices.end(), {{p, c}, {glm::vec3(s.point(i, j + 1)), c}});
+            if (i + 1 < s.n_u)
+                b.vertices.insert(b.vertices.end(), {{p, c}, {glm::vec3(s.point(i + 1, j)), c}});
+        }
+}
+
+// The 12 edges of an axis-aligned box (an implicit object's bounds).
+void add_box(LineBatch& b, const glm::dvec3& lo, const glm::dvec3& hi, const glm::vec4& c) {
+    auto corner = [&](int k) {
+        return glm::vec3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+    };
+    for (int k = 0; k < 8; ++k)
+        for (int bit : {1, 2, 4})
+            if (!(k & bit))
+                b.vertices.insert(b.vertices.end(), {{corner(k), c}, {corner(k | bit), c}});
+}
+
+std::vector<glm::vec3> curve_polyline(const geom::Curve& c, int samples) {
+    std::vector<glm::vec3> out;
+    const geom::Interval d = geom::domain(c);
+    for (double t : geom::uniform_params(d.lo, d.hi, samples))
+        if (const auto p = geom::curve_point(c, t)) out.emplace_back(*p);
+    return out;
+}
+
+} // namespace
+
+glm::vec4 to_vec4(const doc::Rgba& c) {
+    return {c.r, c.g, c.b, c.a};
+}
+
+std::vector<std::vector<glm::vec3>> iso_curve(const geom::Surface& s, geom::Dir fixed, double t,
+                                              int samples) {
+    std::vector<std::vector<glm::vec3>> pieces(1);
+    const geom::Interval other = geom::domain(s, geom::opposite(fixed));
+    for (double x : geom::uniform_params(other.lo, other.hi, samples)) {
+        const auto p =
+            fixed == geom::Dir::u ? geom::surface_point(s, t, x) : geom::surface_point(s, x, t);
+        if (p) {
+            pieces.back().emplace_back(*p);
+        } else if (!pieces.back().empty()) {
+            pieces.emplace_back();
+        }
+    }
+    if (pieces.back().empty()) pieces.pop_back();
+    return pieces;
+}
+
+// The scene's colours with every line and point colour kept readable on its background (a
+// white background must not swallow a pale net).
+doc::Colors readable_overlay_colors(const doc::Colors& c) {
+    const glm::vec3 bg(c.background.r, c.background.g, c.background.b);
+    auto fix = [&](doc::Rgba& x) {
+        const glm::vec4 v = readable_on(to_vec4(x), bg, line_contrast);
+        x = {v.r, v.g, v.b, v.a};
+    };
+    doc::Colors out = c;
+    for (doc::Rgba* x : {&out.control_net, &out.control_points, &out.selected_point,
+                         &out.knot_curves, &out.indicator})
+        fix(*x);
+    return out;
+}
+
+BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
+                       const ImplicitMeshes* implicit) {
+    BuiltScene out;
+    const float k = style.scale;
+    const doc::Colors col = readable_overlay_colors(d.colors);
+    const glm::vec3 background(col.background.r, col.background.g, col.background.b);
+    const doc::DisplaySettings& disp = d.view.display;
+    const bool shaded = disp.style != doc::DisplayStyle::wireframe;
+    const bool wire = disp.style != doc::DisplayStyle::shaded;
+
+    LineBatch net{{}, 1.4f * k, true};
+    LineBatch knots{{}, 1.6f * k, true};
+    // Multiplicity shows in the line: single knots thin, double thicker, triple and more
+    // thickest (a C0 or broken join of the surface).
+    LineBatch knots_double{{}, 3.0f * k, true};
+    LineBatch knots_full{{}, 4.6f * k, true};
+    LineBatch curves{{}, 2.2f * k, true};
+    LineBatch box{{}, 1.2f * k, true};
+    // Many points (a 32x32 net) would bury the surface: they shrink with their number.
+    std::size_t total_points = 0;
+    for (const doc::Object& o : d.objects)
+        if (const geom::Surface* s = o.visible ? o.surface() : nullptr)
+            total_points += s->points.size();
+    const float point_size = total_points > 400 ? 6.f : total_points > 100 ? 7.5f : 9.f;
+    PointBatch points{{}, point_size * k, false, false};
+    PointBatch selected{{}, 13.f * k, false, true};
+
+    for (const doc::Object& o : d.objects) {
+        if (!o.visible) continue;
+        const bool is_selected = o.id == d.view.selection.object;
+        if (const geom::Surface* s = o.surface()) {
+            SurfaceDraw sd;
+            sd.id = o.id;
+            sd.surface = s;
+            sd.density = disp.density;
+            sd.shaded = shaded;
+            sd.wireframe = wire;
+            sd.fill = to_vec4(col.surface);
+            // Wireframe of the selected surface in its own colour; over a shaded surface
+            // the lines are a darker shade of it so they read as grid, not as edges.
+            glm::vec4 w = is_selected ? to_vec4(col.selected_surface) : to_vec4(col.surface);
+            if (shaded) w = glm::vec4(glm::vec3(w) * 0.45f, 0.9f);
+            sd.wire = w;
+            sd.wire_width = (shaded ? 1.0f : 1.3f) * k;
+            out.surfaces.push_back(sd);
+
+            if (disp.control_net) add_net(net, *s, to_vec4(col.control_net));
+            if (disp.control_points)
+                for (int i = 0; i < s->n_u; ++i)
+                    for (int j = 0; j < s->n_v; ++j) {
+                        const bool sel =
+                            is_selected && d.view.selection.i == i && d.view.selection.j == j;
+                        if (sel) continue;
+                        points.points.push_back(
+                            {glm::vec3(s->point(i, j)), to_vec4(col.control_points)});
+                    }
+            if (disp.knot_curves) {
+                // Knot curves S(u_k, v) and S(u, v_k); a repeated knot draws thicker.
+                for (geom::Dir dir : {geom::Dir::u, geom::Dir::v}) {
+                    const geom::Interval dom = geom::domain(*s, dir);
+                    for (const geom::KnotRun& r : geom::knot_runs(s->knots(dir))) {
+                        if (r.value < dom.lo || r.value > dom.hi) continue;
+                        const bool interior = r.value > dom.lo && r.value < dom.hi;
+                        LineBatch& b = !interior || r.multiplicity == 1 ? knots
+                                       : r.multiplicity == 2            ? knots_double
+                                                                        : knots_full;
+                        for (const auto& piece : iso_curve(*s, dir, r.value, 97))
+                            Overlay::add_polyline(b, piece, to_vec4(col.knot_curves));
+                    }
+                }
+            }
+        } else if (const doc::ImplicitObject* im = o.implicit()) {
+            const ImplicitMeshes::View v = implicit ? implicit->view(o.id) : ImplicitMeshes::View{};
+            if (v.mesh && !v.mesh->triangles.empty()) {
+                SurfaceDraw sd;
+                sd.id = o.id;
+                sd.mesh = v.mesh;
+                sd.mesh_revision = v.revision;
+                sd.shaded = shaded;
+                // Every triangle edge over a shaded surface would hide it: wireframe only
+                // in the wireframe style.
+                sd.wireframe = !shaded;
+                sd.fill = to_vec4(col.surface);
+                sd.wire = to_vec4(is_selected ? col.selected_surface : col.surface);
+                sd.wire_width = 1.0f * k;
+                out.surfaces.push_back(sd);
+            }
+            if (is_selected) add_box(box, im->lo, im->hi, to_vec4(col.selected_surface));
+        } else if (const geom::Curve* c = o.curve()) {
+            // A curve in the surface colour disappears against a surface built from it (a
+            // ruled or skinned surface runs through its curves): curves take a pale tint.
+            const glm::vec4 cc =
+                is_selected ? to_vec4(col.selected_surface)
+                            : readable_on(glm::mix(to_vec4(col.surface), glm::vec4(1), 0.6f),
+                                          background, line_contrast);
+            Overlay::add_polyline(curves, curve_polyline(*c, 200), cc);
+            if (disp.control_net) {
+                std::vector<glm::vec3> poly;
+                for (const glm::dvec3& p : c->points) poly.emplace_back(p);
+                Overlay::add_polyline(net, poly, to_vec4(col.control_net));
+            }
+            if (disp.control_points)
+                for (int i = 0; i < c->count(); ++i)
+                    if (!(is_selected && d.view.selection.i == i))
+                        points.points.push_back(
+                            {glm::vec3(c->points[i]), to_vec4(col.control_points)});
+        }
+    }
+
+    // The selected control point: larger, in its own colour, always visible.
+    if (disp.control_points && has_valid_point(d)) {
+        const doc::Object* o = d.selected();
+        glm::dvec3 p{0};
+        if (const geom::Surface* s = o->surface())
+            p = s->point(d.view.selection.i, d.view.selection.j);
+        else if (const geom::Curve* c = o->curve())
+            p = c->points[d.view.selection.i];
+        selected.points.push_back({glm::vec3(p), to_vec4(col.selected_point)});
+    }
+
+    // The indicator: S(u,v) as a small sphere, with the two isoparametric curves through it.
+    LineBatch iso{{}, 1.6f * k, true};
+    PointBatch indicator{{}, 14.f * k, true, true};
+    if (disp.indicator_point) {
+        const doc::Object* current = nullptr;
+        if (const geom::Surface* s = current_surface(d, &current)) {
+            const glm::dvec2 uv = indicator_params(d, *current);
+            const glm::vec4 ic = to_vec4(col.indicator);
+            for (const auto& piece : iso_curve(*s, geom::Dir::u, uv.x, 97))
+                Overlay::add_polyline(iso, piece, with_alpha(ic, 0.55f));
+            for (const auto& piece : iso_curve(*s, geom::Dir::v, uv.y, 97))
+                Overlay::add_polyline(iso, piece, with_alpha(ic, 0.55f));
+            if (const auto p = geom::surface_point(*s, uv.x, uv.y))
+                indicator.points.push_back({glm::vec3(*p), ic});
+        }
+    }
+
+    LineBatch guide{{}, 1.5f * k, false};
+    Overlay deboor;
+    if (style.guide_axis >= 0) {
+        glm::dvec3 dir(0);
+        dir[style.guide_axis] = 1;
+        const auto box = doc::scene_bounds(d);
+        const double len = box ? std::max(glm::length(box->hi - box->lo), 1.0) * 2 : 10.0;
+        const glm::vec4 gc = axis_color(style.guide_axis);
+        guide.vertices.push_back({glm::vec3(style.guide_point - dir * len), gc});
+        guide.vertices.push_back({glm::vec3(style.guide_point + dir * len), gc});
+    }
+
+    // De Boor's construction at the indicator, up to the step the lecture has reached.
+    if (disp.deboor) {
+        const doc::Object* current = nullptr;
+        if (const geom::Surface* s = current_surface(d, &current)) {
+            const glm::dvec2 uv = indicator_params(d, *current);
+            add_deboor_overlay(geom::deboor_surface(*s, uv.x, uv.y), s->degree_u, s->degree_v,
+                               style.deboor_step, k, deboor);
+        }
+    }
+
+    for (LineBatch* b : {&knots, &knots_double, &knots_full, &curves, &net, &box, &iso, &guide})
+        if (!b->vertices.empty()) out.overlay.lines.push_back(std::move(*b));
+    for (PointBatch* b : {&points, &indicator, &selected})
+        if (!b->points.empty()) out.overlay.points.push_back(std::move(*b));
+    // Last, so the construction draws over the net and the indicator.
+    for (LineBatch& b : deboor.lines) out.overlay.lines.push_back(std::move(b));
+    for (PointBatch& b : deboor.points) out.overlay.points.push_back(std::move(b));
+    return out;
+}
+
+std::vector<glm::dvec3> scene_points(const doc::Document& d) {
+    std::vector<glm::dvec3> out;
+    for (const doc::Object& o : d.objects) {
+        if (!o.visible) continue;
+        const std::span<const glm::dvec3> points = doc::control_points_of(o.shape);
+        out.insert(out.end(), points.begin(), points.end());
+        if (const doc::ImplicitObject* im = o.implicit()) {
+            for (int k = 0; k < 8; ++k)
+                out.push_back({k & 1 ? im->hi.x : im->lo.x, k & 2 ? im->hi.y : im->lo.y,
+                               k & 4 ? im->hi.z : im->lo.z});
+        }
+    }
+    return out;
+}
+
+} // namespace isoparm::ui

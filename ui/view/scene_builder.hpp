@@ -1,0 +1,44 @@
+// From the document to what the renderer draws: surfaces with their colours and the
+// overlay (control nets, points, indicator S(u,v), knot curves, drag guides). No GL here.
+#pragma once
+
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/doc/document.hpp"
+#include "ui/view/overlay.hpp"
+#include "ui/view/scene_draw.hpp"
+
+namespace isoparm::ui {
+
+glm::vec4 to_vec4(const doc::Rgba& c);
+
+struct SceneStyle {
+    float scale = 1;     // line widths and point sizes (HiDPI, presentation)
+    int guide_axis = -1; // an axis-constrained drag shows its axis through guide_point
+    glm::dvec3 guide_point{0};
+    int deboor_step = -1; // de Boor's construction up to this step (-1: all); deboor_overlay.hpp
+};
+
+struct BuiltScene {
+    std::vector<SurfaceDraw> surfaces;
+    Overlay overlay;
+};
+class ImplicitMeshes;
+// Implicit objects are drawn from `implicit`'s cached meshes (left out when it is null or
+// has no mesh for them yet); the selected one also shows its bounds as a box.
+BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
+                       const ImplicitMeshes* implicit = nullptr);
+
+// The points of the isoparametric curve with `fixed` direction held at t (S(t, v) for
+// fixed = u), `samples` evenly spaced in the other direction; runs where the point does not
+// exist (zero denominator) break the polyline into pieces.
+std::vector<std::vector<glm::vec3>> iso_curve(const geom::Surface& s, geom::Dir fixed, double t,
+                                              int samples);
+
+// The control points of visible objects (corners of an implicit object's box): what "fit
+// to view" frames.
+std::vector<glm::dvec3> scene_points(const doc::Document& d);
+
+} // namespace isoparm::ui
