@@ -1,9 +1,17 @@
-// The undo/redo history: merging of drags, the clean mark and the memory bound.
+// Command::check by trial, and the undo/redo history: merging of drags, the clean mark and the
+// memory bound.
 #include "core/doc/command.hpp"
 
 #include <cassert>
 
 namespace isoparm::doc {
+
+geom::Status Command::check(const Document& doc) const {
+    std::optional<CommandSpec> again = spec();
+    if (!again) return geom::Ok{};
+    Document scratch = doc;
+    return make_command(std::move(*again))->apply(scratch);
+}
 
 // Positions are counted in "commands applied since the history began" (dropped_ included),
 // so the clean mark survives the memory bound dropping the oldest commands.

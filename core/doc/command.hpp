@@ -3,9 +3,11 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/doc/command_spec.hpp"
 #include "core/doc/document.hpp"
 #include "core/geom/status.hpp"
 
@@ -14,11 +16,19 @@ namespace isoparm::doc {
 class Command {
 public:
     virtual ~Command() = default;
+    // What apply would answer on doc, without changing anything: menus grey an item and show
+    // this reason instead of repeating the command's rules. By default the command is built
+    // again from its spec and applied to a copy of the document (exact, at the price of the
+    // copy); commands whose checks stand apart from their work answer directly.
+    virtual geom::Status check(const Document& doc) const;
     // Validates first and refuses without touching anything.
     virtual geom::Status apply(Document& doc) = 0;
     // Restores exactly the state before apply (bit-identical geometry).
     virtual void revert(Document& doc) = 0;
     virtual std::string label() const = 0;
+    // The command as data (command_spec.hpp); after a merge, the whole drag's final value.
+    // Nothing for an edit that no script makes (restoring a recovery file).
+    virtual std::optional<CommandSpec> spec() const = 0;
     // Absorb `next` (already applied) into this command, so a drag is one undo step.
     virtual bool merge_with(const Command& /*next*/) { return false; }
     // Approximate heap bytes held, for the history's memory bound.

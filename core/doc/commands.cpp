@@ -9,6 +9,7 @@
 
 #include "core/doc/commands_common.hpp"
 #include "core/doc/patches.hpp"
+#include "core/doc/shape_edit.hpp"
 #include "core/geom/knots.hpp"
 
 namespace isoparm::doc {
@@ -113,6 +114,7 @@ public:
     }
 
     std::string label() const override { return "Add " + object_.name; }
+    std::optional<CommandSpec> spec() const override { return AddObjectSpec{object_}; }
     std::size_t memory_bytes() const override {
         return sizeof(*this) + object_.name.size() + detail::shape_bytes(object_.shape);
     }
@@ -144,6 +146,7 @@ public:
     }
 
     std::string label() const override { return "Delete " + object_.name; }
+    std::optional<CommandSpec> spec() const override { return RemoveObjectSpec{id_}; }
     std::size_t memory_bytes() const override {
         return sizeof(*this) + object_.name.size() + detail::shape_bytes(object_.shape);
     }
@@ -175,6 +178,7 @@ public:
     }
 
     std::string label() const override { return "Rename " + old_name_ + " to " + name_; }
+    std::optional<CommandSpec> spec() const override { return RenameObjectSpec{id_, name_}; }
     std::size_t memory_bytes() const override {
         return sizeof(*this) + name_.size() + old_name_.size();
     }
@@ -204,6 +208,7 @@ public:
     }
 
     std::string label() const override { return (visible_ ? "Show " : "Hide ") + name_; }
+    std::optional<CommandSpec> spec() const override { return SetVisibleSpec{id_, visible_}; }
     std::size_t memory_bytes() const override { return sizeof(*this) + name_.size(); }
 
 private:
@@ -212,47 +217,8 @@ private:
     std::string name_;
 };
 
-class ReplaceShape final : public Command {
-public:
-    ReplaceShape(std::uint64_t id, Shape shape, std::string label)
-        : id_(id), shape_(std::move(shape)), label_(std::move(label)) {}
-
-    geom::Status apply(Document& doc) override {
-        auto found = detail::find_object(doc, id_);
-        if (!found) return found.error();
-        if (auto st = detail::validate_shape(shape_); !st) return st.error().under("/shape");
-        Object& obj = **found;
-        old_ = obj.shape;
-        obj.shape = shape_;
-        sel_before_ = doc.view.selection;
-        if (!selection_valid(doc, doc.view.selection))
-            doc.view.selection.i = doc.view.selection.j = -1;
-        sel_after_ = doc.view.selection;
-        return geom::Ok{};
-    }
-
-    void revert(Document& doc) override {
-        Object* obj = doc.find(id_);
-        assert(obj);
-        obj->shape = old_;
-        restore_selection(doc, sel_before_, sel_after_);
-    }
-
-    std::string label() const override { return label_; }
-    std::size_t memory_bytes() const override {
-        return sizeof(*this) + label_.size() + detail::shape_bytes(shape_) +
-               detail::shape_bytes(old_);
-    }
-
-private:
-    std::uint64_t id_;
-    Shape shape_, old_;
-    std::string label_;
-    Selection sel_before_, sel_after_;
-};
-
 // ---------------------------------------------------------------------------------------
-// What an edit of a subpatch's control point did to its neighbours (issue 5): the points
+// What an edit of a subpatch's control point did to its neighbours: the points
 // keep_continuity moved, to restore on undo, and the continuity setting the edit was made with
 // (read once, so a redo replays the edit as it was made, whatever the setting is by then).
 struct NeighbourEdits {
@@ -277,114 +243,108 @@ struct NeighbourEdits {
     std::size_t bytes() const { return changes.capacity() * sizeof(PointChange); }
 };
 
-class MoveControlPoint final : public Command {
+// A control point's position, weight, or both: the paper's drag in the 3D view or a plane,
+// the control-point editor's fields and the weight sliders.
+class EditPoint final : public Command {
 public:
-    MoveControlPoint(std::uint64_t id, int i, int j, glm::dvec3 p) : id_(id), i_(i), j_(j), p_(p) {}
+    explicit EditPoint(EditPointSpec spec) : spec_(std::move(spec)) {}
+
+    geom::Status check(const Document& doc) const override {
+        auto found = detail::find_object(doc, spec_.id);
+        if (!found) return found.error();
+        Object copy = **found; // control_point hands out mutable references
+        auto ref = validate(copy);
+        if (!ref) return ref.error();
+        return geom::Ok{};
+    }
 
     geom::Status apply(Document& doc) override {
-        auto found = detail::find_object(doc, id_);
+        auto found = detail::find_object(doc, spec_.id);
         if (!found) return found.error();
-        auto ref = control_point(**found, i_, j_);
+        auto ref = validate(**found);
         if (!ref) return ref.error();
-        for (int a = 0; a < 3; ++a)
-            if (!std::isfinite(p_[a]))
-                return make_error(ErrorCode::schema,
-                                  "a control point needs finite coordinates, got " + vec_text(p_),
-                                  "/position/" + std::to_string(a));
         curve_ = ref->curve != nullptr;
-        old_ = ref->position();
-        ref->position() = p_;
-        // Subpatches: the neighbours follow so the borders stay closed / smooth (issue 5).
-        if (!curve_) neighbours_.follow(doc, id_, i_, j_);
+        old_position_ = ref->position();
+        old_weight_ = ref->weight();
+        if (spec_.position) ref->position() = *spec_.position;
+        if (spec_.weight) ref->weight() = *spec_.weight;
+        // Subpatches: the neighbours follow so the borders stay closed / smooth.
+        if (!curve_) neighbours_.follow(doc, spec_.id, spec_.i, spec_.j);
         return geom::Ok{};
     }
 
     void revert(Document& doc) override {
-        Object* obj = doc.find(id_);
+        Object* obj = doc.find(spec_.id);
         assert(obj);
         neighbours_.restore(doc);
-        control_point(*obj, i_, j_)->position() = old_;
+        auto ref = control_point(*obj, spec_.i, spec_.j);
+        ref->position() = old_position_;
+        ref->weight() = old_weight_;
     }
 
     bool merge_with(const Command& next) override {
-        auto* m = dynamic_cast<const MoveControlPoint*>(&next);
-        if (!m || m->id_ != id_ || m->i_ != i_ || m->j_ != j_) return false;
-        p_ = m->p_; // old_ stays: the position before the whole drag
+        auto* m = dynamic_cast<const EditPoint*>(&next);
+        if (!m || m->spec_.id != spec_.id || m->spec_.i != spec_.i || m->spec_.j != spec_.j ||
+            m->spec_.position.has_value() != spec_.position.has_value() ||
+            m->spec_.weight.has_value() != spec_.weight.has_value())
+            return false;
+        spec_ = m->spec_; // the old values stay: those before the whole drag
         neighbours_.merge(m->neighbours_);
         return true;
     }
 
+    std::optional<CommandSpec> spec() const override { return spec_; }
     std::size_t memory_bytes() const override { return sizeof(*this) + neighbours_.bytes(); }
 
     std::string label() const override {
-        return "Move " + detail::point_label('P', i_, curve_ ? -1 : j_);
+        const int j = curve_ ? -1 : spec_.j;
+        if (spec_.position && spec_.weight) return "Edit " + detail::point_label('P', spec_.i, j);
+        if (spec_.position) return "Move " + detail::point_label('P', spec_.i, j);
+        return "Set weight " + detail::point_label('w', spec_.i, j) + " = " +
+               geom::format_number(spec_.weight.value_or(1.0));
     }
 
 private:
-    std::uint64_t id_;
-    int i_, j_;
-    glm::dvec3 p_, old_{0};
-    bool curve_ = false;
-    NeighbourEdits neighbours_;
-};
-
-class SetWeight final : public Command {
-public:
-    SetWeight(std::uint64_t id, int i, int j, double w) : id_(id), i_(i), j_(j), w_(w) {}
-
-    geom::Status apply(Document& doc) override {
-        auto found = detail::find_object(doc, id_);
-        if (!found) return found.error();
-        auto ref = control_point(**found, i_, j_);
+    geom::Expected<PointRef> validate(Object& obj) const {
+        auto ref = control_point(obj, spec_.i, spec_.j);
         if (!ref) return ref.error();
-        curve_ = ref->curve != nullptr;
-        const std::string name = detail::point_label('w', i_, curve_ ? -1 : j_);
-        if (!std::isfinite(w_))
-            return make_error(ErrorCode::weights,
-                              "weight " + name + " must be a finite number, got " +
-                                  geom::format_number(w_),
-                              "/weight");
-        // The type tag is enforced: a non-rational object keeps unit weights.
-        if (!geom::is_rational(ref->type()) && w_ != 1.0)
-            return make_error(ErrorCode::weights,
-                              std::string("a ") + geom::spline_type_name(ref->type()) + " " +
-                                  (curve_ ? "curve" : "surface") +
-                                  " has unit weights; make it rational (nurbs or "
-                                  "rational_bezier) to set " +
-                                  name + " = " + geom::format_number(w_),
-                              "/weight");
-        old_ = ref->weight();
-        ref->weight() = w_;
-        if (!curve_) neighbours_.follow(doc, id_, i_, j_);
-        return geom::Ok{};
+        if (!spec_.position && !spec_.weight)
+            return make_error(ErrorCode::schema,
+                              "a point edit sets a position, a weight or both; this one sets "
+                              "neither",
+                              "/position");
+        if (spec_.position)
+            for (int a = 0; a < 3; ++a)
+                if (!std::isfinite((*spec_.position)[a]))
+                    return make_error(ErrorCode::schema,
+                                      "a control point needs finite coordinates, got " +
+                                          vec_text(*spec_.position),
+                                      "/position/" + std::to_string(a));
+        if (spec_.weight) {
+            const double w = *spec_.weight;
+            const bool curve = ref->curve != nullptr;
+            const std::string name = detail::point_label('w', spec_.i, curve ? -1 : spec_.j);
+            if (!std::isfinite(w))
+                return make_error(ErrorCode::weights,
+                                  "weight " + name + " must be a finite number, got " +
+                                      geom::format_number(w),
+                                  "/weight");
+            // The type tag is enforced: a non-rational object keeps unit weights.
+            if (!geom::is_rational(ref->type()) && w != 1.0)
+                return make_error(ErrorCode::weights,
+                                  std::string("a ") + geom::spline_type_name(ref->type()) + " " +
+                                      (curve ? "curve" : "surface") +
+                                      " has unit weights; make it rational (nurbs or "
+                                      "rational_bezier) to set " +
+                                      name + " = " + geom::format_number(w),
+                                  "/weight");
+        }
+        return ref;
     }
 
-    void revert(Document& doc) override {
-        Object* obj = doc.find(id_);
-        assert(obj);
-        neighbours_.restore(doc);
-        control_point(*obj, i_, j_)->weight() = old_;
-    }
-
-    bool merge_with(const Command& next) override {
-        auto* m = dynamic_cast<const SetWeight*>(&next);
-        if (!m || m->id_ != id_ || m->i_ != i_ || m->j_ != j_) return false;
-        w_ = m->w_;
-        neighbours_.merge(m->neighbours_);
-        return true;
-    }
-
-    std::size_t memory_bytes() const override { return sizeof(*this) + neighbours_.bytes(); }
-
-    std::string label() const override {
-        return "Set weight " + detail::point_label('w', i_, curve_ ? -1 : j_) + " = " +
-               geom::format_number(w_);
-    }
-
-private:
-    std::uint64_t id_;
-    int i_, j_;
-    double w_, old_ = 1;
+    EditPointSpec spec_;
+    glm::dvec3 old_position_{0};
+    double old_weight_ = 1;
     bool curve_ = false;
     NeighbourEdits neighbours_;
 };
@@ -489,6 +449,10 @@ public:
         return true;
     }
 
+    std::optional<CommandSpec> spec() const override {
+        return MoveKnotSpec{id_, dir_, k_, count_, value_};
+    }
+
     std::string label() const override {
         std::string s = "Set knot " + label_name() + " = " + geom::format_number(value_);
         if (count_ > 1) s += " (" + std::to_string(count_) + " copies)";
@@ -576,6 +540,7 @@ public:
     }
 
     std::string label() const override { return label_; }
+    std::optional<CommandSpec> spec() const override { return TransformSpec{id_, m_, label_}; }
     std::size_t memory_bytes() const override {
         return sizeof(*this) + label_.size() +
                (before_.size() + after_.size()) * sizeof(glm::dvec3);
@@ -629,6 +594,7 @@ public:
     }
 
     std::string label() const override { return "Change colours"; }
+    std::optional<CommandSpec> spec() const override { return SetColorsSpec{colors_}; }
 
 private:
     Colors colors_, old_;
@@ -648,14 +614,25 @@ std::unique_ptr<Command> rename_object(std::uint64_t id, std::string name) {
 std::unique_ptr<Command> set_visible(std::uint64_t id, bool visible) {
     return std::make_unique<SetVisible>(id, visible);
 }
-std::unique_ptr<Command> replace_shape(std::uint64_t id, Shape shape, std::string label) {
-    return std::make_unique<ReplaceShape>(id, std::move(shape), std::move(label));
+std::unique_ptr<Command> edit_shape(std::uint64_t id, Shape shape, std::string label,
+                                    std::string merge_key) {
+    EditShapeSpec spec{id, shape, label, merge_key};
+    detail::ShapeEditRule rule;
+    rule.make = [shape = std::move(shape)](const Object&) -> geom::Expected<Shape> {
+        return shape;
+    };
+    rule.label = [label = std::move(label)](const Shape&, const Shape&) { return label; };
+    rule.merge_key = std::move(merge_key);
+    return detail::shape_edit(id, std::move(spec), std::move(rule));
+}
+std::unique_ptr<Command> edit_point(EditPointSpec spec) {
+    return std::make_unique<EditPoint>(std::move(spec));
 }
 std::unique_ptr<Command> move_control_point(std::uint64_t id, int i, int j, glm::dvec3 position) {
-    return std::make_unique<MoveControlPoint>(id, i, j, position);
+    return edit_point({id, i, j, position, std::nullopt});
 }
 std::unique_ptr<Command> set_weight(std::uint64_t id, int i, int j, double weight) {
-    return std::make_unique<SetWeight>(id, i, j, weight);
+    return edit_point({id, i, j, std::nullopt, weight});
 }
 std::unique_ptr<Command> set_knot(std::uint64_t id, geom::Dir dir, int k, double value) {
     return std::make_unique<SetKnot>(id, dir, k, 1, value);

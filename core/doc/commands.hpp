@@ -7,13 +7,14 @@
 #include <utility>
 
 #include "core/doc/command.hpp"
+#include "core/doc/command_spec.hpp"
 
 namespace isoparm::doc {
 
 // Refusals name the argument at fault as a JSON Pointer: "/id" (no such object, or an object
 // of the wrong kind), "/i", "/j" (control point index; curves take j = -1), "/position/0..2",
 // "/weight", "/k" and "/value" (set_knot), "/direction", "/name", "/matrix", "/times",
-// "/shape/..." (the geometry given to add_object / replace_shape, as validate_* reports it),
+// "/shape/..." (the geometry given to add_object / edit_shape, as validate_* reports it),
 // "/<colour>/<channel>" (set_colors). Codes as in the geometry protocol.
 
 std::unique_ptr<Command> add_object(Object object); // id assigned on apply if 0
@@ -21,12 +22,20 @@ std::unique_ptr<Command> remove_object(std::uint64_t id);
 std::unique_ptr<Command> rename_object(std::uint64_t id, std::string name);
 // Hidden objects are neither drawn nor picked; they stay in the scene (the object list).
 std::unique_ptr<Command> set_visible(std::uint64_t id, bool visible);
-// Replace an object's shape wholesale (type changes, constructions); label names the edit.
-std::unique_ptr<Command> replace_shape(std::uint64_t id, Shape shape, std::string label);
+// The object's shape becomes `shape` (type changes, an implicit's fields), which must be the
+// same kind of object (`schema` at "/shape"); label names the edit. Consecutive edits of one
+// object with the same non-empty merge_key are one undo step (a slider drag).
+std::unique_ptr<Command> edit_shape(std::uint64_t id, Shape shape, std::string label,
+                                    std::string merge_key = {});
 
-// Drags: consecutive edits of the same point / weight / knot merge into one undo step.
+// A control point's position, weight or both ("/position" when neither is given). Drags:
+// consecutive edits of the same point setting the same fields merge into one undo step. A
+// subpatch's neighbours follow under the continuity setting (patches.hpp: keep_continuity).
+std::unique_ptr<Command> edit_point(EditPointSpec spec);
+// edit_point with the position only, or with the weight only.
 std::unique_ptr<Command> move_control_point(std::uint64_t id, int i, int j, glm::dvec3 position);
 std::unique_ptr<Command> set_weight(std::uint64_t id, int i, int j, double weight);
+// Consecutive edits of the same knot merge into one undo step.
 // Knot k of direction dir (curves: Dir::u) moves to value; it must stay within its
 // neighbours and keep the knot vector valid (error `knots`).
 std::unique_ptr<Command> set_knot(std::uint64_t id, geom::Dir dir, int k, double value);
@@ -52,8 +61,8 @@ std::unique_ptr<Command> transform_object(std::uint64_t id, const glm::dmat4& m,
 // "(rational Bezier becomes NURBS)" and refinement_type_change says it.
 std::unique_ptr<Command> insert_knot(std::uint64_t id, geom::Dir dir, double t, int times = 1);
 std::unique_ptr<Command> elevate_degree(std::uint64_t id, geom::Dir dir, int times = 1);
-// "rational Bezier becomes NURBS" when an applied insert_knot / elevate_degree command changed
-// the kind of spline; empty otherwise (and for any other command).
+// "rational Bezier becomes NURBS" when an applied shape edit (insert_knot, elevate_degree,
+// edit_shape) changed the kind of spline; empty otherwise (and for any other command).
 std::string refinement_type_change(const Command& refine_command);
 // Replaces the object with its two pieces (names "<name>.1", "<name>.2", fresh ids): the
 // first piece ([a, t]) takes the original's place in Document::objects and the second

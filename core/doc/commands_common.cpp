@@ -18,6 +18,11 @@ geom::Expected<Object*> find_object(Document& doc, std::uint64_t id) {
     return make_error(ErrorCode::schema, "there is no object with id " + std::to_string(id), "/id");
 }
 
+geom::Expected<const Object*> find_object(const Document& doc, std::uint64_t id) {
+    if (const Object* o = doc.find(id)) return o;
+    return make_error(ErrorCode::schema, "there is no object with id " + std::to_string(id), "/id");
+}
+
 const char* kind_name(const Shape& shape) {
     if (std::holds_alternative<SurfaceObject>(shape)) return "surface";
     if (std::holds_alternative<CurveObject>(shape)) return "curve";

@@ -11,6 +11,7 @@ namespace isoparm::doc::detail {
 
 // The object with this id, or a `schema` error at "/id".
 geom::Expected<Object*> find_object(Document& doc, std::uint64_t id);
+geom::Expected<const Object*> find_object(const Document& doc, std::uint64_t id);
 
 // "surface", "curve", "implicit surface": for messages.
 const char* kind_name(const Shape& shape);

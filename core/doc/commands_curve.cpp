@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "core/doc/commands_common.hpp"
+#include "core/doc/shape_edit.hpp"
 #include "core/geom/construct.hpp"
 #include "core/geom/interpolate.hpp"
 #include "core/geom/knots.hpp"
@@ -109,78 +110,35 @@ using CurveEdit = std::function<geom::Expected<CurveObject>(const Object&, const
 // The selection after the edit, from the one before.
 using SelectionMap = std::function<Selection(const Selection&, const CurveObject& after)>;
 
-// One edit of one curve object: apply computes the new curve once (redo reuses it), stores
-// the old one and swaps; revert swaps back. Consecutive edits with the same non-empty merge
-// key merge into one undo step.
-class EditCurve final : public Command {
-public:
-    EditCurve(std::uint64_t id, std::string label, CurveEdit edit, std::string merge_key = {},
-              SelectionMap selection = {})
-        : id_(id), label_(std::move(label)), edit_(std::move(edit)),
-          merge_key_(std::move(merge_key)), selection_(std::move(selection)) {}
-
-    geom::Status apply(Document& doc) override {
-        auto found = detail::find_object(doc, id_);
-        if (!found) return found.error();
-        Object& obj = **found;
-        auto* c = std::get_if<CurveObject>(&obj.shape);
+// A curve designer's edit: a shape edit (shape_edit.hpp) of a curve object. `select` moves
+// the selection into the new curve; a point index past its end goes to its last point.
+std::unique_ptr<Command> curve_edit(std::uint64_t id, CommandSpec spec, std::string label,
+                                    CurveEdit edit, std::string merge_key = {},
+                                    SelectionMap select = {}) {
+    detail::ShapeEditRule rule;
+    rule.make = [edit = std::move(edit)](const Object& obj) -> geom::Expected<Shape> {
+        const CurveObject* c = obj.curve_object();
         if (!c)
             return make_error(ErrorCode::schema,
-                              "object '" + obj.name + "' is a " + detail::kind_name(obj.shape) +
+                              "object '" + obj.name + "' is a " + kind_name(obj.kind()) +
                                   "; the curve designer edits curves",
                               "/id");
-        if (!new_) {
-            auto r = edit_(obj, *c);
-            if (!r) return r.error();
-            if (auto st = detail::validate_shape(*r); !st) return st.error().under("/curve");
-            new_ = std::move(r).value();
-        }
-        old_ = *c;
-        *c = *new_;
-        sel_before_ = doc.view.selection;
-        if (selection_) doc.view.selection = selection_(doc.view.selection, *new_);
-        if (doc.view.selection.object == id_ && doc.view.selection.i >= new_->curve.count())
-            doc.view.selection.i = new_->curve.count() - 1;
-        sel_after_ = doc.view.selection;
-        return geom::Ok{};
-    }
-
-    void revert(Document& doc) override {
-        Object* obj = doc.find(id_);
-        assert(obj && old_);
-        obj->shape = *old_;
-        // Selection is view state: put it back unless the user selected something since; a
-        // point index the old curve does not have is dropped.
-        if (doc.view.selection == sel_after_) doc.view.selection = sel_before_;
-        if (doc.view.selection.object == id_ && doc.view.selection.i >= old_->curve.count())
-            doc.view.selection.i = doc.view.selection.j = -1;
-    }
-
-    bool merge_with(const Command& next) override {
-        auto* m = dynamic_cast<const EditCurve*>(&next);
-        if (!m || merge_key_.empty() || m->id_ != id_ || m->merge_key_ != merge_key_) return false;
-        new_ = m->new_; // old_ stays: the curve before the whole drag
-        sel_after_ = m->sel_after_;
-        return true;
-    }
-
-    std::string label() const override { return label_; }
-    std::size_t memory_bytes() const override {
-        std::size_t bytes = sizeof(*this) + label_.size();
-        if (old_) bytes += detail::shape_bytes(*old_);
-        if (new_) bytes += detail::shape_bytes(*new_);
-        return bytes;
-    }
-
-private:
-    std::uint64_t id_;
-    std::string label_;
-    CurveEdit edit_;
-    std::string merge_key_;
-    SelectionMap selection_;
-    std::optional<CurveObject> old_, new_;
-    Selection sel_before_, sel_after_;
-};
+        auto r = edit(obj, *c);
+        if (!r) return r.error();
+        return Shape{std::move(r).value()};
+    };
+    rule.label = [label = std::move(label)](const Shape&, const Shape&) { return label; };
+    rule.forward = [id, select = std::move(select)](const Selection& sel, const Shape&,
+                                                    const Shape& to) {
+        const CurveObject& after = *curve_object_of(to);
+        Selection out = select ? select(sel, after) : sel;
+        if (out.object == id && out.i >= after.curve.count()) out.i = after.curve.count() - 1;
+        return out;
+    };
+    rule.merge_key = std::move(merge_key);
+    rule.shape_path = "/curve";
+    return detail::shape_edit(id, std::move(spec), std::move(rule));
+}
 
 geom::Status check_index(int i, int count, const char* what) {
     if (i < 0 || i > count)
@@ -326,8 +284,8 @@ std::unique_ptr<Command> insert_curve_point(std::uint64_t id, int i, glm::dvec3 
         return out;
     };
     auto select = [id, i](const Selection&, const CurveObject&) { return Selection{id, i, -1}; };
-    auto cmd = std::make_unique<EditCurve>(id, "Insert P" + std::to_string(i), edit, "", select);
-    return cmd;
+    return curve_edit(id, InsertCurvePointSpec{id, i, position}, "Insert P" + std::to_string(i),
+                      edit, "", select);
 }
 
 std::unique_ptr<Command> delete_curve_point(std::uint64_t id, int i) {
@@ -364,7 +322,8 @@ std::unique_ptr<Command> delete_curve_point(std::uint64_t id, int i) {
         out.i = std::min(out.i, after.curve.count() - 1);
         return out;
     };
-    return std::make_unique<EditCurve>(id, "Delete P" + std::to_string(i), edit, "", select);
+    return curve_edit(id, DeleteCurvePointSpec{id, i}, "Delete P" + std::to_string(i), edit, "",
+                      select);
 }
 
 std::unique_ptr<Command> move_curve_point(std::uint64_t id, int i, glm::dvec3 position) {
@@ -386,8 +345,8 @@ std::unique_ptr<Command> move_curve_point(std::uint64_t id, int i, glm::dvec3 po
             if (auto st = refresh_knots(obj, out, "/position"); !st) return st.error();
         return out;
     };
-    return std::make_unique<EditCurve>(id, "Move P" + std::to_string(i), edit,
-                                       "move " + std::to_string(i));
+    return curve_edit(id, MoveCurvePointSpec{id, i, position}, "Move P" + std::to_string(i), edit,
+                      "move " + std::to_string(i));
 }
 
 std::unique_ptr<Command> set_curve_degree(std::uint64_t id, int degree) {
@@ -415,7 +374,8 @@ std::unique_ptr<Command> set_curve_degree(std::uint64_t id, int degree) {
         if (auto st = refresh_knots(obj, out, "/degree"); !st) return st.error();
         return out;
     };
-    return std::make_unique<EditCurve>(id, "Set degree " + std::to_string(degree), edit);
+    return curve_edit(id, SetCurveDegreeSpec{id, degree}, "Set degree " + std::to_string(degree),
+                      edit);
 }
 
 std::unique_ptr<Command> set_curve_knot_mode(std::uint64_t id, CurveKnotMode mode) {
@@ -435,7 +395,8 @@ std::unique_ptr<Command> set_curve_knot_mode(std::uint64_t id, CurveKnotMode mod
         }
         return out;
     };
-    return std::make_unique<EditCurve>(id, std::string("Knots: ") + knot_mode_label(mode), edit);
+    return curve_edit(id, SetCurveKnotModeSpec{id, mode},
+                      std::string("Knots: ") + knot_mode_label(mode), edit);
 }
 
 std::unique_ptr<Command> set_curve_plane(std::uint64_t id, CurvePlane plane, bool carry_points) {
@@ -453,7 +414,8 @@ std::unique_ptr<Command> set_curve_plane(std::uint64_t id, CurvePlane plane, boo
         }
         return out;
     };
-    return std::make_unique<EditCurve>(id, std::string("Plane ") + curve_plane_label(plane), edit);
+    return curve_edit(id, SetCurvePlaneSpec{id, plane, carry_points},
+                      std::string("Plane ") + curve_plane_label(plane), edit);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -538,6 +500,7 @@ public:
         for (const CurveObject& c : old_) bytes += 2 * detail::shape_bytes(c);
         return bytes;
     }
+    std::optional<CommandSpec> spec() const override { return MakeCompatibleSpec{ids_}; }
 
 private:
     std::vector<std::uint64_t> ids_;

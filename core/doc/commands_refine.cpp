@@ -10,6 +10,7 @@
 #include "core/doc/commands.hpp"
 #include "core/doc/commands_common.hpp"
 #include "core/doc/patches.hpp"
+#include "core/doc/shape_edit.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/refine.hpp"
 #include "core/geom/refine_within_limits.hpp"
@@ -73,199 +74,87 @@ bool is_curve(const Shape& shape) {
     return std::holds_alternative<CurveObject>(shape);
 }
 
-// Shared checks of the refinement commands: the object exists, has knots, and a curve is
-// refined along its only direction.
+// Shared checks of the refinement commands: the object has knots, and a curve is refined
+// along its only direction.
+geom::Status check_refinable(const Object& obj, Dir dir, const char* what) {
+    if (obj.kind() == ObjectKind::implicit)
+        return make_error(ErrorCode::schema,
+                          "object '" + obj.name + "' is an implicit surface; " + what +
+                              " needs a curve or a surface",
+                          "/id");
+    if (obj.kind() == ObjectKind::curve && dir != Dir::u)
+        return make_error(ErrorCode::schema, "a curve has only one direction (u)", "/direction");
+    return geom::Ok{};
+}
+
 geom::Expected<Object*> refinable(Document& doc, std::uint64_t id, Dir dir, const char* what) {
     auto found = detail::find_object(doc, id);
     if (!found) return found.error();
-    Object* obj = *found;
-    if (std::holds_alternative<ImplicitObject>(obj->shape))
-        return make_error(ErrorCode::schema,
-                          "object '" + obj->name + "' is an implicit surface; " + what +
-                              " needs a curve or a surface",
-                          "/id");
-    if (is_curve(obj->shape) && dir != Dir::u)
-        return make_error(ErrorCode::schema, "a curve has only one direction (u)", "/direction");
-    return obj;
+    if (auto st = check_refinable(**found, dir, what); !st) return st.error();
+    return *found;
 }
 
 const char* dir_name(Dir d) {
     return d == Dir::u ? "u" : "v";
 }
 
-// How the paper and the workstation's menus name a kind of spline.
-const char* type_title(geom::SplineType t) {
-    switch (t) {
-    case geom::SplineType::bezier:
-        return "Bezier";
-    case geom::SplineType::rational_bezier:
-        return "rational Bezier";
-    case geom::SplineType::bspline:
-        return "B-spline";
-    case geom::SplineType::nurbs:
-        return "NURBS";
-    }
-    return "NURBS";
-}
-
-geom::SplineType type_of(const Shape& shape) {
-    if (auto* s = std::get_if<SurfaceObject>(&shape)) return s->surface.type;
-    return std::get<CurveObject>(shape).curve.type;
-}
-
 // ---------------------------------------------------------------------------------------
-// What knot insertion and degree elevation share: the object's shape is replaced by a refined
-// one of the same kind, and a selected control point follows into the new net (forward) and
-// back on undo (backward).
-class RefineInPlace : public Command {
-public:
-    RefineInPlace(std::uint64_t id, Dir dir, int times, const char* what)
-        : id_(id), dir_(dir), times_(times), what_(what) {}
+// Knot insertion and degree elevation are shape edits (shape_edit.hpp) whose new shape is a
+// refinement of the old one, and whose selected control point follows into the new net
+// (forward) and back on undo (backward). An index map takes the old line, the new line and
+// the index in the line it maps from.
+using IndexMap = std::function<int(const Line& old_line, const Line& new_line, int i)>;
 
-    geom::Status apply(Document& doc) override {
-        auto found = refinable(doc, id_, dir_, what_);
-        if (!found) return found.error();
-        Object& obj = **found;
-        Shape result;
-        if (auto* s = std::get_if<SurfaceObject>(&obj.shape)) {
-            auto r = refine(s->surface);
-            if (!r) return r.error();
-            result = SurfaceObject{std::move(r).value()};
-        } else {
-            const auto& c = std::get<CurveObject>(obj.shape);
-            auto r = refine(c.curve);
-            if (!r) return r.error();
-            result = CurveObject{std::move(r).value(), c.plane};
-        }
-
-        curve_ = is_curve(obj.shape);
-        // A (rational) Bezier has no interior knots: one inserted makes it a B-spline (NURBS).
-        // The label says so, so that the change of kind is never silent.
-        type_change_.clear();
-        if (type_of(obj.shape) != type_of(result))
-            type_change_ = std::string(type_title(type_of(obj.shape))) + " becomes " +
-                           type_title(type_of(result));
-        sel_before_ = doc.view.selection;
-        if (int* idx = selected_index(doc.view.selection, id_, curve_, dir_))
-            *idx = forward(line_of(obj.shape, dir_), line_of(result, dir_), *idx);
-        sel_after_ = doc.view.selection;
-        before_ = std::move(obj.shape);
-        obj.shape = std::move(result);
-        return geom::Ok{};
-    }
-
-    void revert(Document& doc) override {
-        Object* obj = doc.find(id_);
-        assert(obj);
-        if (doc.view.selection == sel_after_) {
-            doc.view.selection = sel_before_;
-        } else if (int* idx = selected_index(doc.view.selection, id_, curve_, dir_)) {
-            *idx = backward(line_of(before_, dir_), line_of(obj->shape, dir_), *idx);
-        }
-        obj->shape = before_;
-    }
-
-    std::size_t memory_bytes() const override {
-        return sizeof(*this) + detail::shape_bytes(before_);
-    }
-
-    // "rational Bezier becomes NURBS" when the refinement changed the kind of spline, else
-    // empty (known once applied).
-    const std::string& type_change() const { return type_change_; }
-
-protected:
-    // The label's suffix for type_change(): " (rational Bezier becomes NURBS)".
-    std::string type_change_suffix() const {
-        return type_change_.empty() ? std::string() : " (" + type_change_ + ")";
-    }
-
-    virtual geom::Expected<geom::Surface> refine(const geom::Surface& s) const = 0;
-    virtual geom::Expected<geom::Curve> refine(const geom::Curve& c) const = 0;
-    // The selected point's index in the new line, and back: by default the control point
-    // with the nearest Greville abscissa.
-    virtual int forward(const Line& old_line, const Line& new_line, int i) const {
+struct Refinement {
+    Dir dir = Dir::u;
+    const char* what = "";
+    std::function<geom::Expected<geom::Surface>(const geom::Surface&)> surface;
+    std::function<geom::Expected<geom::Curve>(const geom::Curve&)> curve;
+    std::function<std::string(bool curve)> label;
+    // By default the control point with the nearest Greville abscissa.
+    IndexMap forward = [](const Line& old_line, const Line& new_line, int i) {
         return nearest_greville(new_line, greville(old_line, i));
-    }
-    virtual int backward(const Line& old_line, const Line& new_line, int i) const {
+    };
+    IndexMap backward = [](const Line& old_line, const Line& new_line, int i) {
         return nearest_greville(old_line, greville(new_line, i));
-    }
-
-    std::uint64_t id_;
-    Dir dir_;
-    int times_;
-    const char* what_;
-    bool curve_ = false;
-    std::string type_change_;
-    Shape before_;
-    Selection sel_before_, sel_after_;
+    };
 };
 
-// ---------------------------------------------------------------------------------------
-// Knot insertion (Boehm; Piegl & Tiller A5.1 through geom::insert_knot).
-class InsertKnot final : public RefineInPlace {
-public:
-    InsertKnot(std::uint64_t id, Dir dir, double t, int times)
-        : RefineInPlace(id, dir, times, "knot insertion"), t_(t) {}
-
-    std::string label() const override {
-        std::string s = std::string("Insert knot ") + (curve_ ? "t" : dir_name(dir_)) + " = " +
-                        geom::format_number(t_);
-        if (times_ > 1) s += " (" + std::to_string(times_) + " times)";
-        return s + type_change_suffix();
-    }
-
-private:
-    geom::Expected<geom::Surface> refine(const geom::Surface& s) const override {
-        return geom::insert_knot_within_limits(s, dir_, t_, times_);
-    }
-    geom::Expected<geom::Curve> refine(const geom::Curve& c) const override {
-        return geom::insert_knot_within_limits(c, t_, times_);
-    }
-    // Piegl & Tiller A5.1: with k the span of t (last knot <= t) and s its multiplicity,
-    // Q[i] = P[i] for i <= k - p and Q[i + r] = P[i] for i >= k - s; the points between are
-    // replaced, and go to the new point with the nearest Greville abscissa.
-    int forward(const Line& old_line, const Line& new_line, int i) const override {
-        const geom::Knots& U = *old_line.U;
-        const int k = static_cast<int>(std::upper_bound(U.begin(), U.end(), t_) - U.begin()) - 1;
-        const int s = geom::multiplicity(U, t_);
-        if (i <= k - old_line.p) return clamp_index(i, new_line.n);
-        if (i >= k - s) return clamp_index(i + times_, new_line.n);
-        return nearest_greville(new_line, greville(old_line, i));
-    }
-    int backward(const Line& old_line, const Line& new_line, int i) const override {
-        const geom::Knots& U = *old_line.U;
-        const int k = static_cast<int>(std::upper_bound(U.begin(), U.end(), t_) - U.begin()) - 1;
-        const int s = geom::multiplicity(U, t_);
-        if (i <= k - old_line.p) return clamp_index(i, old_line.n);
-        if (i >= k - s + times_) return clamp_index(i - times_, old_line.n);
-        return nearest_greville(old_line, greville(new_line, i));
-    }
-
-    double t_;
-};
-
-// ---------------------------------------------------------------------------------------
-// Degree elevation (Piegl & Tiller A5.9 through geom::elevate_degree).
-class ElevateDegree final : public RefineInPlace {
-public:
-    ElevateDegree(std::uint64_t id, Dir dir, int times)
-        : RefineInPlace(id, dir, times, "degree elevation") {}
-
-    std::string label() const override {
-        std::string s =
-            curve_ ? "Elevate degree" : std::string("Elevate degree in ") + dir_name(dir_);
-        if (times_ > 1) s += " by " + std::to_string(times_);
-        return s + type_change_suffix();
-    }
-
-private:
-    geom::Expected<geom::Surface> refine(const geom::Surface& s) const override {
-        return geom::elevate_degree_within_limits(s, dir_, times_);
-    }
-    geom::Expected<geom::Curve> refine(const geom::Curve& c) const override {
-        return geom::elevate_degree_within_limits(c, times_);
-    }
-};
+std::unique_ptr<Command> refinement_command(std::uint64_t id, CommandSpec spec, Refinement r) {
+    detail::ShapeEditRule rule;
+    rule.make = [r](const Object& obj) -> geom::Expected<Shape> {
+        if (auto st = check_refinable(obj, r.dir, r.what); !st) return st.error();
+        if (const geom::Surface* s = obj.surface()) {
+            auto refined = r.surface(*s);
+            if (!refined) return refined.error();
+            return Shape{SurfaceObject{std::move(refined).value()}};
+        }
+        const CurveObject& c = *obj.curve_object();
+        auto refined = r.curve(c.curve);
+        if (!refined) return refined.error();
+        // The refined knots are the curve's own now (knot mode custom): no rule gives them.
+        return Shape{CurveObject{std::move(refined).value(), c.plane}};
+    };
+    // A (rational) Bezier has no interior knots: one inserted makes it a B-spline (NURBS).
+    // The label says so, so that the change of kind is never silent.
+    rule.label = [r](const Shape& before, const Shape& after) {
+        const std::string change = detail::type_change_text(before, after);
+        return r.label(is_curve(before)) + (change.empty() ? "" : " (" + change + ")");
+    };
+    rule.forward = [id, r](const Selection& sel, const Shape& from, const Shape& to) {
+        Selection out = sel;
+        if (int* idx = selected_index(out, id, is_curve(from), r.dir))
+            *idx = r.forward(line_of(from, r.dir), line_of(to, r.dir), *idx);
+        return out;
+    };
+    rule.backward = [id, r](const Selection& sel, const Shape& from, const Shape& to) {
+        Selection out = sel;
+        if (int* idx = selected_index(out, id, is_curve(from), r.dir))
+            *idx = r.backward(line_of(to, r.dir), line_of(from, r.dir), *idx);
+        return out;
+    };
+    return detail::shape_edit(id, std::move(spec), std::move(rule));
+}
 
 // ---------------------------------------------------------------------------------------
 // Borders made to conform by knot insertion (shape unchanged), shared by the split and
@@ -341,6 +230,7 @@ public:
                                      : "Refine so the borders pair up (" + done_.summary + ")";
     }
     std::size_t memory_bytes() const override { return sizeof(*this) + done_.memory_bytes(); }
+    std::optional<CommandSpec> spec() const override { return ConformBordersSpec{group_}; }
 
 private:
     std::uint64_t group_;
@@ -393,7 +283,7 @@ public:
         remap_forward(doc.view.selection, obj.shape, first, second);
         sel_after_ = doc.view.selection;
 
-        // Surface pieces stay one patch structure over the original domain (issue 5); the
+        // Surface pieces stay one patch structure over the original domain; the
         // first split names the group after the surface it started from.
         const std::uint64_t group = curve_ ? 0 : obj.patch_group != 0 ? obj.patch_group : obj.id;
         Object a{ids_.first, obj.name + ".1", std::move(first), obj.visible, group};
@@ -448,6 +338,7 @@ public:
                conforming_.memory_bytes();
     }
 
+    std::optional<CommandSpec> spec() const override { return SplitSpec{id_, dir_, t_}; }
     std::pair<std::uint64_t, std::uint64_t> ids() const { return ids_; }
 
 private:
@@ -499,12 +390,60 @@ private:
 
 } // namespace
 
+// Knot insertion (Boehm; Piegl & Tiller A5.1 through geom::insert_knot).
 std::unique_ptr<Command> insert_knot(std::uint64_t id, geom::Dir dir, double t, int times) {
-    return std::make_unique<InsertKnot>(id, dir, t, times);
+    Refinement r;
+    r.dir = dir;
+    r.what = "knot insertion";
+    r.surface = [=](const geom::Surface& s) {
+        return geom::insert_knot_within_limits(s, dir, t, times);
+    };
+    r.curve = [=](const geom::Curve& c) { return geom::insert_knot_within_limits(c, t, times); };
+    r.label = [=](bool curve) {
+        std::string s = std::string("Insert knot ") + (curve ? "t" : dir_name(dir)) + " = " +
+                        geom::format_number(t);
+        if (times > 1) s += " (" + std::to_string(times) + " times)";
+        return s;
+    };
+    // Piegl & Tiller A5.1: with k the span of t (last knot <= t) and s its multiplicity,
+    // Q[i] = P[i] for i <= k - p and Q[i + r] = P[i] for i >= k - s; the points between are
+    // replaced, and go to the new point with the nearest Greville abscissa.
+    auto span_and_multiplicity = [t](const Line& old_line) {
+        const geom::Knots& U = *old_line.U;
+        const int k = static_cast<int>(std::upper_bound(U.begin(), U.end(), t) - U.begin()) - 1;
+        return std::pair{k, geom::multiplicity(U, t)};
+    };
+    r.forward = [=](const Line& old_line, const Line& new_line, int i) {
+        const auto [k, s] = span_and_multiplicity(old_line);
+        if (i <= k - old_line.p) return clamp_index(i, new_line.n);
+        if (i >= k - s) return clamp_index(i + times, new_line.n);
+        return nearest_greville(new_line, greville(old_line, i));
+    };
+    r.backward = [=](const Line& old_line, const Line& new_line, int i) {
+        const auto [k, s] = span_and_multiplicity(old_line);
+        if (i <= k - old_line.p) return clamp_index(i, old_line.n);
+        if (i >= k - s + times) return clamp_index(i - times, old_line.n);
+        return nearest_greville(old_line, greville(new_line, i));
+    };
+    return refinement_command(id, InsertKnotSpec{id, dir, t, times}, std::move(r));
 }
 
+// Degree elevation (Piegl & Tiller A5.9 through geom::elevate_degree).
 std::unique_ptr<Command> elevate_degree(std::uint64_t id, geom::Dir dir, int times) {
-    return std::make_unique<ElevateDegree>(id, dir, times);
+    Refinement r;
+    r.dir = dir;
+    r.what = "degree elevation";
+    r.surface = [=](const geom::Surface& s) {
+        return geom::elevate_degree_within_limits(s, dir, times);
+    };
+    r.curve = [=](const geom::Curve& c) { return geom::elevate_degree_within_limits(c, times); };
+    r.label = [=](bool curve) {
+        std::string s =
+            curve ? "Elevate degree" : std::string("Elevate degree in ") + dir_name(dir);
+        if (times > 1) s += " by " + std::to_string(times);
+        return s;
+    };
+    return refinement_command(id, ElevateDegreeSpec{id, dir, times}, std::move(r));
 }
 
 std::unique_ptr<Command> split_object(std::uint64_t id, geom::Dir dir, double t) {
@@ -516,8 +455,7 @@ std::unique_ptr<Command> conform_borders(std::uint64_t group) {
 }
 
 std::string refinement_type_change(const Command& refine_command) {
-    if (auto* r = dynamic_cast<const RefineInPlace*>(&refine_command)) return r->type_change();
-    return {};
+    return detail::shape_edit_type_change(refine_command);
 }
 
 std::pair<std::uint64_t, std::uint64_t> split_piece_ids(const Command& split_command) {

@@ -27,8 +27,12 @@ const geom::Surface* surface_of(const Shape& shape) {
     const auto* s = std::get_if<SurfaceObject>(&shape);
     return s ? &s->surface : nullptr;
 }
-CurveObject* curve_object_of(Shape& shape) { return std::get_if<CurveObject>(&shape); }
-const CurveObject* curve_object_of(const Shape& shape) { return std::get_if<CurveObject>(&shape); }
+CurveObject* curve_object_of(Shape& shape) {
+    return std::get_if<CurveObject>(&shape);
+}
+const CurveObject* curve_object_of(const Shape& shape) {
+    return std::get_if<CurveObject>(&shape);
+}
 geom::Curve* curve_of(Shape& shape) {
     auto* c = std::get_if<CurveObject>(&shape);
     return c ? &c->curve : nullptr;
@@ -37,8 +41,12 @@ const geom::Curve* curve_of(const Shape& shape) {
     const auto* c = std::get_if<CurveObject>(&shape);
     return c ? &c->curve : nullptr;
 }
-ImplicitObject* implicit_of(Shape& shape) { return std::get_if<ImplicitObject>(&shape); }
-const ImplicitObject* implicit_of(const Shape& shape) { return std::get_if<ImplicitObject>(&shape); }
+ImplicitObject* implicit_of(Shape& shape) {
+    return std::get_if<ImplicitObject>(&shape);
+}
+const ImplicitObject* implicit_of(const Shape& shape) {
+    return std::get_if<ImplicitObject>(&shape);
+}
 std::span<glm::dvec3> control_points_of(Shape& shape) {
     if (geom::Surface* s = surface_of(shape)) return s->points;
     if (geom::Curve* c = curve_of(shape)) return c->points;

@@ -19,6 +19,7 @@ public:
         return geom::Ok{};
     }
     void revert(Document& doc) override { std::swap(doc, other_); }
+    std::optional<CommandSpec> spec() const override { return std::nullopt; }
     std::string label() const override { return "Restore unsaved changes"; }
     std::size_t memory_bytes() const override {
         std::size_t total = sizeof(*this);

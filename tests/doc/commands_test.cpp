@@ -314,14 +314,14 @@ TEST(ObjectCommands, ReplaceShape) {
     doc.view.selection = Selection{hill_id, 4, 4};
     geom::Surface s = make_planar_grid(3, 3, 2, 2, geom::SplineType::bspline);
     const Document after =
-        expect_undo_redo_exact(doc, replace_shape(hill_id, SurfaceObject{s}, "Make B-spline"));
+        expect_undo_redo_exact(doc, edit_shape(hill_id, SurfaceObject{s}, "Make B-spline"));
     // P44 no longer exists: the object stays selected without a point.
     EXPECT_EQ(after.view.selection, (Selection{hill_id, -1, -1}));
     History h;
-    ASSERT_TRUE(h.execute(doc, replace_shape(hill_id, SurfaceObject{s}, "Make B-spline")).ok());
+    ASSERT_TRUE(h.execute(doc, edit_shape(hill_id, SurfaceObject{s}, "Make B-spline")).ok());
     EXPECT_EQ(h.undo_label(), "Make B-spline");
     s.n_u = 4; // inconsistent with the points
-    expect_refused(doc, replace_shape(hill_id, SurfaceObject{s}, "x"), ErrorCode::schema,
+    expect_refused(doc, edit_shape(hill_id, SurfaceObject{s}, "x"), ErrorCode::schema,
                    "/shape/points");
 }
 

@@ -71,7 +71,7 @@ TEST(InsertKnotCommand, ARationalBezierBecomingNurbsSaysSo) {
     rational.type = geom::SplineType::rational_bezier;
     rational.weight(1, 1) = 3;
     History h;
-    ASSERT_TRUE(h.execute(doc, replace_shape(patch_id, SurfaceObject{rational}, "Rational")).ok());
+    ASSERT_TRUE(h.execute(doc, edit_shape(patch_id, SurfaceObject{rational}, "Rational")).ok());
     auto cmd = insert_knot(patch_id, Dir::u, 0.5);
     const Command* insertion = cmd.get();
     EXPECT_EQ(refinement_type_change(*insertion), ""); // not applied yet

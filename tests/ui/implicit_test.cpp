@@ -5,9 +5,9 @@
 #include <thread>
 
 #include "core/doc/command.hpp"
+#include "core/doc/commands.hpp"
 #include "core/geom/implicit/expression.hpp"
 #include "core/geom/implicit/polygonize.hpp"
-#include "ui/implicit/implicit_edit.hpp"
 #include "ui/view/implicit_meshes.hpp"
 #include "ui/view/implicit_support.hpp"
 #include "ui/view/scene_builder.hpp"
@@ -111,7 +111,8 @@ TEST(ImplicitEdit, DragMergesIntoOneUndoStepAndUndoRestores) {
     for (double r : {1.1, 1.2, 1.3}) {
         doc::ImplicitObject next = std::get<doc::ImplicitObject>(d.objects[0].shape);
         next.parameter_values[0] = r;
-        ASSERT_TRUE(h.execute(d, edit_implicit(id, next, "Edit implicit parameter r")));
+        ASSERT_TRUE(h.execute(d, doc::edit_shape(id, next, "Edit implicit parameter r",
+                                                 "Edit implicit parameter r")));
     }
     h.seal();
     EXPECT_EQ(h.size(), 1u);
@@ -124,7 +125,8 @@ TEST(ImplicitEdit, DragMergesIntoOneUndoStepAndUndoRestores) {
     // Another label is another step.
     doc::ImplicitObject next = std::get<doc::ImplicitObject>(d.objects[0].shape);
     next.cell = 0.1;
-    ASSERT_TRUE(h.execute(d, edit_implicit(id, next, "Edit implicit cell")));
+    ASSERT_TRUE(
+        h.execute(d, doc::edit_shape(id, next, "Edit implicit cell", "Edit implicit cell")));
     EXPECT_EQ(h.size(), 2u);
 }
 
@@ -135,8 +137,10 @@ TEST(ImplicitEdit, RefusesWithoutChangingTheDocument) {
     doc::History h;
     doc::ImplicitObject bad = std::get<doc::ImplicitObject>(d.objects[0].shape);
     bad.lo.x = 5; // min >= max
-    EXPECT_FALSE(h.execute(d, edit_implicit(id, bad, "Edit implicit bounds")));
-    EXPECT_FALSE(h.execute(d, edit_implicit(id + 7, bad, "Edit implicit bounds")));
+    EXPECT_FALSE(
+        h.execute(d, doc::edit_shape(id, bad, "Edit implicit bounds", "Edit implicit bounds")));
+    EXPECT_FALSE(
+        h.execute(d, doc::edit_shape(id + 7, bad, "Edit implicit bounds", "Edit implicit bounds")));
     EXPECT_TRUE(doc::same_geometry(d, before));
     EXPECT_EQ(h.size(), 0u);
 }

@@ -180,7 +180,7 @@ TEST(DeBoorSteps, TheStepIsClampedWhenTheSurfaceChanges) {
         for (int j = 0; j < 2; ++j) small.points.push_back({i, j, 0});
     small.weights.assign(6, 1.0);
     ASSERT_TRUE(ctx.execute(
-        doc::replace_shape(ctx.doc.objects[0].id, doc::SurfaceObject{small}, "Smaller")));
+        doc::edit_shape(ctx.doc.objects[0].id, doc::SurfaceObject{small}, "Smaller")));
     EXPECT_EQ(deboor_step_count(ctx), 4);
     ctx.ui.deboor.playing = true;
     deboor_tick(ctx, 0.0); // every frame
@@ -284,7 +284,7 @@ TEST(SurfaceActions, ARationalBezierBecomingNurbsIsSaid) {
     s.knots_v = s.knots_u;
     s.degree_u = s.degree_v = 4;
     ASSERT_TRUE(ctx.execute(
-        doc::replace_shape(ctx.doc.objects[0].id, doc::SurfaceObject{s}, "Rational Bezier")));
+        doc::edit_shape(ctx.doc.objects[0].id, doc::SurfaceObject{s}, "Rational Bezier")));
     ctx.doc.view.indicator = {0.5, 0.5};
     insert_knot_at_indicator(ctx, Dir::v);
     EXPECT_EQ(std::get<doc::SurfaceObject>(ctx.doc.objects[0].shape).surface.type,

@@ -116,7 +116,7 @@ void point_controls(AppContext& ctx, const doc::Object& obj, const doc::CurveObj
             doc::CurveObject r = c;
             r.curve.type = geom::is_bezier(g.type) ? geom::SplineType::rational_bezier
                                                    : geom::SplineType::nurbs;
-            run(ctx, doc::replace_shape(obj.id, r, "Make " + obj.name + " rational"));
+            run(ctx, doc::edit_shape(obj.id, r, "Make " + obj.name + " rational"));
         }
         return;
     }

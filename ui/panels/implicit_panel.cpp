@@ -8,8 +8,8 @@
 #include <string>
 #include <variant>
 
+#include "core/doc/commands.hpp"
 #include "core/geom/implicit/expression.hpp"
-#include "ui/implicit/implicit_edit.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/implicit_meshes.hpp"
@@ -24,7 +24,7 @@ const ImVec4 error_color{1.0f, 0.45f, 0.4f, 1};
 // Runs one edit as its own undo step (a slider drag instead merges until released).
 void edit(AppContext& ctx, std::uint64_t id, doc::ImplicitObject shape, const std::string& label) {
     ctx.seal();
-    ctx.execute(edit_implicit(id, std::move(shape), label));
+    ctx.execute(doc::edit_shape(id, std::move(shape), label, label));
     ctx.seal();
 }
 
@@ -91,8 +91,8 @@ void parameter_sliders(AppContext& ctx, const doc::Object& obj, const doc::Impli
             next.parameter_values[k] = v;
             // Not sealed: the drag's edits merge into one undo step; the frame seals once
             // the mouse is released.
-            ctx.execute(
-                edit_implicit(obj.id, next, "Edit implicit parameter " + im.parameter_names[k]));
+            const std::string label = "Edit implicit parameter " + im.parameter_names[k];
+            ctx.execute(doc::edit_shape(obj.id, next, label, label));
         }
         if (ImGui::IsItemDeactivated()) ctx.seal();
         ImGui::PopID();
