@@ -41,59 +41,57 @@ Current current(const AppContext& ctx, geom::Dir dir) {
 
 } // namespace
 
-ActionState insert_knot_state(const AppContext& ctx, geom::Dir dir) {
-    const Current c = current(ctx, dir);
+namespace {
+
+// Enabled exactly when the command would apply; otherwise the command's own refusal is the
+// reason (menus never repeat the command's rules), with what a student should make of a refusal
+// of the code `teach_about` added in words of the workstation.
+ActionState state_of(std::string label, const doc::Command& cmd, const doc::Document& d,
+                     geom::ErrorCode teach_about = geom::ErrorCode::internal,
+                     const std::string& lesson = {}) {
     ActionState a;
-    if (!c.surface) {
-        a.label = std::string("Insert knot in ") + dir_name(dir);
-        a.why = "no surface";
-        return a;
-    }
-    a.label = std::string("Insert knot ") + dir_name(dir) + " = " + geom::format_number(c.t);
-    const int m = geom::multiplicity(c.surface->knots(dir), c.t);
-    const int p = c.surface->degree(dir);
-    const geom::Interval d = geom::domain(c.surface->knots(dir), p, c.surface->count(dir));
-    if (!d.contains(c.t)) {
-        a.why = "the indicator is outside this patch's domain";
-    } else if (m >= p) {
-        a.why = "the knot already has multiplicity " + std::to_string(m) + " = the degree";
-    } else {
-        a.enabled = true;
-        if (m > 0) a.label += " (now x" + std::to_string(m) + ")";
+    a.label = std::move(label);
+    const geom::Status st = cmd.check(d);
+    a.enabled = st.ok();
+    if (!st) {
+        a.why = st.error().message;
+        if (st.error().code == teach_about && !lesson.empty()) a.why += " (" + lesson + ")";
     }
     return a;
+}
+
+} // namespace
+
+ActionState insert_knot_state(const AppContext& ctx, geom::Dir dir) {
+    const Current c = current(ctx, dir);
+    if (!c.surface) return {std::string("Insert knot in ") + dir_name(dir), false, "no surface"};
+    std::string label =
+        std::string("Insert knot ") + dir_name(dir) + " = " + geom::format_number(c.t);
+    const int m = geom::multiplicity(c.surface->knots(dir), c.t);
+    if (m > 0) label += " (now x" + std::to_string(m) + ")";
+    // A knot of multiplicity p already leaves only C0 there (Piegl & Tiller sec. 2.3): another
+    // copy would add nothing, which is why insertion stops at the degree.
+    return state_of(label, *doc::insert_knot(c.object->id, dir, c.t), ctx.doc,
+                    geom::ErrorCode::multiplicity,
+                    "the knot already has multiplicity " + std::to_string(m) +
+                        " = the degree: the surface is only C0 there");
 }
 
 ActionState elevate_state(const AppContext& ctx, geom::Dir dir) {
     const Current c = current(ctx, dir);
-    ActionState a;
-    a.label = std::string("Elevate degree in ") + dir_name(dir);
-    if (!c.surface) {
-        a.why = "no surface";
-        return a;
-    }
-    a.label += " (" + std::to_string(c.surface->degree(dir)) + " to " +
-               std::to_string(c.surface->degree(dir) + 1) + ")";
-    a.enabled = true;
-    return a;
+    std::string label = std::string("Elevate degree in ") + dir_name(dir);
+    if (!c.surface) return {label, false, "no surface"};
+    label += " (" + std::to_string(c.surface->degree(dir)) + " to " +
+             std::to_string(c.surface->degree(dir) + 1) + ")";
+    return state_of(label, *doc::elevate_degree(c.object->id, dir), ctx.doc);
 }
 
 ActionState split_state(const AppContext& ctx, geom::Dir dir) {
     const Current c = current(ctx, dir);
-    ActionState a;
-    if (!c.surface) {
-        a.label = std::string("Split along ") + dir_name(dir);
-        a.why = "no surface";
-        return a;
-    }
-    a.label = std::string("Split at ") + dir_name(dir) + " = " + geom::format_number(c.t);
-    const geom::Interval d =
-        geom::domain(c.surface->knots(dir), c.surface->degree(dir), c.surface->count(dir));
-    if (!(d.lo < c.t && c.t < d.hi))
-        a.why = "move the indicator inside the patch (not on its edge) to split there";
-    else
-        a.enabled = true;
-    return a;
+    if (!c.surface) return {std::string("Split along ") + dir_name(dir), false, "no surface"};
+    return state_of(std::string("Split at ") + dir_name(dir) + " = " + geom::format_number(c.t),
+                    *doc::split_object(c.object->id, dir, c.t), ctx.doc, geom::ErrorCode::domain,
+                    "move the indicator inside the patch, not on its edge, to split there");
 }
 
 void note_action(AppContext& ctx, std::string text, bool refused) {
@@ -114,17 +112,10 @@ void insert_knot_at_indicator(AppContext& ctx, geom::Dir dir) {
     if (!c.surface) return;
     const std::string what =
         std::string("knot ") + dir_name(dir) + " = " + geom::format_number(c.t);
-    // Refused before the command runs, with the reason the menu gives (the command would
-    // refuse too, in the geometry's words).
+    // Refused before the command runs, with the reason the menu gives.
     const int before = geom::multiplicity(c.surface->knots(dir), c.t);
     if (const ActionState state = insert_knot_state(ctx, dir); !state.enabled) {
-        // A knot of multiplicity p already leaves only C0 there (Piegl & Tiller sec. 2.3):
-        // another copy would add nothing, so insertion stops at the degree.
-        const bool full = before >= c.surface->degree(dir);
-        note_action(ctx,
-                    "Cannot insert " + what + ": " + state.why +
-                        (full ? " (the surface is only C0 there already)" : ""),
-                    true);
+        note_action(ctx, "Cannot insert " + what + ": " + state.why, true);
         return;
     }
     const int n = c.surface->count(dir), other = c.surface->count(other_dir(dir));

@@ -8,11 +8,11 @@
 #include <set>
 
 #include "core/doc/commands_common.hpp"
-#include "core/json/shapes.hpp"
-#include "core/json/reader.hpp"
+#include "core/doc/patches.hpp"
 #include "core/json/fields.hpp"
 #include "core/json/out_of_memory.hpp"
-#include "core/doc/patches.hpp"
+#include "core/json/reader.hpp"
+#include "core/json/shapes.hpp"
 
 namespace isoparm::scene {
 
@@ -77,7 +77,8 @@ json color_to_json(const Rgba& c) {
 // absolute path into the scene.
 
 Expected<glm::dvec3> read_vec3(const json& v, const std::string& at, const char* what) {
-    if (!v.is_array() || v.size() != 3) return schema_error(std::string(what) + " must be [x, y, z]", at);
+    if (!v.is_array() || v.size() != 3)
+        return schema_error(std::string(what) + " must be [x, y, z]", at);
     glm::dvec3 p(0.0);
     for (int a = 0; a < 3; ++a) {
         auto x = read_finite(v[a], at + "/" + std::to_string(a), "a coordinate");
@@ -96,7 +97,8 @@ Expected<Rgba> read_color(const json& v, const std::string& at) {
         auto x = read_finite(v[k], p, "a colour channel");
         if (!x) return x.error();
         if (*x < 0 || *x > 1)
-            return schema_error("colour channels are between 0 and 1, got " + geom::format_number(*x), p);
+            return schema_error(
+                "colour channels are between 0 and 1, got " + geom::format_number(*x), p);
         ch[k] = static_cast<float>(*x);
     }
     return Rgba{ch[0], ch[1], ch[2], ch[3]};
@@ -108,7 +110,9 @@ Expected<Rgba> read_color(const json& v, const std::string& at) {
 Expected<ImplicitObject> implicit_from_json(const json& j, const std::string& at) {
     if (auto st = expect_object(j, at, "an implicit surface"); !st) return st.error();
     if (auto st = check_members(j, at, "an implicit surface",
-                               {"expression", "parameters", "bounds", "cell"}); !st) return st.error();
+                                {"expression", "parameters", "bounds", "cell"});
+        !st)
+        return st.error();
     ImplicitObject f;
     const auto expr = j.find("expression");
     if (expr == j.end()) return missing_member(at, "expression");
@@ -123,7 +127,8 @@ Expected<ImplicitObject> implicit_from_json(const json& j, const std::string& at
             const json& p = (*params)[k];
             const std::string kat = pat + "/" + std::to_string(k);
             if (auto st = expect_object(p, kat, "a parameter"); !st) return st.error();
-            if (auto st = check_members(p, kat, "a parameter", {"name", "value"}); !st) return st.error();
+            if (auto st = check_members(p, kat, "a parameter", {"name", "value"}); !st)
+                return st.error();
             if (!p.contains("name")) return missing_member(kat, "name");
             if (!p.contains("value")) return missing_member(kat, "value");
             auto name = read_string(p["name"], kat + "/name", "a parameter name");
@@ -136,7 +141,8 @@ Expected<ImplicitObject> implicit_from_json(const json& j, const std::string& at
     }
     if (const auto bounds = j.find("bounds"); bounds != j.end()) {
         if (!bounds->is_array() || bounds->size() != 2)
-            return schema_error("bounds is [[xmin, ymin, zmin], [xmax, ymax, zmax]]", at + "/bounds");
+            return schema_error("bounds is [[xmin, ymin, zmin], [xmax, ymax, zmax]]",
+                                at + "/bounds");
         auto lo = read_vec3((*bounds)[0], at + "/bounds/0", "the lower corner");
         if (!lo) return lo.error();
         auto hi = read_vec3((*bounds)[1], at + "/bounds/1", "the upper corner");
@@ -152,23 +158,85 @@ Expected<ImplicitObject> implicit_from_json(const json& j, const std::string& at
     return f;
 }
 
-Expected<Object> object_from_json(const json& j, const std::string& at) {
-    if (auto st = expect_object(j, at, "an object"); !st) return st.error();
+// The kind a scene object or a command's shape names ("/kind" under at).
+Expected<ObjectKind> read_kind(const json& j, const std::string& at) {
     const auto kind_it = j.find("kind");
     if (kind_it == j.end()) return missing_member(at, "kind");
     auto kind = read_string(*kind_it, at + "/kind", "kind");
     if (!kind) return kind.error();
     const std::optional<ObjectKind> named = geom::parse_name<ObjectKind>(*kind);
     if (!named)
-        return schema_error("kind must be surface, curve or implicit, got '" + *kind + "'", at + "/kind");
-    const bool surface = *named == ObjectKind::surface, curve = *named == ObjectKind::curve;
-    if (auto st = surface ? check_members(j, at, "a surface object",
-                                          {"id", "name", "kind", "visible", "patch_group", "surface"})
-                  : curve ? check_members(j, at, "a curve object",
-                                          {"id", "name", "kind", "visible", "plane", "knot_mode",
-                                           "curve"})
-                          : check_members(j, at, "an implicit object",
-                                          {"id", "name", "kind", "visible", "implicit"});
+        return schema_error("kind must be surface, curve or implicit, got '" + *kind + "'",
+                            at + "/kind");
+    return *named;
+}
+
+// The geometry members of a shape of this kind, after the caller checked the members.
+Expected<Shape> read_shape(const json& j, const std::string& at, ObjectKind kind) {
+    const bool surface = kind == ObjectKind::surface, curve = kind == ObjectKind::curve;
+    const char* member = surface ? "surface" : curve ? "curve" : "implicit";
+    const std::string gat = at + "/" + member;
+    const auto geometry = j.find(member);
+    if (geometry == j.end())
+        return schema_error(std::string("missing member '") + member + "' (the " +
+                                geom::name_of(kind) + " object's geometry)",
+                            gat);
+    Shape shape;
+    if (surface) {
+        auto s = surface_from_json(*geometry);
+        if (!s) return s.error().under(gat);
+        shape = SurfaceObject{std::move(s).value()};
+    } else if (curve) {
+        CurveObject c;
+        if (const auto plane = j.find("plane"); plane != j.end()) {
+            auto p = read_string(*plane, at + "/plane", "plane");
+            if (!p) return p.error();
+            const std::optional<CurvePlane> plane_named = geom::parse_name<CurvePlane>(*p);
+            if (!plane_named)
+                return schema_error("plane must be xy, xz, yz or free3d, got '" + *p + "'",
+                                    at + "/plane");
+            c.plane = *plane_named;
+        }
+        if (const auto mode = j.find("knot_mode"); mode != j.end()) {
+            auto m = read_string(*mode, at + "/knot_mode", "knot_mode");
+            if (!m) return m.error();
+            const std::optional<CurveKnotMode> mode_named = geom::parse_name<CurveKnotMode>(*m);
+            if (!mode_named)
+                return schema_error("knot_mode must be clamped_uniform, chord, centripetal or "
+                                    "custom, got '" +
+                                        *m + "'",
+                                    at + "/knot_mode");
+            c.knot_mode = *mode_named;
+        }
+        auto g = curve_from_json(*geometry);
+        if (!g) return g.error().under(gat);
+        c.curve = std::move(g).value();
+        shape = std::move(c);
+    } else {
+        auto f = implicit_from_json(*geometry, gat);
+        if (!f) return f.error();
+        shape = std::move(f).value();
+    }
+    // The document's own rules (size caps, finite points, the implicit's box and parameters).
+    if (auto st = detail::validate_shape(shape); !st) return st.error().under(gat);
+    return shape;
+}
+
+} // namespace
+
+Expected<Object> object_from_json(const json& j, const std::string& at) {
+    if (auto st = expect_object(j, at, "an object"); !st) return st.error();
+    auto kind = read_kind(j, at);
+    if (!kind) return kind.error();
+    const bool surface = *kind == ObjectKind::surface, curve = *kind == ObjectKind::curve;
+    if (auto st =
+            surface ? check_members(j, at, "a surface object",
+                                    {"id", "name", "kind", "visible", "patch_group", "surface"})
+            : curve
+                ? check_members(j, at, "a curve object",
+                                {"id", "name", "kind", "visible", "plane", "knot_mode", "curve"})
+                : check_members(j, at, "an implicit object",
+                                {"id", "name", "kind", "visible", "implicit"});
         !st)
         return st.error();
 
@@ -196,68 +264,84 @@ Expected<Object> object_from_json(const json& j, const std::string& at) {
         if (!v) return v.error();
         o.patch_group = static_cast<std::uint64_t>(*v);
     }
-
-    const char* member = surface ? "surface" : curve ? "curve" : "implicit";
-    const std::string gat = at + "/" + member;
-    const auto geometry = j.find(member);
-    if (geometry == j.end())
-        return schema_error(std::string("missing member '") + member + "' (the " + *kind +
-                          " object's geometry)",
-                      gat);
-    if (surface) {
-        auto s = surface_from_json(*geometry);
-        if (!s) return s.error().under(gat);
-        o.shape = SurfaceObject{std::move(s).value()};
-    } else if (curve) {
-        CurveObject c;
-        if (const auto plane = j.find("plane"); plane != j.end()) {
-            auto p = read_string(*plane, at + "/plane", "plane");
-            if (!p) return p.error();
-            const std::optional<CurvePlane> plane_named = geom::parse_name<CurvePlane>(*p);
-            if (!plane_named)
-                return schema_error("plane must be xy, xz, yz or free3d, got '" + *p + "'",
-                              at + "/plane");
-            c.plane = *plane_named;
-        }
-        if (const auto mode = j.find("knot_mode"); mode != j.end()) {
-            auto m = read_string(*mode, at + "/knot_mode", "knot_mode");
-            if (!m) return m.error();
-            const std::optional<CurveKnotMode> mode_named = geom::parse_name<CurveKnotMode>(*m);
-            if (!mode_named)
-                return schema_error("knot_mode must be clamped_uniform, chord, centripetal or "
-                              "custom, got '" +
-                                  *m + "'",
-                              at + "/knot_mode");
-            c.knot_mode = *mode_named;
-        }
-        auto g = curve_from_json(*geometry);
-        if (!g) return g.error().under(gat);
-        c.curve = std::move(g).value();
-        o.shape = std::move(c);
-    } else {
-        auto f = implicit_from_json(*geometry, gat);
-        if (!f) return f.error();
-        o.shape = std::move(f).value();
-    }
-    // The document's own rules (size caps, finite points, the implicit's box and parameters).
-    if (auto st = detail::validate_shape(o.shape); !st) return st.error().under(gat);
+    auto shape = read_shape(j, at, *kind);
+    if (!shape) return shape.error();
+    o.shape = std::move(shape).value();
     return o;
 }
 
-std::optional<Error> read_colors(const json& j, Colors& colors) {
-    if (auto st = expect_object(j, "/colors", "colors"); !st) return st.error();
+Expected<Shape> shape_from_json(const json& j, const std::string& at) {
+    if (auto st = expect_object(j, at, "a shape"); !st) return st.error();
+    auto kind = read_kind(j, at);
+    if (!kind) return kind.error();
+    const bool surface = *kind == ObjectKind::surface, curve = *kind == ObjectKind::curve;
+    if (auto st =
+            surface ? check_members(j, at, "a surface shape", {"kind", "surface"})
+            : curve ? check_members(j, at, "a curve shape", {"kind", "plane", "knot_mode", "curve"})
+                    : check_members(j, at, "an implicit shape", {"kind", "implicit"});
+        !st)
+        return st.error();
+    return read_shape(j, at, *kind);
+}
+
+json shape_to_json(const Shape& shape) {
+    json j = json::object();
+    j["kind"] = geom::name_of(kind_of(shape));
+    if (const geom::Surface* s = surface_of(shape)) {
+        j["surface"] = surface_to_json(*s);
+    } else if (const CurveObject* c = curve_object_of(shape)) {
+        j["plane"] = geom::name_of(c->plane);
+        // Custom (the default) is omitted, so older scenes save back unchanged.
+        if (c->knot_mode != CurveKnotMode::custom) j["knot_mode"] = geom::name_of(c->knot_mode);
+        j["curve"] = curve_to_json(c->curve);
+    } else {
+        const ImplicitObject& f = *implicit_of(shape);
+        json params = json::array();
+        const std::size_t count = std::min(f.parameter_names.size(), f.parameter_values.size());
+        for (std::size_t k = 0; k < count; ++k)
+            params.push_back({{"name", f.parameter_names[k]}, {"value", f.parameter_values[k]}});
+        j["implicit"] = {{"expression", f.expression},
+                         {"parameters", std::move(params)},
+                         {"bounds", json::array({json::array({f.lo.x, f.lo.y, f.lo.z}),
+                                                 json::array({f.hi.x, f.hi.y, f.hi.z})})},
+                         {"cell", f.cell}};
+    }
+    return j;
+}
+
+json object_to_json(const Object& o) {
+    json j = json::object();
+    if (o.id != 0) j["id"] = o.id; // 0: not in a document yet (a command's new object)
+    j["name"] = o.name;
+    j["visible"] = o.visible;
+    if (o.patch_group != 0) j["patch_group"] = o.patch_group;
+    const json shape = shape_to_json(o.shape);
+    for (const auto& [key, value] : shape.items()) j[key] = value;
+    return j;
+}
+
+json colors_to_json(const Colors& colors) {
+    json j = json::object();
+    for (const auto& [name, c] : color_fields(colors)) j[name] = color_to_json(*c);
+    return j;
+}
+
+Expected<Colors> colors_from_json(const json& j, const std::string& at, Colors colors) {
+    if (auto st = expect_object(j, at, "colors"); !st) return st.error();
     std::vector<std::string_view> allowed;
     for (auto& [name, c] : color_fields(colors)) allowed.push_back(name);
-    if (auto st = check_members(j, "/colors", "colors", allowed); !st) return st.error();
+    if (auto st = check_members(j, at, "colors", allowed); !st) return st.error();
     for (auto& [name, c] : color_fields(colors)) {
         const auto v = j.find(name);
         if (v == j.end()) continue;
-        auto colour = read_color(*v, member_path("/colors", name));
+        auto colour = read_color(*v, member_path(at, name));
         if (!colour) return colour.error();
         *c = *colour;
     }
-    return std::nullopt;
+    return colors;
 }
+
+namespace {
 
 std::optional<Error> read_display(const json& j, DisplaySettings& d) {
     if (auto st = expect_object(j, "/display", "display"); !st) return st.error();
@@ -272,7 +356,8 @@ std::optional<Error> read_display(const json& j, DisplaySettings& d) {
             if (!s) return s.error();
             const std::optional<DisplayStyle> style = geom::parse_name<DisplayStyle>(*s);
             if (!style)
-                return schema_error("style must be shaded, wireframe or both, got '" + *s + "'", at);
+                return schema_error("style must be shaded, wireframe or both, got '" + *s + "'",
+                                    at);
             d.style = *style;
             continue;
         }
@@ -296,7 +381,8 @@ std::optional<Error> read_selection(const json& j, const Document& doc, Selectio
     sel = Selection{};
     if (j.is_null()) return std::nullopt;
     if (auto st = expect_object(j, "/selection", "selection (or null)"); !st) return st.error();
-    if (auto st = check_members(j, "/selection", "selection", {"object", "point"}); !st) return st.error();
+    if (auto st = check_members(j, "/selection", "selection", {"object", "point"}); !st)
+        return st.error();
     const auto obj = j.find("object");
     if (obj == j.end()) return missing_member("/selection", "object");
     auto id = read_integer(*obj, "/selection/object", "the selected object's id", 1,
@@ -305,19 +391,20 @@ std::optional<Error> read_selection(const json& j, const Document& doc, Selectio
     const Object* o = doc.find(static_cast<std::uint64_t>(*id));
     if (!o)
         return schema_error("the selection names object " + std::to_string(*id) +
-                          ", but no object has that id",
-                      "/selection/object");
+                                ", but no object has that id",
+                            "/selection/object");
     sel.object = o->id;
     const auto point = j.find("point");
     if (point == j.end()) return std::nullopt;
     if (o->implicit())
-        return schema_error("an implicit surface has no control points to select", "/selection/point");
+        return schema_error("an implicit surface has no control points to select",
+                            "/selection/point");
     const geom::Surface* surface = o->surface();
     const std::size_t arity = surface ? 2 : 1;
     if (!point->is_array() || point->size() != arity)
         return schema_error(surface ? "a surface's selected point is [i, j]"
-                              : "a curve's selected point is [i]",
-                      "/selection/point");
+                                    : "a curve's selected point is [i]",
+                            "/selection/point");
     int counts[2];
     if (surface) {
         counts[0] = surface->n_u;
@@ -342,38 +429,8 @@ std::optional<Error> read_selection(const json& j, const Document& doc, Selectio
 
 json scene_to_json(const Document& doc) {
     json objects = json::array();
-    for (const Object& o : doc.objects) {
-        json j = json::object();
-        j["id"] = o.id;
-        j["name"] = o.name;
-        j["visible"] = o.visible;
-        if (o.patch_group != 0) j["patch_group"] = o.patch_group;
-        j["kind"] = geom::name_of(o.kind());
-        if (const geom::Surface* s = o.surface()) {
-            j["surface"] = surface_to_json(*s);
-        } else if (const CurveObject* c = o.curve_object()) {
-            j["plane"] = geom::name_of(c->plane);
-            // Custom (the default) is omitted, so older scenes save back unchanged.
-            if (c->knot_mode != CurveKnotMode::custom) j["knot_mode"] = geom::name_of(c->knot_mode);
-            j["curve"] = curve_to_json(c->curve);
-        } else {
-            const ImplicitObject& f = *o.implicit();
-            json params = json::array();
-            const std::size_t count = std::min(f.parameter_names.size(), f.parameter_values.size());
-            for (std::size_t k = 0; k < count; ++k)
-                params.push_back(
-                    {{"name", f.parameter_names[k]}, {"value", f.parameter_values[k]}});
-            j["implicit"] = {{"expression", f.expression},
-                             {"parameters", std::move(params)},
-                             {"bounds", json::array({json::array({f.lo.x, f.lo.y, f.lo.z}),
-                                                     json::array({f.hi.x, f.hi.y, f.hi.z})})},
-                             {"cell", f.cell}};
-        }
-        objects.push_back(std::move(j));
-    }
-
-    json colors = json::object();
-    for (const auto& [name, c] : color_fields(doc.colors)) colors[name] = color_to_json(*c);
+    for (const Object& o : doc.objects) objects.push_back(object_to_json(o));
+    json colors = colors_to_json(doc.colors);
 
     json display = json::object();
     display["style"] = geom::name_of(doc.view.display.style);
@@ -408,34 +465,38 @@ Expected<Document> scene_from_json(const json& j) {
     const auto format = j.find("format");
     if (format == j.end())
         return schema_error("missing member 'format' (an isoparm scene has \"format\": \"" +
-                          std::string(scene_format_name) + "\")",
-                      "/format");
+                                std::string(scene_format_name) + "\")",
+                            "/format");
     if (!format->is_string() || format->get<std::string>() != scene_format_name)
-        return schema_error("not an isoparm scene: format must be \"" + std::string(scene_format_name) +
-                          "\", got " +
-                          (format->is_string() ? "\"" + format->get<std::string>() + "\""
-                                               : std::string(type_name(*format))),
-                      "/format");
+        return schema_error("not an isoparm scene: format must be \"" +
+                                std::string(scene_format_name) + "\", got " +
+                                (format->is_string() ? "\"" + format->get<std::string>() + "\""
+                                                     : std::string(type_name(*format))),
+                            "/format");
     const auto version = j.find("version");
     if (version == j.end()) return missing_member("", "version");
     const auto v = integer_value(*version);
     if (!v) return schema_error("version must be an integer, got " + version->dump(), "/version");
     if (*v > scene_format_version)
         return schema_error("this scene has format version " + std::to_string(*v) +
-                          ", newer than this isoparm reads (" +
-                          std::to_string(scene_format_version) + "); update isoparm to open it",
-                      "/version");
-    if (*v < 1) return schema_error("version must be at least 1, got " + std::to_string(*v), "/version");
+                                ", newer than this isoparm reads (" +
+                                std::to_string(scene_format_version) +
+                                "); update isoparm to open it",
+                            "/version");
+    if (*v < 1)
+        return schema_error("version must be at least 1, got " + std::to_string(*v), "/version");
     if (auto st = check_members(j, "", "a scene",
-                               {"format", "version", "objects", "colors", "display", "selection",
-                                "indicator", "continuity"}); !st) return st.error();
+                                {"format", "version", "objects", "colors", "display", "selection",
+                                 "indicator", "continuity"});
+        !st)
+        return st.error();
 
     Document doc;
     const auto objects = j.find("objects");
     if (objects == j.end()) return missing_member("", "objects");
     if (!objects->is_array())
         return schema_error(std::string("objects must be an array, got ") + type_name(*objects),
-                      "/objects");
+                            "/objects");
     if (objects->size() > max_objects)
         return make_error(ErrorCode::limit,
                           "a scene may hold at most " + std::to_string(max_objects) +
@@ -447,7 +508,8 @@ Expected<Document> scene_from_json(const json& j) {
         auto o = object_from_json((*objects)[k], at);
         if (!o) return o.error();
         if (o->id != 0 && !ids.insert(o->id).second)
-            return schema_error("object id " + std::to_string(o->id) + " is used twice", at + "/id");
+            return schema_error("object id " + std::to_string(o->id) + " is used twice",
+                                at + "/id");
         doc.objects.push_back(std::move(o).value());
     }
     // Objects written without an id get fresh ones after the largest given.
@@ -456,8 +518,11 @@ Expected<Document> scene_from_json(const json& j) {
         if (o.id == 0) o.id = next++;
     doc.next_id = next;
 
-    if (const auto c = j.find("colors"); c != j.end())
-        if (auto e = read_colors(*c, doc.colors)) return *e;
+    if (const auto c = j.find("colors"); c != j.end()) {
+        auto colors = colors_from_json(*c, "/colors", doc.colors);
+        if (!colors) return colors.error();
+        doc.colors = *colors;
+    }
     if (const auto d = j.find("display"); d != j.end())
         if (auto e = read_display(*d, doc.view.display)) return *e;
     if (const auto s = j.find("selection"); s != j.end())
@@ -467,7 +532,8 @@ Expected<Document> scene_from_json(const json& j) {
         if (!name) return name.error();
         const std::optional<Continuity> continuity = geom::parse_name<Continuity>(*name);
         if (!continuity)
-            return schema_error("continuity must be off, C0 or C1, got '" + *name + "'", "/continuity");
+            return schema_error("continuity must be off, C0 or C1, got '" + *name + "'",
+                                "/continuity");
         doc.continuity = *continuity;
     }
     if (auto e = check_patch_groups(doc)) return *e;
@@ -480,8 +546,8 @@ Expected<Document> scene_from_json(const json& j) {
             if (!x) return x.error();
             if (*x < 0 || *x > 1)
                 return schema_error("indicator coordinates are in [0, 1] (over the domain), got " +
-                                  geom::format_number(*x),
-                              at);
+                                        geom::format_number(*x),
+                                    at);
             doc.view.indicator[a] = *x;
         }
     }

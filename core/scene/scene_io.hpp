@@ -18,6 +18,19 @@ nlohmann::json scene_to_json(const doc::Document& doc);
 // Errors name the offending value with a JSON Pointer into the scene.
 geom::Expected<doc::Document> scene_from_json(const nlohmann::json& j);
 
+// The parts of a scene that commands carry too (core/scene/command_json.hpp), written and read
+// by the same code as in a scene: an object, its shape alone ({"kind": ..., and the kind's
+// geometry member: "surface", "curve" with "plane" and "knot_mode", or "implicit"}), and the
+// colours (members missing from the JSON keep their value in `colors`). Errors are paths under
+// `at`.
+nlohmann::json object_to_json(const doc::Object& object);
+geom::Expected<doc::Object> object_from_json(const nlohmann::json& j, const std::string& at);
+nlohmann::json shape_to_json(const doc::Shape& shape);
+geom::Expected<doc::Shape> shape_from_json(const nlohmann::json& j, const std::string& at);
+nlohmann::json colors_to_json(const doc::Colors& colors);
+geom::Expected<doc::Colors> colors_from_json(const nlohmann::json& j, const std::string& at,
+                                             doc::Colors colors);
+
 // The text save_scene writes: indented for people, every number in shortest round-trip form
 // (so a load gives back the same bits, -0.0 included), ending with a newline.
 std::string scene_to_text(const doc::Document& doc);

@@ -9,6 +9,7 @@
 #include "core/doc/commands.hpp"
 #include "core/doc/document.hpp"
 #include "core/geom/knots.hpp"
+#include "core/scene/command_json.hpp"
 
 namespace isoparm::doc::testing {
 
@@ -75,14 +76,37 @@ inline const geom::Curve& curve_of(const Document& doc, std::uint64_t id) {
     return std::get<CurveObject>(doc.find(id)->shape).curve;
 }
 
-// Executes cmd through a history and checks undo gives the state before, bit for bit, redo
-// the state after, and undo again the state before. Returns the state after.
+// The command as data gives the same command: its spec, written as JSON and read back, built
+// and applied to `before`, gives `after` (a script replays exactly what was done).
+inline void expect_replays_as_data(const Command& applied, const Document& before,
+                                   const Document& after) {
+    const std::optional<CommandSpec> spec = applied.spec();
+    ASSERT_TRUE(spec.has_value());
+    const nlohmann::json written = scene::command_to_json(*spec);
+    auto read = scene::command_from_json(written);
+    ASSERT_TRUE(read.ok()) << written.dump() << ": " << read.error().message << " at "
+                           << read.error().path;
+    EXPECT_EQ(scene::command_to_json(*read), written);
+    Document replay = before;
+    const auto st = make_command(std::move(read).value())->apply(replay);
+    ASSERT_TRUE(st.ok()) << st.error().message;
+    EXPECT_TRUE(same_document(replay, after)) << written.dump();
+}
+
+// Executes cmd through a history and checks that check() agreed beforehand, that undo gives
+// the state before, bit for bit, redo the state after, and undo again the state before, and
+// that the command replays from its JSON form. Returns the state after.
 inline Document expect_undo_redo_exact(Document& doc, std::unique_ptr<Command> cmd) {
     History history;
     const Document before = doc;
+    const auto checked = cmd->check(doc);
+    EXPECT_TRUE(checked.ok()) << (checked.ok() ? "" : checked.error().message);
+    EXPECT_TRUE(same_document(doc, before)) << "check() changed the document";
+    const Command* applied = cmd.get();
     const auto st = history.execute(doc, std::move(cmd));
     EXPECT_TRUE(st.ok()) << (st.ok() ? "" : st.error().message);
     const Document after = doc;
+    expect_replays_as_data(*applied, before, after);
     EXPECT_FALSE(same_geometry(before, after)) << "the command changed nothing";
     EXPECT_TRUE(history.undo(doc));
     EXPECT_TRUE(same_document(doc, before));
@@ -97,11 +121,16 @@ inline Document expect_undo_redo_exact(Document& doc, std::unique_ptr<Command> c
 }
 
 // Executes cmd, expects a refusal with this code and path, and an untouched document and
-// history.
+// history; check() gives the same refusal beforehand.
 inline void expect_refused(Document& doc, std::unique_ptr<Command> cmd, geom::ErrorCode code,
                            const std::string& path) {
     History history;
     const Document before = doc;
+    const auto checked = cmd->check(doc);
+    ASSERT_FALSE(checked.ok()) << "check() accepts what apply refuses";
+    EXPECT_EQ(geom::name_of(checked.error().code), std::string(geom::name_of(code)));
+    EXPECT_EQ(checked.error().path, path) << checked.error().message;
+    EXPECT_TRUE(same_document(doc, before)) << "check() changed the document";
     const auto st = history.execute(doc, std::move(cmd));
     ASSERT_FALSE(st.ok());
     EXPECT_EQ(geom::name_of(st.error().code), std::string(geom::name_of(code)))

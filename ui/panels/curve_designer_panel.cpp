@@ -42,6 +42,19 @@ void hint_text(const char* text) {
     ImGui::PopStyleColor();
 }
 
+// A button for one command: greyed, with the command's own refusal as its tooltip, when the
+// command would not apply (the panel does not repeat the command's rules).
+bool command_button(const AppContext& ctx, const char* label, const doc::Command& cmd,
+                    const char* tip) {
+    const geom::Status st = cmd.check(ctx.doc);
+    ImGui::BeginDisabled(!st.ok());
+    const bool pressed = ImGui::Button(label);
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("%s", st.ok() ? tip : st.error().message.c_str());
+    return pressed;
+}
+
 // Runs a command; a refusal is kept for the panel to show (and the status bar shows it too).
 bool run(AppContext& ctx, std::unique_ptr<doc::Command> cmd) {
     ctx.seal();
@@ -105,7 +118,10 @@ void point_controls(AppContext& ctx, const doc::Object& obj, const doc::CurveObj
     }
     same_line_if_fits(button_width("Delete"));
     // The curve `g` refers to is replaced by a deletion: nothing below may read it this frame.
-    if (ImGui::Button("Delete") && run(ctx, doc::delete_curve_point(obj.id, i))) return;
+    if (command_button(ctx, "Delete", *doc::delete_curve_point(obj.id, i),
+                       "Deletes this control point; the knots follow the knot mode.") &&
+        run(ctx, doc::delete_curve_point(obj.id, i)))
+        return;
 
     // The weight of a rational curve; a non-rational one can be made rational.
     if (!geom::is_rational(g.type)) {
@@ -156,10 +172,9 @@ void degree_and_knots(AppContext& ctx, const doc::Object& obj, const doc::CurveO
                           "the shape changes.",
                           g.count() - 1, g.count());
     same_line_if_fits(button_width("Elevate"));
-    if (ImGui::Button("Elevate")) run(ctx, doc::elevate_degree(obj.id, geom::Dir::u));
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
-            "Degree elevation (Piegl & Tiller A5.9): p + 1, more points, same shape.");
+    if (command_button(ctx, "Elevate", *doc::elevate_degree(obj.id, geom::Dir::u),
+                       "Degree elevation (Piegl & Tiller A5.9): p + 1, more points, same shape."))
+        run(ctx, doc::elevate_degree(obj.id, geom::Dir::u));
 
     doc::CurveKnotMode mode = c.knot_mode;
     ImGui::SetNextItemWidth(150 * k);
@@ -185,7 +200,6 @@ void degree_and_knots(AppContext& ctx, const doc::Object& obj, const doc::CurveO
 void refine_controls(AppContext& ctx, const doc::Object& obj, const doc::CurveObject& c) {
     CurveDesignerState& cd = ctx.ui.curve;
     const geom::Curve& g = c.curve;
-    const geom::Interval d = geom::domain(g);
     const double t = trace_param(ctx, g);
     char label[64];
     std::snprintf(label, sizeof label, "t = %.4g", t);
@@ -195,14 +209,9 @@ void refine_controls(AppContext& ctx, const doc::Object& obj, const doc::CurveOb
     ImGui::SameLine();
     ImGui::Checkbox("de Boor", &cd.trace);
     ImGui::SameLine();
-    if (ImGui::Button("Insert knot")) {
-        if (t <= d.lo || t >= d.hi)
-            cd.message = "Insert a knot inside the domain: t is at its end.";
-        else
-            run(ctx, doc::insert_knot(obj.id, geom::Dir::u, t));
-    }
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Knot insertion at t (Boehm, P&T A5.1): one more point, same shape.");
+    if (command_button(ctx, "Insert knot", *doc::insert_knot(obj.id, geom::Dir::u, t),
+                       "Knot insertion at t (Boehm, P&T A5.1): one more point, same shape."))
+        run(ctx, doc::insert_knot(obj.id, geom::Dir::u, t));
     if (cd.trace) {
         const geom::DeBoorTriangle tri = geom::deboor_curve(g, t);
         const auto p = geom::DeBoorTriangle::cartesian(tri.levels.back().front());

@@ -1,0 +1,371 @@
+// Commands <-> JSON. Each command lists its members once (kCommandMembers); reading refuses
+// any other member, and the first error found is the answer.
+#include "core/scene/command_json.hpp"
+
+#include <climits>
+#include <optional>
+#include <string_view>
+
+#include "core/json/fields.hpp"
+#include "core/json/shapes.hpp"
+#include "core/scene/scene_io.hpp"
+
+namespace isoparm::scene {
+
+using namespace isoparm::doc;
+using namespace isoparm::json_io;
+using geom::Expected;
+using nlohmann::json;
+
+namespace {
+
+constexpr std::int64_t max_id = 9007199254740992; // 2^53, as scene files
+
+// Reads a command's members, keeping the first error: after one, every read answers a default
+// and `error` holds the refusal.
+class Members {
+public:
+    Members(const json& j, std::string at) : j_(j), at_(std::move(at)) {}
+
+    std::uint64_t id(std::string_view name) {
+        const json* v = need(name);
+        if (!v) return 0;
+        auto r = read_integer(*v, path(name), "an object id", 1, max_id);
+        return r ? static_cast<std::uint64_t>(*r) : fail(r.error(), 0);
+    }
+    int integer(std::string_view name, std::optional<int> otherwise = std::nullopt) {
+        const json* v = otherwise ? find(name) : need(name);
+        if (!v) return otherwise.value_or(0);
+        auto r = read_integer(*v, path(name), std::string(name), INT_MIN, INT_MAX);
+        return r ? static_cast<int>(*r) : fail(r.error(), 0);
+    }
+    double number(std::string_view name) {
+        const json* v = need(name);
+        if (!v) return 0;
+        auto r = read_finite(*v, path(name), name);
+        return r ? *r : fail(r.error(), 0.0);
+    }
+    std::optional<double> optional_number(std::string_view name) {
+        if (!find(name)) return std::nullopt;
+        return number(name);
+    }
+    glm::dvec3 point(std::string_view name) {
+        const json* v = need(name);
+        if (!v) return glm::dvec3(0);
+        auto r = read_point(*v, path(name), "a position");
+        return r ? *r : fail(r.error(), glm::dvec3(0));
+    }
+    std::optional<glm::dvec3> optional_point(std::string_view name) {
+        if (!find(name)) return std::nullopt;
+        return point(name);
+    }
+    std::string text(std::string_view name, std::optional<std::string> otherwise = std::nullopt) {
+        const json* v = otherwise ? find(name) : need(name);
+        if (!v) return otherwise.value_or("");
+        auto r = read_string(*v, path(name), name);
+        return r ? *r : fail(r.error(), std::string());
+    }
+    bool flag(std::string_view name, std::optional<bool> otherwise = std::nullopt) {
+        const json* v = otherwise ? find(name) : need(name);
+        if (!v) return otherwise.value_or(false);
+        auto r = read_bool(*v, path(name));
+        return r ? *r : fail(r.error(), false);
+    }
+    // An enumeration by its table's names ("direction": "u" or "v").
+    template <class E> E named(std::string_view name, std::string_view what) {
+        const json* v = need(name);
+        if (!v) return E{};
+        if (auto e = enum_value<E>(*v)) return *e;
+        std::string names;
+        for (const auto& entry : enum_names(E{}))
+            names += std::string(names.empty() ? "" : ", ") + entry.name;
+        return fail(schema_error(std::string(what) + " must be one of " + names + ", got " +
+                                     (v->is_string() ? "'" + v->get<std::string>() + "'"
+                                                     : std::string(type_name(*v))),
+                                 path(name)),
+                    E{});
+    }
+    template <class T> T read(std::string_view name, auto reader) {
+        const json* v = need(name);
+        if (!v) return T{};
+        Expected<T> r = reader(*v, path(name));
+        return r ? std::move(r).value() : fail(r.error(), T{});
+    }
+
+    std::optional<geom::Error> error;
+
+private:
+    std::string path(std::string_view name) const { return member_path(at_, name); }
+    const json* find(std::string_view name) { return error ? nullptr : find_member(j_, name); }
+    const json* need(std::string_view name) {
+        if (error) return nullptr;
+        const json* v = find_member(j_, name);
+        if (!v) error = missing_member(at_, name);
+        return v;
+    }
+    template <class T> T fail(geom::Error e, T value) {
+        if (!error) error = std::move(e);
+        return value;
+    }
+
+    const json& j_;
+    std::string at_;
+};
+
+json matrix_to_json(const glm::dmat4& m) {
+    json rows = json::array();
+    for (int r = 0; r < 4; ++r) rows.push_back({m[0][r], m[1][r], m[2][r], m[3][r]});
+    return rows;
+}
+
+// Rows as people write them: [[m00, m01, m02, m03], ..., [0, 0, 0, 1]] (glm is column-major).
+Expected<glm::dmat4> matrix_from_json(const json& v, const std::string& at) {
+    if (!v.is_array() || v.size() != 4)
+        return schema_error("a matrix is 4 rows of 4 numbers, got " + std::string(type_name(v)),
+                            at);
+    glm::dmat4 m(1.0);
+    for (int r = 0; r < 4; ++r) {
+        const json& row = v[static_cast<std::size_t>(r)];
+        const std::string rat = at + "/" + std::to_string(r);
+        if (!row.is_array() || row.size() != 4)
+            return schema_error("a matrix row is 4 numbers", rat);
+        for (int c = 0; c < 4; ++c) {
+            auto x = read_finite(row[static_cast<std::size_t>(c)], rat + "/" + std::to_string(c),
+                                 "a matrix entry");
+            if (!x) return x.error();
+            m[c][r] = *x;
+        }
+    }
+    return m;
+}
+
+Expected<std::vector<std::uint64_t>> ids_from_json(const json& v, const std::string& at) {
+    if (!v.is_array()) return schema_error("ids is an array of object ids", at);
+    std::vector<std::uint64_t> ids;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+        auto id = read_integer(v[k], at + "/" + std::to_string(k), "an object id", 1, max_id);
+        if (!id) return id.error();
+        ids.push_back(static_cast<std::uint64_t>(*id));
+    }
+    return ids;
+}
+
+json to_json(const AddObjectSpec& s) {
+    return {{"object", object_to_json(s.object)}};
+}
+json to_json(const RemoveObjectSpec& s) {
+    return {{"id", s.id}};
+}
+json to_json(const RenameObjectSpec& s) {
+    return {{"id", s.id}, {"name", s.name}};
+}
+json to_json(const SetVisibleSpec& s) {
+    return {{"id", s.id}, {"visible", s.visible}};
+}
+json to_json(const EditShapeSpec& s) {
+    json j = {{"id", s.id}, {"shape", shape_to_json(s.shape)}, {"label", s.label}};
+    if (!s.merge_key.empty()) j["merge_key"] = s.merge_key;
+    return j;
+}
+json to_json(const EditPointSpec& s) {
+    json j = {{"id", s.id}, {"i", s.i}};
+    if (s.j >= 0) j["j"] = s.j;
+    if (s.position) j["position"] = point_to_json(*s.position);
+    if (s.weight) j["weight"] = *s.weight;
+    return j;
+}
+json to_json(const MoveKnotSpec& s) {
+    json j = {{"id", s.id}, {"direction", geom::name_of(s.dir)}, {"k", s.k}, {"value", s.value}};
+    if (s.count != 1) j["count"] = s.count;
+    return j;
+}
+json to_json(const TransformSpec& s) {
+    json j = {{"id", s.id}, {"matrix", matrix_to_json(s.matrix)}};
+    if (!s.label.empty()) j["label"] = s.label;
+    return j;
+}
+json to_json(const InsertKnotSpec& s) {
+    return {{"id", s.id}, {"direction", geom::name_of(s.dir)}, {"knot", s.t}, {"times", s.times}};
+}
+json to_json(const ElevateDegreeSpec& s) {
+    return {{"id", s.id}, {"direction", geom::name_of(s.dir)}, {"times", s.times}};
+}
+json to_json(const SplitSpec& s) {
+    return {{"id", s.id}, {"direction", geom::name_of(s.dir)}, {"param", s.t}};
+}
+json to_json(const ConformBordersSpec& s) {
+    return {{"group", s.group}};
+}
+json to_json(const SetColorsSpec& s) {
+    return {{"colors", colors_to_json(s.colors)}};
+}
+json to_json(const InsertCurvePointSpec& s) {
+    return {{"id", s.id}, {"i", s.i}, {"position", point_to_json(s.position)}};
+}
+json to_json(const DeleteCurvePointSpec& s) {
+    return {{"id", s.id}, {"i", s.i}};
+}
+json to_json(const MoveCurvePointSpec& s) {
+    return {{"id", s.id}, {"i", s.i}, {"position", point_to_json(s.position)}};
+}
+json to_json(const SetCurveDegreeSpec& s) {
+    return {{"id", s.id}, {"degree", s.degree}};
+}
+json to_json(const SetCurveKnotModeSpec& s) {
+    return {{"id", s.id}, {"knot_mode", geom::name_of(s.mode)}};
+}
+json to_json(const SetCurvePlaneSpec& s) {
+    return {{"id", s.id}, {"plane", geom::name_of(s.plane)}, {"carry_points", s.carry_points}};
+}
+json to_json(const MakeCompatibleSpec& s) {
+    return {{"ids", s.ids}};
+}
+
+// The members each command takes besides "command", in CommandSpec's order.
+const std::initializer_list<std::string_view> command_members[] = {
+    {"object"},                                 // add_object
+    {"id"},                                     // remove_object
+    {"id", "name"},                             // rename_object
+    {"id", "visible"},                          // set_visible
+    {"id", "shape", "label", "merge_key"},      // edit_shape
+    {"id", "i", "j", "position", "weight"},     // edit_point
+    {"id", "direction", "k", "count", "value"}, // move_knot
+    {"id", "matrix", "label"},                  // transform
+    {"id", "direction", "knot", "times"},       // insert_knot
+    {"id", "direction", "times"},               // elevate_degree
+    {"id", "direction", "param"},               // split
+    {"group"},                                  // conform_borders
+    {"colors"},                                 // set_colors
+    {"id", "i", "position"},                    // insert_curve_point
+    {"id", "i"},                                // delete_curve_point
+    {"id", "i", "position"},                    // move_curve_point
+    {"id", "degree"},                           // set_curve_degree
+    {"id", "knot_mode"},                        // set_curve_knot_mode
+    {"id", "plane", "carry_points"},            // set_curve_plane
+    {"ids"},                                    // make_compatible
+};
+static_assert(std::size(command_members) == std::size(command_names));
+
+CommandSpec read_spec(std::size_t index, Members& m) {
+    switch (index) {
+    case 0:
+        return AddObjectSpec{m.read<Object>("object", object_from_json)};
+    case 1:
+        return RemoveObjectSpec{m.id("id")};
+    case 2:
+        return RenameObjectSpec{m.id("id"), m.text("name")};
+    case 3:
+        return SetVisibleSpec{m.id("id"), m.flag("visible")};
+    case 4: {
+        EditShapeSpec s;
+        s.id = m.id("id");
+        s.shape = m.read<Shape>("shape", shape_from_json);
+        s.label = m.text("label", "Edit shape");
+        s.merge_key = m.text("merge_key", "");
+        return s;
+    }
+    case 5: {
+        EditPointSpec s;
+        s.id = m.id("id");
+        s.i = m.integer("i");
+        s.j = m.integer("j", -1);
+        s.position = m.optional_point("position");
+        s.weight = m.optional_number("weight");
+        return s;
+    }
+    case 6: {
+        MoveKnotSpec s;
+        s.id = m.id("id");
+        s.dir = m.named<geom::Dir>("direction", "direction");
+        s.k = m.integer("k");
+        s.count = m.integer("count", 1);
+        s.value = m.number("value");
+        return s;
+    }
+    case 7:
+        return TransformSpec{m.id("id"), m.read<glm::dmat4>("matrix", matrix_from_json),
+                             m.text("label", "")};
+    case 8: {
+        InsertKnotSpec s;
+        s.id = m.id("id");
+        s.dir = m.named<geom::Dir>("direction", "direction");
+        s.t = m.number("knot");
+        s.times = m.integer("times", 1);
+        return s;
+    }
+    case 9: {
+        ElevateDegreeSpec s;
+        s.id = m.id("id");
+        s.dir = m.named<geom::Dir>("direction", "direction");
+        s.times = m.integer("times", 1);
+        return s;
+    }
+    case 10: {
+        SplitSpec s;
+        s.id = m.id("id");
+        s.dir = m.named<geom::Dir>("direction", "direction");
+        s.t = m.number("param");
+        return s;
+    }
+    case 11:
+        return ConformBordersSpec{m.id("group")};
+    case 12:
+        return SetColorsSpec{m.read<Colors>("colors", [](const json& v, const std::string& at) {
+            return colors_from_json(v, at, Colors{});
+        })};
+    case 13:
+        return InsertCurvePointSpec{m.id("id"), m.integer("i"), m.point("position")};
+    case 14:
+        return DeleteCurvePointSpec{m.id("id"), m.integer("i")};
+    case 15:
+        return MoveCurvePointSpec{m.id("id"), m.integer("i"), m.point("position")};
+    case 16:
+        return SetCurveDegreeSpec{m.id("id"), m.integer("degree")};
+    case 17:
+        return SetCurveKnotModeSpec{m.id("id"), m.named<CurveKnotMode>("knot_mode", "knot_mode")};
+    case 18: {
+        SetCurvePlaneSpec s;
+        s.id = m.id("id");
+        s.plane = m.named<CurvePlane>("plane", "plane");
+        s.carry_points = m.flag("carry_points", false);
+        return s;
+    }
+    default:
+        return MakeCompatibleSpec{m.read<std::vector<std::uint64_t>>("ids", ids_from_json)};
+    }
+}
+
+} // namespace
+
+json command_to_json(const CommandSpec& spec) {
+    json j = std::visit([](const auto& s) { return to_json(s); }, spec);
+    j["command"] = command_name(spec);
+    return j;
+}
+
+Expected<CommandSpec> command_from_json(const json& j, const std::string& at) {
+    if (auto st = expect_object(j, at, "a command"); !st) return st.error();
+    const json* name = find_member(j, "command");
+    if (!name) return missing_member(at, "command");
+    const std::string name_at = member_path(at, "command");
+    auto text = read_string(*name, name_at, "command");
+    if (!text) return text.error();
+    std::size_t index = std::size(command_names);
+    for (std::size_t k = 0; k < std::size(command_names); ++k)
+        if (*text == command_names[k]) index = k;
+    if (index == std::size(command_names)) {
+        std::string names;
+        for (const char* n : command_names) names += std::string(names.empty() ? "" : ", ") + n;
+        return schema_error("unknown command '" + *text + "' (commands: " + names + ")", name_at);
+    }
+    std::vector<std::string_view> allowed{"command"};
+    allowed.insert(allowed.end(), command_members[index].begin(), command_members[index].end());
+    const std::string what = "command '" + *text + "'";
+    if (auto st = check_members(j, at, what, allowed); !st) return st.error();
+    Members m(j, at);
+    CommandSpec spec = read_spec(index, m);
+    if (m.error) return *m.error;
+    return spec;
+}
+
+} // namespace isoparm::scene
