@@ -2,6 +2,8 @@
 // reader refuses bad steps with their paths, and a drag's spec is its final value.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
 #include <set>
 
 #include "core/doc/commands.hpp"
@@ -188,6 +190,36 @@ TEST(CommandJson, ACommandThatReadsButDoesNotApplyIsRefusedByItsCheckAtTheSamePa
     ASSERT_FALSE(st.ok());
     EXPECT_EQ(st.error().path, "/i");
     EXPECT_NE(st.error().message.find("i = 9"), std::string::npos) << st.error().message;
+}
+
+} // namespace
+
+namespace {
+
+// The commands of docs/commands.md: every row of its table names a command this build reads,
+// and its example runs on the default scene.
+TEST(CommandJson, TheDocumentationNamesEveryCommandAndItsExampleRuns) {
+    std::ifstream in(std::string(ISOPARM_SOURCE_DIR) + "/docs/commands.md");
+    ASSERT_TRUE(in) << "docs/commands.md";
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (const char* name : command_names)
+        EXPECT_NE(text.find("| `" + std::string(name) + "` |"), std::string::npos) << name;
+    const std::size_t example = text.find("## Example");
+    ASSERT_NE(example, std::string::npos);
+    const std::size_t open = text.find("```json\n", example) + 8;
+    const std::size_t close = text.find("```", open);
+    const json steps = json::parse(text.substr(open, close - open));
+    Document doc = default_document();
+    History h;
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+        auto spec = scene::command_from_json(steps[k], "/" + std::to_string(k));
+        ASSERT_TRUE(spec.ok()) << spec.error().message;
+        const auto st = h.execute(doc, make_command(std::move(spec).value()));
+        ASSERT_TRUE(st.ok()) << st.error().message;
+    }
+    EXPECT_EQ(h.size(), 3u);
+    const geom::Surface& s = *doc.objects[0].surface();
+    EXPECT_EQ(geom::multiplicity(s.knots_u, 0.25), 1);
 }
 
 } // namespace
