@@ -1,4 +1,4 @@
-// The teaching actions on the current surface at the indicator (issue 5): knot insertion,
+// The teaching actions on the current surface at the indicator: knot insertion,
 // degree elevation and splitting, shared by the Surface menu and the keyboard shortcuts.
 #pragma once
 

@@ -23,31 +23,11 @@ using geom::ErrorCode;
 using geom::make_error;
 
 const char* knot_mode_label(CurveKnotMode mode) {
-    switch (mode) {
-    case CurveKnotMode::clamped_uniform:
-        return "clamped uniform";
-    case CurveKnotMode::chord:
-        return "chord length";
-    case CurveKnotMode::centripetal:
-        return "centripetal";
-    case CurveKnotMode::custom:
-        return "custom";
-    }
-    return "custom";
+    return geom::label_of(mode);
 }
 
 const char* curve_plane_label(CurvePlane plane) {
-    switch (plane) {
-    case CurvePlane::xy:
-        return "xy";
-    case CurvePlane::xz:
-        return "xz";
-    case CurvePlane::yz:
-        return "yz";
-    case CurvePlane::free3d:
-        return "3D";
-    }
-    return "3D";
+    return geom::label_of(plane);
 }
 
 geom::Expected<geom::Knots> knots_for_mode(const geom::Curve& curve, CurveKnotMode mode) {

@@ -13,24 +13,6 @@ namespace isoparm::doc {
 using geom::ErrorCode;
 using geom::make_error;
 
-const char* construction_label(Construction kind) {
-    switch (kind) {
-    case Construction::ruled:
-        return "Ruled";
-    case Construction::revolve:
-        return "Revolve";
-    case Construction::swing:
-        return "Swing";
-    case Construction::sweep:
-        return "Sweep";
-    case Construction::oriented_sweep:
-        return "Oriented sweep";
-    case Construction::skin:
-        return "Skin";
-    }
-    return "Construct";
-}
-
 namespace {
 
 // How many curves each construction takes: [min, max].

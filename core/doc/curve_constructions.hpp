@@ -11,7 +11,22 @@
 namespace isoparm::doc {
 
 enum class Construction { ruled, revolve, swing, sweep, oriented_sweep, skin };
-const char* construction_label(Construction kind); // "Ruled", "Revolve", ...
+inline constexpr geom::EnumName<Construction> construction_names[] = {
+    {Construction::ruled, "ruled", "Ruled"},
+    {Construction::revolve, "revolve", "Revolve"},
+    {Construction::swing, "swing", "Swing"},
+    {Construction::sweep, "sweep", "Sweep"},
+    {Construction::oriented_sweep, "oriented_sweep", "Oriented sweep"},
+    {Construction::skin, "skin", "Skin"},
+};
+static_assert(geom::in_declaration_order(construction_names));
+constexpr std::span<const geom::EnumName<Construction>> enum_names(Construction) {
+    return construction_names;
+}
+// "Ruled", "Revolve", ... (the table's label).
+inline const char* construction_label(Construction kind) {
+    return geom::label_of(kind);
+}
 
 struct ConstructionRequest {
     Construction kind = Construction::ruled;

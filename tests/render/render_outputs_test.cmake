@@ -1,4 +1,4 @@
-# `isoparm render` never loses a file (issue 14, items 1-3 and 7): the scene as its own output
+# `isoparm render` never loses a file: the scene as its own output
 # (under any name), a directory, a FIFO or a device as output, a file-size limit, a FIFO as
 # scene, a NAME_MAX-long output name, and '-' for standard output. ISOPARM, SCENE, OUT_DIR given.
 set(dir ${OUT_DIR}/outputs)
