@@ -1,4 +1,4 @@
-// Entry point of `isoparm`: dispatches to the workstation, `render` or `geom`.
+// Entry point of `isoparm`: dispatches to the workstation, `render`, `script` or `geom`.
 #include <CLI/CLI.hpp>
 #include <iostream>
 
@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
     const isoparm::app::Action render = isoparm::app::register_render_command(app);
     const isoparm::app::Action gui = isoparm::app::register_gui_command(app);
     const isoparm::app::Action examples = isoparm::app::register_examples_command(app);
+    const isoparm::app::Action script = isoparm::app::register_script_command(app);
 #endif
     try {
         app.parse(argc, argv);
@@ -27,6 +28,7 @@ int main(int argc, char** argv) {
 #ifdef ISOPARM_HAVE_GUI
         if (sub->get_name() == "render") return render();
         if (sub->get_name() == "examples") return examples();
+        if (sub->get_name() == "script") return script();
 #endif
     }
 #ifdef ISOPARM_HAVE_GUI

@@ -341,70 +341,69 @@ Expected<Colors> colors_from_json(const json& j, const std::string& at, Colors c
     return colors;
 }
 
-namespace {
+namespace {} // namespace
 
-std::optional<Error> read_display(const json& j, DisplaySettings& d) {
-    if (auto st = expect_object(j, "/display", "display"); !st) return st.error();
+Expected<DisplaySettings> display_from_json(const json& j, const std::string& at,
+                                            DisplaySettings d) {
+    if (auto st = expect_object(j, at, "display"); !st) return st.error();
     std::vector<std::string_view> allowed{"style"};
     for (auto& [name, flag] : display_flags(d)) allowed.push_back(name);
     allowed.push_back("density");
-    if (auto st = check_members(j, "/display", "display", allowed); !st) return st.error();
+    if (auto st = check_members(j, at, "display", allowed); !st) return st.error();
     for (const auto& item : j.items()) {
-        const std::string at = member_path("/display", item.key());
+        const std::string mat = member_path(at, item.key());
         if (item.key() == "style") {
-            auto s = read_string(item.value(), at, "style");
+            auto s = read_string(item.value(), mat, "style");
             if (!s) return s.error();
             const std::optional<DisplayStyle> style = geom::parse_name<DisplayStyle>(*s);
             if (!style)
                 return schema_error("style must be shaded, wireframe or both, got '" + *s + "'",
-                                    at);
+                                    mat);
             d.style = *style;
             continue;
         }
         if (item.key() == "density") {
-            auto n = read_integer(item.value(), at, "density", 1, max_density);
+            auto n = read_integer(item.value(), mat, "density", 1, max_density);
             if (!n) return n.error();
             d.density = static_cast<int>(*n);
             continue;
         }
         for (auto& [name, flag] : display_flags(d)) {
             if (item.key() != name) continue;
-            auto v = read_bool(item.value(), at);
+            auto v = read_bool(item.value(), mat);
             if (!v) return v.error();
             *flag = *v;
         }
     }
-    return std::nullopt;
+    return d;
 }
 
-std::optional<Error> read_selection(const json& j, const Document& doc, Selection& sel) {
-    sel = Selection{};
-    if (j.is_null()) return std::nullopt;
-    if (auto st = expect_object(j, "/selection", "selection (or null)"); !st) return st.error();
-    if (auto st = check_members(j, "/selection", "selection", {"object", "point"}); !st)
-        return st.error();
+Expected<Selection> selection_from_json(const json& j, const std::string& at, const Document& doc) {
+    Selection sel;
+    if (j.is_null()) return sel;
+    if (auto st = expect_object(j, at, "selection (or null)"); !st) return st.error();
+    if (auto st = check_members(j, at, "selection", {"object", "point"}); !st) return st.error();
     const auto obj = j.find("object");
-    if (obj == j.end()) return missing_member("/selection", "object");
-    auto id = read_integer(*obj, "/selection/object", "the selected object's id", 1,
+    if (obj == j.end()) return missing_member(at, "object");
+    auto id = read_integer(*obj, at + "/object", "the selected object's id", 1,
                            static_cast<std::int64_t>(max_id));
     if (!id) return id.error();
     const Object* o = doc.find(static_cast<std::uint64_t>(*id));
     if (!o)
         return schema_error("the selection names object " + std::to_string(*id) +
                                 ", but no object has that id",
-                            "/selection/object");
+                            at + "/object");
     sel.object = o->id;
     const auto point = j.find("point");
-    if (point == j.end()) return std::nullopt;
+    if (point == j.end()) return sel;
     if (o->implicit())
-        return schema_error("an implicit surface has no control points to select",
-                            "/selection/point");
+        return schema_error("an implicit surface has no control points to select", at + "/point");
     const geom::Surface* surface = o->surface();
     const std::size_t arity = surface ? 2 : 1;
     if (!point->is_array() || point->size() != arity)
         return schema_error(surface ? "a surface's selected point is [i, j]"
                                     : "a curve's selected point is [i]",
-                            "/selection/point");
+                            at + "/point");
     int counts[2];
     if (surface) {
         counts[0] = surface->n_u;
@@ -415,17 +414,43 @@ std::optional<Error> read_selection(const json& j, const Document& doc, Selectio
     }
     int idx[2] = {-1, -1};
     for (std::size_t k = 0; k < arity; ++k) {
-        auto v = read_integer((*point)[k], "/selection/point/" + std::to_string(k),
+        auto v = read_integer((*point)[k], at + "/point/" + std::to_string(k),
                               "a control point index", 0, counts[k] - 1);
         if (!v) return v.error();
         idx[k] = static_cast<int>(*v);
     }
     sel.i = idx[0];
     sel.j = idx[1];
-    return std::nullopt;
+    return sel;
 }
 
-} // namespace
+Expected<glm::dvec2> indicator_from_json(const json& j, const std::string& at) {
+    if (!j.is_array() || j.size() != 2)
+        return schema_error("indicator is [u, v], each in [0, 1]", at);
+    glm::dvec2 uv{0.5, 0.5};
+    for (int a = 0; a < 2; ++a) {
+        const std::string aat = at + "/" + std::to_string(a);
+        auto x = read_finite(j[static_cast<std::size_t>(a)], aat, "an indicator coordinate");
+        if (!x) return x.error();
+        if (*x < 0 || *x > 1)
+            return schema_error("indicator coordinates are in [0, 1] (over the domain), got " +
+                                    geom::format_number(*x),
+                                aat);
+        uv[a] = *x;
+    }
+    return uv;
+}
+
+Expected<Continuity> continuity_from_json(const json& j, const std::string& at) {
+    auto name = read_string(j, at, "continuity");
+    if (!name) return name.error();
+    const std::optional<Continuity> continuity = geom::parse_name<Continuity>(*name);
+    if (!continuity)
+        return schema_error("continuity must be off, C0 or C1, got '" + *name + "'", at);
+    return *continuity;
+}
+
+namespace {} // namespace
 
 json scene_to_json(const Document& doc) {
     json objects = json::array();
@@ -523,33 +548,26 @@ Expected<Document> scene_from_json(const json& j) {
         if (!colors) return colors.error();
         doc.colors = *colors;
     }
-    if (const auto d = j.find("display"); d != j.end())
-        if (auto e = read_display(*d, doc.view.display)) return *e;
-    if (const auto s = j.find("selection"); s != j.end())
-        if (auto e = read_selection(*s, doc, doc.view.selection)) return *e;
+    if (const auto d = j.find("display"); d != j.end()) {
+        auto display = display_from_json(*d, "/display", doc.view.display);
+        if (!display) return display.error();
+        doc.view.display = *display;
+    }
+    if (const auto s = j.find("selection"); s != j.end()) {
+        auto selection = selection_from_json(*s, "/selection", doc);
+        if (!selection) return selection.error();
+        doc.view.selection = *selection;
+    }
     if (const auto c = j.find("continuity"); c != j.end()) {
-        auto name = read_string(*c, "/continuity", "continuity");
-        if (!name) return name.error();
-        const std::optional<Continuity> continuity = geom::parse_name<Continuity>(*name);
-        if (!continuity)
-            return schema_error("continuity must be off, C0 or C1, got '" + *name + "'",
-                                "/continuity");
+        auto continuity = continuity_from_json(*c, "/continuity");
+        if (!continuity) return continuity.error();
         doc.continuity = *continuity;
     }
     if (auto e = check_patch_groups(doc)) return *e;
     if (const auto ind = j.find("indicator"); ind != j.end()) {
-        if (!ind->is_array() || ind->size() != 2)
-            return schema_error("indicator is [u, v], each in [0, 1]", "/indicator");
-        for (int a = 0; a < 2; ++a) {
-            const std::string at = "/indicator/" + std::to_string(a);
-            auto x = read_finite((*ind)[a], at, "an indicator coordinate");
-            if (!x) return x.error();
-            if (*x < 0 || *x > 1)
-                return schema_error("indicator coordinates are in [0, 1] (over the domain), got " +
-                                        geom::format_number(*x),
-                                    at);
-            doc.view.indicator[a] = *x;
-        }
+        auto uv = indicator_from_json(*ind, "/indicator");
+        if (!uv) return uv.error();
+        doc.view.indicator = *uv;
     }
     return doc;
 }

@@ -30,6 +30,17 @@ geom::Expected<doc::Shape> shape_from_json(const nlohmann::json& j, const std::s
 nlohmann::json colors_to_json(const doc::Colors& colors);
 geom::Expected<doc::Colors> colors_from_json(const nlohmann::json& j, const std::string& at,
                                              doc::Colors colors);
+// The view state's parts, as a scene file writes them (scripts set them step by step): display
+// settings (members missing keep their value in `current`), the selection ({"object": id,
+// "point": [i, j] or [i]} or null; the object and point must exist in `doc`), the indicator
+// ([u, v] in [0, 1]^2 over the current domain) and the continuity setting ("off", "C0", "C1").
+geom::Expected<doc::DisplaySettings>
+display_from_json(const nlohmann::json& j, const std::string& at, doc::DisplaySettings current);
+geom::Expected<doc::Selection> selection_from_json(const nlohmann::json& j, const std::string& at,
+                                                   const doc::Document& doc);
+geom::Expected<glm::dvec2> indicator_from_json(const nlohmann::json& j, const std::string& at);
+geom::Expected<doc::Continuity> continuity_from_json(const nlohmann::json& j,
+                                                     const std::string& at);
 
 // The text save_scene writes: indented for people, every number in shortest round-trip form
 // (so a load gives back the same bits, -0.0 included), ending with a newline.

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 
 #include "ui/app_context.hpp"
@@ -19,9 +20,28 @@ struct HeadlessRequest {
     // display toggles...); the render command's options go through here. Returns "" or the
     // reason the options do not fit the scene (then nothing is rendered).
     std::function<std::string(AppContext&)> configure;
+    // Sees the state after the frames were drawn (a script keeps the fitted camera).
+    std::function<void(const AppContext&)> rendered;
 };
 
 // Returns "" on success, else one sentence saying what failed (no partial PNG is left).
 std::string render_headless(const HeadlessRequest& request);
+
+class EglContext;
+
+// One EGL context for many pictures (a script's screenshots): each render draws the workstation
+// with the given document (request.scene_path only names it; nothing is loaded).
+class HeadlessSession {
+public:
+    // Nothing, with `error` saying why, where there is no headless OpenGL.
+    static std::unique_ptr<HeadlessSession> create(std::string& error);
+    ~HeadlessSession();
+    // "" or one sentence saying what failed (no partial PNG is left).
+    std::string render(doc::Document document, const HeadlessRequest& request);
+
+private:
+    explicit HeadlessSession(std::unique_ptr<EglContext> egl);
+    std::unique_ptr<EglContext> egl_;
+};
 
 } // namespace isoparm::ui

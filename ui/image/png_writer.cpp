@@ -1,6 +1,6 @@
 // PNG output: encoded in memory by stb_image_write (Debian's libstb-dev), written to disk by
 // the one atomic-write routine, so every write error is seen and no partial PNG is left.
-#include "ui/headless/png_writer.hpp"
+#include "ui/image/png_writer.hpp"
 
 #include <string_view>
 

@@ -1,0 +1,136 @@
+// Scripts (docs/script-format.md): a starting scene and steps (document commands, view
+// changes, screenshots, captions, pauses and checks on the document), read strictly and run
+// without a window. `isoparm script` renders the screenshots; lessons and recordings are
+// scripts too.
+#pragma once
+
+#include <functional>
+#include <glm/vec2.hpp>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "core/doc/command.hpp"
+#include "core/doc/command_spec.hpp"
+#include "core/doc/document.hpp"
+#include "core/geom/status.hpp"
+
+namespace isoparm::scene {
+
+inline constexpr const char* script_format_name = "isoparm-script";
+inline constexpr int script_format_version = 1;
+
+// View steps: they change what is looked at, not the scene's geometry (no undo step).
+struct UndoStep {};
+struct RedoStep {};
+struct SelectStep {
+    nlohmann::json selection; // as a scene file's "selection" (checked against the document)
+};
+struct IndicatorStep {
+    glm::dvec2 uv{0.5, 0.5}; // over the current domain, in [0, 1]^2
+};
+struct DisplayStep {
+    nlohmann::json display; // as a scene file's "display"; members not named keep their value
+};
+struct ContinuityStep {
+    doc::Continuity mode = doc::Continuity::off;
+};
+// The 3D view's camera for the screenshots that follow (degrees; zoom in percent of the
+// fit-to-view distance).
+struct CameraStep {
+    double yaw_degrees = 0, pitch_degrees = 0;
+    std::optional<double> zoom_percent;
+};
+// De Boor's construction shown up to this step in the screenshots that follow (-1: all).
+struct DeBoorStep {
+    int step = -1;
+};
+enum class ShotView { workstation, view3d };
+struct ScreenshotStep {
+    std::string name; // a file name ending in .png, no folders
+    ShotView view = ShotView::workstation;
+    int width = 1280, height = 800;
+};
+struct CaptionStep {
+    std::string text;
+};
+struct PauseStep {};
+// A check on the document (docs/script-format.md: "expect").
+struct ExpectStep {
+    std::optional<std::size_t> objects;
+    std::optional<std::uint64_t> id;
+    std::optional<int> i, j;
+    std::optional<glm::dvec3> position;
+    std::optional<double> weight;
+    geom::Dir direction = geom::Dir::u;
+    std::optional<std::vector<double>> knots;
+    std::optional<int> degree;
+    std::optional<geom::SplineType> type;
+    std::optional<std::uint64_t> group;
+    std::optional<doc::Continuity> borders;
+    double tolerance = 1e-9;
+};
+
+using StepAction = std::variant<doc::CommandSpec, UndoStep, RedoStep, SelectStep, IndicatorStep,
+                                DisplayStep, ContinuityStep, CameraStep, DeBoorStep, ScreenshotStep,
+                                CaptionStep, PauseStep, ExpectStep>;
+
+struct Step {
+    StepAction action;
+    std::string path; // "/steps/12", for every message about this step
+};
+
+struct Script {
+    doc::Document start;
+    std::string scene_name; // the starting scene's file, "(inline)" or "(default)"
+    std::vector<Step> steps;
+};
+
+// Reads a script: the format and version, the starting scene ("scene": a path relative to
+// `script_dir`, or a scene object inline; absent: the default scene) and every step, each
+// checked for its form with its path ("/steps/12/point"). Whether a step applies to the
+// document as it is then is found by running it (run_script with dry_run).
+geom::Expected<Script> script_from_json(const nlohmann::json& j, const std::string& script_dir);
+// The same from a file: strict JSON (duplicate keys refused), a regular file of at most 64 MiB.
+geom::Expected<Script> load_script(const std::string& path);
+
+// The state a script runs in: the document and its history, and what screenshots show beyond
+// the document (camera, de Boor step, caption).
+struct ScriptState {
+    explicit ScriptState(doc::Document start) : doc(std::move(start)) {}
+    doc::Document doc;
+    doc::History history;
+    std::optional<CameraStep> camera;
+    int deboor_step = -1;
+    std::string caption;
+};
+
+struct ScriptHooks {
+    // Renders the state to `step.name`; "" or the reason it failed. Not called in a dry run.
+    std::function<std::string(const ScriptState&, const ScreenshotStep&)> screenshot;
+    // A caption or a pause reached (a window shows them; a headless run may print them).
+    std::function<void(const ScriptState&, const Step&)> caption, pause;
+};
+
+struct ScriptResult {
+    // The first step that could not be carried out (a refused command, a selection of a
+    // missing object, a screenshot that failed): the run stopped there.
+    std::optional<geom::Error> stopped;
+    // Every expect that did not hold, one sentence each naming its step.
+    std::vector<std::string> failed_expects;
+    std::vector<std::string> screenshots; // names written, in order
+    bool ok() const { return !stopped && failed_expects.empty(); }
+};
+
+// Runs the steps in order on `state` (which starts as script.start). In a dry run no hook is
+// called: it finds every step that cannot be carried out before anything is written.
+ScriptResult run_script(const Script& script, ScriptState& state, const ScriptHooks& hooks,
+                        bool dry_run = false);
+
+// One step (the runner's and a lesson player's unit). Returns the refusal, with the step's path.
+geom::Status run_step(const Step& step, ScriptState& state, const ScriptHooks& hooks, bool dry_run,
+                      ScriptResult& result);
+
+} // namespace isoparm::scene
