@@ -119,7 +119,7 @@ void on_focus(GLFWwindow* w, int) {
 // The start-up's candidates for recovery files: the scene asked for, the untitled document
 // and the recent files (recovery file names hash the path, so only known paths can be found).
 std::vector<scene::RecoveryInfo> recovery_offers(const std::string& scene,
-                                               const std::vector<std::string>& recent) {
+                                                 const std::vector<std::string>& recent) {
     std::vector<std::string> candidates;
     if (!scene.empty()) candidates.push_back(scene);
     candidates.push_back("");
@@ -207,7 +207,7 @@ void toggle_fullscreen(GLFWwindow* window, ui::ScreenRect& windowed) {
     glfwSetWindowMonitor(window, m, 0, 0, mode->width, mode->height, mode->refreshRate);
 }
 
-int run_window(const std::string& scene, int autosave_seconds) {
+int run_window(const std::string& scene, const std::string& lesson, int autosave_seconds) {
     const char* x11 = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     if ((!x11 || !*x11) && (!wayland || !*wayland)) {
@@ -280,10 +280,12 @@ int run_window(const std::string& scene, int autosave_seconds) {
 
             if (!scene.empty() && !ui::open_file(ctx, scene))
                 std::cerr << "isoparm: " << ctx.ui.error_message << "\n";
+            if (!lesson.empty() && !ui::open_lesson(ctx, lesson))
+                std::cerr << "isoparm: " << ctx.ui.error_message << "\n";
             const bool autosaving = autosave_seconds > 0;
             if (autosaving) ctx.ui.recovery.offers = recovery_offers(scene, ctx.settings.recent);
             scene::AutosaveTimer timer(scene::AutosaveTimer::Clock::now(),
-                                     std::chrono::seconds(std::max(autosave_seconds, 1)));
+                                       std::chrono::seconds(std::max(autosave_seconds, 1)));
 
             std::string title;
             while (!ctx.ui.quit_now) {
@@ -355,13 +357,19 @@ Action register_gui_command(CLI::App& app) {
     app.add_option(
         "SCENE", *scene,
         "scene to open in the workstation (default: a shaped 5x5 bicubic NURBS surface)");
+    auto lesson = std::make_shared<std::string>();
+    app.add_option("--lesson", *lesson,
+                   "a script (docs/script-format.md) to play in the window from pause to pause: "
+                   "Right arrow or Page Down goes on");
     auto autosave_seconds = std::make_shared<int>(60);
     app.add_option("--autosave-seconds", *autosave_seconds,
                    "seconds between autosaves of unsaved changes to the recovery file, which the "
                    "next start offers to restore after a crash (0: no autosave, no offer)")
         ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
-    return [scene, autosave_seconds]() -> int { return run_window(*scene, *autosave_seconds); };
+    return [scene, lesson, autosave_seconds]() -> int {
+        return run_window(*scene, *lesson, *autosave_seconds);
+    };
 }
 
 } // namespace isoparm::app

@@ -13,6 +13,8 @@
 
 #include "app/commands.hpp"
 #include "core/json/out_of_memory.hpp"
+#include "core/scene/atomic_file.hpp"
+#include "core/scene/scene_io.hpp"
 #include "core/scene/script.hpp"
 #include "ui/app_context.hpp"
 #include "ui/headless/headless_render.hpp"
@@ -29,6 +31,7 @@ struct ScriptOptions {
     std::string file;
     std::string out = ".";
     std::string check;
+    std::string save; // the scene at the end of the script
     double tolerance = 16;
     double max_fraction = 0.002;
 };
@@ -83,6 +86,14 @@ int run(const ScriptOptions& o) {
         return 2;
     }
     const scene::Script& script = *loaded;
+    if (!o.save.empty()) {
+        geom::Status usable = scene::check_output_path(o.save);
+        if (usable) usable = scene::check_output_is_not_input(o.save, {o.file, script.scene_name});
+        if (!usable) {
+            std::cerr << name << "--save: " << usable.error().message << "\n";
+            return 2;
+        }
+    }
 
     // Every step is tried first without writing anything: a step that cannot be carried out
     // stops the script before its first screenshot.
@@ -144,6 +155,13 @@ int run(const ScriptOptions& o) {
         return 1;
     }
 
+    if (!o.save.empty()) {
+        if (const geom::Status saved = scene::save_scene(state.doc, o.save); !saved) {
+            std::cerr << name << saved.error().message << "\n";
+            return 1;
+        }
+    }
+
     std::vector<std::string> mismatches;
     if (!o.check.empty()) {
         for (const std::string& shot : result.screenshots) {
@@ -192,6 +210,7 @@ Action register_script_command(CLI::App& app) {
     sub->add_option("--check", o->check,
                     "compare every screenshot with the golden image of the same name in this "
                     "folder; a diff image NAME.diff.png is written beside each that differs");
+    sub->add_option("--save", o->save, "save the scene as the script leaves it to this file");
     sub->add_option("--tolerance", o->tolerance,
                     "per-pixel tolerance for --check: a channel may differ by this much (0..255, "
                     "default 16)")

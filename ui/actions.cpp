@@ -3,7 +3,10 @@
 
 #include <filesystem>
 
+#include "core/scene/atomic_file.hpp"
 #include "core/scene/scene_io.hpp"
+#include "core/scene/script.hpp"
+#include "ui/lesson.hpp"
 #include "ui/view/doc_access.hpp"
 #include "ui/view/scene_budget.hpp"
 #include "ui/view/scene_builder.hpp"
@@ -27,7 +30,14 @@ std::string error_text(const geom::Error& e) {
 }
 
 void adopt(AppContext& ctx, doc::Document d, const std::string& path) {
+    // A recording belongs to the scene it started on: it ends here, and is offered for saving.
+    if (ctx.recorder) {
+        ctx.observe_for_recording();
+        ctx.ui.finished_recording = std::move(ctx.recorder);
+        ctx.ui.offer_recording_save = true;
+    }
     ctx.doc = std::move(d);
+    ctx.ui.lesson.reset(); // a lesson belongs to its scene (open_lesson sets it again)
     normalize_selection(ctx.doc);
     ctx.history.clear();
     ctx.history.mark_clean();
@@ -79,6 +89,9 @@ void run_pending(AppContext& ctx) {
         }
         break;
     }
+    case PendingAction::Kind::open_lesson:
+        open_lesson(ctx, a.path);
+        break;
     case PendingAction::Kind::quit:
         ctx.ui.quit_now = true;
         break;
@@ -163,12 +176,111 @@ bool save_as(AppContext& ctx, const std::string& path) {
 
 void undo(AppContext& ctx) {
     ctx.seal();
-    if (ctx.history.undo(ctx.doc)) normalize_selection(ctx.doc);
+    ctx.observe_for_recording();
+    if (!ctx.history.undo(ctx.doc)) return;
+    if (ctx.recorder) ctx.recorder->undone(ctx.doc);
+    normalize_selection(ctx.doc);
 }
 
 void redo(AppContext& ctx) {
     ctx.seal();
-    if (ctx.history.redo(ctx.doc)) normalize_selection(ctx.doc);
+    ctx.observe_for_recording();
+    if (!ctx.history.redo(ctx.doc)) return;
+    if (ctx.recorder) ctx.recorder->redone(ctx.doc);
+    normalize_selection(ctx.doc);
+}
+
+void request_open_lesson_dialog(AppContext& ctx) {
+    FileDialog& fd = ctx.ui.file_dialog;
+    fd.mode = FileDialog::Mode::open_lesson;
+    fd.just_opened = true;
+    fd.error.clear();
+    std::error_code ec;
+    if (fd.directory.empty()) fd.directory = std::filesystem::current_path(ec).string();
+}
+
+void request_open_lesson(AppContext& ctx, const std::string& path) {
+    guard(ctx, {PendingAction::Kind::open_lesson, path});
+}
+
+bool open_lesson(AppContext& ctx, const std::string& path) {
+    geom::Expected<scene::Script> script = scene::load_script(path);
+    if (!script) {
+        show_error(ctx, "Could not open lesson",
+                   "'" + path + "' was not opened; the current scene is unchanged.\n\n" +
+                       error_text(script.error()));
+        return false;
+    }
+    auto lesson = std::make_unique<Lesson>();
+    lesson->path = path;
+    lesson->script = std::move(script).value();
+    // The lesson's scene is a copy, untitled: saving never writes over the lesson's files.
+    adopt(ctx, lesson->script.start, "");
+    ctx.ui.lesson = std::move(lesson);
+    lesson_next(ctx); // up to the first pause: the introduction
+    return true;
+}
+
+void restart_lesson(AppContext& ctx) {
+    if (!ctx.ui.lesson) return;
+    std::unique_ptr<Lesson> lesson = std::move(ctx.ui.lesson);
+    lesson->next = 0;
+    lesson->caption.clear();
+    adopt(ctx, lesson->script.start, "");
+    ctx.ui.lesson = std::move(lesson);
+    lesson_next(ctx);
+}
+
+void start_recording(AppContext& ctx) {
+    ctx.seal(); // the first recorded edit does not merge with one made before
+    ctx.recorder = std::make_unique<scene::Recorder>(ctx.doc);
+    ctx.ui.status = "Recording: every edit from now on is kept as a script step";
+}
+
+void request_stop_recording(AppContext& ctx) {
+    if (!ctx.recorder && !ctx.ui.finished_recording) return;
+    if (ctx.recorder) {
+        ctx.observe_for_recording();
+        ctx.ui.finished_recording = std::move(ctx.recorder);
+    }
+    FileDialog& fd = ctx.ui.file_dialog;
+    fd.mode = FileDialog::Mode::save_recording;
+    fd.just_opened = true;
+    fd.error.clear();
+    std::error_code ec;
+    // Beside the scene it replays on, by default.
+    const std::filesystem::path scene_dir = std::filesystem::path(ctx.file_path).parent_path();
+    if (!scene_dir.empty())
+        fd.directory = scene_dir.string();
+    else if (fd.directory.empty())
+        fd.directory = std::filesystem::current_path(ec).string();
+    fd.name = "recording.json";
+}
+
+bool save_recording(AppContext& ctx, const std::string& path) {
+    if (!ctx.ui.finished_recording) return false;
+    if (const geom::Status distinct = scene::check_output_is_not_input(path, {ctx.file_path});
+        !ctx.file_path.empty() && !distinct) {
+        ctx.ui.file_dialog.error = "That is the open scene: choose another name for the script.";
+        return false;
+    }
+    const std::size_t steps = ctx.ui.finished_recording->step_count();
+    const geom::Status st = scene::write_file_atomically(
+        path, scene::pretty_json_text(ctx.ui.finished_recording->script()));
+    if (!st.ok()) {
+        show_error(ctx, "Could not save the recording",
+                   "'" + path + "' was not written.\n\n" + error_text(st.error()));
+        return false;
+    }
+    ctx.ui.finished_recording.reset();
+    ctx.ui.status = "Recording saved: " + path + " (" + std::to_string(steps) +
+                    " steps; isoparm script replays it)";
+    return true;
+}
+
+void discard_recording(AppContext& ctx) {
+    ctx.ui.finished_recording.reset();
+    ctx.ui.status = "Recording discarded";
 }
 
 void fit_view(AppContext& ctx) {

@@ -26,6 +26,21 @@ bool save(AppContext& ctx);
 void request_save_as(AppContext& ctx);
 bool save_as(AppContext& ctx, const std::string& path);
 
+// File > Start recording / Stop recording: the journal of edits saved as a script
+// (docs/script-format.md). Stopping asks where to save it; Cancel goes on recording. Opening
+// or creating another scene ends a recording and asks the same.
+// File > Open lesson: a script played in the window from pause to pause (ui/lesson.hpp) on a
+// copy of its scene; unsaved changes are asked about first.
+void request_open_lesson_dialog(AppContext& ctx);
+void request_open_lesson(AppContext& ctx, const std::string& path);
+bool open_lesson(AppContext& ctx, const std::string& path);
+void restart_lesson(AppContext& ctx);
+
+void start_recording(AppContext& ctx);
+void request_stop_recording(AppContext& ctx);
+bool save_recording(AppContext& ctx, const std::string& path);
+void discard_recording(AppContext& ctx);
+
 void undo(AppContext& ctx);
 void redo(AppContext& ctx);
 

@@ -7,13 +7,21 @@ namespace isoparm::ui {
 
 bool AppContext::execute(std::unique_ptr<doc::Command> cmd) {
     const std::string label = cmd->label();
+    observe_for_recording(); // a point picked in the frame its drag begins comes first
     const geom::Status st = history.execute(doc, std::move(cmd));
     if (!st.ok()) {
         ui.status = label + " refused: " + st.error().message;
         return false;
     }
+    if (recorder) recorder->executed(history, doc);
     ui.status.clear();
     return true;
+}
+
+void AppContext::observe_for_recording() {
+    if (!recorder) return;
+    constexpr double degrees = 180.0 / 3.14159265358979323846;
+    recorder->observe(doc, std::pair{ui.camera.yaw * degrees, ui.camera.pitch * degrees});
 }
 
 std::string AppContext::title() const {

@@ -9,6 +9,7 @@
 #include "core/doc/command.hpp"
 #include "core/doc/document.hpp"
 #include "core/json/input_file.hpp"
+#include "core/scene/recorder.hpp"
 #include "ui/ui_state.hpp"
 #include "ui/view/settings.hpp"
 
@@ -30,9 +31,15 @@ struct AppContext {
     Renderer* renderer = nullptr;
     ImplicitMeshes* implicit_meshes = nullptr; // owned by the workstation
 
+    // File > Start recording: the journal of this session's edits (core/scene/recorder.hpp);
+    // null when not recording.
+    std::unique_ptr<scene::Recorder> recorder;
+
     // Runs a command through the history; a refusal shows in the status bar and changes
-    // nothing. Returns whether it applied.
+    // nothing. Returns whether it applied (and, while recording, records it).
     bool execute(std::unique_ptr<doc::Command> cmd);
+    // The view as it is now, for the recording (once a frame, and before every edit).
+    void observe_for_recording();
     // Ends the current gesture: the next command starts a new undo step.
     void seal() { history.seal(); }
     bool dirty() const { return !history.is_clean(); }

@@ -74,6 +74,9 @@ void flush_ui_report(const AppContext& ctx) {
     j["typing"] = ImGui::GetIO().WantTextInput; // a text field has the keyboard
     j["control_points"] = ctx.doc.view.display.control_points;
     j["font_pixels"] = ImGui::GetFontSize();
+    j["recording"] = ctx.recorder ? static_cast<long>(ctx.recorder->step_count()) : -1;
+    if (ctx.ui.lesson)
+        j["lesson"] = {{"next", ctx.ui.lesson->next}, {"caption", ctx.ui.lesson->caption}};
     r.rects.clear(); // what the next frame draws, it reports again
     r.facts.clear();
     std::string text = j.dump(1);

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,8 @@
 
 #include "core/geom/types.hpp"
 #include "core/scene/autosave.hpp"
+#include "core/scene/recorder.hpp"
+#include "ui/lesson.hpp"
 #include "ui/view/camera.hpp"
 #include "ui/view/canvas_map.hpp"
 #include "ui/view/layout.hpp"
@@ -58,7 +61,7 @@ struct NewSurfaceForm {
 };
 
 struct FileDialog {
-    enum class Mode { closed, open, save } mode = Mode::closed;
+    enum class Mode { closed, open, save, save_recording, open_lesson } mode = Mode::closed;
     bool just_opened = false;
     std::string directory;
     std::string name;
@@ -67,7 +70,14 @@ struct FileDialog {
 
 // What to do once the user has answered the unsaved-changes question.
 struct PendingAction {
-    enum class Kind { none, new_document, open_file, open_dialog, quit } kind = Kind::none;
+    enum class Kind {
+        none,
+        new_document,
+        open_file,
+        open_dialog,
+        open_lesson,
+        quit
+    } kind = Kind::none;
     std::string path;
 };
 
@@ -94,8 +104,8 @@ struct ImplicitForm {
 // and the answers the window's autosave timer picks up (ui/recovery.hpp).
 struct RecoveryPrompt {
     std::vector<scene::RecoveryInfo> offers; // newest first; the dialog asks about the first
-    std::vector<std::string> restored;     // origins whose recovery file now backs the document
-    std::vector<std::string> held;         // origins the user will decide about at a later start
+    std::vector<std::string> restored;       // origins whose recovery file now backs the document
+    std::vector<std::string> held;           // origins the user will decide about at a later start
 };
 
 // The curve designer panel and the Construct dialog (ui/panels/curve_designer_panel.cpp,
@@ -207,6 +217,14 @@ struct UiState {
 
     NewSurfaceForm new_surface;
     FileDialog file_dialog;
+    // A stopped recording waiting to be saved (the save dialog is open for it), and whether to
+    // open that dialog at the next frame (another scene was opened while recording).
+    std::unique_ptr<scene::Recorder> finished_recording;
+    bool offer_recording_save = false;
+    // Where the 3D view's panel is this frame (the lesson bar sits over it).
+    Rect drawing_rect;
+    // The lesson being played (File > Open lesson), or null.
+    std::unique_ptr<Lesson> lesson;
     PendingAction pending;
     bool confirm_unsaved = false;
     bool confirm_overwrite_changed = false; // Save found the file changed on disk: ask

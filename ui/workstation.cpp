@@ -173,6 +173,7 @@ void Workstation::layout_panels() {
     ImGui::End();
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2, 2));
     // The 3D image covers the panel: its window background would only be overdrawn.
+    ui.drawing_rect = l.center;
     if (begin_panel("Drawing", l.center,
                     ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse |
                         ImGuiWindowFlags_NoBackground))
@@ -240,6 +241,7 @@ void Workstation::frame(unsigned target_framebuffer) {
         draw_menus(ctx_);
         layout_panels();
         draw_status_bar(ctx_);
+        draw_lesson_panel(ctx_);
         draw_dialogs(ctx_);
         draw_construct_dialog(ctx_);
     } else {
@@ -254,6 +256,7 @@ void Workstation::frame(unsigned target_framebuffer) {
     }
     ImGui::Render();
     flush_ui_report(ctx_);
+    ctx_.observe_for_recording(); // this frame's view changes (selection, indicator, display)
     // Subpatches: the indicator moved into another patch's part makes it current; a patch
     // picked otherwise takes the indicator along (ui/view/current_patch.hpp).
     {

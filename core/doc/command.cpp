@@ -26,7 +26,8 @@ geom::Status History::execute(Document& doc, std::unique_ptr<Command> cmd) {
     if (clean_index_ > before) clean_index_ = -1;
     redo_.clear();
 
-    if (!sealed_ && !undo_.empty() && undo_.back()->merge_with(*cmd)) {
+    last_merged_ = !sealed_ && !undo_.empty() && undo_.back()->merge_with(*cmd);
+    if (last_merged_) {
         // The top command now ends in a new state: if that state was the clean one, the
         // clean state can no longer be reached (undo goes back to the state before the top).
         if (clean_index_ == before) clean_index_ = -1;

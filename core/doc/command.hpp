@@ -45,6 +45,11 @@ public:
     // The next command will not merge with the current top (end of a drag gesture).
     void seal() { sealed_ = true; }
 
+    // The command the next undo reverts (nullptr when none), and whether the last successful
+    // execute merged into it instead of adding a step (a recording keeps one step per drag).
+    const Command* top() const { return undo_.empty() ? nullptr : undo_.back().get(); }
+    bool last_merged() const { return last_merged_; }
+
     bool can_undo() const { return !undo_.empty(); }
     bool can_redo() const { return !redo_.empty(); }
     std::string undo_label() const;
@@ -62,6 +67,7 @@ private:
     std::vector<std::unique_ptr<Command>> undo_, redo_;
     std::size_t limit_;
     bool sealed_ = true;
+    bool last_merged_ = false;
     // Position of the clean state in "commands applied" terms; -1 when unreachable.
     long clean_index_ = 0;
     long dropped_ = 0; // commands dropped from the bottom by the memory bound

@@ -155,6 +155,13 @@ void write_pretty(std::string& out, const json& v, int indent) {
 
 } // namespace
 
+std::string pretty_json_text(const json& value) {
+    std::string out;
+    write_pretty(out, value, 0);
+    out += '\n';
+    return out;
+}
+
 std::string scene_to_text(const Document& doc) {
     std::string out;
     json tree = scene_to_json(doc);

@@ -320,6 +320,14 @@ json object_to_json(const Object& o) {
     return j;
 }
 
+json display_to_json(const DisplaySettings& d) {
+    json display = json::object();
+    display["style"] = geom::name_of(d.style);
+    for (const auto& [name, flag] : display_flags(d)) display[name] = *flag;
+    display["density"] = d.density;
+    return display;
+}
+
 json colors_to_json(const Colors& colors) {
     json j = json::object();
     for (const auto& [name, c] : color_fields(colors)) j[name] = color_to_json(*c);
@@ -457,10 +465,7 @@ json scene_to_json(const Document& doc) {
     for (const Object& o : doc.objects) objects.push_back(object_to_json(o));
     json colors = colors_to_json(doc.colors);
 
-    json display = json::object();
-    display["style"] = geom::name_of(doc.view.display.style);
-    for (const auto& [name, flag] : display_flags(doc.view.display)) display[name] = *flag;
-    display["density"] = doc.view.display.density;
+    json display = display_to_json(doc.view.display);
 
     json selection = nullptr;
     if (doc.find(doc.view.selection.object)) {
@@ -480,6 +485,11 @@ json scene_to_json(const Document& doc) {
     scene["selection"] = std::move(selection);
     scene["indicator"] = json::array({doc.view.indicator.x, doc.view.indicator.y});
     if (doc.continuity != Continuity::off) scene["continuity"] = geom::name_of(doc.continuity);
+    // The id the next new object gets, where deleting the newest objects left it above the
+    // largest id (so that a script replayed on this scene makes the same ids).
+    std::uint64_t largest = 0;
+    for (const Object& o : doc.objects) largest = std::max(largest, o.id);
+    if (doc.next_id > largest + 1) scene["next_id"] = doc.next_id;
     return scene;
 }
 
@@ -512,7 +522,7 @@ Expected<Document> scene_from_json(const json& j) {
         return schema_error("version must be at least 1, got " + std::to_string(*v), "/version");
     if (auto st = check_members(j, "", "a scene",
                                 {"format", "version", "objects", "colors", "display", "selection",
-                                 "indicator", "continuity"});
+                                 "indicator", "continuity", "next_id"});
         !st)
         return st.error();
 
@@ -542,6 +552,12 @@ Expected<Document> scene_from_json(const json& j) {
     for (Object& o : doc.objects)
         if (o.id == 0) o.id = next++;
     doc.next_id = next;
+    if (const auto n = j.find("next_id"); n != j.end()) {
+        auto v = read_integer(*n, "/next_id", "next_id", static_cast<std::int64_t>(next),
+                              static_cast<std::int64_t>(max_id));
+        if (!v) return v.error();
+        doc.next_id = static_cast<std::uint64_t>(*v);
+    }
 
     if (const auto c = j.find("colors"); c != j.end()) {
         auto colors = colors_from_json(*c, "/colors", doc.colors);

@@ -34,6 +34,7 @@ geom::Expected<doc::Colors> colors_from_json(const nlohmann::json& j, const std:
 // settings (members missing keep their value in `current`), the selection ({"object": id,
 // "point": [i, j] or [i]} or null; the object and point must exist in `doc`), the indicator
 // ([u, v] in [0, 1]^2 over the current domain) and the continuity setting ("off", "C0", "C1").
+nlohmann::json display_to_json(const doc::DisplaySettings& display);
 geom::Expected<doc::DisplaySettings>
 display_from_json(const nlohmann::json& j, const std::string& at, doc::DisplaySettings current);
 geom::Expected<doc::Selection> selection_from_json(const nlohmann::json& j, const std::string& at,
@@ -45,6 +46,8 @@ geom::Expected<doc::Continuity> continuity_from_json(const nlohmann::json& j,
 // The text save_scene writes: indented for people, every number in shortest round-trip form
 // (so a load gives back the same bits, -0.0 included), ending with a newline.
 std::string scene_to_text(const doc::Document& doc);
+// Any JSON value written the way scenes are (scripts and recordings use it too).
+std::string pretty_json_text(const nlohmann::json& value);
 // Parses scene text: not JSON (`parse`, message with line and column), duplicate keys
 // (`schema`), nesting too deep (`limit`), then scene_from_json. Never throws, never crashes:
 // this is the entry point the scene fuzzer drives.

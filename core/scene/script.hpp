@@ -96,12 +96,24 @@ geom::Expected<Script> script_from_json(const nlohmann::json& j, const std::stri
 // The same from a file: strict JSON (duplicate keys refused), a regular file of at most 64 MiB.
 geom::Expected<Script> load_script(const std::string& path);
 
-// The state a script runs in: the document and its history, and what screenshots show beyond
-// the document (camera, de Boor step, caption).
+// The state a script runs in: the document and its history (its own, or the window's), and
+// what screenshots show beyond the document (camera, de Boor step, caption).
 struct ScriptState {
-    explicit ScriptState(doc::Document start) : doc(std::move(start)) {}
-    doc::Document doc;
-    doc::History history;
+    // A state of its own, starting from `start` (isoparm script, tests).
+    explicit ScriptState(doc::Document start)
+        : own_doc_(std::move(start)), doc(own_doc_), history(own_history_) {}
+    // The window's document and history (a lesson played in the workstation).
+    ScriptState(doc::Document& d, doc::History& h) : doc(d), history(h) {}
+    ScriptState(const ScriptState&) = delete;
+    ScriptState& operator=(const ScriptState&) = delete;
+
+private:
+    doc::Document own_doc_;
+    doc::History own_history_;
+
+public:
+    doc::Document& doc;
+    doc::History& history;
     std::optional<CameraStep> camera;
     int deboor_step = -1;
     std::string caption;

@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 seconds=${FUZZ_SECONDS:-20}
 build=${FUZZ_BUILD:-build-fuzz}
-targets=${FUZZ_TARGETS:-protocol scene expression}
+targets=${FUZZ_TARGETS:-protocol scene expression script}
 jobs=$(nproc 2>/dev/null || echo 2)
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
@@ -20,11 +20,12 @@ export ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=0
 export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 
 corpus=$build/corpus
-rm -rf "$corpus" && mkdir -p "$corpus"/{protocol,scene,expression}
+rm -rf "$corpus" && mkdir -p "$corpus"/{protocol,scene,expression,script}
 cp assets/requests/*.json "$corpus/protocol/" 2>/dev/null || true
 cp tests/protocol/examples/*.request.json "$corpus/protocol/"
 cp assets/scenes/*.json "$corpus/scene/" 2>/dev/null || true
-for t in protocol scene expression; do
+cp tests/scripts/*.json "$corpus/script/" 2>/dev/null || true
+for t in protocol scene expression script; do
   cp tests/fuzz/seeds/$t/* "$corpus/$t/" 2>/dev/null || true
 done
 

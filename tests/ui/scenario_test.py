@@ -6,8 +6,10 @@
 #   python3 tests/ui/scenario_test.py --xvfb --screen 1024x768 --isoparm build/app/isoparm \
 #       --scenes assets/scenes [--only curve_designer] [--shots DIR]
 import argparse
+import json
 import os
 import shutil
+import subprocess
 import sys
 import tempfile
 import time
@@ -234,6 +236,80 @@ def file_new_gives_an_empty_scene(s, ctx):
     check(r["selected"], "the new surface is not selected")
 
 
+def recording_replays_to_the_same_scene(s, ctx):
+    """File > Start recording; move the indicator, insert a knot, drag a control point;
+    File > Stop recording saves a script, and `isoparm script` replays it on the scene as it
+    was to the scene the window saves, byte for byte."""
+    start = s.save()
+    with open(s.scene) as f:
+        start_text = f.read()
+    s.menu("File", "Start recording")
+    s.wait_for("recording", lambda r: r.get("recording", -1) >= 0)
+    set_field(s, "tracing/u", "0.25")
+    s.key("u")
+    s.wait_for("the knot inserted", lambda r: "Insert knot" in r["undo"])
+    x, y, _, _ = s.rect("cp/disk0")
+    s.drag(x, y, 20, -15)
+    r = s.wait_for("three steps or more", lambda r: r.get("recording", -1) >= 3)
+    ctx.shot(s, "recording")
+    s.click_named("menu/File")
+    r = s.wait_for("the File menu", lambda r: any(k.startswith("menu/Stop recording")
+                                                   for k in r["rects"]))
+    s.click_named(next(k for k in r["rects"] if k.startswith("menu/Stop recording")))
+    name = s.rect("file/name")
+    ctx.shot(s, "save-recording")
+    script = os.path.join(s.work, "lesson.json")
+    # The name field has the keyboard as the dialog opens; clear it key by key and type a path.
+    s.wait_for("the name field to take the keyboard", lambda r: r.get("typing"))
+    s.key("End")
+    s.xdo("key", "--clearmodifiers", "--repeat", "20", "--delay", "120", "BackSpace")
+    s.xdo("type", "--delay", "20", script)
+    s.key("Return")
+    s.wait_for("the recording saved", lambda r: r.get("recording") == -1 and os.path.exists(script))
+    saved = s.save()
+    # Replayed on the scene as it was when the recording started.
+    before = os.path.join(s.work, "before.json")
+    with open(before, "w") as f:
+        f.write(start_text)
+    replayed = os.path.join(s.work, "replayed.json")
+    with open(script) as f:
+        lesson = json.load(f)
+    check(len(lesson["steps"]) >= 3, f"the recording holds {len(lesson['steps'])} steps")
+    done = subprocess.run([s.isoparm, "script", script, "--save", replayed,
+                           "--out", os.path.join(s.work, "shots")],
+                          capture_output=True, text=True, timeout=120)
+    check(done.returncode == 0, f"isoparm script on the recording: {done.returncode} {done.stderr}")
+    with open(replayed) as f, open(s.scene) as g:
+        check(f.read() == g.read(), "the replayed recording differs from the scene the window saved")
+    check(saved != start, "the recorded edits changed nothing")
+
+
+def lesson_steps_from_pause_to_pause(s, ctx):
+    """File > Open lesson... with a prepared lesson; its caption shows over the 3D view, Next
+    (and the Right arrow, as a clicker sends) run its steps to the next pause through the
+    window's history, so Ctrl+Z takes a step back."""
+    lessons = os.path.join(os.path.dirname(ctx.scenes), "lessons")
+    path = os.path.join(lessons, "weights-and-knots.json")
+    s.menu("File", "Open lesson...")
+    s.rect("file/name")
+    s.wait_for("the name field to take the keyboard", lambda r: r.get("typing"))
+    s.key("End")
+    s.xdo("key", "--clearmodifiers", "--repeat", "30", "--delay", "120", "BackSpace")
+    s.xdo("type", "--delay", "20", path)
+    s.key("Return")
+    r = s.wait_for("the lesson's first stop", lambda r: r.get("lesson", {}).get("next", 0) > 0)
+    check("Fig. 3" in r["lesson"]["caption"], f"the first caption is {r['lesson']['caption']!r}")
+    ctx.shot(s, "lesson-start")
+    s.click_named("lesson/next")
+    r = s.wait_for("the second stop", lambda r: "w22 = 5" in r["undo"])
+    s.key("Right")
+    r = s.wait_for("the third stop", lambda r: "w22 = 0.3" in r["undo"])
+    check("0.3" in r["lesson"]["caption"], f"the third caption is {r['lesson']['caption']!r}")
+    ctx.shot(s, "lesson-third-stop")
+    s.key("ctrl+z")
+    s.wait_for("Ctrl+Z back to w22 = 5", lambda r: "w22 = 5" in r["undo"])
+
+
 SCENARIOS = [
     ("window_fits", "fig3b-weight-5.json", window_fits_the_screen),
     ("window_size", "fig3b-weight-5.json", window_size_is_remembered),
@@ -246,11 +322,14 @@ SCENARIOS = [
     ("object_list", "fig8-revolution.json", object_list_hides_and_renames),
     ("file_new", "fig3b-weight-5.json", file_new_gives_an_empty_scene),
     ("fig6_c1", "fig3b-weight-5.json", fig6_split_sequence_keeps_c1),
+    ("recording", "fig3b-weight-5.json", recording_replays_to_the_same_scene),
+    ("lesson", "fig3b-weight-5.json", lesson_steps_from_pause_to_pause),
 ]
 
 
 class Context:
-    def __init__(self, shots, screen):
+    def __init__(self, shots, screen, scenes=""):
+        self.scenes = scenes
         self.shots = shots
         self.screen = screen
         self.name = ""
@@ -282,7 +361,8 @@ def main():
 def run_scenarios(args):
     if args.shots:
         os.makedirs(args.shots, exist_ok=True)
-    ctx = Context(args.shots, args.screen + ("-presentation" if args.presentation else ""))
+    ctx = Context(args.shots, args.screen + ("-presentation" if args.presentation else ""),
+                  os.path.abspath(args.scenes))
     passed = failed = 0
     for name, scene, run in SCENARIOS:
         if args.only and name != args.only:

@@ -130,8 +130,18 @@ std::vector<Entry> list_directory(const std::string& dir) {
 
 void file_dialog(AppContext& ctx) {
     FileDialog& fd = ctx.ui.file_dialog;
-    const bool saving = fd.mode == FileDialog::Mode::save;
-    const char* title = saving ? "Save scene as" : "Open scene";
+    // A stopped recording is saved as a script; another scene opened while recording asks too.
+    if (ctx.ui.offer_recording_save && fd.mode == FileDialog::Mode::closed) {
+        ctx.ui.offer_recording_save = false;
+        request_stop_recording(ctx);
+    }
+    const bool recording = fd.mode == FileDialog::Mode::save_recording;
+    const bool lesson = fd.mode == FileDialog::Mode::open_lesson;
+    const bool saving = fd.mode == FileDialog::Mode::save || recording;
+    const char* title = recording ? "Save recording as script"
+                        : saving  ? "Save scene as"
+                        : lesson  ? "Open lesson (a script)"
+                                  : "Open scene";
     if (fd.just_opened) {
         ImGui::OpenPopup(title);
         fd.just_opened = false;
@@ -165,6 +175,7 @@ void file_dialog(AppContext& ctx) {
     ImGui::SetNextItemWidth(-1);
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere(); // type a name right away
     const bool enter = ImGui::InputText("##name", &fd.name, ImGuiInputTextFlags_EnterReturnsTrue);
+    report_item("file/name");
     if (enter && !fd.name.empty()) chosen = fd.name;
     fs::path target = fs::path(fd.directory) / fd.name;
     if (saving && !fd.name.empty() && target.extension().empty()) target += ".json";
@@ -172,6 +183,9 @@ void file_dialog(AppContext& ctx) {
     if (saving && !fd.name.empty() && fs::exists(target, ec))
         ImGui::TextDisabled("%s exists and will be replaced.", target.filename().string().c_str());
     if (!fd.error.empty()) ImGui::TextColored(error_text_color(), "%s", fd.error.c_str());
+    if (recording && ctx.ui.finished_recording)
+        ImGui::TextDisabled("A script of %zu steps. Cancel goes on recording; Discard drops it.",
+                            ctx.ui.finished_recording->step_count());
     ImGui::BeginDisabled(fd.name.empty());
     if (ImGui::Button(saving ? "Save" : "Open")) chosen = fd.name;
     ImGui::EndDisabled();
@@ -180,15 +194,30 @@ void file_dialog(AppContext& ctx) {
     if (ImGui::Button("Cancel") || escape_pressed()) {
         close = true;
         ctx.ui.pending = {};
+        // Nothing is lost: the recording goes on where it stopped.
+        if (recording && ctx.ui.finished_recording && !ctx.recorder)
+            ctx.recorder = std::move(ctx.ui.finished_recording);
+    }
+    if (recording) {
+        ImGui::SameLine();
+        if (ImGui::Button("Discard")) {
+            close = true;
+            discard_recording(ctx);
+        }
     }
     if (!chosen.empty()) {
         target = fs::path(fd.directory) / chosen;
         if (saving && target.extension().empty()) target += ".json";
-        if (saving) {
+        if (recording) {
+            if (save_recording(ctx, target.string())) close = true;
+        } else if (saving) {
             if (save_as(ctx, target.string())) {
                 close = true;
                 run_pending(ctx); // e.g. quit after "Save" in the unsaved-changes dialog
             }
+        } else if (lesson) {
+            close = true;
+            request_open_lesson(ctx, target.string());
         } else {
             close = true;
             open_file(ctx, target.string());

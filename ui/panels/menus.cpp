@@ -47,6 +47,16 @@ void file_menu(AppContext& ctx) {
     if (menu_item("Save", "Ctrl+S")) save(ctx);
     if (menu_item("Save As...", "Ctrl+Shift+S")) request_save_as(ctx);
     ImGui::Separator();
+    if (menu_item("Open lesson...")) request_open_lesson_dialog(ctx);
+    // Recording: the session's edits as a script (docs/script-format.md) to replay or to show.
+    if (!ctx.recorder) {
+        if (menu_item("Start recording")) start_recording(ctx);
+    } else {
+        const std::string stop =
+            "Stop recording (" + std::to_string(ctx.recorder->step_count()) + " steps)...";
+        if (menu_item(stop.c_str())) request_stop_recording(ctx);
+    }
+    ImGui::Separator();
     if (menu_item("Quit", "Ctrl+Q")) request_quit(ctx);
     ImGui::EndMenu();
 }

@@ -20,6 +20,7 @@ void draw_deboor_panel(AppContext& ctx);         // de Boor's levels at (u, v), 
 void draw_control_panel(AppContext& ctx);        // colours and display settings
 void draw_object_list_panel(AppContext& ctx);    // every object: select, rename, hide, delete
 void draw_status_bar(AppContext& ctx);           // frame time, object, unsaved mark
+void draw_lesson_panel(AppContext& ctx);          // a lesson's caption and Next / Restart
 void draw_dialogs(AppContext& ctx);              // new surface, files, unsaved changes, errors
 
 // Height the status bar takes (for the layout).

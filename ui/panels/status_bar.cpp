@@ -35,6 +35,11 @@ void draw_status_bar(AppContext& ctx) {
             ImGui::SameLine();
             ImGui::TextDisabled("(tessellate %.2f ms)", ctx.renderer->stats().tessellate_ms);
         }
+        if (ctx.recorder) {
+            ImGui::SameLine(0, 24 * ctx.ui.scale());
+            ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1), "REC %zu steps",
+                               ctx.recorder->step_count());
+        }
         ImGui::SameLine(0, 24 * ctx.ui.scale());
         const doc::Object* obj = nullptr;
         if (const geom::Surface* s = current_surface(ctx.doc, &obj)) {
