@@ -15,6 +15,15 @@ namespace isoparm::ui {
 
 namespace {
 
+// The file dialog opened in `mode` at the next frame, its last error cleared.
+FileDialog& open_file_dialog(AppContext& ctx, FileDialog::Mode mode) {
+    FileDialog& fd = ctx.ui.file_dialog;
+    fd.mode = mode;
+    fd.just_opened = true;
+    fd.error.clear();
+    return fd;
+}
+
 void guard(AppContext& ctx, PendingAction action) {
     ctx.ui.pending = std::move(action);
     if (ctx.dirty())
@@ -77,10 +86,7 @@ void run_pending(AppContext& ctx) {
         open_file(ctx, a.path);
         break;
     case PendingAction::Kind::open_dialog: {
-        FileDialog& fd = ctx.ui.file_dialog;
-        fd.mode = FileDialog::Mode::open;
-        fd.just_opened = true;
-        fd.error.clear();
+        FileDialog& fd = open_file_dialog(ctx, FileDialog::Mode::open);
         if (fd.directory.empty()) {
             std::error_code ec;
             fd.directory = ctx.file_path.empty()
@@ -142,10 +148,7 @@ bool save(AppContext& ctx) {
 }
 
 void request_save_as(AppContext& ctx) {
-    FileDialog& fd = ctx.ui.file_dialog;
-    fd.mode = FileDialog::Mode::save;
-    fd.just_opened = true;
-    fd.error.clear();
+    FileDialog& fd = open_file_dialog(ctx, FileDialog::Mode::save);
     std::error_code ec;
     if (ctx.file_path.empty()) {
         if (fd.directory.empty()) fd.directory = std::filesystem::current_path(ec).string();
@@ -191,10 +194,7 @@ void redo(AppContext& ctx) {
 }
 
 void request_open_lesson_dialog(AppContext& ctx) {
-    FileDialog& fd = ctx.ui.file_dialog;
-    fd.mode = FileDialog::Mode::open_lesson;
-    fd.just_opened = true;
-    fd.error.clear();
+    FileDialog& fd = open_file_dialog(ctx, FileDialog::Mode::open_lesson);
     std::error_code ec;
     if (fd.directory.empty()) fd.directory = std::filesystem::current_path(ec).string();
 }
@@ -243,10 +243,7 @@ void request_stop_recording(AppContext& ctx) {
         ctx.observe_for_recording();
         ctx.ui.finished_recording = std::move(ctx.recorder);
     }
-    FileDialog& fd = ctx.ui.file_dialog;
-    fd.mode = FileDialog::Mode::save_recording;
-    fd.just_opened = true;
-    fd.error.clear();
+    FileDialog& fd = open_file_dialog(ctx, FileDialog::Mode::save_recording);
     std::error_code ec;
     // Beside the scene it replays on, by default.
     const std::filesystem::path scene_dir = std::filesystem::path(ctx.file_path).parent_path();
