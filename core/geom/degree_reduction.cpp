@@ -63,7 +63,10 @@ void remove_knots_in_order(int q, ReducedHomogeneous& curve,
         if (next < P.size()) window_points.push_back(P[next]);
         ++next;
     };
-    for (const auto& [value, times] : removals) {
+    for (const auto& removal : removals) {
+        // Plain names, not a structured binding: clang 14 (the fuzz build) cannot capture one.
+        const auto value = removal.first;
+        const auto times = removal.second;
         // Every copy of the knot and q + 2 knots after them.
         auto after = [&] {
             return window_knots.end() -
