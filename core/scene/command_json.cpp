@@ -19,7 +19,7 @@ using nlohmann::json;
 
 namespace {
 
-constexpr std::int64_t max_id = 9007199254740992; // 2^53, as scene files
+constexpr auto max_id = static_cast<std::int64_t>(max_object_id);
 
 // Reads a command's members, keeping the first error: after one, every read answers a default
 // and `error` holds the refusal.

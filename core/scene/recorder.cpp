@@ -9,17 +9,6 @@ namespace isoparm::scene {
 
 using nlohmann::json;
 
-namespace {
-
-json selection_json(const doc::Selection& s) {
-    if (s.object == 0) return nullptr;
-    json j = {{"object", s.object}};
-    if (s.has_point()) j["point"] = s.j >= 0 ? json::array({s.i, s.j}) : json::array({s.i});
-    return j;
-}
-
-} // namespace
-
 Recorder::Recorder(const doc::Document& start) : start_(scene_to_json(start)) {
     remember_view(start);
 }
@@ -67,7 +56,7 @@ void Recorder::redone(const doc::Document& doc) {
 void Recorder::observe(const doc::Document& doc,
                        std::optional<std::pair<double, double>> camera_degrees) {
     if (doc.view.selection != view_.selection)
-        append_or_replace({{"select", selection_json(doc.view.selection)}}, "select");
+        append_or_replace({{"select", selection_to_json(doc.view.selection)}}, "select");
     if (doc.view.indicator != view_.indicator)
         append_or_replace({{"indicator", {doc.view.indicator.x, doc.view.indicator.y}}},
                           "indicator");

@@ -56,7 +56,6 @@ template <class D> auto display_flags(D& d) {
 
 constexpr int max_density = 256;
 constexpr std::size_t max_objects = 100000;
-constexpr std::uint64_t max_id = 9007199254740992ull; // 2^53: exact in every JSON reader
 
 // A colour channel is a float; it is written as the shortest decimal that reads back as that
 // float ("0.13", not 0.12999999523162842), held in a double.
@@ -242,8 +241,8 @@ Expected<Object> object_from_json(const json& j, const std::string& at) {
 
     Object o;
     if (const auto id = j.find("id"); id != j.end()) {
-        auto v =
-            read_integer(*id, at + "/id", "an object id", 1, static_cast<std::int64_t>(max_id));
+        auto v = read_integer(*id, at + "/id", "an object id", 1,
+                              static_cast<std::int64_t>(max_object_id));
         if (!v) return v.error();
         o.id = static_cast<std::uint64_t>(*v);
     }
@@ -260,7 +259,7 @@ Expected<Object> object_from_json(const json& j, const std::string& at) {
     }
     if (const auto group = j.find("patch_group"); group != j.end()) {
         auto v = read_integer(*group, at + "/patch_group", "a patch group id", 1,
-                              static_cast<std::int64_t>(max_id));
+                              static_cast<std::int64_t>(max_object_id));
         if (!v) return v.error();
         o.patch_group = static_cast<std::uint64_t>(*v);
     }
@@ -386,6 +385,13 @@ Expected<DisplaySettings> display_from_json(const json& j, const std::string& at
     return d;
 }
 
+json selection_to_json(const Selection& s) {
+    if (s.object == 0) return nullptr;
+    json j = {{"object", s.object}};
+    if (s.has_point()) j["point"] = s.j >= 0 ? json::array({s.i, s.j}) : json::array({s.i});
+    return j;
+}
+
 Expected<Selection> selection_from_json(const json& j, const std::string& at, const Document& doc) {
     Selection sel;
     if (j.is_null()) return sel;
@@ -394,7 +400,7 @@ Expected<Selection> selection_from_json(const json& j, const std::string& at, co
     const auto obj = j.find("object");
     if (obj == j.end()) return missing_member(at, "object");
     auto id = read_integer(*obj, at + "/object", "the selected object's id", 1,
-                           static_cast<std::int64_t>(max_id));
+                           static_cast<std::int64_t>(max_object_id));
     if (!id) return id.error();
     const Object* o = doc.find(static_cast<std::uint64_t>(*id));
     if (!o)
@@ -467,14 +473,9 @@ json scene_to_json(const Document& doc) {
 
     json display = display_to_json(doc.view.display);
 
-    json selection = nullptr;
-    if (doc.find(doc.view.selection.object)) {
-        selection = {{"object", doc.view.selection.object}};
-        if (doc.view.selection.has_point())
-            selection["point"] = doc.view.selection.j >= 0
-                                     ? json::array({doc.view.selection.i, doc.view.selection.j})
-                                     : json::array({doc.view.selection.i});
-    }
+    // A selection of an object that is gone is not written.
+    const json selection =
+        doc.find(doc.view.selection.object) ? selection_to_json(doc.view.selection) : json();
 
     json scene = json::object();
     scene["format"] = scene_format_name;
@@ -554,7 +555,7 @@ Expected<Document> scene_from_json(const json& j) {
     doc.next_id = next;
     if (const auto n = j.find("next_id"); n != j.end()) {
         auto v = read_integer(*n, "/next_id", "next_id", static_cast<std::int64_t>(next),
-                              static_cast<std::int64_t>(max_id));
+                              static_cast<std::int64_t>(max_object_id));
         if (!v) return v.error();
         doc.next_id = static_cast<std::uint64_t>(*v);
     }

@@ -1,6 +1,7 @@
 // Scenes as JSON (docs/scene-format.md): load with precise errors, save atomically.
 #pragma once
 
+#include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
@@ -13,6 +14,9 @@ namespace isoparm::scene {
 // The scene format's name and the newest version this build reads and writes.
 inline constexpr const char* scene_format_name = "isoparm-scene";
 inline constexpr int scene_format_version = 1;
+// The largest object (and patch group) id a file or command may name: 2^53, exact in every
+// JSON reader.
+inline constexpr std::uint64_t max_object_id = 9007199254740992ull;
 
 nlohmann::json scene_to_json(const doc::Document& doc);
 // Errors name the offending value with a JSON Pointer into the scene.
@@ -37,6 +41,8 @@ geom::Expected<doc::Colors> colors_from_json(const nlohmann::json& j, const std:
 nlohmann::json display_to_json(const doc::DisplaySettings& display);
 geom::Expected<doc::DisplaySettings>
 display_from_json(const nlohmann::json& j, const std::string& at, doc::DisplaySettings current);
+// {"object": id, "point": [i, j] or [i]}, or null when nothing is selected.
+nlohmann::json selection_to_json(const doc::Selection& selection);
 geom::Expected<doc::Selection> selection_from_json(const nlohmann::json& j, const std::string& at,
                                                    const doc::Document& doc);
 geom::Expected<glm::dvec2> indicator_from_json(const nlohmann::json& j, const std::string& at);

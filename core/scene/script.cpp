@@ -139,7 +139,8 @@ Expected<ExpectStep> read_expect(const json& v, const std::string& at) {
         e.objects = static_cast<std::size_t>(*n);
     }
     if (const json* m = member("id")) {
-        auto n = read_integer(*m, path("id"), "an object id", 1, std::int64_t{1} << 53);
+        auto n = read_integer(*m, path("id"), "an object id", 1,
+                              static_cast<std::int64_t>(max_object_id));
         if (!n) return n.error();
         e.id = static_cast<std::uint64_t>(*n);
     }
@@ -185,7 +186,8 @@ Expected<ExpectStep> read_expect(const json& v, const std::string& at) {
         e.type = *t;
     }
     if (const json* m = member("group")) {
-        auto n = read_integer(*m, path("group"), "a patch group id", 1, std::int64_t{1} << 53);
+        auto n = read_integer(*m, path("group"), "a patch group id", 1,
+                              static_cast<std::int64_t>(max_object_id));
         if (!n) return n.error();
         e.group = static_cast<std::uint64_t>(*n);
     }
