@@ -57,6 +57,19 @@ struct Build {
     std::unique_ptr<Command> operator()(MakeCompatibleSpec& s) {
         return make_curves_compatible(std::move(s.ids));
     }
+    std::unique_ptr<Command> operator()(RemoveKnotSpec& s) {
+        return remove_knot(s.id, s.dir, s.t, s.times, s.tolerance);
+    }
+    std::unique_ptr<Command> operator()(ReduceDegreeSpec& s) {
+        return reduce_degree(s.id, s.dir, s.tolerance);
+    }
+    std::unique_ptr<Command> operator()(SplitKnotSpec& s) {
+        return split_knot(s.id, s.dir, s.t, s.delta);
+    }
+    std::unique_ptr<Command> operator()(CloseSpec& s) { return close_object(s.id, s.dir); }
+    std::unique_ptr<Command> operator()(ConvertSpec& s) {
+        return convert_object(s.id, s.to, s.reset_weights);
+    }
 };
 
 } // namespace

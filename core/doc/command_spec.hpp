@@ -112,6 +112,34 @@ struct SetCurvePlaneSpec {
 struct MakeCompatibleSpec {
     std::vector<std::uint64_t> ids;
 };
+// The toolbox's shape changes (commands_reshape.cpp).
+struct RemoveKnotSpec {
+    std::uint64_t id = 0;
+    geom::Dir dir = geom::Dir::u;
+    double t = 0;
+    int times = 1;
+    double tolerance = 0;
+};
+struct ReduceDegreeSpec {
+    std::uint64_t id = 0;
+    geom::Dir dir = geom::Dir::u;
+    double tolerance = 0;
+};
+struct SplitKnotSpec {
+    std::uint64_t id = 0;
+    geom::Dir dir = geom::Dir::u;
+    double t = 0;
+    std::optional<double> delta;
+};
+struct CloseSpec {
+    std::uint64_t id = 0;
+    geom::Dir dir = geom::Dir::u;
+};
+struct ConvertSpec {
+    std::uint64_t id = 0;
+    geom::SplineType to = geom::SplineType::nurbs;
+    bool reset_weights = false;
+};
 
 // The order of the alternatives is the order of command_names below.
 using CommandSpec =
@@ -119,7 +147,8 @@ using CommandSpec =
                  EditPointSpec, MoveKnotSpec, TransformSpec, InsertKnotSpec, ElevateDegreeSpec,
                  SplitSpec, ConformBordersSpec, SetColorsSpec, InsertCurvePointSpec,
                  DeleteCurvePointSpec, MoveCurvePointSpec, SetCurveDegreeSpec, SetCurveKnotModeSpec,
-                 SetCurvePlaneSpec, MakeCompatibleSpec>;
+                 SetCurvePlaneSpec, MakeCompatibleSpec, RemoveKnotSpec, ReduceDegreeSpec,
+                 SplitKnotSpec, CloseSpec, ConvertSpec>;
 
 // The command's name as scripts spell it ("edit_point"), indexed like CommandSpec.
 inline constexpr const char* command_names[] = {
@@ -143,6 +172,11 @@ inline constexpr const char* command_names[] = {
     "set_curve_knot_mode",
     "set_curve_plane",
     "make_compatible",
+    "remove_knot",
+    "reduce_degree",
+    "split_knot",
+    "close",
+    "convert",
 };
 static_assert(std::size(command_names) == std::variant_size_v<CommandSpec>);
 

@@ -83,6 +83,40 @@ std::unique_ptr<Command> conform_borders(std::uint64_t group);
 // or for any other command). Redo gives the pieces the same ids again.
 std::pair<std::uint64_t, std::uint64_t> split_piece_ids(const Command& split_command);
 
+// The toolbox (commands_reshape.cpp): edits that may change the shape, each within a stated
+// bound. Curves take Dir::u. The geometry's refusals pass through with the command's paths
+// ("/knot", "/times", "/tolerance", "/delta").
+// Knot removal (Piegl & Tiller A5.8) of `t` up to `times` times, each removal moving the shape
+// by at most `tolerance` (model units): fewer removals than asked is not an error (the label
+// says how many), none at all is refused (`geometry` at "/knot": the knot is essential, and
+// the message says how far one removal would move the shape).
+std::unique_ptr<Command> remove_knot(std::uint64_t id, geom::Dir dir, double t, int times,
+                                     double tolerance);
+// Degree reduction by one (A5.11); refused with its error bound when over `tolerance`.
+std::unique_ptr<Command> reduce_degree(std::uint64_t id, geom::Dir dir, double tolerance);
+// DesignMentor's knot splitting (geom/reshape.hpp): the first copy of the multiple knot `t`
+// moves to t - delta (default 1% of the span before it); the label says how far the shape moved.
+std::unique_ptr<Command> split_knot(std::uint64_t id, geom::Dir dir, double t,
+                                    std::optional<double> delta);
+// The closed (periodic) curve or surface of the same control polygon (geom::close_periodic):
+// the first p control points repeated, uniform unclamped knots; C^(p-1) at the seam. Refused
+// (`schema` at "/direction") when it is already closed that way.
+std::unique_ptr<Command> close_object(std::uint64_t id, geom::Dir dir);
+// Type conversion (geom::convert): one object, or the Bezier pieces of a multi-span object
+// (names "<name>.1".., fresh ids, in the original's place; surface pieces form a patch group
+// over the original domain). A rational object becomes non-rational only when its weights are
+// all equal (`weights` at "/to", naming the first that differs) unless reset_weights, which
+// sets every weight to 1 first (the shape then changes). conversion_losses says beforehand
+// what a conversion loses, for the question the UI asks.
+std::unique_ptr<Command> convert_object(std::uint64_t id, geom::SplineType to,
+                                        bool reset_weights = false);
+struct ConversionLosses {
+    bool weights_differ = false; // to a non-rational type: the weights would be reset
+    int pieces = 1;              // > 1: the object becomes its Bezier pieces
+    std::string text;            // the question's words; empty when nothing is lost
+};
+geom::Expected<ConversionLosses> conversion_losses(const Object& object, geom::SplineType to);
+
 std::unique_ptr<Command> set_colors(Colors colors);
 
 } // namespace isoparm::doc

@@ -10,6 +10,7 @@
 #include "core/doc/commands.hpp"
 #include "core/doc/commands_common.hpp"
 #include "core/doc/patches.hpp"
+#include "core/doc/refinement_edit.hpp"
 #include "core/doc/shape_edit.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/refine.hpp"
@@ -24,137 +25,7 @@ using geom::Dir;
 using geom::ErrorCode;
 using geom::make_error;
 
-// The knot vector, degree and count of a shape along one direction (curves: their own).
-struct Line {
-    const geom::Knots* U = nullptr;
-    int p = 0;
-    int n = 0;
-};
-
-Line line_of(const Shape& shape, Dir dir) {
-    if (auto* s = std::get_if<SurfaceObject>(&shape))
-        return {&s->surface.knots(dir), s->surface.degree(dir), s->surface.count(dir)};
-    const geom::Curve& c = std::get<CurveObject>(shape).curve;
-    return {&c.knots, c.degree, c.count()};
-}
-
-// The Greville abscissa of control point i, (U[i+1] + ... + U[i+p]) / p: the parameter a
-// control point "belongs to" (Piegl & Tiller, sec. 9.3 and Farin). It is unchanged for the
-// control points that knot insertion and splitting keep, so the nearest Greville abscissa
-// finds "the same control point" in a new net. Summed as a running mean so that huge knots
-// cannot overflow.
-double greville(const Line& L, int i) {
-    double g = 0;
-    for (int k = 1; k <= L.p; ++k) g += ((*L.U)[i + k] - g) / k;
-    return g;
-}
-
-int nearest_greville(const Line& L, double g) {
-    int best = 0;
-    double best_d = std::abs(greville(L, 0) - g);
-    for (int i = 1; i < L.n; ++i) {
-        const double d = std::abs(greville(L, i) - g);
-        if (d < best_d) best = i, best_d = d; // ties keep the lower index
-    }
-    return best;
-}
-
-int clamp_index(int i, int n) {
-    return std::clamp(i, 0, std::max(n - 1, 0));
-}
-
-// The selection's index along dir if it is a control point of object id, else null.
-int* selected_index(Selection& sel, std::uint64_t id, bool curve, Dir dir) {
-    if (sel.object != id || !sel.has_point()) return nullptr;
-    if (curve || dir == Dir::u) return &sel.i;
-    return sel.j >= 0 ? &sel.j : nullptr;
-}
-
-bool is_curve(const Shape& shape) {
-    return std::holds_alternative<CurveObject>(shape);
-}
-
-// Shared checks of the refinement commands: the object has knots, and a curve is refined
-// along its only direction.
-geom::Status check_refinable(const Object& obj, Dir dir, const char* what) {
-    if (obj.kind() == ObjectKind::implicit)
-        return make_error(ErrorCode::schema,
-                          "object '" + obj.name + "' is an implicit surface; " + what +
-                              " needs a curve or a surface",
-                          "/id");
-    if (obj.kind() == ObjectKind::curve && dir != Dir::u)
-        return make_error(ErrorCode::schema, "a curve has only one direction (u)", "/direction");
-    return geom::Ok{};
-}
-
-geom::Expected<Object*> refinable(Document& doc, std::uint64_t id, Dir dir, const char* what) {
-    auto found = detail::find_object(doc, id);
-    if (!found) return found.error();
-    if (auto st = check_refinable(**found, dir, what); !st) return st.error();
-    return *found;
-}
-
-const char* dir_name(Dir d) {
-    return d == Dir::u ? "u" : "v";
-}
-
-// ---------------------------------------------------------------------------------------
-// Knot insertion and degree elevation are shape edits (shape_edit.hpp) whose new shape is a
-// refinement of the old one, and whose selected control point follows into the new net
-// (forward) and back on undo (backward). An index map takes the old line, the new line and
-// the index in the line it maps from.
-using IndexMap = std::function<int(const Line& old_line, const Line& new_line, int i)>;
-
-struct Refinement {
-    Dir dir = Dir::u;
-    const char* what = "";
-    std::function<geom::Expected<geom::Surface>(const geom::Surface&)> surface;
-    std::function<geom::Expected<geom::Curve>(const geom::Curve&)> curve;
-    std::function<std::string(bool curve)> label;
-    // By default the control point with the nearest Greville abscissa.
-    IndexMap forward = [](const Line& old_line, const Line& new_line, int i) {
-        return nearest_greville(new_line, greville(old_line, i));
-    };
-    IndexMap backward = [](const Line& old_line, const Line& new_line, int i) {
-        return nearest_greville(old_line, greville(new_line, i));
-    };
-};
-
-std::unique_ptr<Command> refinement_command(std::uint64_t id, CommandSpec spec, Refinement r) {
-    detail::ShapeEditRule rule;
-    rule.make = [r](const Object& obj) -> geom::Expected<Shape> {
-        if (auto st = check_refinable(obj, r.dir, r.what); !st) return st.error();
-        if (const geom::Surface* s = obj.surface()) {
-            auto refined = r.surface(*s);
-            if (!refined) return refined.error();
-            return Shape{SurfaceObject{std::move(refined).value()}};
-        }
-        const CurveObject& c = *obj.curve_object();
-        auto refined = r.curve(c.curve);
-        if (!refined) return refined.error();
-        // The refined knots are the curve's own now (knot mode custom): no rule gives them.
-        return Shape{CurveObject{std::move(refined).value(), c.plane}};
-    };
-    // A (rational) Bezier has no interior knots: one inserted makes it a B-spline (NURBS).
-    // The label says so, so that the change of kind is never silent.
-    rule.label = [r](const Shape& before, const Shape& after) {
-        const std::string change = detail::type_change_text(before, after);
-        return r.label(is_curve(before)) + (change.empty() ? "" : " (" + change + ")");
-    };
-    rule.forward = [id, r](const Selection& sel, const Shape& from, const Shape& to) {
-        Selection out = sel;
-        if (int* idx = selected_index(out, id, is_curve(from), r.dir))
-            *idx = r.forward(line_of(from, r.dir), line_of(to, r.dir), *idx);
-        return out;
-    };
-    rule.backward = [id, r](const Selection& sel, const Shape& from, const Shape& to) {
-        Selection out = sel;
-        if (int* idx = selected_index(out, id, is_curve(from), r.dir))
-            *idx = r.backward(line_of(to, r.dir), line_of(from, r.dir), *idx);
-        return out;
-    };
-    return detail::shape_edit(id, std::move(spec), std::move(rule));
-}
+using namespace detail;
 
 // ---------------------------------------------------------------------------------------
 // Borders made to conform by knot insertion (shape unchanged), shared by the split and
@@ -399,7 +270,8 @@ std::unique_ptr<Command> insert_knot(std::uint64_t id, geom::Dir dir, double t, 
         return geom::insert_knot_within_limits(s, dir, t, times);
     };
     r.curve = [=](const geom::Curve& c) { return geom::insert_knot_within_limits(c, t, times); };
-    r.label = [=](bool curve) {
+    r.label = [=](const Shape& before, const Shape&) {
+        const bool curve = is_curve(before);
         std::string s = std::string("Insert knot ") + (curve ? "t" : dir_name(dir)) + " = " +
                         geom::format_number(t);
         if (times > 1) s += " (" + std::to_string(times) + " times)";
@@ -437,7 +309,8 @@ std::unique_ptr<Command> elevate_degree(std::uint64_t id, geom::Dir dir, int tim
         return geom::elevate_degree_within_limits(s, dir, times);
     };
     r.curve = [=](const geom::Curve& c) { return geom::elevate_degree_within_limits(c, times); };
-    r.label = [=](bool curve) {
+    r.label = [=](const Shape& before, const Shape&) {
+        const bool curve = is_curve(before);
         std::string s =
             curve ? "Elevate degree" : std::string("Elevate degree in ") + dir_name(dir);
         if (times > 1) s += " by " + std::to_string(times);

@@ -220,29 +220,57 @@ json to_json(const SetCurvePlaneSpec& s) {
 json to_json(const MakeCompatibleSpec& s) {
     return {{"ids", s.ids}};
 }
+json to_json(const RemoveKnotSpec& s) {
+    return {{"id", s.id},
+            {"direction", geom::name_of(s.dir)},
+            {"knot", s.t},
+            {"times", s.times},
+            {"tolerance", s.tolerance}};
+}
+json to_json(const ReduceDegreeSpec& s) {
+    return {{"id", s.id}, {"direction", geom::name_of(s.dir)}, {"tolerance", s.tolerance}};
+}
+json to_json(const SplitKnotSpec& s) {
+    json j = {{"id", s.id}, {"direction", geom::name_of(s.dir)}, {"knot", s.t}};
+    if (s.delta) j["delta"] = *s.delta;
+    return j;
+}
+json to_json(const CloseSpec& s) {
+    return {{"id", s.id}, {"direction", geom::name_of(s.dir)}};
+}
+json to_json(const ConvertSpec& s) {
+    json j = {{"id", s.id}, {"to", geom::name_of(s.to)}};
+    if (s.reset_weights) j["reset_weights"] = true;
+    return j;
+}
 
 // The members each command takes besides "command", in CommandSpec's order.
 const std::initializer_list<std::string_view> command_members[] = {
-    {"object"},                                 // add_object
-    {"id"},                                     // remove_object
-    {"id", "name"},                             // rename_object
-    {"id", "visible"},                          // set_visible
-    {"id", "shape", "label", "merge_key"},      // edit_shape
-    {"id", "i", "j", "position", "weight"},     // edit_point
-    {"id", "direction", "k", "count", "value"}, // move_knot
-    {"id", "matrix", "label"},                  // transform
-    {"id", "direction", "knot", "times"},       // insert_knot
-    {"id", "direction", "times"},               // elevate_degree
-    {"id", "direction", "param"},               // split
-    {"group"},                                  // conform_borders
-    {"colors"},                                 // set_colors
-    {"id", "i", "position"},                    // insert_curve_point
-    {"id", "i"},                                // delete_curve_point
-    {"id", "i", "position"},                    // move_curve_point
-    {"id", "degree"},                           // set_curve_degree
-    {"id", "knot_mode"},                        // set_curve_knot_mode
-    {"id", "plane", "carry_points"},            // set_curve_plane
-    {"ids"},                                    // make_compatible
+    {"object"},                                        // add_object
+    {"id"},                                            // remove_object
+    {"id", "name"},                                    // rename_object
+    {"id", "visible"},                                 // set_visible
+    {"id", "shape", "label", "merge_key"},             // edit_shape
+    {"id", "i", "j", "position", "weight"},            // edit_point
+    {"id", "direction", "k", "count", "value"},        // move_knot
+    {"id", "matrix", "label"},                         // transform
+    {"id", "direction", "knot", "times"},              // insert_knot
+    {"id", "direction", "times"},                      // elevate_degree
+    {"id", "direction", "param"},                      // split
+    {"group"},                                         // conform_borders
+    {"colors"},                                        // set_colors
+    {"id", "i", "position"},                           // insert_curve_point
+    {"id", "i"},                                       // delete_curve_point
+    {"id", "i", "position"},                           // move_curve_point
+    {"id", "degree"},                                  // set_curve_degree
+    {"id", "knot_mode"},                               // set_curve_knot_mode
+    {"id", "plane", "carry_points"},                   // set_curve_plane
+    {"ids"},                                           // make_compatible
+    {"id", "direction", "knot", "times", "tolerance"}, // remove_knot
+    {"id", "direction", "tolerance"},                  // reduce_degree
+    {"id", "direction", "knot", "delta"},              // split_knot
+    {"id", "direction"},                               // close
+    {"id", "to", "reset_weights"},                     // convert
 };
 static_assert(std::size(command_members) == std::size(command_names));
 
@@ -330,8 +358,41 @@ CommandSpec read_spec(std::size_t index, Members& m) {
         s.carry_points = m.flag("carry_points", false);
         return s;
     }
-    default:
+    case 19:
         return MakeCompatibleSpec{m.read<std::vector<std::uint64_t>>("ids", ids_from_json)};
+    case 20: {
+        RemoveKnotSpec s;
+        s.id = m.id("id");
+        s.dir = m.named<geom::Dir>("direction", "direction");
+        s.t = m.number("knot");
+        s.times = m.integer("times", 1);
+        s.tolerance = m.number("tolerance");
+        return s;
+    }
+    case 21: {
+        ReduceDegreeSpec s;
+        s.id = m.id("id");
+        s.dir = m.named<geom::Dir>("direction", "direction");
+        s.tolerance = m.number("tolerance");
+        return s;
+    }
+    case 22: {
+        SplitKnotSpec s;
+        s.id = m.id("id");
+        s.dir = m.named<geom::Dir>("direction", "direction");
+        s.t = m.number("knot");
+        s.delta = m.optional_number("delta");
+        return s;
+    }
+    case 23:
+        return CloseSpec{m.id("id"), m.named<geom::Dir>("direction", "direction")};
+    default: {
+        ConvertSpec s;
+        s.id = m.id("id");
+        s.to = m.named<geom::SplineType>("to", "to");
+        s.reset_weights = m.flag("reset_weights", false);
+        return s;
+    }
     }
 }
 

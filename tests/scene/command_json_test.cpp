@@ -50,6 +50,11 @@ std::vector<CommandSpec> one_of_each() {
         SetCurveKnotModeSpec{curve_id, CurveKnotMode::chord},
         SetCurvePlaneSpec{curve_id, CurvePlane::xz, true},
         MakeCompatibleSpec{{curve_id, curve_id + 100}},
+        RemoveKnotSpec{grid_id, Dir::u, 0.5, 2, 0.25},
+        ReduceDegreeSpec{grid_id, Dir::v, 1e-3},
+        SplitKnotSpec{curve_id, Dir::u, 0.5, 0.02},
+        CloseSpec{curve_id, Dir::u},
+        ConvertSpec{grid_id, geom::SplineType::bezier, true},
     };
 }
 

@@ -1,0 +1,119 @@
+// Refinement-like shape edits: the shared rule of commands_refine.cpp and commands_reshape.cpp.
+#include "core/doc/refinement_edit.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/doc/commands_common.hpp"
+#include "core/doc/shape_edit.hpp"
+
+namespace isoparm::doc::detail {
+
+using geom::Dir;
+using geom::ErrorCode;
+using geom::make_error;
+
+Line line_of(const Shape& shape, Dir dir) {
+    if (auto* s = std::get_if<SurfaceObject>(&shape))
+        return {&s->surface.knots(dir), s->surface.degree(dir), s->surface.count(dir)};
+    const geom::Curve& c = std::get<CurveObject>(shape).curve;
+    return {&c.knots, c.degree, c.count()};
+}
+
+// The Greville abscissa of control point i, (U[i+1] + ... + U[i+p]) / p: the parameter a
+// control point "belongs to" (Piegl & Tiller, sec. 9.3 and Farin). It is unchanged for the
+// control points that knot insertion and splitting keep, so the nearest Greville abscissa
+// finds "the same control point" in a new net. Summed as a running mean so that huge knots
+// cannot overflow.
+double greville(const Line& L, int i) {
+    double g = 0;
+    for (int k = 1; k <= L.p; ++k) g += ((*L.U)[i + k] - g) / k;
+    return g;
+}
+
+int nearest_greville(const Line& L, double g) {
+    int best = 0;
+    double best_d = std::abs(greville(L, 0) - g);
+    for (int i = 1; i < L.n; ++i) {
+        const double d = std::abs(greville(L, i) - g);
+        if (d < best_d) best = i, best_d = d; // ties keep the lower index
+    }
+    return best;
+}
+
+int clamp_index(int i, int n) {
+    return std::clamp(i, 0, std::max(n - 1, 0));
+}
+
+// The selection's index along dir if it is a control point of object id, else null.
+int* selected_index(Selection& sel, std::uint64_t id, bool curve, Dir dir) {
+    if (sel.object != id || !sel.has_point()) return nullptr;
+    if (curve || dir == Dir::u) return &sel.i;
+    return sel.j >= 0 ? &sel.j : nullptr;
+}
+
+bool is_curve(const Shape& shape) {
+    return std::holds_alternative<CurveObject>(shape);
+}
+
+// Shared checks of the refinement commands: the object has knots, and a curve is refined
+// along its only direction.
+geom::Status check_refinable(const Object& obj, Dir dir, const char* what) {
+    if (obj.kind() == ObjectKind::implicit)
+        return make_error(ErrorCode::schema,
+                          "object '" + obj.name + "' is an implicit surface; " + what +
+                              " needs a curve or a surface",
+                          "/id");
+    if (obj.kind() == ObjectKind::curve && dir != Dir::u)
+        return make_error(ErrorCode::schema, "a curve has only one direction (u)", "/direction");
+    return geom::Ok{};
+}
+
+geom::Expected<Object*> refinable(Document& doc, std::uint64_t id, Dir dir, const char* what) {
+    auto found = find_object(doc, id);
+    if (!found) return found.error();
+    if (auto st = check_refinable(**found, dir, what); !st) return st.error();
+    return *found;
+}
+
+const char* dir_name(Dir d) {
+    return d == Dir::u ? "u" : "v";
+}
+
+std::unique_ptr<Command> refinement_command(std::uint64_t id, CommandSpec spec, Refinement r) {
+    ShapeEditRule rule;
+    rule.make = [r](const Object& obj) -> geom::Expected<Shape> {
+        if (auto st = check_refinable(obj, r.dir, r.what); !st) return st.error();
+        if (const geom::Surface* s = obj.surface()) {
+            auto refined = r.surface(*s);
+            if (!refined) return refined.error();
+            return Shape{SurfaceObject{std::move(refined).value()}};
+        }
+        const CurveObject& c = *obj.curve_object();
+        auto refined = r.curve(c.curve);
+        if (!refined) return refined.error();
+        // The refined knots are the curve's own now (knot mode custom): no rule gives them.
+        return Shape{CurveObject{std::move(refined).value(), c.plane}};
+    };
+    // A (rational) Bezier has no interior knots: one inserted makes it a B-spline (NURBS).
+    // The label says so, so that the change of kind is never silent.
+    rule.label = [r](const Shape& before, const Shape& after) {
+        const std::string change = type_change_text(before, after);
+        return r.label(before, after) + (change.empty() ? "" : " (" + change + ")");
+    };
+    rule.forward = [id, r](const Selection& sel, const Shape& from, const Shape& to) {
+        Selection out = sel;
+        if (int* idx = selected_index(out, id, is_curve(from), r.dir))
+            *idx = r.forward(line_of(from, r.dir), line_of(to, r.dir), *idx);
+        return out;
+    };
+    rule.backward = [id, r](const Selection& sel, const Shape& from, const Shape& to) {
+        Selection out = sel;
+        if (int* idx = selected_index(out, id, is_curve(from), r.dir))
+            *idx = r.backward(line_of(to, r.dir), line_of(from, r.dir), *idx);
+        return out;
+    };
+    return shape_edit(id, std::move(spec), std::move(rule));
+}
+
+} // namespace isoparm::doc::detail
