@@ -21,6 +21,8 @@ std::string rebuild_fonts(float scale);
 // Refusals and errors inside panels and dialogs: orange on the dark theme, dark red on the
 // light (presentation) theme, so they read on either.
 ImVec4 error_text_color();
+// A tooltip of text wrapped at about 40 characters, so a long refusal stays on screen.
+void wrapped_tooltip(const std::string& text);
 // DejaVu Sans Mono at the same size, for columns of numbers (the default font when missing).
 ImFont* number_font();
 

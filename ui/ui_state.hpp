@@ -135,6 +135,7 @@ struct CurveDesignerState {
     std::vector<std::uint64_t> chosen; // curves in order
     double angle = 360, swing_scale = 1;
     int skin_degree = 0, parametrization = 0, sections = 16;
+    int gordon_u_count = 2;
     std::string note;  // the last construction's report (deviation, parameters, compatibility)
     std::string error; // why the last Build was refused, shown in the dialog until the next
 };
@@ -181,6 +182,21 @@ struct ObjectListState {
     bool focus_rename = false;
     char name[128] = {};
     bool show_tab = false; // bring the Objects tab forward once (an object was added)
+};
+
+// Surface / Curve > Convert to, when the conversion loses something: the question asked.
+struct ConvertQuestion {
+    std::uint64_t object = 0;
+    geom::SplineType to = geom::SplineType::nurbs;
+    bool reset_weights = false; // the weights differ and a non-rational type has none
+    std::string text;           // what is lost, in words
+    bool open = false;          // open the question at the next frame
+};
+
+// The toolbox's settings: how far knot removal and degree reduction may move the shape.
+struct ToolboxState {
+    double tolerance = 0.01; // model units
+    ConvertQuestion convert;
 };
 
 // When the status bar's message appeared (it fades, then goes, after status_seconds).
@@ -242,6 +258,7 @@ struct UiState {
     RecoveryPrompt recovery;
     CurveDesignerState curve;
     ObjectListState object_list;
+    ToolboxState toolbox;
 
     // Presentation enlarges everything by half, or by a quarter in a window under 800 px
     // high (a 1024x768 projector), where text is then 19 px and the panels still fit.

@@ -6,6 +6,8 @@
 #include <charconv>
 
 #include "core/doc/commands_common.hpp"
+#include "core/geom/coons.hpp"
+#include "core/geom/gordon.hpp"
 #include "core/geom/validate.hpp"
 
 namespace isoparm::doc {
@@ -22,14 +24,26 @@ std::pair<std::size_t, std::size_t> curve_count(Construction kind) {
         return {1, 1};
     case Construction::skin:
         return {2, static_cast<std::size_t>(geom::max_points_per_direction)};
+    case Construction::coons:
+        return {4, 4};
+    case Construction::gordon:
+        return {4, 2 * static_cast<std::size_t>(geom::max_points_per_direction)};
     default:
         return {2, 2};
     }
 }
 
 // The role of curve k in the request, for messages: "profile", "trajectory", "curve 2".
-std::string role(Construction kind, std::size_t k) {
+std::string role(Construction kind, std::size_t k, int gordon_u_count = 0) {
+    static const char* coons_roles[] = {"boundary S(u, 0)", "boundary S(u, 1)", "boundary S(0, v)",
+                                        "boundary S(1, v)"};
     switch (kind) {
+    case Construction::coons:
+        return coons_roles[std::min<std::size_t>(k, 3)];
+    case Construction::gordon:
+        return static_cast<int>(k) < gordon_u_count
+                   ? "u-curve " + std::to_string(k + 1)
+                   : "v-curve " + std::to_string(k + 1 - static_cast<std::size_t>(gordon_u_count));
     case Construction::revolve:
         return "profile";
     case Construction::swing:
@@ -44,14 +58,29 @@ std::string role(Construction kind, std::size_t k) {
 // A geometry error re-homed at the request: "/profile/..." and "/trajectory/..." become
 // "/curves/0/..." and "/curves/1/..."; an error about one curve names it; an error about all
 // of them lists them in order.
-geom::Error rehome(geom::Error e, const std::vector<const Object*>& objects) {
+geom::Error rehome(geom::Error e, const std::vector<const Object*>& objects,
+                   int gordon_u_count = 0) {
     if (!e.has_path) return e;
     auto starts = [&](const std::string& p) {
         return e.path == p || e.path.compare(0, p.size() + 1, p + "/") == 0;
     };
     if (starts("/profile"))
         e.path = "/curves/0" + e.path.substr(8);
-    else if (starts("/trajectory"))
+    else if (gordon_u_count > 0 && (starts("/u_curves") || starts("/v_curves"))) {
+        // Gordon's two families are one list here: the u-curves, then the v-curves.
+        const std::size_t offset = e.path[1] == 'v' ? static_cast<std::size_t>(gordon_u_count) : 0;
+        const std::string rest = e.path.substr(9); // "" or "/k..."
+        if (rest.empty()) {
+            e.path = "/curves";
+        } else {
+            const std::size_t end = rest.find('/', 1);
+            const std::string digits = rest.substr(1, end == std::string::npos ? end : end - 1);
+            std::size_t k = 0;
+            std::from_chars(digits.data(), digits.data() + digits.size(), k);
+            e.path = "/curves/" + std::to_string(k + offset) +
+                     (end == std::string::npos ? std::string() : rest.substr(end));
+        }
+    } else if (starts("/trajectory"))
         e.path = "/curves/1" + e.path.substr(11);
     const std::string prefix = "/curves/";
     if (e.path.compare(0, prefix.size(), prefix) == 0) {
@@ -104,8 +133,8 @@ geom::Expected<ConstructionResult> build_construction(const Document& doc,
         const auto* c = std::get_if<CurveObject>(&o->shape);
         if (!c)
             return make_error(ErrorCode::schema,
-                              "the " + role(kind, k) + " '" + o->name + "' is a " +
-                                  detail::kind_name(o->shape) + ", not a curve",
+                              "the " + role(kind, k, request.gordon_u_count) + " '" + o->name +
+                                  "' is a " + detail::kind_name(o->shape) + ", not a curve",
                               at);
         objects.push_back(o);
         curves.push_back(c->curve);
@@ -169,6 +198,34 @@ geom::Expected<ConstructionResult> build_construction(const Document& doc,
                    std::to_string(degree) + ", " +
                    geom::parametrization_name(request.parametrization) + " parameters v =";
         for (double v : r->params) out.note += " " + geom::format_number(v);
+        break;
+    }
+    case Construction::coons: {
+        auto r = geom::coons({curves[0], curves[1], curves[2], curves[3]});
+        if (!r) return rehome(r.error(), objects);
+        surface = std::move(r).value();
+        out.note = "Coons patch: the ruled surfaces between opposite boundaries, added, minus "
+                   "the bilinear patch of the corners; it keeps all four boundaries exactly";
+        break;
+    }
+    case Construction::gordon: {
+        const int nu = request.gordon_u_count;
+        if (nu < 2 || static_cast<int>(n) - nu < 2)
+            return make_error(
+                ErrorCode::schema,
+                "a Gordon network needs at least 2 u-curves and 2 v-curves: " + std::to_string(nu) +
+                    " of the " + std::to_string(n) + " curves were named u-curves",
+                "/gordon_u_count");
+        const std::vector<geom::Curve> u_curves(curves.begin(), curves.begin() + nu);
+        const std::vector<geom::Curve> v_curves(curves.begin() + nu, curves.end());
+        auto r = geom::gordon(u_curves, v_curves);
+        if (!r) return rehome(r.error(), objects, nu);
+        surface = std::move(r->surface);
+        out.note = "Gordon surface through " + std::to_string(nu) + " u-curves (at v =";
+        for (double v : r->v_params) out.note += " " + geom::format_number(v);
+        out.note += ") and " + std::to_string(n - nu) + " v-curves (at u =";
+        for (double u : r->u_params) out.note += " " + geom::format_number(u);
+        out.note += ")";
         break;
     }
     }

@@ -18,7 +18,7 @@ namespace isoparm::ui {
 
 namespace {
 
-constexpr int make_compatible_kind = 6; // after the doc::Construction values
+constexpr int make_compatible_kind = 8; // after the doc::Construction values
 
 // A name not yet used by an object: "curve 3".
 std::string fresh_name(const doc::Document& d, const std::string& base) {
@@ -83,6 +83,14 @@ void curve_menu(AppContext& ctx) {
             ctx,
             doc::circle_object(fresh_name(ctx.doc, "circle"), doc::CurvePlane::xy, {0, 0, 0}, 1),
             "circle");
+    ImGui::Separator();
+    const doc::Object* sel = ctx.doc.selected();
+    if (sel && sel->curve_object()) {
+        ImGui::TextDisabled("Selected curve: %s", sel->name.c_str());
+        toolbox_items(ctx, true);
+    } else {
+        ImGui::TextDisabled("Select a curve for knot removal, reduction, splitting, closing");
+    }
     ImGui::EndMenu();
 }
 
@@ -105,10 +113,13 @@ void construct_menu(AppContext& ctx) {
     if (!begin_menu("Construct")) return;
     if (menu_item("Make compatible...")) open_dialog(ctx, make_compatible_kind);
     ImGui::Separator();
-    const char* items[] = {"Ruled...", "Revolve...",        "Swing...",
-                           "Sweep...", "Oriented sweep...", "Skin..."};
-    for (int k = 0; k < 6; ++k)
+    const char* items[] = {"Ruled...",          "Revolve...", "Swing...", "Sweep...",
+                           "Oriented sweep...", "Skin...",    "Coons...", "Gordon..."};
+    static_assert(std::size(items) == make_compatible_kind);
+    for (int k = 0; k < make_compatible_kind; ++k) {
+        if (k == 6) ImGui::Separator(); // from a boundary or a network of curves
         if (menu_item(items[k])) open_dialog(ctx, k);
+    }
     ImGui::EndMenu();
 }
 
@@ -133,6 +144,14 @@ const char* what_it_does(int kind) {
     case 5:
         return "A surface through two or more section curves, in order (P&T 10.3): they are "
                "made compatible, then interpolated across.";
+    case 6:
+        return "The bilinearly blended Coons patch (P&T 10.5, Farin ch. 22) from four "
+               "boundaries whose ends meet: S(u, 0), S(u, 1), S(0, v), S(1, v), in this order. "
+               "It reproduces all four boundaries exactly.";
+    case 7:
+        return "The Gordon surface through a network (Gordon 1969; P&T 10.5): first the curves "
+               "along u (constant v), then the curves along v (constant u); every u-curve must "
+               "meet every v-curve. It interpolates every curve of the network.";
     default:
         return "Ruled and skinned surfaces pair the i-th control points of their curves, so "
                "the curves need one degree and one knot vector. This raises the degrees "
@@ -209,8 +228,16 @@ void curve_chooser(AppContext& ctx) {
         ImGui::SameLine();
         const int kind = cd.construct_kind;
         const bool roles = kind == 2 || kind == 3 || kind == 4;
+        static const char* coons_roles[] = {"S(u, 0)", "S(u, 1)", "S(0, v)", "S(1, v)"};
         if (roles && q < 2)
             ImGui::Text("%s: %s", q == 0 ? "profile" : "trajectory", o->name.c_str());
+        else if (kind == 6 && q < 4)
+            ImGui::Text("%s: %s", coons_roles[q], o->name.c_str());
+        else if (kind == 7)
+            ImGui::Text("%s %zu: %s",
+                        static_cast<int>(q) < cd.gordon_u_count ? "u-curve" : "v-curve",
+                        static_cast<int>(q) < cd.gordon_u_count ? q + 1 : q + 1 - cd.gordon_u_count,
+                        o->name.c_str());
         else
             ImGui::Text("%zu. %s", q + 1, o->name.c_str());
         ImGui::PopID();
@@ -240,6 +267,10 @@ void parameters(AppContext& ctx) {
         ImGui::Combo("Parametrization", &cd.parametrization, params, 3);
         break;
     }
+    case 7:
+        ImGui::InputInt("u-curves (the first in the order; the rest run along v)",
+                        &cd.gordon_u_count);
+        break;
     default:
         ImGui::Dummy(ImVec2(0, 0));
         break;
@@ -273,6 +304,7 @@ bool build(AppContext& ctx) {
     r.skin_degree = cd.skin_degree;
     r.parametrization = static_cast<geom::Parametrization>(cd.parametrization);
     r.sections = cd.sections;
+    r.gordon_u_count = cd.gordon_u_count;
     auto result = doc::build_construction(ctx.doc, r);
     const std::string title = std::string(doc::construction_label(r.kind)) + ": not built";
     if (!result) {

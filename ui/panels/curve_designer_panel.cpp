@@ -16,6 +16,9 @@
 #include "ui/panels/enum_combo.hpp"
 #include "ui/panels/flow.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/theme.hpp"
+#include "ui/toolbox_actions.hpp"
+#include "ui/ui_report.hpp"
 #include "ui/view/doc_access.hpp"
 
 namespace isoparm::ui {
@@ -51,7 +54,7 @@ bool command_button(const AppContext& ctx, const char* label, const doc::Command
     const bool pressed = ImGui::Button(label);
     ImGui::EndDisabled();
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-        ImGui::SetTooltip("%s", st.ok() ? tip : st.error().message.c_str());
+        wrapped_tooltip(st.ok() ? std::string(tip) : st.error().message);
     return pressed;
 }
 
@@ -235,6 +238,40 @@ void refine_controls(AppContext& ctx, const doc::Object& obj, const doc::CurveOb
     }
 }
 
+// The toolbox at the knot nearest t (Curve menu too): the shape may change, within the
+// tolerance, and the button's tooltip says why not when it cannot.
+void toolbox_row(AppContext& ctx) {
+    struct Entry {
+        Tool tool;
+        const char* label;
+        const char* tip;
+    };
+    const Entry entries[] = {
+        {Tool::remove_knot, "Remove knot",
+         "Knot removal (P&T A5.8) of the knot nearest t, "
+         "within the tolerance (Curve menu)."},
+        {Tool::reduce_degree, "Reduce",
+         "Degree reduction by one (P&T A5.11) within the tolerance."},
+        {Tool::split_knot, "Split knot",
+         "DesignMentor's knot splitting: a multiple knot becomes "
+         "a simple knot just before it plus one copy fewer."},
+        {Tool::close, "Close", "The closed (periodic) curve of this polygon: C(p-1) at the seam."},
+    };
+    bool first = true;
+    for (const Entry& e : entries) {
+        const ActionState a = tool_state(ctx, e.tool, geom::Dir::u, true);
+        if (!first) ImGui::SameLine();
+        first = false;
+        ImGui::BeginDisabled(!a.enabled);
+        const bool pressed = ImGui::Button(e.label);
+        ImGui::EndDisabled();
+        report_item(std::string("curve/") + e.label);
+        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+            wrapped_tooltip(a.enabled ? a.label + ": " + e.tip : a.why);
+        if (pressed) run_tool(ctx, e.tool, geom::Dir::u, true);
+    }
+}
+
 void primitives(AppContext& ctx, const doc::CurveObject* c) {
     CurveDesignerState& cd = ctx.ui.curve;
     const doc::CurvePlane plane =
@@ -326,6 +363,8 @@ void draw_curve_designer_panel(AppContext& ctx) {
     }
     if (!(c = selected_curve(ctx, &obj))) return;
     refine_controls(ctx, *obj, *c);
+    if (!(c = selected_curve(ctx, &obj))) return;
+    toolbox_row(ctx);
     if (!(c = selected_curve(ctx, &obj))) return;
     if (ImGui::CollapsingHeader("Basis functions", ImGuiTreeNodeFlags_DefaultOpen)) {
         const int sel = ctx.doc.view.selection.object == id ? ctx.doc.view.selection.i : -1;

@@ -15,6 +15,7 @@
 #include "ui/panels/panels.hpp"
 #include "ui/recovery.hpp"
 #include "ui/theme.hpp"
+#include "ui/toolbox_actions.hpp"
 #include "ui/ui_report.hpp"
 
 namespace isoparm::ui {
@@ -390,6 +391,7 @@ void draw_dialogs(AppContext& ctx) {
     overwrite_changed_dialog(ctx);
     error_dialog(ctx);
     help_dialog(ctx);
+    draw_convert_dialog(ctx);
     draw_recovery_dialog(ctx); // last: it waits until no other dialog is up
 }
 

@@ -11,6 +11,8 @@
 #include "ui/actions.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/surface_actions.hpp"
+#include "ui/theme.hpp"
+#include "ui/toolbox_actions.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/data_dir.hpp"
 #include "ui/view/doc_access.hpp"
@@ -79,7 +81,7 @@ void action_item(AppContext& ctx, const ActionState& a, const char* shortcut,
                  void (*run)(AppContext&, geom::Dir), geom::Dir dir) {
     if (menu_item(a.label.c_str(), shortcut, false, a.enabled)) run(ctx, dir);
     if (!a.enabled && !a.why.empty() && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-        ImGui::SetTooltip("%s", a.why.c_str());
+        wrapped_tooltip(a.why);
 }
 
 // Knot insertion, degree elevation and splitting at the indicator, and how subpatches stay
@@ -100,6 +102,40 @@ void refine_items(AppContext& ctx) {
         ImGui::EndMenu();
     }
 }
+
+} // namespace
+
+// The toolbox's items for the current surface (both directions) or the selected curve: shape
+// changes bounded by the tolerance, closing, and Convert to.
+void toolbox_items(AppContext& ctx, bool curve) {
+    using geom::Dir;
+    ImGui::TextDisabled("At the knot under the indicator (the shape may change)");
+    const Tool tools[] = {Tool::remove_knot, Tool::reduce_degree, Tool::split_knot, Tool::close};
+    for (Tool tool : tools)
+        for (Dir dir : {Dir::u, Dir::v}) {
+            if (curve && dir == Dir::v) continue;
+            const ActionState a = tool_state(ctx, tool, dir, curve);
+            if (menu_item(a.label.c_str(), nullptr, false, a.enabled))
+                run_tool(ctx, tool, dir, curve);
+            if (!a.enabled && !a.why.empty() &&
+                ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+                wrapped_tooltip(a.why);
+        }
+    ImGui::SetNextItemWidth(110 * ctx.ui.scale());
+    double& tol = ctx.ui.toolbox.tolerance;
+    // A negative tolerance is not clamped: the commands refuse it, and the items say why.
+    ImGui::InputDouble(curve ? "Tolerance##curve" : "Tolerance##surface", &tol, 0, 0, "%.3g");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("How far (model units) knot removal and degree reduction may move the "
+                          "shape.");
+    if (begin_menu(curve ? "Convert curve to" : "Convert to")) {
+        for (const auto& t : geom::spline_type_names)
+            if (menu_item(geom::label_of(t.value))) request_convert(ctx, t.value, curve);
+        ImGui::EndMenu();
+    }
+}
+
+namespace {
 
 void surface_menu(AppContext& ctx) {
     if (!begin_menu("Surface")) return;
@@ -124,6 +160,8 @@ void surface_menu(AppContext& ctx) {
     if (pick != 0 && pick != ctx.doc.view.selection.object) ctx.doc.view.selection = {pick, -1, -1};
     ImGui::Separator();
     refine_items(ctx);
+    ImGui::Separator();
+    toolbox_items(ctx, false);
     ImGui::Separator();
     const doc::Object* sel = ctx.doc.selected();
     if (menu_item("Delete Selected", nullptr, false, sel != nullptr)) {

@@ -14,13 +14,14 @@ void draw_control_point_panel(AppContext& ctx);  // xy / xz / yz planes, fields,
 void draw_implicit_panel(AppContext& ctx);       // expression, parameters, bounds, presets
 void draw_curve_designer_panel(AppContext& ctx); // the selected curve: canvas, knots, basis
 void draw_construct_menus(AppContext& ctx);      // Curve and Construct menus (in the menu bar)
+void toolbox_items(AppContext& ctx, bool curve); // removal, reduction, splitting, closing, convert
 void draw_construct_dialog(AppContext& ctx);     // the Construct menu's dialog
 void draw_basis_plot_panel(AppContext& ctx);     // R_ij at (u, v), its support, N_i and N_j
 void draw_deboor_panel(AppContext& ctx);         // de Boor's levels at (u, v), step control
 void draw_control_panel(AppContext& ctx);        // colours and display settings
 void draw_object_list_panel(AppContext& ctx);    // every object: select, rename, hide, delete
 void draw_status_bar(AppContext& ctx);           // frame time, object, unsaved mark
-void draw_lesson_panel(AppContext& ctx);          // a lesson's caption and Next / Restart
+void draw_lesson_panel(AppContext& ctx);         // a lesson's caption and Next / Restart
 void draw_dialogs(AppContext& ctx);              // new surface, files, unsaved changes, errors
 
 // Height the status bar takes (for the layout).
