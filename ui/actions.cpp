@@ -199,6 +199,12 @@ void request_open_lesson_dialog(AppContext& ctx) {
     if (fd.directory.empty()) fd.directory = std::filesystem::current_path(ec).string();
 }
 
+void request_load_points_dialog(AppContext& ctx) {
+    FileDialog& fd = open_file_dialog(ctx, FileDialog::Mode::load_points);
+    std::error_code ec;
+    if (fd.directory.empty()) fd.directory = std::filesystem::current_path(ec).string();
+}
+
 void request_open_lesson(AppContext& ctx, const std::string& path) {
     guard(ctx, {PendingAction::Kind::open_lesson, path});
 }

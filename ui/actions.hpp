@@ -32,6 +32,8 @@ bool save_as(AppContext& ctx, const std::string& path);
 // File > Open lesson: a script played in the window from pause to pause (ui/lesson.hpp) on a
 // copy of its scene; unsaved changes are asked about first.
 void request_open_lesson_dialog(AppContext& ctx);
+// The file dialog for the Fit panel's data points (CSV or XYZ).
+void request_load_points_dialog(AppContext& ctx);
 void request_open_lesson(AppContext& ctx, const std::string& path);
 bool open_lesson(AppContext& ctx, const std::string& path);
 void restart_lesson(AppContext& ctx);

@@ -6,12 +6,14 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "core/doc/fit.hpp"
 #include "core/geom/types.hpp"
 #include "core/scene/autosave.hpp"
 #include "core/scene/recorder.hpp"
@@ -61,7 +63,14 @@ struct NewSurfaceForm {
 };
 
 struct FileDialog {
-    enum class Mode { closed, open, save, save_recording, open_lesson } mode = Mode::closed;
+    enum class Mode {
+        closed,
+        open,
+        save,
+        save_recording,
+        open_lesson,
+        load_points
+    } mode = Mode::closed;
     bool just_opened = false;
     std::string directory;
     std::string name;
@@ -193,6 +202,25 @@ struct ConvertQuestion {
     bool open = false;          // open the question at the next frame
 };
 
+// The Fit panel (Curve > Fit curve to points, Surface > Fit surface to a grid): data points
+// clicked on its canvas or loaded from a file, the fit's settings, and the last fit made from
+// them (recomputed only when they change).
+struct FitState {
+    bool open = false; // the panel takes the right slot
+    std::vector<glm::dvec3> points;
+    int rows = 1, columns = 0; // a loaded grid when rows > 1
+    std::string source;        // "" for clicked points, else the file loaded
+    int plane = 0;             // the canvas plane: 0 xy, 1 xz, 2 yz
+    doc::FitSettings settings;
+    std::optional<doc::Fit> fit;
+    std::string error;    // why the last fit (or load) was refused
+    bool stale = true;    // points or settings changed since `fit`
+    int drag = -1;        // data point being dragged, -1 none
+    PlaneMap frozen;      // the canvas framing kept during a drag
+    int frame_plane = -1; // the plane the kept framing belongs to (-1: frame afresh)
+    glm::dvec2 frame_lo{0}, frame_hi{0};
+};
+
 // The toolbox's settings: how far knot removal and degree reduction may move the shape.
 struct ToolboxState {
     double tolerance = 0.01; // model units
@@ -259,6 +287,7 @@ struct UiState {
     CurveDesignerState curve;
     ObjectListState object_list;
     ToolboxState toolbox;
+    FitState fit;
 
     // Presentation enlarges everything by half, or by a quarter in a window under 800 px
     // high (a 1024x768 projector), where text is then 19 px and the panels still fit.

@@ -9,6 +9,7 @@
 #include <imgui_impl_opengl3.h>
 
 #include "ui/actions.hpp"
+#include "ui/panels/fit_panel.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/render/gl.hpp"
 #include "ui/render/renderer.hpp"
@@ -182,7 +183,9 @@ void Workstation::layout_panels() {
     ImGui::PopStyleVar();
     // An implicit surface has no control points: its editor takes their place.
     const doc::Object* sel = ctx_.doc.selected();
-    if (sel && sel->kind() == doc::ObjectKind::implicit) {
+    if (ui.fit.open) {
+        if (begin_panel("Fit", l.right[0])) draw_fit_panel(ctx_);
+    } else if (sel && sel->kind() == doc::ObjectKind::implicit) {
         if (begin_panel("Implicit surface", l.right[0])) draw_implicit_panel(ctx_);
     } else if (sel && sel->kind() == doc::ObjectKind::curve) {
         if (begin_panel("Curve designer", l.right[0])) draw_curve_designer_panel(ctx_);

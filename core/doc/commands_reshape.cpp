@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 
 #include "core/doc/commands.hpp"
@@ -35,8 +36,12 @@ std::string where(bool curve, Dir dir, double t) {
     return std::string(curve ? "t" : dir_name(dir)) + " = " + geom::format_number(t);
 }
 
+// Three significant digits: a bound read by a person (the exact value is in no decision).
 std::string moved_text(double moved) {
-    return moved == 0 ? "shape unchanged" : "moves at most " + geom::format_number(moved);
+    if (moved == 0) return "shape unchanged";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", moved);
+    return std::string("moves at most ") + buf;
 }
 
 // A removal that removed nothing: the knot is essential within the tolerance. How far a single

@@ -310,6 +310,52 @@ def lesson_steps_from_pause_to_pause(s, ctx):
     s.wait_for("Ctrl+Z back to w22 = 5", lambda r: "w22 = 5" in r["undo"])
 
 
+def toolbox_split_knot_then_convert(s, ctx):
+    """Surface menu: split the double knot v = 0.5 under the indicator (the shape moves a
+    little, the knots change), then Convert to > Bezier asks first and makes the pieces."""
+    before = s.save()
+    s.menu("Surface", "Split knot v = 0.5 (x2)")
+    r = s.wait_for("the split knot", lambda r: r["undo"].startswith("Split knot v = 0.5"))
+    after = s.save()
+    k0 = by_name(before, "vase")["surface"]["knots"][1]
+    k1 = by_name(after, "vase")["surface"]["knots"][1]
+    check(k1.count(0.5) == k0.count(0.5) - 1 and len(k1) == len(k0),
+          f"Split knot v = 0.5: knots {k0} -> {k1}")
+    s.menu("Surface", "Convert to", "Bezier")
+    s.rect("convert/convert")
+    ctx.shot(s, "convert-question")
+    s.click_named("convert/convert")
+    r = s.wait_for("the Bezier pieces", lambda r: r["objects"] > 2)
+    check(r["undo"].startswith("Convert vase from NURBS to Bezier"), f"undo says {r['undo']!r}")
+    pieces = [o for o in s.save()["objects"] if o["name"].startswith("vase.")]
+    check(len(pieces) == r["objects"] - 1 and all(o["surface"]["type"] == "bezier" for o in pieces),
+          f"{len(pieces)} Bezier pieces for {r['objects']} objects")
+    s.key("ctrl+z")
+    s.wait_for("Ctrl+Z: the vase again", lambda r: r["objects"] == 2)
+
+
+def fit_panel_least_squares(s, ctx):
+    """Curve > Fit curve to points: clicks on the Fit canvas are data points; Least squares
+    reports its distances; Add to scene adds the fitted curve (one undo step)."""
+    s.menu("Curve", "Fit curve to points...")
+    x, y, w, h = s.rect("fit/canvas")
+    heights = [0.5, 0.3, 0.25, 0.4, 0.65, 0.7, 0.55, 0.35, 0.3, 0.45]
+    for k, fy in enumerate(heights):
+        s.click(x + w * (0.1 + 0.8 * k / (len(heights) - 1)), y + h * fy)
+    s.wait_for("ten data points", lambda r: "fit/point/9" in r["rects"])
+    s.wait_for("the interpolating fit", lambda r: r["facts"].get("fit/max_error", 1) < 1e-9)
+    s.click_named("fit/method/approximate")
+    r = s.wait_for("the least-squares fit", lambda r: r["facts"].get("fit/rms_error", 0) > 0)
+    ctx.shot(s, "fit-least-squares")
+    check(r["facts"]["fit/max_error"] >= r["facts"]["fit/rms_error"],
+          f"max {r['facts']['fit/max_error']} below RMS {r['facts']['fit/rms_error']}")
+    objects = r["objects"]
+    s.click_named("fit/add")
+    s.wait_for("the fitted curve", lambda r: r["objects"] == objects + 1)
+    curve = by_name(s.save(), "fitted curve 1")
+    check(len(curve["curve"]["points"]) == 6, f"{len(curve['curve']['points'])} control points")
+
+
 SCENARIOS = [
     ("window_fits", "fig3b-weight-5.json", window_fits_the_screen),
     ("window_size", "fig3b-weight-5.json", window_size_is_remembered),
@@ -324,6 +370,8 @@ SCENARIOS = [
     ("fig6_c1", "fig3b-weight-5.json", fig6_split_sequence_keeps_c1),
     ("recording", "fig3b-weight-5.json", recording_replays_to_the_same_scene),
     ("lesson", "fig3b-weight-5.json", lesson_steps_from_pause_to_pause),
+    ("toolbox", "fig8-revolution.json", toolbox_split_knot_then_convert),
+    ("fit_panel", "fig3b-weight-5.json", fit_panel_least_squares),
 ]
 
 

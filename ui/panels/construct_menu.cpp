@@ -10,25 +10,17 @@
 #include "core/doc/commands_curve.hpp"
 #include "core/doc/curve_constructions.hpp"
 #include "ui/actions.hpp"
+#include "ui/panels/fit_panel.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/theme.hpp"
 #include "ui/ui_report.hpp"
+#include "ui/view/doc_access.hpp"
 
 namespace isoparm::ui {
 
 namespace {
 
 constexpr int make_compatible_kind = 8; // after the doc::Construction values
-
-// A name not yet used by an object: "curve 3".
-std::string fresh_name(const doc::Document& d, const std::string& base) {
-    for (int n = 1;; ++n) {
-        const std::string name = base + " " + std::to_string(n);
-        if (std::none_of(d.objects.begin(), d.objects.end(),
-                         [&](const doc::Object& o) { return o.name == name; }))
-            return name;
-    }
-}
 
 void add_and_select(AppContext& ctx, geom::Expected<doc::Object> o, const char* what) {
     if (!o) {
@@ -83,6 +75,8 @@ void curve_menu(AppContext& ctx) {
             ctx,
             doc::circle_object(fresh_name(ctx.doc, "circle"), doc::CurvePlane::xy, {0, 0, 0}, 1),
             "circle");
+    ImGui::Separator();
+    if (menu_item("Fit curve to points...", nullptr, ctx.ui.fit.open)) open_fit_panel(ctx);
     ImGui::Separator();
     const doc::Object* sel = ctx.doc.selected();
     if (sel && sel->curve_object()) {

@@ -12,6 +12,7 @@
 #include "core/doc/placement.hpp"
 #include "ui/actions.hpp"
 #include "ui/panels/enum_combo.hpp"
+#include "ui/panels/fit_panel.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/recovery.hpp"
 #include "ui/theme.hpp"
@@ -138,10 +139,12 @@ void file_dialog(AppContext& ctx) {
     }
     const bool recording = fd.mode == FileDialog::Mode::save_recording;
     const bool lesson = fd.mode == FileDialog::Mode::open_lesson;
+    const bool points = fd.mode == FileDialog::Mode::load_points;
     const bool saving = fd.mode == FileDialog::Mode::save || recording;
     const char* title = recording ? "Save recording as script"
                         : saving  ? "Save scene as"
                         : lesson  ? "Open lesson (a script)"
+                        : points  ? "Load data points (CSV or XYZ)"
                                   : "Open scene";
     if (fd.just_opened) {
         ImGui::OpenPopup(title);
@@ -219,6 +222,9 @@ void file_dialog(AppContext& ctx) {
         } else if (lesson) {
             close = true;
             request_open_lesson(ctx, target.string());
+        } else if (points) {
+            // A file that is not points keeps the dialog open with the line at fault.
+            close = load_fit_points(ctx, target.string(), fd.error);
         } else {
             close = true;
             open_file(ctx, target.string());

@@ -9,6 +9,7 @@
 
 #include "core/doc/commands.hpp"
 #include "ui/actions.hpp"
+#include "ui/panels/fit_panel.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/surface_actions.hpp"
 #include "ui/theme.hpp"
@@ -140,6 +141,10 @@ namespace {
 void surface_menu(AppContext& ctx) {
     if (!begin_menu("Surface")) return;
     if (menu_item("New Surface...", "Ctrl+Shift+N")) ctx.ui.new_surface.open = true;
+    if (menu_item("Fit surface to a grid of points...")) {
+        open_fit_panel(ctx);
+        request_load_points_dialog(ctx);
+    }
     if (menu_item("New implicit surface")) {
         // A sphere to start from; the implicit panel's presets and fields shape it.
         doc::Object o;

@@ -9,6 +9,15 @@
 
 namespace isoparm::ui {
 
+std::string fresh_name(const doc::Document& d, const std::string& base) {
+    for (int n = 1;; ++n) {
+        const std::string name = base + " " + std::to_string(n);
+        if (std::none_of(d.objects.begin(), d.objects.end(),
+                         [&](const doc::Object& o) { return o.name == name; }))
+            return name;
+    }
+}
+
 const geom::Surface* current_surface(const doc::Document& d, const doc::Object** object) {
     const doc::Object* found = nullptr;
     if (const doc::Object* sel = d.selected(); sel && sel->surface()) found = sel;

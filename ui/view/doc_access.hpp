@@ -20,6 +20,9 @@ bool has_valid_point(const doc::Document& d);
 // object that no longer exists or a point out of range is dropped.
 void normalize_selection(doc::Document& d);
 
+// A name not yet used by an object: "curve 3" for base "curve".
+std::string fresh_name(const doc::Document& d, const std::string& base);
+
 // "P22" as the paper writes it; "P26,11" once an index has two digits; "P3" for curves
 // (j < 0). prefix: 'P', 'w', 'R'.
 std::string point_name(char prefix, int i, int j, const doc::Document& d);
