@@ -3,6 +3,7 @@
 #include "ui/toolbox_actions.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <imgui.h>
 
 #include "core/doc/commands.hpp"
@@ -46,8 +47,11 @@ std::string param_name(geom::Dir dir, bool curve) {
     return curve ? "t" : dir == geom::Dir::u ? "u" : "v";
 }
 
+// Four significant digits in a menu; the command gets the knot's exact value.
 std::string where(geom::Dir dir, bool curve, double t) {
-    return param_name(dir, curve) + " = " + geom::format_number(t);
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4g", t);
+    return param_name(dir, curve) + " = " + buf;
 }
 
 const char* direction_suffix(geom::Dir dir, bool curve) {

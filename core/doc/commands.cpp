@@ -268,6 +268,14 @@ public:
         old_weight_ = ref->weight();
         if (spec_.position) ref->position() = *spec_.position;
         if (spec_.weight) ref->weight() = *spec_.weight;
+        // A closed curve repeats its first p points at its end: the twin follows.
+        if (curve_) twin_ = closed_twin(**found);
+        if (twin_) {
+            auto twin = control_point(**found, *twin_, -1);
+            old_twin_ = {twin->position(), twin->weight()};
+            twin->position() = ref->position();
+            twin->weight() = ref->weight();
+        }
         // Subpatches: the neighbours follow so the borders stay closed / smooth.
         if (!curve_) neighbours_.follow(doc, spec_.id, spec_.i, spec_.j);
         return geom::Ok{};
@@ -280,6 +288,11 @@ public:
         auto ref = control_point(*obj, spec_.i, spec_.j);
         ref->position() = old_position_;
         ref->weight() = old_weight_;
+        if (twin_) {
+            auto twin = control_point(*obj, *twin_, -1);
+            twin->position() = old_twin_.first;
+            twin->weight() = old_twin_.second;
+        }
     }
 
     bool merge_with(const Command& next) override {
@@ -342,7 +355,20 @@ private:
         return ref;
     }
 
+    // The index of the point a closed curve repeats as point i (i < p: i + n; i >= n: i - n),
+    // or none.
+    std::optional<int> closed_twin(const Object& obj) const {
+        const CurveObject* c = obj.curve_object();
+        if (!c || c->knot_mode != CurveKnotMode::closed) return std::nullopt;
+        const int p = c->curve.degree, n = c->curve.count() - p;
+        if (spec_.i < p) return spec_.i + n;
+        if (spec_.i >= n) return spec_.i - n;
+        return std::nullopt;
+    }
+
     EditPointSpec spec_;
+    std::optional<int> twin_;
+    std::pair<glm::dvec3, double> old_twin_{glm::dvec3(0), 1.0};
     glm::dvec3 old_position_{0};
     double old_weight_ = 1;
     bool curve_ = false;

@@ -15,6 +15,7 @@
 #include "core/geom/interpolate.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/primitives.hpp"
+#include "core/geom/reshape.hpp"
 #include "core/geom/validate.hpp"
 
 namespace isoparm::doc {
@@ -33,6 +34,7 @@ const char* curve_plane_label(CurvePlane plane) {
 geom::Expected<geom::Knots> knots_for_mode(const geom::Curve& curve, CurveKnotMode mode) {
     const int n = curve.count(), p = curve.degree;
     if (mode == CurveKnotMode::custom) return curve.knots;
+    if (mode == CurveKnotMode::closed) return geom::close_periodic(curve).knots;
     if (p < 1 || n < p + 1)
         return make_error(ErrorCode::degree,
                           "a degree-" + std::to_string(p) + " curve needs at least " +
@@ -62,10 +64,40 @@ geom::Error custom_refusal(const Object& obj, const std::string& what) {
                       "/knot_mode");
 }
 
-// Recomputes the knots of c after its points or degree changed; a degenerate polygon is a
-// `geometry` error at `path` naming the curve.
+// The curve designer's polygon: a closed curve's points less the p it repeats at its end
+// (every other mode: the curve's own points). Edits change the polygon, then refresh_knots
+// closes it again.
+CurveObject unwrapped(const CurveObject& c) {
+    if (c.knot_mode != CurveKnotMode::closed) return c;
+    CurveObject out = c;
+    const auto n = static_cast<std::size_t>(std::max(c.curve.count() - c.curve.degree, 1));
+    out.curve.points.resize(n);
+    out.curve.weights.resize(n);
+    return out;
+}
+
+// A closed curve's repeated point is the same point of the polygon.
+int polygon_index(const CurveObject& c, int i) {
+    if (c.knot_mode != CurveKnotMode::closed) return i;
+    return i % std::max(c.curve.count() - c.curve.degree, 1);
+}
+
+// Recomputes the knots of c after its points or degree changed (a closed curve's polygon in
+// c is closed again); a degenerate polygon is a `geometry` error at `path` naming the curve.
 geom::Status refresh_knots(const Object& obj, CurveObject& c, const std::string& path) {
     geom::Curve& g = c.curve;
+    if (c.knot_mode == CurveKnotMode::closed) {
+        // A closed curve of degree p wraps p of its points: it needs at least p + 1.
+        if (g.degree < 1 || g.count() < g.degree + 1)
+            return make_error(ErrorCode::degree,
+                              "closed curve '" + obj.name + "' of degree " +
+                                  std::to_string(g.degree) + " needs at least " +
+                                  std::to_string(g.degree + 1) + " control points, got " +
+                                  std::to_string(g.count()),
+                              path);
+        g = geom::close_periodic(g);
+        return geom::Ok{};
+    }
     if (geom::is_bezier(g.type)) { // the Bezier rule: one span, degree = count - 1
         const double a = g.knots.empty() ? 0.0 : g.knots.front();
         const double b = g.knots.empty() ? 1.0 : g.knots.back();
@@ -205,6 +237,15 @@ geom::Expected<Object> new_curve_object(std::string name, CurvePlane plane,
     c.degree = degree;
     c.points = std::move(points);
     c.weights.assign(c.points.size(), 1.0);
+    if (mode == CurveKnotMode::closed) {
+        if (n < degree + 1)
+            return make_error(ErrorCode::degree,
+                              "a closed curve of degree " + std::to_string(degree) +
+                                  " needs at least " + std::to_string(degree + 1) +
+                                  " control points, got " + std::to_string(n),
+                              "/degree");
+        return curve_object(std::move(name), plane, geom::close_periodic(c), mode);
+    }
     auto knots = knots_for_mode(c, mode);
     if (!knots) return knots.error();
     c.knots = std::move(knots).value();
@@ -245,7 +286,8 @@ geom::Expected<Object> circle_object(std::string name, CurvePlane plane, const g
 
 std::unique_ptr<Command> insert_curve_point(std::uint64_t id, int i, glm::dvec3 position) {
     auto edit = [i, position](const Object& obj,
-                              const CurveObject& c) -> geom::Expected<CurveObject> {
+                              const CurveObject& whole) -> geom::Expected<CurveObject> {
+        const CurveObject c = unwrapped(whole);
         const int n = c.curve.count();
         if (auto st = check_index(i, n, "the new point's index"); !st) return st.error();
         if (auto st = check_finite(position); !st) return st.error();
@@ -269,13 +311,14 @@ std::unique_ptr<Command> insert_curve_point(std::uint64_t id, int i, glm::dvec3 
 }
 
 std::unique_ptr<Command> delete_curve_point(std::uint64_t id, int i) {
-    auto edit = [i](const Object& obj, const CurveObject& c) -> geom::Expected<CurveObject> {
-        const int n = c.curve.count();
-        if (i < 0 || i >= n)
+    auto edit = [i](const Object& obj, const CurveObject& whole) -> geom::Expected<CurveObject> {
+        if (i < 0 || i >= whole.curve.count())
             return make_error(ErrorCode::schema,
                               "control point index " + std::to_string(i) + " is outside 0.." +
-                                  std::to_string(n - 1),
+                                  std::to_string(whole.curve.count() - 1),
                               "/i");
+        const CurveObject c = unwrapped(whole);
+        const int n = c.curve.count();
         const bool bezier = geom::is_bezier(c.curve.type);
         const int need = bezier ? 2 : std::max(2, c.curve.degree + 1);
         if (n - 1 < need)
@@ -290,8 +333,9 @@ std::unique_ptr<Command> delete_curve_point(std::uint64_t id, int i) {
         if (!bezier && c.knot_mode == CurveKnotMode::custom)
             return custom_refusal(obj, "deleting a control point");
         CurveObject out = c;
-        out.curve.points.erase(out.curve.points.begin() + i);
-        out.curve.weights.erase(out.curve.weights.begin() + i);
+        const int at = polygon_index(whole, i);
+        out.curve.points.erase(out.curve.points.begin() + at);
+        out.curve.weights.erase(out.curve.weights.begin() + at);
         if (auto st = refresh_knots(obj, out, "/i"); !st) return st.error();
         return out;
     };
@@ -316,6 +360,13 @@ std::unique_ptr<Command> move_curve_point(std::uint64_t id, int i, glm::dvec3 po
                                   std::to_string(n - 1),
                               "/i");
         if (auto st = check_finite(position); !st) return st.error();
+        if (c.knot_mode == CurveKnotMode::closed) {
+            // The polygon's point moves, and its repeat with it.
+            CurveObject out = unwrapped(c);
+            out.curve.points[static_cast<std::size_t>(polygon_index(c, i))] = position;
+            if (auto st = refresh_knots(obj, out, "/position"); !st) return st.error();
+            return out;
+        }
         CurveObject out = c;
         out.curve.points[static_cast<std::size_t>(i)] = position;
         // Only the polygon-dependent modes follow a drag: clamped uniform knots do not depend
@@ -330,10 +381,12 @@ std::unique_ptr<Command> move_curve_point(std::uint64_t id, int i, glm::dvec3 po
 }
 
 std::unique_ptr<Command> set_curve_degree(std::uint64_t id, int degree) {
-    auto edit = [degree](const Object& obj, const CurveObject& c) -> geom::Expected<CurveObject> {
+    auto edit = [degree](const Object& obj,
+                         const CurveObject& whole) -> geom::Expected<CurveObject> {
+        const CurveObject c = unwrapped(whole);
         const int n = c.curve.count();
         if (geom::is_bezier(c.curve.type)) {
-            if (degree == c.curve.degree) return c;
+            if (degree == c.curve.degree) return whole;
             return make_error(
                 ErrorCode::degree,
                 "curve '" + obj.name + "' is a " + geom::spline_type_name(c.curve.type) +
@@ -359,10 +412,22 @@ std::unique_ptr<Command> set_curve_degree(std::uint64_t id, int degree) {
 }
 
 std::unique_ptr<Command> set_curve_knot_mode(std::uint64_t id, CurveKnotMode mode) {
-    auto edit = [mode](const Object& obj, const CurveObject& c) -> geom::Expected<CurveObject> {
+    auto edit = [mode](const Object& obj, const CurveObject& whole) -> geom::Expected<CurveObject> {
+        // Custom keeps the curve as it is (a closed one stays closed, its knots now the user's);
+        // every other mode starts from the polygon.
+        if (mode == CurveKnotMode::custom) {
+            CurveObject out = whole;
+            out.knot_mode = mode;
+            return out;
+        }
+        const CurveObject c = unwrapped(whole);
         CurveObject out = c;
         out.knot_mode = mode;
-        if (mode != CurveKnotMode::custom) {
+        if (mode == CurveKnotMode::closed) {
+            if (auto st = refresh_knots(obj, out, "/knot_mode"); !st) return st.error();
+            return out;
+        }
+        {
             auto k = knots_for_mode(c.curve, mode);
             if (!k) {
                 geom::Error e = k.error();

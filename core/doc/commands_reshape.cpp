@@ -66,18 +66,6 @@ geom::Error essential(bool curve, Dir dir, double t, double tolerance,
 // A tolerance with no bound, for "how far would it move" (the geometry refuses infinity).
 constexpr double no_bound = 1e300;
 
-// Closed the way close_periodic closes: uniform unclamped knots (k - p) / n and the last p
-// control points repeating the first p.
-bool is_closed_periodic(const geom::Curve& c) {
-    const int p = c.degree, n = c.count() - p;
-    if (n < 1 || static_cast<int>(c.knots.size()) != n + 2 * p + 1) return false;
-    for (int k = 0; k <= n + 2 * p; ++k)
-        if (c.knots[k] != static_cast<double>(k - p) / n) return false;
-    for (int i = 0; i < p; ++i)
-        if (c.points[i] != c.points[n + i] || c.weights[i] != c.weights[n + i]) return false;
-    return true;
-}
-
 } // namespace
 
 std::unique_ptr<Command> remove_knot(std::uint64_t id, Dir dir, double t, int times,
@@ -177,6 +165,7 @@ std::unique_ptr<Command> close_object(std::uint64_t id, Dir dir) {
     Refinement r;
     r.dir = dir;
     r.what = "closing";
+    r.curve_mode = CurveKnotMode::closed;
     auto already = [dir](bool curve) {
         return make_error(ErrorCode::schema,
                           std::string(curve ? "the curve" : "the surface") + " is already closed" +
@@ -187,12 +176,12 @@ std::unique_ptr<Command> close_object(std::uint64_t id, Dir dir) {
         const int across = s.count(dir == Dir::u ? Dir::v : Dir::u);
         bool closed = true;
         for (int k = 0; k < across && closed; ++k)
-            closed = is_closed_periodic(geom::surface_line(s, dir, k));
+            closed = geom::is_closed_periodic(geom::surface_line(s, dir, k));
         if (closed) return already(false);
         return geom::close_periodic(s, dir);
     };
     r.curve = [=](const geom::Curve& c) -> geom::Expected<geom::Curve> {
-        if (is_closed_periodic(c)) return already(true);
+        if (geom::is_closed_periodic(c)) return already(true);
         return geom::close_periodic(c);
     };
     r.label = [=](const Shape& before, const Shape&) {

@@ -31,12 +31,15 @@ constexpr std::span<const geom::EnumName<CurvePlane>> enum_names(CurvePlane) {
 // the degree changes (docs/constructions.md): clamped uniform, averaged from the chord /
 // centripetal parameters of the control polygon (Piegl & Tiller eq. 9.8), or custom: the
 // user's own knots, kept as they are and dragged with set_knot.
-enum class CurveKnotMode { clamped_uniform, chord, centripetal, custom };
+// closed: DesignMentor's third mode, the periodic curve of the polygon (geom::close_periodic):
+// the stored curve holds the polygon's n points and then its first p again.
+enum class CurveKnotMode { clamped_uniform, chord, centripetal, custom, closed };
 inline constexpr geom::EnumName<CurveKnotMode> curve_knot_mode_names[] = {
     {CurveKnotMode::clamped_uniform, "clamped_uniform", "clamped uniform"},
     {CurveKnotMode::chord, "chord", "chord length"},
     {CurveKnotMode::centripetal, "centripetal"},
     {CurveKnotMode::custom, "custom"},
+    {CurveKnotMode::closed, "closed", "closed (periodic)"},
 };
 static_assert(geom::in_declaration_order(curve_knot_mode_names));
 constexpr std::span<const geom::EnumName<CurveKnotMode>> enum_names(CurveKnotMode) {

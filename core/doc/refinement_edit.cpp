@@ -93,7 +93,8 @@ std::unique_ptr<Command> refinement_command(std::uint64_t id, CommandSpec spec, 
         auto refined = r.curve(c.curve);
         if (!refined) return refined.error();
         // The refined knots are the curve's own now (knot mode custom): no rule gives them.
-        return Shape{CurveObject{std::move(refined).value(), c.plane}};
+        // A curve closed by close_object stays closed under the designer's edits.
+        return Shape{CurveObject{std::move(refined).value(), c.plane, r.curve_mode}};
     };
     // A (rational) Bezier has no interior knots: one inserted makes it a B-spline (NURBS).
     // The label says so, so that the change of kind is never silent.

@@ -45,6 +45,9 @@ struct Refinement {
     const char* what = "";
     std::function<geom::Expected<geom::Surface>(const geom::Surface&)> surface;
     std::function<geom::Expected<geom::Curve>(const geom::Curve&)> curve;
+    // A curve's knot mode afterwards: custom (the refined knots are the curve's own) unless
+    // the edit says otherwise (closing a curve makes it closed).
+    CurveKnotMode curve_mode = CurveKnotMode::custom;
     // The history's label from the shapes before and after (a type change is appended).
     std::function<std::string(const Shape& before, const Shape& after)> label;
     // By default the control point with the nearest Greville abscissa.

@@ -82,6 +82,16 @@ Curve close_periodic(const Curve& c) {
     return out;
 }
 
+bool is_closed_periodic(const Curve& c) {
+    const int p = c.degree, n = c.count() - p;
+    if (n < 1 || static_cast<int>(c.knots.size()) != n + 2 * p + 1) return false;
+    for (int k = 0; k <= n + 2 * p; ++k)
+        if (c.knots[k] != static_cast<double>(k - p) / n) return false;
+    for (int i = 0; i < p; ++i)
+        if (c.points[i] != c.points[n + i] || c.weights[i] != c.weights[n + i]) return false;
+    return true;
+}
+
 Surface close_periodic(const Surface& s, Dir dir) {
     std::vector<Curve> lines;
     const int across = s.count(dir == Dir::u ? Dir::v : Dir::u);

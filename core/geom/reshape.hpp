@@ -17,6 +17,9 @@ namespace isoparm::geom {
 Curve close_periodic(const Curve& c);
 // Each line along `dir` closed the same way.
 Surface close_periodic(const Surface& s, Dir dir);
+// Whether c is closed exactly as close_periodic closes: knots (k - p) / n for its n + p points
+// and the last p control points (and weights) equal to the first p.
+bool is_closed_periodic(const Curve& c);
 
 // DesignMentor's knot splitting: the control points stay and the first copy of `knot` (of
 // multiplicity m >= 2) moves to knot - delta, so `knot` keeps m - 1 copies and a simple knot

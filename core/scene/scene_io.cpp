@@ -1,6 +1,8 @@
 // Scenes <-> JSON values (docs/scene-format.md): strict reading with JSON Pointer errors.
 #include "core/scene/scene_io.hpp"
 
+#include "core/geom/reshape.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -9,6 +11,7 @@
 
 #include "core/doc/commands_common.hpp"
 #include "core/doc/patches.hpp"
+#include "core/geom/reshape.hpp"
 #include "core/json/fields.hpp"
 #include "core/json/out_of_memory.hpp"
 #include "core/json/reader.hpp"
@@ -201,8 +204,8 @@ Expected<Shape> read_shape(const json& j, const std::string& at, ObjectKind kind
             if (!m) return m.error();
             const std::optional<CurveKnotMode> mode_named = geom::parse_name<CurveKnotMode>(*m);
             if (!mode_named)
-                return schema_error("knot_mode must be clamped_uniform, chord, centripetal or "
-                                    "custom, got '" +
+                return schema_error("knot_mode must be clamped_uniform, chord, centripetal, "
+                                    "custom or closed, got '" +
                                         *m + "'",
                                     at + "/knot_mode");
             c.knot_mode = *mode_named;
@@ -210,6 +213,13 @@ Expected<Shape> read_shape(const json& j, const std::string& at, ObjectKind kind
         auto g = curve_from_json(*geometry);
         if (!g) return g.error().under(gat);
         c.curve = std::move(g).value();
+        // The designer edits a closed curve's polygon and closes it again: a curve that is not
+        // closed that way would lose its last p points at the first edit.
+        if (c.knot_mode == CurveKnotMode::closed && !geom::is_closed_periodic(c.curve))
+            return schema_error("knot_mode closed needs the curve closed as the curve designer "
+                                "closes it: knots (k - p) / n and the last p control points "
+                                "equal to the first p",
+                                at + "/knot_mode");
         shape = std::move(c);
     } else {
         auto f = implicit_from_json(*geometry, gat);

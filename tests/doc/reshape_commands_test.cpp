@@ -5,7 +5,9 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/doc/commands_curve.hpp"
 #include "core/geom/evaluate.hpp"
+#include "core/geom/reshape.hpp"
 #include "tests/doc/doc_fixtures.hpp"
 
 using namespace isoparm;
@@ -191,6 +193,61 @@ TEST(ConvertCommand, WhatIsLostIsSaidBeforehand) {
     EXPECT_NE(pieces->text.find("4 Bezier pieces"), std::string::npos) << pieces->text;
     EXPECT_FALSE(conversion_losses(*doc.find(ball_id), geom::SplineType::nurbs).ok());
     expect_undo_redo_exact(doc, convert_object(grid_id, geom::SplineType::nurbs));
+}
+
+} // namespace
+
+namespace {
+
+// The curve designer's closed knot mode: the polygon is edited, the curve stays closed.
+const CurveObject& curve_object_of_id(const Document& doc, std::uint64_t id) {
+    return *doc.find(id)->curve_object();
+}
+
+TEST(ClosedKnotMode, EditsKeepTheCurveClosed) {
+    Document doc = sample_document();
+    const int n = curve_of(doc, curve_id).count();
+    Document closed =
+        expect_undo_redo_exact(doc, set_curve_knot_mode(curve_id, CurveKnotMode::closed));
+    const geom::Curve& c = curve_of(closed, curve_id);
+    const int p = c.degree;
+    ASSERT_EQ(c.count(), n + p);
+    EXPECT_TRUE(geom::is_closed_periodic(c));
+    // Moving a repeated point moves its twin, whichever of the two is dragged.
+    Document moved = expect_undo_redo_exact(doc, move_curve_point(curve_id, n + 1, {9, 9, 0}));
+    EXPECT_EQ(curve_of(moved, curve_id).points[1], glm::dvec3(9, 9, 0));
+    EXPECT_TRUE(geom::is_closed_periodic(curve_of(moved, curve_id)));
+    Document weighted = expect_undo_redo_exact(doc, set_weight(curve_id, 0, -1, 3.0));
+    EXPECT_EQ(curve_of(weighted, curve_id).weights[static_cast<std::size_t>(n)], 3.0);
+    EXPECT_TRUE(geom::is_closed_periodic(curve_of(weighted, curve_id)));
+    Document inserted = expect_undo_redo_exact(doc, insert_curve_point(curve_id, 2, {1.5, 3, 0}));
+    EXPECT_EQ(curve_of(inserted, curve_id).count(), n + 1 + p);
+    EXPECT_TRUE(geom::is_closed_periodic(curve_of(inserted, curve_id)));
+    Document deleted = expect_undo_redo_exact(doc, delete_curve_point(curve_id, 1));
+    EXPECT_EQ(curve_of(deleted, curve_id).count(), n + 1 - 1 + p);
+    EXPECT_TRUE(geom::is_closed_periodic(curve_of(deleted, curve_id)));
+    Document lower = expect_undo_redo_exact(doc, set_curve_degree(curve_id, 2));
+    EXPECT_EQ(curve_of(lower, curve_id).count(), n + 2);
+    EXPECT_TRUE(geom::is_closed_periodic(curve_of(lower, curve_id)));
+    // Back to an open mode: the polygon alone, clamped.
+    Document open =
+        expect_undo_redo_exact(doc, set_curve_knot_mode(curve_id, CurveKnotMode::clamped_uniform));
+    EXPECT_EQ(curve_of(open, curve_id).count(), n);
+    EXPECT_EQ(curve_object_of_id(open, curve_id).knot_mode, CurveKnotMode::clamped_uniform);
+}
+
+TEST(ClosedKnotMode, CloseLeavesTheCurveClosedForTheDesigner) {
+    Document doc = sample_document();
+    const Document after = expect_undo_redo_exact(doc, close_object(curve_id, Dir::u));
+    EXPECT_EQ(curve_object_of_id(after, curve_id).knot_mode, CurveKnotMode::closed);
+    auto made =
+        new_curve_object("loop", CurvePlane::xy, {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, 3,
+                         CurveKnotMode::closed);
+    ASSERT_TRUE(made.ok()) << made.error().message;
+    EXPECT_TRUE(geom::is_closed_periodic(made->curve_object()->curve));
+    auto short_loop = new_curve_object("loop", CurvePlane::xy, {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}}, 3,
+                                       CurveKnotMode::closed);
+    ASSERT_FALSE(short_loop.ok());
 }
 
 } // namespace

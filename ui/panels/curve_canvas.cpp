@@ -234,13 +234,22 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const doc::CurveObjec
     // Control points, labelled P0..Pn while the labels stay readable.
     const int sel = ctx.doc.view.selection.object == id ? ctx.doc.view.selection.i : -1;
     const ImU32 text_col = ImGui::GetColorU32(ImGuiCol_Text);
+    // A closed curve repeats its first p points at its end: one label says both names.
+    const bool closed = cur->knot_mode == doc::CurveKnotMode::closed;
+    const int own = closed ? g.count() - g.degree : g.count();
+    auto name = [&](int i) {
+        const int first = closed ? i % own : i;
+        std::string s = "P" + std::to_string(first);
+        if (closed && first < g.degree) s += "=P" + std::to_string(first + own);
+        return s;
+    };
     for (int i = 0; i < g.count(); ++i) {
         const ImVec2 q = px(g.points[static_cast<std::size_t>(i)]);
-        if (i == sel) continue;
+        if (i == sel || (closed && i >= own && sel == i - own)) continue;
         dl->AddCircleFilled(q, 4 * k, rgba(col.control_points), 12);
-        if (g.count() <= 40)
+        if (g.count() <= 40 && i < own)
             dl->AddText(ImVec2(q.x + 5 * k, q.y - ImGui::GetTextLineHeight() - 1 * k), text_col,
-                        ("P" + std::to_string(i)).c_str());
+                        name(i).c_str());
     }
     if (sel >= 0 && sel < g.count()) {
         const ImVec2 q = px(g.points[static_cast<std::size_t>(sel)]);
@@ -250,7 +259,7 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const doc::CurveObjec
                                                     : IM_COL32(0, 0, 0, 255),
                       20, 1.5f * k);
         dl->AddText(ImVec2(q.x + 7 * k, q.y - ImGui::GetTextLineHeight() - 2 * k), text_col,
-                    ("P" + std::to_string(sel)).c_str());
+                    name(sel).c_str());
     }
     // De Boor's construction at the trace parameter, on top: every level's polygon.
     if (cd.trace) {
