@@ -1,5 +1,5 @@
 // `isoparm export SCENE -o FILE [--object NAME|ID] [--samples N] [--mesh]`: a scene's objects
-// as an IGES, STEP, OBJ, STL or PLY file, the format chosen by FILE's extension
+// as an IGES, STEP, OBJ, STL, PLY or glTF binary file, the format chosen by FILE's extension
 // (core/scene/export_document.hpp). Exit status: 0 written; 2 bad input (options, scene, an
 // object that cannot be written in that format), nothing written; 1 the file could not be
 // written (the old file, if any, is intact).
@@ -37,10 +37,11 @@ int run(const ExportCommandOptions& o) {
     };
     const auto format = scene::export_format_for(o.output, o.mesh);
     if (!format)
-        return fail(o.mesh ? "--mesh asks for a mesh: name the output .obj, .stl or .ply, not '" +
-                                 o.output + "'"
-                           : "cannot tell the format of '" + o.output + "' from its extension (" +
-                                 scene::export_extensions + "; .obj --mesh for an OBJ mesh)");
+        return fail(
+            o.mesh ? "--mesh asks for a mesh: name the output .obj, .stl, .ply or .glb, not '" +
+                         o.output + "'"
+                   : "cannot tell the format of '" + o.output + "' from its extension (" +
+                         scene::export_extensions + "; .obj --mesh for an OBJ mesh)");
     if (geom::Status st = scene::check_output_path(o.output); !st) return fail(st.error().message);
     if (geom::Status st = scene::check_output_is_not_input(o.output, {o.scene}); !st)
         return fail(st.error().message);
@@ -69,13 +70,13 @@ int run(const ExportCommandOptions& o) {
 
 Action register_export_command(CLI::App& app) {
     CLI::App* sub = app.add_subcommand(
-        "export", "Write a scene's objects as IGES, STEP, OBJ, STL or PLY (format from -o's "
+        "export", "Write a scene's objects as IGES, STEP, OBJ, STL, PLY or glTF (format from -o's "
                   "extension)");
     auto o = std::make_shared<ExportCommandOptions>();
     sub->add_option("SCENE", o->scene, "scene file")->required();
     sub->add_option("-o,--output", o->output,
                     "the file to write: .igs/.iges, .stp/.step, .obj (exact free-form; with "
-                    "--mesh triangles), .stl (binary), .ply")
+                    "--mesh triangles), .stl (binary), .ply, .glb (glTF 2.0 binary)")
         ->required();
     sub->add_option("--object", o->object,
                     "the object to write, by id or name (default: every visible object)");

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <charconv>
 
+#include "core/exchange/glb_writer.hpp"
 #include "core/exchange/iges_writer.hpp"
 #include "core/exchange/mesh_weld.hpp"
 #include "core/exchange/obj_writer.hpp"
@@ -58,7 +59,7 @@ geom::Expected<ExportResult> exact(const std::vector<const doc::Object*>& object
         if (o->implicit()) {
             r.skipped.push_back(label(*o) +
                                 ": an implicit surface has no exact form (export a mesh: STL, "
-                                "PLY or OBJ mesh)");
+                                "PLY, glTF or OBJ mesh)");
             continue;
         }
         exchange::ExactShape shape =
@@ -89,7 +90,7 @@ geom::Expected<ExportResult> exact(const std::vector<const doc::Object*>& object
 
 } // namespace
 
-const char* const export_extensions = ".igs/.iges, .stp/.step, .obj, .stl, .ply";
+const char* const export_extensions = ".igs/.iges, .stp/.step, .obj, .stl, .ply, .glb";
 
 std::optional<ExportFormat> export_format_for(const std::string& path, bool mesh) {
     const auto dot = path.find_last_of('.');
@@ -100,6 +101,7 @@ std::optional<ExportFormat> export_format_for(const std::string& path, bool mesh
     if (ext == ".obj") return mesh ? ExportFormat::obj_mesh : ExportFormat::obj;
     if (ext == ".stl") return ExportFormat::stl;
     if (ext == ".ply") return ExportFormat::ply;
+    if (ext == ".glb") return ExportFormat::glb;
     if (mesh) return std::nullopt;
     if (ext == ".igs" || ext == ".iges") return ExportFormat::iges;
     if (ext == ".stp" || ext == ".step") return ExportFormat::step;
@@ -107,7 +109,8 @@ std::optional<ExportFormat> export_format_for(const std::string& path, bool mesh
 }
 
 bool is_mesh_format(ExportFormat f) {
-    return f == ExportFormat::obj_mesh || f == ExportFormat::stl || f == ExportFormat::ply;
+    return f == ExportFormat::obj_mesh || f == ExportFormat::stl || f == ExportFormat::ply ||
+           f == ExportFormat::glb;
 }
 
 const char* export_format_label(ExportFormat f) {
@@ -124,6 +127,8 @@ const char* export_format_label(ExportFormat f) {
         return "binary STL";
     case ExportFormat::ply:
         return "PLY";
+    case ExportFormat::glb:
+        return "glTF binary";
     }
     return "?";
 }
@@ -198,6 +203,11 @@ geom::Expected<ExportResult> export_document(const std::vector<const doc::Object
     if (options.format == ExportFormat::ply) r.bytes = exchange::ply_text(meshes);
     if (options.format == ExportFormat::stl)
         r.bytes = exchange::stl_binary_bytes(meshes, options.name);
+    if (options.format == ExportFormat::glb) {
+        auto bytes = exchange::glb_bytes(meshes, options.name);
+        if (!bytes) return bytes.error();
+        r.bytes = std::move(*bytes);
+    }
     return r;
 }
 

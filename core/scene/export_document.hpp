@@ -20,15 +20,16 @@ enum class ExportFormat {
     obj_mesh, // .obj with mesh = true: triangles with normals
     stl,      // .stl: binary STL
     ply,      // .ply: ASCII PLY with normals
+    glb,      // .glb: glTF 2.0 binary
 };
 
 // The format a file name asks for, from its extension (any case); `mesh` turns .obj into an
 // OBJ mesh and is refused with the exact-only extensions. nullopt for an unknown extension.
 std::optional<ExportFormat> export_format_for(const std::string& path, bool mesh);
 bool is_mesh_format(ExportFormat f);
-// "IGES", "STEP", "OBJ free-form", "OBJ mesh", "binary STL", "PLY".
+// "IGES", "STEP", "OBJ free-form", "OBJ mesh", "binary STL", "PLY", "glTF binary".
 const char* export_format_label(ExportFormat f);
-// The extensions, for messages: ".igs/.iges, .stp/.step, .obj, .stl, .ply".
+// The extensions, for messages: ".igs/.iges, .stp/.step, .obj, .stl, .ply, .glb".
 extern const char* const export_extensions;
 
 // The objects to export: every visible object when `which` is empty, else the one object whose
