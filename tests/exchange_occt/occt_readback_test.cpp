@@ -113,14 +113,9 @@ double curve_deviation(const geom::Curve& c, const std::vector<Piece>& pieces) {
     return worst / size_of(c);
 }
 
-// Writes the surfaces in `f`, reads them back and compares face k with surface k.
-void expect_surfaces_read_back(Format f, const std::vector<geom::Surface>& surfaces,
-                               const std::string& what) {
-    if (surfaces.empty()) return;
-    test::TempDir dir("isoparm-occt");
-    const std::vector<ExactShape> shapes(surfaces.begin(), surfaces.end());
-    const TopoDS_Shape shape = read_back(f, write(dir, f, shapes));
-    ASSERT_FALSE(shape.IsNull()) << format_name(f) << " " << what << ": nothing read";
+// Face k of `shape` against surface k.
+void expect_faces(Format f, const TopoDS_Shape& shape, const std::vector<geom::Surface>& surfaces,
+                  const std::string& what) {
     std::size_t k = 0;
     for (TopExp_Explorer e(shape, TopAbs_FACE); e.More(); e.Next(), ++k) {
         ASSERT_LT(k, surfaces.size()) << format_name(f) << " " << what << ": too many faces";
@@ -135,18 +130,14 @@ void expect_surfaces_read_back(Format f, const std::vector<geom::Surface>& surfa
     EXPECT_EQ(k, surfaces.size()) << format_name(f) << " " << what << ": faces read";
 }
 
-void expect_curves_read_back(Format f, const std::vector<geom::Curve>& curves,
-                             const std::string& what) {
-    if (curves.empty()) return;
-    test::TempDir dir("isoparm-occt");
-    const std::vector<ExactShape> shapes(curves.begin(), curves.end());
-    const TopoDS_Shape shape = read_back(f, write(dir, f, shapes));
-    ASSERT_FALSE(shape.IsNull()) << format_name(f) << " " << what << ": nothing read";
+// The edges outside every face (the curves) against the curves, in order.
+void expect_free_edges(Format f, const TopoDS_Shape& shape, const std::vector<geom::Curve>& curves,
+                       const std::string& what) {
     // OCCT's IGES reader splits a curve that is only C0 at some knot into C1 pieces
     // (read.iges.bspline.continuity = 1, its default), keeping the parameters: curve k is the
     // run of edges that reaches the end of its domain.
     std::vector<Piece> edges;
-    for (TopExp_Explorer e(shape, TopAbs_EDGE); e.More(); e.Next()) {
+    for (TopExp_Explorer e(shape, TopAbs_EDGE, TopAbs_FACE); e.More(); e.Next()) {
         Piece p;
         p.curve = BRep_Tool::Curve(TopoDS::Edge(e.Current()), p.first, p.last);
         ASSERT_FALSE(p.curve.IsNull());
@@ -168,6 +159,30 @@ void expect_curves_read_back(Format f, const std::vector<geom::Curve>& curves,
             << " edges)";
     }
     EXPECT_EQ(next, edges.size()) << format_name(f) << " " << what << ": edges left over";
+}
+
+// One file with the surfaces and then the curves (as `isoparm export` writes a scene), read
+// back: faces in order, then the free edges in order.
+void expect_read_back(Format f, const std::vector<geom::Surface>& surfaces,
+                      const std::vector<geom::Curve>& curves, const std::string& what) {
+    if (surfaces.empty() && curves.empty()) return;
+    test::TempDir dir("isoparm-occt");
+    std::vector<ExactShape> shapes(surfaces.begin(), surfaces.end());
+    shapes.insert(shapes.end(), curves.begin(), curves.end());
+    const TopoDS_Shape shape = read_back(f, write(dir, f, shapes));
+    ASSERT_FALSE(shape.IsNull()) << format_name(f) << " " << what << ": nothing read";
+    expect_faces(f, shape, surfaces, what);
+    expect_free_edges(f, shape, curves, what);
+}
+
+void expect_surfaces_read_back(Format f, const std::vector<geom::Surface>& surfaces,
+                               const std::string& what) {
+    expect_read_back(f, surfaces, {}, what);
+}
+
+void expect_curves_read_back(Format f, const std::vector<geom::Curve>& curves,
+                             const std::string& what) {
+    expect_read_back(f, {}, curves, what);
 }
 
 TEST(OcctReadBack, EverySceneInTheGallery) {
@@ -197,6 +212,8 @@ TEST(OcctReadBack, EverySceneInTheGallery) {
         }
         surfaces_seen += static_cast<int>(surfaces.size());
         for (Format f : {Format::iges, Format::step}) {
+            // The whole scene in one file, and the surfaces and curves on their own.
+            expect_read_back(f, surfaces, curves, file.filename().string());
             expect_surfaces_read_back(f, surfaces, file.filename().string());
             expect_curves_read_back(f, curves, file.filename().string());
         }
@@ -219,6 +236,7 @@ TEST(OcctReadBack, RandomRationalSurfacesAndCurves) {
         // One file each, and one surface per file (so no reader shares anything between them).
         expect_surfaces_read_back(f, surfaces, "random surfaces");
         expect_curves_read_back(f, curves, "random curves");
+        expect_read_back(f, surfaces, curves, "random surfaces and curves");
         for (std::size_t k = 0; k < surfaces.size(); ++k)
             expect_surfaces_read_back(f, {surfaces[k]}, "random surface " + std::to_string(k));
     }
