@@ -1,4 +1,5 @@
-// Entry point of `isoparm`: dispatches to the workstation, `render`, `script` or `geom`.
+// Entry point of `isoparm`: dispatches to the workstation, `render`, `script`, `geom` or
+// `export`.
 #include <CLI/CLI.hpp>
 #include <iostream>
 
@@ -12,6 +13,7 @@ int main(int argc, char** argv) {
     CLI::App app{"isoparm: an interactive workstation for learning and designing NURBS surfaces"};
     app.set_version_flag("--version", "isoparm " ISOPARM_VERSION);
     const isoparm::app::Action geom = isoparm::app::register_geom_command(app);
+    const isoparm::app::Action export_scene = isoparm::app::register_export_command(app);
 #ifdef ISOPARM_HAVE_GUI
     const isoparm::app::Action render = isoparm::app::register_render_command(app);
     const isoparm::app::Action gui = isoparm::app::register_gui_command(app);
@@ -25,6 +27,7 @@ int main(int argc, char** argv) {
     }
     for (CLI::App* sub : app.get_subcommands()) {
         if (sub->get_name() == "geom") return geom();
+        if (sub->get_name() == "export") return export_scene();
 #ifdef ISOPARM_HAVE_GUI
         if (sub->get_name() == "render") return render();
         if (sub->get_name() == "examples") return examples();

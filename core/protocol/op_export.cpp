@@ -1,7 +1,8 @@
 // The `export` op (geom-protocol-2.md, Exchange): one object as the text of a file in an exact
-// format (iges, obj) or as a mesh (obj_mesh, stl_ascii, ply).
+// format (iges, step, obj) or as a mesh (obj_mesh, stl_ascii, ply).
 #include "core/exchange/iges_writer.hpp"
 #include "core/exchange/obj_writer.hpp"
+#include "core/exchange/step_writer.hpp"
 #include "core/geom/tessellate.hpp"
 #include "core/geom/triangle.hpp"
 #include "core/geom/work_budget.hpp"
@@ -103,12 +104,10 @@ OpResult op_export(const json& request) {
     const exchange::ExactShape shape = subject->is_surface ? exchange::ExactShape(subject->surface)
                                                            : exchange::ExactShape(subject->curve);
     if (*format == Format::obj) return text_answer(exchange::obj_freeform_text({shape}));
-    if (*format == Format::step)
-        return geom::make_error(geom::ErrorCode::schema,
-                                "STEP export is not available yet: use iges or obj", "/format");
-    Expected<std::string> iges = exchange::iges_text({shape}, "isoparm");
-    if (!iges) return iges.error().under(member);
-    return text_answer(std::move(iges).value());
+    Expected<std::string> text = *format == Format::step ? exchange::step_text({shape}, "isoparm")
+                                                         : exchange::iges_text({shape}, "isoparm");
+    if (!text) return text.error().under(member);
+    return text_answer(std::move(text).value());
 }
 
 } // namespace isoparm::protocol
