@@ -61,28 +61,39 @@ geom::Expected<Fit> fit_curve(const std::vector<glm::dvec3>& points, const FitSe
 
 geom::Expected<Fit> fit_grid(const std::vector<glm::dvec3>& grid, int rows, int columns,
                              const FitSettings& settings, const std::string& name) {
-    if (settings.method != FitMethod::interpolate)
-        return geom::make_error(geom::ErrorCode::schema,
-                                "a grid is interpolated (P&T A9.4); least squares fits curves",
-                                "/method");
-    auto r = geom::interpolate_surface(grid, rows, columns, settings.degree, settings.degree_v,
-                                       settings.parametrization);
-    if (!r) return r.error();
+    geom::Surface surface;
+    std::vector<double> u_params, v_params;
+    if (settings.method == FitMethod::interpolate) {
+        auto r = geom::interpolate_surface(grid, rows, columns, settings.degree, settings.degree_v,
+                                           settings.parametrization);
+        if (!r) return r.error();
+        surface = std::move(r->surface);
+        u_params = std::move(r->u_params);
+        v_params = std::move(r->v_params);
+    } else {
+        auto r =
+            geom::approximate_surface(grid, rows, columns, settings.degree, settings.degree_v,
+                                      settings.count, settings.count_v, settings.parametrization);
+        if (!r) return r.error();
+        surface = std::move(r->surface);
+        u_params = std::move(r->u_params);
+        v_params = std::move(r->v_params);
+    }
     Fit fit;
     std::vector<glm::dvec3> reached;
     for (int k = 0; k < rows; ++k)
         for (int l = 0; l < columns; ++l) {
-            const auto p = geom::surface_point(r->surface, r->u_params[k], r->v_params[l]);
+            const auto p = geom::surface_point(surface, u_params[k], v_params[l]);
             if (!p)
                 return geom::make_error(geom::ErrorCode::internal,
                                         "the fitted surface has no point at (u_k, v_l)");
             reached.push_back(*p);
         }
-    fit.params = r->u_params;
-    fit.params.insert(fit.params.end(), r->v_params.begin(), r->v_params.end());
+    fit.params = std::move(u_params);
+    fit.params.insert(fit.params.end(), v_params.begin(), v_params.end());
     measure(fit, grid, reached);
     fit.object.name = name;
-    fit.object.shape = SurfaceObject{std::move(r->surface)};
+    fit.object.shape = SurfaceObject{std::move(surface)};
     return fit;
 }
 

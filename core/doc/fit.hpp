@@ -27,6 +27,7 @@ struct FitSettings {
     int count = 6; // approximation: control points, degree + 1 .. number of points
     geom::Parametrization parametrization = geom::Parametrization::chord;
     int degree_v = 3; // a grid: the degree across the rows
+    int count_v = 6;  // a grid's least squares: control points along v (count is along u)
 };
 
 // The result and its distance to each data point: |C(t_k) - Q_k| (a grid: |S(u_k, v_l) - Q_kl|
@@ -44,8 +45,8 @@ struct Fit {
 geom::Expected<Fit> fit_curve(const std::vector<glm::dvec3>& points, const FitSettings& settings,
                               const std::string& name, CurvePlane plane);
 // A grid of rows x columns points (row-major) interpolated by A9.4 with degrees
-// (settings.degree, settings.degree_v); least squares is not offered for grids (`schema` at
-// "/method").
+// (settings.degree, settings.degree_v), or fitted by least squares (P&T 9.4.3) with
+// (count, count_v) control points; errors keep the geometry's paths ("/count/0", "/grid/3").
 geom::Expected<Fit> fit_grid(const std::vector<glm::dvec3>& grid, int rows, int columns,
                              const FitSettings& settings, const std::string& name);
 

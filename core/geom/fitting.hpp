@@ -36,6 +36,14 @@ Expected<Interpolated> interpolate_curve_with_end_derivatives(const std::vector<
 // all points coincide (`geometry`, "/grid"); row k equal to row k - 1 (`geometry`, "/grid/k");
 // column l equal to column l - 1 (`geometry`, "/grid/0/l", its first point); when every row
 // (column) is the same, k = 1 (l = 1).
+// The checks and parameters A9.4 and surface least squares share: the grid's shape, the
+// degrees (errors as interpolate_surface's below) and the averaged parameters u_k, v_l.
+struct GridParams {
+    std::vector<double> u, v;
+};
+Expected<GridParams> grid_params(const std::vector<glm::dvec3>& grid, int rows, int columns, int p,
+                                 int q, Parametrization mode);
+
 struct InterpolatedSurface {
     Surface surface;
     std::vector<double> u_params, v_params;
@@ -59,5 +67,23 @@ struct Approximated {
 };
 Expected<Approximated> approximate_curve(const std::vector<glm::dvec3>& points, int degree,
                                          int count, Parametrization mode);
+
+// Least-squares surface approximation of a grid (Piegl & Tiller 9.4.3): the parameters of
+// interpolate_surface (grid_params), knots by eq. 9.69 in each direction, every column of the
+// grid fitted with fixed ends by 9.4.1 at the u_k (count_u points each; one factorisation for
+// all columns), then every row of the result at the v_l (count_v points). The four corners are
+// kept exactly; counts equal to the grid's interpolate it. max_error and rms_error are over all
+// grid points, |S(u_k, v_l) - Q_kl|. Errors: as grid_params; count_u outside p + 1 .. rows
+// (`degree` below, `schema` above, "/count/0"), count_v likewise ("/count/1"); a singular
+// system (`geometry`, "/grid").
+struct ApproximatedSurface {
+    Surface surface;
+    std::vector<double> u_params, v_params;
+    double max_error = 0;
+    double rms_error = 0;
+};
+Expected<ApproximatedSurface> approximate_surface(const std::vector<glm::dvec3>& grid, int rows,
+                                                  int columns, int p, int q, int count_u,
+                                                  int count_v, Parametrization mode);
 
 } // namespace isoparm::geom

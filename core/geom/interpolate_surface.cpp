@@ -19,8 +19,8 @@ Status check_degree(int degree, int count, int axis, const char* dir_name) {
 
 } // namespace
 
-Expected<InterpolatedSurface> interpolate_surface(const std::vector<glm::dvec3>& grid, int rows,
-                                                  int columns, int p, int q, Parametrization mode) {
+Expected<GridParams> grid_params(const std::vector<glm::dvec3>& grid, int rows, int columns, int p,
+                                 int q, Parametrization mode) {
     if (rows < 2)
         return make_error(ErrorCode::schema,
                           "the grid needs at least 2 rows, got " + std::to_string(rows), "/grid");
@@ -60,10 +60,16 @@ Expected<InterpolatedSurface> interpolate_surface(const std::vector<glm::dvec3>&
                               ", which gives two equal parameters v",
                           "/grid/0" + pointer_step(column));
     }
+    return GridParams{std::move(u.params), std::move(v.params)};
+}
 
+Expected<InterpolatedSurface> interpolate_surface(const std::vector<glm::dvec3>& grid, int rows,
+                                                  int columns, int p, int q, Parametrization mode) {
+    auto params = grid_params(grid, rows, columns, p, q, mode);
+    if (!params) return params.error();
     InterpolatedSurface out;
-    out.u_params = std::move(u.params);
-    out.v_params = std::move(v.params);
+    out.u_params = std::move(params->u);
+    out.v_params = std::move(params->v);
     Surface& s = out.surface;
     s.type = SplineType::bspline;
     s.degree_u = p;

@@ -80,7 +80,7 @@ TEST(FitCurve, RefusalsKeepTheGeometrysPaths) {
     EXPECT_EQ(many.error().path, "/count");
 }
 
-TEST(FitGrid, InterpolatesEveryGridPoint) {
+TEST(FitGrid, InterpolatesOrFitsByLeastSquares) {
     std::vector<glm::dvec3> grid;
     for (int k = 0; k < 4; ++k)
         for (int l = 0; l < 5; ++l) grid.emplace_back(k, l, std::sin(k + 0.5 * l));
@@ -93,9 +93,18 @@ TEST(FitGrid, InterpolatesEveryGridPoint) {
     EXPECT_EQ(fit->object.surface()->degree_u, 2);
     EXPECT_EQ(fit->object.surface()->degree_v, 3);
     s.method = FitMethod::approximate;
+    s.count = 3;
+    s.count_v = 4;
+    auto least = fit_grid(grid, 4, 5, s, "grid fit");
+    ASSERT_TRUE(least.ok()) << least.error().message;
+    EXPECT_EQ(least->object.surface()->n_u, 3);
+    EXPECT_EQ(least->object.surface()->n_v, 4);
+    EXPECT_GT(least->max_error, 0);
+    EXPECT_GE(least->max_error, least->rms_error);
+    s.count_v = 6;
     auto refused = fit_grid(grid, 4, 5, s, "grid fit");
     ASSERT_FALSE(refused.ok());
-    EXPECT_EQ(refused.error().path, "/method");
+    EXPECT_EQ(refused.error().path, "/count/1");
 }
 
 } // namespace

@@ -286,3 +286,71 @@ TEST(Approximate, RefusesCountsOutsideTheirRange) {
     EXPECT_EQ(r.error().code, ErrorCode::schema);
     EXPECT_EQ(r.error().path, "/points");
 }
+
+namespace {
+
+std::vector<glm::dvec3> wavy_grid(int rows, int columns) {
+    std::vector<glm::dvec3> grid;
+    for (int k = 0; k < rows; ++k)
+        for (int l = 0; l < columns; ++l)
+            grid.emplace_back(k * 0.3 + 0.02 * std::sin(l), l * 0.25,
+                              std::sin(0.7 * k) * std::cos(0.5 * l) + 0.03 * ((k * 7 + l) % 3));
+    return grid;
+}
+
+} // namespace
+
+TEST(ApproximateSurface, InteriorGradientVanishesAndCornersAreKept) {
+    RandomGeometry g(4411);
+    for (int trial = 0; trial < 12; ++trial) {
+        const int rows = g.integer(5, 14), columns = g.integer(5, 14);
+        const auto grid = wavy_grid(rows, columns);
+        const int p = g.integer(1, 3), q = g.integer(1, 3);
+        const int cu = g.integer(p + 1, rows), cv = g.integer(q + 1, columns);
+        auto r = approximate_surface(grid, rows, columns, p, q, cu, cv, Parametrization::chord);
+        ASSERT_TRUE(r.ok()) << r.error().message;
+        const Surface& s = r->surface;
+        ASSERT_TRUE(validate_surface(s).ok());
+        EXPECT_EQ(s.point(0, 0), grid.front());
+        EXPECT_EQ(s.point(cu - 1, cv - 1), grid.back());
+        // d/dP_ij of sum |S(u_k, v_l) - Q_kl|^2 for the interior control points vanishes.
+        double worst = 0, sum = 0, max_error = 0;
+        std::vector<glm::dvec3> gradient(static_cast<size_t>(cu) * cv, glm::dvec3(0));
+        for (int k = 0; k < rows; ++k)
+            for (int l = 0; l < columns; ++l) {
+                const auto Nu = all_basis(s.knots_u, p, cu, r->u_params[k])[0];
+                const auto Nv = all_basis(s.knots_v, q, cv, r->v_params[l])[0];
+                const glm::dvec3 residual = *surface_point(s, r->u_params[k], r->v_params[l]) -
+                                            grid[static_cast<size_t>(k) * columns + l];
+                max_error = std::max(max_error, glm::length(residual));
+                sum += glm::dot(residual, residual);
+                for (int i = 0; i < cu; ++i)
+                    for (int j = 0; j < cv; ++j)
+                        gradient[static_cast<size_t>(i) * cv + j] += Nu[i] * Nv[j] * residual;
+            }
+        for (int i = 1; i + 1 < cu; ++i)
+            for (int j = 1; j + 1 < cv; ++j)
+                worst = std::max(worst, glm::length(gradient[static_cast<size_t>(i) * cv + j]));
+        EXPECT_LT(worst, 1e-10) << rows << "x" << columns << " p" << p << " q" << q;
+        EXPECT_DOUBLE_EQ(r->max_error, max_error);
+        EXPECT_NEAR(r->rms_error, std::sqrt(sum / (rows * columns)), 1e-15);
+    }
+}
+
+TEST(ApproximateSurface, FullCountsInterpolateAndBadCountsAreRefused) {
+    const auto grid = wavy_grid(6, 7);
+    auto r = approximate_surface(grid, 6, 7, 3, 2, 6, 7, Parametrization::centripetal);
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    EXPECT_LT(r->max_error, 1e-12);
+    auto few = approximate_surface(grid, 6, 7, 3, 2, 3, 5, Parametrization::chord);
+    ASSERT_FALSE(few.ok());
+    EXPECT_EQ(few.error().code, ErrorCode::degree);
+    EXPECT_EQ(few.error().path, "/count/0");
+    auto many = approximate_surface(grid, 6, 7, 3, 2, 5, 8, Parametrization::chord);
+    ASSERT_FALSE(many.ok());
+    EXPECT_EQ(many.error().code, ErrorCode::schema);
+    EXPECT_EQ(many.error().path, "/count/1");
+    auto degree = approximate_surface(grid, 6, 7, 6, 2, 6, 5, Parametrization::chord);
+    ASSERT_FALSE(degree.ok());
+    EXPECT_EQ(degree.error().path, "/degree/0");
+}

@@ -194,7 +194,7 @@ void settings(AppContext& ctx) {
     const float w = 90 * ctx.ui.scale();
     bool changed = false;
     const bool grid = f.rows > 1;
-    if (!grid) {
+    {
         // Two choices, both in view: a radio pair rather than a combo.
         for (const auto& m : doc::fit_method_names) {
             if (m.value != doc::FitMethod::interpolate) ImGui::SameLine();
@@ -218,6 +218,13 @@ void settings(AppContext& ctx) {
         ImGui::SameLine();
         ImGui::SetNextItemWidth(w);
         changed |= ImGui::InputInt("v-degree", &s.degree_v);
+        if (s.method == doc::FitMethod::approximate) {
+            ImGui::SetNextItemWidth(w);
+            changed |= ImGui::InputInt("u points", &s.count);
+            ImGui::SameLine();
+            ImGui::SetNextItemWidth(w);
+            changed |= ImGui::InputInt("v points", &s.count_v);
+        }
     } else if (s.method == doc::FitMethod::approximate) {
         ImGui::SameLine();
         ImGui::SetNextItemWidth(w);
@@ -237,14 +244,15 @@ void summary(AppContext& ctx) {
         return;
     }
     if (!f.fit) return;
-    const bool through = f.rows > 1 || f.settings.method == doc::FitMethod::interpolate;
+    const bool through = f.settings.method == doc::FitMethod::interpolate;
     if (through)
         ImGui::TextWrapped("Passes through every point (largest distance %.3g, numerical).",
                            f.fit->max_error);
     else
         ImGui::TextWrapped("Largest distance %.4g, RMS %.4g over %zu points (the red whiskers); "
-                           "the ends are kept exactly.",
-                           f.fit->max_error, f.fit->rms_error, f.points.size());
+                           "the %s kept exactly.",
+                           f.fit->max_error, f.fit->rms_error, f.points.size(),
+                           f.rows > 1 ? "four corners are" : "ends are");
     report_fact("fit/max_error", f.fit->max_error);
     report_fact("fit/rms_error", f.fit->rms_error);
 }
@@ -287,8 +295,7 @@ bool load_fit_points(AppContext& ctx, const std::string& path, std::string& erro
     f.open = true;
     f.drag = -1;
     f.frame_plane = -1; // frame the new data
-    if (f.rows <= 1 && f.settings.count > static_cast<int>(f.points.size()))
-        f.settings.count = static_cast<int>(f.points.size());
+    // Counts that no longer fit the data are the fit's refusal, shown; nothing is clamped.
     return true;
 }
 
@@ -300,8 +307,9 @@ void draw_fit_panel(AppContext& ctx) {
     FitState& f = ctx.ui.fit;
     const float k = ctx.ui.scale();
     if (f.rows > 1)
-        ImGui::TextWrapped("A %d x %d grid from %s: a surface through it (P&T A9.4)", f.rows,
-                           f.columns, f.source.c_str());
+        ImGui::TextWrapped("A %d x %d grid from %s: a surface %s it", f.rows, f.columns,
+                           f.source.c_str(),
+                           f.settings.method == doc::FitMethod::interpolate ? "through" : "near");
     else
         ImGui::Text("%zu data points%s%s", f.points.size(), f.source.empty() ? "" : " from ",
                     f.source.c_str());
