@@ -28,7 +28,7 @@ struct RenderOptions {
     std::string output;
     std::string size = "1280x800";
     std::string view = "workstation";
-    std::string indicator, select, style, camera;
+    std::string indicator, select, style, camera, analysis;
     // Display toggles: 0 = as the scene says, > 0 on, < 0 off (--x / --no-x).
     int points = 0, net = 0, ids = 0, knot_curves = 0, indicator_point = 0, deboor = 0;
     int deboor_step = -1; // de Boor's construction up to this step (-1: all)
@@ -91,6 +91,9 @@ std::string configure(const RenderOptions& o, ui::AppContext& ctx) {
         d.view.display.style =
             geom::parse_name<doc::DisplayStyle>(o.style).value_or(doc::DisplayStyle::both);
     }
+    if (!o.analysis.empty())
+        d.view.display.analysis =
+            geom::parse_name<doc::AnalysisMode>(o.analysis).value_or(doc::AnalysisMode::off);
     apply_toggle(o.points, d.view.display.control_points);
     apply_toggle(o.net, d.view.display.control_net);
     apply_toggle(o.ids, d.view.display.point_ids);
@@ -161,6 +164,13 @@ std::string configure(const RenderOptions& o, ui::AppContext& ctx) {
     return "";
 }
 
+// The names --analysis accepts: the scene file's, from the same table.
+std::vector<std::string> analysis_names() {
+    std::vector<std::string> out;
+    for (const auto& entry : doc::analysis_mode_names) out.emplace_back(entry.name);
+    return out;
+}
+
 // The names --style accepts: the scene file's, from the same table.
 std::vector<std::string> display_style_names() {
     std::vector<std::string> out;
@@ -184,6 +194,10 @@ Action register_render_command(CLI::App& app) {
     sub->add_option("--select", o->select, "select control point I,J of the current surface");
     sub->add_option("--style", o->style, "shaded, wireframe or both")
         ->check(CLI::IsMember(display_style_names()));
+    sub->add_option("--analysis", o->analysis,
+                    "colour the shaded surfaces: gauss, mean, kmax, kmin (curvature, with a colour "
+                    "bar), zebra, isophote or off")
+        ->check(CLI::IsMember(analysis_names()));
     sub->add_option("--camera", o->camera,
                     "YAW,PITCH[,ZOOM]: orbit angles in degrees, zoom in percent of fit-to-view");
     sub->add_flag("--points,!--no-points", o->points, "show / hide control points");

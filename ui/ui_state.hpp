@@ -22,6 +22,7 @@
 #include "ui/view/canvas_map.hpp"
 #include "ui/view/layout.hpp"
 #include "ui/view/picking.hpp"
+#include "ui/view/scene_draw.hpp"
 
 namespace isoparm::ui {
 
@@ -288,6 +289,7 @@ struct UiState {
     ObjectListState object_list;
     ToolboxState toolbox;
     FitState fit;
+    AnalysisView analysis; // this frame's analysis colouring (the 3D view's colour bar reads it)
 
     // Presentation enlarges everything by half, or by a quarter in a window under 800 px
     // high (a 1024x768 projector), where text is then 19 px and the panels still fit.

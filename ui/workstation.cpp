@@ -291,6 +291,7 @@ void Workstation::frame(unsigned target_framebuffer) {
     view.width = ui.view_fb_width;
     view.height = ui.view_fb_height;
     view.background = to_vec4(ctx_.doc.colors.background);
+    view.analysis = ui.analysis;
     renderer_->render(view, scene.surfaces, scene.overlay);
 
     glBindFramebuffer(GL_FRAMEBUFFER, target_framebuffer);

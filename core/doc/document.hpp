@@ -163,6 +163,23 @@ constexpr std::span<const geom::EnumName<DisplayStyle>> enum_names(DisplayStyle)
 }
 
 // What is drawn and how (part of the view state below).
+// The shaded surfaces' analysis colouring (Display > Analysis, `isoparm render --analysis`):
+// false colour of a curvature from exact derivatives, or reflection lines.
+enum class AnalysisMode { off, gaussian, mean, kmax, kmin, zebra, isophote };
+inline constexpr geom::EnumName<AnalysisMode> analysis_mode_names[] = {
+    {AnalysisMode::off, "off"},
+    {AnalysisMode::gaussian, "gauss", "Gaussian curvature K"},
+    {AnalysisMode::mean, "mean", "mean curvature H"},
+    {AnalysisMode::kmax, "kmax", "largest principal curvature"},
+    {AnalysisMode::kmin, "kmin", "smallest principal curvature"},
+    {AnalysisMode::zebra, "zebra", "zebra stripes"},
+    {AnalysisMode::isophote, "isophote", "isophotes"},
+};
+static_assert(geom::in_declaration_order(analysis_mode_names));
+constexpr std::span<const geom::EnumName<AnalysisMode>> enum_names(AnalysisMode) {
+    return analysis_mode_names;
+}
+
 struct DisplaySettings {
     DisplayStyle style = DisplayStyle::both;
     bool control_points = true;
@@ -172,6 +189,13 @@ struct DisplaySettings {
     bool indicator_point = true;
     bool deboor = false;
     int density = 32; // tessellation samples per knot span direction (default density)
+    AnalysisMode analysis = AnalysisMode::off;
+    // The colour bar's range for the curvature modes: automatic (the visible surfaces'
+    // values; symmetric about zero for K and H) unless fixed.
+    bool analysis_fixed = false;
+    double analysis_lo = -1, analysis_hi = 1;
+    int stripes = 12;       // zebra and isophote stripes across the view
+    double zebra_angle = 0; // direction of the zebra stripes, degrees
     bool operator==(const DisplaySettings&) const = default;
 };
 

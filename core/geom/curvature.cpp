@@ -4,6 +4,10 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
+#include <limits>
+
+#include "core/geom/knots.hpp"
+#include "core/geom/tessellate.hpp"
 
 namespace isoparm::geom {
 
@@ -86,6 +90,39 @@ std::optional<CurveCurvature> curve_curvature(const Curve& c, double t) {
     k.normal = glm::cross(*k.binormal, *k.tangent);
     k.torsion = glm::dot(b, d3) / (b_length * b_length);
     return k;
+}
+
+std::vector<double> curvature_grid(const Surface& s, int samples_u, int samples_v,
+                                   CurvatureKind kind, std::size_t first, std::size_t count) {
+    const Interval du = domain(s, Dir::u), dv = domain(s, Dir::v);
+    const std::vector<double> us = uniform_params(du.lo, du.hi, samples_u);
+    const std::vector<double> vs = uniform_params(dv.lo, dv.hi, samples_v);
+    const std::size_t total = static_cast<std::size_t>(samples_u) * samples_v;
+    const std::size_t end = first + std::min(count, total - std::min(first, total));
+    std::vector<double> out;
+    out.reserve(end - std::min(first, end));
+    for (std::size_t k = first; k < end; ++k) {
+        const auto c = surface_curvature(s, us[k / samples_v], vs[k % samples_v]);
+        if (!c) {
+            out.push_back(std::numeric_limits<double>::quiet_NaN());
+            continue;
+        }
+        switch (kind) {
+        case CurvatureKind::gaussian:
+            out.push_back(c->gaussian);
+            break;
+        case CurvatureKind::mean:
+            out.push_back(c->mean);
+            break;
+        case CurvatureKind::k_max:
+            out.push_back(c->k1);
+            break;
+        case CurvatureKind::k_min:
+            out.push_back(c->k2);
+            break;
+        }
+    }
+    return out;
 }
 
 } // namespace isoparm::geom

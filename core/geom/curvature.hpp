@@ -4,6 +4,7 @@
 
 #include <glm/vec3.hpp>
 #include <optional>
+#include <vector>
 
 #include "core/geom/evaluate.hpp"
 #include "core/geom/types.hpp"
@@ -21,6 +22,15 @@ struct SurfaceCurvature {
 std::optional<SurfaceCurvature> surface_curvature(const Surface& s, double u, double v);
 // The same from derivatives up to order 2 (D[a][b], a + b <= 2).
 std::optional<SurfaceCurvature> curvature_from_derivatives(const SurfaceDerivatives& d);
+
+// A surface's curvature shown as false colour (the analysis display modes), at every vertex of
+// a tessellation grid (u-major, uniform parameters as tessellate lays them out), for vertices
+// first .. first + count - 1; NaN where it is undefined (no point, or a degenerate normal: a
+// pole), which the display draws as such.
+enum class CurvatureKind { gaussian, mean, k_max, k_min };
+std::vector<double> curvature_grid(const Surface& s, int samples_u, int samples_v,
+                                   CurvatureKind kind, std::size_t first = 0,
+                                   std::size_t count = static_cast<std::size_t>(-1));
 
 // The Frenet frame of a curve at t. `curvature` (>= 0) and `tangent` exist where C' != 0;
 // `torsion`, `normal` and `binormal` where C' x C'' != 0 as well (a straight piece has

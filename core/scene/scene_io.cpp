@@ -334,6 +334,11 @@ json display_to_json(const DisplaySettings& d) {
     display["style"] = geom::name_of(d.style);
     for (const auto& [name, flag] : display_flags(d)) display[name] = *flag;
     display["density"] = d.density;
+    // Written only when set, so scenes without analysis read as before.
+    if (d.analysis != AnalysisMode::off) display["analysis"] = geom::name_of(d.analysis);
+    if (d.analysis_fixed) display["analysis_range"] = {d.analysis_lo, d.analysis_hi};
+    if (d.stripes != DisplaySettings{}.stripes) display["stripes"] = d.stripes;
+    if (d.zebra_angle != 0) display["zebra_angle"] = d.zebra_angle;
     return display;
 }
 
@@ -365,7 +370,8 @@ Expected<DisplaySettings> display_from_json(const json& j, const std::string& at
     if (auto st = expect_object(j, at, "display"); !st) return st.error();
     std::vector<std::string_view> allowed{"style"};
     for (auto& [name, flag] : display_flags(d)) allowed.push_back(name);
-    allowed.push_back("density");
+    for (const char* name : {"density", "analysis", "analysis_range", "stripes", "zebra_angle"})
+        allowed.push_back(name);
     if (auto st = check_members(j, at, "display", allowed); !st) return st.error();
     for (const auto& item : j.items()) {
         const std::string mat = member_path(at, item.key());
@@ -383,6 +389,45 @@ Expected<DisplaySettings> display_from_json(const json& j, const std::string& at
             auto n = read_integer(item.value(), mat, "density", 1, max_density);
             if (!n) return n.error();
             d.density = static_cast<int>(*n);
+            continue;
+        }
+        if (item.key() == "analysis") {
+            auto a = read_string(item.value(), mat, "analysis");
+            if (!a) return a.error();
+            const std::optional<AnalysisMode> mode = geom::parse_name<AnalysisMode>(*a);
+            if (!mode)
+                return schema_error("analysis must be off, gauss, mean, kmax, kmin, zebra or "
+                                    "isophote, got '" +
+                                        *a + "'",
+                                    mat);
+            d.analysis = *mode;
+            continue;
+        }
+        if (item.key() == "analysis_range") {
+            const json& r = item.value();
+            if (!r.is_array() || r.size() != 2 || !r[0].is_number() || !r[1].is_number())
+                return schema_error("analysis_range is [low, high], two numbers", mat);
+            const double lo = r[0].get<double>(), hi = r[1].get<double>();
+            if (!(std::isfinite(lo) && std::isfinite(hi) && lo < hi))
+                return schema_error("analysis_range needs finite low < high, got [" +
+                                        geom::format_number(lo) + ", " + geom::format_number(hi) +
+                                        "]",
+                                    mat);
+            d.analysis_fixed = true;
+            d.analysis_lo = lo;
+            d.analysis_hi = hi;
+            continue;
+        }
+        if (item.key() == "stripes") {
+            auto n = read_integer(item.value(), mat, "stripes", 2, 64);
+            if (!n) return n.error();
+            d.stripes = static_cast<int>(*n);
+            continue;
+        }
+        if (item.key() == "zebra_angle") {
+            if (!item.value().is_number() || !std::isfinite(item.value().get<double>()))
+                return schema_error("zebra_angle is a number of degrees", mat);
+            d.zebra_angle = item.value().get<double>();
             continue;
         }
         for (auto& [name, flag] : display_flags(d)) {

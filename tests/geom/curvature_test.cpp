@@ -3,6 +3,9 @@
 // rational surface.
 #include <gtest/gtest.h>
 
+#include "core/geom/knots.hpp"
+#include "core/geom/tessellate.hpp"
+
 #include <cmath>
 #include <glm/geometric.hpp>
 
@@ -179,6 +182,52 @@ TEST(Curvature, AStraightLineHasZeroCurvatureAndNoNormal) {
     ASSERT_TRUE(still);
     EXPECT_FALSE(still->curvature);
     EXPECT_FALSE(still->tangent);
+}
+
+} // namespace
+
+namespace {
+
+TEST(CurvatureGrid, SphereGridIsOneOverRSquaredWithPolesUndefined) {
+    const double r = 2;
+    auto arc = circular_arc({0, 0, 0}, r, -90, 90, Plane::xz);
+    ASSERT_TRUE(arc.ok());
+    const Surface sphere = revolved(*arc);
+    const int su = 9, sv = 7;
+    const auto K = curvature_grid(sphere, su, sv, CurvatureKind::gaussian);
+    ASSERT_EQ(K.size(), static_cast<std::size_t>(su * sv));
+    // u runs along the profile (pole to pole): rows 0 and su - 1 are the poles.
+    int undefined = 0;
+    for (int i = 0; i < su; ++i)
+        for (int j = 0; j < sv; ++j) {
+            const double k = K[static_cast<std::size_t>(i) * sv + j];
+            const Interval du = domain(sphere, Dir::u);
+            const bool pole = !surface_curvature(sphere, uniform_params(du.lo, du.hi, su)[i], 0.5);
+            if (std::isnan(k)) {
+                ++undefined;
+                EXPECT_TRUE(pole) << i << " " << j;
+            } else {
+                EXPECT_NEAR(k, 1 / (r * r), 1e-12) << i << " " << j;
+            }
+        }
+    EXPECT_EQ(undefined, 2 * sv); // the two pole rows
+    // A range of vertices gives the same values as the whole grid.
+    const auto part = curvature_grid(sphere, su, sv, CurvatureKind::mean, 10, 5);
+    const auto whole = curvature_grid(sphere, su, sv, CurvatureKind::mean);
+    ASSERT_EQ(part.size(), 5u);
+    for (std::size_t k = 0; k < 5; ++k) EXPECT_EQ(part[k], whole[10 + k]);
+}
+
+TEST(CurvatureGrid, PrincipalCurvaturesOfACylinderAndAFlatGrid) {
+    const Surface cylinder = revolved(line_segment({1, 0, -1}, {1, 0, 1}));
+    for (double k : curvature_grid(cylinder, 6, 9, CurvatureKind::gaussian))
+        EXPECT_NEAR(k, 0, 1e-12);
+    const auto kmax = curvature_grid(cylinder, 6, 9, CurvatureKind::k_max);
+    const auto kmin = curvature_grid(cylinder, 6, 9, CurvatureKind::k_min);
+    for (std::size_t q = 0; q < kmax.size(); ++q) {
+        EXPECT_NEAR(std::max(std::abs(kmax[q]), std::abs(kmin[q])), 1.0, 1e-12);
+        EXPECT_NEAR(std::min(std::abs(kmax[q]), std::abs(kmin[q])), 0.0, 1e-12);
+    }
 }
 
 } // namespace

@@ -1,4 +1,5 @@
 // The main menu bar (File, Edit, Surface, Display, Help) and its keyboard shortcuts.
+#include <cmath>
 #include <filesystem>
 #include <imgui.h>
 #include <string>
@@ -199,6 +200,31 @@ void display_menu(AppContext& ctx) {
     if (menu_item("de Boor: step forward", "]")) deboor_step(ctx, +1);
     if (menu_item(ctx.ui.deboor.playing ? "de Boor: pause" : "de Boor: play", "Space"))
         deboor_toggle_play(ctx, ImGui::GetTime());
+    if (begin_menu("Analysis")) {
+        // Curvature from exact derivatives as false colour, or reflection lines.
+        for (const auto& m : doc::analysis_mode_names)
+            if (menu_item(geom::label_of(m.value), nullptr, d.analysis == m.value))
+                d.analysis = m.value;
+        ImGui::Separator();
+        ImGui::SetNextItemWidth(110 * ctx.ui.scale());
+        ImGui::SliderInt("Stripes", &d.stripes, 2, 64);
+        ImGui::SetNextItemWidth(110 * ctx.ui.scale());
+        float angle = static_cast<float>(d.zebra_angle);
+        if (ImGui::SliderFloat("Zebra angle", &angle, -90, 90, "%.0f deg")) d.zebra_angle = angle;
+        ImGui::Checkbox("Fixed colour range", &d.analysis_fixed);
+        if (d.analysis_fixed) {
+            double range[2] = {d.analysis_lo, d.analysis_hi};
+            ImGui::SetNextItemWidth(160 * ctx.ui.scale());
+            if (ImGui::InputScalarN("low, high", ImGuiDataType_Double, range, 2, nullptr, nullptr,
+                                    "%.4g") &&
+                std::isfinite(range[0]) && std::isfinite(range[1]) && range[0] < range[1]) {
+                // An empty or reversed range is not taken: the last good one stays.
+                d.analysis_lo = range[0];
+                d.analysis_hi = range[1];
+            }
+        }
+        ImGui::EndMenu();
+    }
     ImGui::Separator();
     if (menu_item("Fit to view", "F")) fit_view(ctx);
     if (menu_item("Presentation mode", "P", ctx.ui.presentation)) toggle_presentation(ctx);

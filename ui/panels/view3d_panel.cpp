@@ -18,6 +18,7 @@
 #include "ui/panels/panels.hpp"
 #include "ui/render/renderer.hpp"
 #include "ui/ui_report.hpp"
+#include "ui/view/analysis.hpp"
 #include "ui/view/canvas_map.hpp"
 #include "ui/view/contrast.hpp"
 #include "ui/view/deboor_overlay.hpp"
@@ -434,6 +435,65 @@ void draw_sliders(AppContext& ctx, int rows) {
 
 } // namespace
 
+namespace {
+
+// The analysis mode's colour bar at the view's right edge: the map from the range's low to its
+// high end with both values and zero, the mode's name, and the hatch of undefined points.
+void draw_colour_bar(AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
+    const AnalysisView& a = ctx.ui.analysis;
+    if (a.kind == AnalysisKind::off) return;
+    const float k = ctx.ui.scale();
+    const ImU32 text = IM_COL32(230, 230, 230, 255), shadow = IM_COL32(0, 0, 0, 200);
+    auto label = [&](float x, float y, const std::string& s) {
+        dl->AddText(ImVec2(x + 1, y + 1), shadow, s.c_str());
+        dl->AddText(ImVec2(x, y), text, s.c_str());
+    };
+    const std::string title = analysis_title(a.kind);
+    const float line = ImGui::GetTextLineHeight();
+    const float title_w = ImGui::CalcTextSize(title.c_str()).x;
+    label(static_cast<float>(vp.x + vp.w) - title_w - 10 * k, static_cast<float>(vp.y) + 8 * k,
+          title);
+    if (!is_curvature(a.kind)) return;
+    const float vx = static_cast<float>(vp.x), vy = static_cast<float>(vp.y);
+    const float vw = static_cast<float>(vp.w), vh = static_cast<float>(vp.h);
+    const float w = 16 * k, h = std::min(vh * 0.45f, 260 * k);
+    const float x = vx + vw - w - 12 * k, y = vy + 14 * k + line;
+    const int steps = 48;
+    for (int s = 0; s < steps; ++s) {
+        // Top is the high end.
+        const double v0 = a.hi + (a.lo - a.hi) * s / steps,
+                     v1 = a.hi + (a.lo - a.hi) * (s + 1) / steps;
+        const glm::vec3 c0 = analysis_colour(a, v0), c1 = analysis_colour(a, v1);
+        auto col = [](const glm::vec3& c) {
+            return IM_COL32(static_cast<int>(c.r * 255), static_cast<int>(c.g * 255),
+                            static_cast<int>(c.b * 255), 255);
+        };
+        dl->AddRectFilledMultiColor(ImVec2(x, y + h * s / steps),
+                                    ImVec2(x + w, y + h * (s + 1) / steps), col(c0), col(c0),
+                                    col(c1), col(c1));
+    }
+    dl->AddRect(ImVec2(x, y), ImVec2(x + w, y + h), IM_COL32(20, 20, 20, 255));
+    auto value_label = [&](double v, float at) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.3g", v);
+        const float tw = ImGui::CalcTextSize(buf).x;
+        label(x - tw - 6 * k, at - line * 0.5f, buf);
+        dl->AddLine(ImVec2(x - 3 * k, at), ImVec2(x, at), text);
+    };
+    value_label(a.hi, y);
+    value_label(a.lo, y + h);
+    if (a.lo < 0 && a.hi > 0) value_label(0.0, y + h * static_cast<float>(a.hi / (a.hi - a.lo)));
+    // The hatch the surface shows where the value is undefined (a pole, a zero denominator).
+    const float hy = y + h + line;
+    for (int s = 0; s < 4; ++s)
+        dl->AddRectFilled(ImVec2(x + w * s / 4, hy), ImVec2(x + w * (s + 1) / 4, hy + 8 * k),
+                          s % 2 ? IM_COL32(140, 140, 140, 255) : IM_COL32(90, 90, 90, 255));
+    const char* undefined = "undefined";
+    label(x - ImGui::CalcTextSize(undefined).x - 6 * k, hy - 3 * k, undefined);
+}
+
+} // namespace
+
 void draw_view3d_panel(AppContext& ctx) {
     UiState& ui = ctx.ui;
     const bool bare = ui.view_mode == ViewMode::view3d_only;
@@ -474,6 +534,8 @@ void draw_view3d_panel(AppContext& ctx) {
     draw_deboor_labels(ctx, vp, dl);
     if (!ui.headless) draw_hover_ring(ctx, vp, dl);
     draw_axes(ctx, vp, dl);
+    ui.analysis = analysis_view(ctx.doc);
+    draw_colour_bar(ctx, vp, dl);
     if (!bare)
         draw_help_line(ctx, vp, dl);
     else if (!ui.headless)

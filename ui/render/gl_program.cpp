@@ -43,6 +43,7 @@ GlProgram::GlProgram(const char* vertex, const char* geometry, const char* fragm
         // Attribute slots are fixed so one vertex layout serves every program.
         glBindAttribLocation(id_, 0, "a_position");
         glBindAttribLocation(id_, 1, "a_second");
+        glBindAttribLocation(id_, 2, "a_scalar");
         glLinkProgram(id_);
         GLint ok = 0;
         glGetProgramiv(id_, GL_LINK_STATUS, &ok);

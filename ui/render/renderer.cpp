@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "core/geom/curvature.hpp"
 #include "ui/render/gl.hpp"
 #include "ui/render/gl_program.hpp"
 #include "ui/render/render_target.hpp"
@@ -18,6 +20,29 @@ namespace isoparm::ui {
 
 namespace {
 
+geom::CurvatureKind curvature_kind(AnalysisKind k) {
+    switch (k) {
+    case AnalysisKind::mean:
+        return geom::CurvatureKind::mean;
+    case AnalysisKind::kmax:
+        return geom::CurvatureKind::k_max;
+    case AnalysisKind::kmin:
+        return geom::CurvatureKind::k_min;
+    default:
+        return geom::CurvatureKind::gaussian;
+    }
+}
+
+// The mesh program's analysis uniforms (shaders.cpp, mesh_fs).
+void set_analysis_uniforms(const GlProgram& p, const AnalysisView& a) {
+    glUniform1i(p.uniform("u_analysis"), static_cast<int>(a.kind));
+    glUniform2f(p.uniform("u_range"), a.lo, a.hi);
+    glUniform1i(p.uniform("u_diverging"), a.diverging ? 1 : 0);
+    glUniform1f(p.uniform("u_stripes"), static_cast<float>(a.stripes));
+    const float angle = glm::radians(a.zebra_angle);
+    glUniform2f(p.uniform("u_zebra_dir"), std::cos(angle), std::sin(angle));
+}
+
 // Wireframe lines per direction: enough to read the shape, few enough not to hide it.
 constexpr int wire_lines_per_direction = 24;
 
@@ -28,6 +53,7 @@ struct MeshEntry {
     GLuint vbo = 0, tri_ibo = 0, wire_ibo = 0, tri_vao = 0, wire_vao = 0;
     GLsizei tri_count = 0, wire_count = 0;
     long vertices = 0;
+    AnalysisKind scalar_kind = AnalysisKind::off; // what the scalar attribute holds
     bool used = false;
 
     void create() {
@@ -38,19 +64,24 @@ struct MeshEntry {
         glGenVertexArrays(1, &wire_vao);
         // Triangles: position and normal; wireframe: positions only, its colour comes from
         // the constant attribute 1.
+        constexpr GLsizei stride = floats_per_vertex * sizeof(float);
         glBindVertexArray(tri_vao);
         glBindBuffer(GL_ARRAY_BUFFER, vbo);
         glEnableVertexAttribArray(0);
-        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), nullptr);
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
         glEnableVertexAttribArray(1);
-        glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float),
+        glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride,
                               reinterpret_cast<void*>(3 * sizeof(float)));
+        glEnableVertexAttribArray(2);
+        glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride,
+                              reinterpret_cast<void*>(6 * sizeof(float)));
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, tri_ibo);
         glBindVertexArray(wire_vao);
         glBindBuffer(GL_ARRAY_BUFFER, vbo);
         glEnableVertexAttribArray(0);
-        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), nullptr);
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
         glDisableVertexAttribArray(1);
+        glDisableVertexAttribArray(2);
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, wire_ibo);
         glBindVertexArray(0);
     }
@@ -131,13 +162,20 @@ struct Renderer::Impl {
 
     // Brings the object's buffers up to date: nothing when unchanged, the touched rows
     // after a drag, everything after other edits.
-    MeshEntry& mesh_for(const SurfaceDraw& d, RenderStats& stats) {
+    MeshEntry& mesh_for(const SurfaceDraw& d, AnalysisKind analysis, RenderStats& stats) {
         auto [it, inserted] = meshes.try_emplace(d.id);
         MeshEntry& m = it->second;
         if (inserted) m.create();
         m.used = true;
+        // Only the curvature kinds put values in the scalar attribute.
+        const AnalysisKind want = is_curvature(analysis) ? analysis : AnalysisKind::off;
+        const bool rescalar = want != m.scalar_kind;
+        m.scalar_kind = want;
 
-        if (d.mesh) return upload_mesh(m, d, stats);
+        if (d.mesh) {
+            if (rescalar) m.mesh_revision = 0; // re-upload with the new scalar
+            return upload_mesh(m, d, stats);
+        }
         m.mesh_revision = 0;
 
         const auto t0 = std::chrono::steady_clock::now();
@@ -145,14 +183,19 @@ struct Renderer::Impl {
         const bool resampled = m.density != d.density;
         m.density = d.density;
         const MeshChange change = m.mesh.update(*d.surface, su, sv);
-        if (!change.any) return m;
+        if (!change.any && !rescalar) return m;
         const geom::Mesh& mesh = m.mesh.mesh();
-        const bool full = change.topology || resampled ||
+        const bool full = rescalar || change.topology || resampled ||
                           change.vertex_count == static_cast<int>(mesh.positions.size());
-        const std::vector<float> verts =
-            full ? interleave(mesh)
-                 : interleave(mesh, static_cast<std::size_t>(change.first_vertex),
-                              static_cast<std::size_t>(change.vertex_count));
+        const std::size_t first = full ? 0 : static_cast<std::size_t>(change.first_vertex);
+        const std::size_t count =
+            full ? mesh.positions.size() : static_cast<std::size_t>(change.vertex_count);
+        // Curvature from exact derivatives at the vertices (never from the mesh).
+        const std::vector<double> scalars =
+            want == AnalysisKind::off
+                ? std::vector<double>{}
+                : geom::curvature_grid(*d.surface, su, sv, curvature_kind(want), first, count);
+        const std::vector<float> verts = interleave(mesh, first, count, scalars);
         std::vector<std::uint32_t> wire;
         if (full) wire = wire_indices(su, sv, mesh.exists, wire_lines_per_direction);
         stats.tessellate_ms +=
@@ -166,7 +209,8 @@ struct Renderer::Impl {
             // Only the rows the moved points' basis functions reach.
             glBindBuffer(GL_ARRAY_BUFFER, m.vbo);
             glBufferSubData(GL_ARRAY_BUFFER,
-                            static_cast<GLintptr>(change.first_vertex) * 6 * sizeof(float),
+                            static_cast<GLintptr>(change.first_vertex) * floats_per_vertex *
+                                sizeof(float),
                             static_cast<GLsizeiptr>(verts.size() * sizeof(float)), verts.data());
             glBindBuffer(GL_ARRAY_BUFFER, 0);
         }
@@ -203,7 +247,10 @@ struct Renderer::Impl {
         m.density = 0;
         m.mesh = IncrementalMesh{}; // a later surface under this id starts afresh
         const geom::Mesh& mesh = *d.mesh;
-        const std::vector<float> verts = interleave(mesh);
+        // An implicit mesh has no curvature here: undefined under a curvature kind.
+        const std::vector<float> verts =
+            interleave(mesh, 0, mesh.positions.size(), {},
+                       m.scalar_kind == AnalysisKind::off ? 0.0f : undefined_scalar);
         // Each edge of a closed, consistently oriented mesh appears once in each direction.
         std::vector<std::uint32_t> wire;
         wire.reserve(mesh.triangles.size() * 3);
@@ -262,7 +309,7 @@ void Renderer::render(const SceneView& view, const std::vector<SurfaceDraw>& sur
     std::vector<MeshEntry*> entries;
     if (ok())
         for (const SurfaceDraw& d : surfaces) {
-            MeshEntry& m = im.mesh_for(d, stats_);
+            MeshEntry& m = im.mesh_for(d, view.analysis.kind, stats_);
             entries.push_back(&m);
             stats_.vertices += m.vertices;
         }
@@ -302,6 +349,7 @@ void Renderer::render(const SceneView& view, const std::vector<SurfaceDraw>& sur
     glUseProgram(im.mesh.id());
     glUniformMatrix4fv(im.mesh.uniform("u_view_proj"), 1, GL_FALSE, glm::value_ptr(vp));
     glUniformMatrix4fv(im.mesh.uniform("u_view"), 1, GL_FALSE, glm::value_ptr(vmat));
+    set_analysis_uniforms(im.mesh, view.analysis);
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.0f, 1.0f);
     for (std::size_t k = 0; k < surfaces.size(); ++k) {

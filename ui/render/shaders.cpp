@@ -6,11 +6,14 @@ namespace isoparm::ui::shaders {
 const char* const mesh_vs = R"(#version 330 core
 in vec3 a_position;
 in vec3 a_second; // normal
+in float a_scalar; // the analysis value (a curvature), 1e30 where undefined
 uniform mat4 u_view_proj;
 uniform mat4 u_view;
 out vec3 v_eye_pos;
 out vec3 v_eye_normal;
+out float v_scalar;
 void main() {
+    v_scalar = a_scalar;
     vec4 eye = u_view * vec4(a_position, 1.0);
     v_eye_pos = eye.xyz;
     v_eye_normal = mat3(u_view) * a_second;
@@ -21,8 +24,24 @@ void main() {
 const char* const mesh_fs = R"(#version 330 core
 in vec3 v_eye_pos;
 in vec3 v_eye_normal;
+in float v_scalar;
 uniform vec4 u_color;
+uniform int u_analysis;   // 0 off; 1 K, 2 H, 3 k_max, 4 k_min; 5 zebra; 6 isophotes
+uniform vec2 u_range;     // the colour bar's [low, high]
+uniform int u_diverging;  // 1: blue - white - red about zero
+uniform float u_stripes;
+uniform vec2 u_zebra_dir; // the zebra stripes' direction on screen
 out vec4 frag;
+// Moreland's cool-warm diverging map (blue, light grey, red) and a three-stop sequential one
+// (dark purple, teal, yellow): the colour bar in the view draws the same (ui/view/analysis).
+vec3 diverging(float t) { // t in [-1, 1]
+    vec3 cool = vec3(0.23, 0.30, 0.75), mid = vec3(0.87, 0.87, 0.87), warm = vec3(0.71, 0.02, 0.15);
+    return t < 0.0 ? mix(mid, cool, -t) : mix(mid, warm, t);
+}
+vec3 sequential(float t) { // t in [0, 1]
+    vec3 a = vec3(0.27, 0.00, 0.33), b = vec3(0.13, 0.57, 0.55), c = vec3(0.99, 0.91, 0.14);
+    return t < 0.5 ? mix(a, b, t * 2.0) : mix(b, c, t * 2.0 - 1.0);
+}
 // Blinn-Phong (Blinn 1977) with a key and a fill light in eye space; the back side is lit
 // with the flipped normal and slightly darker, so students can tell the two sides apart.
 void main() {
@@ -34,7 +53,36 @@ void main() {
     vec3 fill = normalize(vec3(0.6, -0.3, 0.45));
     float diffuse = max(dot(n, key), 0.0) * 0.68 + max(dot(n, fill), 0.0) * 0.22;
     float spec = pow(max(dot(n, normalize(key + view_dir)), 0.0), 48.0) * 0.32;
-    vec3 rgb = u_color.rgb * (0.24 + diffuse) * side + vec3(spec);
+    vec3 base = u_color.rgb;
+    float light = 0.24 + diffuse;
+    if (u_analysis >= 1 && u_analysis <= 4) {
+        if (abs(v_scalar) > 1e20) {
+            // Undefined (a pole, a zero denominator): hatched, never a made-up colour.
+            float h = mod(floor((gl_FragCoord.x + gl_FragCoord.y) / 6.0), 2.0);
+            base = mix(vec3(0.35), vec3(0.55), h);
+        } else if (u_diverging == 1) {
+            float m = max(abs(u_range.x), abs(u_range.y));
+            base = diverging(clamp(m > 0.0 ? v_scalar / m : 0.0, -1.0, 1.0));
+        } else {
+            float w = u_range.y - u_range.x;
+            base = sequential(clamp(w > 0.0 ? (v_scalar - u_range.x) / w : 0.5, 0.0, 1.0));
+        }
+        light = 0.55 + 0.5 * diffuse; // the colour carries the value: lighting only hints shape
+        spec *= 0.3;
+    } else if (u_analysis == 5) {
+        // Zebra: stripes of the reflected view direction (a striped environment), so a
+        // curvature jump kinks them and a tangent jump breaks them.
+        vec3 r = reflect(-view_dir, n);
+        float s = fract(asin(clamp(dot(r.xy, u_zebra_dir), -1.0, 1.0)) / 3.14159265 * u_stripes);
+        base = vec3(s < 0.5 ? 0.06 : 0.94);
+        light = 1.0;
+        spec = 0.0;
+    } else if (u_analysis == 6) {
+        // Isophotes: curves of equal angle between the normal and the key light.
+        float a = acos(clamp(dot(n, key), -1.0, 1.0)) / 3.14159265 * u_stripes;
+        base = fract(a) < 0.5 ? base : base * 0.35;
+    }
+    vec3 rgb = base * light * side + vec3(spec);
     frag = vec4(rgb, u_color.a);
 }
 )";

@@ -1,6 +1,8 @@
 // Mesh cache helpers: surface comparison, wireframe indices, vertex interleaving.
 #include "ui/view/mesh_data.hpp"
 
+#include <cmath>
+
 #include <algorithm>
 
 namespace isoparm::ui {
@@ -37,17 +39,24 @@ std::vector<std::uint32_t> wire_indices(int su, int sv, const std::vector<std::u
     return out;
 }
 
-std::vector<float> interleave(const geom::Mesh& mesh, std::size_t first, std::size_t count) {
+std::vector<float> interleave(const geom::Mesh& mesh, std::size_t first, std::size_t count,
+                              const std::vector<double>& scalars, float fallback) {
     std::vector<float> v;
     const std::size_t end =
         first + std::min(count, mesh.positions.size() - std::min(first, mesh.positions.size()));
-    v.reserve((end - std::min(first, end)) * 6);
+    v.reserve((end - std::min(first, end)) * floats_per_vertex);
     for (std::size_t k = first; k < end; ++k) {
         const glm::dvec3& p = mesh.positions[k];
         const glm::dvec3 n = k < mesh.normals.size() ? mesh.normals[k] : glm::dvec3(0, 0, 1);
-        v.insert(v.end(),
-                 {static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z),
-                  static_cast<float>(n.x), static_cast<float>(n.y), static_cast<float>(n.z)});
+        float scalar = fallback;
+        if (k - first < scalars.size()) {
+            const double value = scalars[k - first];
+            scalar = std::isfinite(value) && std::abs(value) < 1e20 ? static_cast<float>(value)
+                                                                    : undefined_scalar;
+        }
+        v.insert(v.end(), {static_cast<float>(p.x), static_cast<float>(p.y),
+                           static_cast<float>(p.z), static_cast<float>(n.x),
+                           static_cast<float>(n.y), static_cast<float>(n.z), scalar});
     }
     return v;
 }

@@ -19,9 +19,17 @@ bool same_surface(const geom::Surface& a, const geom::Surface& b);
 std::vector<std::uint32_t> wire_indices(int samples_u, int samples_v,
                                         const std::vector<std::uint8_t>& exists, int max_lines);
 
-// Interleaved float vertices (position, normal) for the GPU: vertices [first, first + count)
-// (clamped to the mesh).
+// The scalar of a vertex where the analysis value is undefined (a pole, no point, an implicit
+// surface's mesh under a curvature mode): finite, so interpolation never makes NaN, and far
+// above any curvature shown (the shader draws it hatched).
+constexpr float undefined_scalar = 1e30f;
+
+// Interleaved float vertices (position, normal, analysis scalar) for the GPU: vertices
+// [first, first + count) (clamped to the mesh). `scalars` holds one value per vertex of that
+// range (NaN: undefined); empty: every vertex gets `fallback`.
+constexpr int floats_per_vertex = 7;
 std::vector<float> interleave(const geom::Mesh& mesh, std::size_t first = 0,
-                              std::size_t count = static_cast<std::size_t>(-1));
+                              std::size_t count = static_cast<std::size_t>(-1),
+                              const std::vector<double>& scalars = {}, float fallback = 0);
 
 } // namespace isoparm::ui

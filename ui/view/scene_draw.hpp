@@ -30,8 +30,27 @@ struct SurfaceDraw {
     std::uint64_t mesh_revision = 0;
 };
 
+// The shaded surfaces' analysis colouring (doc::AnalysisMode, without the document): the
+// renderer computes the curvature kinds at the tessellation's vertices from exact derivatives
+// (geom::curvature_grid) and colours them over [lo, hi]; zebra and isophote stripes come from
+// the normals per pixel.
+enum class AnalysisKind { off, gaussian, mean, kmax, kmin, zebra, isophote };
+inline bool is_curvature(AnalysisKind k) {
+    return k == AnalysisKind::gaussian || k == AnalysisKind::mean || k == AnalysisKind::kmax ||
+           k == AnalysisKind::kmin;
+}
+struct AnalysisView {
+    AnalysisKind kind = AnalysisKind::off;
+    float lo = -1, hi = 1; // the colour bar's range (curvature kinds)
+    bool diverging = true; // blue - white - red about zero, else a sequential map lo .. hi
+    int stripes = 12;      // zebra / isophote stripes
+    float zebra_angle = 0; // degrees, the stripes' direction on screen
+    bool operator==(const AnalysisView&) const = default;
+};
+
 struct SceneView {
     Camera camera;
+    AnalysisView analysis;
     int width = 1, height = 1; // framebuffer pixels
     glm::vec4 background{0.13f, 0.14f, 0.17f, 1};
     bool operator==(const SceneView&) const = default;
