@@ -133,6 +133,7 @@ struct CurveDesignerState {
     glm::dvec2 frame_lo{0}, frame_hi{0};
     int drag_knot = -1;                       // knot being dragged on the knot strip, -1 none
     bool trace = true;                        // show de Boor's construction at trace_t
+    bool comb = false, osculating = false, frenet = false; // curvature at a glance
     double trace_t = 0.4;                     // normalised to [0, 1] over the domain
     double insert_t = 0.5;                    // knot insertion parameter (normalised)
     bool carry_points = true;                 // changing the plane moves the drawing into it

@@ -127,7 +127,9 @@ void Workstation::splitters() {
                               d);
         });
     }
-    for (std::size_t k = 0; k < ui.layout.right_row_splitters.size(); ++k) {
+    // The Fit panel spans the right column: no row splitter across it.
+    const std::size_t right_rows = ui.fit.open ? 0 : ui.layout.right_row_splitters.size();
+    for (std::size_t k = 0; k < right_rows; ++k) {
         std::snprintf(id, sizeof id, "##split_rrow%zu", k);
         bar(id, ui.layout.right_row_splitters[k], false, [&](float d) {
             drag_row_splitter(prefs, ui.layout, ui.layout_input, Side::right, static_cast<int>(k),
@@ -183,8 +185,13 @@ void Workstation::layout_panels() {
     ImGui::PopStyleVar();
     // An implicit surface has no control points: its editor takes their place.
     const doc::Object* sel = ctx_.doc.selected();
-    if (ui.fit.open) {
-        if (begin_panel("Fit", l.right[0])) draw_fit_panel(ctx_);
+    // The Fit panel takes the whole right column while it is open (a canvas, its settings and
+    // its buttons need the height on a projector); Objects and display come back on Close.
+    const bool fitting = ui.fit.open;
+    if (fitting) {
+        const Rect column{l.right[0].x, l.right[0].y, l.right[0].w,
+                          l.right[1].y + l.right[1].h - l.right[0].y};
+        if (begin_panel("Fit", column)) draw_fit_panel(ctx_);
     } else if (sel && sel->kind() == doc::ObjectKind::implicit) {
         if (begin_panel("Implicit surface", l.right[0])) draw_implicit_panel(ctx_);
     } else if (sel && sel->kind() == doc::ObjectKind::curve) {
@@ -194,21 +201,24 @@ void Workstation::layout_panels() {
     }
     ImGui::End();
     // The scene's objects and the display settings share the slot as tabs.
-    if (begin_panel("Objects and display", l.right[1], ImGuiWindowFlags_NoTitleBar) &&
-        ImGui::BeginTabBar("##right_tabs")) {
-        const ImGuiTabItemFlags bring = ui.object_list.show_tab ? ImGuiTabItemFlags_SetSelected : 0;
-        ui.object_list.show_tab = false;
-        if (ImGui::BeginTabItem("Objects", nullptr, bring)) {
-            draw_object_list_panel(ctx_);
-            ImGui::EndTabItem();
+    if (!fitting) {
+        if (begin_panel("Objects and display", l.right[1], ImGuiWindowFlags_NoTitleBar) &&
+            ImGui::BeginTabBar("##right_tabs")) {
+            const ImGuiTabItemFlags bring =
+                ui.object_list.show_tab ? ImGuiTabItemFlags_SetSelected : 0;
+            ui.object_list.show_tab = false;
+            if (ImGui::BeginTabItem("Objects", nullptr, bring)) {
+                draw_object_list_panel(ctx_);
+                ImGui::EndTabItem();
+            }
+            if (ImGui::BeginTabItem("Display")) {
+                draw_control_panel(ctx_);
+                ImGui::EndTabItem();
+            }
+            ImGui::EndTabBar();
         }
-        if (ImGui::BeginTabItem("Display")) {
-            draw_control_panel(ctx_);
-            ImGui::EndTabItem();
-        }
-        ImGui::EndTabBar();
+        ImGui::End();
     }
-    ImGui::End();
     // A splitter drag shows from the next frame.
     splitters();
 }

@@ -104,4 +104,12 @@ Knots bezier_knots(int p, double a, double b) {
     return U;
 }
 
+std::string continuity_text(int degree, int multiplicity) {
+    const int c = continuity_at_knot(degree, multiplicity);
+    if (c < 0) return "not continuous here (C-1): the pieces need not meet";
+    std::string text = "C" + std::to_string(c) + " here";
+    if (c == 0) text += ": the pieces meet, a corner may appear";
+    return text;
+}
+
 } // namespace isoparm::geom

@@ -1,6 +1,8 @@
 // Knot vectors: validation with precise messages, multiplicities, spans and domains.
 #pragma once
 
+#include <string>
+
 #include "core/geom/status.hpp"
 #include "core/geom/types.hpp"
 
@@ -51,5 +53,15 @@ std::vector<KnotRun> knot_runs(const Knots& U);
 Knots clamped_uniform_knots(int n, int p, double a = 0.0, double b = 1.0);
 // Bezier knots a^(p+1) b^(p+1).
 Knots bezier_knots(int p, double a = 0.0, double b = 1.0);
+
+// The parametric continuity a B-spline of degree p has at an interior knot of multiplicity m:
+// C^(p - m) (Piegl & Tiller sec. 2.3, P2.5); -1 means not even continuous (m = p + 1). A
+// coincidence of control points can make the shape smoother than this; never less smooth.
+inline int continuity_at_knot(int degree, int multiplicity) {
+    return degree - multiplicity;
+}
+
+// "C1 here", "C0 here: a corner may appear", "not continuous here (C-1)" for tooltips.
+std::string continuity_text(int degree, int multiplicity);
 
 } // namespace isoparm::geom

@@ -91,3 +91,13 @@ TEST(Knots, Runs) {
     EXPECT_EQ(runs[1].multiplicity, 2);
     EXPECT_EQ(runs[1].first_index, 3);
 }
+
+TEST(KnotContinuity, MultiplicityLowersContinuityOneOrderAtATime) {
+    EXPECT_EQ(isoparm::geom::continuity_at_knot(3, 1), 2);
+    EXPECT_EQ(isoparm::geom::continuity_at_knot(3, 3), 0);
+    EXPECT_EQ(isoparm::geom::continuity_text(3, 2), "C1 here");
+    EXPECT_EQ(isoparm::geom::continuity_text(2, 2),
+              "C0 here: the pieces meet, a corner may appear");
+    EXPECT_EQ(isoparm::geom::continuity_text(2, 3),
+              "not continuous here (C-1): the pieces need not meet");
+}

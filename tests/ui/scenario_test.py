@@ -314,7 +314,7 @@ def toolbox_split_knot_then_convert(s, ctx):
     """Surface menu: split the double knot v = 0.5 under the indicator (the shape moves a
     little, the knots change), then Convert to > Bezier asks first and makes the pieces."""
     before = s.save()
-    s.menu("Surface", "Split knot v = 0.5 (x2)")
+    s.menu("Surface", "Reshape", "Split knot v = 0.5 (x2)")
     r = s.wait_for("the split knot", lambda r: r["undo"].startswith("Split knot v = 0.5"))
     after = s.save()
     k0 = by_name(before, "vase")["surface"]["knots"][1]

@@ -231,6 +231,7 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const doc::CurveObjec
                               rgba(col.knot_curves));
         }
     }
+    draw_curve_analysis(ctx, g, trace_param(ctx, g), dl, px);
     // Control points, labelled P0..Pn while the labels stay readable.
     const int sel = ctx.doc.view.selection.object == id ? ctx.doc.view.selection.i : -1;
     const ImU32 text_col = ImGui::GetColorU32(ImGuiCol_Text);

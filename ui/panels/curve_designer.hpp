@@ -2,6 +2,7 @@
 // strip and the basis plot, each drawn into a rectangle the panel lays out.
 #pragma once
 
+#include <functional>
 #include <imgui.h>
 
 #include "core/doc/document.hpp"
@@ -31,6 +32,15 @@ void knot_strip(AppContext& ctx, const doc::Object& obj, const doc::CurveObject&
 // Every N_i(t) (R_i for rational curves) faint, the selected point's highlighted, the trace
 // parameter marked with its value.
 void basis_plot(AppContext& ctx, const doc::CurveObject& c, int selected, const Rect& box);
+
+// Differential geometry of the curve (curve_analysis.cpp): the Comb / Osculating circle /
+// Frenet frame check boxes; what they show on the canvas at t (px maps a 3D point to the
+// canvas); curvature against t over the domain, the trace parameter marked, kappa and tau
+// written.
+void analysis_toggles(AppContext& ctx);
+void draw_curve_analysis(const AppContext& ctx, const geom::Curve& c, double t, ImDrawList* dl,
+                         const std::function<ImVec2(const glm::dvec3&)>& px);
+void curvature_plot(AppContext& ctx, const geom::Curve& c, const Rect& box);
 
 // Colours shared by the pieces.
 ImU32 rgba(const doc::Rgba& c, float alpha = 1);

@@ -260,7 +260,7 @@ void toolbox_row(AppContext& ctx) {
     bool first = true;
     for (const Entry& e : entries) {
         const ActionState a = tool_state(ctx, e.tool, geom::Dir::u, true);
-        if (!first) ImGui::SameLine();
+        if (!first) same_line_if_fits(button_width(e.label));
         first = false;
         ImGui::BeginDisabled(!a.enabled);
         const bool pressed = ImGui::Button(e.label);
@@ -363,9 +363,14 @@ void draw_curve_designer_panel(AppContext& ctx) {
     }
     if (!(c = selected_curve(ctx, &obj))) return;
     refine_controls(ctx, *obj, *c);
+    analysis_toggles(ctx);
     if (!(c = selected_curve(ctx, &obj))) return;
     toolbox_row(ctx);
     if (!(c = selected_curve(ctx, &obj))) return;
+    if (ImGui::CollapsingHeader("Curvature")) {
+        const ImVec2 p = ImGui::GetCursorScreenPos();
+        curvature_plot(ctx, c->curve, {p.x, p.y, ImGui::GetContentRegionAvail().x, 80 * k});
+    }
     if (ImGui::CollapsingHeader("Basis functions", ImGuiTreeNodeFlags_DefaultOpen)) {
         const int sel = ctx.doc.view.selection.object == id ? ctx.doc.view.selection.i : -1;
         const ImVec2 p = ImGui::GetCursorScreenPos();

@@ -19,6 +19,7 @@
 #include "ui/panels/curve_designer.hpp"
 #include "ui/panels/enum_combo.hpp"
 #include "ui/panels/fit_panel.hpp"
+#include "ui/panels/flow.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/panels/plane_canvas.hpp"
 #include "ui/theme.hpp"
@@ -197,7 +198,7 @@ void settings(AppContext& ctx) {
     {
         // Two choices, both in view: a radio pair rather than a combo.
         for (const auto& m : doc::fit_method_names) {
-            if (m.value != doc::FitMethod::interpolate) ImGui::SameLine();
+            if (m.value != doc::FitMethod::interpolate) same_line_if_fits(toggle_width(m.label));
             if (ImGui::RadioButton(m.label, s.method == m.value)) {
                 changed |= s.method != m.value;
                 s.method = m.value;
@@ -215,22 +216,24 @@ void settings(AppContext& ctx) {
     ImGui::SetNextItemWidth(w);
     changed |= ImGui::InputInt(grid ? "u-degree" : "Degree", &s.degree);
     if (grid) {
-        ImGui::SameLine();
+        same_line_if_fits(w + ImGui::CalcTextSize("v-degree").x + 8 * ctx.ui.scale());
         ImGui::SetNextItemWidth(w);
         changed |= ImGui::InputInt("v-degree", &s.degree_v);
         if (s.method == doc::FitMethod::approximate) {
             ImGui::SetNextItemWidth(w);
             changed |= ImGui::InputInt("u points", &s.count);
-            ImGui::SameLine();
+            same_line_if_fits(w + ImGui::CalcTextSize("v points").x + 8 * ctx.ui.scale());
             ImGui::SetNextItemWidth(w);
             changed |= ImGui::InputInt("v points", &s.count_v);
         }
     } else if (s.method == doc::FitMethod::approximate) {
-        ImGui::SameLine();
+        same_line_if_fits(w + ImGui::CalcTextSize("Control points").x + 8 * ctx.ui.scale());
         ImGui::SetNextItemWidth(w);
         changed |= ImGui::InputInt("Control points", &s.count);
     }
-    ImGui::SetNextItemWidth(150 * ctx.ui.scale());
+    ImGui::SetNextItemWidth(std::min(150 * ctx.ui.scale(), ImGui::GetContentRegionAvail().x -
+                                                               ImGui::CalcTextSize("Parameters").x -
+                                                               8 * ctx.ui.scale()));
     changed |= enum_combo("Parameters", s.parametrization);
     if (changed) f.stale = true;
 }
@@ -244,15 +247,18 @@ void summary(AppContext& ctx) {
         return;
     }
     if (!f.fit) return;
-    const bool through = f.settings.method == doc::FitMethod::interpolate;
-    if (through)
-        ImGui::TextWrapped("Passes through every point (largest distance %.3g, numerical).",
-                           f.fit->max_error);
+    // Where the data came from, then how near the fit is: two short lines in a narrow panel.
+    const std::string data =
+        f.rows > 1 ? std::to_string(f.rows) + " x " + std::to_string(f.columns) + " grid"
+                   : std::to_string(f.points.size()) + " points";
+    const std::string from = f.source.empty() ? "" : " (" + f.source + ")";
+    if (f.settings.method == doc::FitMethod::interpolate)
+        ImGui::TextWrapped("%s%s: through every one (largest distance %.2g).", data.c_str(),
+                           from.c_str(), f.fit->max_error);
     else
-        ImGui::TextWrapped("Largest distance %.4g, RMS %.4g over %zu points (the red whiskers); "
-                           "the %s kept exactly.",
-                           f.fit->max_error, f.fit->rms_error, f.points.size(),
-                           f.rows > 1 ? "four corners are" : "ends are");
+        ImGui::TextWrapped("%s%s: largest distance %.4g, RMS %.4g (red whiskers); %s kept.",
+                           data.c_str(), from.c_str(), f.fit->max_error, f.fit->rms_error,
+                           f.rows > 1 ? "corners" : "ends");
     report_fact("fit/max_error", f.fit->max_error);
     report_fact("fit/rms_error", f.fit->rms_error);
 }
@@ -306,33 +312,33 @@ void open_fit_panel(AppContext& ctx) {
 void draw_fit_panel(AppContext& ctx) {
     FitState& f = ctx.ui.fit;
     const float k = ctx.ui.scale();
-    if (f.rows > 1)
-        ImGui::TextWrapped("A %d x %d grid from %s: a surface %s it", f.rows, f.columns,
-                           f.source.c_str(),
-                           f.settings.method == doc::FitMethod::interpolate ? "through" : "near");
-    else
-        ImGui::Text("%zu data points%s%s", f.points.size(), f.source.empty() ? "" : " from ",
-                    f.source.c_str());
     for (int p = 0; p < 3; ++p) {
-        if (p) ImGui::SameLine();
+        if (p) same_line_if_fits(toggle_width(plane_axes[p].name));
         ImGui::RadioButton(plane_axes[p].name, &f.plane, p);
     }
-    ImGui::SameLine();
-    ImGui::TextDisabled("plane");
     settings(ctx);
+    refit(f);
+    // The canvas, then a summary of fixed height and the buttons: nothing above the canvas
+    // changes height while points are clicked, and a projector's short panel still shows every
+    // button (the canvas gives way first).
+    const float line = ImGui::GetTextLineHeightWithSpacing();
+    const float summary_h = line * 3;
+    const float reserved =
+        summary_h + ImGui::GetFrameHeightWithSpacing() * 2 + ImGui::GetStyle().ItemSpacing.y * 2;
     const ImVec2 avail = ImGui::GetContentRegionAvail();
-    const float below = ImGui::GetFrameHeightWithSpacing() * 2 + ImGui::GetTextLineHeight() * 3;
-    const float h = std::clamp(avail.y - below, 100 * k, avail.x * 1.2f);
+    const float h = std::clamp(avail.y - reserved, 70 * k, std::max(avail.x * 1.2f, 70 * k));
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     canvas(ctx, {origin.x, origin.y, avail.x, h});
     ImGui::SetCursorScreenPos(ImVec2(origin.x, origin.y + h + ImGui::GetStyle().ItemSpacing.y));
+    ImGui::BeginChild("##fit_summary", ImVec2(avail.x, summary_h));
     summary(ctx);
+    ImGui::EndChild();
     if (ImGui::Button("Load...")) request_load_points_dialog(ctx);
     if (ImGui::IsItemHovered())
         wrapped_tooltip("Points from a CSV or XYZ file: x y or x y z a line; blank lines between "
                         "the rows of a grid make a surface.");
     report_item("fit/load");
-    ImGui::SameLine();
+    same_line_if_fits(button_width("Clear"));
     if (ImGui::Button("Clear")) {
         // The points go; the plane and the settings stay.
         FitState cleared;
@@ -341,12 +347,12 @@ void draw_fit_panel(AppContext& ctx) {
         cleared.settings = f.settings;
         f = std::move(cleared);
     }
-    ImGui::SameLine();
+    same_line_if_fits(button_width("Add to scene"));
     ImGui::BeginDisabled(!f.fit);
     if (ImGui::Button("Add to scene")) add_to_scene(ctx);
     ImGui::EndDisabled();
     report_item("fit/add");
-    ImGui::SameLine();
+    same_line_if_fits(button_width("Close"));
     if (ImGui::Button("Close")) f.open = false;
     report_item("fit/close");
 }

@@ -111,6 +111,15 @@ void refine_items(AppContext& ctx) {
 // changes bounded by the tolerance, closing, and Convert to.
 void toolbox_items(AppContext& ctx, bool curve) {
     using geom::Dir;
+    // A submenu: the Surface menu must still fit a 1024x768 projector in presentation mode.
+    if (!begin_menu(curve ? "Reshape the curve" : "Reshape")) {
+        if (begin_menu(curve ? "Convert curve to" : "Convert to")) {
+            for (const auto& t : geom::spline_type_names)
+                if (menu_item(geom::label_of(t.value))) request_convert(ctx, t.value, curve);
+            ImGui::EndMenu();
+        }
+        return;
+    }
     ImGui::TextDisabled("At the knot under the indicator (the shape may change)");
     const Tool tools[] = {Tool::remove_knot, Tool::reduce_degree, Tool::split_knot, Tool::close};
     for (Tool tool : tools)
@@ -130,6 +139,7 @@ void toolbox_items(AppContext& ctx, bool curve) {
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("How far (model units) knot removal and degree reduction may move the "
                           "shape.");
+    ImGui::EndMenu();
     if (begin_menu(curve ? "Convert curve to" : "Convert to")) {
         for (const auto& t : geom::spline_type_names)
             if (menu_item(geom::label_of(t.value))) request_convert(ctx, t.value, curve);

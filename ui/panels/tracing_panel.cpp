@@ -126,10 +126,13 @@ void knot_strip(AppContext& ctx, const doc::Object& obj, const geom::Surface& s,
                 ? " (" + std::string(name) + std::to_string(t.first_index) + " .. " + name +
                       std::to_string(t.first_index + t.multiplicity - 1) + ", they move as one)"
                 : "";
-        ImGui::SetTooltip("Knot %s%d = %s, multiplicity %d%s\nDrag to move it between its "
-                          "neighbours %s and %s",
-                          name, t.first_index, short_number(t.value).c_str(), t.multiplicity,
-                          copies.c_str(), short_number(ticks[*hit - 1].value).c_str(),
+        // Why multiplicity matters: the continuity the surface has across this knot line.
+        const int p = s.degree(dir);
+        ImGui::SetTooltip("Knot %s%d = %s, multiplicity %d in degree %d: %s%s\nDrag to move it "
+                          "between its neighbours %s and %s",
+                          name, t.first_index, short_number(t.value).c_str(), t.multiplicity, p,
+                          geom::continuity_text(p, t.multiplicity).c_str(), copies.c_str(),
+                          short_number(ticks[*hit - 1].value).c_str(),
                           short_number(ticks[*hit + 1].value).c_str());
     }
     if (ImGui::IsItemActivated() && movable)
