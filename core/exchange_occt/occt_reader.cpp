@@ -11,13 +11,18 @@
 #include <Geom_TrimmedCurve.hxx>
 #include <IGESControl_Reader.hxx>
 #include <IGESData_IGESEntity.hxx>
+#include <IGESGeom_BSplineCurve.hxx>
+#include <IGESGeom_BSplineSurface.hxx>
 #include <Interface_InterfaceModel.hxx>
 #include <Interface_Static.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <STEPControl_Reader.hxx>
 #include <Standard_Failure.hxx>
+#include <StepGeom_BSplineCurveWithKnotsAndRationalBSplineCurve.hxx>
+#include <StepGeom_BSplineSurfaceWithKnotsAndRationalBSplineSurface.hxx>
 #include <StepRepr_RepresentationItem.hxx>
+#include <StepShape_FaceSurface.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TCollection_HAsciiString.hxx>
 #include <TopExp_Explorer.hxx>
@@ -94,6 +99,10 @@ struct Found {
     std::string name;
     exchange::ExactShape shape;
     bool converted = false;
+    // The file wrote the B-spline in its rational form (IGES 5.3 4.23/4.24 PROP3 = 0; STEP: the
+    // complex instance with RATIONAL_B_SPLINE_SURFACE / _CURVE, ISO 10303-42 4.4), even with
+    // all weights 1, which OCCT reads as non-rational: the object stays NURBS, as it was.
+    bool file_rational = false;
     std::string skip_reason;
 };
 
@@ -123,10 +132,23 @@ void describe(Found& f, const XSControl_Reader& reader, CadFormat format,
             f.name = text_of(e->NameValue());
         else if (!e.IsNull() && e->HasShortLabel())
             f.name = text_of(e->ShortLabel());
+        if (auto b = Handle(IGESGeom_BSplineSurface)::DownCast(ent); !b.IsNull())
+            f.file_rational = !b->IsPolynomial(Standard_True);
+        if (auto b = Handle(IGESGeom_BSplineCurve)::DownCast(ent); !b.IsNull())
+            f.file_rational = !b->IsPolynomial(Standard_True);
     } else {
         Handle(StepRepr_RepresentationItem) item =
             Handle(StepRepr_RepresentationItem)::DownCast(ent);
         if (!item.IsNull()) f.name = text_of(item->Name());
+        Handle(Standard_Transient) geometry = ent;
+        if (auto face = Handle(StepShape_FaceSurface)::DownCast(ent); !face.IsNull())
+            geometry = face->FaceGeometry();
+        f.file_rational =
+            !geometry.IsNull() &&
+            (geometry->IsKind(
+                 STANDARD_TYPE(StepGeom_BSplineSurfaceWithKnotsAndRationalBSplineSurface)) ||
+             geometry->IsKind(
+                 STANDARD_TYPE(StepGeom_BSplineCurveWithKnotsAndRationalBSplineCurve)));
     }
 }
 
@@ -331,6 +353,12 @@ geom::Expected<exchange::ImportResult> read_locked(const std::string& path, CadF
     });
     exchange::ImportResult out;
     for (Found& f : found) {
+        if (f.converted && f.file_rational) {
+            if (auto* c = std::get_if<geom::Curve>(&f.shape))
+                c->type = geom::SplineType::nurbs;
+            else
+                std::get<geom::Surface>(f.shape).type = geom::SplineType::nurbs;
+        }
         if (f.converted)
             out.objects.push_back({f.name, std::move(f.shape)});
         else
