@@ -1,19 +1,27 @@
-// Entry point of `isoparm`: dispatches to the workstation, `render`, `script`, `geom` or
-// `export`.
+// Entry point of `isoparm`: dispatches to the workstation, `render`, `script`, `geom`,
+// `export` or `import`.
 #include <CLI/CLI.hpp>
 #include <iostream>
 
 #include "app/commands.hpp"
 #include "core/scene/atomic_file.hpp"
+#ifdef ISOPARM_HAVE_OCCT
+#include "core/exchange_occt/occt_reader.hpp"
+#endif
 
 int main(int argc, char** argv) {
     // A file-size limit (ulimit -f) must be an error a write reports, not a signal that kills
     // the program halfway through a save and leaves its temporary file behind.
     isoparm::scene::make_file_size_limit_an_error();
+#ifdef ISOPARM_HAVE_OCCT
+    // IGES and STEP import (isoparm import, File > Import, the `import` op) read through OCCT.
+    isoparm::exchange_occt::install();
+#endif
     CLI::App app{"isoparm: an interactive workstation for learning and designing NURBS surfaces"};
     app.set_version_flag("--version", "isoparm " ISOPARM_VERSION);
     const isoparm::app::Action geom = isoparm::app::register_geom_command(app);
     const isoparm::app::Action export_scene = isoparm::app::register_export_command(app);
+    const isoparm::app::Action import_file = isoparm::app::register_import_command(app);
 #ifdef ISOPARM_HAVE_GUI
     const isoparm::app::Action render = isoparm::app::register_render_command(app);
     const isoparm::app::Action gui = isoparm::app::register_gui_command(app);
@@ -28,6 +36,7 @@ int main(int argc, char** argv) {
     for (CLI::App* sub : app.get_subcommands()) {
         if (sub->get_name() == "geom") return geom();
         if (sub->get_name() == "export") return export_scene();
+        if (sub->get_name() == "import") return import_file();
 #ifdef ISOPARM_HAVE_GUI
         if (sub->get_name() == "render") return render();
         if (sub->get_name() == "examples") return examples();

@@ -70,7 +70,9 @@ struct FileDialog {
         save,
         save_recording,
         open_lesson,
-        load_points
+        load_points,
+        export_file, // File > Export... (ui/exchange_actions.hpp)
+        import_file  // File > Import...
     } mode = Mode::closed;
     bool just_opened = false;
     std::string directory;

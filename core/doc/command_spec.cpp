@@ -12,6 +12,9 @@ struct Build {
     std::unique_ptr<Command> operator()(AddObjectSpec& s) {
         return add_object(std::move(s.object));
     }
+    std::unique_ptr<Command> operator()(AddObjectsSpec& s) {
+        return add_objects(std::move(s.objects), std::move(s.label));
+    }
     std::unique_ptr<Command> operator()(RemoveObjectSpec& s) { return remove_object(s.id); }
     std::unique_ptr<Command> operator()(RenameObjectSpec& s) {
         return rename_object(s.id, std::move(s.name));

@@ -135,6 +135,11 @@ struct CloseSpec {
     std::uint64_t id = 0;
     geom::Dir dir = geom::Dir::u;
 };
+// Several new objects as one undo step (an import); label: the undo label, may be empty.
+struct AddObjectsSpec {
+    std::vector<Object> objects;
+    std::string label;
+};
 struct ConvertSpec {
     std::uint64_t id = 0;
     geom::SplineType to = geom::SplineType::nurbs;
@@ -148,7 +153,7 @@ using CommandSpec =
                  SplitSpec, ConformBordersSpec, SetColorsSpec, InsertCurvePointSpec,
                  DeleteCurvePointSpec, MoveCurvePointSpec, SetCurveDegreeSpec, SetCurveKnotModeSpec,
                  SetCurvePlaneSpec, MakeCompatibleSpec, RemoveKnotSpec, ReduceDegreeSpec,
-                 SplitKnotSpec, CloseSpec, ConvertSpec>;
+                 SplitKnotSpec, CloseSpec, ConvertSpec, AddObjectsSpec>;
 
 // The command's name as scripts spell it ("edit_point"), indexed like CommandSpec.
 inline constexpr const char* command_names[] = {
@@ -177,6 +182,7 @@ inline constexpr const char* command_names[] = {
     "split_knot",
     "close",
     "convert",
+    "add_objects",
 };
 static_assert(std::size(command_names) == std::variant_size_v<CommandSpec>);
 

@@ -18,6 +18,10 @@ namespace isoparm::doc {
 // "/<colour>/<channel>" (set_colors). Codes as in the geometry protocol.
 
 std::unique_ptr<Command> add_object(Object object); // id assigned on apply if 0
+// Several objects as one undo step (File > Import), in order; each checked as add_object
+// checks it, every one before any is added ("/objects/k/..."); objects without an id get fresh
+// ids after every id in use. label: the undo label (empty: "Add N objects"). add_objects.cpp.
+std::unique_ptr<Command> add_objects(std::vector<Object> objects, std::string label = {});
 std::unique_ptr<Command> remove_object(std::uint64_t id);
 std::unique_ptr<Command> rename_object(std::uint64_t id, std::string name);
 // Hidden objects are neither drawn nor picked; they stay in the scene (the object list).

@@ -48,6 +48,7 @@ OpResult op_triangle_elevate(const json& request);
 OpResult op_triangle_split(const json& request);
 OpResult op_de_casteljau(const json& request);
 OpResult op_export(const json& request); // op_export.cpp
+OpResult op_import(const json& request); // op_import.cpp
 OpResult op_split_knot(const json& request);
 OpResult op_tessellate(const json& request);  // op_tessellate.cpp
 OpResult op_insert_knot(const json& request); // op_refine.cpp

@@ -139,6 +139,17 @@ Expected<glm::dmat4> matrix_from_json(const json& v, const std::string& at) {
     return m;
 }
 
+Expected<std::vector<Object>> objects_from_json(const json& v, const std::string& at) {
+    if (!v.is_array()) return schema_error("objects is an array of objects", at);
+    std::vector<Object> objects;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+        auto o = object_from_json(v[k], at + "/" + std::to_string(k));
+        if (!o) return o.error();
+        objects.push_back(std::move(o).value());
+    }
+    return objects;
+}
+
 Expected<std::vector<std::uint64_t>> ids_from_json(const json& v, const std::string& at) {
     if (!v.is_array()) return schema_error("ids is an array of object ids", at);
     std::vector<std::uint64_t> ids;
@@ -152,6 +163,13 @@ Expected<std::vector<std::uint64_t>> ids_from_json(const json& v, const std::str
 
 json to_json(const AddObjectSpec& s) {
     return {{"object", object_to_json(s.object)}};
+}
+json to_json(const AddObjectsSpec& s) {
+    json objects = json::array();
+    for (const Object& o : s.objects) objects.push_back(object_to_json(o));
+    json j = {{"objects", std::move(objects)}};
+    if (!s.label.empty()) j["label"] = s.label;
+    return j;
 }
 json to_json(const RemoveObjectSpec& s) {
     return {{"id", s.id}};
@@ -271,6 +289,7 @@ const std::initializer_list<std::string_view> command_members[] = {
     {"id", "direction", "knot", "delta"},              // split_knot
     {"id", "direction"},                               // close
     {"id", "to", "reset_weights"},                     // convert
+    {"objects", "label"},                              // add_objects
 };
 static_assert(std::size(command_members) == std::size(command_names));
 
@@ -386,6 +405,9 @@ CommandSpec read_spec(std::size_t index, Members& m) {
     }
     case 23:
         return CloseSpec{m.id("id"), m.named<geom::Dir>("direction", "direction")};
+    case 25:
+        return AddObjectsSpec{m.read<std::vector<Object>>("objects", objects_from_json),
+                              m.text("label", "")};
     default: {
         ConvertSpec s;
         s.id = m.id("id");

@@ -55,6 +55,7 @@ std::vector<CommandSpec> one_of_each() {
         SplitKnotSpec{curve_id, Dir::u, 0.5, 0.02},
         CloseSpec{curve_id, Dir::u},
         ConvertSpec{grid_id, geom::SplineType::bezier, true},
+        AddObjectsSpec{{added, added}, "Import two"},
     };
 }
 

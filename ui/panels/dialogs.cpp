@@ -11,6 +11,7 @@
 #include "core/doc/commands.hpp"
 #include "core/doc/placement.hpp"
 #include "ui/actions.hpp"
+#include "ui/exchange_actions.hpp"
 #include "ui/panels/enum_combo.hpp"
 #include "ui/panels/fit_panel.hpp"
 #include "ui/panels/panels.hpp"
@@ -114,7 +115,8 @@ struct Entry {
     bool directory;
 };
 
-std::vector<Entry> list_directory(const std::string& dir) {
+// Scenes, or (exchange = true) the exchange formats' files.
+std::vector<Entry> list_directory(const std::string& dir, bool exchange = false) {
     std::vector<Entry> out;
     std::error_code ec;
     for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
@@ -122,7 +124,8 @@ std::vector<Entry> list_directory(const std::string& dir) {
         if (name.empty() || name[0] == '.') continue;
         std::error_code e2;
         const bool is_dir = it->is_directory(e2);
-        if (is_dir || it->path().extension() == ".json") out.push_back({name, is_dir});
+        if (is_dir || (exchange ? is_exchange_file(name) : it->path().extension() == ".json"))
+            out.push_back({name, is_dir});
     }
     std::sort(out.begin(), out.end(), [](const Entry& a, const Entry& b) {
         return a.directory != b.directory ? a.directory : a.name < b.name;
@@ -141,11 +144,15 @@ void file_dialog(AppContext& ctx) {
     const bool lesson = fd.mode == FileDialog::Mode::open_lesson;
     const bool points = fd.mode == FileDialog::Mode::load_points;
     const bool saving = fd.mode == FileDialog::Mode::save || recording;
-    const char* title = recording ? "Save recording as script"
-                        : saving  ? "Save scene as"
-                        : lesson  ? "Open lesson (a script)"
-                        : points  ? "Load data points (CSV or XYZ)"
-                                  : "Open scene";
+    const bool exporting = fd.mode == FileDialog::Mode::export_file;
+    const bool importing = fd.mode == FileDialog::Mode::import_file;
+    const char* title = recording   ? "Save recording as script"
+                        : saving    ? "Save scene as"
+                        : exporting ? "Export visible objects (.step .igs .obj .stl .ply .glb)"
+                        : importing ? "Import curves and surfaces (.step .igs .obj)"
+                        : lesson    ? "Open lesson (a script)"
+                        : points    ? "Load data points (CSV or XYZ)"
+                                    : "Open scene";
     if (fd.just_opened) {
         ImGui::OpenPopup(title);
         fd.just_opened = false;
@@ -162,7 +169,7 @@ void file_dialog(AppContext& ctx) {
     std::string chosen;
     const float list_h = ImGui::GetTextLineHeightWithSpacing() * 14;
     if (ImGui::BeginChild("##files", ImVec2(0, list_h), true)) {
-        for (const Entry& e : list_directory(fd.directory)) {
+        for (const Entry& e : list_directory(fd.directory, exporting || importing)) {
             const std::string label = e.directory ? e.name + "/" : e.name;
             if (ImGui::Selectable(label.c_str(), !e.directory && e.name == fd.name,
                                   ImGuiSelectableFlags_AllowDoubleClick)) {
@@ -184,14 +191,19 @@ void file_dialog(AppContext& ctx) {
     fs::path target = fs::path(fd.directory) / fd.name;
     if (saving && !fd.name.empty() && target.extension().empty()) target += ".json";
     std::error_code ec;
-    if (saving && !fd.name.empty() && fs::exists(target, ec))
+    if ((saving || exporting) && !fd.name.empty() && fs::exists(target, ec))
         ImGui::TextDisabled("%s exists and will be replaced.", target.filename().string().c_str());
-    if (!fd.error.empty()) ImGui::TextColored(error_text_color(), "%s", fd.error.c_str());
+    if (!fd.error.empty()) { // wrapped: a refused export names the extensions it knows
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextColored(error_text_color(), "%s", fd.error.c_str());
+        ImGui::PopTextWrapPos();
+    }
     if (recording && ctx.ui.finished_recording)
         ImGui::TextDisabled("A script of %zu steps. Cancel goes on recording; Discard drops it.",
                             ctx.ui.finished_recording->step_count());
     ImGui::BeginDisabled(fd.name.empty());
-    if (ImGui::Button(saving ? "Save" : "Open")) chosen = fd.name;
+    if (ImGui::Button(exporting ? "Export" : importing ? "Import" : saving ? "Save" : "Open"))
+        chosen = fd.name;
     ImGui::EndDisabled();
     ImGui::SameLine();
     bool close = false;
@@ -212,7 +224,11 @@ void file_dialog(AppContext& ctx) {
     if (!chosen.empty()) {
         target = fs::path(fd.directory) / chosen;
         if (saving && target.extension().empty()) target += ".json";
-        if (recording) {
+        if (exporting || importing) {
+            // A refusal keeps the dialog open with the reason; nothing was written or added.
+            close = exporting ? export_visible_objects(ctx, target.string(), fd.error)
+                              : import_objects(ctx, target.string(), fd.error);
+        } else if (recording) {
             if (save_recording(ctx, target.string())) close = true;
         } else if (saving) {
             if (save_as(ctx, target.string())) {

@@ -10,6 +10,7 @@
 
 #include "core/doc/commands.hpp"
 #include "ui/actions.hpp"
+#include "ui/exchange_actions.hpp"
 #include "ui/panels/fit_panel.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/surface_actions.hpp"
@@ -50,6 +51,9 @@ void file_menu(AppContext& ctx) {
     }
     if (menu_item("Save", "Ctrl+S")) save(ctx);
     if (menu_item("Save As...", "Ctrl+Shift+S")) request_save_as(ctx);
+    // Exchange files (core/scene/export_document, import_document): ui/exchange_actions.hpp.
+    if (menu_item("Export...")) request_export_dialog(ctx);
+    if (menu_item("Import...")) request_import_dialog(ctx);
     ImGui::Separator();
     if (menu_item("Open lesson...")) request_open_lesson_dialog(ctx);
     // Recording: the session's edits as a script (docs/script-format.md) to replay or to show.

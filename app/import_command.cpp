@@ -1,0 +1,69 @@
+// `isoparm import FILE -o SCENE`: the curves and surfaces of an IGES, STEP or OBJ free-form
+// file as a new scene, one object each (core/scene/import_document.hpp). IGES and STEP need the
+// OCCT reader (built where OCCT is installed; main installs it). Exit status: 0 written; 2 bad
+// input (options, a file that does not read, nothing importable), nothing written; 1 the scene
+// could not be written (the old file, if any, is intact).
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "app/commands.hpp"
+#include "core/doc/commands.hpp"
+#include "core/scene/atomic_file.hpp"
+#include "core/scene/export_document.hpp"
+#include "core/scene/import_document.hpp"
+#include "core/scene/scene_io.hpp"
+
+namespace isoparm::app {
+
+namespace {
+
+struct ImportCommandOptions {
+    std::string input, output;
+};
+
+int run(const ImportCommandOptions& o) {
+    auto fail = [](const std::string& message) {
+        std::cerr << "isoparm import: " << message << "; nothing written\n";
+        return 2;
+    };
+    if (!scene::import_format_for(o.input))
+        return fail("cannot tell the format of '" + o.input + "' from its extension (" +
+                    scene::import_extensions + ")");
+    // The output is a scene: an exchange format's extension is a slip (it would hold JSON).
+    if (o.output != "-" &&
+        (scene::import_format_for(o.output) || scene::export_format_for(o.output, false)))
+        return fail("-o names the scene to write, not an exchange file: '" + o.output +
+                    "' (name it .json)");
+    if (geom::Status st = scene::check_output_path(o.output); !st) return fail(st.error().message);
+    if (geom::Status st = scene::check_output_is_not_input(o.output, {o.input}); !st)
+        return fail(st.error().message);
+    auto imported = scene::import_file(o.input);
+    if (!imported) return fail(imported.error().message);
+    doc::Document document;
+    for (doc::Object& object : imported->objects)
+        if (geom::Status st = doc::add_object(std::move(object))->apply(document); !st)
+            return fail(st.error().message); // import_file checked them: not expected
+    for (const std::string& s : imported->skipped)
+        std::cerr << "isoparm import: skipped " << s << "\n";
+    if (geom::Status st = scene::save_scene(document, o.output); !st) {
+        std::cerr << "isoparm import: " << st.error().message << "\n";
+        return 1;
+    }
+    return 0;
+}
+
+} // namespace
+
+Action register_import_command(CLI::App& app) {
+    CLI::App* sub = app.add_subcommand(
+        "import", "Read the curves and surfaces of an IGES, STEP or OBJ free-form file into a new "
+                  "scene (format from FILE's extension)");
+    auto o = std::make_shared<ImportCommandOptions>();
+    sub->add_option("FILE", o->input, "the file to read: .igs/.iges, .stp/.step, .obj")->required();
+    sub->add_option("-o,--output", o->output, "the scene to write (.json; - for standard output)")
+        ->required();
+    return [o]() -> int { return run(*o); };
+}
+
+} // namespace isoparm::app

@@ -1,0 +1,128 @@
+#include "core/scene/import_document.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+#include "core/doc/commands.hpp"
+#include "core/exchange/cad_reader.hpp"
+#include "core/exchange/obj_reader.hpp"
+#include "core/json/input_file.hpp"
+
+namespace isoparm::scene {
+
+namespace {
+
+std::string lower_extension(const std::string& path) {
+    const auto slash = path.find_last_of('/');
+    const auto dot = path.find_last_of('.');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+    std::string ext = path.substr(dot);
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+
+const char* short_name(ImportFormat f) {
+    switch (f) {
+    case ImportFormat::iges:
+        return "iges";
+    case ImportFormat::step:
+        return "step";
+    case ImportFormat::obj:
+        return "obj";
+    }
+    return "obj";
+}
+
+std::string clean_name(const std::string& name) {
+    std::string out = name;
+    for (char& c : out)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
+    const auto first = out.find_first_not_of(' ');
+    if (first == std::string::npos) return "";
+    return out.substr(first, out.find_last_not_of(' ') - first + 1);
+}
+
+} // namespace
+
+const char* const import_extensions = ".igs/.iges, .stp/.step, .obj";
+
+std::optional<ImportFormat> import_format_for(const std::string& path) {
+    const std::string ext = lower_extension(path);
+    if (ext == ".igs" || ext == ".iges") return ImportFormat::iges;
+    if (ext == ".stp" || ext == ".step") return ImportFormat::step;
+    if (ext == ".obj") return ImportFormat::obj;
+    return std::nullopt;
+}
+
+const char* import_format_label(ImportFormat f) {
+    switch (f) {
+    case ImportFormat::iges:
+        return "IGES";
+    case ImportFormat::step:
+        return "STEP";
+    case ImportFormat::obj:
+        return "OBJ free-form";
+    }
+    return "OBJ free-form";
+}
+
+geom::Expected<ImportedObjects> import_text(std::string_view text, ImportFormat format) {
+    auto read =
+        format == ImportFormat::obj
+            ? exchange::read_obj_freeform(text)
+            : exchange::read_cad(text, format == ImportFormat::iges ? exchange::CadFormat::iges
+                                                                    : exchange::CadFormat::step);
+    if (!read) return read.error();
+    ImportedObjects out;
+    for (const exchange::SkippedEntity& s : read->skipped)
+        out.skipped.push_back(s.entity + ": " + s.reason);
+    if (read->objects.empty())
+        return geom::make_error(geom::ErrorCode::schema,
+                                std::string("the ") + import_format_label(format) +
+                                    " file holds no curve or surface isoparm can import" +
+                                    (out.skipped.empty()
+                                         ? ""
+                                         : " (skipped: " + out.skipped.front() +
+                                               (out.skipped.size() > 1 ? ", ..." : "") + ")"));
+    int k = 0;
+    doc::Document scratch;
+    for (exchange::ImportedShape& shape : read->objects) {
+        ++k;
+        doc::Object o;
+        o.name = clean_name(shape.name);
+        if (o.name.empty()) o.name = std::string(short_name(format)) + " " + std::to_string(k);
+        if (auto* c = std::get_if<geom::Curve>(&shape.shape)) {
+            doc::CurveObject co;
+            co.curve = std::move(*c);
+            co.plane = doc::CurvePlane::free3d;
+            co.knot_mode = doc::CurveKnotMode::custom;
+            o.shape = std::move(co);
+        } else {
+            o.shape = doc::SurfaceObject{std::move(std::get<geom::Surface>(shape.shape))};
+        }
+        // The document's own rules (add_object's checks, on a scratch document), so a scene
+        // written from these loads again; an object they refuse is an error naming it.
+        if (geom::Status st = doc::add_object(o)->apply(scratch); !st)
+            return geom::make_error(st.error().code, "imported object " + std::to_string(k) +
+                                                         " ('" + o.name +
+                                                         "'): " + st.error().message);
+        out.objects.push_back(std::move(o));
+    }
+    return out;
+}
+
+geom::Expected<ImportedObjects> import_file(const std::string& path) {
+    const auto format = import_format_for(path);
+    if (!format)
+        return geom::make_error(geom::ErrorCode::schema, "cannot tell the format of '" + path +
+                                                             "' from its extension (" +
+                                                             import_extensions + ")");
+    auto text = json_io::read_input_file(path);
+    if (!text) return text.error();
+    auto objects = import_text(*text, *format);
+    if (!objects)
+        return geom::make_error(objects.error().code, "'" + path + "': " + objects.error().message);
+    return objects;
+}
+
+} // namespace isoparm::scene

@@ -1,0 +1,45 @@
+// An exchange file as new scene objects: what `isoparm import` and File > Import read (the
+// formats themselves are core/exchange's: obj_reader.hpp, and cad_reader.hpp for IGES and
+// STEP through OpenCASCADE where the program installed it).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/doc/document.hpp"
+#include "core/exchange/import_result.hpp"
+#include "core/geom/status.hpp"
+
+namespace isoparm::scene {
+
+enum class ImportFormat { iges, step, obj };
+
+// The format a file name asks for, from its extension (any case): .igs/.iges, .stp/.step,
+// .obj. nullopt for any other.
+std::optional<ImportFormat> import_format_for(const std::string& path);
+// "IGES", "STEP", "OBJ free-form".
+const char* import_format_label(ImportFormat f);
+// For messages: ".igs/.iges, .stp/.step, .obj".
+extern const char* const import_extensions;
+
+struct ImportedObjects {
+    std::vector<doc::Object> objects; // ids 0: the document assigns them
+    // What the file held and isoparm left out, one sentence each, for the caller to show.
+    std::vector<std::string> skipped;
+};
+
+// The text of a file in `format` as objects, in file order: curves (custom knots, free 3D
+// plane) and surfaces, B-spline or NURBS (rational ones). Names: the file's where it gives one
+// (control characters made spaces), else "<format> k" ("iges 1", "step 2", "obj 3") counting
+// the imported objects. Errors: the reader's (the line or entity named), every object checked
+// by the document's own rules, and a file with nothing to import (`schema`, saying what was
+// skipped). On error there are no objects at all: an import is whole or nothing.
+geom::Expected<ImportedObjects> import_text(std::string_view text, ImportFormat format);
+
+// The file at `path` (a regular file of at most 256 MiB, read_input_file's rules) in the format
+// of its extension. Errors name the file.
+geom::Expected<ImportedObjects> import_file(const std::string& path);
+
+} // namespace isoparm::scene

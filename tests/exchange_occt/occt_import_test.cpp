@@ -1,0 +1,154 @@
+// IGES and STEP import through OCCT (core/exchange_occt): the gallery goes out and comes back
+// with the same numbers (and the same second export), and geometry that only OCCT makes
+// (planes, cylinders, circles, offset surfaces) comes in converted or listed as skipped.
+#include <gtest/gtest.h>
+
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRep_Builder.hxx>
+#include <Geom_CylindricalSurface.hxx>
+#include <Geom_OffsetSurface.hxx>
+#include <Geom_Plane.hxx>
+#include <IGESControl_Controller.hxx>
+#include <IGESControl_Writer.hxx>
+#include <STEPControl_Writer.hxx>
+#include <TopoDS_Compound.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
+#include <cmath>
+#include <fstream>
+#include <gp_Ax3.hxx>
+#include <gp_Circ.hxx>
+#include <gp_Pln.hxx>
+#include <sstream>
+
+#include "core/exchange_occt/occt_reader.hpp"
+#include "core/geom/evaluate.hpp"
+#include "core/geom/knots.hpp"
+#include "tests/exchange/import_round_trip.hpp"
+#include "tests/support/temp_dir.hpp"
+
+using namespace isoparm;
+
+namespace {
+
+TEST(OcctImport, EveryGallerySplineGoesOutAsIgesAndComesBackTheSame) {
+    exchange_occt::install();
+    const int identical =
+        test::expect_round_trips(scene::ExportFormat::iges, scene::ImportFormat::iges, false);
+    std::cout << "IGES: " << identical << " scenes exported byte-identical the second time\n";
+}
+
+TEST(OcctImport, EveryGallerySplineGoesOutAsStepAndComesBackTheSame) {
+    exchange_occt::install();
+    const int identical =
+        test::expect_round_trips(scene::ExportFormat::step, scene::ImportFormat::step, false);
+    std::cout << "STEP: " << identical << " scenes exported byte-identical the second time\n";
+}
+
+// A plane face (2 x 3), a quarter of a cylinder (radius 2, height 1), a face on an offset
+// B-spline-free surface and a circle edge, written by OCCT's own writers.
+TopoDS_Shape occt_made_shapes() {
+    BRep_Builder b;
+    TopoDS_Compound all;
+    b.MakeCompound(all);
+    b.Add(all, BRepBuilderAPI_MakeFace(gp_Pln(gp::XOY()), 0, 2, 0, 3).Face());
+    Handle(Geom_CylindricalSurface) cyl = new Geom_CylindricalSurface(gp_Ax3(gp::XOY()), 2);
+    b.Add(all, BRepBuilderAPI_MakeFace(cyl, 0, M_PI / 2, 0, 1, 1e-7).Face());
+    Handle(Geom_OffsetSurface) offset = new Geom_OffsetSurface(cyl, 0.5);
+    b.Add(all, BRepBuilderAPI_MakeFace(offset, 0, M_PI / 2, 0, 1, 1e-7).Face());
+    b.Add(all, BRepBuilderAPI_MakeEdge(gp_Circ(gp::XOY(), 3)).Edge());
+    return all;
+}
+
+std::string file_text(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+void expect_occt_shapes_imported(exchange::CadFormat format, const std::string& text) {
+    const char* what = format == exchange::CadFormat::iges ? "IGES" : "STEP";
+    const auto r = exchange_occt::read(text, format);
+    ASSERT_TRUE(r) << what << ": " << r.error().message;
+    int planes = 0, cylinders = 0, circles = 0;
+    for (const exchange::ImportedShape& s : r->objects) {
+        if (const auto* c = std::get_if<geom::Curve>(&s.shape)) {
+            const geom::Interval d = geom::domain(*c);
+            for (int k = 0; k <= 20; ++k) {
+                const auto p = geom::curve_point(*c, d.lo + (d.hi - d.lo) * k / 20);
+                ASSERT_TRUE(p);
+                EXPECT_NEAR(std::hypot(p->x, p->y), 3, 1e-9) << what << " circle";
+                EXPECT_NEAR(p->z, 0, 1e-9);
+            }
+            ++circles;
+            continue;
+        }
+        const auto& f = std::get<geom::Surface>(s.shape);
+        const geom::Interval du = geom::domain(f, geom::Dir::u);
+        const geom::Interval dv = geom::domain(f, geom::Dir::v);
+        bool flat = true, round = true;
+        for (int i = 0; i <= 8; ++i)
+            for (int j = 0; j <= 8; ++j) {
+                const auto p = geom::surface_point(f, du.lo + (du.hi - du.lo) * i / 8,
+                                                   dv.lo + (dv.hi - dv.lo) * j / 8);
+                ASSERT_TRUE(p);
+                flat = flat && std::abs(p->z) < 1e-9 && p->x > -1e-9 && p->x < 2 + 1e-9 &&
+                       p->y > -1e-9 && p->y < 3 + 1e-9;
+                round = round && std::abs(std::hypot(p->x, p->y) - 2) < 1e-9;
+            }
+        planes += flat;
+        cylinders += round;
+        EXPECT_TRUE(flat || round) << what
+                                   << ": a surface that is neither the plane nor the "
+                                      "cylinder";
+    }
+    EXPECT_EQ(planes, 1) << what;
+    EXPECT_EQ(cylinders, 1) << what;
+    EXPECT_EQ(circles, 1) << what;
+    // The offset face: STEP keeps it an offset surface, skipped with its kind named. (OCCT's
+    // IGES writer and reader lose it between them without a word: not checked there.)
+    if (format == exchange::CadFormat::iges) return;
+    bool offset_named = false;
+    for (const auto& s : r->skipped)
+        offset_named = offset_named || s.reason.find("Geom_OffsetSurface") != std::string::npos;
+    std::string listed;
+    for (const auto& s : r->skipped) listed += s.entity + ": " + s.reason + "\n";
+    EXPECT_TRUE(offset_named) << what << ": " << r->objects.size() << " objects, skipped:\n"
+                              << listed;
+}
+
+TEST(OcctImport, PlanesCylindersAndCirclesComeInAsNurbsAndOffsetsAreNamedWhenSkipped) {
+    test::TempDir dir("isoparm-occt-import");
+    const TopoDS_Shape shapes = occt_made_shapes();
+    {
+        STEPControl_Writer w;
+        ASSERT_EQ(w.Transfer(shapes, STEPControl_AsIs), IFSelect_RetDone);
+        ASSERT_EQ(w.Write(dir.path("occt.stp").c_str()), IFSelect_RetDone);
+    }
+    {
+        IGESControl_Controller::Init();
+        IGESControl_Writer w("MM", 1); // BRep mode: faces with their own boundaries
+        ASSERT_TRUE(w.AddShape(shapes));
+        w.ComputeModel();
+        ASSERT_TRUE(w.Write(dir.path("occt.igs").c_str()));
+    }
+    expect_occt_shapes_imported(exchange::CadFormat::step, file_text(dir.path("occt.stp")));
+    expect_occt_shapes_imported(exchange::CadFormat::iges, file_text(dir.path("occt.igs")));
+}
+
+TEST(OcctImport, FilesOcctCannotReadAreParseErrors) {
+    for (auto format : {exchange::CadFormat::iges, exchange::CadFormat::step}) {
+        const auto r = exchange_occt::read("this is not a CAD file\n", format);
+        if (r) {
+            // A reader that accepts it finds nothing in it.
+            EXPECT_TRUE(r->objects.empty());
+            continue;
+        }
+        EXPECT_EQ(r.error().code, geom::ErrorCode::parse);
+        EXPECT_NE(r.error().message.find("OCCT"), std::string::npos) << r.error().message;
+    }
+}
+
+} // namespace
