@@ -7,11 +7,11 @@
 #include <cmath>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "core/geom/curvature.hpp"
 #include "ui/render/gl.hpp"
 #include "ui/render/gl_program.hpp"
 #include "ui/render/render_target.hpp"
 #include "ui/render/shaders.hpp"
+#include "ui/view/analysis.hpp"
 #include "ui/view/incremental_mesh.hpp"
 #include "ui/view/mesh_data.hpp"
 #include "ui/view/tessellation_sampling.hpp"
@@ -19,19 +19,6 @@
 namespace isoparm::ui {
 
 namespace {
-
-geom::CurvatureKind curvature_kind(AnalysisKind k) {
-    switch (k) {
-    case AnalysisKind::mean:
-        return geom::CurvatureKind::mean;
-    case AnalysisKind::kmax:
-        return geom::CurvatureKind::k_max;
-    case AnalysisKind::kmin:
-        return geom::CurvatureKind::k_min;
-    default:
-        return geom::CurvatureKind::gaussian;
-    }
-}
 
 // The mesh program's analysis uniforms (shaders.cpp, mesh_fs).
 void set_analysis_uniforms(const GlProgram& p, const AnalysisView& a) {

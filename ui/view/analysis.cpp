@@ -13,7 +13,13 @@ namespace {
 
 constexpr int range_samples = 17;
 
-geom::CurvatureKind geometry_kind(AnalysisKind k) {
+} // namespace
+
+// The view's kinds are the document's modes in the same order.
+static_assert(static_cast<int>(AnalysisKind::isophote) ==
+              static_cast<int>(doc::AnalysisMode::isophote));
+
+geom::CurvatureKind curvature_kind(AnalysisKind k) {
     switch (k) {
     case AnalysisKind::mean:
         return geom::CurvatureKind::mean;
@@ -25,12 +31,6 @@ geom::CurvatureKind geometry_kind(AnalysisKind k) {
         return geom::CurvatureKind::gaussian;
     }
 }
-
-} // namespace
-
-// The view's kinds are the document's modes in the same order.
-static_assert(static_cast<int>(AnalysisKind::isophote) ==
-              static_cast<int>(doc::AnalysisMode::isophote));
 
 AnalysisKind analysis_kind(doc::AnalysisMode mode) {
     return static_cast<AnalysisKind>(static_cast<int>(mode));
@@ -54,7 +54,7 @@ AnalysisView analysis_view(const doc::Document& doc) {
             const geom::Surface* s = o.surface();
             if (!s || !o.visible) continue;
             for (double k :
-                 geom::curvature_grid(*s, range_samples, range_samples, geometry_kind(v.kind))) {
+                 geom::curvature_grid(*s, range_samples, range_samples, curvature_kind(v.kind))) {
                 if (!std::isfinite(k)) continue;
                 lo = any ? std::min(lo, k) : k;
                 hi = any ? std::max(hi, k) : k;

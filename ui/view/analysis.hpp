@@ -7,11 +7,14 @@
 #include <string>
 
 #include "core/doc/document.hpp"
+#include "core/geom/curvature.hpp"
 #include "ui/view/scene_draw.hpp"
 
 namespace isoparm::ui {
 
 AnalysisKind analysis_kind(doc::AnalysisMode mode);
+// The curvature a curvature kind shows (K for the others: never asked).
+geom::CurvatureKind curvature_kind(AnalysisKind kind);
 
 // The display's analysis for the renderer. The automatic range covers the curvature of every
 // visible spline surface sampled on a 17 x 17 grid of its domain (exact derivatives; undefined
