@@ -133,11 +133,11 @@ struct CurveDesignerState {
     std::uint64_t frame_object = 0;
     int frame_plane = -1;
     glm::dvec2 frame_lo{0}, frame_hi{0};
-    int drag_knot = -1;                       // knot being dragged on the knot strip, -1 none
-    bool trace = true;                        // show de Boor's construction at trace_t
+    int drag_knot = -1; // knot being dragged on the knot strip, -1 none
+    bool trace = true;  // show de Boor's construction at trace_t
     bool comb = false, osculating = false, frenet = false; // curvature at a glance
-    double trace_t = 0.4;                     // normalised to [0, 1] over the domain
-    double insert_t = 0.5;                    // knot insertion parameter (normalised)
+    double trace_t = 0.4;                                  // normalised to [0, 1] over the domain
+    double insert_t = 0.5;                                 // knot insertion parameter (normalised)
     bool carry_points = true;                 // changing the plane moves the drawing into it
     float primitive[6] = {0, 0, 1, 0, 90, 0}; // centre a, b; radius; start, end degrees; unused
     float line_end[4] = {-1, 0, 1, 0};        // line from (a, b) to (a, b) in the plane
@@ -293,6 +293,7 @@ struct UiState {
     ToolboxState toolbox;
     FitState fit;
     AnalysisView analysis; // this frame's analysis colouring (the 3D view's colour bar reads it)
+    bool knot_continuity = false; // Display > Knot curves by continuity
 
     // Presentation enlarges everything by half, or by a quarter in a window under 800 px
     // high (a 1024x768 projector), where text is then 19 px and the panels still fit.

@@ -285,6 +285,7 @@ void Workstation::frame(unsigned target_framebuffer) {
     SceneStyle style;
     style.scale = scale;
     style.deboor_step = ui.deboor.step;
+    style.knot_continuity = ui.knot_continuity;
     if (ui.drag.kind == ViewDrag::Kind::point && ui.drag.axis >= 0) {
         style.guide_axis = ui.drag.axis;
         style.guide_point = ui.drag.start;

@@ -106,3 +106,11 @@ TEST(SceneBounds, CoversAllControlPoints) {
         }
     EXPECT_FALSE(doc::scene_bounds(doc::Document{}).has_value());
 }
+
+TEST(KnotContinuityColor, EachOrderOfContinuityHasItsColour) {
+    const glm::vec4 smooth(0.1f, 0.2f, 0.3f, 1);
+    EXPECT_EQ(isoparm::ui::knot_continuity_color(3, 1, smooth), smooth);  // C2
+    EXPECT_EQ(isoparm::ui::knot_continuity_color(3, 2, smooth).g, 0.85f); // C1 yellow
+    EXPECT_EQ(isoparm::ui::knot_continuity_color(3, 3, smooth).g, 0.5f);  // C0 orange
+    EXPECT_EQ(isoparm::ui::knot_continuity_color(2, 3, smooth).r, 0.95f); // C-1 red
+}

@@ -208,6 +208,10 @@ void display_menu(AppContext& ctx) {
     menu_item("Point IDs (P_ij)", "I", &d.point_ids);
     menu_item("Indicator point S(u,v)", nullptr, &d.indicator_point);
     menu_item("Knot curves", "K", &d.knot_curves);
+    // Yellow C1, orange C0, red C-1: why a knot's multiplicity changes smoothness.
+    if (menu_item("Knot curves by continuity", nullptr, &ctx.ui.knot_continuity) &&
+        ctx.ui.knot_continuity)
+        d.knot_curves = true;
     if (menu_item("de Boor's construction", "D", &d.deboor) && d.deboor)
         ctx.ui.deboor.show_tab = true;
     if (menu_item("de Boor: step back", "[")) deboor_step(ctx, -1);

@@ -98,6 +98,19 @@ doc::Colors readable_overlay_colors(const doc::Colors& c) {
     return out;
 }
 
+glm::vec4 knot_continuity_color(int degree, int multiplicity, const glm::vec4& smooth) {
+    switch (geom::continuity_at_knot(degree, multiplicity)) {
+    case 1:
+        return {1.0f, 0.85f, 0.2f, 1};
+    case 0:
+        return {1.0f, 0.5f, 0.1f, 1};
+    default:
+        break;
+    }
+    return geom::continuity_at_knot(degree, multiplicity) < 0 ? glm::vec4(0.95f, 0.2f, 0.2f, 1)
+                                                              : smooth;
+}
+
 BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
                        const ImplicitMeshes* implicit) {
     BuiltScene out;
@@ -164,8 +177,13 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
                         LineBatch& b = !interior || r.multiplicity == 1 ? knots
                                        : r.multiplicity == 2            ? knots_double
                                                                         : knots_full;
+                        const glm::vec4 base = to_vec4(col.knot_curves);
+                        const glm::vec4 c =
+                            style.knot_continuity && interior
+                                ? knot_continuity_color(s->degree(dir), r.multiplicity, base)
+                                : base;
                         for (const auto& piece : iso_curve(*s, dir, r.value, 97))
-                            Overlay::add_polyline(b, piece, to_vec4(col.knot_curves));
+                            Overlay::add_polyline(b, piece, c);
                     }
                 }
             }

@@ -19,7 +19,14 @@ struct SceneStyle {
     int guide_axis = -1; // an axis-constrained drag shows its axis through guide_point
     glm::dvec3 guide_point{0};
     int deboor_step = -1; // de Boor's construction up to this step (-1: all); deboor_overlay.hpp
+    // Knot curves coloured by the continuity their knot leaves (knot_continuity_color).
+    bool knot_continuity = false;
 };
+
+// The colour of an interior knot curve of multiplicity m in degree p by the continuity
+// C^(p - m) it carries: the scene's knot-curve colour from C2 up, yellow for C1, orange for
+// C0, red where the surface need not be continuous (C-1).
+glm::vec4 knot_continuity_color(int degree, int multiplicity, const glm::vec4& smooth);
 
 struct BuiltScene {
     std::vector<SurfaceDraw> surfaces;
