@@ -171,6 +171,10 @@ void Workstation::layout_panels() {
             draw_deboor_panel(ctx_);
             ImGui::EndTabItem();
         }
+        if (ImGui::BeginTabItem("Continuity")) {
+            draw_continuity_panel(ctx_);
+            ImGui::EndTabItem();
+        }
         ImGui::EndTabBar();
     }
     ImGui::End();

@@ -1,0 +1,48 @@
+// Border continuity measured by evaluating both sides (exact derivatives, geom::evaluate).
+#include "core/doc/border_measure.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "core/geom/curvature.hpp"
+#include "core/geom/evaluate.hpp"
+#include "core/geom/knots.hpp"
+#include "core/geom/tessellate.hpp"
+
+namespace isoparm::doc {
+
+BorderMeasure measure_border(const Document& doc, const SharedBorder& border, int samples) {
+    BorderMeasure m;
+    const Object* low = doc.find(border.low);
+    const Object* high = doc.find(border.high);
+    if (!low || !high || !low->surface() || !high->surface()) return m;
+    const geom::Surface& a = *low->surface();
+    const geom::Surface& b = *high->surface();
+    const double at = geom::domain(a, border.across).hi; // == b's low end in `across`
+    const bool across_u = border.across == geom::Dir::u;
+    for (double s : geom::uniform_params(border.along.lo, border.along.hi, std::max(samples, 2))) {
+        const double u = across_u ? at : s, v = across_u ? s : at;
+        const auto da = geom::surface_derivatives(a, u, v, 2);
+        const auto db = geom::surface_derivatives(b, u, v, 2);
+        if (!da || !db) continue;
+        ++m.sampled;
+        m.gap = std::max(m.gap, glm::distance(da->D[0][0], db->D[0][0]));
+        const glm::dvec3 sa = across_u ? da->D[1][0] : da->D[0][1];
+        const glm::dvec3 sb = across_u ? db->D[1][0] : db->D[0][1];
+        m.derivative = std::max(m.derivative, glm::distance(sa, sb));
+        const auto na = geom::normal_from_derivatives(*da);
+        const auto nb = geom::normal_from_derivatives(*db);
+        if (na && nb) {
+            // atan2 of sine and cosine: acos near 1 would turn rounding into 1e-6 degrees.
+            const double angle = std::atan2(glm::length(glm::cross(*na, *nb)), glm::dot(*na, *nb));
+            m.angle_degrees = std::max(m.angle_degrees, angle * 180.0 / 3.14159265358979323846);
+        }
+        const auto ka = geom::curvature_from_derivatives(*da);
+        const auto kb = geom::curvature_from_derivatives(*db);
+        if (ka && kb) m.curvature = std::max(m.curvature, std::abs(ka->mean - kb->mean));
+    }
+    return m;
+}
+
+} // namespace isoparm::doc

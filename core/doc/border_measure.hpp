@@ -1,0 +1,24 @@
+// How well two patches of a group actually join along a shared border, measured on the
+// surfaces (not inferred from the control points): the Continuity panel's figures.
+#pragma once
+
+#include "core/doc/patches.hpp"
+
+namespace isoparm::doc {
+
+// Sampled at `samples` parameters along the border (both patches keep the group's parameters,
+// so the two sides are evaluated at the same (u, v)); each figure is the largest over the
+// samples where both sides exist:
+// - gap: the distance between the two sides' points (C0 holds when it is ~0);
+// - angle: between their unit normals, in degrees (G1, tangent planes agree);
+// - derivative: |S_low,across - S_high,across|, the first derivatives across the border
+//   (C1 holds when it is ~0; the group's parameters are shared, so no scaling is needed);
+// - curvature: the jump of the mean curvature H across the border (G2 needs it ~0).
+// `sampled` counts the samples where both sides had a point (0: nothing could be measured).
+struct BorderMeasure {
+    double gap = 0, angle_degrees = 0, derivative = 0, curvature = 0;
+    int sampled = 0;
+};
+BorderMeasure measure_border(const Document& doc, const SharedBorder& border, int samples = 33);
+
+} // namespace isoparm::doc
