@@ -171,7 +171,9 @@ void Workstation::layout_panels() {
             draw_deboor_panel(ctx_);
             ImGui::EndTabItem();
         }
-        if (ImGui::BeginTabItem("Continuity")) {
+        const bool continuity = ImGui::BeginTabItem("Continuity");
+        report_item("tab/Continuity");
+        if (continuity) {
             draw_continuity_panel(ctx_);
             ImGui::EndTabItem();
         }
