@@ -14,8 +14,8 @@
 
 #include "core/geom/interpolate.hpp"
 #include "core/geom/status.hpp"
-#include "core/json/fields.hpp"
 #include "core/geom/types.hpp"
+#include "core/json/fields.hpp"
 
 namespace isoparm::geom {
 struct Mesh;
@@ -34,13 +34,13 @@ using OpResult = geom::Expected<json>;
 using OpHandler = OpResult (*)(const json& request);
 
 // One file per op family; each op is one line in protocol.cpp's table.
-OpResult op_evaluate(const json& request);    // op_evaluate.cpp
-OpResult op_basis(const json& request);       // op_basis.cpp
-OpResult op_deboor(const json& request);      // op_deboor.cpp
-OpResult op_curvature(const json& request);   // op_curvature.cpp
-OpResult op_blossom(const json& request);     // op_blossom.cpp
-OpResult op_convert(const json& request);     // op_convert.cpp
-OpResult op_close(const json& request);       // op_reshape.cpp
+OpResult op_evaluate(const json& request);  // op_evaluate.cpp
+OpResult op_basis(const json& request);     // op_basis.cpp
+OpResult op_deboor(const json& request);    // op_deboor.cpp
+OpResult op_curvature(const json& request); // op_curvature.cpp
+OpResult op_blossom(const json& request);   // op_blossom.cpp
+OpResult op_convert(const json& request);   // op_convert.cpp
+OpResult op_close(const json& request);     // op_reshape.cpp
 // Triangular patches (op_triangle.cpp): evaluate, elevate_degree and split hand a request with
 // a `triangle` to these; de_casteljau is theirs alone.
 OpResult op_triangle_evaluate(const json& request);
@@ -54,7 +54,7 @@ OpResult op_tessellate(const json& request);  // op_tessellate.cpp
 OpResult op_insert_knot(const json& request); // op_refine.cpp
 OpResult op_elevate_degree(const json& request);
 OpResult op_split(const json& request);
-OpResult op_polygonize(const json& request); // op_polygonize.cpp
+OpResult op_polygonize(const json& request);  // op_polygonize.cpp
 OpResult op_interpolate(const json& request); // op_fitting.cpp
 OpResult op_approximate(const json& request);
 OpResult op_remove_knot(const json& request); // op_reduce.cpp
@@ -103,7 +103,7 @@ geom::Expected<Subject> read_subject(const json& request, bool allow_curve, bool
 // `params`: a curve's, each a finite number in the domain; a surface's, each [u, v] with u and
 // v in their domains (`schema` / `domain` at "/params/3", "/params/3/1").
 geom::Expected<std::vector<double>> read_curve_params(const json& params,
-                                                     const geom::Interval& domain);
+                                                      const geom::Interval& domain);
 geom::Expected<std::vector<std::array<double, 2>>> read_surface_params(const json& params,
                                                                        const geom::Surface& s);
 
@@ -130,7 +130,8 @@ geom::Status check_in_domain(double t, const geom::Interval& domain, const std::
 // `samples` [n_u, n_v] of a surface grid: integers >= 2 (`schema`), within the grid and mesh
 // caps and the work budget of a degree (degree_u, degree_v) tessellation (`limit`), all at
 // "/samples" ("/samples/k"). Shared by tessellate and export.
-geom::Expected<std::array<int, 2>> read_grid_samples(const json& request, int degree_u, int degree_v);
+geom::Expected<std::array<int, 2>> read_grid_samples(const json& request, int degree_u,
+                                                     int degree_v);
 
 // positions / normals / triangles; a vertex that does not exist is null (op_tessellate.cpp).
 json mesh_to_json(const geom::Mesh& mesh);

@@ -10,14 +10,14 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/geom/work_budget.hpp"
 #include "core/json/input_file.hpp"
+#include "core/json/out_of_memory.hpp"
 #include "core/json/reader.hpp"
 #include "core/json/writer.hpp"
-#include "core/json/out_of_memory.hpp"
-#include "core/protocol/op_construct.hpp"
 #include "core/protocol/detail.hpp"
+#include "core/protocol/op_construct.hpp"
 #include "core/protocol/stream.hpp"
-#include "core/geom/work_budget.hpp"
 
 namespace isoparm::protocol {
 
