@@ -37,23 +37,9 @@ PlaneMap frame(CurveDesignerState& cd, std::uint64_t id, int plane, const geom::
         hi = glm::max(hi, glm::dvec2(p[a], p[b]));
     }
     const bool same = cd.frame_object == id && cd.frame_plane == plane;
-    const bool inside = lo.x >= cd.frame_lo.x && lo.y >= cd.frame_lo.y && hi.x <= cd.frame_hi.x &&
-                        hi.y <= cd.frame_hi.y;
-    if (!same || !inside) {
-        const double span = std::max(hi.x - lo.x, hi.y - lo.y);
-        const glm::dvec2 pad(std::max(span * 0.2, 0.5));
-        const glm::dvec2 box_lo = same ? glm::min(cd.frame_lo, lo - pad) : lo - pad;
-        const glm::dvec2 box_hi = same ? glm::max(cd.frame_hi, hi + pad) : hi + pad;
-        // Keep the whole visible area: a click anywhere on the canvas lands inside it.
-        const PlaneMap m = fit_plane(canvas, box_lo, box_hi, margin);
-        const glm::dvec2 c0 = pixel_to_plane(m, {canvas.x, canvas.y + canvas.h});
-        const glm::dvec2 c1 = pixel_to_plane(m, {canvas.x + canvas.w, canvas.y});
-        cd.frame_object = id;
-        cd.frame_plane = plane;
-        cd.frame_lo = glm::min(c0, c1);
-        cd.frame_hi = glm::max(c0, c1);
-    }
-    return fit_plane(canvas, cd.frame_lo, cd.frame_hi, 0);
+    cd.frame_object = id;
+    cd.frame_plane = plane;
+    return kept_frame(cd.frame_lo, cd.frame_hi, same, lo, hi, 0.2, canvas, margin);
 }
 
 const doc::CurveObject* curve_in(const AppContext& ctx, std::uint64_t id) {

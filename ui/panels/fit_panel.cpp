@@ -66,22 +66,8 @@ PlaneMap frame(FitState& f, const Rect& canvas, const PlaneAxes& ax, float margi
         }
     }
     const bool same = f.frame_plane == f.plane;
-    const bool inside = glm::all(glm::greaterThanEqual(lo, f.frame_lo)) &&
-                        glm::all(glm::lessThanEqual(hi, f.frame_hi));
-    if (!same || !inside) {
-        const double span = std::max(hi.x - lo.x, hi.y - lo.y);
-        const glm::dvec2 pad(std::max(span * 0.15, 0.5));
-        const glm::dvec2 box_lo = same ? glm::min(f.frame_lo, lo - pad) : lo - pad;
-        const glm::dvec2 box_hi = same ? glm::max(f.frame_hi, hi + pad) : hi + pad;
-        // Keep the whole visible area: a click anywhere on the canvas lands inside it.
-        const PlaneMap m = fit_plane(canvas, box_lo, box_hi, margin);
-        const glm::dvec2 c0 = pixel_to_plane(m, {canvas.x, canvas.y + canvas.h});
-        const glm::dvec2 c1 = pixel_to_plane(m, {canvas.x + canvas.w, canvas.y});
-        f.frame_plane = f.plane;
-        f.frame_lo = glm::min(c0, c1);
-        f.frame_hi = glm::max(c0, c1);
-    }
-    return fit_plane(canvas, f.frame_lo, f.frame_hi, 0);
+    f.frame_plane = f.plane;
+    return kept_frame(f.frame_lo, f.frame_hi, same, lo, hi, 0.15, canvas, margin);
 }
 
 int nearest_point(const FitState& f, const PlaneMap& map, const PlaneAxes& ax,

@@ -1,6 +1,8 @@
 // The 2D canvas mappings: domain square, knot ticks and label thinning, plane views.
 #include "ui/view/canvas_map.hpp"
 
+#include <glm/common.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -154,6 +156,24 @@ glm::dvec2 plane_to_pixel(const PlaneMap& m, const glm::dvec2& ab) {
 glm::dvec2 pixel_to_plane(const PlaneMap& m, const glm::dvec2& px) {
     const double cx = m.canvas.x + m.canvas.w * 0.5, cy = m.canvas.y + m.canvas.h * 0.5;
     return {m.center.x + (px.x - cx) * m.units_per_px, m.center.y - (px.y - cy) * m.units_per_px};
+}
+
+PlaneMap kept_frame(glm::dvec2& frame_lo, glm::dvec2& frame_hi, bool same, const glm::dvec2& lo,
+                    const glm::dvec2& hi, double pad_fraction, const Rect& canvas, double margin) {
+    const bool inside =
+        lo.x >= frame_lo.x && lo.y >= frame_lo.y && hi.x <= frame_hi.x && hi.y <= frame_hi.y;
+    if (!same || !inside) {
+        const double span = std::max(hi.x - lo.x, hi.y - lo.y);
+        const glm::dvec2 pad(std::max(span * pad_fraction, 0.5));
+        const glm::dvec2 box_lo = same ? glm::min(frame_lo, lo - pad) : lo - pad;
+        const glm::dvec2 box_hi = same ? glm::max(frame_hi, hi + pad) : hi + pad;
+        const PlaneMap m = fit_plane(canvas, box_lo, box_hi, margin);
+        const glm::dvec2 c0 = pixel_to_plane(m, {canvas.x, canvas.y + canvas.h});
+        const glm::dvec2 c1 = pixel_to_plane(m, {canvas.x + canvas.w, canvas.y});
+        frame_lo = glm::min(c0, c1);
+        frame_hi = glm::max(c0, c1);
+    }
+    return fit_plane(canvas, frame_lo, frame_hi, 0);
 }
 
 } // namespace isoparm::ui

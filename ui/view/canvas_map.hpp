@@ -68,6 +68,13 @@ struct PlaneMap {
 // Fits the world box [lo, hi] (in the plane's two coordinates) with `margin_px` around it.
 PlaneMap fit_plane(const Rect& canvas, const glm::dvec2& lo, const glm::dvec2& hi,
                    double margin_px);
+// A plane canvas's kept framing (the curve designer, the Fit panel): the content's box [lo, hi]
+// padded by max(pad_fraction * its span, 0.5) is framed when `same` is false (another object
+// or plane) or the content left the kept box [frame_lo, frame_hi]; else the kept box stands,
+// so a click does not shift the picture under the mouse. The whole visible area is kept, so a
+// click anywhere on the canvas lands inside it.
+PlaneMap kept_frame(glm::dvec2& frame_lo, glm::dvec2& frame_hi, bool same, const glm::dvec2& lo,
+                    const glm::dvec2& hi, double pad_fraction, const Rect& canvas, double margin);
 glm::dvec2 plane_to_pixel(const PlaneMap& m, const glm::dvec2& ab);
 glm::dvec2 pixel_to_plane(const PlaneMap& m, const glm::dvec2& pixel);
 
