@@ -177,6 +177,12 @@ void Workstation::layout_panels() {
             draw_continuity_panel(ctx_);
             ImGui::EndTabItem();
         }
+        const bool homogeneous = ImGui::BeginTabItem("Homogeneous");
+        report_item("tab/Homogeneous");
+        if (homogeneous) {
+            draw_homogeneous_panel(ctx_);
+            ImGui::EndTabItem();
+        }
         ImGui::EndTabBar();
     }
     ImGui::End();
@@ -292,6 +298,9 @@ void Workstation::frame(unsigned target_framebuffer) {
     style.scale = scale;
     style.deboor_step = ui.deboor.step;
     style.knot_continuity = ui.knot_continuity;
+    style.border_continuity = ui.border_continuity;
+    style.curve_glyphs = {ui.curve.comb, ui.curve.osculating, ui.curve.frenet};
+    style.curve_t = ui.curve.trace_t;
     if (ui.drag.kind == ViewDrag::Kind::point && ui.drag.axis >= 0) {
         style.guide_axis = ui.drag.axis;
         style.guide_point = ui.drag.start;

@@ -19,6 +19,7 @@ void draw_construct_dialog(AppContext& ctx);     // the Construct menu's dialog
 void draw_basis_plot_panel(AppContext& ctx);     // R_ij at (u, v), its support, N_i and N_j
 void draw_deboor_panel(AppContext& ctx);         // de Boor's levels at (u, v), step control
 void draw_continuity_panel(AppContext& ctx);     // a patch group's borders, measured
+void draw_homogeneous_panel(AppContext& ctx);    // a curve lifted to (w x, w y, w), projected
 void draw_control_panel(AppContext& ctx);        // colours and display settings
 void draw_object_list_panel(AppContext& ctx);    // every object: select, rename, hide, delete
 void draw_status_bar(AppContext& ctx);           // frame time, object, unsaved mark
