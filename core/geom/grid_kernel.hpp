@@ -49,7 +49,7 @@ struct GridArgs {
 
 enum : std::uint8_t { vertex_ok = 0, vertex_degenerate = 1, vertex_missing = 2 };
 
-// Lanes (sample columns per vector) of a path: 4 for baseline and AVX2, 8 for AVX-512.
+// Lanes (sample columns per vector) of a path: 2 baseline, 4 AVX2, 8 AVX-512.
 int lanes(Path path);
 // Whether this build has the path and this CPU runs it.
 bool supported(Path path);

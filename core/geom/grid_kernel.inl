@@ -11,8 +11,9 @@ namespace {
 using isoparm::geom::kernel::GridArgs;
 
 constexpr int W = ISOPARM_KERNEL_LANES;
-// W sample columns as one vector (GCC/Clang vector extensions: one ymm / zmm register in the
-// AVX builds, SSE2 register pairs in the baseline build) and the masks comparisons give.
+// W sample columns as one vector (GCC/Clang vector extensions: one zmm / ymm register in the
+// AVX-512 / AVX2 builds, one xmm (SSE2, or NEON elsewhere) register in the baseline build: a
+// wider generic vector would live on the stack there) and the masks comparisons give.
 typedef double vd __attribute__((vector_size(8 * W)));
 typedef long long vm __attribute__((vector_size(8 * W)));
 typedef double v4 __attribute__((vector_size(32)));
@@ -24,12 +25,34 @@ inline void store(double* p, const vd& v) {
     __builtin_memcpy(p, &v, sizeof v);
 }
 
+// acc + a * b. The kernel files are compiled with -ffp-contract=off, so that the multiply-adds
+// fused are exactly these (the same in every instantiation, every degree and every build with
+// FMA), not whichever ones the compiler chooses per inlining context.
+// (By reference: returning a vector type from a non-AVX function would change the ABI.)
+inline void madd(vd& acc, const vd& a, const vd& b) {
+#if defined(__AVX512F__) && ISOPARM_KERNEL_LANES == 8
+    acc = (vd)_mm512_fmadd_pd((__m512d)a, (__m512d)b, (__m512d)acc);
+#elif defined(__FMA__) && ISOPARM_KERNEL_LANES == 4
+    acc = (vd)_mm256_fmadd_pd((__m256d)a, (__m256d)b, (__m256d)acc);
+#else
+    acc += a * b;
+#endif
+}
+inline void madd(vd& acc, double a, const vd& b) {
+    madd(acc, vd{} + a, b);
+}
+inline void madd(vd& acc, const vd& a, double b) {
+    madd(acc, a, vd{} + b);
+}
+
 // One bit per lane where the mask is set.
 inline int bits(const vm& m) {
 #if defined(__AVX512F__) && ISOPARM_KERNEL_LANES == 8
     return _mm512_test_epi64_mask((__m512i)m, (__m512i)m);
 #elif defined(__AVX__) && ISOPARM_KERNEL_LANES == 4
     return _mm256_movemask_pd((__m256d)m);
+#elif defined(__SSE2__) && ISOPARM_KERNEL_LANES == 2
+    return _mm_movemask_pd((__m128d)m);
 #else
     int b = 0;
     for (int l = 0; l < W; ++l) b |= (m[l] != 0) << l;
@@ -43,11 +66,8 @@ inline void vsqrt(vd& r, const vd& x) {
     r = (vd)_mm512_mask_sqrt_pd((__m512d)x, (__mmask8)0xFF, (__m512d)x);
 #elif defined(__AVX__) && ISOPARM_KERNEL_LANES == 4
     r = (vd)_mm256_sqrt_pd((__m256d)x);
-#elif defined(__SSE2__) && ISOPARM_KERNEL_LANES == 4
-    typedef double v2 __attribute__((vector_size(16)));
-    const v2 lo = (v2)_mm_sqrt_pd((__m128d)__builtin_shufflevector(x, x, 0, 1));
-    const v2 hi = (v2)_mm_sqrt_pd((__m128d)__builtin_shufflevector(x, x, 2, 3));
-    r = __builtin_shufflevector(lo, hi, 0, 1, 2, 3);
+#elif defined(__SSE2__) && ISOPARM_KERNEL_LANES == 2
+    r = (vd)_mm_sqrt_pd((__m128d)x);
 #else
     for (int l = 0; l < W; ++l) r[l] = __builtin_sqrt(x[l]);
 #endif
@@ -67,7 +87,14 @@ inline void store_xyz4(double* out, const v4& x, const v4& y, const v4& z) {
 }
 
 inline void store_xyz(double* out, const vd& x, const vd& y, const vd& z) {
-#if ISOPARM_KERNEL_LANES == 4
+#if ISOPARM_KERNEL_LANES == 2
+    typedef double v2 __attribute__((vector_size(16)));
+    const v2 o0 = __builtin_shufflevector(x, y, 0, 2), o1 = __builtin_shufflevector(z, x, 0, 3),
+             o2 = __builtin_shufflevector(y, z, 1, 3);
+    __builtin_memcpy(out, &o0, 16);
+    __builtin_memcpy(out + 2, &o1, 16);
+    __builtin_memcpy(out + 4, &o2, 16);
+#elif ISOPARM_KERNEL_LANES == 4
     store_xyz4(out, x, y, z);
 #else
     for (int h = 0; h < W; h += 4) {
@@ -125,10 +152,10 @@ void contract_v(const GridArgs& g, int a, int ch0, int nch, double* R, double* R
             for (int c = 0; c < nc; ++c) {
                 vd mc;
                 load(mc, m + c * W);
-                x += mc * P[4 * c + 0];
-                y += mc * P[4 * c + 1];
-                z += mc * P[4 * c + 2];
-                w += mc * P[4 * c + 3];
+                madd(x, mc, P[4 * c + 0]);
+                madd(y, mc, P[4 * c + 1]);
+                madd(z, mc, P[4 * c + 2]);
+                madd(w, mc, P[4 * c + 3]);
             }
         } else {
             const double* dm = g.dM + static_cast<long>(ch) * nc * W;
@@ -137,14 +164,14 @@ void contract_v(const GridArgs& g, int a, int ch0, int nch, double* R, double* R
                 vd mc, dc;
                 load(mc, m + c * W);
                 load(dc, dm + c * W);
-                x += mc * P[4 * c + 0];
-                y += mc * P[4 * c + 1];
-                z += mc * P[4 * c + 2];
-                w += mc * P[4 * c + 3];
-                xv += dc * P[4 * c + 0];
-                yv += dc * P[4 * c + 1];
-                zv += dc * P[4 * c + 2];
-                wv += dc * P[4 * c + 3];
+                madd(x, mc, P[4 * c + 0]);
+                madd(y, mc, P[4 * c + 1]);
+                madd(z, mc, P[4 * c + 2]);
+                madd(w, mc, P[4 * c + 3]);
+                madd(xv, dc, P[4 * c + 0]);
+                madd(yv, dc, P[4 * c + 1]);
+                madd(zv, dc, P[4 * c + 2]);
+                madd(wv, dc, P[4 * c + 3]);
             }
             store(Rv + 0 * B + k * W, xv);
             store(Rv + 1 * B + k * W, yv);
@@ -175,10 +202,10 @@ template <int P1> long row_positions(const GridArgs& g, int i, int ch0, int nch,
             load(a1, Rr + B);
             load(a2, Rr + 2 * B);
             load(a3, Rr + 3 * B);
-            x += nu[r] * a0;
-            y += nu[r] * a1;
-            z += nu[r] * a2;
-            w += nu[r] * a3;
+            madd(x, nu[r], a0);
+            madd(y, nu[r], a1);
+            madd(z, nu[r], a2);
+            madd(w, nu[r], a3);
         }
         const vd inv = 1.0 / w;
         const int j = (ch0 + k) * W;
@@ -224,18 +251,18 @@ long row_normals(const GridArgs& g, int i, int ch0, int nch, const double* R, co
             load(b2, Vr + 2 * B);
             load(b3, Vr + 3 * B);
             const double n = nu[r], dn = dnu[r];
-            x += n * a0;
-            y += n * a1;
-            z += n * a2;
-            w += n * a3;
-            xu += dn * a0;
-            yu += dn * a1;
-            zu += dn * a2;
-            wu += dn * a3;
-            xv += n * b0;
-            yv += n * b1;
-            zv += n * b2;
-            wv += n * b3;
+            madd(x, n, a0);
+            madd(y, n, a1);
+            madd(z, n, a2);
+            madd(w, n, a3);
+            madd(xu, dn, a0);
+            madd(yu, dn, a1);
+            madd(zu, dn, a2);
+            madd(wu, dn, a3);
+            madd(xv, n, b0);
+            madd(yv, n, b1);
+            madd(zv, n, b2);
+            madd(wv, n, b3);
         }
         const vd inv = 1.0 / w;
         const vd sx = x * inv, sy = y * inv, sz = z * inv;

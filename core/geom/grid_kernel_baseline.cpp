@@ -1,12 +1,13 @@
-// The vertex kernel for any x86-64 (SSE2) or other CPU, and the run-time choice between the
-// builds: the widest one the CPU runs, unless ISOPARM_SIMD names another supported one.
+// The vertex kernel for any x86-64 (SSE2: 2 sample columns per xmm register) or other CPU, and the
+// run-time choice between the builds: the widest one the CPU runs, unless ISOPARM_SIMD names
+// another supported one.
 #include "core/geom/grid_kernel.hpp"
 
 #include <cstdlib>
 #include <cstring>
 #include <initializer_list>
 
-#define ISOPARM_KERNEL_LANES 4
+#define ISOPARM_KERNEL_LANES 2
 #include "core/geom/grid_kernel.inl"
 
 namespace isoparm::geom::kernel {
@@ -27,7 +28,7 @@ long run_avx512(const GridArgs& a) {
 #endif
 
 int lanes(Path path) {
-    return path == Path::avx512 ? 8 : 4;
+    return path == Path::avx512 ? 8 : path == Path::avx2 ? 4 : 2;
 }
 
 bool supported(Path path) {

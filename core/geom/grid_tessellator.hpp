@@ -56,6 +56,8 @@ public:
     // false, changing nothing, where the CPU does not run that path.
     bool use_kernel(kernel::Path path, bool generic = false);
     kernel::Path kernel_path() const { return path_; }
+    // Control columns each vector of the v contraction reads (the banded basis's width).
+    int band_columns() const { return band_.nc; }
 
     struct Table {
         int p = 0;
