@@ -229,7 +229,9 @@ struct FitState {
 // The Homogeneous tab: which curve is lifted to (w a, w b, w) and how the picture is turned.
 struct HomogeneousState {
     int isocurve = 0; // of a surface: 0 the curve along u through the indicator, 1 along v
-    int plane = 0;    // the coordinates seen: 0 xy, 1 xz, 2 yz (a planar curve's own plane)
+    // The coordinates seen: -1 the best plane (ui/view/homogeneous_scene.hpp), 0 xy, 1 xz,
+    // 2 yz; a planar curve is always seen in its own plane.
+    int plane = -1;
     double yaw = -40, pitch = 18; // degrees
     double zoom = 1;
     bool labels = true; // weights beside the lifted control points

@@ -161,26 +161,31 @@ void Workstation::layout_panels() {
     // brings its tab forward.
     if (begin_panel("Basis and de Boor", l.left[1], ImGuiWindowFlags_NoTitleBar) &&
         ImGui::BeginTabBar("##left_tabs")) {
-        if (ImGui::BeginTabItem("Basis")) {
-            draw_basis_plot_panel(ctx_);
-            ImGui::EndTabItem();
-        }
         const ImGuiTabItemFlags bring = ui.deboor.show_tab ? ImGuiTabItemFlags_SetSelected : 0;
         ui.deboor.show_tab = false;
-        if (ImGui::BeginTabItem("de Boor", nullptr, bring)) {
-            draw_deboor_panel(ctx_);
-            ImGui::EndTabItem();
-        }
-        const bool continuity = ImGui::BeginTabItem("Continuity");
-        report_item("tab/Continuity");
-        if (continuity) {
-            draw_continuity_panel(ctx_);
-            ImGui::EndTabItem();
-        }
-        const bool homogeneous = ImGui::BeginTabItem("Homogeneous");
-        report_item("tab/Homogeneous");
-        if (homogeneous) {
-            draw_homogeneous_panel(ctx_);
+        // A narrow column (a projector) shortens the names ("Ba..."): each tab says what it
+        // is when the pointer rests on it.
+        struct Tab {
+            const char* name;
+            const char* what;
+            void (*draw)(AppContext&);
+            ImGuiTabItemFlags flags;
+        };
+        const Tab tabs[] = {
+            {"Basis", "Basis: R_ij of the selected point at (u, v), N_i and N_j",
+             draw_basis_plot_panel, 0},
+            {"de Boor", "de Boor's construction at (u, v), step by step", draw_deboor_panel, bring},
+            {"Continuity", "Continuity: every border of the patch group, measured",
+             draw_continuity_panel, 0},
+            {"Homogeneous", "Homogeneous: a curve lifted to (w x, w y, w) and projected to w = 1",
+             draw_homogeneous_panel, 0},
+        };
+        for (const Tab& t : tabs) {
+            const bool open = ImGui::BeginTabItem(t.name, nullptr, t.flags);
+            report_item(std::string("tab/") + t.name);
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", t.what);
+            if (!open) continue;
+            t.draw(ctx_);
             ImGui::EndTabItem();
         }
         ImGui::EndTabBar();

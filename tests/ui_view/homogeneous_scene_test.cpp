@@ -58,3 +58,13 @@ TEST(HomogeneousScene, OrbitKeepsWUpWithoutPitch) {
     EXPECT_NEAR(q.x, 0, 1e-15);
     EXPECT_NEAR(q.z, 1, 1e-15);
 }
+
+TEST(HomogeneousScene, BestPlaneLeavesOutTheSmallestExtent) {
+    geom::Curve c;
+    c.points = {{0, 0, 0}, {1, 0.1, 2}, {2, 0, 0}}; // flat in y: seen in xz
+    EXPECT_EQ(best_plane(c), (std::array<int, 2>{0, 2}));
+    c.points = {{0, 0, 0}, {0.1, 1, 2}, {0, 2, 0}};
+    EXPECT_EQ(best_plane(c), (std::array<int, 2>{1, 2}));
+    c.points = {{0, 0, 0}, {1, 1, 0.1}, {2, 0, 0}};
+    EXPECT_EQ(best_plane(c), (std::array<int, 2>{0, 1}));
+}

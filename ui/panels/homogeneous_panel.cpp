@@ -39,6 +39,15 @@ struct Lifted {
     bool own_plane = false; // a planar curve is seen in its own plane (no plane choice)
 };
 
+std::array<int, 2> seen_in(const HomogeneousState& hs, const geom::Curve& c) {
+    return hs.plane < 0 ? best_plane(c)
+                        : plane_axes[static_cast<std::size_t>(std::min(hs.plane, 2))];
+}
+
+std::string axes_name(std::array<int, 2> axes) {
+    return {"xyz"[axes[0]], "xyz"[axes[1]]};
+}
+
 std::optional<Lifted> chosen_curve(AppContext& ctx, std::string& why_not) {
     HomogeneousState& hs = ctx.ui.homogeneous;
     const doc::Object* sel = ctx.doc.selected();
@@ -47,10 +56,10 @@ std::optional<Lifted> chosen_curve(AppContext& ctx, std::string& why_not) {
         Lifted l;
         l.curve = co.curve;
         l.own_plane = co.plane != doc::CurvePlane::free3d;
-        const int plane = l.own_plane ? static_cast<int>(co.plane) : std::clamp(hs.plane, 0, 2);
-        l.axes = plane_axes[static_cast<std::size_t>(plane)];
+        l.axes =
+            l.own_plane ? plane_axes[static_cast<std::size_t>(co.plane)] : seen_in(hs, l.curve);
         l.t = curve_designer::trace_param(ctx, l.curve);
-        l.caption = sel->name + " in the " + plane_names[plane] + " plane";
+        l.caption = sel->name + " in the " + axes_name(l.axes) + " plane";
         return l;
     }
     const doc::Object* obj = nullptr;
@@ -76,12 +85,11 @@ std::optional<Lifted> chosen_curve(AppContext& ctx, std::string& why_not) {
     }
     Lifted l;
     l.curve = *iso;
-    l.axes = plane_axes[static_cast<std::size_t>(std::clamp(hs.plane, 0, 2))];
+    l.axes = seen_in(hs, l.curve);
     l.t = along_u ? uv.x : uv.y;
     char text[160];
     std::snprintf(text, sizeof text, "%s's isocurve %s = %.3g, seen in %s", obj->name.c_str(),
-                  along_u ? "v" : "u", along_u ? uv.y : uv.x,
-                  plane_names[std::clamp(hs.plane, 0, 2)]);
+                  along_u ? "v" : "u", along_u ? uv.y : uv.x, axes_name(l.axes).c_str());
     l.caption = text;
     return l;
 }
@@ -208,33 +216,48 @@ void draw_homogeneous_panel(AppContext& ctx) {
     const std::optional<Lifted> l = chosen_curve(ctx, why_not);
     const doc::Object* sel = ctx.doc.selected();
     const bool surface_source = !(sel && sel->curve_object());
+    // Two small combos rather than rows of radio buttons: a projector's narrow column keeps
+    // most of its height for the picture. Each control goes on the line while it fits.
+    const float combo_w = ImGui::CalcTextSize("along u").x + ImGui::GetFrameHeight() * 2;
     if (surface_source) {
-        ImGui::TextUnformatted("Isocurve:");
-        same_line_if_fits(toggle_width("along u") + toggle_width("along v"));
-        ImGui::RadioButton("along u", &hs.isocurve, 0);
-        report_item("homogeneous/along_u");
-        ImGui::SameLine();
-        ImGui::RadioButton("along v", &hs.isocurve, 1);
-        report_item("homogeneous/along_v");
+        const char* iso_names[] = {"along u", "along v"};
+        ImGui::SetNextItemWidth(combo_w);
+        ImGui::Combo("##isocurve", &hs.isocurve, iso_names, 2);
+        report_item("homogeneous/isocurve");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip(
+                "The current surface's isocurve through the indicator that is lifted");
     }
     if (!l || !l->own_plane) {
-        for (int p = 0; p < 3; ++p) {
-            if (p > 0) ImGui::SameLine();
-            ImGui::RadioButton(plane_names[p], &hs.plane, p);
-        }
-        ImGui::SameLine();
+        const char* planes[] = {"best", "xy", "xz", "yz"};
+        int choice = hs.plane + 1;
+        if (surface_source) same_line_if_fits(combo_w);
+        ImGui::SetNextItemWidth(combo_w);
+        if (ImGui::Combo("##plane", &choice, planes, 4)) hs.plane = choice - 1;
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("The coordinates seen (best: the two largest extents of the "
+                              "control points)");
     }
+    same_line_if_fits(toggle_width("Weights"));
     ImGui::Checkbox("Weights", &hs.labels);
-    ImGui::SameLine();
-    if (ImGui::SmallButton("Reset view")) hs = HomogeneousState{hs.isocurve, hs.plane};
+    same_line_if_fits(ImGui::CalcTextSize("Reset").x + ImGui::GetStyle().FramePadding.x * 2);
+    if (ImGui::SmallButton("Reset")) hs = HomogeneousState{hs.isocurve, hs.plane};
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Turn and zoom the picture back");
     if (!l) {
         ImGui::TextWrapped("%s", why_not.c_str());
         return;
     }
     const HomogeneousScene h = homogeneous_scene(l->curve, l->axes, l->t);
-    ImGui::TextWrapped("%s. C(t) = C^w(t) / w(t): the blue polynomial curve, projected from the "
-                       "origin onto w = 1, is the orange rational curve.",
-                       l->caption.c_str());
+    ImGui::TextWrapped("%s", l->caption.c_str());
+    same_line_if_fits(ImGui::CalcTextSize("(?)").x);
+    ImGui::TextDisabled("(?)");
+    if (ImGui::IsItemHovered())
+        wrapped_tooltip("C(t) = C^w(t) / w(t). The blue curve is a polynomial B-spline in (w x, "
+                        "w y, w) with the control points (w_i x_i, w_i y_i, w_i); projected from "
+                        "the origin onto the plane w = 1 it is the orange rational curve. Each "
+                        "grey ray joins the origin, a lifted control point and the control point "
+                        "itself on w = 1; a negative weight puts the lifted point below the "
+                        "origin.");
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     const float line = ImGui::GetTextLineHeightWithSpacing();
     const Rect box{ImGui::GetCursorScreenPos().x, ImGui::GetCursorScreenPos().y, avail.x,

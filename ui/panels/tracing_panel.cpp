@@ -199,18 +199,19 @@ void continuity_controls(AppContext& ctx, const doc::Object& obj) {
     }
 }
 
+ImVec2 param_pixel(const Rect& sq, const geom::ParamRect& dom, double u, double v) {
+    return iv(domain_to_pixel(sq, {normalize_param(dom.u, u), normalize_param(dom.v, v)}));
+}
+
 // The rational picture over the current surface's part of the square: where w(u, v) < 0 a red
-// tint, its zero set (the surface at infinity) as a strong line, and each weight as a label at
-// its control point's Greville point (u_i*, v_j*), where that point pulls the surface most.
-void draw_rational_picture(AppContext& ctx, const geom::Surface& s, const Rect& sq,
-                           const geom::ParamRect& dom, ImDrawList* dl) {
+// tint, and its zero set (where the surface goes to infinity) as a strong line.
+void draw_denominator(AppContext& ctx, const geom::Surface& s, const Rect& sq,
+                      const geom::ParamRect& dom, ImDrawList* dl) {
     const float k = ctx.ui.scale();
     const bool light = ctx.ui.presentation;
-    auto px = [&](double u, double v) {
-        return iv(domain_to_pixel(sq, {normalize_param(dom.u, u), normalize_param(dom.v, v)}));
-    };
+    auto px = [&](double u, double v) { return param_pixel(sq, dom, u, v); };
     const geom::ParamRect own = geom::domain(s);
-    if (ctx.ui.show_denominator) {
+    {
         DenominatorView& view = ctx.ui.denominator;
         view.update(s);
         const int n = DenominatorView::sign_cells;
@@ -226,24 +227,46 @@ void draw_rational_picture(AppContext& ctx, const geom::Surface& s, const Rect& 
             dl->AddLine(px(seg.a.x, seg.a.y), px(seg.b.x, seg.b.y), zero, 2.5f * k);
         report_fact("tracing/zero_set_segments", static_cast<double>(view.zero_set().size()));
     }
-    if (ctx.ui.show_weights) {
+}
+
+// Each weight as a label at its control point's Greville point (u_i*, v_j*), where that point
+// pulls the surface most.
+void draw_weight_labels(AppContext& ctx, const geom::Surface& s, const Rect& sq,
+                        const geom::ParamRect& dom, ImDrawList* dl) {
+    const float k = ctx.ui.scale();
+    const bool light = ctx.ui.presentation;
+    auto px = [&](double u, double v) { return param_pixel(sq, dom, u, v); };
+    {
         const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text);
         const ImU32 warn = light ? IM_COL32(190, 0, 0, 255) : IM_COL32(255, 110, 110, 255);
         const ImU32 back = light ? IM_COL32(255, 255, 255, 200) : IM_COL32(20, 22, 28, 190);
+        // Weights other than 1 first (they are what the lesson is about), then the rest where
+        // they do not cover a label already drawn: a dense net stays readable.
+        std::vector<ImVec4> taken; // drawn labels as (x0, y0, x1, y1)
         int shown = 0;
-        for (int i = 0; i < s.n_u; ++i) {
-            const double u = geom::greville_abscissa(s.knots_u, s.degree_u, i);
-            for (int j = 0; j < s.n_v; ++j) {
-                const double v = geom::greville_abscissa(s.knots_v, s.degree_v, j);
-                const double w = s.weight(i, j);
-                const std::string label = short_number(w);
-                const ImVec2 at = px(u, v), ts = ImGui::CalcTextSize(label.c_str());
-                // Kept inside the square: the corner points' labels would hang over its edge.
-                const ImVec2 lo(std::clamp(at.x - ts.x / 2, sq.x, sq.x + sq.w - ts.x),
-                                std::clamp(at.y - ts.y / 2, sq.y, sq.y + sq.h - ts.y));
-                dl->AddRectFilled(lo, ImVec2(lo.x + ts.x, lo.y + ts.y), back, 2 * k);
-                dl->AddText(lo, w <= 0 ? warn : text, label.c_str());
-                ++shown;
+        for (const bool unusual : {true, false}) {
+            for (int i = 0; i < s.n_u; ++i) {
+                const double u = geom::greville_abscissa(s.knots_u, s.degree_u, i);
+                for (int j = 0; j < s.n_v; ++j) {
+                    const double w = s.weight(i, j);
+                    if ((w != 1) != unusual) continue;
+                    const double v = geom::greville_abscissa(s.knots_v, s.degree_v, j);
+                    const std::string label = short_number(w);
+                    const ImVec2 at = px(u, v), ts = ImGui::CalcTextSize(label.c_str());
+                    // Kept inside the square: corner labels would hang over its edge.
+                    const ImVec2 lo(std::clamp(at.x - ts.x / 2, sq.x, sq.x + sq.w - ts.x),
+                                    std::clamp(at.y - ts.y / 2, sq.y, sq.y + sq.h - ts.y));
+                    const ImVec4 box(lo.x - 1, lo.y, lo.x + ts.x + 1, lo.y + ts.y);
+                    const bool covers =
+                        std::any_of(taken.begin(), taken.end(), [&](const ImVec4& b) {
+                            return box.x < b.z && b.x < box.z && box.y < b.w && b.y < box.w;
+                        });
+                    if (covers) continue;
+                    taken.push_back(box);
+                    dl->AddRectFilled(ImVec2(box.x, box.y), ImVec2(box.z, box.w), back, 2 * k);
+                    dl->AddText(lo, w <= 0 ? warn : text, label.c_str());
+                    ++shown;
+                }
             }
         }
         report_fact("tracing/weight_labels", shown);
@@ -428,7 +451,7 @@ void draw_tracing_panel(AppContext& ctx) {
         pal.text, "u");
     dl->AddText(ImVec2(a.x + 4 * k, a.y + 2 * k), pal.text, "v");
 
-    if (rational) draw_rational_picture(ctx, *s, sq, dom, dl);
+    if (rational && ctx.ui.show_denominator) draw_denominator(ctx, *s, sq, dom, dl);
 
     // The indicator with its two isoparametric lines.
     const ImVec2 ip = iv(domain_to_pixel(sq, ctx.doc.view.indicator));
@@ -436,6 +459,8 @@ void draw_tracing_panel(AppContext& ctx) {
     dl->AddLine(ImVec2(a.x, ip.y), ImVec2(b.x, ip.y), pal.cross, 1.5f * k);
     dl->AddCircleFilled(ip, 7 * k, pal.indicator, 24);
     dl->AddCircle(ip, 7 * k, IM_COL32(0, 0, 0, 255), 24, 1.5f * k);
+    // Over the indicator, so a weight under it stays readable.
+    if (rational && ctx.ui.show_weights) draw_weight_labels(ctx, *s, sq, dom, dl);
 
     // Knot ticks are handles (after the drawing: their buttons sit beside the square).
     knot_strip(ctx, *obj, *s, geom::Dir::u, tu, px_u, {a.x - 4 * k, b.y, sq.w + 8 * k, label_h}, sq,

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/common.hpp>
+#include <glm/vector_relational.hpp>
 
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
@@ -44,22 +45,32 @@ HomogeneousScene homogeneous_scene(const geom::Curve& c, std::array<int, 2> axes
     if (const auto p = geom::curve_point(c, t))
         h.projected_at_t = glm::dvec3((*p)[axes[0]], (*p)[axes[1]], 1.0);
 
-    // The plane w = 1 drawn around the projected control points and curve (points far away
-    // where w is nearly 0 would shrink the rest to nothing: those are left to the rays).
-    glm::dvec2 lo{-1, -1}, hi{1, 1};
-    bool any = false;
-    auto take = [&](const glm::dvec3& p) {
-        if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
-        lo = any ? glm::min(lo, glm::dvec2(p)) : glm::dvec2(p);
-        hi = any ? glm::max(hi, glm::dvec2(p)) : glm::dvec2(p);
-        any = true;
-    };
+    // The plane w = 1 drawn around the projected control points, and the curve where it stays
+    // near them: where w nears 0 the curve runs off to infinity, and framing those far points
+    // would shrink the rest to nothing (the picture clips them instead).
+    glm::dvec2 lo{0}, hi{0};
+    for (std::size_t k = 0; k < h.projected_points.size(); ++k) {
+        const glm::dvec2 p(h.projected_points[k]);
+        lo = k == 0 ? p : glm::min(lo, p);
+        hi = k == 0 ? p : glm::max(hi, p);
+    }
+    const glm::dvec2 reach = 0.5 * glm::dvec2(std::max({hi.x - lo.x, hi.y - lo.y, 1e-9}));
+    const glm::dvec2 near_lo = lo - reach, near_hi = hi + reach;
     for (const auto& run : h.projected_curve)
-        for (const glm::dvec3& p : run) take(p);
-    for (const glm::dvec3& p : h.projected_points) take(p);
-    const glm::dvec2 margin = 0.1 * glm::max(hi - lo, glm::dvec2(1e-9));
-    h.plane_lo = lo - margin;
-    h.plane_hi = hi + margin;
+        for (const glm::dvec3& q : run) {
+            const glm::dvec2 p(q);
+            if (glm::all(glm::greaterThanEqual(p, near_lo)) &&
+                glm::all(glm::lessThanEqual(p, near_hi))) {
+                lo = glm::min(lo, p);
+                hi = glm::max(hi, p);
+            }
+        }
+    // A curve seen edge-on (a straight line in this plane) still gets a plane one can see.
+    const double side = std::max({hi.x - lo.x, hi.y - lo.y, 1e-9});
+    const glm::dvec2 centre = 0.5 * (lo + hi);
+    const glm::dvec2 half = 0.5 * glm::max(hi - lo, glm::dvec2(0.4 * side)) + 0.1 * side;
+    h.plane_lo = centre - half;
+    h.plane_hi = centre + half;
     h.lo = glm::dvec3(std::min(h.plane_lo.x, 0.0), std::min(h.plane_lo.y, 0.0), 0.0);
     h.hi = glm::dvec3(std::max(h.plane_hi.x, 0.0), std::max(h.plane_hi.y, 0.0), 1.0);
     for (const glm::dvec3& p : h.lifted_points) {
@@ -67,6 +78,20 @@ HomogeneousScene homogeneous_scene(const geom::Curve& c, std::array<int, 2> axes
         h.hi = glm::max(h.hi, p);
     }
     return h;
+}
+
+std::array<int, 2> best_plane(const geom::Curve& c) {
+    glm::dvec3 lo(0.0), hi(0.0);
+    for (std::size_t k = 0; k < c.points.size(); ++k) {
+        lo = k == 0 ? c.points[k] : glm::min(lo, c.points[k]);
+        hi = k == 0 ? c.points[k] : glm::max(hi, c.points[k]);
+    }
+    const glm::dvec3 e = hi - lo;
+    // Leave out the axis of the smallest extent (ties keep x before y before z).
+    if (e.z < e.x && e.z < e.y) return {0, 1};
+    if (e.y < e.x) return {0, 2};
+    if (e.x < e.y || e.x < e.z) return {1, 2};
+    return {0, 1};
 }
 
 glm::dvec3 orbit_project(const glm::dvec3& p, double yaw_degrees, double pitch_degrees) {

@@ -31,6 +31,10 @@ struct HomogeneousScene {
 HomogeneousScene homogeneous_scene(const geom::Curve& c, std::array<int, 2> axes, double t,
                                    int samples = 200);
 
+// The two coordinates a curve is best seen in: the pair with the largest extents of its
+// control points (a surface's isocurve across a hill is seen from the side, not from above).
+std::array<int, 2> best_plane(const geom::Curve& c);
+
 // An orthographic orbit camera for the picture: yaw about the w axis, then pitch; the result
 // is (right, up, depth) in the picture's units before scaling.
 glm::dvec3 orbit_project(const glm::dvec3& p, double yaw_degrees, double pitch_degrees);
