@@ -28,8 +28,10 @@ void analysis_toggles(AppContext& ctx) {
                           "the teeth's ends show how curvature changes along the curve.");
     same_line_if_fits(toggle_width("Osculating circle"));
     ImGui::Checkbox("Osculating circle", &cd.osculating);
+    report_item("curve/osculating");
     same_line_if_fits(toggle_width("Frenet frame"));
     ImGui::Checkbox("Frenet frame", &cd.frenet);
+    report_item("curve/frenet");
 }
 
 void draw_curve_analysis(const AppContext& ctx, const geom::Curve& c, double t, ImDrawList* dl,
