@@ -12,7 +12,7 @@
 namespace isoparm::doc {
 
 // The finest levels (J_u, J_v) of an object that has levels (curves: J_v = -1). Refusals name
-// the offending value: geom::multires_level's paths ("/type", "/degree", "/points",
+// the offending value: geom::multires_level's paths ("/weights/k", "/degree", "/points",
 // "/knots/k"; surfaces "/n_u", "/knots_v/k", ...), an implicit surface or a curve whose knots
 // follow its polygon (chord length, centripetal, closed) at "/id". The menus grey their item
 // with this message.

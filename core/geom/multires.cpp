@@ -37,6 +37,21 @@ int level_of_count(int n) {
     return -1;
 }
 
+// A rational object with unequal weights is not a B-spline in its control points: the filters
+// act on Cartesian points, which is exact only when every weight is the same.
+Status check_equal_weights(SplineType type, const std::vector<double>& w, const std::string& what) {
+    if (!is_rational(type)) return Ok{};
+    for (std::size_t k = 1; k < w.size(); ++k)
+        if (w[k] != w[0])
+            return make_error(ErrorCode::weights,
+                              what + " is " + label_of(type) + " with weight " + std::to_string(k) +
+                                  " = " + number_text(w[k]) +
+                                  " unlike weight 0 = " + number_text(w[0]) +
+                                  ": multiresolution editing takes B-splines (equal weights)",
+                              "/weights/" + std::to_string(k));
+    return Ok{};
+}
+
 } // namespace
 
 Expected<int> dyadic_level(const Knots& U, int degree, int n, const DyadicPaths& at,
@@ -72,21 +87,13 @@ Expected<int> dyadic_level(const Knots& U, int degree, int n, const DyadicPaths&
 }
 
 Expected<int> multires_level(const Curve& c) {
-    if (is_rational(c.type))
-        return make_error(ErrorCode::weights,
-                          std::string("the curve is ") + label_of(c.type) +
-                              " (rational): multiresolution editing takes non-rational B-splines",
-                          "/type");
+    if (auto st = check_equal_weights(c.type, c.weights, "the curve"); !st) return st.error();
     return dyadic_level(c.knots, c.degree, c.count(), {"/degree", "/points", "/knots"},
                         "the curve");
 }
 
 Expected<std::pair<int, int>> multires_levels(const Surface& s) {
-    if (is_rational(s.type))
-        return make_error(ErrorCode::weights,
-                          std::string("the surface is ") + label_of(s.type) +
-                              " (rational): multiresolution editing takes non-rational B-splines",
-                          "/type");
+    if (auto st = check_equal_weights(s.type, s.weights, "the surface"); !st) return st.error();
     auto ju = dyadic_level(s.knots_u, s.degree_u, s.n_u, {"/degree_u", "/n_u", "/knots_u"},
                            "the surface in u");
     if (!ju) return ju.error();

@@ -14,9 +14,10 @@
 
 namespace isoparm::geom {
 
-// J for a curve that qualifies: non-rational, degree 3, 2^J + 3 control points (1 <= J <=
+// J for a curve that qualifies: equal weights (any non-rational type, or a rational one whose
+// weights are all the same, which is then a B-spline), degree 3, 2^J + 3 control points (1 <= J <=
 // max_wavelet_level), clamped knots with equal interior spans. Otherwise the refusal names
-// the offending value: "/type", "/degree", "/points" (the count), "/knots/k" (that knot).
+// the offending value: "/weights/k", "/degree", "/points" (the count), "/knots/k" (that knot).
 Expected<int> multires_level(const Curve& c);
 // (J_u, J_v) for a surface under the same rules per direction ("/knots_u/k", "/n_v", ...).
 Expected<std::pair<int, int>> multires_levels(const Surface& s);

@@ -126,13 +126,14 @@ TEST(MultiresCommand, ADetailEditKeepsTheCoarsePointsOnCurvesAndSurfaces) {
 
 TEST(MultiresCommand, RefusalsNameTheMemberAtFault) {
     Document doc = multires_document();
-    // The sample curve is a NURBS curve with a double knot: the object does not qualify.
+    // The sample curve is a NURBS curve with unequal weights: the object does not qualify.
     {
         auto levels = multires_levels_of(*doc.find(curve_id));
         ASSERT_FALSE(levels.ok());
         EXPECT_EQ(levels.error().path, "/id");
-        EXPECT_NE(levels.error().message.find("object 'profile': the curve is NURBS"),
-                  std::string::npos)
+        EXPECT_NE(
+            levels.error().message.find("object 'profile': the curve is NURBS with weight 1 = 0.5"),
+            std::string::npos)
             << levels.error().message;
     }
     expect_refused(doc, multires_edit(move_spec(curve_id, 1, 0, {0, 0, 0})),

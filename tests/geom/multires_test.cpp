@@ -224,12 +224,17 @@ TEST(Multires, RefusalsNameTheOffendingValue) {
         EXPECT_NE(r.error().message.find("knot 5 = "), std::string::npos) << r.error().message;
     }
     {
+        // A NURBS curve with equal weights is a B-spline; one weight apart, it is refused.
         Curve rational = c;
         rational.type = SplineType::nurbs;
+        EXPECT_TRUE(multires_level(rational).ok());
+        rational.weights[7] = 0.5;
         auto r = multires_level(rational);
         ASSERT_FALSE(r.ok());
-        EXPECT_EQ(r.error().path, "/type");
-        EXPECT_NE(r.error().message.find("NURBS"), std::string::npos) << r.error().message;
+        EXPECT_EQ(r.error().path, "/weights/7");
+        EXPECT_NE(r.error().message.find("NURBS with weight 7 = 0.5 unlike weight 0 = 1"),
+                  std::string::npos)
+            << r.error().message;
     }
     auto level = multires_coarse_points(c, 4);
     ASSERT_FALSE(level.ok());
