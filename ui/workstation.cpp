@@ -177,6 +177,15 @@ void Workstation::layout_panels() {
             draw_continuity_panel(ctx_);
             ImGui::EndTabItem();
         }
+        const ImGuiTabItemFlags multires_bring =
+            ui.multires.show_tab ? ImGuiTabItemFlags_SetSelected : 0;
+        ui.multires.show_tab = false;
+        const bool multires = ImGui::BeginTabItem("Multires", nullptr, multires_bring);
+        report_item("tab/Multires");
+        if (multires) {
+            draw_multires_panel(ctx_);
+            ImGui::EndTabItem();
+        }
         ImGui::EndTabBar();
     }
     ImGui::End();
