@@ -247,6 +247,14 @@ struct MultiresState {
     bool show_tab = false; // bring the Multires tab forward once (the menu item)
 };
 
+// The Blossom tab (ui/panels/blossom_panel.cpp): the sliders' blossom arguments, kept while the
+// object and its piece stay (u-arguments in `args`, a surface's v-arguments in `v_args`).
+struct BlossomState {
+    std::vector<double> args, v_args;
+    std::uint64_t object = 0, v_object = 0;
+    int span = -1, v_span = -1;
+};
+
 // When the status bar's message appeared (it fades, then goes, after status_seconds).
 struct StatusAge {
     std::string text;
@@ -309,6 +317,7 @@ struct UiState {
     ToolboxState toolbox;
     FitState fit;
     MultiresState multires;
+    BlossomState blossom;
     AnalysisView analysis; // this frame's analysis colouring (the 3D view's colour bar reads it)
     bool knot_continuity = false; // Display > Knot curves by continuity
 

@@ -171,6 +171,12 @@ void Workstation::layout_panels() {
             draw_deboor_panel(ctx_);
             ImGui::EndTabItem();
         }
+        const bool blossom = ImGui::BeginTabItem("Blossom");
+        report_item("tab/Blossom");
+        if (blossom) {
+            draw_blossom_panel(ctx_);
+            ImGui::EndTabItem();
+        }
         const bool continuity = ImGui::BeginTabItem("Continuity");
         report_item("tab/Continuity");
         if (continuity) {

@@ -18,6 +18,7 @@ void toolbox_items(AppContext& ctx, bool curve); // removal, reduction, splittin
 void draw_construct_dialog(AppContext& ctx);     // the Construct menu's dialog
 void draw_basis_plot_panel(AppContext& ctx);     // R_ij at (u, v), its support, N_i and N_j
 void draw_deboor_panel(AppContext& ctx);         // de Boor's levels at (u, v), step control
+void draw_blossom_panel(AppContext& ctx);        // polar forms of de Boor's points, f(a_1..a_p)
 void draw_continuity_panel(AppContext& ctx);     // a patch group's borders, measured
 void draw_multires_panel(AppContext& ctx);       // levels, coarse points, detail (wavelets)
 void draw_control_panel(AppContext& ctx);        // colours and display settings
