@@ -461,6 +461,25 @@ def multires_tab_drags_a_coarse_point(s, ctx):
     check(by_name(s.save(), name)["curve"]["points"] == points, "Ctrl+Z did not bring the detail back")
 
 
+def blossom_tab_reproduces_points(s, ctx):
+    """The Blossom tab on the vase profile (curve-designer.json): a slider moves the argument
+    a1 away from t; the P4 button sets the arguments to P4's knots and f equals P4; the
+    diagonal button gives back the curve point."""
+    s.click_named("tab/Blossom")
+    s.wait_for("the Blossom tab", lambda r: "blossom/a1" in r["rects"])
+    s.click_named("blossom/a1", 0.85, 0.5)
+    s.wait_for("a1 off the diagonal", lambda r: r["facts"].get("blossom/diagonal_gap") == -1)
+    ctx.shot(s, "a1-moved")
+    s.click_named("blossom/P4")
+    r = s.wait_for("P4's knots", lambda r: r["facts"].get("blossom/control_gap", -1) >= 0)
+    check(r["facts"]["blossom/control_gap"] < 1e-9,
+          f"f at P4's knots is {r['facts']['blossom/control_gap']} from P4")
+    s.click_named("blossom/diagonal")
+    r = s.wait_for("the diagonal", lambda r: r["facts"].get("blossom/diagonal_gap", -1) >= 0)
+    check(r["facts"]["blossom/diagonal_gap"] < 1e-9,
+          f"f(t, t, t) is {r['facts']['blossom/diagonal_gap']} from the curve point")
+
+
 SCENARIOS = [
     ("window_fits", "fig3b-weight-5.json", window_fits_the_screen),
     ("window_size", "fig3b-weight-5.json", window_size_is_remembered),
@@ -480,6 +499,7 @@ SCENARIOS = [
     ("export_import", "fig8-revolution.json", file_export_then_import),
     ("continuity_tab", "fig6c-split-left-v05.json", continuity_tab_measures_the_borders),
     ("multires_tab", "fig3b-weight-5.json", multires_tab_drags_a_coarse_point),
+    ("blossom_tab", "curve-designer.json", blossom_tab_reproduces_points),
 ]
 
 
