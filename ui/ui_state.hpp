@@ -20,6 +20,7 @@
 #include "ui/lesson.hpp"
 #include "ui/view/camera.hpp"
 #include "ui/view/canvas_map.hpp"
+#include "ui/view/denominator_view.hpp"
 #include "ui/view/layout.hpp"
 #include "ui/view/picking.hpp"
 #include "ui/view/scene_draw.hpp"
@@ -225,6 +226,17 @@ struct FitState {
     glm::dvec2 frame_lo{0}, frame_hi{0};
 };
 
+// The Homogeneous tab: which curve is lifted to (w a, w b, w) and how the picture is turned.
+struct HomogeneousState {
+    int isocurve = 0; // of a surface: 0 the curve along u through the indicator, 1 along v
+    // The coordinates seen: -1 the best plane (ui/view/homogeneous_scene.hpp), 0 xy, 1 xz,
+    // 2 yz; a planar curve is always seen in its own plane.
+    int plane = -1;
+    double yaw = -40, pitch = 18; // degrees
+    double zoom = 1;
+    bool labels = true; // weights beside the lifted control points
+};
+
 // The toolbox's settings: how far knot removal and degree reduction may move the shape.
 struct ToolboxState {
     double tolerance = 0.01; // model units
@@ -320,6 +332,14 @@ struct UiState {
     BlossomState blossom;
     AnalysisView analysis; // this frame's analysis colouring (the 3D view's colour bar reads it)
     bool knot_continuity = false; // Display > Knot curves by continuity
+    // The current patch group's borders in the colour of their measured continuity (Display >
+    // Borders by continuity, and the Continuity tab).
+    bool border_continuity = false;
+    // The tracing square's rational picture: the sign of the denominator w(u, v) with its zero
+    // set, and each control point's weight at its Greville point.
+    bool show_denominator = false, show_weights = false;
+    DenominatorView denominator;
+    HomogeneousState homogeneous;
 
     // Presentation enlarges everything by half, or by a quarter in a window under 800 px
     // high (a 1024x768 projector), where text is then 19 px and the panels still fit.

@@ -161,35 +161,38 @@ void Workstation::layout_panels() {
     // brings its tab forward.
     if (begin_panel("Basis and de Boor", l.left[1], ImGuiWindowFlags_NoTitleBar) &&
         ImGui::BeginTabBar("##left_tabs")) {
-        if (ImGui::BeginTabItem("Basis")) {
-            draw_basis_plot_panel(ctx_);
-            ImGui::EndTabItem();
-        }
         const ImGuiTabItemFlags bring = ui.deboor.show_tab ? ImGuiTabItemFlags_SetSelected : 0;
         ui.deboor.show_tab = false;
-        if (ImGui::BeginTabItem("de Boor", nullptr, bring)) {
-            draw_deboor_panel(ctx_);
-            ImGui::EndTabItem();
-        }
-        const bool blossom = ImGui::BeginTabItem("Blossom");
-        report_item("tab/Blossom");
-        if (blossom) {
-            draw_blossom_panel(ctx_);
-            ImGui::EndTabItem();
-        }
-        const bool continuity = ImGui::BeginTabItem("Continuity");
-        report_item("tab/Continuity");
-        if (continuity) {
-            draw_continuity_panel(ctx_);
-            ImGui::EndTabItem();
-        }
         const ImGuiTabItemFlags multires_bring =
             ui.multires.show_tab ? ImGuiTabItemFlags_SetSelected : 0;
         ui.multires.show_tab = false;
-        const bool multires = ImGui::BeginTabItem("Multires", nullptr, multires_bring);
-        report_item("tab/Multires");
-        if (multires) {
-            draw_multires_panel(ctx_);
+        // A narrow column (a projector) shortens the names ("Ba..."): each tab says what it
+        // is when the pointer rests on it.
+        struct Tab {
+            const char* name;
+            const char* what;
+            void (*draw)(AppContext&);
+            ImGuiTabItemFlags flags;
+        };
+        const Tab tabs[] = {
+            {"Basis", "Basis: R_ij of the selected point at (u, v), N_i and N_j",
+             draw_basis_plot_panel, 0},
+            {"de Boor", "de Boor's construction at (u, v), step by step", draw_deboor_panel, bring},
+            {"Blossom", "Blossom: every de Boor point as its polar form f(a_1, .., a_p)",
+             draw_blossom_panel, 0},
+            {"Continuity", "Continuity: every border of the patch group, measured",
+             draw_continuity_panel, 0},
+            {"Homogeneous", "Homogeneous: a curve lifted to (w x, w y, w) and projected to w = 1",
+             draw_homogeneous_panel, 0},
+            {"Multires", "Multires: a coarse polygon plus detail at every level (wavelets)",
+             draw_multires_panel, multires_bring},
+        };
+        for (const Tab& t : tabs) {
+            const bool open = ImGui::BeginTabItem(t.name, nullptr, t.flags);
+            report_item(std::string("tab/") + t.name);
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", t.what);
+            if (!open) continue;
+            t.draw(ctx_);
             ImGui::EndTabItem();
         }
         ImGui::EndTabBar();
@@ -307,6 +310,9 @@ void Workstation::frame(unsigned target_framebuffer) {
     style.scale = scale;
     style.deboor_step = ui.deboor.step;
     style.knot_continuity = ui.knot_continuity;
+    style.border_continuity = ui.border_continuity;
+    style.curve_glyphs = {ui.curve.comb, ui.curve.osculating, ui.curve.frenet};
+    style.curve_t = ui.curve.trace_t;
     if (ui.drag.kind == ViewDrag::Kind::point && ui.drag.axis >= 0) {
         style.guide_axis = ui.drag.axis;
         style.guide_point = ui.drag.start;

@@ -45,4 +45,53 @@ BorderMeasure measure_border(const Document& doc, const SharedBorder& border, in
     return m;
 }
 
+namespace {
+constexpr double length_tolerance = 1e-9; // relative to the group's size
+constexpr double angle_tolerance = 1e-6;  // degrees
+constexpr double curvature_tolerance = 1e-6;
+} // namespace
+
+BorderHolds border_holds(const BorderMeasure& m, double size) {
+    BorderHolds h;
+    if (m.sampled == 0) return h; // nothing measured: nothing shown to hold
+    h.c0 = m.gap <= length_tolerance * size;
+    h.g1 = m.angle_degrees <= angle_tolerance;
+    h.c1 = m.derivative <= length_tolerance * size;
+    h.g2 = m.curvature <= curvature_tolerance;
+    return h;
+}
+
+BorderLevel border_level(const BorderMeasure& m, double size) {
+    const BorderHolds h = border_holds(m, size);
+    if (!h.c0) return BorderLevel::broken;
+    if (!h.g1) return BorderLevel::c0;
+    if (!h.c1) return BorderLevel::g1;
+    return h.g2 ? BorderLevel::g2 : BorderLevel::c1;
+}
+
+const char* border_level_name(BorderLevel level) {
+    switch (level) {
+    case BorderLevel::broken:
+        return "broken";
+    case BorderLevel::c0:
+        return "C0";
+    case BorderLevel::g1:
+        return "G1";
+    case BorderLevel::c1:
+        return "C1";
+    case BorderLevel::g2:
+        return "C1 + G2";
+    }
+    return "?";
+}
+
+double group_size(const Document& doc, std::uint64_t group) {
+    double size = 0;
+    for (const Object* p : patch_members(doc, group))
+        if (const geom::Surface* s = p->surface())
+            for (const glm::dvec3& q : s->points)
+                size = std::max({size, std::abs(q.x), std::abs(q.y), std::abs(q.z)});
+    return std::max(size, 1e-300);
+}
+
 } // namespace isoparm::doc

@@ -21,4 +21,21 @@ struct BorderMeasure {
 };
 BorderMeasure measure_border(const Document& doc, const SharedBorder& border, int samples = 33);
 
+// Which conditions the figures meet. Gap and derivative are lengths, held when below 1e-9 of
+// `size` (a gap of 1e-12 on a unit patch is a join); the angle holds below 1e-6 degrees and
+// the mean-curvature jump below 1e-6 (both already relative to nothing that scales).
+struct BorderHolds {
+    bool c0 = false, g1 = false, c1 = false, g2 = false;
+};
+BorderHolds border_holds(const BorderMeasure& m, double size);
+
+// The best level a border shows, each needing the ones before it: what the 3D view colours it.
+// `g2` means C1 with the mean curvature continuous as well.
+enum class BorderLevel { broken, c0, g1, c1, g2 };
+BorderLevel border_level(const BorderMeasure& m, double size);
+const char* border_level_name(BorderLevel level);
+
+// The size figures are relative to: the largest coordinate of the group's control points.
+double group_size(const Document& doc, std::uint64_t group);
+
 } // namespace isoparm::doc

@@ -6,6 +6,7 @@
 
 #include "core/doc/commands_common.hpp"
 #include "core/doc/shape_edit.hpp"
+#include "core/geom/knots.hpp"
 
 namespace isoparm::doc::detail {
 
@@ -26,9 +27,7 @@ Line line_of(const Shape& shape, Dir dir) {
 // finds "the same control point" in a new net. Summed as a running mean so that huge knots
 // cannot overflow.
 double greville(const Line& L, int i) {
-    double g = 0;
-    for (int k = 1; k <= L.p; ++k) g += ((*L.U)[i + k] - g) / k;
-    return g;
+    return geom::greville_abscissa(*L.U, L.p, i);
 }
 
 int nearest_greville(const Line& L, double g) {

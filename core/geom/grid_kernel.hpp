@@ -1,34 +1,70 @@
-// The vertex loop of GridTessellator, built twice (AVX2+FMA and baseline x86-64) and chosen
-// at run time; both builds compile the same source (grid_kernel.inl).
+// The vertex kernel of GridTessellator, built three times from one source (grid_kernel.inl):
+// baseline x86-64 (or any other architecture), AVX2+FMA and AVX-512, chosen at run time.
+//
+// Scheme (the tensor product of Piegl & Tiller A3.5, contracted one direction at a time and
+// vectorized ACROSS SAMPLES, lanes = consecutive sample columns):
+//   1. v first, per control row a: R_a(v_j) = sum_c N_c(v_j) Pw[a][c] for the block's sample
+//      columns. Lanes of one vector fall in up to `nc` consecutive control columns, so the
+//      basis is stored "banded" per chunk of `lanes` samples (zeros outside each lane's span):
+//      the control points are broadcast scalars and the basis a streamed vector.
+//   2. then u, per sample row i: S(u_i, v_j) = sum_r N_r(u_i) R_{first_i + r}(v_j): the u basis
+//      values are the same for the whole row (kept in registers), R rows are contiguous.
+// Step 1 costs n_u / samples_u of step 2 per point. Every lane runs the same instructions in
+// the same order whatever the block or thread split, so results do not depend on either.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 namespace isoparm::geom::kernel {
 
-// One sample row: vertices j0..j1. Q and dQ hold the row's control net contracted in u (and
-// its u-derivative), 4 doubles (wx, wy, wz, w) per control column.
-struct RowArgs {
-    const double* N;  // (q + 1) basis values per sample column
-    const double* dN; // (q + 1) first derivatives per sample column
-    const int* first; // first control column per sample column
-    const double* Q;
-    const double* dQ;
-    int q;
-    int j0, j1;
-    // The row's vertices as x, y, z triples, indexed by sample column. Plain doubles: the
-    // AVX2 build must not instantiate inline library code (an ODR hazard across builds).
+enum class Path : std::uint8_t { baseline = 0, avx2 = 1, avx512 = 2 };
+
+// One block: sample rows i0..i1 and columns j0..j1 of the grid.
+struct GridArgs {
+    // u direction: (p + 1) values per sample row, first control row of each sample row.
+    const double* Nu;
+    const double* dNu;
+    const int* first_u;
+    int p;
+    // v direction, banded: per chunk k of `lanes` sample columns, nc columns of `lanes` values
+    // (M[(k * nc + c) * lanes + lane] multiplies control column f0[k] + c).
+    const double* M;
+    const double* dM;
+    const int* f0;
+    int nc;
+    // The homogeneous net (wx, wy, wz, w), control point (a, c) at (a * n_v + c) * 4.
+    const double* Pw;
+    int n_v;
+    int i0, i1, j0, j1;
+    int samples_v; // row stride of positions / normals / status
+    // Outputs as x, y, z triples indexed i * samples_v + j (plain doubles: the ISA builds must
+    // not instantiate inline library code, an ODR hazard across builds).
     double* positions;
     double* normals;      // null: positions only (no derivatives are formed)
-    std::uint8_t* status; // out: 0 done, 1 degenerate normal, 2 point does not exist
+    std::uint8_t* status; // (i - i0) * samples_v + j: 0 done, 1 degenerate normal, 2 missing
+    double* scratch;      // scratch_doubles(*this, lanes) doubles
+    bool generic;         // tests: the run-time-degree code instead of the specialised one
 };
 
 enum : std::uint8_t { vertex_ok = 0, vertex_degenerate = 1, vertex_missing = 2 };
 
-void row(const RowArgs& a);
+// Lanes (sample columns per vector) of a path: 2 baseline, 4 AVX2, 8 AVX-512.
+int lanes(Path path);
+// Whether this build has the path and this CPU runs it.
+bool supported(Path path);
+// The path in use: the widest supported, or ISOPARM_SIMD=baseline|avx2|avx512 where that one
+// is supported (read once; an unsupported or unknown value is ignored).
+Path active_path();
+const char* name(Path path);
+std::size_t scratch_doubles(const GridArgs& a, int lanes);
 
-// The two builds (kernel::row picks one).
-void row_avx2(const RowArgs& a);
-void row_baseline(const RowArgs& a);
+// Evaluates the block; returns how many of its vertices are not vertex_ok.
+long run(Path path, const GridArgs& a);
+
+// The builds (run picks one).
+long run_baseline(const GridArgs& a);
+long run_avx2(const GridArgs& a);
+long run_avx512(const GridArgs& a);
 
 } // namespace isoparm::geom::kernel

@@ -1,129 +1,361 @@
-// The vertex kernel source, included by grid_kernel_avx2.cpp and grid_kernel_baseline.cpp.
-// Fixed column counts let the compiler unroll and keep (x, y, z, w) in one vector register.
+// The vertex kernel source (see grid_kernel.hpp for the scheme), included by
+// grid_kernel_baseline.cpp, grid_kernel_avx2.cpp and grid_kernel_avx512.cpp, each of which
+// defines ISOPARM_KERNEL_LANES (doubles per vector) first. Everything here is in an anonymous
+// namespace and calls no inline library code, so the builds cannot lend each other code.
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
+
 namespace {
 
-// (wx, wy, wz, w) as one vector: one AVX register in the AVX2 build, two SSE2 registers in
-// the baseline build (GCC/Clang vector extensions).
-typedef double v4d __attribute__((vector_size(32)));
+using isoparm::geom::kernel::GridArgs;
 
-// By reference: returning a vector type from a non-AVX function would change the ABI.
-inline void load4(v4d& v, const double* p) {
+constexpr int W = ISOPARM_KERNEL_LANES;
+// W sample columns as one vector (GCC/Clang vector extensions: one zmm / ymm register in the
+// AVX-512 / AVX2 builds, one xmm (SSE2, or NEON elsewhere) register in the baseline build: a
+// wider generic vector would live on the stack there) and the masks comparisons give.
+typedef double vd __attribute__((vector_size(8 * W)));
+typedef long long vm __attribute__((vector_size(8 * W)));
+typedef double v4 __attribute__((vector_size(32)));
+
+inline void load(vd& v, const double* p) {
     __builtin_memcpy(&v, p, sizeof v);
 }
-
-template <int Cols>
-inline void contract_point(const isoparm::geom::kernel::RowArgs& a, int j, v4d& A) {
-    const int cols = Cols > 0 ? Cols : a.q + 1;
-    const double* N = a.N + static_cast<long>(j) * cols;
-    const double* Q = a.Q + 4L * a.first[j];
-    v4d s = {0, 0, 0, 0};
-    for (int r = 0; r < cols; ++r) {
-        v4d q;
-        load4(q, Q + 4 * r);
-        s += N[r] * q;
-    }
-    A = s;
+inline void store(double* p, const vd& v) {
+    __builtin_memcpy(p, &v, sizeof v);
 }
 
-template <int Cols>
-inline void contract(const isoparm::geom::kernel::RowArgs& a, int j, v4d& A, v4d& Au, v4d& Av) {
-    const int cols = Cols > 0 ? Cols : a.q + 1;
-    const double* N = a.N + static_cast<long>(j) * cols;
-    const double* dN = a.dN + static_cast<long>(j) * cols;
-    const double* Q = a.Q + 4L * a.first[j];
-    const double* dQ = a.dQ + 4L * a.first[j];
-    v4d s = {0, 0, 0, 0}, su = {0, 0, 0, 0}, sv = {0, 0, 0, 0};
-    for (int r = 0; r < cols; ++r) {
-        v4d q, dq;
-        load4(q, Q + 4 * r);
-        load4(dq, dQ + 4 * r);
-        s += N[r] * q;
-        su += N[r] * dq;
-        sv += dN[r] * q;
-    }
-    A = s;
-    Au = su;
-    Av = sv;
+// acc + a * b. The kernel files are compiled with -ffp-contract=off, so that the multiply-adds
+// fused are exactly these (the same in every instantiation, every degree and every build with
+// FMA), not whichever ones the compiler chooses per inlining context.
+// (By reference: returning a vector type from a non-AVX function would change the ABI.)
+inline void madd(vd& acc, const vd& a, const vd& b) {
+#if defined(__AVX512F__) && ISOPARM_KERNEL_LANES == 8
+    acc = (vd)_mm512_fmadd_pd((__m512d)a, (__m512d)b, (__m512d)acc);
+#elif defined(__FMA__) && ISOPARM_KERNEL_LANES == 4
+    acc = (vd)_mm256_fmadd_pd((__m256d)a, (__m256d)b, (__m256d)acc);
+#else
+    acc += a * b;
+#endif
+}
+inline void madd(vd& acc, double a, const vd& b) {
+    madd(acc, vd{} + a, b);
+}
+inline void madd(vd& acc, const vd& a, double b) {
+    madd(acc, a, vd{} + b);
 }
 
-// S = A / w, S_u = (A_u - w_u S) / w, S_v likewise (A4.4 to first order); the normal is
-// degenerate where |S_u x S_v| < 1e-10 max(|S_u|, |S_v|)^2 (as normal_from_derivatives).
-template <int Cols> void positions_impl(const isoparm::geom::kernel::RowArgs& a) {
+// One bit per lane where the mask is set.
+inline int bits(const vm& m) {
+#if defined(__AVX512F__) && ISOPARM_KERNEL_LANES == 8
+    return _mm512_test_epi64_mask((__m512i)m, (__m512i)m);
+#elif defined(__AVX__) && ISOPARM_KERNEL_LANES == 4
+    return _mm256_movemask_pd((__m256d)m);
+#elif defined(__SSE2__) && ISOPARM_KERNEL_LANES == 2
+    return _mm_movemask_pd((__m128d)m);
+#else
+    int b = 0;
+    for (int l = 0; l < W; ++l) b |= (m[l] != 0) << l;
+    return b;
+#endif
+}
+
+inline void vsqrt(vd& r, const vd& x) {
+#if defined(__AVX512F__) && ISOPARM_KERNEL_LANES == 8
+    // The masked form: GCC 12 warns about _mm512_sqrt_pd's undefined pass-through operand.
+    r = (vd)_mm512_mask_sqrt_pd((__m512d)x, (__mmask8)0xFF, (__m512d)x);
+#elif defined(__AVX__) && ISOPARM_KERNEL_LANES == 4
+    r = (vd)_mm256_sqrt_pd((__m256d)x);
+#elif defined(__SSE2__) && ISOPARM_KERNEL_LANES == 2
+    r = (vd)_mm_sqrt_pd((__m128d)x);
+#else
+    for (int l = 0; l < W; ++l) r[l] = __builtin_sqrt(x[l]);
+#endif
+}
+
+// Four lanes of x, y, z as 12 consecutive doubles (x0 y0 z0 x1 | y1 z1 x2 y2 | z2 x3 y3 z3).
+inline void store_xyz4(double* out, const v4& x, const v4& y, const v4& z) {
+    const v4 t0 = __builtin_shufflevector(x, y, 0, 4, 1, 5);
+    const v4 o0 = __builtin_shufflevector(t0, z, 0, 1, 4, 2);
+    const v4 t1 = __builtin_shufflevector(y, z, 1, 5, 2, 6);
+    const v4 o1 = __builtin_shufflevector(t1, x, 0, 1, 6, 2);
+    const v4 t2 = __builtin_shufflevector(x, y, 3, 7, 3, 7);
+    const v4 o2 = __builtin_shufflevector(z, t2, 2, 4, 5, 3);
+    __builtin_memcpy(out, &o0, 32);
+    __builtin_memcpy(out + 4, &o1, 32);
+    __builtin_memcpy(out + 8, &o2, 32);
+}
+
+inline void store_xyz(double* out, const vd& x, const vd& y, const vd& z) {
+#if ISOPARM_KERNEL_LANES == 2
+    typedef double v2 __attribute__((vector_size(16)));
+    const v2 o0 = __builtin_shufflevector(x, y, 0, 2), o1 = __builtin_shufflevector(z, x, 0, 3),
+             o2 = __builtin_shufflevector(y, z, 1, 3);
+    __builtin_memcpy(out, &o0, 16);
+    __builtin_memcpy(out + 2, &o1, 16);
+    __builtin_memcpy(out + 4, &o2, 16);
+#elif ISOPARM_KERNEL_LANES == 4
+    store_xyz4(out, x, y, z);
+#else
+    for (int h = 0; h < W; h += 4) {
+        v4 a, b, c;
+        __builtin_memcpy(&a, reinterpret_cast<const double*>(&x) + h, 32);
+        __builtin_memcpy(&b, reinterpret_cast<const double*>(&y) + h, 32);
+        __builtin_memcpy(&c, reinterpret_cast<const double*>(&z) + h, 32);
+        store_xyz4(out + 3 * h, a, b, c);
+    }
+#endif
+}
+
+// Where the chunk's lanes land: whole chunks inside j0..j1 are written in place, the others
+// through `tmp` (then only their lanes inside j0..j1 are copied).
+struct Lanes {
+    int j;      // the chunk's first sample column
+    int lo, hi; // lanes inside j0..j1
+    bool whole() const { return lo == 0 && hi == W - 1; }
+};
+
+inline void put_xyz(double* row, const Lanes& L, const vd& x, const vd& y, const vd& z) {
+    if (L.whole()) return store_xyz(row + 3L * L.j, x, y, z);
+    double tmp[3 * W];
+    store_xyz(tmp, x, y, z);
+    for (int l = L.lo; l <= L.hi; ++l)
+        for (int c = 0; c < 3; ++c) row[3L * (L.j + l) + c] = tmp[3 * l + c];
+}
+
+inline int put_status(std::uint8_t* row, const Lanes& L, int missing, int degenerate) {
     using namespace isoparm::geom::kernel;
-    for (int j = a.j0; j <= a.j1; ++j) {
-        v4d A;
-        contract_point<Cols>(a, j, A);
-        if (A[3] == 0.0) {
-            a.status[j] = vertex_missing;
-            continue;
-        }
-        const double inv = 1.0 / A[3];
-        double* P = a.positions + 3L * j;
-        P[0] = A[0] * inv;
-        P[1] = A[1] * inv;
-        P[2] = A[2] * inv;
-        a.status[j] = vertex_ok;
+    int bad = 0;
+    for (int l = L.lo; l <= L.hi; ++l) {
+        const std::uint8_t s = (missing >> l) & 1        ? vertex_missing
+                               : ((degenerate >> l) & 1) ? vertex_degenerate
+                                                         : vertex_ok;
+        row[L.j + l] = s;
+        bad += s != vertex_ok;
     }
+    return bad;
 }
 
-template <int Cols> void row_impl(const isoparm::geom::kernel::RowArgs& a) {
-    using namespace isoparm::geom::kernel;
-    if (!a.normals) return positions_impl<Cols>(a);
-    for (int j = a.j0; j <= a.j1; ++j) {
-        v4d A, Au, Av;
-        contract<Cols>(a, j, A, Au, Av);
-        const double w = A[3];
-        if (w == 0.0) {
-            a.status[j] = vertex_missing;
-            continue;
-        }
-        const double inv = 1.0 / w;
-        const double sx = A[0] * inv, sy = A[1] * inv, sz = A[2] * inv;
-        const double ux = (Au[0] - Au[3] * sx) * inv, uy = (Au[1] - Au[3] * sy) * inv,
-                     uz = (Au[2] - Au[3] * sz) * inv;
-        const double vx = (Av[0] - Av[3] * sx) * inv, vy = (Av[1] - Av[3] * sy) * inv,
-                     vz = (Av[2] - Av[3] * sz) * inv;
-        const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
-        const double len2 = nx * nx + ny * ny + nz * nz;
-        const double su2 = ux * ux + uy * uy + uz * uz, sv2 = vx * vx + vy * vy + vz * vz;
-        const double big2 = su2 > sv2 ? su2 : sv2;
-        double* P = a.positions + 3L * j;
-        P[0] = sx;
-        P[1] = sy;
-        P[2] = sz;
-        if (len2 > 1e-20 * big2 * big2 && __builtin_isfinite(len2)) {
-            const double r = 1.0 / __builtin_sqrt(len2);
-            double* n = a.normals + 3L * j;
-            n[0] = nx * r;
-            n[1] = ny * r;
-            n[2] = nz * r;
-            a.status[j] = vertex_ok;
+// Step 1 for control row a: R (and Rv with v-derivatives) for chunks ch0 .. ch0 + nch - 1;
+// each of the 4 components is a row of B = nch * W doubles.
+template <int NC>
+void contract_v(const GridArgs& g, int a, int ch0, int nch, double* R, double* Rv) {
+    const int nc = NC > 0 ? NC : g.nc;
+    const long B = static_cast<long>(nch) * W;
+    const double* row = g.Pw + 4L * a * g.n_v;
+    for (int k = 0; k < nch; ++k) {
+        const int ch = ch0 + k;
+        const double* m = g.M + static_cast<long>(ch) * nc * W;
+        const double* P = row + 4L * g.f0[ch];
+        vd x = {}, y = {}, z = {}, w = {};
+        if (!Rv) {
+            for (int c = 0; c < nc; ++c) {
+                vd mc;
+                load(mc, m + c * W);
+                madd(x, mc, P[4 * c + 0]);
+                madd(y, mc, P[4 * c + 1]);
+                madd(z, mc, P[4 * c + 2]);
+                madd(w, mc, P[4 * c + 3]);
+            }
         } else {
-            a.status[j] = vertex_degenerate;
+            const double* dm = g.dM + static_cast<long>(ch) * nc * W;
+            vd xv = {}, yv = {}, zv = {}, wv = {};
+            for (int c = 0; c < nc; ++c) {
+                vd mc, dc;
+                load(mc, m + c * W);
+                load(dc, dm + c * W);
+                madd(x, mc, P[4 * c + 0]);
+                madd(y, mc, P[4 * c + 1]);
+                madd(z, mc, P[4 * c + 2]);
+                madd(w, mc, P[4 * c + 3]);
+                madd(xv, dc, P[4 * c + 0]);
+                madd(yv, dc, P[4 * c + 1]);
+                madd(zv, dc, P[4 * c + 2]);
+                madd(wv, dc, P[4 * c + 3]);
+            }
+            store(Rv + 0 * B + k * W, xv);
+            store(Rv + 1 * B + k * W, yv);
+            store(Rv + 2 * B + k * W, zv);
+            store(Rv + 3 * B + k * W, wv);
         }
+        store(R + 0 * B + k * W, x);
+        store(R + 1 * B + k * W, y);
+        store(R + 2 * B + k * W, z);
+        store(R + 3 * B + k * W, w);
     }
 }
 
-void dispatch(const isoparm::geom::kernel::RowArgs& a) {
-    switch (a.q) {
+// Step 2, positions only, for sample row i; R points at control row first_u[i] of the block.
+template <int P1> long row_positions(const GridArgs& g, int i, int ch0, int nch, const double* R) {
+    const int p1 = P1 > 0 ? P1 : g.p + 1;
+    const long B = static_cast<long>(nch) * W;
+    const double* nu = g.Nu + static_cast<long>(i) * p1;
+    double* out = g.positions + 3L * i * g.samples_v;
+    std::uint8_t* st = g.status + static_cast<long>(i - g.i0) * g.samples_v;
+    long bad = 0;
+    for (int k = 0; k < nch; ++k) {
+        vd x = {}, y = {}, z = {}, w = {};
+        for (int r = 0; r < p1; ++r) {
+            const double* Rr = R + 4 * r * B + k * W;
+            vd a0, a1, a2, a3;
+            load(a0, Rr);
+            load(a1, Rr + B);
+            load(a2, Rr + 2 * B);
+            load(a3, Rr + 3 * B);
+            madd(x, nu[r], a0);
+            madd(y, nu[r], a1);
+            madd(z, nu[r], a2);
+            madd(w, nu[r], a3);
+        }
+        const vd inv = 1.0 / w;
+        const int j = (ch0 + k) * W;
+        const Lanes L{j, g.j0 > j ? g.j0 - j : 0, g.j1 < j + W - 1 ? g.j1 - j : W - 1};
+        put_xyz(out, L, x * inv, y * inv, z * inv);
+        const int missing = bits(w == 0.0);
+        if (missing == 0 && L.whole()) {
+            __builtin_memset(st + j, 0, W);
+        } else {
+            bad += put_status(st, L, missing, 0);
+        }
+    }
+    return bad;
+}
+
+// Step 2 with first derivatives and unit normals: S = A / w, S_u = (A_u - w_u S) / w, S_v
+// likewise (A4.4 to first order); the normal is degenerate where
+// |S_u x S_v| < 1e-10 max(|S_u|, |S_v|)^2 (as normal_from_derivatives).
+template <int P1>
+long row_normals(const GridArgs& g, int i, int ch0, int nch, const double* R, const double* Rv) {
+    const int p1 = P1 > 0 ? P1 : g.p + 1;
+    const long B = static_cast<long>(nch) * W;
+    const double* nu = g.Nu + static_cast<long>(i) * p1;
+    const double* dnu = g.dNu + static_cast<long>(i) * p1;
+    double* out = g.positions + 3L * i * g.samples_v;
+    double* nout = g.normals + 3L * i * g.samples_v;
+    std::uint8_t* st = g.status + static_cast<long>(i - g.i0) * g.samples_v;
+    long bad = 0;
+    for (int k = 0; k < nch; ++k) {
+        vd x = {}, y = {}, z = {}, w = {};
+        vd xu = {}, yu = {}, zu = {}, wu = {};
+        vd xv = {}, yv = {}, zv = {}, wv = {};
+        for (int r = 0; r < p1; ++r) {
+            const double* Rr = R + 4 * r * B + k * W;
+            const double* Vr = Rv + 4 * r * B + k * W;
+            vd a0, a1, a2, a3, b0, b1, b2, b3;
+            load(a0, Rr);
+            load(a1, Rr + B);
+            load(a2, Rr + 2 * B);
+            load(a3, Rr + 3 * B);
+            load(b0, Vr);
+            load(b1, Vr + B);
+            load(b2, Vr + 2 * B);
+            load(b3, Vr + 3 * B);
+            const double n = nu[r], dn = dnu[r];
+            madd(x, n, a0);
+            madd(y, n, a1);
+            madd(z, n, a2);
+            madd(w, n, a3);
+            madd(xu, dn, a0);
+            madd(yu, dn, a1);
+            madd(zu, dn, a2);
+            madd(wu, dn, a3);
+            madd(xv, n, b0);
+            madd(yv, n, b1);
+            madd(zv, n, b2);
+            madd(wv, n, b3);
+        }
+        const vd inv = 1.0 / w;
+        const vd sx = x * inv, sy = y * inv, sz = z * inv;
+        const vd ux = (xu - wu * sx) * inv, uy = (yu - wu * sy) * inv, uz = (zu - wu * sz) * inv;
+        const vd vx = (xv - wv * sx) * inv, vy = (yv - wv * sy) * inv, vz = (zv - wv * sz) * inv;
+        const vd nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+        const vd len2 = nx * nx + ny * ny + nz * nz;
+        const vd su2 = ux * ux + uy * uy + uz * uz, sv2 = vx * vx + vy * vy + vz * vz;
+        const vd big2 = su2 > sv2 ? su2 : sv2;
+        // len2 - len2 == 0 is false for infinities and NaN (isfinite without a library call).
+        const vm good = (len2 > 1e-20 * big2 * big2) & (len2 - len2 == 0.0);
+        vd root;
+        vsqrt(root, len2);
+        const vd rn = 1.0 / root;
+        const int j = (ch0 + k) * W;
+        const Lanes L{j, g.j0 > j ? g.j0 - j : 0, g.j1 < j + W - 1 ? g.j1 - j : W - 1};
+        put_xyz(out, L, sx, sy, sz);
+        put_xyz(nout, L, nx * rn, ny * rn, nz * rn);
+        const int missing = bits(w == 0.0), degenerate = ~bits(good) & ((1 << W) - 1);
+        if ((missing | degenerate) == 0 && L.whole()) {
+            __builtin_memset(st + j, 0, W);
+        } else {
+            bad += put_status(st, L, missing, degenerate);
+        }
+    }
+    return bad;
+}
+
+template <int NC, int P1> long block(const GridArgs& g) {
+    const int ch0 = g.j0 / W, nch = g.j1 / W - ch0 + 1;
+    const long B = static_cast<long>(nch) * W;
+    const int a0 = g.first_u[g.i0], a1 = g.first_u[g.i1] + g.p;
+    const long plane = 4 * B; // one control row's R
+    double* R = g.scratch;
+    double* Rv = g.normals ? R + (a1 - a0 + 1) * plane : nullptr;
+    // Control rows are contracted in v just before the first sample row that needs them, so
+    // step 2 reads rows that step 1 has just written (still in L1 / L2).
+    int done = a0 - 1;
+    long bad = 0;
+    for (int i = g.i0; i <= g.i1; ++i) {
+        const int first = g.first_u[i];
+        for (int a = done + 1; a <= first + g.p; ++a)
+            contract_v<NC>(g, a, ch0, nch, R + (a - a0) * plane,
+                           Rv ? Rv + (a - a0) * plane : nullptr);
+        if (first + g.p > done) done = first + g.p;
+        const long off = (first - a0) * plane;
+        bad += g.normals ? row_normals<P1>(g, i, ch0, nch, R + off, Rv + off)
+                         : row_positions<P1>(g, i, ch0, nch, R + off);
+    }
+    return bad;
+}
+
+// Compile-time band widths and u degrees for the common cases (degrees 1..5), run-time ones
+// otherwise (and when the tests ask for the generic code).
+template <int NC> long with_nc(const GridArgs& g) {
+    if (g.generic) return block<0, 0>(g);
+    switch (g.p) {
     case 1:
-        row_impl<2>(a);
-        break;
+        return block<NC, 2>(g);
     case 2:
-        row_impl<3>(a);
-        break;
+        return block<NC, 3>(g);
     case 3:
-        row_impl<4>(a);
-        break;
+        return block<NC, 4>(g);
     case 4:
-        row_impl<5>(a);
-        break;
+        return block<NC, 5>(g);
     case 5:
-        row_impl<6>(a);
-        break;
+        return block<NC, 6>(g);
     default:
-        row_impl<0>(a);
-        break;
+        return block<NC, 0>(g);
+    }
+}
+
+long dispatch(const GridArgs& g) {
+    if (g.generic) return block<0, 0>(g);
+    switch (g.nc) {
+    case 2:
+        return with_nc<2>(g);
+    case 3:
+        return with_nc<3>(g);
+    case 4:
+        return with_nc<4>(g);
+    case 5:
+        return with_nc<5>(g);
+    case 6:
+        return with_nc<6>(g);
+    case 7:
+        return with_nc<7>(g);
+    case 8:
+        return with_nc<8>(g);
+    case 9:
+        return with_nc<9>(g);
+    default:
+        return with_nc<0>(g);
     }
 }
 

@@ -1,20 +1,102 @@
-// The vertex kernel for any x86-64 (or other) CPU, and the run-time choice between builds.
+// The vertex kernel for any x86-64 (SSE2: 2 sample columns per xmm register) or other CPU, and the
+// run-time choice between the builds: the widest one the CPU runs, unless ISOPARM_SIMD names
+// another supported one.
 #include "core/geom/grid_kernel.hpp"
 
+#include <cstdlib>
+#include <cstring>
+#include <initializer_list>
+
+#define ISOPARM_KERNEL_LANES 2
 #include "core/geom/grid_kernel.inl"
 
 namespace isoparm::geom::kernel {
 
-void row_baseline(const RowArgs& a) {
-    dispatch(a);
+long run_baseline(const GridArgs& a) {
+    return dispatch(a);
 }
 
-void row(const RowArgs& a) {
-#if defined(__x86_64__) && defined(ISOPARM_HAVE_AVX2_KERNEL)
-    static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-    if (avx2) return row_avx2(a);
+#if !(defined(__x86_64__) && defined(ISOPARM_HAVE_AVX2_KERNEL))
+long run_avx2(const GridArgs& a) {
+    return dispatch(a); // never chosen: supported(avx2) is false
+}
 #endif
-    row_baseline(a);
+#if !(defined(__x86_64__) && defined(ISOPARM_HAVE_AVX512_KERNEL))
+long run_avx512(const GridArgs& a) {
+    return dispatch(a); // never chosen: supported(avx512) is false (and the lanes differ)
+}
+#endif
+
+int lanes(Path path) {
+    return path == Path::avx512 ? 8 : path == Path::avx2 ? 4 : 2;
+}
+
+bool supported(Path path) {
+    switch (path) {
+    case Path::baseline:
+        return true;
+    case Path::avx2:
+#if defined(__x86_64__) && defined(ISOPARM_HAVE_AVX2_KERNEL)
+        return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+#else
+        return false;
+#endif
+    case Path::avx512:
+#if defined(__x86_64__) && defined(ISOPARM_HAVE_AVX512_KERNEL)
+        // libgcc's check includes the operating system's support (XCR0's zmm state).
+        return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("fma");
+#else
+        return false;
+#endif
+    }
+    return false;
+}
+
+const char* name(Path path) {
+    switch (path) {
+    case Path::baseline:
+        return "baseline";
+    case Path::avx2:
+        return "avx2";
+    case Path::avx512:
+        return "avx512";
+    }
+    return "?";
+}
+
+namespace {
+Path choose() {
+    if (const char* forced = std::getenv("ISOPARM_SIMD"); forced && *forced) {
+        for (Path p : {Path::baseline, Path::avx2, Path::avx512})
+            if (std::strcmp(forced, name(p)) == 0 && supported(p)) return p;
+    }
+    for (Path p : {Path::avx512, Path::avx2})
+        if (supported(p)) return p;
+    return Path::baseline;
+}
+} // namespace
+
+Path active_path() {
+    static const Path path = choose();
+    return path;
+}
+
+std::size_t scratch_doubles(const GridArgs& a, int lanes) {
+    const long rows = a.first_u[a.i1] + a.p - a.first_u[a.i0] + 1;
+    const long columns = (static_cast<long>(a.j1 / lanes) - a.j0 / lanes + 1) * lanes;
+    return static_cast<std::size_t>(rows * 4 * columns * (a.normals ? 2 : 1));
+}
+
+long run(Path path, const GridArgs& a) {
+    switch (path) {
+    case Path::avx512:
+        return run_avx512(a);
+    case Path::avx2:
+        return run_avx2(a);
+    case Path::baseline:
+        break;
+    }
+    return run_baseline(a);
 }
 
 } // namespace isoparm::geom::kernel

@@ -1,16 +1,17 @@
-// Grid tessellation kernel. Per sample row the control net is contracted in u once (Q, dQ),
-// then each vertex needs (q + 1) homogeneous multiply-adds for S, S_u and S_v each.
+// Grid tessellation: basis tables (A2.2 / A2.3) per surface layout, the SIMD kernel of
+// grid_kernel.hpp over column blocks, and the vertices that need more than the kernel
+// (points that do not exist, degenerate normals).
 #include "core/geom/grid_tessellator.hpp"
 
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <thread>
 
 #include "core/geom/basis.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/grid_kernel.hpp"
 #include "core/geom/knots.hpp"
+#include "core/geom/worker_pool.hpp"
 
 namespace isoparm::geom {
 
@@ -43,22 +44,36 @@ std::pair<int, int> touching(const GridTessellator::Table& t, int i) {
     return {lo, hi};
 }
 
-// Q_j = sum_r N_r Pw[row0 + r][j] (and dQ with N'_r when derivatives are wanted).
-void contract_rows(const double* Nu, const double* dNu, const double* Pw, int p, int n_v, int j0,
-                   int j1, double* Q, double* dQ) {
-    // Pw rows are n_v * 4 doubles; row r of the span starts at Pw + r * n_v * 4.
-    for (int j = j0; j <= j1; ++j) {
-        double a[4] = {0, 0, 0, 0}, b[4] = {0, 0, 0, 0};
-        for (int r = 0; r <= p; ++r) {
-            const double* P = Pw + (static_cast<size_t>(r) * n_v + j) * 4;
-            for (int c = 0; c < 4; ++c) a[c] += Nu[r] * P[c];
-            if (dQ)
-                for (int c = 0; c < 4; ++c) b[c] += dNu[r] * P[c];
-        }
-        for (int c = 0; c < 4; ++c) Q[4 * j + c] = a[c];
-        if (dQ)
-            for (int c = 0; c < 4; ++c) dQ[4 * j + c] = b[c];
+// The v basis in the kernel's banded layout: chunk k covers samples k * lanes .. + lanes - 1;
+// its nc columns start at control column f0[k], lane l's values sit at their column (zeros
+// elsewhere, and for the padding lanes past the last sample). nc is the widest band any chunk
+// needs (at most n: then every band is the whole net), so one compiled width serves them all.
+GridTessellator::Band band(const GridTessellator::Table& t, int n, int lanes) {
+    GridTessellator::Band b;
+    b.lanes = lanes;
+    const int samples = static_cast<int>(t.first.size());
+    const int chunks = (samples + lanes - 1) / lanes;
+    for (int k = 0; k < chunks; ++k) {
+        const int last = std::min(samples, (k + 1) * lanes) - 1;
+        b.nc = std::max(b.nc, t.first[last] + t.p - t.first[k * lanes] + 1);
     }
+    b.nc = std::min(b.nc, n);
+    b.f0.resize(chunks);
+    b.M.assign(static_cast<size_t>(chunks) * b.nc * lanes, 0.0);
+    b.dM.assign(b.M.size(), 0.0);
+    for (int k = 0; k < chunks; ++k) {
+        const int f = std::min(t.first[k * lanes], n - b.nc);
+        b.f0[k] = f;
+        for (int l = 0; l < lanes && k * lanes + l < samples; ++l) {
+            const int s = k * lanes + l;
+            for (int r = 0; r <= t.p; ++r) {
+                const size_t at = (static_cast<size_t>(k) * b.nc + t.first[s] + r - f) * lanes + l;
+                b.M[at] = t.N[static_cast<size_t>(s) * (t.p + 1) + r];
+                b.dM[at] = t.dN[static_cast<size_t>(s) * (t.p + 1) + r];
+            }
+        }
+    }
+    return b;
 }
 
 std::vector<double> homogeneous_net(const Surface& s) {
@@ -73,6 +88,10 @@ std::vector<double> homogeneous_net(const Surface& s) {
     return Pw;
 }
 
+// Sample columns per task of a full pass: a multiple of every path's lanes, small enough that
+// a block's contracted rows stay in L2 and two threads get several blocks of a 256 grid.
+constexpr int block_columns = 64;
+
 } // namespace
 
 GridTessellator::GridTessellator(const Surface& s, int samples_u, int samples_v)
@@ -83,6 +102,16 @@ GridTessellator::GridTessellator(const Surface& s, int samples_u, int samples_v)
     vs_ = uniform_params(s.knots_v[s.degree_v], s.knots_v[s.n_v], samples_v);
     tu_ = tabulate(s.knots_u, s.degree_u, s.n_u, us_);
     tv_ = tabulate(s.knots_v, s.degree_v, s.n_v, vs_);
+    path_ = kernel::active_path();
+    band_ = band(tv_, n_v_, kernel::lanes(path_));
+}
+
+bool GridTessellator::use_kernel(kernel::Path path, bool generic) {
+    if (!kernel::supported(path)) return false;
+    path_ = path;
+    generic_ = generic;
+    if (band_.lanes != kernel::lanes(path)) band_ = band(tv_, n_v_, kernel::lanes(path));
+    return true;
 }
 
 bool GridTessellator::fits(const Surface& s, int samples_u, int samples_v) const {
@@ -98,39 +127,48 @@ std::pair<int, int> GridTessellator::columns_touching(int j) const {
     return touching(tv_, j);
 }
 
-void GridTessellator::evaluate_block(const Surface& s, const std::vector<double>& Pw,
-                                     glm::dvec3* positions, glm::dvec3* normals,
-                                     std::vector<std::uint8_t>& exists, int i0, int i1, int j0,
-                                     int j1) const {
-    const int p = degree_u_, q = degree_v_;
+long GridTessellator::evaluate_block(const std::vector<double>& Pw, glm::dvec3* positions,
+                                     glm::dvec3* normals, std::uint8_t* status, int i0, int i1,
+                                     int j0, int j1) const {
+    static_assert(sizeof(glm::dvec3) == 3 * sizeof(double), "the kernel writes x, y, z triples");
+    kernel::GridArgs a{tu_.N.data(),
+                       tu_.dN.data(),
+                       tu_.first.data(),
+                       degree_u_,
+                       band_.M.data(),
+                       band_.dM.data(),
+                       band_.f0.data(),
+                       band_.nc,
+                       Pw.data(),
+                       n_v_,
+                       i0,
+                       i1,
+                       j0,
+                       j1,
+                       samples_v(),
+                       &positions[0].x,
+                       normals ? &normals[0].x : nullptr,
+                       status,
+                       nullptr,
+                       generic_};
+    // Grow-only per thread (the pool's threads persist): no allocation per drag frame.
+    thread_local std::vector<double> scratch;
+    const size_t need = kernel::scratch_doubles(a, band_.lanes);
+    if (scratch.size() < need) scratch.resize(need);
+    a.scratch = scratch.data();
+    return kernel::run(path_, a);
+}
+
+void GridTessellator::settle(const Surface& s, const std::uint8_t* status, glm::dvec3* positions,
+                             glm::dvec3* normals, std::vector<std::uint8_t>& exists, int i0, int i1,
+                             int j0, int j1) const {
     const int sv = samples_v();
     const size_t count = static_cast<size_t>(samples_u()) * sv;
-    // Control columns the sample columns j0..j1 need.
-    const int c0 = tv_.first[j0], c1 = tv_.first[j1] + q;
-    std::vector<double> Q(static_cast<size_t>(n_v_) * 4), dQ(static_cast<size_t>(n_v_) * 4);
-    std::vector<std::uint8_t> status(sv);
-    static_assert(sizeof(glm::dvec3) == 3 * sizeof(double), "the kernel writes x, y, z triples");
     for (int i = i0; i <= i1; ++i) {
-        const double* Nu = &tu_.N[static_cast<size_t>(i) * (p + 1)];
-        const double* dNu = &tu_.dN[static_cast<size_t>(i) * (p + 1)];
-        contract_rows(Nu, dNu, &Pw[static_cast<size_t>(tu_.first[i]) * n_v_ * 4], p, n_v_, c0, c1,
-                      Q.data(), normals ? dQ.data() : nullptr);
-        const size_t row = static_cast<size_t>(i) * sv;
-        const kernel::RowArgs args{tv_.N.data(),
-                                   tv_.dN.data(),
-                                   tv_.first.data(),
-                                   Q.data(),
-                                   dQ.data(),
-                                   q,
-                                   j0,
-                                   j1,
-                                   &positions[row].x,
-                                   normals ? &normals[row].x : nullptr,
-                                   status.data()};
-        kernel::row(args);
         for (int j = j0; j <= j1; ++j) {
-            const size_t k = row + j;
-            if (status[j] == kernel::vertex_missing) {
+            const size_t k = static_cast<size_t>(i) * sv + j;
+            const std::uint8_t st = status[static_cast<size_t>(i - i0) * sv + j];
+            if (st == kernel::vertex_missing) {
                 if (exists.empty()) exists.assign(count, 1);
                 exists[k] = 0;
                 positions[k] = glm::dvec3(0.0);
@@ -138,7 +176,7 @@ void GridTessellator::evaluate_block(const Surface& s, const std::vector<double>
                 continue;
             }
             if (!exists.empty()) exists[k] = 1;
-            if (status[j] == kernel::vertex_degenerate)
+            if (st == kernel::vertex_degenerate)
                 normals[k] = surface_normal_or_limit(s, us_[i], vs_[j]);
         }
     }
@@ -150,24 +188,19 @@ void GridTessellator::run_rows(const Surface& s, glm::dvec3* positions, glm::dve
     const size_t count = static_cast<size_t>(su) * sv;
     exists.clear();
     const std::vector<double> Pw = homogeneous_net(s);
-    threads = std::clamp(threads, 1, su);
-    if (threads == 1) {
-        evaluate_block(s, Pw, positions, normals, exists, 0, su - 1, 0, sv - 1);
-        return;
-    }
-    // Threads write disjoint rows; `exists` is allocated up front so no thread resizes it.
-    exists.assign(count, 1);
-    {
-        std::vector<std::jthread> pool;
-        for (int t = 0; t < threads; ++t) {
-            const int i0 = su * t / threads, i1 = su * (t + 1) / threads - 1;
-            if (i0 > i1) continue;
-            pool.emplace_back([&, i0, i1] {
-                evaluate_block(s, Pw, positions, normals, exists, i0, i1, 0, sv - 1);
-            });
-        }
-    } // joins
-    if (std::all_of(exists.begin(), exists.end(), [](auto e) { return e != 0; })) exists.clear();
+    thread_local std::vector<std::uint8_t> status_buffer;
+    status_buffer.resize(count);
+    std::uint8_t* status = status_buffer.data(); // the caller's buffer, shared with the helpers
+    // Column blocks, each a task: they write disjoint vertices and statuses, and each vertex is
+    // computed by the same instructions whichever thread runs its block.
+    const int blocks = (sv + block_columns - 1) / block_columns;
+    std::vector<long> bad(blocks, 0);
+    WorkerPool::shared().run(blocks, std::max(threads, 1), [&](int b) {
+        const int j0 = b * block_columns, j1 = std::min(sv, j0 + block_columns) - 1;
+        bad[b] = evaluate_block(Pw, positions, normals, status, 0, su - 1, j0, j1);
+    });
+    if (std::any_of(bad.begin(), bad.end(), [](long n) { return n > 0; }))
+        settle(s, status, positions, normals, exists, 0, su - 1, 0, sv - 1);
 }
 
 void GridTessellator::evaluate(const Surface& s, Mesh& mesh, int threads) const {
@@ -201,7 +234,12 @@ void GridTessellator::update_control_point(const Surface& s, Mesh& mesh, int i, 
     std::vector<std::uint8_t> before;
     if (had_gaps) before = mesh.exists;
     const std::vector<double> Pw = homogeneous_net(s);
-    evaluate_block(s, Pw, mesh.positions.data(), mesh.normals.data(), mesh.exists, i0, i1, j0, j1);
+    std::vector<std::uint8_t> status(static_cast<size_t>(i1 - i0 + 1) * samples_v());
+    const long bad = evaluate_block(Pw, mesh.positions.data(), mesh.normals.data(), status.data(),
+                                    i0, i1, j0, j1);
+    if (bad > 0 || had_gaps)
+        settle(s, status.data(), mesh.positions.data(), mesh.normals.data(), mesh.exists, i0, i1,
+               j0, j1);
     if (mesh.exists != before) {
         if (std::all_of(mesh.exists.begin(), mesh.exists.end(), [](auto e) { return e != 0; }))
             mesh.exists.clear();

@@ -1,10 +1,12 @@
-// The interactive tessellation engine: basis tables cached per surface layout, a vectorized
-// row kernel, both cores for full passes, and local updates for single control points.
+// The interactive tessellation engine: basis tables cached per surface layout (in the layout the
+// SIMD kernel streams, core/geom/grid_kernel.hpp), column blocks shared out to the persistent
+// worker pool for full passes, and local updates for single control points.
 #pragma once
 
 #include <utility>
 #include <vector>
 
+#include "core/geom/grid_kernel.hpp"
 #include "core/geom/tessellate.hpp"
 #include "core/geom/types.hpp"
 
@@ -19,8 +21,9 @@ public:
     // only control points or weights changed and the tables can be reused.
     bool fits(const Surface& s, int samples_u, int samples_v) const;
 
-    // All vertices and the triangles. threads > 1 splits the rows; results are bit-identical
-    // to threads == 1 (every vertex is computed by the same instructions).
+    // All vertices and the triangles. threads > 1 shares column blocks out to the worker pool
+    // (WorkerPool::shared()); results are bit-identical to threads == 1 (every vertex is
+    // computed by the same instructions whatever the split).
     void evaluate(const Surface& s, Mesh& mesh, int threads = 1) const;
 
     // Positions and unit normals without the triangles (what a renderer re-uploads when only
@@ -48,17 +51,35 @@ public:
     const std::vector<double>& params_u() const { return us_; }
     const std::vector<double>& params_v() const { return vs_; }
 
+    // The kernel build this tessellator uses (kernel::active_path() unless changed) and, for
+    // the tests, the generic run-time-degree code instead of the specialised one. Returns
+    // false, changing nothing, where the CPU does not run that path.
+    bool use_kernel(kernel::Path path, bool generic = false);
+    kernel::Path kernel_path() const { return path_; }
+    // Control columns each vector of the v contraction reads (the banded basis's width).
+    int band_columns() const { return band_.nc; }
+
     struct Table {
         int p = 0;
         std::vector<int> first;    // span - p for each sample
         std::vector<double> N, dN; // (p + 1) per sample
     };
+    // The v basis banded per chunk of `lanes` samples, as the kernel streams it.
+    struct Band {
+        int lanes = 0, nc = 0;
+        std::vector<int> f0;
+        std::vector<double> M, dM;
+    };
 
 private:
-    // Rows i0..i1, columns j0..j1; normals == nullptr evaluates positions only.
-    void evaluate_block(const Surface& s, const std::vector<double>& Pw, glm::dvec3* positions,
-                        glm::dvec3* normals, std::vector<std::uint8_t>& exists, int i0, int i1,
-                        int j0, int j1) const;
+    // Rows i0..i1, columns j0..j1; normals == nullptr evaluates positions only. status holds
+    // (i1 - i0 + 1) rows of samples_v. Returns how many vertices are not kernel::vertex_ok.
+    long evaluate_block(const std::vector<double>& Pw, glm::dvec3* positions, glm::dvec3* normals,
+                        std::uint8_t* status, int i0, int i1, int j0, int j1) const;
+    // Missing vertices and degenerate normals of the block, from its status.
+    void settle(const Surface& s, const std::uint8_t* status, glm::dvec3* positions,
+                glm::dvec3* normals, std::vector<std::uint8_t>& exists, int i0, int i1, int j0,
+                int j1) const;
     void run_rows(const Surface& s, glm::dvec3* positions, glm::dvec3* normals,
                   std::vector<std::uint8_t>& exists, int threads) const;
 
@@ -66,6 +87,9 @@ private:
     Knots knots_u_, knots_v_;
     std::vector<double> us_, vs_;
     Table tu_, tv_;
+    Band band_;
+    kernel::Path path_ = kernel::Path::baseline;
+    bool generic_ = false;
 };
 
 // Triangles of the grid (k, k + n_v, k + n_v + 1), (k, k + n_v + 1, k + 1), skipping cells

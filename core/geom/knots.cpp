@@ -112,4 +112,10 @@ std::string continuity_text(int degree, int multiplicity) {
     return text;
 }
 
+double greville_abscissa(const Knots& U, int p, int i) {
+    double g = 0;
+    for (int k = 1; k <= p; ++k) g += (U[i + k] - g) / k;
+    return g;
+}
+
 } // namespace isoparm::geom

@@ -49,6 +49,11 @@ struct KnotRun {
 };
 std::vector<KnotRun> knot_runs(const Knots& U);
 
+// The Greville abscissa of control point i, (U[i+1] + ... + U[i+p]) / p: the parameter a
+// control point "belongs to" (Piegl & Tiller sec. 9.3, Farin). A running mean, so equal knots
+// give their value exactly.
+double greville_abscissa(const Knots& U, int p, int i);
+
 // Clamped uniform knots for n points of degree p on [a, b].
 Knots clamped_uniform_knots(int n, int p, double a = 0.0, double b = 1.0);
 // Bezier knots a^(p+1) b^(p+1).

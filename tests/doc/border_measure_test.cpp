@@ -24,6 +24,9 @@ TEST(BorderMeasure, ASplitJoinsExactlyAndAMovedPointOpensTheGap) {
     EXPECT_LT(m.angle_degrees, 1e-9);
     EXPECT_LT(m.derivative, 1e-10);
     EXPECT_LT(m.curvature, 1e-8);
+    const double size = group_size(doc, group);
+    EXPECT_GT(size, 0.5);
+    EXPECT_EQ(border_level(m, size), BorderLevel::g2); // a split is as smooth as the surface
     // Continuity off: the border row moves on one side only.
     doc.continuity = Continuity::off;
     const std::uint64_t left = borders[0].low;
@@ -35,6 +38,24 @@ TEST(BorderMeasure, ASplitJoinsExactlyAndAMovedPointOpensTheGap) {
     m = measure_border(doc, shared_borders(doc, group)[0]);
     EXPECT_GT(m.gap, 0.1);
     EXPECT_GT(m.angle_degrees, 1);
+    EXPECT_EQ(border_level(m, size), BorderLevel::broken);
+}
+
+TEST(BorderMeasure, LevelsNeedTheOnesBelowThem) {
+    BorderMeasure m;
+    EXPECT_EQ(border_level(m, 1), BorderLevel::broken); // nothing sampled, nothing shown
+    m.sampled = 5;
+    EXPECT_EQ(border_level(m, 1), BorderLevel::g2);
+    m.curvature = 0.3;
+    EXPECT_EQ(border_level(m, 1), BorderLevel::c1);
+    m.derivative = 0.2; // tangent planes agree, derivatives differ: G1 only
+    EXPECT_EQ(border_level(m, 1), BorderLevel::g1);
+    EXPECT_EQ(border_level(m, 1e9), BorderLevel::c1); // 0.2 is nothing on a huge group
+    m.angle_degrees = 2;
+    EXPECT_EQ(border_level(m, 1), BorderLevel::c0);
+    m.gap = 1e-6;
+    EXPECT_EQ(border_level(m, 1), BorderLevel::broken);
+    EXPECT_STREQ(border_level_name(BorderLevel::g1), "G1");
 }
 
 } // namespace

@@ -478,6 +478,39 @@ def blossom_tab_reproduces_points(s, ctx):
     r = s.wait_for("the diagonal", lambda r: r["facts"].get("blossom/diagonal_gap", -1) >= 0)
     check(r["facts"]["blossom/diagonal_gap"] < 1e-9,
           f"f(t, t, t) is {r['facts']['blossom/diagonal_gap']} from the curve point")
+def rational_picture_and_homogeneous_view(s, ctx):
+    """Fig. 3b's centre weight typed as -8: the tracing square's Denominator w shows the zero
+    set where the surface goes to infinity; the Homogeneous tab lifts the isocurve through the
+    indicator (5 control points) and turns when dragged; Ctrl+Z gives the weight back."""
+    s.click_named("tracing/denominator")
+    r = s.wait_for("the denominator shown", lambda r: "tracing/zero_set_segments" in r["facts"])
+    check(r["facts"]["tracing/zero_set_segments"] == 0,
+          "Fig. 3b (all weights positive) has no zero set")
+    s.click_named("tracing/weights")
+    r = s.wait_for("weight labels", lambda r: r["facts"].get("tracing/weight_labels", 0) > 0)
+    # The minus sign as its key: xdotool would take a leading "-" for an option of its own.
+    x, y, w, h = s.rect("cp/weight")
+    s.click(x + w * 0.3, y + h / 2)
+    s.wait_for("the weight field to take the keyboard", lambda r: r.get("typing"))
+    s.key("ctrl+a")
+    s.key("minus")
+    s.xdo("type", "--delay", "30", "8")
+    s.key("Return")
+    s.wait_for("the weight field to let go", lambda r: not r.get("typing"))
+    r = s.wait_for("a zero set with w22 = -8",
+                   lambda r: r["facts"].get("tracing/zero_set_segments", 0) > 8)
+    ctx.shot(s, "denominator-zero-set")
+    s.click_named("tab/Homogeneous")
+    r = s.wait_for("the isocurve lifted",
+                   lambda r: r["facts"].get("homogeneous/control_points") == 5)
+    yaw = r["facts"]["homogeneous/yaw"]
+    x, y, w, h = s.rect("homogeneous/canvas")
+    s.drag(x + w / 2, y + h / 2, 60, 0)
+    r = s.wait_for("the picture turned", lambda r: r["facts"].get("homogeneous/yaw") != yaw)
+    ctx.shot(s, "homogeneous-view")
+    s.key("ctrl+z")
+    s.wait_for("the weight back (no zero set)",
+               lambda r: r["facts"].get("tracing/zero_set_segments") == 0)
 
 
 SCENARIOS = [
@@ -500,6 +533,7 @@ SCENARIOS = [
     ("continuity_tab", "fig6c-split-left-v05.json", continuity_tab_measures_the_borders),
     ("multires_tab", "fig3b-weight-5.json", multires_tab_drags_a_coarse_point),
     ("blossom_tab", "curve-designer.json", blossom_tab_reproduces_points),
+    ("rational_picture", "fig3b-weight-5.json", rational_picture_and_homogeneous_view),
 ]
 
 

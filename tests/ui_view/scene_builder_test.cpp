@@ -2,9 +2,13 @@
 // detection, overlay contents.
 #include <gtest/gtest.h>
 
+#include <glm/geometric.hpp>
+
+#include "core/doc/commands.hpp"
 #include "core/doc/document.hpp"
 #include "core/doc/placement.hpp"
 #include "core/geom/knots.hpp"
+#include "core/geom/primitives.hpp"
 #include "ui/view/doc_access.hpp"
 #include "ui/view/mesh_data.hpp"
 #include "ui/view/scene_builder.hpp"
@@ -113,4 +117,52 @@ TEST(KnotContinuityColor, EachOrderOfContinuityHasItsColour) {
     EXPECT_EQ(isoparm::ui::knot_continuity_color(3, 2, smooth).g, 0.85f); // C1 yellow
     EXPECT_EQ(isoparm::ui::knot_continuity_color(3, 3, smooth).g, 0.5f);  // C0 orange
     EXPECT_EQ(isoparm::ui::knot_continuity_color(2, 3, smooth).r, 0.95f); // C-1 red
+}
+
+TEST(SceneBuilder, BordersByContinuityDrawEachBorderInItsMeasuredColour) {
+    doc::Document d = doc::default_document();
+    doc::History h;
+    const std::uint64_t id = d.objects.front().id;
+    ASSERT_TRUE(h.execute(d, doc::split_object(id, geom::Dir::u, 0.5)).ok());
+    SceneStyle style;
+    const std::size_t plain = build_scene(d, style).overlay.lines.size();
+    style.border_continuity = true;
+    const BuiltScene scene = build_scene(d, style);
+    ASSERT_EQ(scene.overlay.lines.size(), plain + 1);
+    // A split is as smooth as the surface was: every segment of the border is cyan.
+    const glm::vec4 cyan = border_level_color(doc::BorderLevel::g2);
+    std::size_t found = 0;
+    for (const LineBatch& b : scene.overlay.lines)
+        for (const OverlayVertex& v : b.vertices) found += v.color == cyan;
+    EXPECT_EQ(found, 2u * 64); // 65 samples along the one border
+    EXPECT_NE(border_level_color(doc::BorderLevel::broken), cyan);
+}
+
+TEST(SceneBuilder, CurveGlyphsFollowTheSelectedCurve) {
+    doc::Document d = doc::default_document();
+    doc::Object o;
+    o.name = "arc";
+    o.shape = doc::CurveObject{*geom::circular_arc({0, 0, 0}, 2, 0, 180, geom::Plane::xy), {}, {}};
+    doc::History h;
+    ASSERT_TRUE(h.execute(d, doc::add_object(o)).ok());
+    d.view.selection.object = d.objects.back().id;
+    SceneStyle style;
+    const std::size_t plain = build_scene(d, style).overlay.lines.size();
+    style.curve_glyphs = {true, true, true};
+    const BuiltScene scene = build_scene(d, style);
+    // Teeth, their rim, the osculating circle and the frame.
+    ASSERT_EQ(scene.overlay.lines.size(), plain + 4);
+    // On a circle of radius 2 the osculating circle is the circle itself, and every tooth
+    // lies on a ray from the centre with the same length.
+    const CurveGlyphs g = curve_glyphs(*d.objects.back().curve(), 0.3, {true, true, true});
+    ASSERT_TRUE(g.centre);
+    EXPECT_LT(glm::length(*g.centre), 1e-12);
+    for (const glm::dvec3& p : g.circle) EXPECT_NEAR(glm::length(p), 2, 1e-12);
+    const double tooth = glm::distance(g.teeth.front().first, g.teeth.front().second);
+    for (const auto& [base, tip] : g.teeth) {
+        EXPECT_NEAR(glm::distance(base, tip), tooth, 1e-12);
+        EXPECT_NEAR(glm::length(tip), 2 + tooth, 1e-12); // along -N: outside the arc
+    }
+    ASSERT_TRUE(g.tangent && g.normal && g.binormal);
+    EXPECT_NEAR(std::abs(g.binormal->z), 1, 1e-12);
 }

@@ -11,16 +11,13 @@
 #include "ui/theme.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/doc_access.hpp"
+#include "ui/view/scene_builder.hpp"
 
 namespace isoparm::ui {
 
 namespace {
 
-// Relative to the group's size: a gap of 1e-12 on a unit patch is a join.
-constexpr double holds = 1e-9;
-
-void figure(const char* format, double value, double scale, bool light) {
-    const bool ok = value <= holds * scale;
+void figure(const char* format, double value, bool ok, bool light) {
     const ImVec4 good = light ? ImVec4(0.0f, 0.45f, 0.1f, 1) : ImVec4(0.45f, 0.85f, 0.5f, 1);
     ImGui::TextColored(ok ? good : error_text_color(), format, value);
 }
@@ -40,12 +37,9 @@ void draw_continuity_panel(AppContext& ctx) {
     ImGui::TextWrapped("Kept across borders: %s. Measured on the surfaces at 33 points along "
                        "each border (green: holds).",
                        doc::continuity_name(ctx.doc.continuity));
-    // The size the figures are relative to: the group's control points' extent.
-    double size = 0;
-    for (const doc::Object* p : doc::patch_members(ctx.doc, group))
-        for (const glm::dvec3& q : p->surface()->points)
-            size = std::max({size, std::abs(q.x), std::abs(q.y), std::abs(q.z)});
-    size = std::max(size, 1e-300);
+    const double size = doc::group_size(ctx.doc, group);
+    ImGui::Checkbox("Draw the borders in 3D in their colour", &ctx.ui.border_continuity);
+    report_item("continuity/draw_borders");
     const bool light = ctx.ui.presentation;
     // One block per border: its name, then the four figures, wrapping in a narrow panel.
     int kept = 0;
@@ -54,20 +48,28 @@ void draw_continuity_panel(AppContext& ctx) {
         const doc::Object* hi = ctx.doc.find(b.high);
         const doc::BorderMeasure m = doc::measure_border(ctx.doc, b);
         ImGui::Separator();
-        ImGui::Text("%s | %s, across %s", lo ? lo->name.c_str() : "?", hi ? hi->name.c_str() : "?",
-                    b.across == geom::Dir::u ? "u" : "v");
+        const doc::BorderLevel level = doc::border_level(m, size);
+        // The swatch is the colour the 3D view draws this border in.
+        const glm::vec4 c = border_level_color(level);
+        ImGui::ColorButton("##level", ImVec4(c.r, c.g, c.b, 1), ImGuiColorEditFlags_NoTooltip,
+                           ImVec2(ImGui::GetTextLineHeight(), ImGui::GetTextLineHeight()));
+        ImGui::SameLine();
+        ImGui::Text("%s | %s, across %s: %s", lo ? lo->name.c_str() : "?",
+                    hi ? hi->name.c_str() : "?", b.across == geom::Dir::u ? "u" : "v",
+                    doc::border_level_name(level));
         if (ImGui::IsItemHovered())
             wrapped_tooltip(b.conforming ? "The border's control points pair up one to one: "
                                            "dragging a point keeps the continuity chosen."
                                          : "The borders do not pair up: " + b.why_not);
-        figure("gap %.2g", m.gap, size, light);
+        const doc::BorderHolds h = doc::border_holds(m, size);
+        figure("gap %.2g", m.gap, h.c0, light);
         same_line_if_fits(ImGui::CalcTextSize("angle 0.00e-00 deg").x);
-        figure("angle %.2g deg", m.angle_degrees, 1e3, light);
+        figure("angle %.2g deg", m.angle_degrees, h.g1, light);
         same_line_if_fits(ImGui::CalcTextSize("dS 0.00e-00").x);
-        figure("dS %.2g", m.derivative, size, light);
+        figure("dS %.2g", m.derivative, h.c1, light);
         same_line_if_fits(ImGui::CalcTextSize("dH 0.00e-00").x);
-        figure("dH %.2g", m.curvature, 1e3, light);
-        if (m.gap <= holds * size && m.derivative <= holds * size) ++kept;
+        figure("dH %.2g", m.curvature, h.g2, light);
+        if (h.c0 && h.c1) ++kept;
     }
     ImGui::Separator();
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));

@@ -2,7 +2,9 @@
 #include <imgui.h>
 
 #include "core/doc/commands.hpp"
+#include "ui/panels/enum_combo.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/ui_report.hpp"
 
 namespace isoparm::ui {
 
@@ -82,6 +84,28 @@ void draw_control_panel(AppContext& ctx) {
     ImGui::SliderInt("Density", &d.density, 4, 64, "%d per span");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Tessellation samples per knot span in each direction");
+
+    // Shape quality at a glance (also Display > Analysis, with the range and zebra settings).
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+    enum_combo("Analysis", d.analysis, ItemCase::capitalized);
+    report_item("display/analysis");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("False colour of curvature from exact derivatives, or reflection lines");
+    if (d.analysis == doc::AnalysisMode::zebra || d.analysis == doc::AnalysisMode::isophote) {
+        ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+        ImGui::SliderInt("Stripes", &d.stripes, 2, 64);
+    }
+    ImGui::Checkbox("Knot curves by continuity", &ctx.ui.knot_continuity);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Each interior knot curve in the colour of the continuity C(p - m) "
+                          "it carries:\nC1 yellow, C0 orange, C-1 red");
+    if (ctx.ui.knot_continuity) d.knot_curves = true;
+    ImGui::Checkbox("Borders by continuity", &ctx.ui.border_continuity);
+    report_item("display/border_continuity");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The current patch group's borders in the colour of the continuity "
+                          "measured on them:\nbroken red, C0 orange, G1 yellow, C1 green, "
+                          "C1 + G2 cyan");
 }
 
 } // namespace isoparm::ui

@@ -193,6 +193,7 @@ void weight_controls(AppContext& ctx, const doc::Object& obj, const geom::Surfac
     if (ImGui::InputDouble("##weight_typed", &typed, 0, 0, "%.4g") && std::isfinite(typed) &&
         typed != w)
         ctx.execute(doc::set_weight(obj.id, i, j, typed));
+    report_item("cp/weight");
     if (ImGui::IsItemDeactivatedAfterEdit()) ctx.seal();
 
     const double now = s.weight(i, j);

@@ -15,36 +15,9 @@
 #include "ui/panels/curve_designer.hpp"
 #include "ui/panels/flow.hpp"
 #include "ui/ui_report.hpp"
+#include "ui/view/curve_glyphs.hpp"
 
 namespace isoparm::ui::curve_designer {
-
-namespace {
-
-constexpr int comb_samples_per_span = 24;
-
-// Parameters over the domain with samples in every knot span (a comb stays dense where the
-// curve has many spans), and the knots themselves, where the curvature may jump.
-std::vector<double> comb_params(const geom::Curve& c) {
-    const geom::Interval d = geom::domain(c);
-    int spans = 0;
-    for (int k = c.degree; k < c.count(); ++k) spans += c.knots[k] < c.knots[k + 1];
-    std::vector<double> ts =
-        geom::uniform_params(d.lo, d.hi, std::clamp(spans * comb_samples_per_span, 48, 600));
-    return ts;
-}
-
-// The curve's extent on the canvas plane's axes... in 3D: the comb and frame lengths are a
-// fraction of the control polygon's size, so they read at any scale.
-double polygon_size(const geom::Curve& c) {
-    glm::dvec3 lo = c.points.front(), hi = lo;
-    for (const glm::dvec3& p : c.points) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    }
-    return std::max(glm::length(hi - lo), 1e-9);
-}
-
-} // namespace
 
 void analysis_toggles(AppContext& ctx) {
     CurveDesignerState& cd = ctx.ui.curve;
@@ -63,60 +36,32 @@ void draw_curve_analysis(const AppContext& ctx, const geom::Curve& c, double t, 
                          const std::function<ImVec2(const glm::dvec3&)>& px) {
     const CurveDesignerState& cd = ctx.ui.curve;
     const float k = ctx.ui.scale();
-    const double size = polygon_size(c);
-    if (cd.comb) {
-        // Teeth scaled so the longest is a fifth of the polygon's size.
-        const std::vector<double> ts = comb_params(c);
-        std::vector<std::pair<glm::dvec3, glm::dvec3>> teeth; // base, unit direction * kappa
-        double kmax = 0;
-        for (double s : ts) {
-            const auto p = geom::curve_point(c, s);
-            const auto f = geom::curve_curvature(c, s);
-            if (!p || !f || !f->curvature) continue;
-            const glm::dvec3 dir = f->normal ? -*f->normal * *f->curvature : glm::dvec3(0);
-            teeth.emplace_back(*p, dir);
-            kmax = std::max(kmax, *f->curvature);
-        }
-        const double scale = kmax > 0 ? 0.2 * size / kmax : 0;
-        const ImU32 tooth = IM_COL32(120, 200, 255, 150), rim = IM_COL32(120, 200, 255, 255);
-        std::vector<ImVec2> tips;
-        for (const auto& [base, dir] : teeth) {
-            const glm::dvec3 tip = base + dir * scale;
-            dl->AddLine(px(base), px(tip), tooth, 1.0f * k);
-            tips.push_back(px(tip));
-        }
-        if (tips.size() > 1)
-            dl->AddPolyline(tips.data(), static_cast<int>(tips.size()), rim, 0, 1.4f * k);
-    }
-    const auto f = geom::curve_curvature(c, t);
-    const auto p = geom::curve_point(c, t);
-    if (!f || !p) return;
-    if (cd.osculating && f->curvature && *f->curvature > 0 && f->normal && f->tangent) {
-        // The circle of radius 1/kappa about C + N / kappa in the osculating plane (T, N).
-        const double r = 1 / *f->curvature;
-        const glm::dvec3 centre = *p + *f->normal * r;
+    const CurveGlyphs g = curve_glyphs(c, t, {cd.comb, cd.osculating, cd.frenet});
+    const ImU32 tooth = IM_COL32(120, 200, 255, 150), rim = IM_COL32(120, 200, 255, 255);
+    for (const auto& [base, tip] : g.teeth) dl->AddLine(px(base), px(tip), tooth, 1.0f * k);
+    std::vector<ImVec2> tips;
+    for (const glm::dvec3& q : g.rim) tips.push_back(px(q));
+    if (tips.size() > 1)
+        dl->AddPolyline(tips.data(), static_cast<int>(tips.size()), rim, 0, 1.4f * k);
+    if (g.centre) {
+        const ImU32 orange = IM_COL32(250, 170, 60, 230);
         std::vector<ImVec2> ring;
-        for (int s = 0; s <= 96; ++s) {
-            const double a = 2 * 3.14159265358979323846 * s / 96;
-            ring.push_back(
-                px(centre + r * (std::cos(a) * *f->tangent + std::sin(a) * -*f->normal)));
-        }
-        dl->AddPolyline(ring.data(), static_cast<int>(ring.size()), IM_COL32(250, 170, 60, 230), 0,
-                        1.5f * k);
-        dl->AddCircleFilled(px(centre), 3 * k, IM_COL32(250, 170, 60, 255));
-        dl->AddLine(px(*p), px(centre), IM_COL32(250, 170, 60, 120), 1 * k);
+        for (const glm::dvec3& q : g.circle) ring.push_back(px(q));
+        dl->AddPolyline(ring.data(), static_cast<int>(ring.size()), orange, 0, 1.5f * k);
+        dl->AddCircleFilled(px(*g.centre), 3 * k, IM_COL32(250, 170, 60, 255));
+        if (const auto p = geom::curve_point(c, t))
+            dl->AddLine(px(*p), px(*g.centre), IM_COL32(250, 170, 60, 120), 1 * k);
     }
-    if (cd.frenet && f->tangent) {
-        const double L = 0.18 * size;
+    if (g.point) {
         auto arrow = [&](const glm::dvec3& d, ImU32 col, const char* name) {
-            const ImVec2 a = px(*p), b = px(*p + d * L);
+            const ImVec2 a = px(*g.point), b = px(*g.point + d * g.frame_length);
             dl->AddLine(a, b, col, 2.2f * k);
             dl->AddCircleFilled(b, 3 * k, col);
             dl->AddText(ImVec2(b.x + 4 * k, b.y - 4 * k), col, name);
         };
-        arrow(*f->tangent, IM_COL32(235, 80, 80, 255), "T");
-        if (f->normal) arrow(*f->normal, IM_COL32(90, 210, 90, 255), "N");
-        if (f->binormal) arrow(*f->binormal, IM_COL32(90, 140, 255, 255), "B");
+        arrow(*g.tangent, IM_COL32(235, 80, 80, 255), "T");
+        if (g.normal) arrow(*g.normal, IM_COL32(90, 210, 90, 255), "N");
+        if (g.binormal) arrow(*g.binormal, IM_COL32(90, 140, 255, 255), "B");
     }
 }
 

@@ -213,6 +213,8 @@ void display_menu(AppContext& ctx) {
     if (menu_item("Knot curves by continuity", nullptr, &ctx.ui.knot_continuity) &&
         ctx.ui.knot_continuity)
         d.knot_curves = true;
+    // The measured continuity of each patch border: red broken .. cyan C1 + G2.
+    menu_item("Borders by continuity", nullptr, &ctx.ui.border_continuity);
     if (menu_item("de Boor's construction", "D", &d.deboor) && d.deboor)
         ctx.ui.deboor.show_tab = true;
     if (menu_item("de Boor: step back", "[")) deboor_step(ctx, -1);

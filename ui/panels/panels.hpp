@@ -21,6 +21,7 @@ void draw_deboor_panel(AppContext& ctx);         // de Boor's levels at (u, v), 
 void draw_blossom_panel(AppContext& ctx);        // polar forms of de Boor's points, f(a_1..a_p)
 void draw_continuity_panel(AppContext& ctx);     // a patch group's borders, measured
 void draw_multires_panel(AppContext& ctx);       // levels, coarse points, detail (wavelets)
+void draw_homogeneous_panel(AppContext& ctx);    // a curve lifted to (w x, w y, w), projected
 void draw_control_panel(AppContext& ctx);        // colours and display settings
 void draw_object_list_panel(AppContext& ctx);    // every object: select, rename, hide, delete
 void draw_status_bar(AppContext& ctx);           // frame time, object, unsaved mark

@@ -12,6 +12,7 @@
 #include "ui/panels/flow.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/surface_actions.hpp"
+#include "ui/theme.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/canvas_map.hpp"
 #include "ui/view/doc_access.hpp"
@@ -198,6 +199,95 @@ void continuity_controls(AppContext& ctx, const doc::Object& obj) {
     }
 }
 
+ImVec2 param_pixel(const Rect& sq, const geom::ParamRect& dom, double u, double v) {
+    return iv(domain_to_pixel(sq, {normalize_param(dom.u, u), normalize_param(dom.v, v)}));
+}
+
+// The rational picture over the current surface's part of the square: where w(u, v) < 0 a red
+// tint, and its zero set (where the surface goes to infinity) as a strong line.
+void draw_denominator(AppContext& ctx, const geom::Surface& s, const Rect& sq,
+                      const geom::ParamRect& dom, ImDrawList* dl) {
+    const float k = ctx.ui.scale();
+    const bool light = ctx.ui.presentation;
+    auto px = [&](double u, double v) { return param_pixel(sq, dom, u, v); };
+    const geom::ParamRect own = geom::domain(s);
+    {
+        DenominatorView& view = ctx.ui.denominator;
+        view.update(s);
+        const int n = DenominatorView::sign_cells;
+        const ImU32 negative = light ? IM_COL32(230, 60, 60, 70) : IM_COL32(230, 70, 70, 80);
+        const ImU32 zero = light ? IM_COL32(200, 0, 0, 255) : IM_COL32(255, 90, 90, 255);
+        const double du = (own.u.hi - own.u.lo) / n, dv = (own.v.hi - own.v.lo) / n;
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j)
+                if (view.signs()[static_cast<std::size_t>(i) * n + j] < 0)
+                    dl->AddRectFilled(px(own.u.lo + i * du, own.v.lo + (j + 1) * dv),
+                                      px(own.u.lo + (i + 1) * du, own.v.lo + j * dv), negative);
+        for (const geom::ParamSegment& seg : view.zero_set())
+            dl->AddLine(px(seg.a.x, seg.a.y), px(seg.b.x, seg.b.y), zero, 2.5f * k);
+        report_fact("tracing/zero_set_segments", static_cast<double>(view.zero_set().size()));
+    }
+}
+
+// Each weight as a label at its control point's Greville point (u_i*, v_j*), where that point
+// pulls the surface most.
+void draw_weight_labels(AppContext& ctx, const geom::Surface& s, const Rect& sq,
+                        const geom::ParamRect& dom, ImDrawList* dl) {
+    const float k = ctx.ui.scale();
+    const bool light = ctx.ui.presentation;
+    auto px = [&](double u, double v) { return param_pixel(sq, dom, u, v); };
+    {
+        const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text);
+        const ImU32 warn = light ? IM_COL32(190, 0, 0, 255) : IM_COL32(255, 110, 110, 255);
+        const ImU32 back = light ? IM_COL32(255, 255, 255, 200) : IM_COL32(20, 22, 28, 190);
+        // Weights other than 1 first (they are what the lesson is about), then the rest where
+        // they do not cover a label already drawn: a dense net stays readable.
+        std::vector<ImVec4> taken; // drawn labels as (x0, y0, x1, y1)
+        int shown = 0;
+        for (const bool unusual : {true, false}) {
+            for (int i = 0; i < s.n_u; ++i) {
+                const double u = geom::greville_abscissa(s.knots_u, s.degree_u, i);
+                for (int j = 0; j < s.n_v; ++j) {
+                    const double w = s.weight(i, j);
+                    if ((w != 1) != unusual) continue;
+                    const double v = geom::greville_abscissa(s.knots_v, s.degree_v, j);
+                    const std::string label = short_number(w);
+                    const ImVec2 at = px(u, v), ts = ImGui::CalcTextSize(label.c_str());
+                    // Kept inside the square: corner labels would hang over its edge.
+                    const ImVec2 lo(std::clamp(at.x - ts.x / 2, sq.x, sq.x + sq.w - ts.x),
+                                    std::clamp(at.y - ts.y / 2, sq.y, sq.y + sq.h - ts.y));
+                    const ImVec4 box(lo.x - 1, lo.y, lo.x + ts.x + 1, lo.y + ts.y);
+                    const bool covers =
+                        std::any_of(taken.begin(), taken.end(), [&](const ImVec4& b) {
+                            return box.x < b.z && b.x < box.z && box.y < b.w && b.y < box.w;
+                        });
+                    if (covers) continue;
+                    taken.push_back(box);
+                    dl->AddRectFilled(ImVec2(box.x, box.y), ImVec2(box.z, box.w), back, 2 * k);
+                    dl->AddText(lo, w <= 0 ? warn : text, label.c_str());
+                    ++shown;
+                }
+            }
+        }
+        report_fact("tracing/weight_labels", shown);
+    }
+}
+
+// Under the square for rational types: the denominator picture and the weight labels.
+void rational_toggles(AppContext& ctx) {
+    ImGui::Checkbox("Denominator w", &ctx.ui.show_denominator);
+    report_item("tracing/denominator");
+    if (ImGui::IsItemHovered())
+        wrapped_tooltip("Where w(u, v) = sum N_i N_j w_ij is negative the square is tinted red; "
+                        "the red line is w = 0, where the surface goes to infinity.");
+    same_line_if_fits(toggle_width("Weights"));
+    ImGui::Checkbox("Weights", &ctx.ui.show_weights);
+    report_item("tracing/weights");
+    if (ImGui::IsItemHovered())
+        wrapped_tooltip("Each control point's weight, at its Greville point (the mean of its "
+                        "knots), where it pulls the surface most.");
+}
+
 } // namespace
 
 void draw_tracing_panel(AppContext& ctx) {
@@ -235,8 +325,9 @@ void draw_tracing_panel(AppContext& ctx) {
     const float note_h = note ? ImGui::CalcTextSize(note->text.c_str(), nullptr, false, avail.x).y +
                                     ImGui::GetStyle().ItemSpacing.y
                               : 0.f;
-    const float fields_h =
-        ImGui::GetFrameHeightWithSpacing() * 2 + ImGui::GetTextLineHeightWithSpacing() * 3 + note_h;
+    const bool rational = geom::is_rational(s->type);
+    const float fields_h = ImGui::GetFrameHeightWithSpacing() * (rational ? 3 : 2) +
+                           ImGui::GetTextLineHeightWithSpacing() * 3 + note_h;
     const float side =
         std::max(std::min(avail.x - label_w - 12 * k, avail.y - label_h - fields_h), 60.f * k);
     const ImVec2 cur = ImGui::GetCursorScreenPos();
@@ -360,12 +451,16 @@ void draw_tracing_panel(AppContext& ctx) {
         pal.text, "u");
     dl->AddText(ImVec2(a.x + 4 * k, a.y + 2 * k), pal.text, "v");
 
+    if (rational && ctx.ui.show_denominator) draw_denominator(ctx, *s, sq, dom, dl);
+
     // The indicator with its two isoparametric lines.
     const ImVec2 ip = iv(domain_to_pixel(sq, ctx.doc.view.indicator));
     dl->AddLine(ImVec2(ip.x, a.y), ImVec2(ip.x, b.y), pal.cross, 1.5f * k);
     dl->AddLine(ImVec2(a.x, ip.y), ImVec2(b.x, ip.y), pal.cross, 1.5f * k);
     dl->AddCircleFilled(ip, 7 * k, pal.indicator, 24);
     dl->AddCircle(ip, 7 * k, IM_COL32(0, 0, 0, 255), 24, 1.5f * k);
+    // Over the indicator, so a weight under it stays readable.
+    if (rational && ctx.ui.show_weights) draw_weight_labels(ctx, *s, sq, dom, dl);
 
     // Knot ticks are handles (after the drawing: their buttons sit beside the square).
     knot_strip(ctx, *obj, *s, geom::Dir::u, tu, px_u, {a.x - 4 * k, b.y, sq.w + 8 * k, label_h}, sq,
@@ -394,6 +489,7 @@ void draw_tracing_panel(AppContext& ctx) {
     if (ImGui::InputDouble("v", &v, 0.01, 0.1, "%.4f"))
         ctx.doc.view.indicator.y = std::clamp(normalize_param(dom.v, v), 0.0, 1.0);
     report_item("tracing/v");
+    if (rational) rational_toggles(ctx);
     if (note) action_note_line(ctx, *note);
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("knots u: %s", knot_vector_text(s->knots_u).c_str());

@@ -10,6 +10,7 @@
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/tessellate.hpp"
+#include "ui/view/canvas_map.hpp"
 #include "ui/view/contrast.hpp"
 #include "ui/view/deboor_overlay.hpp"
 #include "ui/view/doc_access.hpp"
@@ -110,6 +111,86 @@ glm::vec4 knot_continuity_color(int degree, int multiplicity, const glm::vec4& s
     return geom::continuity_at_knot(degree, multiplicity) < 0 ? glm::vec4(0.95f, 0.2f, 0.2f, 1)
                                                               : smooth;
 }
+
+glm::vec4 border_level_color(doc::BorderLevel level) {
+    switch (level) {
+    case doc::BorderLevel::broken:
+        return {0.95f, 0.2f, 0.2f, 1};
+    case doc::BorderLevel::c0:
+        return {1.0f, 0.5f, 0.1f, 1};
+    case doc::BorderLevel::g1:
+        return {1.0f, 0.85f, 0.2f, 1};
+    case doc::BorderLevel::c1:
+        return {0.3f, 0.85f, 0.35f, 1};
+    case doc::BorderLevel::g2:
+        return {0.3f, 0.85f, 0.95f, 1};
+    }
+    return {1, 1, 1, 1};
+}
+
+namespace {
+
+// Each border of the current patch group, traced on its low side, in the colour of the
+// continuity measured across it (the Continuity tab's figures, drawn where they hold).
+void add_borders(LineBatch& out, const doc::Document& d) {
+    const doc::Object* current = nullptr;
+    if (!current_surface(d, &current) || current->patch_group == 0) return;
+    const double size = doc::group_size(d, current->patch_group);
+    for (const doc::SharedBorder& b : doc::shared_borders(d, current->patch_group)) {
+        const doc::Object* low = d.find(b.low);
+        if (!low || !low->surface()) continue;
+        const glm::vec4 c = border_level_color(doc::border_level(doc::measure_border(d, b), size));
+        const geom::Surface& s = *low->surface();
+        const double at = geom::domain(s, b.across).hi;
+        std::vector<glm::vec3> piece;
+        for (double t : geom::uniform_params(b.along.lo, b.along.hi, 65)) {
+            const auto p = b.across == geom::Dir::u ? geom::surface_point(s, at, t)
+                                                    : geom::surface_point(s, t, at);
+            if (p) {
+                piece.emplace_back(*p);
+                continue;
+            }
+            Overlay::add_polyline(out, piece, c); // no point there: the line breaks
+            piece.clear();
+        }
+        Overlay::add_polyline(out, piece, c);
+    }
+}
+
+// The selected curve's comb, osculating circle and Frenet frame (curve_glyphs) in 3D.
+void add_curve_glyphs(Overlay& out, const doc::Document& d, const SceneStyle& style, float k) {
+    const doc::Object* sel = d.selected();
+    const geom::Curve* c = sel && sel->visible ? sel->curve() : nullptr;
+    const CurveGlyphRequest& want = style.curve_glyphs;
+    if (!c || !(want.comb || want.osculating || want.frenet)) return;
+    const double t = denormalize_param(geom::domain(*c), std::clamp(style.curve_t, 0.0, 1.0));
+    const CurveGlyphs g = curve_glyphs(*c, t, want);
+    LineBatch teeth{{}, 1.0f * k, true}, rim{{}, 1.6f * k, true}, circle{{}, 1.6f * k, true};
+    LineBatch frame{{}, 3.0f * k, false};
+    const glm::vec4 blue{0.47f, 0.78f, 1.0f, 0.8f}, orange{0.98f, 0.67f, 0.24f, 0.95f};
+    for (const auto& [base, tip] : g.teeth) {
+        teeth.vertices.push_back({glm::vec3(base), blue});
+        teeth.vertices.push_back({glm::vec3(tip), blue});
+    }
+    std::vector<glm::vec3> line(g.rim.begin(), g.rim.end());
+    Overlay::add_polyline(rim, line, with_alpha(blue, 1));
+    line.assign(g.circle.begin(), g.circle.end());
+    Overlay::add_polyline(circle, line, orange);
+    if (g.point) {
+        auto axis = [&](const std::optional<glm::dvec3>& dir, glm::vec4 col) {
+            if (!dir) return;
+            frame.vertices.push_back({glm::vec3(*g.point), col});
+            frame.vertices.push_back({glm::vec3(*g.point + *dir * g.frame_length), col});
+        };
+        axis(g.tangent, {0.92f, 0.31f, 0.31f, 1});
+        axis(g.normal, {0.35f, 0.82f, 0.35f, 1});
+        axis(g.binormal, {0.35f, 0.55f, 1.0f, 1});
+    }
+    for (LineBatch* b : {&teeth, &rim, &circle, &frame})
+        if (!b->vertices.empty()) out.lines.push_back(std::move(*b));
+}
+
+} // namespace
 
 BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
                        const ImplicitMeshes* implicit) {
@@ -275,8 +356,13 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
         }
     }
 
-    for (LineBatch* b : {&knots, &knots_double, &knots_full, &curves, &net, &box, &iso, &guide})
+    LineBatch borders{{}, 5.0f * k, true};
+    if (style.border_continuity) add_borders(borders, d);
+
+    for (LineBatch* b :
+         {&knots, &knots_double, &knots_full, &curves, &net, &box, &iso, &guide, &borders})
         if (!b->vertices.empty()) out.overlay.lines.push_back(std::move(*b));
+    add_curve_glyphs(out.overlay, d, style, k);
     for (PointBatch* b : {&points, &indicator, &selected})
         if (!b->points.empty()) out.overlay.points.push_back(std::move(*b));
     // Last, so the construction draws over the net and the indicator.

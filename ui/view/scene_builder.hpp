@@ -6,7 +6,9 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/doc/border_measure.hpp"
 #include "core/doc/document.hpp"
+#include "ui/view/curve_glyphs.hpp"
 #include "ui/view/overlay.hpp"
 #include "ui/view/scene_draw.hpp"
 
@@ -21,7 +23,17 @@ struct SceneStyle {
     int deboor_step = -1; // de Boor's construction up to this step (-1: all); deboor_overlay.hpp
     // Knot curves coloured by the continuity their knot leaves (knot_continuity_color).
     bool knot_continuity = false;
+    // The current patch group's borders drawn thick in border_level_color.
+    bool border_continuity = false;
+    // The selected curve's comb, osculating circle and Frenet frame at curve_t (normalised to
+    // [0, 1] over its domain), as the curve designer shows them on its canvas.
+    CurveGlyphRequest curve_glyphs;
+    double curve_t = 0.4;
 };
+
+// A border's colour by the continuity measured on it (doc::border_level): red broken, orange
+// C0, yellow G1, green C1, cyan C1 with the mean curvature continuous.
+glm::vec4 border_level_color(doc::BorderLevel level);
 
 // The colour of an interior knot curve of multiplicity m in degree p by the continuity
 // C^(p - m) it carries: the scene's knot-curve colour from C2 up, yellow for C1, orange for

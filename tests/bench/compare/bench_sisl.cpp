@@ -1,7 +1,10 @@
 // isoparm against SISL (the SINTEF Spline Library), on the same surfaces in one run: grid
 // positions, grid positions + normals, single points, knot insertion and degree elevation.
 // Prints points per second for both, the ratio, the largest difference between their points,
-// and the machine's ceiling for the grid case (peak multiply-adds / multiply-adds per point).
+// and the machine's ceiling for the grid case (the vector FMA peak in flops / flops per point
+// of isoparm's scheme), per kernel path (every one this CPU runs) and for one and two threads.
+// ISOPARM_SIMD does not matter here: each path is chosen explicitly (GridTessellator::
+// use_kernel); it does choose the path of the agreement check at the end.
 #include <benchmark/benchmark.h>
 #include <glm/geometric.hpp>
 #include <sisl.h>
@@ -77,13 +80,17 @@ void set_rate(benchmark::State& state, double points) {
 
 // --- grid positions ---------------------------------------------------------------------
 
+// Arguments: net size, kernel path (kernel::Path), threads.
 void BM_GridPositions_isoparm(benchmark::State& state) {
     const Surface& s = pair_for(static_cast<int>(state.range(0))).ours;
-    const GridTessellator t(s, grid, grid);
+    GridTessellator t(s, grid, grid);
+    if (!t.use_kernel(static_cast<kernel::Path>(state.range(1))))
+        return state.SkipWithError("kernel path not supported by this CPU");
+    const int threads = static_cast<int>(state.range(2));
     std::vector<glm::dvec3> pos;
     std::vector<std::uint8_t> exists;
     for (auto _ : state) {
-        t.evaluate_positions(s, pos, exists, 1);
+        t.evaluate_positions(s, pos, exists, threads);
         benchmark::DoNotOptimize(pos.data());
     }
     set_rate(state, grid * grid);
@@ -121,23 +128,14 @@ void BM_GridPositions_sisl_grid(benchmark::State& state) {
 
 void BM_GridNormals_isoparm(benchmark::State& state) {
     const Surface& s = pair_for(static_cast<int>(state.range(0))).ours;
-    const GridTessellator t(s, grid, grid);
+    GridTessellator t(s, grid, grid);
+    if (!t.use_kernel(static_cast<kernel::Path>(state.range(1))))
+        return state.SkipWithError("kernel path not supported by this CPU");
+    const int threads = static_cast<int>(state.range(2));
     std::vector<glm::dvec3> pos, nrm;
     std::vector<std::uint8_t> exists;
     for (auto _ : state) {
-        t.evaluate_vertices(s, pos, nrm, exists, 1);
-        benchmark::DoNotOptimize(nrm.data());
-    }
-    set_rate(state, grid * grid);
-}
-
-void BM_GridNormals_isoparm_2threads(benchmark::State& state) {
-    const Surface& s = pair_for(static_cast<int>(state.range(0))).ours;
-    const GridTessellator t(s, grid, grid);
-    std::vector<glm::dvec3> pos, nrm;
-    std::vector<std::uint8_t> exists;
-    for (auto _ : state) {
-        t.evaluate_vertices(s, pos, nrm, exists, 2);
+        t.evaluate_vertices(s, pos, nrm, exists, threads);
         benchmark::DoNotOptimize(nrm.data());
     }
     set_rate(state, grid * grid);
@@ -252,25 +250,53 @@ void BM_ElevateDegree_sisl(benchmark::State& state) {
 
 // --- the ceiling ---------------------------------------------------------------------------
 
+// Argument: register width in doubles (4: AVX2+FMA, 8: AVX-512F).
 void BM_PeakFma(benchmark::State& state) {
+    const int width = static_cast<int>(state.range(0));
+    if (!isoparm::bench::peak_fma_supported(width))
+        return state.SkipWithError("this CPU lacks the instructions of this width");
     double sink = 0;
     std::uint64_t fmas = 0;
-    for (auto _ : state) fmas += isoparm::bench::peak_fma_kernel(1 << 20, &sink);
+    for (auto _ : state) fmas += isoparm::bench::peak_fma_kernel(width, 1 << 20, &sink);
     benchmark::DoNotOptimize(sink);
     state.counters["FMA/s"] =
         benchmark::Counter(static_cast<double>(fmas), benchmark::Counter::kIsRate);
 }
 
-BENCHMARK(BM_PeakFma);
-BENCHMARK(BM_GridPositions_isoparm)->Arg(8)->Arg(32)->Arg(128)->Unit(benchmark::kMillisecond);
+constexpr kernel::Path paths[] = {kernel::Path::baseline, kernel::Path::avx2, kernel::Path::avx512};
+
+std::string grid_name(const std::string& kind, int n, kernel::Path path, int threads) {
+    return "BM_Grid" + kind + "_isoparm/" + std::to_string(n) + "/" +
+           std::to_string(static_cast<int>(path)) + "/" + std::to_string(threads) +
+           (threads > 1 ? "/real_time" : "");
+}
+
+void register_grid_benchmarks() {
+    for (int width : {4, 8}) benchmark::RegisterBenchmark("BM_PeakFma", BM_PeakFma)->Arg(width);
+    for (auto fn : {BM_GridPositions_isoparm, BM_GridNormals_isoparm}) {
+        const char* name =
+            fn == BM_GridPositions_isoparm ? "BM_GridPositions_isoparm" : "BM_GridNormals_isoparm";
+        for (int n : {8, 32, 128})
+            for (kernel::Path path : paths) {
+                if (!kernel::supported(path)) continue; // not measurable on this CPU
+                for (int threads : {1, 2}) {
+                    auto* b = benchmark::RegisterBenchmark(name, fn)
+                                  ->Args({n, static_cast<int>(path), threads})
+                                  ->Unit(benchmark::kMillisecond);
+                    // Threads need wall time; one thread is timed like SISL, in CPU time,
+                    // which other work on a shared machine disturbs less.
+                    if (threads > 1) b->UseRealTime();
+                }
+            }
+    }
+}
+
 BENCHMARK(BM_GridPositions_sisl_pointwise)
     ->Arg(8)
     ->Arg(32)
     ->Arg(128)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GridPositions_sisl_grid)->Arg(8)->Arg(32)->Arg(128)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_GridNormals_isoparm)->Arg(8)->Arg(32)->Arg(128)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_GridNormals_isoparm_2threads)->Arg(32)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_GridNormals_sisl_pointwise)->Arg(8)->Arg(32)->Arg(128)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GridNormals_sisl_grid)->Arg(8)->Arg(32)->Arg(128)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SinglePoint_isoparm);
@@ -294,7 +320,8 @@ public:
                 r.real_accumulated_time / std::max<double>(1, static_cast<double>(r.iterations));
             const double cpu =
                 r.cpu_accumulated_time / std::max<double>(1, static_cast<double>(r.iterations));
-            seconds[name] = name.find("2threads") != std::string::npos ? t : cpu;
+            // Cases with threads run with UseRealTime; the others on one thread, in CPU time.
+            seconds[name] = name.find("real_time") != std::string::npos ? t : cpu;
             for (const auto& [k, c] : r.counters) counters[name + ":" + k] = c.value;
         }
     }
@@ -344,6 +371,7 @@ int main(int argc, char** argv) {
     if (!has_min) args.push_back(mintime.data());
     int count = static_cast<int>(args.size());
     benchmark::Initialize(&count, args.data());
+    register_grid_benchmarks();
     Collector collector;
     benchmark::RunSpecifiedBenchmarks(&collector);
 
@@ -351,58 +379,71 @@ int main(int argc, char** argv) {
         auto it = collector.seconds.find(name);
         return it == collector.seconds.end() || it->second <= 0 ? 0.0 : 1.0 / it->second;
     };
-    std::printf("\nSummary (medians; points per second = grid points / time per grid)\n");
-    std::printf("  %-28s %14s %14s %14s %10s %10s\n", "case", "isoparm pts/s", "SISL point",
-                "SISL grid", "vs point", "vs grid");
+    const double peak4 = 2 * collector.counters["BM_PeakFma/4:FMA/s"],
+                 peak8 = 2 * collector.counters["BM_PeakFma/8:FMA/s"];
+    std::printf("\nCeiling (one core, double precision): AVX2 FMA peak %.3g GFLOP/s, AVX-512 "
+                "%s\n",
+                peak4 * 1e-9,
+                peak8 > 0 ? (std::to_string(peak8 * 1e-9) + " GFLOP/s").c_str()
+                          : "not measurable (this CPU lacks AVX-512)");
+    std::printf("\nSummary (medians; points per second = %d x %d grid points / time per grid; "
+                "kernel chosen here: %s)\n",
+                grid, grid, kernel::name(kernel::active_path()));
+    std::printf("  %-9s %-10s %-14s %11s %11s %11s %8s %8s %10s\n", "net", "case", "path/threads",
+                "isoparm", "SISL s1506", "SISL point", "vs 1506", "vs point", "of peak");
     for (int n : {8, 32, 128}) {
-        for (const char* kind : {"GridPositions", "GridNormals"}) {
+        const Surface& s = pair_for(n).ours;
+        const GridTessellator tess(s, grid, grid);
+        for (const char* kind : {"Positions", "Normals"}) {
+            const bool normals = kind[0] == 'N';
             const std::string suffix = "/" + std::to_string(n);
-            const double ours = grid * grid * rate(std::string("BM_") + kind + "_isoparm" + suffix);
+            const double s1506 =
+                grid * grid * rate("BM_Grid" + std::string(kind) + "_sisl_grid" + suffix);
             const double point =
-                grid * grid * rate(std::string("BM_") + kind + "_sisl_pointwise" + suffix);
-            const double gridr =
-                grid * grid * rate(std::string("BM_") + kind + "_sisl_grid" + suffix);
-            if (ours == 0) continue;
-            std::printf(
-                "  %-28s %14.4g %14.4g %14.4g %9.1fx %9.1fx\n",
-                (std::string(kind) + " " + std::to_string(n) + "x" + std::to_string(n)).c_str(),
-                ours, point, gridr, point > 0 ? ours / point : 0, gridr > 0 ? ours / gridr : 0);
+                grid * grid * rate("BM_Grid" + std::string(kind) + "_sisl_pointwise" + suffix);
+            // Flops per point of this scheme (grid_kernel.hpp): step 2 is 4 (p + 1) multiply-adds
+            // per homogeneous value (3 values with derivatives); step 1, nc per value for each
+            // of n control rows, is shared by the grid's rows; then the quotient (4 flops) or
+            // the quotient rule, cross product and normalization (about 54 flops).
+            const int p = s.degree_u, nc = tess.band_columns();
+            const double fma =
+                (normals ? 12.0 : 4.0) * (p + 1) + (normals ? 8.0 : 4.0) * nc * s.n_u / grid;
+            const double flops = 2 * fma + (normals ? 54 : 4);
+            for (kernel::Path path : paths) {
+                if (!kernel::supported(path)) {
+                    std::printf("  %3dx%-5d %-10s %-14s %11s\n", n, n, kind,
+                                (std::string(kernel::name(path)) + "/-").c_str(),
+                                "not measurable here");
+                    continue;
+                }
+                for (int threads : {1, 2}) {
+                    const double ours = grid * grid * rate(grid_name(kind, n, path, threads));
+                    if (ours == 0) continue;
+                    const double peak = (path == kernel::Path::avx512 ? peak8 : peak4) * threads;
+                    std::printf(
+                        "  %3dx%-5d %-10s %-14s %11.4g %11.4g %11.4g %7.1fx %7.1fx %9.1f%%\n", n, n,
+                        kind,
+                        (std::string(kernel::name(path)) + "/" + std::to_string(threads)).c_str(),
+                        ours, s1506, point, s1506 > 0 ? ours / s1506 : 0,
+                        point > 0 ? ours / point : 0, peak > 0 ? 100 * ours * flops / peak : 0);
+                }
+            }
+            std::printf("  %3dx%-5d %-10s %.0f flops/point (band %d, p %d): roofline %.4g pts/s "
+                        "(AVX2 peak, one core)\n",
+                        n, n, kind, flops, nc, p, peak4 / flops);
         }
     }
     const double sp_ours = rate("BM_SinglePoint_isoparm"), sp_sisl = rate("BM_SinglePoint_sisl");
     if (sp_ours > 0)
-        std::printf("  %-28s %14.4g %14.4g %14s %9.1fx\n", "single point (random)", sp_ours,
-                    sp_sisl, "", sp_sisl > 0 ? sp_ours / sp_sisl : 0);
+        std::printf("  %-28s %14.4g %14.4g %9.1fx\n", "single point (random)", sp_ours, sp_sisl,
+                    sp_sisl > 0 ? sp_ours / sp_sisl : 0);
     for (const char* op : {"InsertKnot", "ElevateDegree"}) {
         const double a = rate(std::string("BM_") + op + "_isoparm"),
                      b = rate(std::string("BM_") + op + "_sisl");
         if (a > 0)
-            std::printf("  %-28s %11.1f us %11.1f us %14s %9.1fx\n",
-                        (std::string(op) + " 32x32").c_str(), 1e6 / a, b > 0 ? 1e6 / b : 0.0, "",
+            std::printf("  %-28s %11.1f us %11.1f us %9.1fx\n",
+                        (std::string(op) + " 32x32").c_str(), 1e6 / a, b > 0 ? 1e6 / b : 0.0,
                         b > 0 ? a / b : 0);
-    }
-    const double peak = collector.counters["BM_PeakFma:FMA/s"];
-    if (peak > 0) {
-        std::printf(
-            "\nCeiling: peak %.3g double multiply-adds per second on one core (AVX2 FMA kernel)\n",
-            peak);
-        for (int n : {8, 32, 128}) {
-            // Per grid point: (q+1) homogeneous (4-wide) multiply-adds in v, plus the row
-            // contraction in u amortized over the row: (p+1) * 4 * n_v / samples_v.
-            const double pos_fma = 4.0 * 4 + 4.0 * 4 * n / grid;
-            const double nrm_fma = 3 * 4.0 * 4 + 2 * 4.0 * 4 * n / grid;
-            const std::string suffix = "/" + std::to_string(n);
-            const double ours_pos = grid * grid * rate("BM_GridPositions_isoparm" + suffix);
-            const double ours_nrm = grid * grid * rate("BM_GridNormals_isoparm" + suffix);
-            std::printf("  %3dx%-3d positions: %.1f FMA/point, ceiling %.4g pts/s, isoparm %.4g "
-                        "(%.1fx below)\n",
-                        n, n, pos_fma, peak / pos_fma, ours_pos,
-                        ours_pos > 0 ? peak / pos_fma / ours_pos : 0);
-            std::printf("          + normals: %.1f FMA/point, ceiling %.4g pts/s, isoparm %.4g "
-                        "(%.1fx below)\n",
-                        nrm_fma, peak / nrm_fma, ours_nrm,
-                        ours_nrm > 0 ? peak / nrm_fma / ours_nrm : 0);
-        }
     }
     std::printf("\nAgreement with SISL (same parameters, s1421 point by point):\n");
     for (int n : {8, 32, 128}) print_agreement(n);

@@ -1,12 +1,17 @@
-// The machine's ceiling: the peak double-precision multiply-add rate of one core.
+// The machine's ceiling: the peak double-precision multiply-add rate of one core, measured
+// the way the roofline model defines it (a kernel of independent FMAs in the widest vector
+// registers the CPU has, enough of them in flight to cover latency x throughput).
 #pragma once
 
 #include <cstdint>
 
 namespace isoparm::bench {
 
-// Runs `rounds` rounds of independent fused multiply-adds and returns how many were done
-// (the kernel keeps enough independent accumulators to fill every FMA pipe).
-std::uint64_t peak_fma_kernel(std::uint64_t rounds, double* sink);
+// Vector width of a peak kernel, in doubles: 4 (AVX2+FMA) or 8 (AVX-512F).
+bool peak_fma_supported(int width);
+
+// Runs `rounds` rounds of independent fused multiply-adds in `width`-double registers and
+// returns how many scalar multiply-adds were done (2 flops each).
+std::uint64_t peak_fma_kernel(int width, std::uint64_t rounds, double* sink);
 
 } // namespace isoparm::bench

@@ -1,0 +1,62 @@
+// The persistent pool: every task runs exactly once, the helpers are started once and reused,
+// nested and concurrent calls run on their caller, and an exception reaches the caller.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#include "core/geom/worker_pool.hpp"
+
+using isoparm::geom::WorkerPool;
+
+TEST(WorkerPool, EveryTaskRunsOnceAndHelpersAreReused) {
+    WorkerPool pool;
+    EXPECT_EQ(pool.helpers(), 0); // lazily: nothing started before the first parallel call
+    for (int round = 0; round < 200; ++round) {
+        std::vector<int> hits(97, 0); // each task writes its own element: no race
+        pool.run(97, 3, [&](int k) { hits[k] += 1; });
+        for (int h : hits) ASSERT_EQ(h, 1);
+    }
+    EXPECT_EQ(pool.helpers(), 2);
+    pool.run(5, 2, [](int) {});
+    EXPECT_EQ(pool.helpers(), 2); // never more than asked for, never restarted
+}
+
+TEST(WorkerPool, OneThreadRunsOnTheCaller) {
+    WorkerPool pool;
+    const auto me = std::this_thread::get_id();
+    pool.run(10, 1, [&](int) { EXPECT_EQ(std::this_thread::get_id(), me); });
+    EXPECT_EQ(pool.helpers(), 0);
+}
+
+TEST(WorkerPool, NestedAndConcurrentCallsFinish) {
+    WorkerPool pool;
+    std::atomic<int> total{0};
+    pool.run(4, 2, [&](int) { pool.run(8, 2, [&](int) { total.fetch_add(1); }); });
+    EXPECT_EQ(total.load(), 32);
+    total = 0;
+    std::vector<std::jthread> callers;
+    for (int c = 0; c < 3; ++c)
+        callers.emplace_back([&] {
+            for (int r = 0; r < 50; ++r) pool.run(16, 2, [&](int) { total.fetch_add(1); });
+        });
+    callers.clear(); // joins
+    EXPECT_EQ(total.load(), 3 * 50 * 16);
+}
+
+TEST(WorkerPool, AnExceptionReachesTheCaller) {
+    WorkerPool pool;
+    std::atomic<int> ran{0};
+    EXPECT_THROW(pool.run(64, 2,
+                          [&](int k) {
+                              ran.fetch_add(1);
+                              if (k == 5) throw std::runtime_error("task 5");
+                          }),
+                 std::runtime_error);
+    EXPECT_LE(ran.load(), 64);
+    std::atomic<int> after{0};
+    pool.run(10, 2, [&](int) { after.fetch_add(1); }); // still usable
+    EXPECT_EQ(after.load(), 10);
+}
