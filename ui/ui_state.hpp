@@ -243,6 +243,30 @@ struct ToolboxState {
     ConvertQuestion convert;
 };
 
+// The Multires tab (ui/panels/multires_panel.cpp): the levels shown for the selected object and
+// a coarse control point's drag on its canvas.
+struct MultiresState {
+    std::uint64_t object = 0;     // the object the levels were chosen for
+    int level_u = 0, level_v = 0; // a curve's level is level_u
+    int plane = 1;                // canvas plane of a surface or a 3D curve: 0 xy, 1 xz, 2 yz
+    int drag = -1;                // the coarse point dragged (i * coarse n_v + j), -1 none
+    PlaneMap frozen;              // the canvas framing kept during a drag
+    glm::dvec2 grab{0}, press{0}; // pointer offset from the point's centre; where it went down
+    std::uint64_t frame_object = 0;
+    int frame_plane = -1;
+    glm::dvec2 frame_lo{0}, frame_hi{0};
+    std::string message;   // the last refusal
+    bool show_tab = false; // bring the Multires tab forward once (the menu item)
+};
+
+// The Blossom tab (ui/panels/blossom_panel.cpp): the sliders' blossom arguments, kept while the
+// object and its piece stay (u-arguments in `args`, a surface's v-arguments in `v_args`).
+struct BlossomState {
+    std::vector<double> args, v_args;
+    std::uint64_t object = 0, v_object = 0;
+    int span = -1, v_span = -1;
+};
+
 // When the status bar's message appeared (it fades, then goes, after status_seconds).
 struct StatusAge {
     std::string text;
@@ -304,6 +328,8 @@ struct UiState {
     ObjectListState object_list;
     ToolboxState toolbox;
     FitState fit;
+    MultiresState multires;
+    BlossomState blossom;
     AnalysisView analysis; // this frame's analysis colouring (the 3D view's colour bar reads it)
     bool knot_continuity = false; // Display > Knot curves by continuity
     // The current patch group's borders in the colour of their measured continuity (Display >

@@ -163,6 +163,9 @@ void Workstation::layout_panels() {
         ImGui::BeginTabBar("##left_tabs")) {
         const ImGuiTabItemFlags bring = ui.deboor.show_tab ? ImGuiTabItemFlags_SetSelected : 0;
         ui.deboor.show_tab = false;
+        const ImGuiTabItemFlags multires_bring =
+            ui.multires.show_tab ? ImGuiTabItemFlags_SetSelected : 0;
+        ui.multires.show_tab = false;
         // A narrow column (a projector) shortens the names ("Ba..."): each tab says what it
         // is when the pointer rests on it.
         struct Tab {
@@ -175,10 +178,14 @@ void Workstation::layout_panels() {
             {"Basis", "Basis: R_ij of the selected point at (u, v), N_i and N_j",
              draw_basis_plot_panel, 0},
             {"de Boor", "de Boor's construction at (u, v), step by step", draw_deboor_panel, bring},
+            {"Blossom", "Blossom: every de Boor point as its polar form f(a_1, .., a_p)",
+             draw_blossom_panel, 0},
             {"Continuity", "Continuity: every border of the patch group, measured",
              draw_continuity_panel, 0},
             {"Homogeneous", "Homogeneous: a curve lifted to (w x, w y, w) and projected to w = 1",
              draw_homogeneous_panel, 0},
+            {"Multires", "Multires: a coarse polygon plus detail at every level (wavelets)",
+             draw_multires_panel, multires_bring},
         };
         for (const Tab& t : tabs) {
             const bool open = ImGui::BeginTabItem(t.name, nullptr, t.flags);

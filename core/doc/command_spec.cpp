@@ -3,6 +3,7 @@
 
 #include "core/doc/commands.hpp"
 #include "core/doc/commands_curve.hpp"
+#include "core/doc/commands_multires.hpp"
 
 namespace isoparm::doc {
 
@@ -73,6 +74,7 @@ struct Build {
     std::unique_ptr<Command> operator()(ConvertSpec& s) {
         return convert_object(s.id, s.to, s.reset_weights);
     }
+    std::unique_ptr<Command> operator()(MultiresEditSpec& s) { return multires_edit(s); }
 };
 
 } // namespace

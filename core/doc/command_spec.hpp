@@ -145,6 +145,17 @@ struct ConvertSpec {
     geom::SplineType to = geom::SplineType::nurbs;
     bool reset_weights = false;
 };
+// A multiresolution edit (commands_multires.hpp): at coarse `level` (surfaces: `level` along
+// u and `level_v` along v), coarse point i (j) moves to `position` keeping the detail, or the
+// detail finer than the level is multiplied by `detail_scale` keeping the coarse points.
+struct MultiresEditSpec {
+    std::uint64_t id = 0;
+    int level = 0;
+    std::optional<int> level_v;
+    int i = 0, j = -1;
+    std::optional<glm::dvec3> position;
+    std::optional<double> detail_scale;
+};
 
 // The order of the alternatives is the order of command_names below.
 using CommandSpec =
@@ -153,7 +164,7 @@ using CommandSpec =
                  SplitSpec, ConformBordersSpec, SetColorsSpec, InsertCurvePointSpec,
                  DeleteCurvePointSpec, MoveCurvePointSpec, SetCurveDegreeSpec, SetCurveKnotModeSpec,
                  SetCurvePlaneSpec, MakeCompatibleSpec, RemoveKnotSpec, ReduceDegreeSpec,
-                 SplitKnotSpec, CloseSpec, ConvertSpec, AddObjectsSpec>;
+                 SplitKnotSpec, CloseSpec, ConvertSpec, AddObjectsSpec, MultiresEditSpec>;
 
 // The command's name as scripts spell it ("edit_point"), indexed like CommandSpec.
 inline constexpr const char* command_names[] = {
@@ -183,6 +194,7 @@ inline constexpr const char* command_names[] = {
     "close",
     "convert",
     "add_objects",
+    "multires_edit",
 };
 static_assert(std::size(command_names) == std::variant_size_v<CommandSpec>);
 

@@ -55,4 +55,10 @@ std::optional<glm::dvec3> surface_blossom(const Surface& s, int span_u, int span
         blossom_homogeneous(s.knots_v, s.degree_v, row, span_v, v_args));
 }
 
+std::vector<double> deboor_point_arguments(const Knots& U, int p, int level, int index, double t) {
+    std::vector<double> args(static_cast<std::size_t>(level), t);
+    for (int r = index + 1; r <= index + p - level; ++r) args.push_back(U[r]);
+    return args;
+}
+
 } // namespace isoparm::geom

@@ -25,4 +25,11 @@ std::optional<glm::dvec3> surface_blossom(const Surface& s, int span_u, int span
                                           const std::vector<double>& u_args,
                                           const std::vector<double>& v_args);
 
+// The blossom arguments of a point of de Boor's triangle at t (deboor.hpp's indexing: level k,
+// index i = first_index + position + k, the span's triangle): d^k_i = f(t, ..., t, U[i+1], ...,
+// U[i+p-k]) with t repeated k times (Ramshaw's labelling; Farin ch. 4). Level 0 is the
+// control point f(U[i+1], ..., U[i+p]); level p is f(t, ..., t), the curve point. Each step
+// of de Boor's algorithm replaces one knot argument by t (multi-affinity).
+std::vector<double> deboor_point_arguments(const Knots& U, int p, int level, int index, double t);
+
 } // namespace isoparm::geom

@@ -39,6 +39,10 @@ public:
         auto r = read_integer(*v, path(name), std::string(name), INT_MIN, INT_MAX);
         return r ? static_cast<int>(*r) : fail(r.error(), 0);
     }
+    std::optional<int> optional_integer(std::string_view name) {
+        if (!find(name)) return std::nullopt;
+        return integer(name);
+    }
     double number(std::string_view name) {
         const json* v = need(name);
         if (!v) return 0;
@@ -261,6 +265,14 @@ json to_json(const ConvertSpec& s) {
     if (s.reset_weights) j["reset_weights"] = true;
     return j;
 }
+json to_json(const MultiresEditSpec& s) {
+    json j = {{"id", s.id}, {"level", s.level}, {"i", s.i}};
+    if (s.level_v) j["level_v"] = *s.level_v;
+    if (s.j >= 0) j["j"] = s.j;
+    if (s.position) j["position"] = point_to_json(*s.position);
+    if (s.detail_scale) j["detail_scale"] = *s.detail_scale;
+    return j;
+}
 
 // The members each command takes besides "command", in CommandSpec's order.
 const std::initializer_list<std::string_view> command_members[] = {
@@ -290,6 +302,8 @@ const std::initializer_list<std::string_view> command_members[] = {
     {"id", "direction"},                               // close
     {"id", "to", "reset_weights"},                     // convert
     {"objects", "label"},                              // add_objects
+    // multires_edit
+    {"id", "level", "level_v", "i", "j", "position", "detail_scale"},
 };
 static_assert(std::size(command_members) == std::size(command_names));
 
@@ -405,6 +419,17 @@ CommandSpec read_spec(std::size_t index, Members& m) {
     }
     case 23:
         return CloseSpec{m.id("id"), m.named<geom::Dir>("direction", "direction")};
+    case 26: {
+        MultiresEditSpec s;
+        s.id = m.id("id");
+        s.level = m.integer("level");
+        s.level_v = m.optional_integer("level_v");
+        s.i = m.integer("i", 0);
+        s.j = m.integer("j", -1);
+        s.position = m.optional_point("position");
+        s.detail_scale = m.optional_number("detail_scale");
+        return s;
+    }
     case 25:
         return AddObjectsSpec{m.read<std::vector<Object>>("objects", objects_from_json),
                               m.text("label", "")};

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/geom/blossom.hpp"
+#include "core/geom/deboor.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/refine.hpp"
@@ -104,6 +105,26 @@ TEST_P(Blossom, SurfaceBlossomReproducesPointsAndControlPoints) {
             const std::vector<double> va(s.knots_v.begin() + j + 1, s.knots_v.begin() + j + 3);
             EXPECT_LT(gap(*surface_blossom(s, Ju, Jv, ua, va), s.point(i, j)), 1e-13);
         }
+    }
+}
+
+TEST_P(Blossom, EveryDeBoorPointIsTheBlossomAtItsLabelledArguments) {
+    RandomGeometry g(29);
+    for (int p = 1; p <= 5; ++p) {
+        const Curve c = random_curve(g, p, p + 5, GetParam());
+        const Interval dom = domain(c);
+        const double t = g.uniform(dom.lo, dom.hi);
+        const DeBoorTriangle tri = deboor_curve(c, t);
+        for (int k = 0; k <= p; ++k)
+            for (std::size_t i = 0; i < tri.levels[k].size(); ++i) {
+                const int index = tri.first_index + static_cast<int>(i) + k;
+                const std::vector<double> args = deboor_point_arguments(c.knots, p, k, index, t);
+                ASSERT_EQ(args.size(), static_cast<std::size_t>(p));
+                for (int a = 0; a < k; ++a) EXPECT_EQ(args[a], t);
+                const glm::dvec3 f = *curve_blossom(c, tri.span, args);
+                EXPECT_LT(gap(f, *DeBoorTriangle::cartesian(tri.levels[k][i])), 1e-12)
+                    << "p " << p << " level " << k << " index " << index;
+            }
     }
 }
 

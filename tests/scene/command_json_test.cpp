@@ -56,6 +56,7 @@ std::vector<CommandSpec> one_of_each() {
         CloseSpec{curve_id, Dir::u},
         ConvertSpec{grid_id, geom::SplineType::bezier, true},
         AddObjectsSpec{{added, added}, "Import two"},
+        MultiresEditSpec{curve_id, 1, std::nullopt, 2, -1, glm::dvec3(1, 1, 0), std::nullopt},
     };
 }
 

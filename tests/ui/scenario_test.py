@@ -420,6 +420,64 @@ def continuity_tab_measures_the_borders(s, ctx):
     s.wait_for("a border no longer C1", lambda r: r["facts"].get("continuity/c1_measured", 3) < 3)
 
 
+def multires_tab_drags_a_coarse_point(s, ctx):
+    """Curve > New curve in xy and seven clicks make an 11-point cubic (2^3 + 3, clamped uniform
+    knots); Curve > Multiresolution editing brings the Multires tab forward; the level slider
+    goes to level 1; dragging a coarse point changes the curve in one step that Ctrl+Z takes
+    back; Detail x0 smooths it to the sweep, and Ctrl+Z brings the detail back."""
+    s.menu("Curve", "New curve in xy")
+    canvas = s.rect("curve/canvas")
+    # A wave back along the top, above the starting S (clicks append after its last point).
+    for fx, fy in ((0.8, 0.1), (0.7, 0.3), (0.6, 0.1), (0.5, 0.3), (0.4, 0.1), (0.3, 0.3),
+                   (0.2, 0.1)):
+        s.click_rect(canvas, fx, fy)
+    drawn = s.save()
+    name = objects_of(drawn, "curve")[-1]["name"]
+    points = by_name(drawn, name)["curve"]["points"]
+    check(len(points) == 11, f"7 clicks on a 4-point curve: {len(points)} points, not 11")
+    s.menu("Curve", "Multiresolution editing of the curve")
+    s.wait_for("the Multires tab", lambda r: r["facts"].get("multires/level") == 2)
+    # The slider runs over levels 0..3: a click a third of the way along picks level 1.
+    s.click_rect(s.rect("multires/level"), 0.3, 0.5)
+    s.wait_for("level 1", lambda r: r["facts"].get("multires/level") == 1)
+    handles = sorted(n for n in s.report()["rects"] if n.startswith("multires/coarse/"))
+    check(len(handles) == 5, f"level 1 has 2^1 + 3 = 5 coarse points, the tab shows {len(handles)}")
+    ctx.shot(s, "level-1")
+    x, y, w, h = s.rect("multires/coarse/2")
+    s.drag(x, y, 0, -50)
+    moved = s.save()
+    after = by_name(moved, name)["curve"]["points"]
+    check(after != points, "dragging coarse point 2 did not change the curve")
+    check(len(after) == 11, "a coarse edit keeps the 11 control points")
+    ctx.shot(s, "coarse-dragged")
+    s.key("ctrl+z")
+    undone = by_name(s.save(), name)["curve"]["points"]
+    check(undone == points, "Ctrl+Z did not restore the curve as it was before the drag")
+    s.click_named("multires/no_detail")
+    smooth = by_name(s.save(), name)["curve"]["points"]
+    check(smooth != points, "Detail x0 did not change the curve")
+    ctx.shot(s, "no-detail")
+    s.key("ctrl+z")
+    check(by_name(s.save(), name)["curve"]["points"] == points, "Ctrl+Z did not bring the detail back")
+
+
+def blossom_tab_reproduces_points(s, ctx):
+    """The Blossom tab on the vase profile (curve-designer.json): a slider moves the argument
+    a1 away from t; the P4 button sets the arguments to P4's knots and f equals P4; the
+    diagonal button gives back the curve point."""
+    s.click_named("tab/Blossom")
+    s.wait_for("the Blossom tab", lambda r: "blossom/a1" in r["rects"])
+    s.click_named("blossom/a1", 0.85, 0.5)
+    s.wait_for("a1 off the diagonal", lambda r: r["facts"].get("blossom/diagonal_gap") == -1)
+    ctx.shot(s, "a1-moved")
+    s.click_named("blossom/P4")
+    r = s.wait_for("P4's knots", lambda r: r["facts"].get("blossom/control_gap", -1) >= 0)
+    check(r["facts"]["blossom/control_gap"] < 1e-9,
+          f"f at P4's knots is {r['facts']['blossom/control_gap']} from P4")
+    s.click_named("blossom/diagonal")
+    r = s.wait_for("the diagonal", lambda r: r["facts"].get("blossom/diagonal_gap", -1) >= 0)
+    check(r["facts"]["blossom/diagonal_gap"] < 1e-9,
+          f"f(t, t, t) is {r['facts']['blossom/diagonal_gap']} from the curve point")
 def rational_picture_and_homogeneous_view(s, ctx):
     """Fig. 3b's centre weight typed as -8: the tracing square's Denominator w shows the zero
     set where the surface goes to infinity; the Homogeneous tab lifts the isocurve through the
@@ -473,6 +531,8 @@ SCENARIOS = [
     ("fit_panel", "fig3b-weight-5.json", fit_panel_least_squares),
     ("export_import", "fig8-revolution.json", file_export_then_import),
     ("continuity_tab", "fig6c-split-left-v05.json", continuity_tab_measures_the_borders),
+    ("multires_tab", "fig3b-weight-5.json", multires_tab_drags_a_coarse_point),
+    ("blossom_tab", "curve-designer.json", blossom_tab_reproduces_points),
     ("rational_picture", "fig3b-weight-5.json", rational_picture_and_homogeneous_view),
 ]
 

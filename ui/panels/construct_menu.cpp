@@ -82,6 +82,7 @@ void curve_menu(AppContext& ctx) {
     if (sel && sel->curve_object()) {
         ImGui::TextDisabled("Selected curve: %s", sel->name.c_str());
         toolbox_items(ctx, true);
+        multires_menu_item(ctx, true);
     } else {
         ImGui::TextDisabled("Select a curve for knot removal, reduction, splitting, closing");
     }

@@ -182,6 +182,7 @@ void surface_menu(AppContext& ctx) {
     refine_items(ctx);
     ImGui::Separator();
     toolbox_items(ctx, false);
+    multires_menu_item(ctx, false);
     ImGui::Separator();
     const doc::Object* sel = ctx.doc.selected();
     if (menu_item("Delete Selected", nullptr, false, sel != nullptr)) {

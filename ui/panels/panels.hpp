@@ -18,13 +18,19 @@ void toolbox_items(AppContext& ctx, bool curve); // removal, reduction, splittin
 void draw_construct_dialog(AppContext& ctx);     // the Construct menu's dialog
 void draw_basis_plot_panel(AppContext& ctx);     // R_ij at (u, v), its support, N_i and N_j
 void draw_deboor_panel(AppContext& ctx);         // de Boor's levels at (u, v), step control
+void draw_blossom_panel(AppContext& ctx);        // polar forms of de Boor's points, f(a_1..a_p)
 void draw_continuity_panel(AppContext& ctx);     // a patch group's borders, measured
+void draw_multires_panel(AppContext& ctx);       // levels, coarse points, detail (wavelets)
 void draw_homogeneous_panel(AppContext& ctx);    // a curve lifted to (w x, w y, w), projected
 void draw_control_panel(AppContext& ctx);        // colours and display settings
 void draw_object_list_panel(AppContext& ctx);    // every object: select, rename, hide, delete
 void draw_status_bar(AppContext& ctx);           // frame time, object, unsaved mark
 void draw_lesson_panel(AppContext& ctx);         // a lesson's caption and Next / Restart
 void draw_dialogs(AppContext& ctx);              // new surface, files, unsaved changes, errors
+
+// Curve / Surface > Multiresolution editing: brings the Multires tab forward; greyed with the
+// reason when the selected object has no levels.
+void multires_menu_item(AppContext& ctx, bool curve);
 
 // Height the status bar takes (for the layout).
 float status_bar_height();
