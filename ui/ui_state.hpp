@@ -340,6 +340,7 @@ struct UiState {
     bool show_denominator = false, show_weights = false;
     DenominatorView denominator;
     HomogeneousState homogeneous;
+    int left_tab = 0; // the teaching tab shown below the tracing square (ui/workstation.cpp)
 
     // Presentation enlarges everything by half, or by a quarter in a window under 800 px
     // high (a 1024x768 projector), where text is then 19 px and the panels still fit.

@@ -11,6 +11,7 @@
 #include "ui/actions.hpp"
 #include "ui/panels/fit_panel.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/panels/tab_strip.hpp"
 #include "ui/render/gl.hpp"
 #include "ui/render/renderer.hpp"
 #include "ui/surface_actions.hpp"
@@ -157,45 +158,33 @@ void Workstation::layout_panels() {
 
     if (begin_panel("Domain and knots", l.left[0])) draw_tracing_panel(ctx_);
     ImGui::End();
-    // The basis functions and de Boor's construction share the slot as tabs; D (de Boor on)
-    // brings its tab forward.
-    if (begin_panel("Basis and de Boor", l.left[1], ImGuiWindowFlags_NoTitleBar) &&
-        ImGui::BeginTabBar("##left_tabs")) {
-        const ImGuiTabItemFlags bring = ui.deboor.show_tab ? ImGuiTabItemFlags_SetSelected : 0;
-        ui.deboor.show_tab = false;
-        const ImGuiTabItemFlags multires_bring =
-            ui.multires.show_tab ? ImGuiTabItemFlags_SetSelected : 0;
-        ui.multires.show_tab = false;
-        // A narrow column (a projector) shortens the names ("Ba..."): each tab says what it
-        // is when the pointer rests on it.
+    // The teaching tabs share the slot. D (de Boor on) and Curve > Multiresolution bring their
+    // tab forward. Six names do not fit a projector's column as ImGui tabs (they shrink to
+    // "Hom..."): the strip wraps onto a second row instead, whole names always readable.
+    if (begin_panel("Basis and de Boor", l.left[1], ImGuiWindowFlags_NoTitleBar)) {
         struct Tab {
             const char* name;
             const char* what;
             void (*draw)(AppContext&);
-            ImGuiTabItemFlags flags;
         };
-        const Tab tabs[] = {
-            {"Basis", "Basis: R_ij of the selected point at (u, v), N_i and N_j",
-             draw_basis_plot_panel, 0},
-            {"de Boor", "de Boor's construction at (u, v), step by step", draw_deboor_panel, bring},
-            {"Blossom", "Blossom: every de Boor point as its polar form f(a_1, .., a_p)",
-             draw_blossom_panel, 0},
-            {"Continuity", "Continuity: every border of the patch group, measured",
-             draw_continuity_panel, 0},
-            {"Homogeneous", "Homogeneous: a curve lifted to (w x, w y, w) and projected to w = 1",
-             draw_homogeneous_panel, 0},
-            {"Multires", "Multires: a coarse polygon plus detail at every level (wavelets)",
-             draw_multires_panel, multires_bring},
+        static constexpr Tab tabs[] = {
+            {"Basis", "R_ij of the selected point at (u, v), N_i and N_j", draw_basis_plot_panel},
+            {"de Boor", "de Boor's construction at (u, v), step by step", draw_deboor_panel},
+            {"Blossom", "every de Boor point as its polar form f(a_1, .., a_p)",
+             draw_blossom_panel},
+            {"Continuity", "every border of the patch group, measured", draw_continuity_panel},
+            {"Homogeneous", "a curve lifted to (w x, w y, w) and projected to w = 1",
+             draw_homogeneous_panel},
+            {"Multires", "a coarse polygon plus detail at every level (wavelets)",
+             draw_multires_panel},
         };
-        for (const Tab& t : tabs) {
-            const bool open = ImGui::BeginTabItem(t.name, nullptr, t.flags);
-            report_item(std::string("tab/") + t.name);
-            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", t.what);
-            if (!open) continue;
-            t.draw(ctx_);
-            ImGui::EndTabItem();
-        }
-        ImGui::EndTabBar();
+        if (ui.deboor.show_tab) ui.left_tab = 1;
+        if (ui.multires.show_tab) ui.left_tab = 5;
+        ui.deboor.show_tab = ui.multires.show_tab = false;
+        std::vector<TabLabel> labels;
+        for (const Tab& t : tabs) labels.push_back({t.name, t.what});
+        ui.left_tab = tab_strip(labels, ui.left_tab);
+        tabs[ui.left_tab].draw(ctx_);
     }
     ImGui::End();
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2, 2));
