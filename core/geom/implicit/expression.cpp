@@ -788,6 +788,242 @@ double evaluate_dual(const std::vector<Program::Instruction>& code, const glm::d
     return stack[0].v;
 }
 
+// The batch form of evaluate_dual: each stack slot holds a value lane and lanes_for<N> tangent
+// lanes of up to dual_block points, so an instruction is dispatched once per block instead of
+// once per point. Every lane does exactly evaluate_dual's arithmetic in the same order (the
+// padding tangent of N = 3 included: a NaN there makes op_pow take its log term, and the
+// batch must do the same), so each point gets the same bits as a call of its own.
+constexpr std::size_t dual_block = 64;
+
+template <int N> struct DualLanes {
+    static constexpr int L = lanes_for<N>;
+    double* v;
+    double* d[L];
+};
+
+template <int N> std::size_t dual_scratch_size(int max_stack) {
+    return static_cast<std::size_t>(max_stack) * (1 + lanes_for<N>)*dual_block;
+}
+
+// seeds(var, lane, tangent) gives the tangent of x (var 0), y (1) or z (2) at a lane.
+template <int N, class Seed>
+void evaluate_dual_lanes(const std::vector<Program::Instruction>& code, const glm::dvec3* points,
+                         std::size_t m, const double* params, double* scratch, Seed seed,
+                         double* values, double* tangents) {
+    constexpr int L = lanes_for<N>;
+    const std::size_t padded = (m + 3) & ~std::size_t{3}; // dual_block is a multiple of 4
+    auto slot = [&](int s) {
+        DualLanes<N> lanes;
+        double* base = scratch + static_cast<std::size_t>(s) * (1 + L) * dual_block;
+        lanes.v = base;
+        for (int i = 0; i < L; ++i) lanes.d[i] = base + (1 + i) * dual_block;
+        return lanes;
+    };
+    // Padding lanes repeat the last point: they compute something harmless, never read.
+    auto point = [&](std::size_t k) -> const glm::dvec3& { return points[std::min(k, m - 1)]; };
+    int sp = 0;
+    for (const Program::Instruction& in : code) {
+        switch (in.op) {
+        case op_const:
+        case op_param: {
+            const DualLanes<N> a = slot(sp++);
+            const double c = in.op == op_const ? in.c : params[in.n];
+            for_lanes(padded, [&](std::size_t k) { a.v[k] = c; });
+            for (int i = 0; i < L; ++i) std::fill_n(a.d[i], padded, 0.0);
+            break;
+        }
+        case op_x:
+        case op_y:
+        case op_z: {
+            const DualLanes<N> a = slot(sp++);
+            const int var = in.op - op_x;
+            for (std::size_t k = 0; k < padded; ++k) {
+                a.v[k] = point(k)[var];
+                for (int i = 0; i < L; ++i)
+                    a.d[i][k] = i < N ? seed(var, std::min(k, m - 1), i) : 0.0;
+            }
+            break;
+        }
+        case op_add:
+        case op_sub:
+        case op_mul:
+        case op_div:
+        case op_pow: {
+            --sp;
+            const DualLanes<N> a = slot(sp - 1), b = slot(sp);
+            double* __restrict av = a.v;
+            const double* __restrict bv = b.v;
+            switch (in.op) {
+            case op_add:
+                for (int i = 0; i < L; ++i) {
+                    double* __restrict ad = a.d[i];
+                    const double* __restrict bd = b.d[i];
+                    for_lanes(padded, [=](std::size_t k) { ad[k] += bd[k]; });
+                }
+                for_lanes(padded, [=](std::size_t k) { av[k] += bv[k]; });
+                break;
+            case op_sub:
+                for (int i = 0; i < L; ++i) {
+                    double* __restrict ad = a.d[i];
+                    const double* __restrict bd = b.d[i];
+                    for_lanes(padded, [=](std::size_t k) { ad[k] -= bd[k]; });
+                }
+                for_lanes(padded, [=](std::size_t k) { av[k] -= bv[k]; });
+                break;
+            case op_mul:
+                for (int i = 0; i < L; ++i) {
+                    double* __restrict ad = a.d[i];
+                    const double* __restrict bd = b.d[i];
+                    for_lanes(padded,
+                              [=](std::size_t k) { ad[k] = ad[k] * bv[k] + av[k] * bd[k]; });
+                }
+                for_lanes(padded, [=](std::size_t k) { av[k] *= bv[k]; });
+                break;
+            case op_div:
+                for_lanes(padded, [=](std::size_t k) { av[k] = av[k] / bv[k]; });
+                for (int i = 0; i < L; ++i) {
+                    double* __restrict ad = a.d[i];
+                    const double* __restrict bd = b.d[i];
+                    for_lanes(padded,
+                              [=](std::size_t k) { ad[k] = (ad[k] - av[k] * bd[k]) / bv[k]; });
+                }
+                break;
+            default:
+                for (std::size_t k = 0; k < padded; ++k) {
+                    const double v = std::pow(av[k], bv[k]);
+                    const double da = bv[k] * std::pow(av[k], bv[k] - 1.0);
+                    bool varies = false;
+                    for (int i = 0; i < L; ++i) varies = varies || b.d[i][k] != 0.0;
+                    const double db = varies ? v * std::log(av[k]) : 0.0;
+                    for (int i = 0; i < L; ++i)
+                        a.d[i][k] = a.d[i][k] * da + (varies ? b.d[i][k] * db : 0.0);
+                    av[k] = v;
+                }
+                break;
+            }
+            break;
+        }
+        default: {
+            const DualLanes<N> a = slot(sp - 1);
+            double* __restrict v = a.v;
+            // The derivative factor of one lane, then the new value: evaluate_dual's scale().
+            auto unary = [&](auto factor, auto value) {
+                for (std::size_t k = 0; k < padded; ++k) {
+                    const double f = factor(v[k]);
+                    for (int i = 0; i < L; ++i) a.d[i][k] *= f;
+                    v[k] = value(v[k]);
+                }
+            };
+            const double c = in.c;
+            switch (in.op) {
+            case op_add_c:
+                for_lanes(padded, [=](std::size_t k) { v[k] += c; });
+                break;
+            case op_sub_c:
+                for_lanes(padded, [=](std::size_t k) { v[k] -= c; });
+                break;
+            case op_rsub_c:
+                for_lanes(padded, [=](std::size_t k) { v[k] = c - v[k]; });
+                for (int i = 0; i < L; ++i) {
+                    double* __restrict d = a.d[i];
+                    for_lanes(padded, [=](std::size_t k) { d[k] *= -1.0; });
+                }
+                break;
+            case op_mul_c:
+                for_lanes(padded, [=](std::size_t k) { v[k] *= c; });
+                for (int i = 0; i < L; ++i) {
+                    double* __restrict d = a.d[i];
+                    for_lanes(padded, [=](std::size_t k) { d[k] *= c; });
+                }
+                break;
+            case op_div_c:
+                for_lanes(padded, [=](std::size_t k) { v[k] /= c; });
+                for (int i = 0; i < L; ++i) {
+                    double* __restrict d = a.d[i];
+                    for_lanes(padded, [=](std::size_t k) { d[k] /= c; });
+                }
+                break;
+            case op_rdiv_c:
+                for (std::size_t k = 0; k < padded; ++k) {
+                    const double r = c / v[k];
+                    const double f = -r / v[k];
+                    for (int i = 0; i < L; ++i) a.d[i][k] *= f;
+                    v[k] = r;
+                }
+                break;
+            case op_pow_int:
+                if (in.n == 2) {
+                    for (int i = 0; i < L; ++i) {
+                        double* __restrict d = a.d[i];
+                        for_lanes(padded, [=](std::size_t k) { d[k] *= 2.0 * v[k]; });
+                    }
+                    for_lanes(padded, [=](std::size_t k) { v[k] = v[k] * v[k]; });
+                } else {
+                    const int n = in.n;
+                    unary([n](double x) { return n == 0 ? 0.0 : n * powi(x, n - 1); },
+                          [n](double x) { return powi(x, n); });
+                }
+                break;
+            case op_pow_c:
+                unary([c](double x) { return c * std::pow(x, c - 1.0); },
+                      [c](double x) { return std::pow(x, c); });
+                break;
+            case op_neg:
+                for_lanes(padded, [=](std::size_t k) { v[k] = -v[k]; });
+                for (int i = 0; i < L; ++i) {
+                    double* __restrict d = a.d[i];
+                    for_lanes(padded, [=](std::size_t k) { d[k] *= -1.0; });
+                }
+                break;
+            case op_sin:
+                unary([](double x) { return std::cos(x); }, [](double x) { return std::sin(x); });
+                break;
+            case op_cos:
+                unary([](double x) { return -std::sin(x); }, [](double x) { return std::cos(x); });
+                break;
+            case op_tan:
+                for (std::size_t k = 0; k < padded; ++k) {
+                    const double t = std::tan(v[k]);
+                    for (int i = 0; i < L; ++i) a.d[i][k] *= 1.0 + t * t;
+                    v[k] = t;
+                }
+                break;
+            case op_exp:
+                for (std::size_t k = 0; k < padded; ++k) {
+                    const double e = std::exp(v[k]);
+                    for (int i = 0; i < L; ++i) a.d[i][k] *= e;
+                    v[k] = e;
+                }
+                break;
+            case op_log:
+                unary([](double x) { return 1.0 / x; }, [](double x) { return std::log(x); });
+                break;
+            case op_sqrt:
+                for (std::size_t k = 0; k < padded; ++k) {
+                    const double r = std::sqrt(v[k]);
+                    for (int i = 0; i < L; ++i) a.d[i][k] *= 0.5 / r;
+                    v[k] = r;
+                }
+                break;
+            case op_abs:
+                unary([](double x) { return x > 0 ? 1.0 : (x < 0 ? -1.0 : 0.0); },
+                      [](double x) { return std::fabs(x); });
+                break;
+            default:
+                assert(false && "unknown opcode");
+            }
+            break;
+        }
+        }
+    }
+    assert(sp == 1);
+    const DualLanes<N> top = slot(0);
+    for (std::size_t k = 0; k < m; ++k) {
+        values[k] = top.v[k];
+        for (int i = 0; i < N; ++i) tangents[k * N + i] = top.d[i][k];
+    }
+}
+
 } // namespace
 
 Expected<Program> compile(std::string_view text, const std::vector<std::string>& parameter_names) {
@@ -985,6 +1221,41 @@ void Program::values_along_x(const double* xs, std::size_t n, double y, double z
             std::copy_n(lanes(0), m, out + first);
         else
             std::fill_n(out + first, m, uniform[0]);
+    }
+}
+
+void Program::values_and_derivatives(const glm::dvec3* points, const glm::dvec3* directions,
+                                     std::size_t n, double* values, double* derivatives,
+                                     const double* params, std::vector<double>& scratch) const {
+    assert(params != nullptr || parameter_names_.empty());
+    const std::size_t need = dual_scratch_size<1>(max_stack_);
+    if (scratch.size() < need) scratch.resize(need);
+    for (std::size_t first = 0; first < n; first += dual_block) {
+        const std::size_t m = std::min(dual_block, n - first);
+        const glm::dvec3* dirs = directions + first;
+        evaluate_dual_lanes<1>(
+            code_, points + first, m, params, scratch.data(),
+            [dirs](int var, std::size_t k, int) { return dirs[k][var]; }, values + first,
+            derivatives + first);
+    }
+}
+
+void Program::values_and_gradients(const glm::dvec3* points, std::size_t n, double* values,
+                                   glm::dvec3* gradients, const double* params,
+                                   std::vector<double>& scratch) const {
+    assert(params != nullptr || parameter_names_.empty());
+    const std::size_t need = dual_scratch_size<3>(max_stack_);
+    if (scratch.size() < need) scratch.resize(need);
+    double tangents[dual_block * 3];
+    for (std::size_t first = 0; first < n; first += dual_block) {
+        const std::size_t m = std::min(dual_block, n - first);
+        evaluate_dual_lanes<3>(
+            code_, points + first, m, params, scratch.data(),
+            [](int var, std::size_t, int i) { return var == i ? 1.0 : 0.0; }, values + first,
+            tangents);
+        for (std::size_t k = 0; k < m; ++k)
+            gradients[first + k] =
+                glm::dvec3(tangents[k * 3], tangents[k * 3 + 1], tangents[k * 3 + 2]);
     }
 }
 
