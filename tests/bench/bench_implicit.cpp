@@ -82,4 +82,80 @@ void BM_TorusValueAndGradient(benchmark::State& state) {
 }
 BENCHMARK(BM_TorusValueAndGradient);
 
+// The vertex refinement's evaluations, one point per call against a block of 1024 points per
+// call (Program::values_and_derivatives / values_and_gradients, the polygonizer's form): the
+// same bits, the dispatch paid once per 64 points.
+struct RefinementPoints {
+    std::vector<glm::dvec3> points, directions;
+    RefinementPoints() {
+        for (int i = 0; i < 1024; ++i) {
+            const double s = i / 1024.0;
+            points.emplace_back(-0.9 + 1.8 * s, 0.5 - s * s, 0.2 * s);
+            directions.emplace_back(0.0, 0.0, 2.0 / 128);
+        }
+    }
+};
+
+void BM_TorusDerivativeOnePointCalls(benchmark::State& state) {
+    const Program f = torus();
+    const double params[2] = {0.6, 0.25};
+    const RefinementPoints r;
+    for (auto _ : state)
+        for (std::size_t k = 0; k < r.points.size(); ++k) {
+            double d = 0;
+            benchmark::DoNotOptimize(
+                f.value_and_derivative(r.points[k], r.directions[k], d, params));
+            benchmark::DoNotOptimize(d);
+        }
+    state.counters["points_per_s"] = benchmark::Counter(
+        static_cast<double>(r.points.size()), benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_TorusDerivativeOnePointCalls);
+
+void BM_TorusDerivativeBatch(benchmark::State& state) {
+    const Program f = torus();
+    const double params[2] = {0.6, 0.25};
+    const RefinementPoints r;
+    std::vector<double> values(r.points.size()), derivatives(r.points.size()), scratch;
+    for (auto _ : state) {
+        f.values_and_derivatives(r.points.data(), r.directions.data(), r.points.size(),
+                                 values.data(), derivatives.data(), params, scratch);
+        benchmark::DoNotOptimize(derivatives.data());
+    }
+    state.counters["points_per_s"] = benchmark::Counter(
+        static_cast<double>(r.points.size()), benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_TorusDerivativeBatch);
+
+void BM_TorusGradientOnePointCalls(benchmark::State& state) {
+    const Program f = torus();
+    const double params[2] = {0.6, 0.25};
+    const RefinementPoints r;
+    for (auto _ : state)
+        for (const glm::dvec3& p : r.points) {
+            glm::dvec3 g;
+            benchmark::DoNotOptimize(f.value_and_gradient(p, g, params));
+            benchmark::DoNotOptimize(g);
+        }
+    state.counters["points_per_s"] = benchmark::Counter(
+        static_cast<double>(r.points.size()), benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_TorusGradientOnePointCalls);
+
+void BM_TorusGradientBatch(benchmark::State& state) {
+    const Program f = torus();
+    const double params[2] = {0.6, 0.25};
+    const RefinementPoints r;
+    std::vector<double> values(r.points.size()), scratch;
+    std::vector<glm::dvec3> gradients(r.points.size());
+    for (auto _ : state) {
+        f.values_and_gradients(r.points.data(), r.points.size(), values.data(), gradients.data(),
+                               params, scratch);
+        benchmark::DoNotOptimize(gradients.data());
+    }
+    state.counters["points_per_s"] = benchmark::Counter(
+        static_cast<double>(r.points.size()), benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_TorusGradientBatch);
+
 } // namespace

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <string>
 #include <vector>
@@ -185,6 +186,91 @@ TEST(ImplicitExpression, BatchMatchesScalarBitForBit) {
             EXPECT_TRUE(std::isnan(out[i]));
         else
             EXPECT_EQ(out[i], expect) << i;
+    }
+}
+
+// A random expression over every instruction the compiler emits: variables, parameters and
+// constants on either side of each operator (the *_c forms), integer, fractional and variable
+// exponents, unary minus and every function.
+std::string random_expression(std::mt19937& rng, int depth) {
+    auto pick = [&](int n) { return static_cast<int>(rng() % static_cast<unsigned>(n)); };
+    if (depth == 0 || pick(4) == 0) {
+        static const char* leaves[] = {"x", "y", "z", "a", "b", "0", "1.5", "-2", "0.3", "3"};
+        return leaves[pick(10)];
+    }
+    static const char* functions[] = {"sin", "cos", "tan", "exp", "log", "sqrt", "abs"};
+    static const char* exponents[] = {"2", "3", "5", "0", "-1", "-3", "0.5", "1.7", "y", "a"};
+    switch (pick(8)) {
+    case 0:
+        return "(" + random_expression(rng, depth - 1) + " + " + random_expression(rng, depth - 1) +
+               ")";
+    case 1:
+        return "(" + random_expression(rng, depth - 1) + " - " + random_expression(rng, depth - 1) +
+               ")";
+    case 2:
+        return "(" + random_expression(rng, depth - 1) + " * " + random_expression(rng, depth - 1) +
+               ")";
+    case 3:
+        return "(" + random_expression(rng, depth - 1) + " / " + random_expression(rng, depth - 1) +
+               ")";
+    case 4:
+        return "(" + random_expression(rng, depth - 1) + ")^" + exponents[pick(10)];
+    case 5:
+        return "-(" + random_expression(rng, depth - 1) + ")";
+    default:
+        return std::string(functions[pick(7)]) + "(" + random_expression(rng, depth - 1) + ")";
+    }
+}
+
+// Same bits, or both NaN (NaN payloads are not part of the contract).
+bool same_bits(double a, double b) {
+    return (std::isnan(a) && std::isnan(b)) || std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+TEST(ImplicitExpression, BatchDualsMatchOnePointCallsBitForBit) {
+    std::mt19937 rng(2024);
+    const double params[2] = {0.8, -1.25};
+    // Ordinary points, zeros (division by zero, log 0, 0^-1), negatives (log, sqrt, fractional
+    // powers: NaN) and large values (overflow to infinity, inf - inf): 70 points, so the
+    // 64-point blocks and their padding are crossed.
+    std::vector<glm::dvec3> points, directions;
+    std::uniform_real_distribution<double> u(-3.0, 3.0);
+    for (int k = 0; k < 64; ++k) {
+        points.emplace_back(u(rng), u(rng), u(rng));
+        directions.emplace_back(u(rng), u(rng), u(rng));
+    }
+    for (const glm::dvec3 p :
+         {glm::dvec3(0, 0, 0), glm::dvec3(0, 1, -1), glm::dvec3(-1, -2, 0),
+          glm::dvec3(1e200, -1e200, 3), glm::dvec3(700, 710, -750), glm::dvec3(-0.0, 2, 1e-310)}) {
+        points.push_back(p);
+        directions.emplace_back(1.0, -0.5, 0.0);
+    }
+    const std::size_t n = points.size();
+    std::vector<double> scratch, values(n), derivatives(n), gvalues(n);
+    std::vector<glm::dvec3> gradients(n);
+    for (int e = 0; e < 300; ++e) {
+        const std::string text = random_expression(rng, 1 + e % 5);
+        auto program = compile(text, {"a", "b"});
+        ASSERT_TRUE(program.ok()) << text;
+        // Counts below the block size, and all of them.
+        for (const std::size_t count : {std::size_t{1}, std::size_t{5}, n}) {
+            program->values_and_derivatives(points.data(), directions.data(), count, values.data(),
+                                            derivatives.data(), params, scratch);
+            program->values_and_gradients(points.data(), count, gvalues.data(), gradients.data(),
+                                          params, scratch);
+            for (std::size_t k = 0; k < count; ++k) {
+                double d = 0;
+                glm::dvec3 g;
+                const double v = program->value_and_derivative(points[k], directions[k], d, params);
+                const double vg = program->value_and_gradient(points[k], g, params);
+                ASSERT_TRUE(same_bits(values[k], v)) << text << " at point " << k;
+                ASSERT_TRUE(same_bits(derivatives[k], d)) << text << " at point " << k;
+                ASSERT_TRUE(same_bits(gvalues[k], vg)) << text << " at point " << k;
+                for (int i = 0; i < 3; ++i)
+                    ASSERT_TRUE(same_bits(gradients[k][i], g[i]))
+                        << text << " at point " << k << ", component " << i;
+            }
+        }
     }
 }
 

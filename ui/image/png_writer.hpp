@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,5 +13,9 @@ namespace isoparm::ui {
 // Returns "" or the reason it failed (naming the file and the system's reason).
 std::string write_png(const std::string& path, int width, int height,
                       const std::vector<std::uint8_t>& rgba);
+
+// The PNG file's bytes for rgba (width * height * 4 bytes, checked by the caller); nothing
+// when memory ran out.
+std::optional<std::string> encode_png(int width, int height, const std::vector<std::uint8_t>& rgba);
 
 } // namespace isoparm::ui

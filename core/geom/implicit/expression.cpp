@@ -788,6 +788,248 @@ double evaluate_dual(const std::vector<Program::Instruction>& code, const glm::d
     return stack[0].v;
 }
 
+// The batch form of evaluate_dual: each stack slot holds a value lane and lanes_for<N> tangent
+// lanes of up to dual_block points, so an instruction is dispatched once per block instead of
+// once per point. Every lane does exactly evaluate_dual's arithmetic in the same order (the
+// padding tangent of N = 3 included: a NaN there makes op_pow take its log term, and the
+// batch must do the same), so each point gets the same bits as a call of its own. The loops
+// are small functions with __restrict arguments so that GCC's -O2 vectorizes them (lambdas'
+// captured pointers lose the no-alias promise).
+constexpr std::size_t dual_block = 64;
+
+template <int N> struct DualLanes {
+    static constexpr int L = lanes_for<N>;
+    double* v;
+    double* d[L];
+};
+
+template <int N> std::size_t dual_scratch_size(int max_stack) {
+    // The slots, then one lane of per-point factors.
+    return (static_cast<std::size_t>(max_stack) * (1 + lanes_for<N>)+1) * dual_block;
+}
+
+// d = d * bv + av * bd (the product rule, with a's old value).
+void product_tangent(double* __restrict d, const double* __restrict bv, const double* __restrict av,
+                     const double* __restrict bd, std::size_t m) {
+    for_lanes(m, [=](std::size_t k) { d[k] = d[k] * bv[k] + av[k] * bd[k]; });
+}
+
+// d = (d - q * bd) / bv (the quotient rule, q the new value).
+void quotient_tangent(double* __restrict d, const double* __restrict q, const double* __restrict bd,
+                      const double* __restrict bv, std::size_t m) {
+    for_lanes(m, [=](std::size_t k) { d[k] = (d[k] - q[k] * bd[k]) / bv[k]; });
+}
+
+// std::fill_n is not vectorized at -O2 (an unknown trip count); four lanes a step are.
+void fill_lane(double* __restrict d, double c, std::size_t m) {
+    for_lanes(m, [=](std::size_t k) { d[k] = c; });
+}
+
+void scale_lane(double* __restrict d, const double* __restrict f, std::size_t m) {
+    for_lanes(m, [=](std::size_t k) { d[k] *= f[k]; });
+}
+
+void scale_lane(double* __restrict d, double f, std::size_t m) {
+    for_lanes(m, [=](std::size_t k) { d[k] *= f; });
+}
+
+void divide_lane(double* __restrict d, double f, std::size_t m) {
+    for_lanes(m, [=](std::size_t k) { d[k] /= f; });
+}
+
+// directions: the tangent seeds of x, y, z per point (N = 1); nullptr: unit seeds (N = 3).
+template <int N>
+void evaluate_dual_lanes(const std::vector<Program::Instruction>& code, int max_stack,
+                         const glm::dvec3* points, const glm::dvec3* directions, std::size_t m,
+                         const double* params, double* scratch, double* values, double* tangents) {
+    constexpr int L = lanes_for<N>;
+    const std::size_t padded = (m + 3) & ~std::size_t{3}; // dual_block is a multiple of 4
+    auto slot = [&](int s) {
+        DualLanes<N> lanes;
+        double* base = scratch + static_cast<std::size_t>(s) * (1 + L) * dual_block;
+        lanes.v = base;
+        for (int i = 0; i < L; ++i) lanes.d[i] = base + (1 + i) * dual_block;
+        return lanes;
+    };
+    int sp = 0;
+    double* const f = scratch + static_cast<std::size_t>(max_stack) * (1 + L) * dual_block;
+    // The per-point factors f of evaluate_dual's scale(), then the tangents scaled by them.
+    auto scale_all = [&](const DualLanes<N>& a) {
+        for (int i = 0; i < L; ++i) scale_lane(a.d[i], f, padded);
+    };
+    for (const Program::Instruction& in : code) {
+        switch (in.op) {
+        case op_const:
+        case op_param: {
+            const DualLanes<N> a = slot(sp++);
+            fill_lane(a.v, in.op == op_const ? in.c : params[in.n], padded);
+            for (int i = 0; i < L; ++i) fill_lane(a.d[i], 0.0, padded);
+            break;
+        }
+        case op_x:
+        case op_y:
+        case op_z: {
+            const DualLanes<N> a = slot(sp++);
+            const int var = in.op - op_x;
+            // Padding lanes repeat the last point: they compute something harmless, never read.
+            for (std::size_t k = 0; k < m; ++k) a.v[k] = points[k][var];
+            std::fill(a.v + m, a.v + padded, a.v[m - 1]);
+            if constexpr (N == 1) {
+                for (std::size_t k = 0; k < m; ++k) a.d[0][k] = directions[k][var];
+                std::fill(a.d[0] + m, a.d[0] + padded, a.d[0][m - 1]);
+            } else {
+                for (int i = 0; i < L; ++i) fill_lane(a.d[i], i == var ? 1.0 : 0.0, padded);
+            }
+            break;
+        }
+        case op_add:
+        case op_sub: {
+            --sp;
+            const DualLanes<N> a = slot(sp - 1), b = slot(sp);
+            for (int i = 0; i < L; ++i) binary_lanes(in.op, a.d[i], b.d[i], padded);
+            binary_lanes(in.op, a.v, b.v, padded);
+            break;
+        }
+        case op_mul: {
+            --sp;
+            const DualLanes<N> a = slot(sp - 1), b = slot(sp);
+            for (int i = 0; i < L; ++i) product_tangent(a.d[i], b.v, a.v, b.d[i], padded);
+            binary_lanes(op_mul, a.v, b.v, padded);
+            break;
+        }
+        case op_div: {
+            --sp;
+            const DualLanes<N> a = slot(sp - 1), b = slot(sp);
+            binary_lanes(op_div, a.v, b.v, padded);
+            for (int i = 0; i < L; ++i) quotient_tangent(a.d[i], a.v, b.d[i], b.v, padded);
+            break;
+        }
+        case op_pow: {
+            --sp;
+            const DualLanes<N> a = slot(sp - 1), b = slot(sp);
+            for (std::size_t k = 0; k < padded; ++k) {
+                const double v = std::pow(a.v[k], b.v[k]);
+                const double da = b.v[k] * std::pow(a.v[k], b.v[k] - 1.0);
+                bool varies = false;
+                for (int i = 0; i < L; ++i) varies = varies || b.d[i][k] != 0.0;
+                const double db = varies ? v * std::log(a.v[k]) : 0.0;
+                for (int i = 0; i < L; ++i)
+                    a.d[i][k] = a.d[i][k] * da + (varies ? b.d[i][k] * db : 0.0);
+                a.v[k] = v;
+            }
+            break;
+        }
+        default: {
+            const DualLanes<N> a = slot(sp - 1);
+            double* const v = a.v;
+            const double c = in.c;
+            switch (in.op) {
+            case op_add_c:
+            case op_sub_c:
+                unary_lane(in, v, padded);
+                break;
+            case op_rsub_c:
+            case op_neg:
+                unary_lane(in, v, padded);
+                for (int i = 0; i < L; ++i) scale_lane(a.d[i], -1.0, padded);
+                break;
+            case op_mul_c:
+                unary_lane(in, v, padded);
+                for (int i = 0; i < L; ++i) scale_lane(a.d[i], c, padded);
+                break;
+            case op_div_c:
+                unary_lane(in, v, padded);
+                for (int i = 0; i < L; ++i) divide_lane(a.d[i], c, padded);
+                break;
+            case op_rdiv_c:
+                for (std::size_t k = 0; k < padded; ++k) {
+                    const double r = c / v[k];
+                    f[k] = -r / v[k];
+                    v[k] = r;
+                }
+                scale_all(a);
+                break;
+            case op_pow_int:
+                if (in.n == 2) {
+                    for_lanes(padded, [=](std::size_t k) { f[k] = 2.0 * v[k]; });
+                } else {
+                    const int n = in.n;
+                    for (std::size_t k = 0; k < padded; ++k)
+                        f[k] = n == 0 ? 0.0 : n * powi(v[k], n - 1);
+                }
+                scale_all(a);
+                unary_lane(in, v, padded);
+                break;
+            case op_pow_c:
+                for (std::size_t k = 0; k < padded; ++k) {
+                    f[k] = c * std::pow(v[k], c - 1.0);
+                    v[k] = std::pow(v[k], c);
+                }
+                scale_all(a);
+                break;
+            case op_sin:
+                for (std::size_t k = 0; k < padded; ++k) {
+                    f[k] = std::cos(v[k]);
+                    v[k] = std::sin(v[k]);
+                }
+                scale_all(a);
+                break;
+            case op_cos:
+                for (std::size_t k = 0; k < padded; ++k) {
+                    f[k] = -std::sin(v[k]);
+                    v[k] = std::cos(v[k]);
+                }
+                scale_all(a);
+                break;
+            case op_tan:
+                for (std::size_t k = 0; k < padded; ++k) {
+                    const double t = std::tan(v[k]);
+                    f[k] = 1.0 + t * t;
+                    v[k] = t;
+                }
+                scale_all(a);
+                break;
+            case op_exp:
+                for (std::size_t k = 0; k < padded; ++k) f[k] = v[k] = std::exp(v[k]);
+                scale_all(a);
+                break;
+            case op_log:
+                for (std::size_t k = 0; k < padded; ++k) {
+                    f[k] = 1.0 / v[k];
+                    v[k] = std::log(v[k]);
+                }
+                scale_all(a);
+                break;
+            case op_sqrt:
+                for (std::size_t k = 0; k < padded; ++k) {
+                    const double r = std::sqrt(v[k]);
+                    f[k] = 0.5 / r;
+                    v[k] = r;
+                }
+                scale_all(a);
+                break;
+            case op_abs:
+                for (std::size_t k = 0; k < padded; ++k) {
+                    f[k] = v[k] > 0 ? 1.0 : (v[k] < 0 ? -1.0 : 0.0);
+                    v[k] = std::fabs(v[k]);
+                }
+                scale_all(a);
+                break;
+            default:
+                assert(false && "unknown opcode");
+            }
+            break;
+        }
+        }
+    }
+    assert(sp == 1);
+    const DualLanes<N> top = slot(0);
+    for (std::size_t k = 0; k < m; ++k) {
+        values[k] = top.v[k];
+        for (int i = 0; i < N; ++i) tangents[k * N + i] = top.d[i][k];
+    }
+}
+
 } // namespace
 
 Expected<Program> compile(std::string_view text, const std::vector<std::string>& parameter_names) {
@@ -985,6 +1227,37 @@ void Program::values_along_x(const double* xs, std::size_t n, double y, double z
             std::copy_n(lanes(0), m, out + first);
         else
             std::fill_n(out + first, m, uniform[0]);
+    }
+}
+
+void Program::values_and_derivatives(const glm::dvec3* points, const glm::dvec3* directions,
+                                     std::size_t n, double* values, double* derivatives,
+                                     const double* params, std::vector<double>& scratch) const {
+    assert(params != nullptr || parameter_names_.empty());
+    const std::size_t need = dual_scratch_size<1>(max_stack_);
+    if (scratch.size() < need) scratch.resize(need);
+    for (std::size_t first = 0; first < n; first += dual_block) {
+        const std::size_t m = std::min(dual_block, n - first);
+        const glm::dvec3* dirs = directions + first;
+        evaluate_dual_lanes<1>(code_, max_stack_, points + first, dirs, m, params, scratch.data(),
+                               values + first, derivatives + first);
+    }
+}
+
+void Program::values_and_gradients(const glm::dvec3* points, std::size_t n, double* values,
+                                   glm::dvec3* gradients, const double* params,
+                                   std::vector<double>& scratch) const {
+    assert(params != nullptr || parameter_names_.empty());
+    const std::size_t need = dual_scratch_size<3>(max_stack_);
+    if (scratch.size() < need) scratch.resize(need);
+    double tangents[dual_block * 3];
+    for (std::size_t first = 0; first < n; first += dual_block) {
+        const std::size_t m = std::min(dual_block, n - first);
+        evaluate_dual_lanes<3>(code_, max_stack_, points + first, nullptr, m, params,
+                               scratch.data(), values + first, tangents);
+        for (std::size_t k = 0; k < m; ++k)
+            gradients[first + k] =
+                glm::dvec3(tangents[k * 3], tangents[k * 3 + 1], tangents[k * 3 + 2]);
     }
 }
 

@@ -33,6 +33,16 @@ public:
     void values_along_x(const double* xs, std::size_t n, double y, double z, double* out,
                         const double* params, std::vector<double>& scratch) const;
 
+    // Batch forms of value_and_derivative and value_and_gradient (the polygonizer refines all
+    // the edges of a layer together): for i < n, the same bits as the one-point calls. scratch
+    // as for values_along_x.
+    void values_and_derivatives(const glm::dvec3* points, const glm::dvec3* directions,
+                                std::size_t n, double* values, double* derivatives,
+                                const double* params, std::vector<double>& scratch) const;
+    void values_and_gradients(const glm::dvec3* points, std::size_t n, double* values,
+                              glm::dvec3* gradients, const double* params,
+                              std::vector<double>& scratch) const;
+
     // Number of instructions after constant folding (for tests and diagnostics).
     std::size_t instruction_count() const { return code_.size(); }
 
