@@ -209,15 +209,12 @@ void draw_picture(AppContext& ctx, const Lifted& l, const HomogeneousScene& h, c
 
 } // namespace
 
-void draw_homogeneous_panel(AppContext& ctx) {
+namespace {
+
+// Which curve is lifted and how it is seen: two small combos rather than rows of radio
+// buttons, each control on the line while it fits.
+void homogeneous_controls(AppContext& ctx, const std::optional<Lifted>& l, bool surface_source) {
     HomogeneousState& hs = ctx.ui.homogeneous;
-    const float k = ctx.ui.scale();
-    std::string why_not;
-    const std::optional<Lifted> l = chosen_curve(ctx, why_not);
-    const doc::Object* sel = ctx.doc.selected();
-    const bool surface_source = !(sel && sel->curve_object());
-    // Two small combos rather than rows of radio buttons: a projector's narrow column keeps
-    // most of its height for the picture. Each control goes on the line while it fits.
     const float combo_w = ImGui::CalcTextSize("along u").x + ImGui::GetFrameHeight() * 2;
     if (surface_source) {
         const char* iso_names[] = {"along u", "along v"};
@@ -243,25 +240,30 @@ void draw_homogeneous_panel(AppContext& ctx) {
     same_line_if_fits(ImGui::CalcTextSize("Reset").x + ImGui::GetStyle().FramePadding.x * 2);
     if (ImGui::SmallButton("Reset")) hs = HomogeneousState{hs.isocurve, hs.plane};
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Turn and zoom the picture back");
+}
+
+} // namespace
+
+void draw_homogeneous_panel(AppContext& ctx) {
+    HomogeneousState& hs = ctx.ui.homogeneous;
+    const float k = ctx.ui.scale();
+    std::string why_not;
+    const std::optional<Lifted> l = chosen_curve(ctx, why_not);
+    const doc::Object* sel = ctx.doc.selected();
+    const bool surface_source = !(sel && sel->curve_object());
     if (!l) {
+        homogeneous_controls(ctx, l, surface_source);
         ImGui::TextWrapped("%s", why_not.c_str());
         return;
     }
     const HomogeneousScene h = homogeneous_scene(l->curve, l->axes, l->t);
-    ImGui::TextWrapped("%s", l->caption.c_str());
-    same_line_if_fits(ImGui::CalcTextSize("(?)").x);
-    ImGui::TextDisabled("(?)");
-    if (ImGui::IsItemHovered())
-        wrapped_tooltip("C(t) = C^w(t) / w(t). The blue curve is a polynomial B-spline in (w x, "
-                        "w y, w) with the control points (w_i x_i, w_i y_i, w_i); projected from "
-                        "the origin onto the plane w = 1 it is the orange rational curve. Each "
-                        "grey ray joins the origin, a lifted control point and the control point "
-                        "itself on w = 1; a negative weight puts the lifted point below the "
-                        "origin.");
+    // The picture first: a projector's short slot shows it whole, and the controls below it
+    // scroll if they must.
     const ImVec2 avail = ImGui::GetContentRegionAvail();
-    const float line = ImGui::GetTextLineHeightWithSpacing();
+    const float below =
+        ImGui::GetFrameHeightWithSpacing() * 2 + ImGui::GetTextLineHeightWithSpacing() * 2;
     const Rect box{ImGui::GetCursorScreenPos().x, ImGui::GetCursorScreenPos().y, avail.x,
-                   std::max(avail.y - line * 2, 80 * k)};
+                   std::max({avail.y - below, avail.y * 0.5f, 60 * k})};
     ImGui::InvisibleButton("##homogeneous", ImVec2(box.w, box.h));
     report_item("homogeneous/canvas");
     if (ImGui::IsItemActive()) {
@@ -279,6 +281,17 @@ void draw_homogeneous_panel(AppContext& ctx) {
         const glm::dvec3 q = *h.lifted_at_t;
         ImGui::Text("t = %.4g: C^w = (%.3g, %.3g, %.3g), w = %.4g", h.t, q.x, q.y, q.z, q.z);
     }
+    ImGui::TextWrapped("%s", l->caption.c_str());
+    same_line_if_fits(ImGui::CalcTextSize("(?)").x);
+    ImGui::TextDisabled("(?)");
+    if (ImGui::IsItemHovered())
+        wrapped_tooltip("C(t) = C^w(t) / w(t). The blue curve is a polynomial B-spline in (w x, "
+                        "w y, w) with the control points (w_i x_i, w_i y_i, w_i); projected from "
+                        "the origin onto the plane w = 1 it is the orange rational curve. Each "
+                        "grey ray joins the origin, a lifted control point and the control point "
+                        "itself on w = 1; a negative weight puts the lifted point below the "
+                        "origin.");
+    homogeneous_controls(ctx, l, surface_source);
     report_fact("homogeneous/control_points", static_cast<double>(h.lifted_points.size()));
     report_fact("homogeneous/yaw", hs.yaw);
 }
