@@ -52,7 +52,8 @@ double surface_denominator(const Surface& s, double u, double v) {
     for (int a = 0; a <= s.degree_u; ++a) {
         double row = 0;
         for (int b = 0; b <= s.degree_v; ++b)
-            row += bv.values[0][static_cast<std::size_t>(b)] * s.weight(bu.first_index + a, bv.first_index + b);
+            row += bv.values[0][static_cast<std::size_t>(b)] *
+                   s.weight(bu.first_index + a, bv.first_index + b);
         w += bu.values[0][static_cast<std::size_t>(a)] * row;
     }
     return w;
@@ -71,9 +72,9 @@ std::vector<ParamSegment> denominator_zero_set(const Surface& s, int resolution)
     for (std::size_t i = 0; i + 1 < us.size(); ++i) {
         for (std::size_t j = 0; j + 1 < nv; ++j) {
             // Corners counter-clockwise: (u0,v0), (u1,v0), (u1,v1), (u0,v1).
-            const std::array<glm::dvec2, 4> c{glm::dvec2{us[i], vs[j]}, glm::dvec2{us[i + 1], vs[j]},
-                                              glm::dvec2{us[i + 1], vs[j + 1]},
-                                              glm::dvec2{us[i], vs[j + 1]}};
+            const std::array<glm::dvec2, 4> c{
+                glm::dvec2{us[i], vs[j]}, glm::dvec2{us[i + 1], vs[j]},
+                glm::dvec2{us[i + 1], vs[j + 1]}, glm::dvec2{us[i], vs[j + 1]}};
             const std::array<double, 4> f{w[i * nv + j], w[(i + 1) * nv + j],
                                           w[(i + 1) * nv + j + 1], w[i * nv + j + 1]};
             int mask = 0;
