@@ -14,6 +14,7 @@
 #include "core/geom/grid_tessellator.hpp"
 #include "core/geom/knots.hpp"
 #include "tests/support/random_geometry.hpp"
+#include "tests/support/small_surfaces.hpp"
 
 using namespace isoparm::geom;
 using isoparm::testing::RandomGeometry;
@@ -150,13 +151,7 @@ TEST_P(GridKernelPath, PointsThatDoNotExistAndLocalUpdates) {
     if (!kernel::supported(path))
         GTEST_SKIP() << "this CPU (or build) has no " << kernel::name(path) << " kernel";
     // Weights (1, -1) in u: the denominator is exactly zero along u = 0.5.
-    Surface s;
-    s.type = SplineType::nurbs;
-    s.degree_u = s.degree_v = 1;
-    s.n_u = s.n_v = 2;
-    s.knots_u = s.knots_v = {0, 0, 1, 1};
-    s.points = {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}};
-    s.weights = {1, 1, -1, -1};
+    const Surface s = isoparm::testing::bilinear_patch(1, 1, -1, -1);
     for (bool normals : {false, true}) {
         const Grid g = run(s, 5, 13, path, false, normals);
         ASSERT_EQ(g.exists.size(), 65u);

@@ -5,6 +5,7 @@
 #include "core/geom/grid_tessellator.hpp"
 #include "core/geom/knots.hpp"
 #include "tests/support/random_geometry.hpp"
+#include "tests/support/small_surfaces.hpp"
 
 using namespace isoparm::geom;
 using isoparm::testing::RandomGeometry;
@@ -56,13 +57,7 @@ TEST(GridTessellator, FitsOnlyTheSameLayout) {
 
 TEST(GridTessellator, PointsThatDoNotExistLeaveGaps) {
     // Weights (1, -1) in u: the denominator vanishes along u = 0.5.
-    Surface s;
-    s.type = SplineType::nurbs;
-    s.degree_u = s.degree_v = 1;
-    s.n_u = s.n_v = 2;
-    s.knots_u = s.knots_v = {0, 0, 1, 1};
-    s.points = {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}};
-    s.weights = {1, 1, -1, -1};
+    Surface s = isoparm::testing::bilinear_patch(1, 1, -1, -1);
     const GridTessellator t(s, 3, 3);
     Mesh m;
     t.evaluate(s, m);

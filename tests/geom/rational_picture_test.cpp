@@ -13,24 +13,11 @@
 #include "core/geom/rational_picture.hpp"
 #include "core/geom/tessellate.hpp"
 #include "tests/support/random_geometry.hpp"
+#include "tests/support/small_surfaces.hpp"
 
 using namespace isoparm::geom;
 
-namespace {
-
-// Degree 1 x 1 on [0,1]^2 with the given corner weights (w00, w01, w10, w11).
-Surface bilinear(double w00, double w01, double w10, double w11) {
-    Surface s;
-    s.type = SplineType::rational_bezier;
-    s.degree_u = s.degree_v = 1;
-    s.n_u = s.n_v = 2;
-    s.knots_u = s.knots_v = bezier_knots(1);
-    s.points = {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 1}};
-    s.weights = {w00, w01, w10, w11};
-    return s;
-}
-
-} // namespace
+using isoparm::testing::bilinear_patch;
 
 TEST(RationalPicture, DenominatorIsTheWeightedBasisSum) {
     isoparm::testing::RandomGeometry g(41);
@@ -54,7 +41,7 @@ TEST(RationalPicture, DenominatorIsTheWeightedBasisSum) {
 
 TEST(RationalPicture, ZeroSetOfALinearDenominatorIsItsLine) {
     // w = 1 - 2u: the surface goes to infinity along u = 1/2.
-    const Surface s = bilinear(1, 1, -1, -1);
+    const Surface s = bilinear_patch(1, 1, -1, -1);
     const auto segments = denominator_zero_set(s, 16);
     ASSERT_FALSE(segments.empty());
     double v_lo = 1, v_hi = 0;
@@ -72,7 +59,7 @@ TEST(RationalPicture, ZeroSetOfALinearDenominatorIsItsLine) {
 TEST(RationalPicture, ZeroSetOfASaddleDenominatorIsItsHyperbola) {
     // Corner weights 1, -2, -2, 1: w = 1 - 3u - 3v + 6uv = 6 (u - 1/2)(v - 1/2) - 1/2, zero on
     // the hyperbola (u - 1/2)(v - 1/2) = 1/12, one branch near each of two corners.
-    const Surface s = bilinear(1, -2, -2, 1);
+    const Surface s = bilinear_patch(1, -2, -2, 1);
     const auto segments = denominator_zero_set(s, 40);
     ASSERT_GT(segments.size(), 40u);
     for (const ParamSegment& seg : segments)
@@ -102,7 +89,7 @@ TEST(RationalPicture, PositiveWeightsHaveNoZeroSetAndOneSign) {
     const Surface s = g.surface(3, 2, 6, 5, true);
     EXPECT_TRUE(denominator_zero_set(s, 32).empty());
     for (signed char c : denominator_signs(s, 16)) EXPECT_EQ(c, 1);
-    const Surface half = bilinear(1, 1, -1, -1);
+    const Surface half = bilinear_patch(1, 1, -1, -1);
     const auto signs = denominator_signs(half, 4); // u-major; w > 0 for u < 1/2
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j) EXPECT_EQ(signs[i * 4 + j], i < 2 ? 1 : -1);
@@ -132,7 +119,7 @@ TEST(RationalPicture, IsocurveIsTheSurfaceWithOneParameterHeld) {
 
 TEST(RationalPicture, IsocurveThroughAPointAtInfinityIsRefused) {
     // Weights 1 and -1 along u contract to 0 at u = 1/2 while w P does not.
-    const Surface s = bilinear(1, 1, -1, -1);
+    const Surface s = bilinear_patch(1, 1, -1, -1);
     EXPECT_FALSE(isocurve(s, Dir::u, 0.5));
     EXPECT_TRUE(isocurve(s, Dir::u, 0.25));
 }
