@@ -211,22 +211,20 @@ void draw_denominator(AppContext& ctx, const geom::Surface& s, const Rect& sq,
     const bool light = ctx.ui.presentation;
     auto px = [&](double u, double v) { return param_pixel(sq, dom, u, v); };
     const geom::ParamRect own = geom::domain(s);
-    {
-        DenominatorView& view = ctx.ui.denominator;
-        view.update(s);
-        const int n = DenominatorView::sign_cells;
-        const ImU32 negative = light ? IM_COL32(230, 60, 60, 70) : IM_COL32(230, 70, 70, 80);
-        const ImU32 zero = light ? IM_COL32(200, 0, 0, 255) : IM_COL32(255, 90, 90, 255);
-        const double du = (own.u.hi - own.u.lo) / n, dv = (own.v.hi - own.v.lo) / n;
-        for (int i = 0; i < n; ++i)
-            for (int j = 0; j < n; ++j)
-                if (view.signs()[static_cast<std::size_t>(i) * n + j] < 0)
-                    dl->AddRectFilled(px(own.u.lo + i * du, own.v.lo + (j + 1) * dv),
-                                      px(own.u.lo + (i + 1) * du, own.v.lo + j * dv), negative);
-        for (const geom::ParamSegment& seg : view.zero_set())
-            dl->AddLine(px(seg.a.x, seg.a.y), px(seg.b.x, seg.b.y), zero, 2.5f * k);
-        report_fact("tracing/zero_set_segments", static_cast<double>(view.zero_set().size()));
-    }
+    DenominatorView& view = ctx.ui.denominator;
+    view.update(s);
+    const int n = DenominatorView::sign_cells;
+    const ImU32 negative = light ? IM_COL32(230, 60, 60, 70) : IM_COL32(230, 70, 70, 80);
+    const ImU32 zero = light ? IM_COL32(200, 0, 0, 255) : IM_COL32(255, 90, 90, 255);
+    const double du = (own.u.hi - own.u.lo) / n, dv = (own.v.hi - own.v.lo) / n;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+            if (view.signs()[static_cast<std::size_t>(i) * n + j] < 0)
+                dl->AddRectFilled(px(own.u.lo + i * du, own.v.lo + (j + 1) * dv),
+                                  px(own.u.lo + (i + 1) * du, own.v.lo + j * dv), negative);
+    for (const geom::ParamSegment& seg : view.zero_set())
+        dl->AddLine(px(seg.a.x, seg.a.y), px(seg.b.x, seg.b.y), zero, 2.5f * k);
+    report_fact("tracing/zero_set_segments", static_cast<double>(view.zero_set().size()));
 }
 
 // Each weight as a label at its control point's Greville point (u_i*, v_j*), where that point
@@ -236,41 +234,38 @@ void draw_weight_labels(AppContext& ctx, const geom::Surface& s, const Rect& sq,
     const float k = ctx.ui.scale();
     const bool light = ctx.ui.presentation;
     auto px = [&](double u, double v) { return param_pixel(sq, dom, u, v); };
-    {
-        const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text);
-        const ImU32 warn = light ? IM_COL32(190, 0, 0, 255) : IM_COL32(255, 110, 110, 255);
-        const ImU32 back = light ? IM_COL32(255, 255, 255, 200) : IM_COL32(20, 22, 28, 190);
-        // Weights other than 1 first (they are what the lesson is about), then the rest where
-        // they do not cover a label already drawn: a dense net stays readable.
-        std::vector<ImVec4> taken; // drawn labels as (x0, y0, x1, y1)
-        int shown = 0;
-        for (const bool unusual : {true, false}) {
-            for (int i = 0; i < s.n_u; ++i) {
-                const double u = geom::greville_abscissa(s.knots_u, s.degree_u, i);
-                for (int j = 0; j < s.n_v; ++j) {
-                    const double w = s.weight(i, j);
-                    if ((w != 1) != unusual) continue;
-                    const double v = geom::greville_abscissa(s.knots_v, s.degree_v, j);
-                    const std::string label = short_number(w);
-                    const ImVec2 at = px(u, v), ts = ImGui::CalcTextSize(label.c_str());
-                    // Kept inside the square: corner labels would hang over its edge.
-                    const ImVec2 lo(std::clamp(at.x - ts.x / 2, sq.x, sq.x + sq.w - ts.x),
-                                    std::clamp(at.y - ts.y / 2, sq.y, sq.y + sq.h - ts.y));
-                    const ImVec4 box(lo.x - 1, lo.y, lo.x + ts.x + 1, lo.y + ts.y);
-                    const bool covers =
-                        std::any_of(taken.begin(), taken.end(), [&](const ImVec4& b) {
-                            return box.x < b.z && b.x < box.z && box.y < b.w && b.y < box.w;
-                        });
-                    if (covers) continue;
-                    taken.push_back(box);
-                    dl->AddRectFilled(ImVec2(box.x, box.y), ImVec2(box.z, box.w), back, 2 * k);
-                    dl->AddText(lo, w <= 0 ? warn : text, label.c_str());
-                    ++shown;
-                }
+    const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text);
+    const ImU32 warn = light ? IM_COL32(190, 0, 0, 255) : IM_COL32(255, 110, 110, 255);
+    const ImU32 back = light ? IM_COL32(255, 255, 255, 200) : IM_COL32(20, 22, 28, 190);
+    // Weights other than 1 first (they are what the lesson is about), then the rest where
+    // they do not cover a label already drawn: a dense net stays readable.
+    std::vector<ImVec4> taken; // drawn labels as (x0, y0, x1, y1)
+    int shown = 0;
+    for (const bool unusual : {true, false}) {
+        for (int i = 0; i < s.n_u; ++i) {
+            const double u = geom::greville_abscissa(s.knots_u, s.degree_u, i);
+            for (int j = 0; j < s.n_v; ++j) {
+                const double w = s.weight(i, j);
+                if ((w != 1) != unusual) continue;
+                const double v = geom::greville_abscissa(s.knots_v, s.degree_v, j);
+                const std::string label = short_number(w);
+                const ImVec2 at = px(u, v), ts = ImGui::CalcTextSize(label.c_str());
+                // Kept inside the square: corner labels would hang over its edge.
+                const ImVec2 lo(std::clamp(at.x - ts.x / 2, sq.x, sq.x + sq.w - ts.x),
+                                std::clamp(at.y - ts.y / 2, sq.y, sq.y + sq.h - ts.y));
+                const ImVec4 box(lo.x - 1, lo.y, lo.x + ts.x + 1, lo.y + ts.y);
+                const bool covers = std::any_of(taken.begin(), taken.end(), [&](const ImVec4& b) {
+                    return box.x < b.z && b.x < box.z && box.y < b.w && b.y < box.w;
+                });
+                if (covers) continue;
+                taken.push_back(box);
+                dl->AddRectFilled(ImVec2(box.x, box.y), ImVec2(box.z, box.w), back, 2 * k);
+                dl->AddText(lo, w <= 0 ? warn : text, label.c_str());
+                ++shown;
             }
         }
-        report_fact("tracing/weight_labels", shown);
     }
+    report_fact("tracing/weight_labels", shown);
 }
 
 // Under the square for rational types: the denominator picture and the weight labels.
