@@ -4,6 +4,7 @@
 #include "core/doc/commands.hpp"
 #include "core/doc/commands_curve.hpp"
 #include "core/doc/commands_multires.hpp"
+#include "core/doc/commands_triangle.hpp"
 
 namespace isoparm::doc {
 
@@ -75,6 +76,7 @@ struct Build {
         return convert_object(s.id, s.to, s.reset_weights);
     }
     std::unique_ptr<Command> operator()(MultiresEditSpec& s) { return multires_edit(s); }
+    std::unique_ptr<Command> operator()(SplitTriangleSpec& s) { return split_triangle(s.id, s.at); }
 };
 
 } // namespace

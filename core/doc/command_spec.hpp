@@ -157,6 +157,12 @@ struct MultiresEditSpec {
     std::optional<double> detail_scale;
 };
 
+// A triangular patch split into three at the barycentric point `at` (commands_triangle.hpp).
+struct SplitTriangleSpec {
+    std::uint64_t id = 0;
+    geom::Barycentric at{};
+};
+
 // The order of the alternatives is the order of command_names below.
 using CommandSpec =
     std::variant<AddObjectSpec, RemoveObjectSpec, RenameObjectSpec, SetVisibleSpec, EditShapeSpec,
@@ -164,7 +170,8 @@ using CommandSpec =
                  SplitSpec, ConformBordersSpec, SetColorsSpec, InsertCurvePointSpec,
                  DeleteCurvePointSpec, MoveCurvePointSpec, SetCurveDegreeSpec, SetCurveKnotModeSpec,
                  SetCurvePlaneSpec, MakeCompatibleSpec, RemoveKnotSpec, ReduceDegreeSpec,
-                 SplitKnotSpec, CloseSpec, ConvertSpec, AddObjectsSpec, MultiresEditSpec>;
+                 SplitKnotSpec, CloseSpec, ConvertSpec, AddObjectsSpec, MultiresEditSpec,
+                 SplitTriangleSpec>;
 
 // The command's name as scripts spell it ("edit_point"), indexed like CommandSpec.
 inline constexpr const char* command_names[] = {
@@ -195,6 +202,7 @@ inline constexpr const char* command_names[] = {
     "convert",
     "add_objects",
     "multires_edit",
+    "split_triangle",
 };
 static_assert(std::size(command_names) == std::variant_size_v<CommandSpec>);
 

@@ -26,10 +26,7 @@ bool selection_valid(const Document& doc, const Selection& sel) {
     const Object* o = doc.find(sel.object);
     if (!o) return false;
     if (!sel.has_point()) return true;
-    if (auto* s = std::get_if<SurfaceObject>(&o->shape))
-        return sel.i < s->surface.n_u && sel.j >= 0 && sel.j < s->surface.n_v;
-    if (auto* c = std::get_if<CurveObject>(&o->shape)) return sel.i < c->curve.count() && sel.j < 0;
-    return false;
+    return has_control_point(o->shape, sel.i, sel.j);
 }
 
 // Restores the selection a command found, unless the user selected something else since
@@ -44,14 +41,16 @@ void restore_selection(Document& doc, const Selection& before, const Selection& 
     }
 }
 
-// The control point (i, j) of a surface or curve object, checked (`schema`, "/i", "/j").
+// The control point (i, j) of a surface, curve or triangle (b_ijk, k = n - i - j), checked
+// (`schema`, "/i", "/j").
 struct PointRef {
-    geom::Surface* surface = nullptr;
-    geom::Curve* curve = nullptr;
+    std::span<glm::dvec3> points;
+    std::span<double> weights;
+    bool rational = false;
+    bool curve = false;
     std::size_t index = 0;
-    glm::dvec3& position() { return surface ? surface->points[index] : curve->points[index]; }
-    double& weight() { return surface ? surface->weights[index] : curve->weights[index]; }
-    geom::SplineType type() const { return surface ? surface->type : curve->type; }
+    glm::dvec3& position() { return points[index]; }
+    double& weight() { return weights[index]; }
 };
 
 geom::Expected<PointRef> control_point(Object& obj, int i, int j) {
@@ -65,7 +64,8 @@ geom::Expected<PointRef> control_point(Object& obj, int i, int j) {
         geom::Surface& g = s->surface;
         if (i < 0 || i >= g.n_u) return out_of_range("i", i, g.n_u, "/i");
         if (j < 0 || j >= g.n_v) return out_of_range("j", j, g.n_v, "/j");
-        return PointRef{&g, nullptr, static_cast<std::size_t>(g.index(i, j))};
+        return PointRef{g.points, g.weights, geom::is_rational(g.type), false,
+                        static_cast<std::size_t>(g.index(i, j))};
     }
     if (auto* c = std::get_if<CurveObject>(&obj.shape)) {
         geom::Curve& g = c->curve;
@@ -75,11 +75,29 @@ geom::Expected<PointRef> control_point(Object& obj, int i, int j) {
                               "a curve's control points have one index; j must be -1 (or 0), got " +
                                   std::to_string(j),
                               "/j");
-        return PointRef{nullptr, &g, static_cast<std::size_t>(i)};
+        return PointRef{g.points, g.weights, geom::is_rational(g.type), true,
+                        static_cast<std::size_t>(i)};
+    }
+    if (geom::TrianglePatch* t = obj.triangle()) {
+        const int n = t->degree;
+        if (i < 0 || i > n) return out_of_range("i", i, n + 1, "/i");
+        if (j < 0 || j > n - i)
+            return make_error(ErrorCode::schema,
+                              "control point b_ijk of a degree " + std::to_string(n) +
+                                  " triangle needs 0 <= j <= n - i = " + std::to_string(n - i) +
+                                  ", got j = " + std::to_string(j),
+                              "/j");
+        return PointRef{t->points, t->weights, t->rational, false,
+                        static_cast<std::size_t>(geom::TrianglePatch::index(n, i, j))};
     }
     return make_error(ErrorCode::schema,
                       "object '" + obj.name + "' is an implicit surface; it has no control points",
                       "/id");
+}
+
+geom::SplineType surface_or_curve_type(const Object& obj) {
+    if (const geom::Surface* s = obj.surface()) return s->type;
+    return obj.curve()->type;
 }
 
 std::string vec_text(const glm::dvec3& p) {
@@ -263,7 +281,8 @@ public:
         if (!found) return found.error();
         auto ref = validate(**found);
         if (!ref) return ref.error();
-        curve_ = ref->curve != nullptr;
+        curve_ = ref->curve;
+        triangle_degree_ = (**found).triangle() ? (**found).triangle()->degree : -1;
         old_position_ = ref->position();
         old_weight_ = ref->weight();
         if (spec_.position) ref->position() = *spec_.position;
@@ -277,7 +296,7 @@ public:
             twin->weight() = ref->weight();
         }
         // Subpatches: the neighbours follow so the borders stay closed / smooth.
-        if (!curve_) neighbours_.follow(doc, spec_.id, spec_.i, spec_.j);
+        if (!curve_ && triangle_degree_ < 0) neighbours_.follow(doc, spec_.id, spec_.i, spec_.j);
         return geom::Ok{};
     }
 
@@ -311,10 +330,16 @@ public:
 
     std::string label() const override {
         const int j = curve_ ? -1 : spec_.j;
-        if (spec_.position && spec_.weight) return "Edit " + detail::point_label('P', spec_.i, j);
-        if (spec_.position) return "Move " + detail::point_label('P', spec_.i, j);
-        return "Set weight " + detail::point_label('w', spec_.i, j) + " = " +
-               geom::format_number(spec_.weight.value_or(1.0));
+        const bool tri = triangle_degree_ >= 0;
+        const std::string point =
+            tri ? detail::triangle_point_label('b', triangle_degree_, spec_.i, spec_.j)
+                : detail::point_label('P', spec_.i, j);
+        if (spec_.position && spec_.weight) return "Edit " + point;
+        if (spec_.position) return "Move " + point;
+        const std::string weight =
+            tri ? detail::triangle_point_label('w', triangle_degree_, spec_.i, spec_.j)
+                : detail::point_label('w', spec_.i, j);
+        return "Set weight " + weight + " = " + geom::format_number(spec_.weight.value_or(1.0));
     }
 
 private:
@@ -335,22 +360,28 @@ private:
                                       "/position/" + std::to_string(a));
         if (spec_.weight) {
             const double w = *spec_.weight;
-            const bool curve = ref->curve != nullptr;
-            const std::string name = detail::point_label('w', spec_.i, curve ? -1 : spec_.j);
+            const bool curve = ref->curve;
+            const geom::TrianglePatch* tri = obj.triangle();
+            const std::string name =
+                tri ? detail::triangle_point_label('w', tri->degree, spec_.i, spec_.j)
+                    : detail::point_label('w', spec_.i, curve ? -1 : spec_.j);
             if (!std::isfinite(w))
                 return make_error(ErrorCode::weights,
                                   "weight " + name + " must be a finite number, got " +
                                       geom::format_number(w),
                                   "/weight");
             // The type tag is enforced: a non-rational object keeps unit weights.
-            if (!geom::is_rational(ref->type()) && w != 1.0)
+            if (!ref->rational && w != 1.0) {
+                const std::string what =
+                    tri ? std::string("triangle_bezier has unit weights; make it rational "
+                                      "(rational_triangle_bezier)")
+                        : std::string(geom::spline_type_name(surface_or_curve_type(obj))) + " " +
+                              (curve ? "curve" : "surface") +
+                              " has unit weights; make it rational (nurbs or rational_bezier)";
                 return make_error(ErrorCode::weights,
-                                  std::string("a ") + geom::spline_type_name(ref->type()) + " " +
-                                      (curve ? "curve" : "surface") +
-                                      " has unit weights; make it rational (nurbs or "
-                                      "rational_bezier) to set " +
-                                      name + " = " + geom::format_number(w),
+                                  "a " + what + " to set " + name + " = " + geom::format_number(w),
                                   "/weight");
+            }
         }
         return ref;
     }
@@ -372,6 +403,7 @@ private:
     glm::dvec3 old_position_{0};
     double old_weight_ = 1;
     bool curve_ = false;
+    int triangle_degree_ = -1; // the triangle's degree n, or -1 for a surface or curve
     NeighbourEdits neighbours_;
 };
 

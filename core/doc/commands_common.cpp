@@ -24,9 +24,7 @@ geom::Expected<const Object*> find_object(const Document& doc, std::uint64_t id)
 }
 
 const char* kind_name(const Shape& shape) {
-    if (std::holds_alternative<SurfaceObject>(shape)) return "surface";
-    if (std::holds_alternative<CurveObject>(shape)) return "curve";
-    return "implicit surface";
+    return doc::kind_name(kind_of(shape));
 }
 
 namespace {
@@ -184,6 +182,18 @@ geom::Status validate_shape(const Shape& shape) {
             return st;
         return geom::validate_curve(g);
     }
+    if (const geom::TrianglePatch* t = triangle_of(shape)) {
+        // Non-rational triangles keep unit weights, as the type tag says of surfaces.
+        if (!t->rational)
+            for (std::size_t k = 0; k < t->weights.size(); ++k)
+                if (t->weights[k] != 1.0)
+                    return make_error(ErrorCode::weights,
+                                      "a triangle_bezier has unit weights; weight " +
+                                          std::to_string(k) + " is " +
+                                          geom::format_number(t->weights[k]),
+                                      "/weights/" + std::to_string(k));
+        return geom::validate_triangle(*t);
+    }
     return validate_implicit(std::get<ImplicitObject>(shape));
 }
 
@@ -203,6 +213,13 @@ std::string point_label(char letter, int i, int j) {
     return s + std::to_string(i) + "," + std::to_string(j);
 }
 
+std::string triangle_point_label(char letter, int n, int i, int j) {
+    const int k = n - i - j;
+    std::string s(1, letter);
+    if (n < 10) return s + std::to_string(i) + std::to_string(j) + std::to_string(k);
+    return s + std::to_string(i) + "," + std::to_string(j) + "," + std::to_string(k);
+}
+
 std::size_t shape_bytes(const Shape& shape) {
     std::size_t bytes = sizeof(Shape);
     if (auto* s = std::get_if<SurfaceObject>(&shape)) {
@@ -213,6 +230,8 @@ std::size_t shape_bytes(const Shape& shape) {
         const geom::Curve& g = c->curve;
         bytes += (g.knots.size() + g.weights.size()) * sizeof(double) +
                  g.points.size() * sizeof(glm::dvec3);
+    } else if (const geom::TrianglePatch* t = triangle_of(shape)) {
+        bytes += t->weights.size() * sizeof(double) + t->points.size() * sizeof(glm::dvec3);
     } else {
         const auto& f = std::get<ImplicitObject>(shape);
         bytes += f.expression.size() + f.parameter_values.size() * sizeof(double);

@@ -13,7 +13,7 @@ namespace isoparm::doc::detail {
 geom::Expected<Object*> find_object(Document& doc, std::uint64_t id);
 geom::Expected<const Object*> find_object(const Document& doc, std::uint64_t id);
 
-// "surface", "curve", "implicit surface": for messages.
+// "surface", "curve", "implicit surface", "triangular patch": for messages.
 const char* kind_name(const Shape& shape);
 
 // Full validation of a shape the document will hold: geometry (degree, knots, weights, the
@@ -30,6 +30,8 @@ geom::Status check_size(const Shape& shape, const std::string& path);
 
 // Labels: "P23" (surface, both indices < 10), "P12,3" (otherwise), "P4" (curve, j < 0).
 std::string point_label(char letter, int i, int j);
+// Triangles: "b210" (every index < 10), "b12,3,0" otherwise; k = n - i - j.
+std::string triangle_point_label(char letter, int n, int i, int j);
 
 // Approximate heap bytes of a shape, for the history's memory bound.
 std::size_t shape_bytes(const Shape& shape);

@@ -27,6 +27,14 @@ template <class S> auto* weights_of(S& shape) {
     return c ? &c->curve.weights : nullptr;
 }
 
+// Why an object of this kind cannot be converted.
+std::string no_spline_type(ObjectKind kind) {
+    if (kind == ObjectKind::triangle)
+        return "a triangular Bezier patch: it has no tensor-product spline type (its weights are "
+               "edited as they are)";
+    return "an implicit surface: it has no spline type";
+}
+
 std::optional<SplineType> type_of(const Shape& shape) {
     if (auto* s = std::get_if<SurfaceObject>(&shape)) return s->surface.type;
     if (auto* c = std::get_if<CurveObject>(&shape)) return c->curve.type;
@@ -36,10 +44,9 @@ std::optional<SplineType> type_of(const Shape& shape) {
 // The pieces of the object's shape as `to` (one, or its Bezier pieces); weights set to 1
 // first when asked. Errors at the command's members.
 geom::Expected<std::vector<Shape>> converted(const Object& obj, SplineType to, bool reset) {
-    if (obj.kind() == ObjectKind::implicit)
+    if (obj.kind() == ObjectKind::implicit || obj.kind() == ObjectKind::triangle)
         return make_error(ErrorCode::schema,
-                          "object '" + obj.name + "' is an implicit surface: it has no spline type",
-                          "/id");
+                          "object '" + obj.name + "' is " + no_spline_type(obj.kind()), "/id");
     Shape shape = obj.shape;
     if (auto* w = weights_of(shape); w && reset) std::fill(w->begin(), w->end(), 1.0);
     std::vector<Shape> out;
@@ -162,9 +169,9 @@ geom::Expected<ConversionLosses> conversion_losses(const Object& object, SplineT
     ConversionLosses out;
     const std::vector<double>* w = weights_of(object.shape);
     if (!w)
-        return make_error(
-            ErrorCode::schema,
-            "object '" + object.name + "' is an implicit surface: it has no spline type", "/id");
+        return make_error(ErrorCode::schema,
+                          "object '" + object.name + "' is " + no_spline_type(object.kind()),
+                          "/id");
     out.weights_differ = !geom::is_rational(to) && !all_weights_equal(*w);
     auto pieces = converted(object, to, out.weights_differ);
     if (!pieces) return pieces.error();

@@ -9,6 +9,7 @@
 
 #include "core/doc/commands.hpp"
 #include "core/doc/commands_common.hpp"
+#include "core/doc/commands_triangle.hpp"
 #include "core/doc/patches.hpp"
 #include "core/doc/refinement_edit.hpp"
 #include "core/doc/shape_edit.hpp"
@@ -309,10 +310,25 @@ std::unique_ptr<Command> elevate_degree(std::uint64_t id, geom::Dir dir, int tim
         return geom::elevate_degree_within_limits(s, dir, times);
     };
     r.curve = [=](const geom::Curve& c) { return geom::elevate_degree_within_limits(c, times); };
+    // A triangle has one degree: the direction means nothing to it (Farin 17.6).
+    r.triangle = [=](const geom::TrianglePatch& t) -> geom::Expected<geom::TrianglePatch> {
+        if (times < 1)
+            return geom::make_error(geom::ErrorCode::schema,
+                                    "times must be at least 1, got " + std::to_string(times),
+                                    "/times");
+        if (times > geom::max_triangle_degree - t.degree)
+            return geom::make_error(geom::ErrorCode::limit,
+                                    "elevating a degree-" + std::to_string(t.degree) +
+                                        " triangle " + std::to_string(times) +
+                                        " times is above the cap of degree " +
+                                        std::to_string(geom::max_triangle_degree),
+                                    "/times");
+        return geom::elevate_triangle(t, times);
+    };
     r.label = [=](const Shape& before, const Shape&) {
-        const bool curve = is_curve(before);
+        const bool one_degree = is_curve(before) || kind_of(before) == ObjectKind::triangle;
         std::string s =
-            curve ? "Elevate degree" : std::string("Elevate degree in ") + dir_name(dir);
+            one_degree ? "Elevate degree" : std::string("Elevate degree in ") + dir_name(dir);
         if (times > 1) s += " by " + std::to_string(times);
         return s;
     };

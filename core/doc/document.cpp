@@ -17,7 +17,8 @@ ObjectKind kind_of(const Shape& shape) {
 }
 static_assert(std::is_same_v<std::variant_alternative_t<0, Shape>, SurfaceObject> &&
               std::is_same_v<std::variant_alternative_t<1, Shape>, CurveObject> &&
-              std::is_same_v<std::variant_alternative_t<2, Shape>, ImplicitObject>);
+              std::is_same_v<std::variant_alternative_t<2, Shape>, ImplicitObject> &&
+              std::is_same_v<std::variant_alternative_t<3, Shape>, TriangleObject>);
 
 geom::Surface* surface_of(Shape& shape) {
     auto* s = std::get_if<SurfaceObject>(&shape);
@@ -47,15 +48,33 @@ ImplicitObject* implicit_of(Shape& shape) {
 const ImplicitObject* implicit_of(const Shape& shape) {
     return std::get_if<ImplicitObject>(&shape);
 }
+geom::TrianglePatch* triangle_of(Shape& shape) {
+    auto* t = std::get_if<TriangleObject>(&shape);
+    return t ? &t->patch : nullptr;
+}
+const geom::TrianglePatch* triangle_of(const Shape& shape) {
+    const auto* t = std::get_if<TriangleObject>(&shape);
+    return t ? &t->patch : nullptr;
+}
 std::span<glm::dvec3> control_points_of(Shape& shape) {
     if (geom::Surface* s = surface_of(shape)) return s->points;
     if (geom::Curve* c = curve_of(shape)) return c->points;
+    if (geom::TrianglePatch* t = triangle_of(shape)) return t->points;
     return {};
 }
 std::span<const glm::dvec3> control_points_of(const Shape& shape) {
     if (const geom::Surface* s = surface_of(shape)) return s->points;
     if (const geom::Curve* c = curve_of(shape)) return c->points;
+    if (const geom::TrianglePatch* t = triangle_of(shape)) return t->points;
     return {};
+}
+
+bool has_control_point(const Shape& shape, int i, int j) {
+    if (i < 0) return false;
+    if (const geom::Surface* s = surface_of(shape)) return i < s->n_u && j >= 0 && j < s->n_v;
+    if (const geom::Curve* c = curve_of(shape)) return i < c->count() && j < 0;
+    if (const geom::TrianglePatch* t = triangle_of(shape)) return j >= 0 && i + j <= t->degree;
+    return false;
 }
 
 Object* Document::find(std::uint64_t id) {
@@ -136,6 +155,12 @@ bool same_shape(const Shape& a, const Shape& b) {
     }
     case ObjectKind::implicit:
         return same_implicit(*implicit_of(a), *implicit_of(b));
+    case ObjectKind::triangle: {
+        const geom::TrianglePatch& t = *triangle_of(a);
+        const geom::TrianglePatch& u = *triangle_of(b);
+        return t.rational == u.rational && t.degree == u.degree && same_bits(t.points, u.points) &&
+               same_bits(t.weights, u.weights);
+    }
     }
     return false;
 }
@@ -165,7 +190,10 @@ bool same_geometry(const Document& a, const Document& b) {
 
 bool same_view(const ViewState& a, const ViewState& b) {
     return a.selection == b.selection && same_bits(a.indicator.x, b.indicator.x) &&
-           same_bits(a.indicator.y, b.indicator.y) && a.display == b.display;
+           same_bits(a.indicator.y, b.indicator.y) &&
+           same_bits(a.barycentric[0], b.barycentric[0]) &&
+           same_bits(a.barycentric[1], b.barycentric[1]) &&
+           same_bits(a.barycentric[2], b.barycentric[2]) && a.display == b.display;
 }
 
 bool same_document(const Document& a, const Document& b) {

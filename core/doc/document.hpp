@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/geom/status.hpp"
+#include "core/geom/triangle.hpp"
 #include "core/geom/types.hpp"
 
 namespace isoparm::doc {
@@ -66,16 +67,23 @@ struct ImplicitObject {
     double cell = 0.05;
 };
 
-using Shape = std::variant<SurfaceObject, CurveObject, ImplicitObject>;
+// A triangular Bezier patch (the paper's future work; Farin ch. 17). Its control point b_ijk is
+// addressed as (i, j), k = n - i - j; the selection uses the same pair.
+struct TriangleObject {
+    geom::TrianglePatch patch;
+};
+
+using Shape = std::variant<SurfaceObject, CurveObject, ImplicitObject, TriangleObject>;
 
 // What kind of object a shape is, and its parts: callers ask these instead of testing the
 // variant's alternatives themselves. The accessors return nullptr for another kind.
-enum class ObjectKind { surface, curve, implicit };
+enum class ObjectKind { surface, curve, implicit, triangle };
 // Scene files write "kind": "implicit"; messages and panels say "implicit surface".
 inline constexpr geom::EnumName<ObjectKind> object_kind_names[] = {
     {ObjectKind::surface, "surface"},
     {ObjectKind::curve, "curve"},
     {ObjectKind::implicit, "implicit", "implicit surface"},
+    {ObjectKind::triangle, "triangle", "triangular patch"},
 };
 static_assert(geom::in_declaration_order(object_kind_names));
 constexpr std::span<const geom::EnumName<ObjectKind>> enum_names(ObjectKind) {
@@ -94,9 +102,15 @@ geom::Curve* curve_of(Shape& shape);
 const geom::Curve* curve_of(const Shape& shape);
 ImplicitObject* implicit_of(Shape& shape);
 const ImplicitObject* implicit_of(const Shape& shape);
-// The control points of a surface (row-major) or a curve; none for an implicit surface.
+geom::TrianglePatch* triangle_of(Shape& shape);
+const geom::TrianglePatch* triangle_of(const Shape& shape);
+// The control points of a surface (row-major), a curve or a triangle (TrianglePatch's order);
+// none for an implicit surface.
 std::span<glm::dvec3> control_points_of(Shape& shape);
 std::span<const glm::dvec3> control_points_of(const Shape& shape);
+// Whether the shape has control point (i, j) as a selection names it: a surface's P_ij, a
+// curve's P_i (j = -1), a triangle's b_ijk (i, j >= 0, i + j <= n).
+bool has_control_point(const Shape& shape, int i, int j);
 
 struct Object {
     std::uint64_t id = 0; // stable across undo/redo; assigned by the document
@@ -117,6 +131,8 @@ struct Object {
     const geom::Curve* curve() const { return curve_of(shape); }
     ImplicitObject* implicit() { return implicit_of(shape); }
     const ImplicitObject* implicit() const { return implicit_of(shape); }
+    geom::TrianglePatch* triangle() { return triangle_of(shape); }
+    const geom::TrianglePatch* triangle() const { return triangle_of(shape); }
 };
 
 // Whether moving a control point of a subpatch also moves its neighbours' so the border stays
@@ -201,7 +217,7 @@ struct DisplaySettings {
 
 struct Selection {
     std::uint64_t object = 0; // object id; 0 = none
-    int i = -1, j = -1;       // control point (surface: P_ij; curve: P_i with j = -1)
+    int i = -1, j = -1; // control point (surface: P_ij; curve: P_i with j = -1; triangle: b_ijk)
     bool has_point() const { return i >= 0; }
     bool operator==(const Selection&) const = default;
 };
@@ -211,6 +227,9 @@ struct Selection {
 struct ViewState {
     Selection selection;
     glm::dvec2 indicator{0.5, 0.5}; // (u, v) normalized to [0,1]^2 over the current domain
+    // A triangle's indicator (r, s, t), barycentric: its own, since the square's (u, v) has
+    // no meaning on a triangle and switching objects should keep both.
+    geom::Barycentric barycentric{1.0 / 3, 1.0 / 3, 1.0 / 3};
     DisplaySettings display;
 };
 

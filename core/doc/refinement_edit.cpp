@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "core/doc/commands_common.hpp"
+#include "core/doc/commands_triangle.hpp"
 #include "core/doc/shape_edit.hpp"
 #include "core/geom/knots.hpp"
 
@@ -63,6 +65,11 @@ geom::Status check_refinable(const Object& obj, Dir dir, const char* what) {
                           "object '" + obj.name + "' is an implicit surface; " + what +
                               " needs a curve or a surface",
                           "/id");
+    if (obj.kind() == ObjectKind::triangle)
+        return make_error(ErrorCode::schema,
+                          "object '" + obj.name + "' is a triangular patch, which has no knots; " +
+                              what + " needs a curve or a surface",
+                          "/id");
     if (obj.kind() == ObjectKind::curve && dir != Dir::u)
         return make_error(ErrorCode::schema, "a curve has only one direction (u)", "/direction");
     return geom::Ok{};
@@ -79,9 +86,22 @@ const char* dir_name(Dir d) {
     return d == Dir::u ? "u" : "v";
 }
 
+// A triangle's selected control point in the refined net: the one nearest in the domain.
+Selection same_triangle_point(Selection sel, std::uint64_t id, const Shape& from, const Shape& to) {
+    if (sel.object != id || !sel.has_point()) return sel;
+    const int n = triangle_of(from)->degree, m = triangle_of(to)->degree;
+    std::tie(sel.i, sel.j) = nearest_control_point(m, control_point_domain(n, sel.i, sel.j));
+    return sel;
+}
+
 std::unique_ptr<Command> refinement_command(std::uint64_t id, CommandSpec spec, Refinement r) {
     ShapeEditRule rule;
     rule.make = [r](const Object& obj) -> geom::Expected<Shape> {
+        if (const geom::TrianglePatch* t = obj.triangle(); t && r.triangle) {
+            auto refined = r.triangle(*t);
+            if (!refined) return refined.error();
+            return Shape{TriangleObject{std::move(refined).value()}};
+        }
         if (auto st = check_refinable(obj, r.dir, r.what); !st) return st.error();
         if (const geom::Surface* s = obj.surface()) {
             auto refined = r.surface(*s);
@@ -103,12 +123,14 @@ std::unique_ptr<Command> refinement_command(std::uint64_t id, CommandSpec spec, 
     };
     rule.forward = [id, r](const Selection& sel, const Shape& from, const Shape& to) {
         Selection out = sel;
+        if (kind_of(from) == ObjectKind::triangle) return same_triangle_point(out, id, from, to);
         if (int* idx = selected_index(out, id, is_curve(from), r.dir))
             *idx = r.forward(line_of(from, r.dir), line_of(to, r.dir), *idx);
         return out;
     };
     rule.backward = [id, r](const Selection& sel, const Shape& from, const Shape& to) {
         Selection out = sel;
+        if (kind_of(from) == ObjectKind::triangle) return same_triangle_point(out, id, from, to);
         if (int* idx = selected_index(out, id, is_curve(from), r.dir))
             *idx = r.backward(line_of(to, r.dir), line_of(from, r.dir), *idx);
         return out;

@@ -33,7 +33,8 @@ int* selected_index(Selection& sel, std::uint64_t id, bool curve, geom::Dir dir)
 bool is_curve(const Shape& shape);
 const char* dir_name(geom::Dir d);
 
-// The object has knots (not an implicit), and a curve is edited along its only direction.
+// The object has knots (not an implicit or a triangle), and a curve is edited along its only
+// direction.
 geom::Status check_refinable(const Object& obj, geom::Dir dir, const char* what);
 geom::Expected<Object*> refinable(Document& doc, std::uint64_t id, geom::Dir dir, const char* what);
 
@@ -45,6 +46,9 @@ struct Refinement {
     const char* what = "";
     std::function<geom::Expected<geom::Surface>(const geom::Surface&)> surface;
     std::function<geom::Expected<geom::Curve>(const geom::Curve&)> curve;
+    // Triangular patches, where the edit has a meaning for them (degree elevation); without it
+    // a triangle is refused (check_refinable).
+    std::function<geom::Expected<geom::TrianglePatch>(const geom::TrianglePatch&)> triangle;
     // A curve's knot mode afterwards: custom (the refined knots are the curve's own) unless
     // the edit says otherwise (closing a curve makes it closed).
     CurveKnotMode curve_mode = CurveKnotMode::custom;

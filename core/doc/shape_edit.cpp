@@ -23,12 +23,7 @@ std::optional<geom::SplineType> spline_type(const Shape& shape) {
 // A selected control point of `shape`'s object that the shape does not have is dropped.
 void drop_missing_point(Selection& sel, std::uint64_t id, const Shape& shape) {
     if (sel.object != id || !sel.has_point()) return;
-    bool valid = false;
-    if (const geom::Surface* s = surface_of(shape))
-        valid = sel.i < s->n_u && sel.j >= 0 && sel.j < s->n_v;
-    else if (const geom::Curve* c = curve_of(shape))
-        valid = sel.i < c->count() && sel.j < 0;
-    if (!valid) sel.i = sel.j = -1;
+    if (!has_control_point(shape, sel.i, sel.j)) sel.i = sel.j = -1;
 }
 
 class ShapeEdit final : public Command {

@@ -23,6 +23,20 @@ constexpr auto max_id = static_cast<std::int64_t>(max_object_id);
 
 // Reads a command's members, keeping the first error: after one, every read answers a default
 // and `error` holds the refusal.
+// [r, s, t] as numbers; whether it lies in the triangle is the command's check.
+Expected<geom::Barycentric> triangle_param_from_json(const json& v, const std::string& at) {
+    if (!v.is_array() || v.size() != 3)
+        return schema_error("a triangle parameter is [r, s, t]", at);
+    geom::Barycentric p{};
+    for (std::size_t k = 0; k < 3; ++k) {
+        Expected<double> x =
+            read_finite(v[k], at + "/" + std::to_string(k), "a barycentric coordinate");
+        if (!x) return x.error();
+        p[k] = *x;
+    }
+    return p;
+}
+
 class Members {
 public:
     Members(const json& j, std::string at) : j_(j), at_(std::move(at)) {}
@@ -215,6 +229,9 @@ json to_json(const ElevateDegreeSpec& s) {
 json to_json(const SplitSpec& s) {
     return {{"id", s.id}, {"direction", geom::name_of(s.dir)}, {"param", s.t}};
 }
+json to_json(const SplitTriangleSpec& s) {
+    return {{"id", s.id}, {"param", {s.at[0], s.at[1], s.at[2]}}};
+}
 json to_json(const ConformBordersSpec& s) {
     return {{"group", s.group}};
 }
@@ -304,6 +321,7 @@ const std::initializer_list<std::string_view> command_members[] = {
     {"objects", "label"},                              // add_objects
     // multires_edit
     {"id", "level", "level_v", "i", "j", "position", "detail_scale"},
+    {"id", "param"}, // split_triangle
 };
 static_assert(std::size(command_members) == std::size(command_names));
 
@@ -430,6 +448,9 @@ CommandSpec read_spec(std::size_t index, Members& m) {
         s.detail_scale = m.optional_number("detail_scale");
         return s;
     }
+    case 27:
+        return SplitTriangleSpec{m.id("id"),
+                                 m.read<geom::Barycentric>("param", triangle_param_from_json)};
     case 25:
         return AddObjectsSpec{m.read<std::vector<Object>>("objects", objects_from_json),
                               m.text("label", "")};

@@ -13,6 +13,7 @@
 #include "core/geom/implicit/expression.hpp"
 #include "core/geom/implicit/polygonize.hpp"
 #include "core/geom/tessellate.hpp"
+#include "core/geom/triangle.hpp"
 
 namespace isoparm::scene {
 
@@ -60,6 +61,12 @@ geom::Expected<ExportResult> exact(const std::vector<const doc::Object*>& object
             r.skipped.push_back(label(*o) +
                                 ": an implicit surface has no exact form (export a mesh: STL, "
                                 "PLY, glTF or OBJ mesh)");
+            continue;
+        }
+        if (o->triangle()) {
+            r.skipped.push_back(label(*o) +
+                                ": IGES, STEP and OBJ free-form have no triangular Bezier patch "
+                                "(export a mesh: STL, PLY, glTF or OBJ mesh)");
             continue;
         }
         exchange::ExactShape shape =
@@ -192,6 +199,9 @@ geom::Expected<ExportResult> export_document(const std::vector<const doc::Object
                 continue;
             }
             mesh = std::move(*m);
+        } else if (const geom::TrianglePatch* t = o->triangle()) {
+            // `samples` points along each edge: (samples - 1)^2 triangles.
+            mesh = geom::tessellate_triangle(*t, options.samples - 1);
         } else {
             mesh = geom::tessellate(*o->surface(), options.samples, options.samples);
         }

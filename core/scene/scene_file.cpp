@@ -46,11 +46,11 @@ void write_string(std::string& out, const std::string& s) {
 }
 
 // Members in the order a reader looks for them; the rest alphabetically after.
-constexpr std::array<std::string_view, 25> key_order = {
-    "format",    "version",   "id",         "name",       "kind",  "visible", "plane",
-    "knot_mode", "surface",   "curve",      "implicit",   "type",  "degree",  "knots",
-    "points",    "weights",   "expression", "parameters", "value", "bounds",  "cell",
-    "objects",   "selection", "indicator",  "display"};
+constexpr std::array<std::string_view, 27> key_order = {
+    "format",    "version", "id",        "name",       "kind",        "visible", "plane",
+    "knot_mode", "surface", "curve",     "implicit",   "triangle",    "type",    "degree",
+    "knots",     "points",  "weights",   "expression", "parameters",  "value",   "bounds",
+    "cell",      "objects", "selection", "indicator",  "barycentric", "display"};
 
 int key_rank(const std::string& k) {
     for (std::size_t r = 0; r < key_order.size(); ++r)

@@ -168,15 +168,15 @@ Expected<ObjectKind> read_kind(const json& j, const std::string& at) {
     if (!kind) return kind.error();
     const std::optional<ObjectKind> named = geom::parse_name<ObjectKind>(*kind);
     if (!named)
-        return schema_error("kind must be surface, curve or implicit, got '" + *kind + "'",
-                            at + "/kind");
+        return schema_error(
+            "kind must be surface, curve, implicit or triangle, got '" + *kind + "'", at + "/kind");
     return *named;
 }
 
 // The geometry members of a shape of this kind, after the caller checked the members.
 Expected<Shape> read_shape(const json& j, const std::string& at, ObjectKind kind) {
     const bool surface = kind == ObjectKind::surface, curve = kind == ObjectKind::curve;
-    const char* member = surface ? "surface" : curve ? "curve" : "implicit";
+    const char* member = geom::name_of(kind); // the geometry's member is named as the kind
     const std::string gat = at + "/" + member;
     const auto geometry = j.find(member);
     if (geometry == j.end())
@@ -221,6 +221,10 @@ Expected<Shape> read_shape(const json& j, const std::string& at, ObjectKind kind
                                 "equal to the first p",
                                 at + "/knot_mode");
         shape = std::move(c);
+    } else if (kind == ObjectKind::triangle) {
+        auto t = triangle_from_json(*geometry);
+        if (!t) return t.error().under(gat);
+        shape = TriangleObject{std::move(t).value()};
     } else {
         auto f = implicit_from_json(*geometry, gat);
         if (!f) return f.error();
@@ -244,6 +248,9 @@ Expected<Object> object_from_json(const json& j, const std::string& at) {
             : curve
                 ? check_members(j, at, "a curve object",
                                 {"id", "name", "kind", "visible", "plane", "knot_mode", "curve"})
+            : *kind == ObjectKind::triangle
+                ? check_members(j, at, "a triangle object",
+                                {"id", "name", "kind", "visible", "triangle"})
                 : check_members(j, at, "an implicit object",
                                 {"id", "name", "kind", "visible", "implicit"});
         !st)
@@ -287,7 +294,9 @@ Expected<Shape> shape_from_json(const json& j, const std::string& at) {
     if (auto st =
             surface ? check_members(j, at, "a surface shape", {"kind", "surface"})
             : curve ? check_members(j, at, "a curve shape", {"kind", "plane", "knot_mode", "curve"})
-                    : check_members(j, at, "an implicit shape", {"kind", "implicit"});
+            : *kind == ObjectKind::triangle
+                ? check_members(j, at, "a triangle shape", {"kind", "triangle"})
+                : check_members(j, at, "an implicit shape", {"kind", "implicit"});
         !st)
         return st.error();
     return read_shape(j, at, *kind);
@@ -303,6 +312,8 @@ json shape_to_json(const Shape& shape) {
         // Custom (the default) is omitted, so older scenes save back unchanged.
         if (c->knot_mode != CurveKnotMode::custom) j["knot_mode"] = geom::name_of(c->knot_mode);
         j["curve"] = curve_to_json(c->curve);
+    } else if (const geom::TrianglePatch* t = triangle_of(shape)) {
+        j["triangle"] = triangle_to_json(*t);
     } else {
         const ImplicitObject& f = *implicit_of(shape);
         json params = json::array();
@@ -468,13 +479,18 @@ Expected<Selection> selection_from_json(const json& j, const std::string& at, co
     if (o->implicit())
         return schema_error("an implicit surface has no control points to select", at + "/point");
     const geom::Surface* surface = o->surface();
-    const std::size_t arity = surface ? 2 : 1;
+    const geom::TrianglePatch* triangle = o->triangle();
+    const std::size_t arity = surface || triangle ? 2 : 1;
     if (!point->is_array() || point->size() != arity)
         return schema_error(surface ? "a surface's selected point is [i, j]"
-                                    : "a curve's selected point is [i]",
+                            : triangle
+                                ? "a triangle's selected point is [i, j] (b_ijk, k = n - i - j)"
+                                : "a curve's selected point is [i]",
                             at + "/point");
     int counts[2];
-    if (surface) {
+    if (triangle) {
+        counts[0] = counts[1] = triangle->degree + 1;
+    } else if (surface) {
         counts[0] = surface->n_u;
         counts[1] = surface->n_v;
     } else {
@@ -488,6 +504,12 @@ Expected<Selection> selection_from_json(const json& j, const std::string& at, co
         if (!v) return v.error();
         idx[k] = static_cast<int>(*v);
     }
+    if (triangle && idx[0] + idx[1] > triangle->degree)
+        return schema_error(
+            "a degree " + std::to_string(triangle->degree) +
+                " triangle's point [i, j] needs i + j <= " + std::to_string(triangle->degree) +
+                ", got [" + std::to_string(idx[0]) + ", " + std::to_string(idx[1]) + "]",
+            at + "/point/1");
     sel.i = idx[0];
     sel.j = idx[1];
     return sel;
@@ -508,6 +530,25 @@ Expected<glm::dvec2> indicator_from_json(const json& j, const std::string& at) {
         uv[a] = *x;
     }
     return uv;
+}
+
+Expected<geom::Barycentric> barycentric_from_json(const json& j, const std::string& at) {
+    if (!j.is_array() || j.size() != 3)
+        return schema_error("barycentric is [r, s, t], each >= 0, summing to 1", at);
+    geom::Barycentric rst{};
+    for (std::size_t a = 0; a < 3; ++a) {
+        auto x = read_finite(j[a], at + "/" + std::to_string(a), "a barycentric coordinate");
+        if (!x) return x.error();
+        if (*x < 0)
+            return schema_error("barycentric coordinates are >= 0, got " + geom::format_number(*x),
+                                at + "/" + std::to_string(a));
+        rst[a] = *x;
+    }
+    if (!(std::abs(rst[0] + rst[1] + rst[2] - 1) <= 1e-12))
+        return schema_error("barycentric coordinates sum to 1, these sum to " +
+                                geom::format_number(rst[0] + rst[1] + rst[2]),
+                            at);
+    return rst;
 }
 
 Expected<Continuity> continuity_from_json(const json& j, const std::string& at) {
@@ -540,6 +581,11 @@ json scene_to_json(const Document& doc) {
     scene["display"] = std::move(display);
     scene["selection"] = std::move(selection);
     scene["indicator"] = json::array({doc.view.indicator.x, doc.view.indicator.y});
+    // The triangle indicator only where there is a triangle, so other scenes save as before.
+    if (std::any_of(doc.objects.begin(), doc.objects.end(),
+                    [](const Object& o) { return o.triangle() != nullptr; }))
+        scene["barycentric"] = json::array(
+            {doc.view.barycentric[0], doc.view.barycentric[1], doc.view.barycentric[2]});
     if (doc.continuity != Continuity::off) scene["continuity"] = geom::name_of(doc.continuity);
     // The id the next new object gets, where deleting the newest objects left it above the
     // largest id (so that a script replayed on this scene makes the same ids).
@@ -578,7 +624,7 @@ Expected<Document> scene_from_json(const json& j) {
         return schema_error("version must be at least 1, got " + std::to_string(*v), "/version");
     if (auto st = check_members(j, "", "a scene",
                                 {"format", "version", "objects", "colors", "display", "selection",
-                                 "indicator", "continuity", "next_id"});
+                                 "indicator", "barycentric", "continuity", "next_id"});
         !st)
         return st.error();
 
@@ -640,6 +686,11 @@ Expected<Document> scene_from_json(const json& j) {
         auto uv = indicator_from_json(*ind, "/indicator");
         if (!uv) return uv.error();
         doc.view.indicator = *uv;
+    }
+    if (const auto bary = j.find("barycentric"); bary != j.end()) {
+        auto rst = barycentric_from_json(*bary, "/barycentric");
+        if (!rst) return rst.error();
+        doc.view.barycentric = *rst;
     }
     return doc;
 }

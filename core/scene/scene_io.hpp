@@ -46,6 +46,9 @@ nlohmann::json selection_to_json(const doc::Selection& selection);
 geom::Expected<doc::Selection> selection_from_json(const nlohmann::json& j, const std::string& at,
                                                    const doc::Document& doc);
 geom::Expected<glm::dvec2> indicator_from_json(const nlohmann::json& j, const std::string& at);
+// A triangle's indicator [r, s, t]: finite, each >= 0, summing to 1 within 1e-12 (`schema`).
+geom::Expected<geom::Barycentric> barycentric_from_json(const nlohmann::json& j,
+                                                        const std::string& at);
 geom::Expected<doc::Continuity> continuity_from_json(const nlohmann::json& j,
                                                      const std::string& at);
 

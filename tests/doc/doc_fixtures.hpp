@@ -7,6 +7,7 @@
 
 #include "core/doc/command.hpp"
 #include "core/doc/commands.hpp"
+#include "core/doc/commands_triangle.hpp"
 #include "core/doc/document.hpp"
 #include "core/geom/knots.hpp"
 #include "core/scene/command_json.hpp"
@@ -24,8 +25,17 @@ inline geom::Curve sample_curve() {
     return c;
 }
 
+// A rational cubic triangle, lifted in the middle, with one heavy and one negative weight.
+inline geom::TrianglePatch sample_triangle() {
+    geom::TrianglePatch t = make_flat_triangle(3, true).value();
+    t.points[geom::TrianglePatch::index(3, 1, 1)].z = 1.5;
+    t.weights[geom::TrianglePatch::index(3, 1, 1)] = 2;
+    t.weights[geom::TrianglePatch::index(3, 2, 0)] = -0.5;
+    return t;
+}
+
 // The default scene plus a curve, a B-spline grid, a Bezier patch and an implicit sphere:
-// every kind of object and every type tag.
+// every tensor-product type tag (with_triangle below adds the triangular patch).
 inline Document sample_document() {
     Document doc = default_document();
     Object curve;
@@ -66,8 +76,20 @@ inline Document sample_document() {
     return doc;
 }
 
-// Ids in sample_document().
-constexpr std::uint64_t hill_id = 1, curve_id = 2, grid_id = 3, patch_id = 4, ball_id = 5;
+// sample_document() and a triangular patch "tri" (tri_id): every kind of object.
+inline Document sample_document_with_triangle() {
+    Document doc = sample_document();
+    Object tri;
+    tri.id = doc.allocate_id();
+    tri.name = "tri";
+    tri.shape = TriangleObject{sample_triangle()};
+    doc.objects.push_back(tri);
+    return doc;
+}
+
+// Ids in sample_document() (tri_id: sample_document_with_triangle()).
+constexpr std::uint64_t hill_id = 1, curve_id = 2, grid_id = 3, patch_id = 4, ball_id = 5,
+                        tri_id = 6;
 
 inline const geom::Surface& surface_of(const Document& doc, std::uint64_t id) {
     return std::get<SurfaceObject>(doc.find(id)->shape).surface;

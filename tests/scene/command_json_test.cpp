@@ -19,7 +19,7 @@ using nlohmann::json;
 
 namespace {
 
-// One spec of every command kind, each valid on sample_document() (in this order).
+// One spec of every command kind, each valid on sample_document_with_triangle() (in this order).
 std::vector<CommandSpec> one_of_each() {
     Object added;
     added.name = "added";
@@ -57,6 +57,7 @@ std::vector<CommandSpec> one_of_each() {
         ConvertSpec{grid_id, geom::SplineType::bezier, true},
         AddObjectsSpec{{added, added}, "Import two"},
         MultiresEditSpec{curve_id, 1, std::nullopt, 2, -1, glm::dvec3(1, 1, 0), std::nullopt},
+        SplitTriangleSpec{tri_id, {0.25, 0.25, 0.5}},
     };
 }
 
@@ -71,7 +72,7 @@ TEST(CommandJson, EveryCommandHasAJsonFormThatReadsBackToTheSameCommand) {
         EXPECT_EQ(read->index(), spec.index());
         EXPECT_EQ(scene::command_to_json(*read), written);
         // Built from the JSON or from the spec, the command does the same to a document.
-        Document a = sample_document(), b = sample_document();
+        Document a = sample_document_with_triangle(), b = sample_document_with_triangle();
         const auto sa = make_command(spec)->apply(a);
         const auto sb = make_command(std::move(read).value())->apply(b);
         EXPECT_EQ(sa.ok(), sb.ok()) << written.dump();
@@ -82,7 +83,7 @@ TEST(CommandJson, EveryCommandHasAJsonFormThatReadsBackToTheSameCommand) {
 
 TEST(CommandJson, AnAppliedCommandGivesBackItsSpecAndCheckAgreesWithApply) {
     for (const CommandSpec& spec : one_of_each()) {
-        Document doc = sample_document();
+        Document doc = sample_document_with_triangle();
         auto cmd = make_command(spec);
         const Document before = doc;
         const auto checked = cmd->check(doc);
@@ -100,7 +101,7 @@ TEST(CommandJson, AnAppliedCommandGivesBackItsSpecAndCheckAgreesWithApply) {
 }
 
 TEST(CommandJson, ADragIsOneStepWhoseSpecIsTheFinalValue) {
-    Document doc = sample_document();
+    Document doc = sample_document_with_triangle();
     const Document start = doc;
     History h;
     ASSERT_TRUE(h.execute(doc, move_control_point(hill_id, 2, 2, {0, 0, 1})).ok());
@@ -123,7 +124,7 @@ TEST(CommandJson, ADragIsOneStepWhoseSpecIsTheFinalValue) {
 }
 
 TEST(CommandJson, WeightsAndPositionsAreOneEdit) {
-    Document doc = sample_document();
+    Document doc = sample_document_with_triangle();
     const json step = json::parse(
         R"({"command":"edit_point","id":1,"i":0,"j":1,"position":[1,2,3],"weight":-0.5})");
     auto spec = scene::command_from_json(step);
@@ -189,7 +190,7 @@ TEST(CommandJson, BadStepsAreRefusedWithTheirPath) {
 TEST(CommandJson, ACommandThatReadsButDoesNotApplyIsRefusedByItsCheckAtTheSamePath) {
     // The reader checks JSON types; the document's rules are the command's, with the member's
     // path, so a script can say which step and which member.
-    const Document doc = sample_document();
+    const Document doc = sample_document_with_triangle();
     auto spec = scene::command_from_json(
         json::parse(R"({"command":"edit_point","id":1,"i":9,"j":0,"position":[0,0,0]})"));
     ASSERT_TRUE(spec.ok());

@@ -34,11 +34,7 @@ const geom::Surface* current_surface(const doc::Document& d, const doc::Object**
 bool has_valid_point(const doc::Document& d) {
     const doc::Object* o = d.selected();
     if (!o || !d.view.selection.has_point()) return false;
-    if (const geom::Surface* s = o->surface())
-        return d.view.selection.i < s->n_u && d.view.selection.j >= 0 &&
-               d.view.selection.j < s->n_v;
-    if (const geom::Curve* c = o->curve()) return d.view.selection.i < c->count();
-    return false;
+    return doc::has_control_point(o->shape, d.view.selection.i, d.view.selection.j);
 }
 
 void normalize_selection(doc::Document& d) {
