@@ -3,9 +3,15 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
+#include "core/geom/binomial.hpp"
+
 namespace isoparm::geom {
 
 namespace {
+
+// Up to this degree bernstein_triangle multiplies (3^n < 2^53 keeps the coefficient exact);
+// above it, logarithms.
+constexpr int exact_bernstein_degree = 32;
 
 using Net = std::vector<HPoint>; // a triangular net of some degree m, in the patch's order
 
@@ -90,6 +96,41 @@ Status validate_triangle(const TrianglePatch& t) {
             return make_error(ErrorCode::weights, "a weight must be a finite number",
                               "/weights/" + std::to_string(k));
     return Ok{};
+}
+
+double bernstein_triangle(int n, int i, int j, const Barycentric& p) {
+    const int power[3] = {i, j, n - i - j};
+    if (n <= exact_bernstein_degree) {
+        // n! / (i! j! k!) = C(n, i) C(n - i, j) is an integer below 3^n < 2^53: exact, and
+        // so are the products at points like (1/2, 1/2, 0).
+        double value = binomial(n, i) * binomial(n - i, j);
+        for (int a = 0; a < 3; ++a)
+            for (int e = 0; e < power[a]; ++e) value *= p[a];
+        return value;
+    }
+    // log(n! / (i! j! k!)) + i log|r| + j log|s| + k log|t|, with the sign kept apart.
+    double log_value = std::lgamma(n + 1.0);
+    double sign = 1;
+    for (int a = 0; a < 3; ++a) {
+        log_value -= std::lgamma(power[a] + 1.0);
+        if (power[a] == 0) continue; // x^0 = 1, also for x = 0
+        if (p[a] == 0.0) return 0.0;
+        if (p[a] < 0 && power[a] % 2 == 1) sign = -sign;
+        log_value += power[a] * std::log(std::abs(p[a]));
+    }
+    return sign * std::exp(log_value);
+}
+
+std::optional<double> rational_bernstein_triangle(const TrianglePatch& t, int i, int j,
+                                                  const Barycentric& p) {
+    const int n = t.degree;
+    double denominator = 0;
+    for (int a = n; a >= 0; --a)
+        for (int b = n - a; b >= 0; --b)
+            denominator +=
+                t.weights[TrianglePatch::index(n, a, b)] * bernstein_triangle(n, a, b, p);
+    if (denominator == 0.0) return std::nullopt;
+    return t.weights[TrianglePatch::index(n, i, j)] * bernstein_triangle(n, i, j, p) / denominator;
 }
 
 std::optional<glm::dvec3> triangle_point(const TrianglePatch& t, const Barycentric& p) {

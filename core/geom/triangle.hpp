@@ -37,6 +37,20 @@ constexpr int max_triangle_degree = 1412;
 // values (`weights`): the checks every triangle passes before any algorithm runs.
 Status validate_triangle(const TrianglePatch& t);
 
+// The Bernstein polynomial B^n_ijk(r, s, t) = n! / (i! j! k!) r^i s^j t^k, k = n - i - j
+// (Farin 17.1), for 0 <= i, j and i + j <= n. Low degrees by products (exact coefficient);
+// high ones in logarithms, so that neither the multinomial coefficient (which overflows a
+// double past n ~ 170) nor the powers (which underflow) are formed on their own. 0^0 = 1, and
+// outside the triangle the polynomial keeps its sign. The B^n_ijk of one n sum to 1 where
+// r + s + t = 1.
+double bernstein_triangle(int n, int i, int j, const Barycentric& p);
+
+// The rational basis function R_ijk = w_ijk B^n_ijk / sum w_abc B^n_abc of the patch's control
+// point b_ijk (B itself for a non-rational patch); nullopt where the denominator is zero
+// (the patch point does not exist there).
+std::optional<double> rational_bernstein_triangle(const TrianglePatch& t, int i, int j,
+                                                  const Barycentric& p);
+
 // The Bernstein sum sum B^n_ijk(r, s, t) b_ijk (rational: in homogeneous space), by de
 // Casteljau; nullopt where the weight sum is zero.
 std::optional<glm::dvec3> triangle_point(const TrianglePatch& t, const Barycentric& p);

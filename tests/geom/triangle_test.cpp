@@ -139,4 +139,105 @@ TEST(Triangle, DerivativesMatchCentralDifferences) {
     }
 }
 
+// The closed form n! / (i! j! k!) r^i s^j t^k, with pow's 0^0 = 1.
+double closed_form(int n, int i, int j, const Barycentric& p) {
+    const int k = n - i - j;
+    return factorial(n) / (factorial(i) * factorial(j) * factorial(k)) * std::pow(p[0], i) *
+           std::pow(p[1], j) * std::pow(p[2], k);
+}
+
+TEST(TriangleBernstein, SumsToOneAndMatchesTheClosedForm) {
+    for (int n : {1, 2, 3, 5, 10, 40}) { // 40: above exact_bernstein_degree, in logarithms
+        for (const Barycentric& p : samples) {
+            double sum = 0;
+            for (int i = n; i >= 0; --i)
+                for (int j = n - i; j >= 0; --j) {
+                    const double B = bernstein_triangle(n, i, j, p);
+                    EXPECT_NEAR(B, closed_form(n, i, j, p), 1e-13)
+                        << "n " << n << " b_" << i << j << n - i - j;
+                    EXPECT_GE(B, 0.0);
+                    sum += B;
+                }
+            EXPECT_NEAR(sum, 1.0, 1e-13) << "n " << n;
+        }
+    }
+    // At a vertex only that vertex's function is non-zero, and exactly 1 (interpolation).
+    EXPECT_EQ(bernstein_triangle(4, 4, 0, {1, 0, 0}), 1.0);
+    EXPECT_EQ(bernstein_triangle(4, 3, 1, {1, 0, 0}), 0.0);
+    EXPECT_EQ(bernstein_triangle(4, 0, 0, {0, 0, 1}), 1.0);
+}
+
+TEST(TriangleBernstein, OutsideTheTriangleKeepsThePolynomialsSign) {
+    // (r, s, t) = (1.3, -0.2, -0.1): s^1 is negative, t^2 positive.
+    const Barycentric p = {1.3, -0.2, -0.1};
+    EXPECT_NEAR(bernstein_triangle(4, 1, 1, p), closed_form(4, 1, 1, p), 1e-13);
+    EXPECT_LT(bernstein_triangle(4, 1, 1, p), 0.0);
+    EXPECT_NEAR(bernstein_triangle(4, 1, 2, p), closed_form(4, 1, 2, p), 1e-13);
+    double sum = 0;
+    for (int i = 4; i >= 0; --i)
+        for (int j = 4 - i; j >= 0; --j) sum += bernstein_triangle(4, i, j, p);
+    EXPECT_NEAR(sum, 1.0, 1e-12); // (r + s + t)^n = 1 anywhere on the plane
+}
+
+TEST(TriangleBernstein, HighDegreesStayFiniteWhereTheCoefficientOverflows) {
+    // 300! / (100!)^3 is about 1e141 times 3^-300 about 1e-143: neither fits alone in a
+    // double's exponent range, the product (about 1e-3) does.
+    const int n = 300;
+    const Barycentric centre = {1.0 / 3, 1.0 / 3, 1.0 / 3};
+    const double B = bernstein_triangle(n, 100, 100, centre);
+    EXPECT_TRUE(std::isfinite(B));
+    EXPECT_GT(B, 1e-4);
+    double sum = 0;
+    for (int i = n; i >= 0; --i)
+        for (int j = n - i; j >= 0; --j) sum += bernstein_triangle(n, i, j, {0.2, 0.3, 0.5});
+    EXPECT_NEAR(sum, 1.0, 1e-9);
+}
+
+TEST(TriangleBernstein, EachFunctionPeaksAtItsDomainPoint) {
+    // B^n_ijk is largest at (i, j, k) / n (its gradient on the plane vanishes there).
+    const int n = 4, grid = 48;
+    for (int i = n; i >= 0; --i)
+        for (int j = n - i; j >= 0; --j) {
+            const double peak =
+                bernstein_triangle(n, i, j,
+                                   {static_cast<double>(i) / n, static_cast<double>(j) / n,
+                                    static_cast<double>(n - i - j) / n});
+            for (int a = 0; a <= grid; ++a)
+                for (int b = 0; a + b <= grid; ++b) {
+                    const Barycentric p = {static_cast<double>(a) / grid,
+                                           static_cast<double>(b) / grid,
+                                           static_cast<double>(grid - a - b) / grid};
+                    EXPECT_LE(bernstein_triangle(n, i, j, p), peak + 1e-15);
+                }
+        }
+}
+
+TEST(TriangleBernstein, RationalBasisSumsToOneAndRebuildsThePatch) {
+    const TrianglePatch T = random_triangle(3, true, 5);
+    for (const Barycentric& p : samples) {
+        glm::dvec3 point(0.0);
+        double sum = 0;
+        for (int i = 3; i >= 0; --i)
+            for (int j = 3 - i; j >= 0; --j) {
+                const auto R = rational_bernstein_triangle(T, i, j, p);
+                ASSERT_TRUE(R);
+                sum += *R;
+                point += *R * T.points[TrianglePatch::index(3, i, j)];
+            }
+        EXPECT_NEAR(sum, 1.0, 1e-13);
+        // sum R_ijk b_ijk is the patch point de Casteljau computes.
+        EXPECT_LT(glm::length(point - *triangle_point(T, p)), 1e-13);
+    }
+    // Unit weights: R is B.
+    const TrianglePatch U = random_triangle(3, false, 6);
+    EXPECT_NEAR(*rational_bernstein_triangle(U, 1, 1, {0.2, 0.3, 0.5}),
+                bernstein_triangle(3, 1, 1, {0.2, 0.3, 0.5}), 1e-15);
+    // Weights 1, -1, 7 of a linear patch: sum w B = 0 at the midpoint of the edge t = 0, where
+    // the patch goes to infinity and R does not exist; elsewhere it does.
+    TrianglePatch L = random_triangle(1, true, 7);
+    L.weights = {1, -1, 7};
+    EXPECT_FALSE(rational_bernstein_triangle(L, 1, 0, {0.5, 0.5, 0}));
+    EXPECT_TRUE(rational_bernstein_triangle(L, 1, 0, {0.4, 0.4, 0.2}));
+}
+
 } // namespace
