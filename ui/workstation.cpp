@@ -21,6 +21,7 @@
 #include "ui/view/doc_access.hpp"
 #include "ui/view/implicit_meshes.hpp"
 #include "ui/view/scene_builder.hpp"
+#include "ui/view/triangle_meshes.hpp"
 
 namespace isoparm::ui {
 
@@ -62,6 +63,7 @@ Workstation::Workstation(const WorkstationOptions& options) {
     renderer_ = std::make_unique<Renderer>(options.msaa_samples);
     ctx_.renderer = renderer_.get();
     implicit_ = std::make_unique<ImplicitMeshes>();
+    triangles_ = std::make_unique<TriangleMeshes>();
     ctx_.implicit_meshes = implicit_.get();
 }
 
@@ -312,7 +314,8 @@ void Workstation::frame(unsigned target_framebuffer) {
     mode.coarse_id = ui.implicit.dragging ? ui.implicit.object : 0;
     if (request_frame_) mode.wake = request_frame_;
     implicit_->update(ctx_.doc, mode);
-    const BuiltScene scene = build_scene(ctx_.doc, style, implicit_.get());
+    triangles_->update(ctx_.doc, ctx_.doc.view.display.density);
+    const BuiltScene scene = build_scene(ctx_.doc, style, implicit_.get(), triangles_.get());
     SceneView view;
     view.camera = ui.camera;
     view.width = ui.view_fb_width;

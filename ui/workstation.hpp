@@ -15,6 +15,7 @@ namespace isoparm::ui {
 
 class Renderer;
 class ImplicitMeshes;
+class TriangleMeshes;
 
 struct WorkstationOptions {
     bool headless = false;   // no timings, no settings file, deterministic
@@ -52,6 +53,7 @@ private:
     std::function<void()> request_frame_;
     std::unique_ptr<Renderer> renderer_;
     std::unique_ptr<ImplicitMeshes> implicit_;
+    std::unique_ptr<TriangleMeshes> triangles_;
     bool presentation_built_ = false;
     bool deboor_was_on_ = false; // to bring the de Boor tab forward when it is switched on
     // The indicator and current object of the last frame (subpatch activation); NaN at first,

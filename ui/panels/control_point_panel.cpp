@@ -136,9 +136,26 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const geom::Surface& 
                 ImGui::GetColorU32(ImGuiCol_TextDisabled), ax.name);
 }
 
-void coordinate_fields(AppContext& ctx, const doc::Object& obj, const geom::Surface& s) {
+// The selected control point of a surface or a triangle, as the fields edit it.
+struct SelectedPoint {
+    glm::dvec3 position{0};
+    double weight = 1;
+    bool rational = false;
+    const char* type = "";
+};
+SelectedPoint selected_point(const doc::Object& obj, int i, int j) {
+    if (const geom::TrianglePatch* t = obj.triangle()) {
+        const auto at = static_cast<std::size_t>(geom::TrianglePatch::index(t->degree, i, j));
+        return {t->points[at], t->weights[at], t->rational,
+                t->rational ? "rational_triangle_bezier" : "triangle_bezier"};
+    }
+    const geom::Surface& s = *obj.surface();
+    return {s.point(i, j), s.weight(i, j), geom::is_rational(s.type), geom::name_of(s.type)};
+}
+
+void coordinate_fields(AppContext& ctx, const doc::Object& obj) {
     const int i = ctx.doc.view.selection.i, j = ctx.doc.view.selection.j;
-    glm::dvec3 p = s.point(i, j);
+    glm::dvec3 p = selected_point(obj, i, j).position;
     const char* labels[3] = {"x", "y", "z"};
     const ImGuiStyle& st = ImGui::GetStyle();
     const float avail = ImGui::GetContentRegionAvail().x;
@@ -161,17 +178,31 @@ void coordinate_fields(AppContext& ctx, const doc::Object& obj, const geom::Surf
     }
 }
 
-void weight_controls(AppContext& ctx, const doc::Object& obj, const geom::Surface& s) {
+void weight_controls(AppContext& ctx, const doc::Object& obj) {
     const int i = ctx.doc.view.selection.i, j = ctx.doc.view.selection.j;
-    if (!geom::is_rational(s.type)) {
-        ImGui::TextWrapped("Weight: this %s surface is non-rational (all weights 1). Weights "
-                           "belong to rational Bezier and NURBS surfaces.",
-                           geom::name_of(s.type));
+    const SelectedPoint sp = selected_point(obj, i, j);
+    if (!sp.rational && obj.triangle()) {
+        ImGui::TextWrapped("Weight: this triangular patch is non-rational (all weights 1).");
+        // Unit weights keep the shape: the patch only becomes one whose weights can change.
+        if (ImGui::Button("Make it rational")) {
+            geom::TrianglePatch t = *obj.triangle();
+            t.rational = true;
+            ctx.seal();
+            ctx.execute(doc::edit_shape(obj.id, doc::TriangleObject{std::move(t)},
+                                        "Make " + obj.name + " rational"));
+            ctx.seal();
+        }
         return;
     }
-    double w = s.weight(i, j);
+    if (!sp.rational) {
+        ImGui::TextWrapped("Weight: this %s surface is non-rational (all weights 1). Weights "
+                           "belong to rational Bezier and NURBS surfaces.",
+                           sp.type);
+        return;
+    }
+    double w = sp.weight;
     ImGui::AlignTextToFramePadding();
-    ImGui::TextUnformatted(point_name('w', i, j, s.n_u, s.n_v).c_str());
+    ImGui::TextUnformatted(point_name('w', i, j, &obj).c_str());
     ImGui::SameLine();
     const ImGuiStyle& st = ImGui::GetStyle();
     const float field =
@@ -196,7 +227,7 @@ void weight_controls(AppContext& ctx, const doc::Object& obj, const geom::Surfac
     report_item("cp/weight");
     if (ImGui::IsItemDeactivatedAfterEdit()) ctx.seal();
 
-    const double now = s.weight(i, j);
+    const double now = selected_point(*ctx.doc.find(obj.id), i, j).weight;
     const ImVec4 warn = ctx.ui.presentation ? ImVec4(0.7f, 0.25f, 0, 1) : ImVec4(1, 0.72f, 0.3f, 1);
     if (now == 0) {
         ImGui::PushStyleColor(ImGuiCol_Text, warn);
@@ -221,8 +252,24 @@ void weight_controls(AppContext& ctx, const doc::Object& obj, const geom::Surfac
 
 } // namespace
 
+// A triangle's point: its fields, no plane canvases (they draw a rectangular net).
+void triangle_point_panel(AppContext& ctx, const doc::Object& obj) {
+    const int i = ctx.doc.view.selection.i, j = ctx.doc.view.selection.j;
+    ImGui::Text("%s of %s", point_name('P', i, j, &obj).c_str(), obj.name.c_str());
+    ImGui::SameLine();
+    ImGui::TextDisabled("(%s, degree %d)", selected_point(obj, i, j).type, obj.triangle()->degree);
+    ImGui::TextDisabled("Drag it in the 3D view, or type its coordinates:");
+    coordinate_fields(ctx, obj);
+    const doc::Object* now = ctx.doc.find(obj.id);
+    if (now && has_valid_point(ctx.doc)) weight_controls(ctx, *now);
+}
+
 void draw_control_point_panel(AppContext& ctx) {
     const doc::Object* obj = ctx.doc.selected();
+    if (obj && obj->triangle() && has_valid_point(ctx.doc)) {
+        triangle_point_panel(ctx, *obj);
+        return;
+    }
     const geom::Surface* s = obj ? obj->surface() : nullptr;
     if (!s || !has_valid_point(ctx.doc)) {
         ImGui::TextWrapped("Click a control point in the 3D view to select it; it can then "
@@ -281,8 +328,10 @@ void draw_control_point_panel(AppContext& ctx) {
     obj = ctx.doc.selected();
     s = obj ? obj->surface() : nullptr;
     if (!s || !has_valid_point(ctx.doc)) return;
-    coordinate_fields(ctx, *obj, *s);
-    weight_controls(ctx, *obj, *s);
+    coordinate_fields(ctx, *obj);
+    obj = ctx.doc.selected();
+    if (!obj || !obj->surface() || !has_valid_point(ctx.doc)) return;
+    weight_controls(ctx, *obj);
 }
 
 } // namespace isoparm::ui

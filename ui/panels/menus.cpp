@@ -16,6 +16,7 @@
 #include "ui/surface_actions.hpp"
 #include "ui/theme.hpp"
 #include "ui/toolbox_actions.hpp"
+#include "ui/triangle_actions.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/data_dir.hpp"
 #include "ui/view/doc_access.hpp"
@@ -95,6 +96,18 @@ void action_item(AppContext& ctx, const ActionState& a, const char* shortcut,
 void refine_items(AppContext& ctx) {
     using geom::Dir;
     ImGui::TextDisabled("At the indicator (shape unchanged)");
+    // A selected triangle has one degree and a barycentric indicator: its own two items.
+    if (const doc::Object* sel = ctx.doc.selected(); sel && sel->triangle()) {
+        for (const auto& [state, run] :
+             {std::pair{elevate_triangle_state(ctx), &elevate_selected_triangle},
+              std::pair{split_triangle_state(ctx), &split_triangle_at_indicator}}) {
+            if (menu_item(state.label.c_str(), nullptr, false, state.enabled)) run(ctx);
+            if (!state.enabled && !state.why.empty() &&
+                ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+                wrapped_tooltip(state.why);
+        }
+        return;
+    }
     action_item(ctx, insert_knot_state(ctx, Dir::u), "U", insert_knot_at_indicator, Dir::u);
     action_item(ctx, insert_knot_state(ctx, Dir::v), "V", insert_knot_at_indicator, Dir::v);
     action_item(ctx, elevate_state(ctx, Dir::u), "Shift+U", elevate_current, Dir::u);
@@ -169,6 +182,12 @@ void surface_menu(AppContext& ctx) {
         if (ctx.execute(doc::add_object(std::move(o))))
             ctx.doc.view.selection = {ctx.doc.objects.back().id, -1, -1};
         ctx.seal();
+    }
+    if (begin_menu("New triangular patch")) {
+        for (int n = 1; n <= 4; ++n)
+            if (menu_item(("Degree " + std::to_string(n)).c_str())) new_triangle(ctx, n, false);
+        if (menu_item("Rational cubic")) new_triangle(ctx, 3, true);
+        ImGui::EndMenu();
     }
     ImGui::Separator();
     ImGui::TextDisabled("Select");

@@ -48,6 +48,11 @@ std::vector<Candidate> pick_candidates(const doc::Document& d) {
                 for (int j = 0; j < s->n_v; ++j) out.push_back({{o.id, i, j}, s->point(i, j)});
         } else if (const geom::Curve* c = o.curve()) {
             for (int i = 0; i < c->count(); ++i) out.push_back({{o.id, i, -1}, c->points[i]});
+        } else if (const geom::TrianglePatch* t = o.triangle()) {
+            for (int i = 0; i <= t->degree; ++i)
+                for (int j = 0; i + j <= t->degree; ++j)
+                    out.push_back(
+                        {{o.id, i, j}, t->points[geom::TrianglePatch::index(t->degree, i, j)]});
         }
     }
     return out;
@@ -243,9 +248,8 @@ void draw_hover_ring(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) 
         const Projected p = project(view_projection(ctx.ui.camera, vp.aspect()), vp, hit->position);
         dl->AddCircle(ImVec2(static_cast<float>(p.pixel.x), static_cast<float>(p.pixel.y)),
                       9.f * ctx.ui.scale(), IM_COL32(255, 255, 255, 220), 24, 2.f * ctx.ui.scale());
-        const doc::Object* o = ctx.doc.find(hit->ref.object);
-        const geom::Surface* s = o ? o->surface() : nullptr;
-        const std::string tip = point_label(hit->ref.i, hit->ref.j, s ? s->n_u : 0, s ? s->n_v : 0);
+        const std::string tip =
+            point_name('P', hit->ref.i, hit->ref.j, ctx.doc.find(hit->ref.object));
         ImGui::SetTooltip("%s  (%.3g, %.3g, %.3g)", tip.c_str(), hit->position.x, hit->position.y,
                           hit->position.z);
     }
@@ -337,10 +341,11 @@ void transform_slider(AppContext& ctx, int k, float width) {
         sl.applied = 0;
         ctx.seal();
         // Pivot and step size are fixed for the whole gesture.
-        if (const geom::Surface* s = sel->surface()) {
+        if (const std::span<const glm::dvec3> pts = doc::control_points_of(sel->shape);
+            !pts.empty()) {
             glm::dvec3 c(0);
-            for (const glm::dvec3& p : s->points) c += p;
-            sl.pivot = c / static_cast<double>(std::max<std::size_t>(s->points.size(), 1));
+            for (const glm::dvec3& p : pts) c += p;
+            sl.pivot = c / static_cast<double>(pts.size());
         }
         const auto box = doc::scene_bounds(ctx.doc);
         sl.scale = box ? std::max(glm::length(box->hi - box->lo), 1e-3) : 1.0;

@@ -52,10 +52,20 @@ std::string point_name(char prefix, int i, int j, int n_u, int n_v) {
     return s + std::to_string(i) + (compact ? "" : ",") + std::to_string(j);
 }
 
-std::string point_name(char prefix, int i, int j, const doc::Document& d) {
-    const doc::Object* o = d.selected();
+std::string point_name(char prefix, int i, int j, const doc::Object* o) {
+    if (const geom::TrianglePatch* t = o ? o->triangle() : nullptr) {
+        // b_ijk (w_ijk), k = n - i - j: the triangle's own three indices.
+        const char letter = prefix == 'P' ? 'b' : prefix;
+        const std::string sep = t->degree < 10 ? "" : ",";
+        return std::string(1, letter) + std::to_string(i) + sep + std::to_string(j) + sep +
+               std::to_string(t->degree - i - j);
+    }
     const geom::Surface* s = o ? o->surface() : nullptr;
     return point_name(prefix, i, j, s ? s->n_u : 0, s ? s->n_v : 0);
+}
+
+std::string point_name(char prefix, int i, int j, const doc::Document& d) {
+    return point_name(prefix, i, j, d.selected());
 }
 
 glm::dvec2 indicator_params(const doc::Document& d, const doc::Object& surface_object) {

@@ -26,6 +26,8 @@ std::string fresh_name(const doc::Document& d, const std::string& base);
 // "P22" as the paper writes it; "P26,11" once an index has two digits; "P3" for curves
 // (j < 0). prefix: 'P', 'w', 'R'.
 std::string point_name(char prefix, int i, int j, const doc::Document& d);
+// Of this object's point: a triangle's b_ijk (prefix P) or w_ijk, k = n - i - j.
+std::string point_name(char prefix, int i, int j, const doc::Object* o);
 std::string point_name(char prefix, int i, int j, int n_u, int n_v);
 
 // The indicator's (u, v) in the surface's own parameters, always inside its domain.

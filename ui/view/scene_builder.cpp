@@ -10,11 +10,14 @@
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/tessellate.hpp"
+#include "core/geom/triangle.hpp"
 #include "ui/view/canvas_map.hpp"
 #include "ui/view/contrast.hpp"
 #include "ui/view/deboor_overlay.hpp"
 #include "ui/view/doc_access.hpp"
 #include "ui/view/implicit_meshes.hpp"
+#include "ui/view/triangle_meshes.hpp"
+#include "ui/view/triangle_scene.hpp"
 
 namespace isoparm::ui {
 
@@ -193,7 +196,7 @@ void add_curve_glyphs(Overlay& out, const doc::Document& d, const SceneStyle& st
 } // namespace
 
 BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
-                       const ImplicitMeshes* implicit) {
+                       const ImplicitMeshes* implicit, const TriangleMeshes* triangles) {
     BuiltScene out;
     const float k = style.scale;
     const doc::Colors col = readable_overlay_colors(d.colors);
@@ -213,8 +216,8 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
     // Many points (a 32x32 net) would bury the surface: they shrink with their number.
     std::size_t total_points = 0;
     for (const doc::Object& o : d.objects)
-        if (const geom::Surface* s = o.visible ? o.surface() : nullptr)
-            total_points += s->points.size();
+        if (o.visible && o.kind() != doc::ObjectKind::curve)
+            total_points += doc::control_points_of(o.shape).size();
     const float point_size = total_points > 400 ? 6.f : total_points > 100 ? 7.5f : 9.f;
     PointBatch points{{}, point_size * k, false, false};
     PointBatch selected{{}, 13.f * k, false, true};
@@ -285,6 +288,31 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
                 out.surfaces.push_back(sd);
             }
             if (is_selected) add_box(box, im->lo, im->hi, to_vec4(col.selected_surface));
+        } else if (const geom::TrianglePatch* t = o.triangle()) {
+            const TriangleMeshes::View v =
+                triangles ? triangles->view(o.id) : TriangleMeshes::View{};
+            if (v.mesh) {
+                SurfaceDraw sd;
+                sd.id = o.id;
+                sd.mesh = v.mesh;
+                sd.mesh_revision = v.revision;
+                sd.shaded = shaded;
+                sd.wireframe = wire;
+                sd.fill = to_vec4(col.surface);
+                glm::vec4 w = is_selected ? to_vec4(col.selected_surface) : to_vec4(col.surface);
+                if (shaded) w = glm::vec4(glm::vec3(w) * 0.45f, 0.9f);
+                sd.wire = w;
+                sd.wire_width = (shaded ? 0.8f : 1.1f) * k;
+                out.surfaces.push_back(sd);
+            }
+            if (disp.control_net) add_triangle_net(net, *t, to_vec4(col.control_net));
+            if (disp.control_points)
+                for (int i = 0; i <= t->degree; ++i)
+                    for (int j = 0; i + j <= t->degree; ++j)
+                        if (!(is_selected && d.view.selection.i == i && d.view.selection.j == j))
+                            points.points.push_back(
+                                {glm::vec3(t->points[geom::TrianglePatch::index(t->degree, i, j)]),
+                                 to_vec4(col.control_points)});
         } else if (const geom::Curve* c = o.curve()) {
             // A curve in the surface colour disappears against a surface built from it (a
             // ruled or skinned surface runs through its curves): curves take a pale tint.
@@ -314,13 +342,27 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
             p = s->point(d.view.selection.i, d.view.selection.j);
         else if (const geom::Curve* c = o->curve())
             p = c->points[d.view.selection.i];
+        else if (const geom::TrianglePatch* t = o->triangle())
+            p = t->points[geom::TrianglePatch::index(t->degree, d.view.selection.i,
+                                                     d.view.selection.j)];
         selected.points.push_back({glm::vec3(p), to_vec4(col.selected_point)});
     }
 
     // The indicator: S(u,v) as a small sphere, with the two isoparametric curves through it.
     LineBatch iso{{}, 1.6f * k, true};
     PointBatch indicator{{}, 14.f * k, true, true};
-    if (disp.indicator_point) {
+    // A selected triangle has its own indicator (r, s, t), with the three lines of constant
+    // r, s and t through it.
+    const doc::Object* sel_obj = d.selected();
+    const geom::TrianglePatch* sel_triangle =
+        sel_obj && sel_obj->visible ? sel_obj->triangle() : nullptr;
+    if (disp.indicator_point && sel_triangle) {
+        const glm::vec4 ic = to_vec4(col.indicator);
+        for (const auto& piece : triangle_iso_lines(*sel_triangle, d.view.barycentric, 97))
+            Overlay::add_polyline(iso, piece, with_alpha(ic, 0.55f));
+        if (const auto p = geom::triangle_point(*sel_triangle, d.view.barycentric))
+            indicator.points.push_back({glm::vec3(*p), ic});
+    } else if (disp.indicator_point) {
         const doc::Object* current = nullptr;
         if (const geom::Surface* s = current_surface(d, &current)) {
             const glm::dvec2 uv = indicator_params(d, *current);
@@ -347,7 +389,9 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
     }
 
     // De Boor's construction at the indicator, up to the step the lecture has reached.
-    if (disp.deboor) {
+    if (disp.deboor && sel_triangle) {
+        add_triangle_de_casteljau(*sel_triangle, d.view.barycentric, style.deboor_step, k, deboor);
+    } else if (disp.deboor) {
         const doc::Object* current = nullptr;
         if (const geom::Surface* s = current_surface(d, &current)) {
             const glm::dvec2 uv = indicator_params(d, *current);

@@ -45,10 +45,13 @@ struct BuiltScene {
     Overlay overlay;
 };
 class ImplicitMeshes;
+class TriangleMeshes;
 // Implicit objects are drawn from `implicit`'s cached meshes (left out when it is null or
-// has no mesh for them yet); the selected one also shows its bounds as a box.
+// has no mesh for them yet); the selected one also shows its bounds as a box. Triangular
+// patches are drawn from `triangles`' meshes (their nets and points always).
 BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
-                       const ImplicitMeshes* implicit = nullptr);
+                       const ImplicitMeshes* implicit = nullptr,
+                       const TriangleMeshes* triangles = nullptr);
 
 // The points of the isoparametric curve with `fixed` direction held at t (S(t, v) for
 // fixed = u), `samples` evenly spaced in the other direction; runs where the point does not
