@@ -18,6 +18,7 @@
 #include "ui/headless/headless_render.hpp"
 #include "ui/view/current_patch.hpp"
 #include "ui/view/doc_access.hpp"
+#include "ui/view/triangle_domain.hpp"
 
 namespace isoparm::app {
 
@@ -142,12 +143,16 @@ std::string configure(const RenderOptions& o, ui::AppContext& ctx) {
         }
     }
     if (o.deboor_step != -1) {
+        // A selected triangle steps through de Casteljau's levels 0..n instead.
+        const geom::TrianglePatch* t = ui::selected_triangle(d);
         const doc::Object* current = nullptr;
-        const geom::Surface* s = ui::current_surface(d, &current);
-        const int last = s ? s->degree_u + s->degree_v + 1 : 0;
-        if (!s || o.deboor_step < 0 || o.deboor_step > last)
+        const geom::Surface* s = t ? nullptr : ui::current_surface(d, &current);
+        const int last = t ? t->degree : s ? s->degree_u + s->degree_v + 1 : 0;
+        if ((!s && !t) || o.deboor_step < 0 || o.deboor_step > last)
             return "--deboor-step " + std::to_string(o.deboor_step) + " must be 0.." +
-                   std::to_string(last) + " (p_u + p_v + 1 steps for the current surface)";
+                   std::to_string(last) +
+                   (t ? " (the levels of the selected triangle's de Casteljau construction)"
+                      : " (p_u + p_v + 1 steps for the current surface)");
         d.view.display.deboor = true;
         ctx.ui.deboor.step = o.deboor_step;
     }
@@ -209,7 +214,7 @@ Action register_render_command(CLI::App& app) {
     sub->add_flag("--deboor,!--no-deboor", o->deboor, "show / hide de Boor's construction");
     sub->add_option("--deboor-step", o->deboor_step,
                     "de Boor's construction up to step N (0: the acting control points; "
-                    "implies --deboor)");
+                    "a selected triangle: de Casteljau's level N; implies --deboor)");
     return [o]() -> int {
         ui::HeadlessRequest req;
         req.scene_path = o->scene;

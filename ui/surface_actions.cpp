@@ -10,6 +10,7 @@
 #include "ui/view/camera.hpp"
 #include "ui/view/deboor_overlay.hpp"
 #include "ui/view/doc_access.hpp"
+#include "ui/view/triangle_domain.hpp"
 
 namespace isoparm::ui {
 
@@ -215,6 +216,9 @@ void conform_current_group(AppContext& ctx) {
 }
 
 int deboor_step_count(const AppContext& ctx) {
+    // A selected triangle: de Casteljau's levels 0 (the control points) .. n (the point S),
+    // Farin 17.3.
+    if (const geom::TrianglePatch* t = selected_triangle(ctx.doc)) return t->degree;
     const geom::Surface* s = current_surface(ctx.doc);
     return s ? s->degree_u + s->degree_v + 1 : 0;
 }
@@ -247,11 +251,15 @@ void clamp_deboor_step(AppContext& ctx) {
 
 void zoom_to_acting_patch(AppContext& ctx) {
     const doc::Object* obj = nullptr;
-    const geom::Surface* s = current_surface(ctx.doc, &obj);
-    if (!s) return;
-    const glm::dvec2 uv = indicator_params(ctx.doc, *obj);
-    const std::vector<glm::dvec3> pts =
-        deboor_acting_points(geom::deboor_surface(*s, uv.x, uv.y), s->degree_v);
+    std::vector<glm::dvec3> pts;
+    if (const geom::TrianglePatch* t = selected_triangle(ctx.doc)) {
+        // A Bezier triangle has no knots: every b_ijk acts everywhere.
+        for (std::size_t k = 0; k < t->points.size(); ++k)
+            if (t->weights[k] != 0) pts.push_back(t->points[k]);
+    } else if (const geom::Surface* s = current_surface(ctx.doc, &obj)) {
+        const glm::dvec2 uv = indicator_params(ctx.doc, *obj);
+        pts = deboor_acting_points(geom::deboor_surface(*s, uv.x, uv.y), s->degree_v);
+    }
     if (pts.empty()) return;
     const Rect& r = ctx.ui.view_rect;
     // fit_distance stays the whole scene's: the Zoom slider then reads above 100%.

@@ -40,8 +40,10 @@ void note_action(AppContext& ctx, std::string text, bool refused);
 // next edit, undo or redo made it stale.
 const ActionNote* current_action_note(const AppContext& ctx);
 
-// De Boor's step control: the number of steps of the current surface's construction (the
-// u-stage's levels, then the v-stage's), and moving through them.
+// De Boor's step control: the last step of the current surface's construction (steps 0 ..
+// p_u + p_v + 1: the u-stage's levels, then the v-stage's), and moving through them. For a
+// selected triangle it is de Casteljau's instead: steps 0 .. n, step l showing level l (0 the
+// control points, n the point S(r, s, t)), so the count returned is n.
 int deboor_step_count(const AppContext& ctx);
 void deboor_step(AppContext& ctx, int delta); // -1 back, +1 forward (from "all": restart)
 void deboor_toggle_play(AppContext& ctx, double now_seconds);
@@ -50,7 +52,8 @@ void deboor_toggle_play(AppContext& ctx, double now_seconds);
 // Called every frame (deboor_tick) and by the de Boor tab.
 void clamp_deboor_step(AppContext& ctx);
 // Frames the 3D view's camera on the (p_u + 1) x (p_v + 1) control points that act at the
-// indicator (the viewing angles kept; `F` frames everything again).
+// indicator, or a selected triangle's control points (the viewing angles kept; `F` frames
+// everything again).
 void zoom_to_acting_patch(AppContext& ctx);
 // Advances a playing animation; returns whether it is still playing (the window keeps
 // drawing frames while it does).

@@ -17,7 +17,7 @@ namespace {
 struct Report {
     std::string path;
     std::map<std::string, std::array<float, 4>> rects;
-    std::map<std::string, double> facts;
+    std::map<std::string, nlohmann::json> facts;
     std::string last_written;
 };
 
@@ -46,6 +46,10 @@ void report_point(const std::string& name, float x, float y) {
 
 void report_fact(const std::string& name, double value) {
     if (ui_report_enabled()) report().facts[name] = value;
+}
+
+void report_fact(const std::string& name, const std::vector<double>& values) {
+    if (ui_report_enabled()) report().facts[name] = values;
 }
 
 void report_item(const std::string& name) {

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace isoparm::ui {
 
@@ -20,6 +21,8 @@ void report_rect(const std::string& name, float x, float y, float w, float h);
 void report_point(const std::string& name, float x, float y);
 // A number a panel shows (e.g. how many patch borders are kept), under "facts".
 void report_fact(const std::string& name, double value);
+// A tuple of numbers shown together (a barycentric (r, s, t)), as a JSON array under "facts".
+void report_fact(const std::string& name, const std::vector<double>& values);
 // At the end of a frame: writes the report when it differs from the last one written.
 void flush_ui_report(const AppContext& ctx);
 

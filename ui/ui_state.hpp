@@ -24,6 +24,7 @@
 #include "ui/view/layout.hpp"
 #include "ui/view/picking.hpp"
 #include "ui/view/scene_draw.hpp"
+#include "ui/view/triangle_domain.hpp"
 
 namespace isoparm::ui {
 
@@ -322,6 +323,11 @@ struct UiState {
     std::string status;  // last message (errors of refused edits)
     StatusAge status_age;
     HeatMapCache heat;
+    // The triangle's panels (ui/panels/triangle_*.cpp): the basis heat map over the domain
+    // triangle, recomputed when the degree, weights or point change; and why the last typed
+    // r, s or t was refused (the indicator stays; cleared by the next accepted value or drag).
+    TriangleHeat triangle_heat;
+    std::string barycentric_refusal;
     ImplicitForm implicit;
     RecoveryPrompt recovery;
     CurveDesignerState curve;

@@ -403,6 +403,74 @@ def file_export_then_import(s, ctx):
     s.wait_for("one undo removes them all", lambda r: r["objects"] == before)
 
 
+def near(a, b, tol):
+    return all(abs(x - y) <= tol for x, y in zip(a, b))
+
+
+def triangle_panels_trace_step_basis(s, ctx):
+    """tests/ui/scenes/triangle-panels.json (a rational cubic triangle, b111 of weight 2
+    selected): a press on the tracing triangle's r = 1 corner puts the indicator (r, s, t)
+    there, a drag past the edge keeps it on the triangle; r typed as 1.5 is refused and moves
+    nothing, 0.5 is taken with s : t kept; the de Boor tab steps de Casteljau's levels 0..3 (10, 6, 3, 1 points) with
+    > and ]; the Basis tab's R111 peaks at the centre at 2 B / (1 + B), B = 6/27, and the
+    basis functions sum to 1."""
+    vertex = s.rect("tracing/triangle/r1")
+    s.click(vertex[0] - 1, vertex[1] - 1)
+    # A pixel is 0.01 of a side 100 px long (presentation mode on a projector).
+    r = s.wait_for("the indicator at r = 1",
+                   lambda r: near(r["facts"].get("tracing/barycentric", [0, 0, 0]), [1, 0, 0], 0.05))
+    check(near(s.save()["barycentric"], r["facts"]["tracing/barycentric"], 1e-12),
+          "the scene's barycentric is not the tracing panel's")
+    apex = s.rect("tracing/triangle/s1")
+    s.drag(apex[0], apex[1] + 5, 400, -200)  # far past the r = 0 ... t = 0 corner
+    time.sleep(0.5)  # the frame after the release
+    p = s.report()["facts"]["tracing/barycentric"]
+    check(p[0] < 0.98, f"the drag from the apex did not move the indicator: {p}")
+    check(min(p) >= 0 and abs(sum(p) - 1) < 1e-12, f"dragged outside: (r, s, t) = {p}")
+    ctx.shot(s, "triangle-dragged")
+    set_field(s, "tracing/r", "1.5")
+    r = s.wait_for("r = 1.5 refused", lambda r: r["facts"].get("tracing/barycentric_refused") == 1)
+    check(r["facts"]["tracing/barycentric"] == p, "a refused r moved the indicator")
+    ctx.shot(s, "triangle-refused")
+    set_field(s, "tracing/r", "0.5")
+    r = s.wait_for("r = 0.5 taken", lambda r: r["facts"].get("tracing/barycentric_refused") == 0)
+    q = r["facts"]["tracing/barycentric"]
+    check(abs(q[0] - 0.5) < 1e-12 and abs(sum(q) - 1) < 1e-12, f"r = 0.5 gave {q}")
+    if p[1] + p[2] > 1e-6 and q[2] > 0:
+        check(abs(q[1] / q[2] - p[1] / p[2]) < 1e-9, f"s : t not kept: {p} -> {q}")
+
+    s.click_named("tab/de Boor")
+    s.wait_for("every level listed", lambda r: r["facts"].get("deboor/level_points") == 20)
+    s.click_named("deboor/forward")
+    s.wait_for("the control points", lambda r: r["facts"].get("deboor/level") == 0 and
+               r["facts"].get("deboor/level_points") == 10)
+    for level, points in ((1, 6), (2, 3), (3, 1), (3, 1)):
+        s.key("bracketright")
+        s.wait_for(f"level {level}", lambda r: r["facts"].get("deboor/level") == level and
+                   r["facts"].get("deboor/level_points") == points)
+    ctx.shot(s, "casteljau-level-3")
+
+    s.click_named("tab/Basis")
+    B = 6 / 27
+    r = s.wait_for("R111's maximum",
+                   lambda r: abs(r["facts"].get("basis/triangle_max", 0) - 2 * B / (1 + B)) < 1e-9)
+    check(abs(r["facts"]["basis/triangle_sum"] - 1) < 1e-12,
+          f"the basis sums to {r['facts']['basis/triangle_sum']}")
+    # A short tab scrolls: bring the peak into view before pressing on it.
+    panel = s.rect("panel/Basis and de Boor")
+    for _ in range(10):
+        x, y, w, h = s.rect("basis/triangle/peak")
+        if y < panel[1] + panel[3] - 10:
+            break
+        s.move(panel[0] + panel[2] / 2, panel[1] + panel[3] / 2)
+        s.xdo("click", 5)
+        time.sleep(0.3)
+    s.click(x, y)
+    r = s.wait_for("the indicator at the peak",
+                   lambda r: r["facts"].get("basis/triangle_value", 0) > 0.97 * 2 * B / (1 + B))
+    ctx.shot(s, "basis-heat-map")
+
+
 def continuity_tab_measures_the_borders(s, ctx):
     """The paper's Fig. 6c (three patches, C1 kept): the Continuity tab measures all three
     borders as joined; a point dragged with continuity off opens a gap the tab shows."""
@@ -529,6 +597,10 @@ SCENARIOS = [
     ("lesson", "fig3b-weight-5.json", lesson_steps_from_pause_to_pause),
     ("toolbox", "fig8-revolution.json", toolbox_split_knot_then_convert),
     ("fit_panel", "fig3b-weight-5.json", fit_panel_least_squares),
+    # Its own scene (beside this file, not in the gallery): a rational cubic triangle, b111 of
+    # weight 2 selected.
+    ("triangle_panels", os.path.join(os.path.dirname(os.path.abspath(__file__)), "scenes",
+                                     "triangle-panels.json"), triangle_panels_trace_step_basis),
     ("export_import", "fig8-revolution.json", file_export_then_import),
     ("continuity_tab", "fig6c-split-left-v05.json", continuity_tab_measures_the_borders),
     ("multires_tab", "fig3b-weight-5.json", multires_tab_drags_a_coarse_point),

@@ -1,6 +1,7 @@
 // The basis-function panel (partition of unity): for the selected control point, R_ij at
 // the indicator, its support as a heat map over the domain, and N_i(u) and N_j(v).
-// Every value plotted comes from core (geom::all_basis, geom::rational_basis_ij).
+// Every value plotted comes from core (geom::all_basis, geom::rational_basis_ij). A selected
+// triangular patch gets B^n_ijk over its domain triangle instead (triangle_basis.cpp).
 #include <algorithm>
 #include <cmath>
 #include <imgui.h>
@@ -10,7 +11,9 @@
 #include "core/geom/basis.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/tessellate.hpp"
+#include "ui/panels/heat_color.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/panels/triangle_panels.hpp"
 #include "ui/view/canvas_map.hpp"
 #include "ui/view/doc_access.hpp"
 #include "ui/view/mesh_data.hpp"
@@ -24,26 +27,6 @@ constexpr int curve_samples = 161;
 
 ImVec2 iv(const glm::dvec2& p) {
     return {static_cast<float>(p.x), static_cast<float>(p.y)};
-}
-
-// A perceptually ordered ramp (dark blue, purple, orange, yellow) for t in [0, 1]; negative
-// values (negative weights) use a separate cyan ramp so the sign is never ambiguous.
-ImU32 heat_color(float t) {
-    static const float stops[5][3] = {{0.05f, 0.03f, 0.20f},
-                                      {0.35f, 0.08f, 0.50f},
-                                      {0.75f, 0.20f, 0.35f},
-                                      {0.97f, 0.55f, 0.10f},
-                                      {0.99f, 0.95f, 0.45f}};
-    if (t < 0) {
-        const float a = std::clamp(-t, 0.f, 1.f);
-        return ImGui::ColorConvertFloat4ToU32(ImVec4(0.05f, 0.1f + 0.6f * a, 0.2f + 0.7f * a, 1));
-    }
-    const float x = std::clamp(t, 0.f, 1.f) * 4;
-    const int k = std::min(static_cast<int>(x), 3);
-    const float f = x - static_cast<float>(k);
-    float c[3];
-    for (int n = 0; n < 3; ++n) c[n] = stops[k][n] + (stops[k + 1][n] - stops[k][n]) * f;
-    return ImGui::ColorConvertFloat4ToU32(ImVec4(c[0], c[1], c[2], 1));
 }
 
 // Recomputes the heat map only when the surface or the point changed.
@@ -162,6 +145,12 @@ void basis_curves(const AppContext& ctx, const geom::Knots& U, int p, int n, int
 } // namespace
 
 void draw_basis_plot_panel(AppContext& ctx) {
+    // A selected triangular patch has its own version of the panel (Farin ch. 17).
+    const doc::Object* triangle = nullptr;
+    if (const geom::TrianglePatch* t = selected_triangle(ctx.doc, &triangle)) {
+        draw_triangle_basis(ctx, *triangle, *t);
+        return;
+    }
     const doc::Object* obj = nullptr;
     const geom::Surface* s = current_surface(ctx.doc, &obj);
     if (!s) {

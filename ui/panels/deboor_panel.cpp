@@ -1,11 +1,13 @@
 // The de Boor tab: step control (level by level, back and forth, animated play) and every
-// intermediate value of the construction at the indicator, u-stage then v-stage.
+// intermediate value of the construction at the indicator, u-stage then v-stage. A selected
+// triangular patch gets de Casteljau's construction instead (triangle_casteljau.cpp).
 #include <cstdio>
 #include <imgui.h>
 #include <string>
 
 #include "core/geom/deboor.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/panels/triangle_panels.hpp"
 #include "ui/surface_actions.hpp"
 #include "ui/view/deboor_overlay.hpp"
 #include "ui/view/doc_access.hpp"
@@ -57,6 +59,12 @@ void triangle_lines(const geom::DeBoorTriangle& t, bool u_stage, int row, int up
 } // namespace
 
 void draw_deboor_panel(AppContext& ctx) {
+    // A selected triangular patch has its own version of the panel (Farin ch. 17).
+    const doc::Object* triangle = nullptr;
+    if (const geom::TrianglePatch* t = selected_triangle(ctx.doc, &triangle)) {
+        draw_triangle_casteljau(ctx, *triangle, *t);
+        return;
+    }
     const doc::Object* obj = nullptr;
     const geom::Surface* s = current_surface(ctx.doc, &obj);
     if (!s) {

@@ -1,5 +1,6 @@
 // The tracing panel: the domain square with the draggable position indicator (u, v) and
-// the u and v knots as ticks labelled with their values and multiplicities.
+// the u and v knots as ticks labelled with their values and multiplicities. A selected
+// triangular patch gets its domain triangle and (r, s, t) instead (triangle_tracing.cpp).
 #include <algorithm>
 #include <cstdio>
 #include <imgui.h>
@@ -11,6 +12,7 @@
 #include "core/geom/knots.hpp"
 #include "ui/panels/flow.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/panels/triangle_panels.hpp"
 #include "ui/surface_actions.hpp"
 #include "ui/theme.hpp"
 #include "ui/ui_report.hpp"
@@ -286,6 +288,12 @@ void rational_toggles(AppContext& ctx) {
 } // namespace
 
 void draw_tracing_panel(AppContext& ctx) {
+    // A selected triangular patch has its own version of the panel (Farin ch. 17).
+    const doc::Object* triangle = nullptr;
+    if (const geom::TrianglePatch* t = selected_triangle(ctx.doc, &triangle)) {
+        draw_triangle_tracing(ctx, *triangle, *t);
+        return;
+    }
     const doc::Object* obj = nullptr;
     const geom::Surface* s = current_surface(ctx.doc, &obj);
     if (!s) {
