@@ -15,8 +15,8 @@ const doc::Object* selected_triangle(const AppContext& ctx) {
 }
 
 std::string barycentric_text(const geom::Barycentric& p) {
-    return "(" + geom::format_number(p[0]) + ", " + geom::format_number(p[1]) + ", " +
-           geom::format_number(p[2]) + ")";
+    return "(" + geom::format_short(p[0], 3) + ", " + geom::format_short(p[1], 3) + ", " +
+           geom::format_short(p[2], 3) + ")";
 }
 
 ActionState checked(std::string label, const doc::Command& cmd, const doc::Document& d) {

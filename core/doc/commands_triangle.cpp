@@ -140,8 +140,8 @@ public:
     }
 
     std::string label() const override {
-        return "Split triangle at (" + geom::format_number(at_[0]) + ", " +
-               geom::format_number(at_[1]) + ", " + geom::format_number(at_[2]) + ")";
+        return "Split triangle at (" + geom::format_short(at_[0]) + ", " +
+               geom::format_short(at_[1]) + ", " + geom::format_short(at_[2]) + ")";
     }
     std::size_t memory_bytes() const override {
         return sizeof(*this) + before_.name.size() + detail::shape_bytes(before_.shape);

@@ -15,4 +15,12 @@ std::string format_number(double x) {
     return std::string(buf, end);
 }
 
+std::string format_short(double x, int digits) {
+    if (!std::isfinite(x)) return format_number(x);
+    char buf[64];
+    auto [end, ec] = std::to_chars(buf, buf + sizeof buf, x, std::chars_format::general, digits);
+    (void)ec;
+    return std::string(buf, end);
+}
+
 } // namespace isoparm::geom

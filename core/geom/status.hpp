@@ -100,5 +100,7 @@ inline std::string pointer_step(long k) {
 
 // Shortest round-trip text of a double, for messages ("0.4", "1e-09").
 std::string format_number(double x);
+// `digits` significant digits, for labels a person reads ("0.3333", not 0.3333333333333333).
+std::string format_short(double x, int digits = 4);
 
 } // namespace isoparm::geom

@@ -60,6 +60,11 @@ void Recorder::observe(const doc::Document& doc,
     if (doc.view.indicator != view_.indicator)
         append_or_replace({{"indicator", {doc.view.indicator.x, doc.view.indicator.y}}},
                           "indicator");
+    if (doc.view.barycentric != view_.barycentric)
+        append_or_replace(
+            {{"barycentric",
+              {doc.view.barycentric[0], doc.view.barycentric[1], doc.view.barycentric[2]}}},
+            "barycentric");
     if (doc.view.display != view_.display)
         append_or_replace({{"display", display_to_json(doc.view.display)}}, "display");
     if (doc.continuity != continuity_)

@@ -27,9 +27,9 @@ constexpr std::uintmax_t max_script_bytes = 64u << 20;
 constexpr std::size_t max_steps = 100000;
 
 // The member that says what a step is (besides "command", which makes it a command).
-constexpr std::string_view step_kinds[] = {"undo",       "redo",       "select", "indicator",
-                                           "display",    "continuity", "camera", "deboor_step",
-                                           "screenshot", "caption",    "pause",  "expect"};
+constexpr std::string_view step_kinds[] = {
+    "undo",   "redo",        "select",     "indicator", "barycentric", "display", "continuity",
+    "camera", "deboor_step", "screenshot", "caption",   "pause",       "expect"};
 
 std::string kinds_list() {
     std::string out = "command";
@@ -257,6 +257,11 @@ Expected<Step> read_step(const json& j, const std::string& at) {
         if (!uv) return uv.error();
         return step(IndicatorStep{*uv});
     }
+    if (kind == "barycentric") {
+        auto rst = barycentric_from_json(v, kat);
+        if (!rst) return rst.error();
+        return step(BarycentricStep{*rst});
+    }
     if (kind == "display") {
         // Checked against the defaults now; applied to the display as it is when the step runs.
         auto d = display_from_json(v, kat, doc::DisplaySettings{});
@@ -312,6 +317,41 @@ std::string list_text(const std::vector<double>& v) {
     return out + "]";
 }
 
+// A triangular patch: its degree and its control point b_ijk (i, j), k = n - i - j; it has
+// no knots and no tensor-product type.
+std::vector<std::string> unmet_on_triangle(const ExpectStep& e, const std::string& object_name,
+                                           const geom::TrianglePatch& t) {
+    std::vector<std::string> out;
+    const std::string tol = " (tolerance " + geom::format_number(e.tolerance) + ")";
+    const std::string name = "'" + object_name + "'";
+    if (e.knots || e.type)
+        out.push_back(name + " is a triangular patch: it has no knots and no spline type");
+    if (e.degree && t.degree != *e.degree)
+        out.push_back("expected " + name + "'s degree to be " + std::to_string(*e.degree) +
+                      ", it is " + std::to_string(t.degree));
+    if (!e.i) return out;
+    const int i = *e.i, j = e.j.value_or(-1);
+    const std::string label =
+        "b" + std::to_string(i) + "," + std::to_string(j) + "," + std::to_string(t.degree - i - j);
+    if (i < 0 || j < 0 || i + j > t.degree) {
+        out.push_back(name + " has no control point b_ijk with i = " + std::to_string(i) +
+                      ", j = " + std::to_string(j));
+        return out;
+    }
+    const auto at = static_cast<std::size_t>(geom::TrianglePatch::index(t.degree, i, j));
+    const glm::dvec3 p = t.points[at];
+    if (e.position &&
+        !(near(p.x, e.position->x, e.tolerance) && near(p.y, e.position->y, e.tolerance) &&
+          near(p.z, e.position->z, e.tolerance)))
+        out.push_back("expected " + label + " of " + name + " at " + vec_text(*e.position) +
+                      ", found " + vec_text(p) + tol);
+    if (e.weight && !near(t.weights[at], *e.weight, e.tolerance))
+        out.push_back("expected the weight of " + label + " of " + name + " to be " +
+                      geom::format_number(*e.weight) + ", found " +
+                      geom::format_number(t.weights[at]) + tol);
+    return out;
+}
+
 // Every way the document differs from the expectation, one sentence each.
 std::vector<std::string> unmet(const ExpectStep& e, const doc::Document& d) {
     std::vector<std::string> out;
@@ -332,6 +372,7 @@ std::vector<std::string> unmet(const ExpectStep& e, const doc::Document& d) {
     }
     const geom::Surface* s = o->surface();
     const geom::Curve* c = o->curve();
+    if (const geom::TrianglePatch* t = o->triangle()) return unmet_on_triangle(e, o->name, *t);
     if (!s && !c) {
         out.push_back("'" + o->name +
                       "' is an implicit surface: it has no points, knots or degree");
@@ -491,6 +532,8 @@ geom::Status run_step(const Step& step, ScriptState& state, const ScriptHooks& h
         state.doc.view.selection = *s;
     } else if (const auto* ind = std::get_if<IndicatorStep>(&a)) {
         state.doc.view.indicator = ind->uv;
+    } else if (const auto* bary = std::get_if<BarycentricStep>(&a)) {
+        state.doc.view.barycentric = bary->rst;
     } else if (const auto* disp = std::get_if<DisplayStep>(&a)) {
         auto d = display_from_json(disp->display, "/display", state.doc.view.display);
         if (!d) return at_step(d.error());

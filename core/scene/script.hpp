@@ -31,6 +31,9 @@ struct SelectStep {
 struct IndicatorStep {
     glm::dvec2 uv{0.5, 0.5}; // over the current domain, in [0, 1]^2
 };
+struct BarycentricStep {
+    geom::Barycentric rst{1.0 / 3, 1.0 / 3, 1.0 / 3}; // a triangle's indicator (r, s, t)
+};
 struct DisplayStep {
     nlohmann::json display; // as a scene file's "display"; members not named keep their value
 };
@@ -75,7 +78,7 @@ struct ExpectStep {
 
 using StepAction = std::variant<doc::CommandSpec, UndoStep, RedoStep, SelectStep, IndicatorStep,
                                 DisplayStep, ContinuityStep, CameraStep, DeBoorStep, ScreenshotStep,
-                                CaptionStep, PauseStep, ExpectStep>;
+                                CaptionStep, PauseStep, ExpectStep, BarycentricStep>;
 
 struct Step {
     StepAction action;

@@ -80,7 +80,9 @@ inline int expect_round_trips(scene::ExportFormat export_format, scene::ImportFo
         std::vector<const doc::Object*> originals;
         const bool exact_weights = format != scene::ImportFormat::obj;
         for (const doc::Object& o : doc->objects) {
-            if (o.kind() == doc::ObjectKind::implicit) continue;
+            // Neither has an exact form in the exchange formats (export refuses them).
+            if (o.kind() == doc::ObjectKind::implicit || o.kind() == doc::ObjectKind::triangle)
+                continue;
             if (exact_weights) {
                 const exchange::ExactShape shape = o.surface() ? exchange::ExactShape(*o.surface())
                                                                : exchange::ExactShape(*o.curve());

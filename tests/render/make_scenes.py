@@ -228,7 +228,33 @@ def figure_scenes(isoparm):
                 for k, c in enumerate(sections)]
     scenes["fig9-skinned"] = scene(objects, {"control_points": False, "control_net": False},
                                    selection={"object": 1})
+
+    # The paper's future work: a rational cubic triangular Bezier patch (Farin ch. 17), the
+    # flat triangle of Surface > New triangular patch with its middle point b111 lifted and
+    # weighted 2, the edge points b210 and b120 raised and b012 lowered.
+    scenes["triangle-cubic"] = triangle_scene()
     return scenes
+
+
+def triangle_scene():
+    corners = [(2.0, 0.0, 0.0), (-1.0, 3 ** 0.5, 0.0), (-1.0, -(3 ** 0.5), 0.0)]
+    heights = {(1, 1, 1): 1.5, (2, 1, 0): 0.5, (1, 2, 0): 0.5, (0, 1, 2): -0.4}
+    points, weights = [], []
+    n = 3
+    for i in range(n, -1, -1):  # the protocol's order: b_n00 first, b_00n last
+        for j in range(n - i, -1, -1):
+            k = n - i - j
+            p = [round((i * corners[0][a] + j * corners[1][a] + k * corners[2][a]) / n, 4)
+                 for a in range(3)]
+            p[2] = heights.get((i, j, k), 0.0)
+            points.append(p)
+            weights.append(2.0 if (i, j, k) == (1, 1, 1) else 1.0)
+    triangle = {"type": "rational_triangle_bezier", "degree": n, "points": points,
+                "weights": weights}
+    content = scene([{"id": 1, "name": "dome", "kind": "triangle", "triangle": triangle}], {},
+                    selection={"object": 1, "point": [1, 1]})
+    content["barycentric"] = [0.25, 0.25, 0.5]
+    return content
 
 
 # --- writing --------------------------------------------------------------------------------

@@ -581,6 +581,40 @@ def rational_picture_and_homogeneous_view(s, ctx):
                lambda r: r["facts"].get("tracing/zero_set_segments") == 0)
 
 
+def triangle_patch_new_split_elevate(s, ctx):
+    """Surface > New triangular patch > Degree 3 adds a flat cubic triangle with b111 selected;
+    the control point panel's z field lifts it; Split triangle at the indicator makes three
+    patches and Ctrl+Z takes them back; Elevate triangle degree makes it a quartic."""
+    before = len(objects_of(s.save()))
+    s.menu("Surface", "New triangular patch", "Degree 3")
+    added = s.save()
+    triangles = objects_of(added, "triangle")
+    check(len(objects_of(added)) == before + 1 and len(triangles) == 1,
+          "New triangular patch did not add one triangle")
+    tri = triangles[0]
+    check(tri["triangle"]["degree"] == 3 and len(tri["triangle"]["points"]) == 10,
+          "a cubic triangle has 10 control points")
+    check(added["selection"] == {"object": tri["id"], "point": [1, 1]},
+          f"b111 is not selected: {added['selection']}")
+    set_field(s, "cp/z", "1.5")
+    lifted = by_name(s.save(), tri["name"])["triangle"]["points"]
+    check(lifted[4][2] == 1.5, f"b111 (point 4) is at z = {lifted[4][2]}, not 1.5")
+    ctx.shot(s, "lifted")
+    s.menu("Surface", "triangle/split")
+    split = s.save()
+    check(len(objects_of(split, "triangle")) == 3, "the split did not make three triangles")
+    ctx.shot(s, "split")
+    s.key("ctrl+z")
+    back = s.save()
+    check(len(objects_of(back, "triangle")) == 1 and
+          by_name(back, tri["name"])["triangle"]["points"] == lifted,
+          "Ctrl+Z did not give the one lifted triangle back")
+    s.menu("Surface", "triangle/elevate")
+    elevated = by_name(s.save(), tri["name"])["triangle"]
+    check(elevated["degree"] == 4 and len(elevated["points"]) == 15,
+          f"elevation gave degree {elevated['degree']}, {len(elevated['points'])} points")
+
+
 SCENARIOS = [
     ("window_fits", "fig3b-weight-5.json", window_fits_the_screen),
     ("window_size", "fig3b-weight-5.json", window_size_is_remembered),
@@ -606,6 +640,7 @@ SCENARIOS = [
     ("multires_tab", "fig3b-weight-5.json", multires_tab_drags_a_coarse_point),
     ("blossom_tab", "curve-designer.json", blossom_tab_reproduces_points),
     ("rational_picture", "fig3b-weight-5.json", rational_picture_and_homogeneous_view),
+    ("triangle_patch", "fig3b-weight-5.json", triangle_patch_new_split_elevate),
 ]
 
 

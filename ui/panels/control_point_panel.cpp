@@ -169,8 +169,9 @@ void coordinate_fields(AppContext& ctx, const doc::Object& obj) {
         ImGui::SetNextItemWidth(row ? in_row : std::max(avail - label, whole));
         double value = p[a];
         // One value per widget: each field is one edit (and one undo step).
-        if (ImGui::InputDouble(labels[a], &value, 0, 0, "%.4f") && std::isfinite(value) &&
-            value != p[a]) {
+        const bool edited = ImGui::InputDouble(labels[a], &value, 0, 0, "%.4f");
+        report_item(std::string("cp/") + labels[a]);
+        if (edited && std::isfinite(value) && value != p[a]) {
             p[a] = value;
             ctx.execute(doc::move_control_point(obj.id, i, j, p));
         }

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <imgui.h>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #define GLFW_INCLUDE_NONE
@@ -98,10 +99,15 @@ void refine_items(AppContext& ctx) {
     ImGui::TextDisabled("At the indicator (shape unchanged)");
     // A selected triangle has one degree and a barycentric indicator: its own two items.
     if (const doc::Object* sel = ctx.doc.selected(); sel && sel->triangle()) {
-        for (const auto& [state, run] :
-             {std::pair{elevate_triangle_state(ctx), &elevate_selected_triangle},
-              std::pair{split_triangle_state(ctx), &split_triangle_at_indicator}}) {
-            if (menu_item(state.label.c_str(), nullptr, false, state.enabled)) run(ctx);
+        // The labels carry numbers; the report names them for the GUI tests too.
+        for (const auto& [state, run, name] :
+             {std::tuple{elevate_triangle_state(ctx), &elevate_selected_triangle,
+                         "menu/triangle/elevate"},
+              std::tuple{split_triangle_state(ctx), &split_triangle_at_indicator,
+                         "menu/triangle/split"}}) {
+            const bool picked = menu_item(state.label.c_str(), nullptr, false, state.enabled);
+            report_item(name);
+            if (picked) run(ctx);
             if (!state.enabled && !state.why.empty() &&
                 ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
                 wrapped_tooltip(state.why);
