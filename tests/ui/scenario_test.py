@@ -408,10 +408,10 @@ def near(a, b, tol):
 
 
 def triangle_panels_trace_step_basis(s, ctx):
-    """tests/ui/scenes/triangle-panels.json (a rational cubic triangle, b111 of weight 2
-    selected): a press on the tracing triangle's r = 1 corner puts the indicator (r, s, t)
-    there, a drag past the edge keeps it on the triangle; r typed as 1.5 is refused and moves
-    nothing, 0.5 is taken with s : t kept; the de Boor tab steps de Casteljau's levels 0..3 (10, 6, 3, 1 points) with
+    """triangle-cubic.json (a rational cubic triangle, b111 of weight 2 selected): a press on
+    the tracing triangle's r = 1 corner puts the indicator (r, s, t) there, a drag past the
+    edge keeps it on the triangle; r typed as 1.5 is refused and moves nothing, 0.5 is taken
+    with s : t kept; the de Boor tab steps de Casteljau's levels 0..3 (10, 6, 3, 1 points) with
     > and ]; the Basis tab's R111 peaks at the centre at 2 B / (1 + B), B = 6/27, and the
     basis functions sum to 1."""
     vertex = s.rect("tracing/triangle/r1")
@@ -631,10 +631,7 @@ SCENARIOS = [
     ("lesson", "fig3b-weight-5.json", lesson_steps_from_pause_to_pause),
     ("toolbox", "fig8-revolution.json", toolbox_split_knot_then_convert),
     ("fit_panel", "fig3b-weight-5.json", fit_panel_least_squares),
-    # Its own scene (beside this file, not in the gallery): a rational cubic triangle, b111 of
-    # weight 2 selected.
-    ("triangle_panels", os.path.join(os.path.dirname(os.path.abspath(__file__)), "scenes",
-                                     "triangle-panels.json"), triangle_panels_trace_step_basis),
+    ("triangle_panels", "triangle-cubic.json", triangle_panels_trace_step_basis),
     ("export_import", "fig8-revolution.json", file_export_then_import),
     ("continuity_tab", "fig6c-split-left-v05.json", continuity_tab_measures_the_borders),
     ("multires_tab", "fig3b-weight-5.json", multires_tab_drags_a_coarse_point),
