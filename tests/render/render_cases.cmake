@@ -1,7 +1,8 @@
 # The golden-image cases, shared by the tests (CMakeLists.txt) and refresh_goldens.cmake: every
 # scene in assets/scenes as the 3D view alone at 640x400 (small is fast on a CPU rasteriser),
 # and a few also as the whole workstation at 1280x800 so that the panels are covered too.
-set(ISOPARM_RENDER_WORKSTATION_SCENES curve-designer fig3b-weight-5 fig4-deboor fig6c-split-left-v05)
+set(ISOPARM_RENDER_WORKSTATION_SCENES curve-designer fig3b-weight-5 fig4-deboor fig6c-split-left-v05
+    triangle-cubic)
 
 # Sets out_var to a list of cases "NAME|SCENE|SIZE|VIEW", sorted by scene.
 function(isoparm_render_cases scene_dir out_var)
