@@ -418,6 +418,19 @@ Expected<geom::TrianglePatch> triangle_from_json(const json& j) {
     return t;
 }
 
+Expected<geom::Barycentric> triangle_param_from_json(const json& v, const std::string& path) {
+    if (!v.is_array() || v.size() != 3)
+        return schema_error("a triangle parameter is [r, s, t]", path);
+    geom::Barycentric p{};
+    for (std::size_t k = 0; k < 3; ++k) {
+        Expected<double> x =
+            read_finite(v[k], path + "/" + std::to_string(k), "a barycentric coordinate");
+        if (!x) return x.error();
+        p[k] = *x;
+    }
+    return p;
+}
+
 json triangle_to_json(const geom::TrianglePatch& t) {
     json j = json::object();
     j["type"] = t.rational ? "rational_triangle_bezier" : "triangle_bezier";

@@ -23,6 +23,10 @@ nlohmann::json curve_to_json(const geom::Curve& c);
 // "degree": n, "points": [...], "weights": [...]} (geom/triangle.hpp gives the order).
 geom::Expected<geom::TrianglePatch> triangle_from_json(const nlohmann::json& j);
 nlohmann::json triangle_to_json(const geom::TrianglePatch& t);
+// A triangle parameter [r, s, t]: three finite numbers (`schema` at `path`, or at "path/k" for
+// the coordinate at fault). Whether it lies in the triangle is the caller's rule.
+geom::Expected<geom::Barycentric> triangle_param_from_json(const nlohmann::json& v,
+                                                           const std::string& path);
 nlohmann::json surface_to_json(const geom::Surface& s);
 
 // A point [x, y] or [x, y, z] of finite numbers (z = 0 when omitted); `what` names it in the

@@ -28,15 +28,9 @@ Expected<geom::TrianglePatch> read_triangle(const json& request) {
 // [r, s, t]: numbers, each >= 0, summing to 1 within 1e-12 (`domain` otherwise); `strict`
 // (split) also wants each > 0.
 Expected<geom::Barycentric> read_barycentric(const json& v, const std::string& path, bool strict) {
-    if (!v.is_array() || v.size() != 3)
-        return schema_error("a triangle parameter is [r, s, t]", path);
-    geom::Barycentric p{};
-    for (std::size_t k = 0; k < 3; ++k) {
-        Expected<double> x =
-            read_finite(v[k], path + "/" + std::to_string(k), "a barycentric coordinate");
-        if (!x) return x.error();
-        p[k] = *x;
-    }
+    Expected<geom::Barycentric> read = triangle_param_from_json(v, path);
+    if (!read) return read.error();
+    const geom::Barycentric p = *read;
     const double sum = p[0] + p[1] + p[2];
     const bool inside =
         strict ? p[0] > 0 && p[1] > 0 && p[2] > 0 : p[0] >= 0 && p[1] >= 0 && p[2] >= 0;

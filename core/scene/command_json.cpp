@@ -23,20 +23,6 @@ constexpr auto max_id = static_cast<std::int64_t>(max_object_id);
 
 // Reads a command's members, keeping the first error: after one, every read answers a default
 // and `error` holds the refusal.
-// [r, s, t] as numbers; whether it lies in the triangle is the command's check.
-Expected<geom::Barycentric> triangle_param_from_json(const json& v, const std::string& at) {
-    if (!v.is_array() || v.size() != 3)
-        return schema_error("a triangle parameter is [r, s, t]", at);
-    geom::Barycentric p{};
-    for (std::size_t k = 0; k < 3; ++k) {
-        Expected<double> x =
-            read_finite(v[k], at + "/" + std::to_string(k), "a barycentric coordinate");
-        if (!x) return x.error();
-        p[k] = *x;
-    }
-    return p;
-}
-
 class Members {
 public:
     Members(const json& j, std::string at) : j_(j), at_(std::move(at)) {}

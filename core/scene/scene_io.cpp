@@ -533,17 +533,14 @@ Expected<glm::dvec2> indicator_from_json(const json& j, const std::string& at) {
 }
 
 Expected<geom::Barycentric> barycentric_from_json(const json& j, const std::string& at) {
-    if (!j.is_array() || j.size() != 3)
-        return schema_error("barycentric is [r, s, t], each >= 0, summing to 1", at);
-    geom::Barycentric rst{};
-    for (std::size_t a = 0; a < 3; ++a) {
-        auto x = read_finite(j[a], at + "/" + std::to_string(a), "a barycentric coordinate");
-        if (!x) return x.error();
-        if (*x < 0)
-            return schema_error("barycentric coordinates are >= 0, got " + geom::format_number(*x),
+    auto read = triangle_param_from_json(j, at);
+    if (!read) return read.error();
+    const geom::Barycentric rst = *read;
+    for (std::size_t a = 0; a < 3; ++a)
+        if (rst[a] < 0)
+            return schema_error("barycentric coordinates are >= 0, got " +
+                                    geom::format_number(rst[a]),
                                 at + "/" + std::to_string(a));
-        rst[a] = *x;
-    }
     if (!(std::abs(rst[0] + rst[1] + rst[2] - 1) <= 1e-12))
         return schema_error("barycentric coordinates sum to 1, these sum to " +
                                 geom::format_number(rst[0] + rst[1] + rst[2]),

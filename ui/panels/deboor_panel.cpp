@@ -9,6 +9,7 @@
 #include "ui/panels/panels.hpp"
 #include "ui/panels/triangle_panels.hpp"
 #include "ui/surface_actions.hpp"
+#include "ui/ui_report.hpp"
 #include "ui/view/deboor_overlay.hpp"
 #include "ui/view/doc_access.hpp"
 
@@ -94,20 +95,7 @@ void draw_deboor_panel(AppContext& ctx) {
                           p_u + 1, p_v + 1);
     // The step buttons on a row of their own: they must fit the narrow column in
     // presentation mode too.
-    if (ImGui::Button("|<")) deboor_step(ctx, -last - 1);
-    ImGui::SameLine();
-    if (ImGui::Button("<")) deboor_step(ctx, -1);
-    ImGui::SameLine();
-    if (ImGui::Button(player.playing ? "Pause" : "Play")) deboor_toggle_play(ctx, ImGui::GetTime());
-    ImGui::SameLine();
-    if (ImGui::Button(">")) deboor_step(ctx, +1);
-    ImGui::SameLine();
-    if (ImGui::Button("All")) {
-        player.step = -1;
-        player.playing = false;
-        ctx.doc.view.display.deboor = true;
-    }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Keys: [ and ] step, Space plays");
+    deboor_step_buttons(ctx, last);
     const DeBoorStepInfo info = deboor_step_info(player.step, p_u, p_v);
     if (player.step >= 0)
         ImGui::TextWrapped("Step %d of %d: %s", player.step, last, info.text.c_str());
@@ -156,6 +144,26 @@ void draw_deboor_panel(AppContext& ctx) {
         triangle_lines(trace.v_stage, false, -1, upto - p_u - 1, rational, stepping,
                        player.step > p_u ? player.step - p_u - 1 : -1);
     ImGui::EndChild();
+}
+
+void deboor_step_buttons(AppContext& ctx, int last) {
+    DeBoorPlayer& player = ctx.ui.deboor;
+    if (ImGui::Button("|<")) deboor_step(ctx, -last - 1);
+    ImGui::SameLine();
+    if (ImGui::Button("<")) deboor_step(ctx, -1);
+    report_item("deboor/back");
+    ImGui::SameLine();
+    if (ImGui::Button(player.playing ? "Pause" : "Play")) deboor_toggle_play(ctx, ImGui::GetTime());
+    ImGui::SameLine();
+    if (ImGui::Button(">")) deboor_step(ctx, +1);
+    report_item("deboor/forward");
+    ImGui::SameLine();
+    if (ImGui::Button("All")) {
+        player.step = -1;
+        player.playing = false;
+        ctx.doc.view.display.deboor = true;
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Keys: [ and ] step, Space plays");
 }
 
 } // namespace isoparm::ui

@@ -38,26 +38,6 @@ ImVec4 level_color(int level) {
     return {c.r, c.g, c.b, 1};
 }
 
-void step_buttons(AppContext& ctx, int last) {
-    DeBoorPlayer& player = ctx.ui.deboor;
-    if (ImGui::Button("|<")) deboor_step(ctx, -last - 1);
-    ImGui::SameLine();
-    if (ImGui::Button("<")) deboor_step(ctx, -1);
-    report_item("deboor/back");
-    ImGui::SameLine();
-    if (ImGui::Button(player.playing ? "Pause" : "Play")) deboor_toggle_play(ctx, ImGui::GetTime());
-    ImGui::SameLine();
-    if (ImGui::Button(">")) deboor_step(ctx, +1);
-    report_item("deboor/forward");
-    ImGui::SameLine();
-    if (ImGui::Button("All")) {
-        player.step = -1;
-        player.playing = false;
-        ctx.doc.view.display.deboor = true;
-    }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Keys: [ and ] step, Space plays");
-}
-
 // The rule every level applies; what it means, with this indicator's numbers, on hover (the
 // tab is short: the points come first).
 void formula_line(const geom::Barycentric& p, bool rational) {
@@ -124,7 +104,7 @@ void draw_triangle_casteljau(AppContext& ctx, const doc::Object& obj,
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Frame the %d control points (all act everywhere); F fits everything",
                           geom::TrianglePatch::count_for(n));
-    step_buttons(ctx, last);
+    deboor_step_buttons(ctx, last);
     if (player.step >= 0)
         ImGui::TextWrapped("Step %d of %d: %s", player.step, last,
                            triangle_step_text(player.step, n).c_str());

@@ -15,6 +15,10 @@ void draw_triangle_tracing(AppContext& ctx, const doc::Object& obj, const geom::
 void draw_triangle_casteljau(AppContext& ctx, const doc::Object& obj, const geom::TrianglePatch& t);
 void draw_triangle_basis(AppContext& ctx, const doc::Object& obj, const geom::TrianglePatch& t);
 
+// The de Boor tab's step row (|<, <, Play, >, All; deboor_panel.cpp), for de Casteljau's
+// construction too: `last` is the last step's number.
+void deboor_step_buttons(AppContext& ctx, int last);
+
 // Shared by the tracing and basis canvases (ui/panels/triangle_canvas.cpp).
 
 inline ImVec2 to_imvec(const glm::dvec2& p) {

@@ -193,6 +193,23 @@ void add_curve_glyphs(Overlay& out, const doc::Document& d, const SceneStyle& st
         if (!b->vertices.empty()) out.lines.push_back(std::move(*b));
 }
 
+// A spline patch's (surface or triangle) colours: the wireframe of the selected one in its own
+// colour; over a shaded patch the lines are a darker shade of it so they read as grid, not as
+// edges.
+SurfaceDraw patch_style(std::uint64_t id, bool selected, bool shaded, bool wire,
+                        const doc::Colors& col, float k) {
+    SurfaceDraw sd;
+    sd.id = id;
+    sd.shaded = shaded;
+    sd.wireframe = wire;
+    sd.fill = to_vec4(col.surface);
+    glm::vec4 w = selected ? to_vec4(col.selected_surface) : to_vec4(col.surface);
+    if (shaded) w = glm::vec4(glm::vec3(w) * 0.45f, 0.9f);
+    sd.wire = w;
+    sd.wire_width = (shaded ? 1.0f : 1.3f) * k;
+    return sd;
+}
+
 } // namespace
 
 BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
@@ -226,19 +243,9 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
         if (!o.visible) continue;
         const bool is_selected = o.id == d.view.selection.object;
         if (const geom::Surface* s = o.surface()) {
-            SurfaceDraw sd;
-            sd.id = o.id;
+            SurfaceDraw sd = patch_style(o.id, is_selected, shaded, wire, col, k);
             sd.surface = s;
             sd.density = disp.density;
-            sd.shaded = shaded;
-            sd.wireframe = wire;
-            sd.fill = to_vec4(col.surface);
-            // Wireframe of the selected surface in its own colour; over a shaded surface
-            // the lines are a darker shade of it so they read as grid, not as edges.
-            glm::vec4 w = is_selected ? to_vec4(col.selected_surface) : to_vec4(col.surface);
-            if (shaded) w = glm::vec4(glm::vec3(w) * 0.45f, 0.9f);
-            sd.wire = w;
-            sd.wire_width = (shaded ? 1.0f : 1.3f) * k;
             out.surfaces.push_back(sd);
 
             if (disp.control_net) add_net(net, *s, to_vec4(col.control_net));
@@ -292,17 +299,9 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
             const TriangleMeshes::View v =
                 triangles ? triangles->view(o.id) : TriangleMeshes::View{};
             if (v.mesh) {
-                SurfaceDraw sd;
-                sd.id = o.id;
+                SurfaceDraw sd = patch_style(o.id, is_selected, shaded, wire, col, k);
                 sd.mesh = v.mesh;
                 sd.mesh_revision = v.revision;
-                sd.shaded = shaded;
-                sd.wireframe = wire;
-                sd.fill = to_vec4(col.surface);
-                glm::vec4 w = is_selected ? to_vec4(col.selected_surface) : to_vec4(col.surface);
-                if (shaded) w = glm::vec4(glm::vec3(w) * 0.45f, 0.9f);
-                sd.wire = w;
-                sd.wire_width = (shaded ? 0.8f : 1.1f) * k;
                 out.surfaces.push_back(sd);
             }
             if (disp.control_net) add_triangle_net(net, *t, to_vec4(col.control_net));
