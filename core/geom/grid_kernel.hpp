@@ -8,7 +8,8 @@
 //      basis is stored "banded" per chunk of `lanes` samples (zeros outside each lane's span):
 //      the control points are broadcast scalars and the basis a streamed vector.
 //   2. then u, per sample row i: S(u_i, v_j) = sum_r N_r(u_i) R_{first_i + r}(v_j): the u basis
-//      values are the same for the whole row (kept in registers), R rows are contiguous.
+//      values are the same for the whole row (kept in registers), R rows are contiguous (a
+//      ring of the last p + 1 contracted rows, stored twice over).
 // Step 1 costs n_u / samples_u of step 2 per point. Every lane runs the same instructions in
 // the same order whatever the block or thread split, so results do not depend on either.
 #pragma once
@@ -33,18 +34,25 @@ struct GridArgs {
     const double* dM;
     const int* f0;
     int nc;
-    // The homogeneous net (wx, wy, wz, w), control point (a, c) at (a * n_v + c) * 4.
-    const double* Pw;
+    // The net: control point (a, c) at points[(a * n_v + c) * 3] (x, y, z) and weights[a * n_v
+    // + c]. The block forms the homogeneous (wx, wy, wz, w) of the control columns it reads
+    // itself, one control row at a time: in parallel, without a pass over the whole net per
+    // call, and on the core that then reads them.
+    const double* points;
+    const double* weights;
     int n_v;
     int i0, i1, j0, j1;
-    int samples_v; // row stride of positions / normals / status
+    int samples_v; // row stride of positions / normals
     // Outputs as x, y, z triples indexed i * samples_v + j (plain doubles: the ISA builds must
     // not instantiate inline library code, an ODR hazard across builds).
     double* positions;
-    double* normals;      // null: positions only (no derivatives are formed)
-    std::uint8_t* status; // (i - i0) * samples_v + j: 0 done, 1 degenerate normal, 2 missing
-    double* scratch;      // scratch_doubles(*this, lanes) doubles
-    bool generic;         // tests: the run-time-degree code instead of the specialised one
+    double* normals; // null: positions only (no derivatives are formed)
+    // The block's own rows, (i - i0) * (j1 - j0 + 1) + j - j0: 0 done, 1 degenerate normal,
+    // 2 missing (the block's own bytes: blocks on other threads share no cache line with it
+    // but at the ends).
+    std::uint8_t* status;
+    double* scratch; // scratch_doubles(*this, lanes) doubles
+    bool generic;    // tests: the run-time-degree code instead of the specialised one
 };
 
 enum : std::uint8_t { vertex_ok = 0, vertex_degenerate = 1, vertex_missing = 2 };

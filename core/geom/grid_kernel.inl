@@ -123,30 +123,54 @@ inline void put_xyz(double* row, const Lanes& L, const vd& x, const vd& y, const
         for (int c = 0; c < 3; ++c) row[3L * (L.j + l) + c] = tmp[3 * l + c];
 }
 
-inline int put_status(std::uint8_t* row, const Lanes& L, int missing, int degenerate) {
+// row: the block's status row, whose first byte is column j0.
+inline int put_status(std::uint8_t* row, int j0, const Lanes& L, int missing, int degenerate) {
     using namespace isoparm::geom::kernel;
     int bad = 0;
     for (int l = L.lo; l <= L.hi; ++l) {
         const std::uint8_t s = (missing >> l) & 1        ? vertex_missing
                                : ((degenerate >> l) & 1) ? vertex_degenerate
                                                          : vertex_ok;
-        row[L.j + l] = s;
+        row[L.j + l - j0] = s;
         bad += s != vertex_ok;
     }
     return bad;
 }
 
+// Four components B doubles apart.
+inline void store4(double* to, long B, const vd& x, const vd& y, const vd& z, const vd& w) {
+    store(to, x);
+    store(to + B, y);
+    store(to + 2 * B, z);
+    store(to + 3 * B, w);
+}
+
 // Step 1 for control row a: R (and Rv with v-derivatives) for chunks ch0 .. ch0 + nch - 1;
-// each of the 4 components is a row of B = nch * W doubles.
+// each of the 4 components is a row of B = nch * W doubles, stored at R and again at R +
+// mirror (see block). H receives the homogeneous control points (wx, wy, wz, w) of columns c0
+// .. c0 + width - 1 of the row first (the products homogeneous coordinates always are: x * w
+// rounded once, in every build).
 template <int NC>
-void contract_v(const GridArgs& g, int a, int ch0, int nch, double* R, double* Rv) {
+void contract_v(const GridArgs& g, int a, int ch0, int nch, double* H, int c0, int width, double* R,
+                double* Rv, long mirror) {
     const int nc = NC > 0 ? NC : g.nc;
     const long B = static_cast<long>(nch) * W;
-    const double* row = g.Pw + 4L * a * g.n_v;
+    {
+        const long first = static_cast<long>(a) * g.n_v + c0;
+        const double* xyz = g.points + 3 * first;
+        const double* wt = g.weights + first;
+        for (int c = 0; c < width; ++c) {
+            const double w = wt[c];
+            H[4 * c + 0] = xyz[3 * c + 0] * w;
+            H[4 * c + 1] = xyz[3 * c + 1] * w;
+            H[4 * c + 2] = xyz[3 * c + 2] * w;
+            H[4 * c + 3] = w;
+        }
+    }
     for (int k = 0; k < nch; ++k) {
         const int ch = ch0 + k;
         const double* m = g.M + static_cast<long>(ch) * nc * W;
-        const double* P = row + 4L * g.f0[ch];
+        const double* P = H + 4L * (g.f0[ch] - c0);
         vd x = {}, y = {}, z = {}, w = {};
         if (!Rv) {
             for (int c = 0; c < nc; ++c) {
@@ -173,15 +197,11 @@ void contract_v(const GridArgs& g, int a, int ch0, int nch, double* R, double* R
                 madd(zv, dc, P[4 * c + 2]);
                 madd(wv, dc, P[4 * c + 3]);
             }
-            store(Rv + 0 * B + k * W, xv);
-            store(Rv + 1 * B + k * W, yv);
-            store(Rv + 2 * B + k * W, zv);
-            store(Rv + 3 * B + k * W, wv);
+            store4(Rv + k * W, B, xv, yv, zv, wv);
+            store4(Rv + mirror + k * W, B, xv, yv, zv, wv);
         }
-        store(R + 0 * B + k * W, x);
-        store(R + 1 * B + k * W, y);
-        store(R + 2 * B + k * W, z);
-        store(R + 3 * B + k * W, w);
+        store4(R + k * W, B, x, y, z, w);
+        store4(R + mirror + k * W, B, x, y, z, w);
     }
 }
 
@@ -191,7 +211,7 @@ template <int P1> long row_positions(const GridArgs& g, int i, int ch0, int nch,
     const long B = static_cast<long>(nch) * W;
     const double* nu = g.Nu + static_cast<long>(i) * p1;
     double* out = g.positions + 3L * i * g.samples_v;
-    std::uint8_t* st = g.status + static_cast<long>(i - g.i0) * g.samples_v;
+    std::uint8_t* st = g.status + static_cast<long>(i - g.i0) * (g.j1 - g.j0 + 1);
     long bad = 0;
     for (int k = 0; k < nch; ++k) {
         vd x = {}, y = {}, z = {}, w = {};
@@ -213,9 +233,9 @@ template <int P1> long row_positions(const GridArgs& g, int i, int ch0, int nch,
         put_xyz(out, L, x * inv, y * inv, z * inv);
         const int missing = bits(w == 0.0);
         if (missing == 0 && L.whole()) {
-            __builtin_memset(st + j, 0, W);
+            __builtin_memset(st + (j - g.j0), 0, W);
         } else {
-            bad += put_status(st, L, missing, 0);
+            bad += put_status(st, g.j0, L, missing, 0);
         }
     }
     return bad;
@@ -232,7 +252,7 @@ long row_normals(const GridArgs& g, int i, int ch0, int nch, const double* R, co
     const double* dnu = g.dNu + static_cast<long>(i) * p1;
     double* out = g.positions + 3L * i * g.samples_v;
     double* nout = g.normals + 3L * i * g.samples_v;
-    std::uint8_t* st = g.status + static_cast<long>(i - g.i0) * g.samples_v;
+    std::uint8_t* st = g.status + static_cast<long>(i - g.i0) * (g.j1 - g.j0 + 1);
     long bad = 0;
     for (int k = 0; k < nch; ++k) {
         vd x = {}, y = {}, z = {}, w = {};
@@ -283,32 +303,38 @@ long row_normals(const GridArgs& g, int i, int ch0, int nch, const double* R, co
         put_xyz(nout, L, nx * rn, ny * rn, nz * rn);
         const int missing = bits(w == 0.0), degenerate = ~bits(good) & ((1 << W) - 1);
         if ((missing | degenerate) == 0 && L.whole()) {
-            __builtin_memset(st + j, 0, W);
+            __builtin_memset(st + (j - g.j0), 0, W);
         } else {
-            bad += put_status(st, L, missing, degenerate);
+            bad += put_status(st, g.j0, L, missing, degenerate);
         }
     }
     return bad;
 }
 
 template <int NC, int P1> long block(const GridArgs& g) {
+    const int nc = NC > 0 ? NC : g.nc, p1 = P1 > 0 ? P1 : g.p + 1;
     const int ch0 = g.j0 / W, nch = g.j1 / W - ch0 + 1;
-    const long B = static_cast<long>(nch) * W;
-    const int a0 = g.first_u[g.i0], a1 = g.first_u[g.i1] + g.p;
-    const long plane = 4 * B; // one control row's R
+    const long plane = 4L * nch * W; // one control row's R
+    // Control rows are contracted in v just before the first sample row that needs them, into
+    // a ring of the last p + 1 (row a in slot a % (p + 1)) kept twice over, slot s also at
+    // s + p + 1: the rows first .. first + p of a sample row are then consecutive (from slot
+    // first % (p + 1)), and the ring stays in L1 however many control rows the block spans.
+    const long mirror = p1 * plane;
     double* R = g.scratch;
-    double* Rv = g.normals ? R + (a1 - a0 + 1) * plane : nullptr;
-    // Control rows are contracted in v just before the first sample row that needs them, so
-    // step 2 reads rows that step 1 has just written (still in L1 / L2).
-    int done = a0 - 1;
+    double* Rv = g.normals ? R + 2 * mirror : nullptr;
+    double* H = R + (g.normals ? 4 : 2) * mirror;
+    const int c0 = g.f0[ch0], width = g.f0[ch0 + nch - 1] + nc - c0;
+    int done = g.first_u[g.i0] - 1;
     long bad = 0;
     for (int i = g.i0; i <= g.i1; ++i) {
         const int first = g.first_u[i];
-        for (int a = done + 1; a <= first + g.p; ++a)
-            contract_v<NC>(g, a, ch0, nch, R + (a - a0) * plane,
-                           Rv ? Rv + (a - a0) * plane : nullptr);
+        // Rows below first are never read again (first only grows): skipped, not contracted.
+        for (int a = done >= first ? done + 1 : first; a <= first + g.p; ++a) {
+            const long at = (a % p1) * plane;
+            contract_v<NC>(g, a, ch0, nch, H, c0, width, R + at, Rv ? Rv + at : nullptr, mirror);
+        }
         if (first + g.p > done) done = first + g.p;
-        const long off = (first - a0) * plane;
+        const long off = (first % p1) * plane;
         bad += g.normals ? row_normals<P1>(g, i, ch0, nch, R + off, Rv + off)
                          : row_positions<P1>(g, i, ch0, nch, R + off);
     }

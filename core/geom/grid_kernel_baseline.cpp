@@ -82,9 +82,12 @@ Path active_path() {
 }
 
 std::size_t scratch_doubles(const GridArgs& a, int lanes) {
-    const long rows = a.first_u[a.i1] + a.p - a.first_u[a.i0] + 1;
-    const long columns = (static_cast<long>(a.j1 / lanes) - a.j0 / lanes + 1) * lanes;
-    return static_cast<std::size_t>(rows * 4 * columns * (a.normals ? 2 : 1));
+    // The ring of contracted rows (2 (p + 1) rows of 4 components; twice with the
+    // derivatives) and one homogeneous control row of the columns the block reads.
+    const int ch0 = a.j0 / lanes, ch1 = a.j1 / lanes;
+    const long columns = static_cast<long>(ch1 - ch0 + 1) * lanes;
+    const long ring = 2L * (a.p + 1) * 4 * columns * (a.normals ? 2 : 1);
+    return static_cast<std::size_t>(ring + 4L * (a.f0[ch1] + a.nc - a.f0[ch0]));
 }
 
 long run(Path path, const GridArgs& a) {

@@ -72,14 +72,19 @@ public:
     };
 
 private:
-    // Rows i0..i1, columns j0..j1; normals == nullptr evaluates positions only. status holds
-    // (i1 - i0 + 1) rows of samples_v. Returns how many vertices are not kernel::vertex_ok.
-    long evaluate_block(const std::vector<double>& Pw, glm::dvec3* positions, glm::dvec3* normals,
+    // Rows i0..i1, columns j0..j1; normals == nullptr evaluates positions only. status gets
+    // the block's (i1 - i0 + 1) x (j1 - j0 + 1) vertices. Returns how many are not
+    // kernel::vertex_ok.
+    long evaluate_block(const Surface& s, glm::dvec3* positions, glm::dvec3* normals,
                         std::uint8_t* status, int i0, int i1, int j0, int j1) const;
-    // Missing vertices and degenerate normals of the block, from its status.
-    void settle(const Surface& s, const std::uint8_t* status, glm::dvec3* positions,
-                glm::dvec3* normals, std::vector<std::uint8_t>& exists, int i0, int i1, int j0,
-                int j1) const;
+    // The block's degenerate normals, from the surface (touches only the block's vertices:
+    // safe in a task). Returns how many of its vertices do not exist.
+    long settle_normals(const Surface& s, const std::uint8_t* status, glm::dvec3* normals, int i0,
+                        int i1, int j0, int j1) const;
+    // The block's vertices that do not exist (and exists for all of the block's vertices once
+    // exists is not empty): serial, exists is the whole grid's.
+    void settle_missing(const std::uint8_t* status, glm::dvec3* positions, glm::dvec3* normals,
+                        std::vector<std::uint8_t>& exists, int i0, int i1, int j0, int j1) const;
     void run_rows(const Surface& s, glm::dvec3* positions, glm::dvec3* normals,
                   std::vector<std::uint8_t>& exists, int threads) const;
 

@@ -4,6 +4,31 @@
 
 namespace isoparm::geom {
 
+namespace {
+
+inline void cpu_relax() {
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#else
+    std::this_thread::yield();
+#endif
+}
+
+// Spins until done() or WorkerPool::spin_time has passed; returns done()'s last value. The
+// clock is read every 64 pauses (a pause is tens of cycles: far finer than the budget).
+template <class Done> bool spin_until(Done done) {
+    const auto end = std::chrono::steady_clock::now() + WorkerPool::spin_time;
+    for (;;) {
+        for (int k = 0; k < 64; ++k) {
+            if (done()) return true;
+            cpu_relax();
+        }
+        if (std::chrono::steady_clock::now() >= end) return done();
+    }
+}
+
+} // namespace
+
 WorkerPool& WorkerPool::shared() {
     static WorkerPool pool;
     return pool;
@@ -23,14 +48,23 @@ int WorkerPool::helpers() const {
     return static_cast<int>(threads_.size());
 }
 
+int WorkerPool::handout_task(int h, int tasks, int threads) {
+    const int q = (tasks + threads - 1) / threads;
+    const int runs = (tasks + q - 1) / q;    // runs that are not empty
+    const int last = tasks - (runs - 1) * q; // tasks in the last run, 1 .. q
+    if (h < last * runs) return h % runs * q + h / runs;
+    h -= last * runs; // the last run is used up: the others' remaining tasks
+    return h % (runs - 1) * q + last + h / (runs - 1);
+}
+
 void WorkerPool::work(Job& job) {
     for (;;) {
         // Relaxed is enough: the tasks' inputs were published under m_ before the job was
         // visible, and their results reach the caller through m_ (active_) or its own thread.
-        const int k = job.next.fetch_add(1, std::memory_order_relaxed);
-        if (k >= job.tasks) return;
+        const int h = job.next.fetch_add(1, std::memory_order_relaxed);
+        if (h >= job.tasks) return;
         try {
-            job.call(job.fn, k);
+            job.call(job.fn, handout_task(h, job.tasks, job.threads));
         } catch (...) {
             const std::lock_guard lock(m_);
             if (!job.error) job.error = std::current_exception();
@@ -41,13 +75,25 @@ void WorkerPool::work(Job& job) {
 
 void WorkerPool::helper_loop() {
     unsigned long seen = 0;
-    std::unique_lock lock(m_);
     for (;;) {
-        wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
+        const auto posted = [&] {
+            return stop_.load(std::memory_order_relaxed) ||
+                   generation_.load(std::memory_order_relaxed) != seen;
+        };
+        std::unique_lock lock(m_, std::defer_lock);
+        if (spin_until(posted)) {
+            lock.lock();
+        } else {
+            // run_impl changes generation_ and reads sleepers_ under m_: no wake-up is lost.
+            lock.lock();
+            ++sleepers_;
+            wake_.wait(lock, posted);
+            --sleepers_;
+        }
         if (stop_) return;
         seen = generation_;
         Job* job = job_;
-        // A helper that wakes after its job ended finds job_ null (or a later job's limit).
+        // A helper that comes after its job ended finds job_ null (or a later job's limit).
         if (!job || job->joined >= job->max_helpers) continue;
         ++job->joined;
         ++active_;
@@ -70,7 +116,9 @@ void WorkerPool::run_impl(int tasks, int threads, void (*call)(void*, int), void
     job.call = call;
     job.fn = fn;
     job.tasks = tasks;
+    job.threads = threads;
     job.max_helpers = threads - 1;
+    bool sleeping = false;
     {
         const std::lock_guard lock(m_);
         // Started lazily, never more than 63 (and a thread the system refuses is skipped).
@@ -84,13 +132,17 @@ void WorkerPool::run_impl(int tasks, int threads, void (*call)(void*, int), void
         }
         job_ = &job;
         ++generation_;
+        sleeping = sleepers_ > 0;
     }
-    wake_.notify_all();
+    // Spinning helpers see generation_ change; only blocked ones need the (system) call.
+    if (sleeping) wake_.notify_all();
     work(job);
+    // Every task has been handed out; the helpers still inside the job finish theirs (for
+    // less than a task: spin first). The lock below then also orders their writes before ours.
+    spin_until([&] { return active_.load(std::memory_order_relaxed) == 0; });
     std::exception_ptr error;
     {
         std::unique_lock lock(m_);
-        // Every task has been handed out; the helpers still inside the job finish theirs.
         idle_.wait(lock, [&] { return active_ == 0; });
         job_ = nullptr;
         error = job.error;

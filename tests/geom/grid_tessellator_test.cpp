@@ -1,5 +1,6 @@
 // The interactive tessellator: threads give bit-identical meshes; a local update after moving
 // one control point equals a full re-tessellation; gaps where points do not exist.
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include "core/geom/grid_tessellator.hpp"
@@ -20,6 +21,32 @@ TEST(GridTessellator, ThreadsAreBitIdentical) {
     EXPECT_EQ(one.positions, two.positions);
     EXPECT_EQ(one.normals, two.normals);
     EXPECT_EQ(one.triangles, two.triangles);
+}
+
+// With what the tasks do beyond the kernel too: degenerate normals, settled in the tasks (a
+// pole: control row 0 collapsed to one point), and points that do not exist, settled after
+// them (w = 1 - 2u: the row u = 1/2). Grids of many column blocks, two and three threads.
+TEST(GridTessellator, ThreadsAreBitIdenticalWithPolesAndGaps) {
+    RandomGeometry g(66);
+    Surface pole = g.surface(3, 3, 9, 12, true);
+    for (int j = 0; j < pole.n_v; ++j) pole.point(0, j) = pole.point(0, 0);
+    Surface gaps = isoparm::testing::bilinear_patch(1, 1, -1, -1);
+    for (const Surface* s : {&pole, &gaps}) {
+        const GridTessellator t(*s, 129, 203);
+        Mesh one;
+        t.evaluate(*s, one, 1);
+        EXPECT_EQ(one.exists.empty(), s == &pole);
+        for (int j = 0; s == &pole && j < t.samples_v(); ++j)
+            EXPECT_NEAR(glm::length(one.normals[j]), 1.0, 1e-12) << j; // the limit, not 0 / 0
+        for (int threads : {2, 3}) {
+            Mesh many;
+            t.evaluate(*s, many, threads);
+            EXPECT_EQ(one.positions, many.positions);
+            EXPECT_EQ(one.normals, many.normals);
+            EXPECT_EQ(one.exists, many.exists);
+            EXPECT_EQ(one.triangles, many.triangles);
+        }
+    }
 }
 
 TEST(GridTessellator, LocalUpdateEqualsFullPass) {

@@ -1,5 +1,6 @@
 // The persistent pool: every task runs exactly once, the helpers are started once and reused,
-// nested and concurrent calls run on their caller, and an exception reaches the caller.
+// nested and concurrent calls run on their caller, an exception reaches the caller, and the
+// handout order keeps threads on runs of their own.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -59,4 +60,27 @@ TEST(WorkerPool, AnExceptionReachesTheCaller) {
     std::atomic<int> after{0};
     pool.run(10, 2, [&](int) { after.fetch_add(1); }); // still usable
     EXPECT_EQ(after.load(), 10);
+}
+
+TEST(WorkerPool, HandoutIsAPermutationAcrossRuns) {
+    for (int tasks = 1; tasks <= 100; ++tasks) {
+        for (int threads = 1; threads <= 70; ++threads) {
+            std::vector<int> seen(tasks, 0);
+            for (int h = 0; h < tasks; ++h) {
+                const int k = WorkerPool::handout_task(h, tasks, threads);
+                ASSERT_TRUE(k >= 0 && k < tasks) << tasks << " " << threads << " " << h;
+                ASSERT_EQ(seen[k]++, 0) << tasks << " " << threads << " " << h;
+                if (threads == 1) {
+                    ASSERT_EQ(k, h);
+                }
+            }
+        }
+    }
+    // 16 tasks for 2 threads: runs 0..7 and 8..15, handed out alternately.
+    std::vector<int> order;
+    for (int h = 0; h < 16; ++h) order.push_back(WorkerPool::handout_task(h, 16, 2));
+    EXPECT_EQ(order, (std::vector<int>{0, 8, 1, 9, 2, 10, 3, 11, 4, 12, 5, 13, 6, 14, 7, 15}));
+    order.clear();
+    for (int h = 0; h < 7; ++h) order.push_back(WorkerPool::handout_task(h, 7, 3));
+    EXPECT_EQ(order, (std::vector<int>{0, 3, 6, 1, 4, 2, 5})); // runs 0-2, 3-5, 6
 }

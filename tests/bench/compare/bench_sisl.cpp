@@ -2,7 +2,9 @@
 // positions, grid positions + normals, single points, knot insertion and degree elevation.
 // Prints points per second for both, the ratio, the largest difference between their points,
 // and the machine's ceiling for the grid case (the vector FMA peak in flops / flops per point
-// of isoparm's scheme), per kernel path (every one this CPU runs) and for one and two threads.
+// of isoparm's scheme), per kernel path (every one this CPU runs) and for one and two threads;
+// then one against two threads again, interleaved pass by pass (BM_GridThreadsInterleaved:
+// on a shared machine the only comparison the drift of the machine's speed does not decide).
 // ISOPARM_SIMD does not matter here: each path is chosen explicitly (GridTessellator::
 // use_kernel); it does choose the path of the agreement check at the end.
 #include <benchmark/benchmark.h>
@@ -10,6 +12,7 @@
 #include <sisl.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -20,6 +23,7 @@
 #include "core/geom/grid_tessellator.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/refine.hpp"
+#include "core/geom/worker_pool.hpp"
 #include "tests/bench/compare/peak_fma.hpp"
 #include "tests/support/random_geometry.hpp"
 
@@ -179,6 +183,63 @@ void BM_GridNormals_sisl_grid(benchmark::State& state) {
     set_rate(state, grid * grid);
 }
 
+// --- one against two threads, interleaved -------------------------------------------------
+
+// The same grid with one thread and with two, call after call: on a shared (virtual) machine
+// the speed of a core drifts by half over tenths of a second, more than two threads gain, so
+// runs of one case after the other can order them either way; calls a millisecond apart see
+// the same machine. Each iteration times, in turn: one thread; two threads with the helper
+// asleep (it has not run for longer than WorkerPool::spin_time: what a frame after idle time
+// pays, wake-up included); two threads again at once (the helper still spinning: back-to-back
+// passes). Before each of the first two the caller waits until the helper sleeps, spinning
+// itself (a sleeping caller would start its pass on a halted virtual CPU, a handicap the
+// other cases do not have), so no spinning helper runs beside the one-thread pass either.
+// Counters: the medians of each (microseconds) and the speed-ups of the medians. Arguments:
+// net size, kernel path, 0 positions / 1 positions + normals.
+void BM_GridThreadsInterleaved_isoparm(benchmark::State& state) {
+    using Clock = std::chrono::steady_clock;
+    const Surface& s = pair_for(static_cast<int>(state.range(0))).ours;
+    GridTessellator t(s, grid, grid);
+    if (!t.use_kernel(static_cast<kernel::Path>(state.range(1))))
+        return state.SkipWithError("kernel path not supported by this CPU");
+    const bool normals = state.range(2) != 0;
+    std::vector<glm::dvec3> pos, nrm;
+    std::vector<std::uint8_t> exists;
+    const auto pass = [&](int threads) {
+        const auto start = Clock::now();
+        if (normals)
+            t.evaluate_vertices(s, pos, nrm, exists, threads);
+        else
+            t.evaluate_positions(s, pos, exists, threads);
+        benchmark::DoNotOptimize(pos.data());
+        return std::chrono::duration<double>(Clock::now() - start).count();
+    };
+    const auto let_helper_sleep = [] {
+        const auto end = Clock::now() + 2 * WorkerPool::spin_time;
+        while (Clock::now() < end) {
+        }
+    };
+    std::vector<double> one, asleep, spinning;
+    for (auto _ : state) {
+        let_helper_sleep();
+        one.push_back(pass(1));
+        let_helper_sleep();
+        asleep.push_back(pass(2));
+        spinning.push_back(pass(2));
+        state.SetIterationTime(one.back() + asleep.back() + spinning.back());
+    }
+    const auto median = [](std::vector<double>& v) {
+        std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+        return v[v.size() / 2];
+    };
+    const double t1 = median(one), t2 = median(asleep), t2s = median(spinning);
+    state.counters["1T_us"] = 1e6 * t1;
+    state.counters["2T_asleep_us"] = 1e6 * t2;
+    state.counters["2T_spinning_us"] = 1e6 * t2s;
+    state.counters["speedup_asleep"] = t1 / t2;
+    state.counters["speedup_spinning"] = t1 / t2s;
+}
+
 // --- single points at random parameters ------------------------------------------------
 
 std::vector<double> random_params() {
@@ -289,6 +350,15 @@ void register_grid_benchmarks() {
                 }
             }
     }
+    for (int n : {8, 32, 128})
+        for (kernel::Path path : paths)
+            for (int normals : {0, 1})
+                if (kernel::supported(path))
+                    benchmark::RegisterBenchmark("BM_GridThreadsInterleaved_isoparm",
+                                                 BM_GridThreadsInterleaved_isoparm)
+                        ->Args({n, static_cast<int>(path), normals})
+                        ->UseManualTime()
+                        ->Unit(benchmark::kMillisecond);
 }
 
 BENCHMARK(BM_GridPositions_sisl_pointwise)
@@ -445,6 +515,26 @@ int main(int argc, char** argv) {
                         (std::string(op) + " 32x32").c_str(), 1e6 / a, b > 0 ? 1e6 / b : 0.0,
                         b > 0 ? a / b : 0);
     }
+    std::printf("\nOne against two threads, interleaved (medians of passes a millisecond apart; "
+                "microseconds per %d x %d grid):\n",
+                grid, grid);
+    std::printf("  %-9s %-10s %-9s %9s %14s %14s %9s %9s\n", "net", "case", "path", "1 thread",
+                "2, helper woken", "2, spinning", "woken", "spinning");
+    for (int n : {8, 32, 128})
+        for (int normals : {0, 1})
+            for (kernel::Path path : paths) {
+                const std::string key = "BM_GridThreadsInterleaved_isoparm/" + std::to_string(n) +
+                                        "/" + std::to_string(static_cast<int>(path)) + "/" +
+                                        std::to_string(normals) + "/manual_time:";
+                const auto it = collector.counters.find(key + "1T_us");
+                if (it == collector.counters.end()) continue;
+                std::printf("  %3dx%-5d %-10s %-9s %9.1f %14.1f %14.1f %8.2fx %8.2fx\n", n, n,
+                            normals ? "Normals" : "Positions", kernel::name(path), it->second,
+                            collector.counters[key + "2T_asleep_us"],
+                            collector.counters[key + "2T_spinning_us"],
+                            collector.counters[key + "speedup_asleep"],
+                            collector.counters[key + "speedup_spinning"]);
+            }
     std::printf("\nAgreement with SISL (same parameters, s1421 point by point):\n");
     for (int n : {8, 32, 128}) print_agreement(n);
     benchmark::Shutdown();
