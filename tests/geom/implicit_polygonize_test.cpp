@@ -390,5 +390,38 @@ TEST(ImplicitPolygonize, DropDegenerateTriangles) {
     EXPECT_EQ(m.triangles, (std::vector<std::array<std::uint32_t, 3>>{{0, 1, 2}, {1, 3, 2}}));
 }
 
+// A closed mesh inside its box is seen from outside only from the sign of f on the box's
+// boundary: its triangles run counter-clockwise seen from there (the cross product of a
+// sphere's triangle points outward for f = r^2 - 1, inward for 1 - r^2). A surface that meets a
+// face of the box, or no surface at all, has no such side.
+TEST(Polygonize, SideSeenFromOutsideOfAClosedMesh) {
+    struct Case {
+        const char* f;
+        double lo, hi;
+        int side;
+    };
+    const Case cases[] = {
+        {"x^2 + y^2 + z^2 - 1", -2, 2, 1},
+        {"1 - x^2 - y^2 - z^2", -2, 2, -1},
+        {"(x^2 + y^2 + z^2 - 1) * (x^2 + y^2 + z^2 - 2.25)", -2, 2, 1}, // nested spheres
+        {"x^2 + y^2 + z^2 - 1", -0.5, 2, 0},                            // cut by the box
+        {"x - 0.25", -1, 1, 0},                                         // a plane leaves it
+        {"x^2 + y^2 + z^2 + 1", -2, 2, 0},                              // nothing inside
+    };
+    for (const Case& c : cases) {
+        const Program f = must_compile(c.f);
+        const PolygonizeOptions o = box(c.lo, c.hi, 0.125);
+        const Mesh m = must_polygonize(f, o);
+        EXPECT_EQ(side_seen_from_outside(f, o, m), c.side) << c.f << " in " << c.lo;
+        if (c.side == 0 || c.lo != -2 || std::string(c.f).find('*') != std::string::npos) continue;
+        EXPECT_TRUE(topology(m).closed) << c.f;
+        for (const auto& t : m.triangles) {
+            const glm::dvec3 a = m.positions[t[0]], b = m.positions[t[1]], d = m.positions[t[2]];
+            const double outward = glm::dot(glm::cross(b - a, d - a), a + b + d);
+            ASSERT_GT(outward * c.side, 0) << c.f;
+        }
+    }
+}
+
 } // namespace
 } // namespace isoparm::geom::implicit

@@ -12,6 +12,7 @@
 #include "ui/render/render_target.hpp"
 #include "ui/render/shaders.hpp"
 #include "ui/view/analysis.hpp"
+#include "ui/view/face_culling.hpp"
 #include "ui/view/incremental_mesh.hpp"
 #include "ui/view/mesh_data.hpp"
 #include "ui/view/tessellation_sampling.hpp"
@@ -339,13 +340,24 @@ void Renderer::render(const SceneView& view, const std::vector<SurfaceDraw>& sur
     set_analysis_uniforms(im.mesh, view.analysis);
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.0f, 1.0f);
+    const glm::dvec3 eye = camera_eye(view.camera);
+    const double near_reach = near_plane_reach(view.camera, aspect);
     for (std::size_t k = 0; k < surfaces.size(); ++k) {
         if (!surfaces[k].shaded) continue;
         const glm::vec4& c = surfaces[k].fill;
         glUniform4f(im.mesh.uniform("u_color"), c.r, c.g, c.b, c.a);
+        // Counter-clockwise is OpenGL's front face (never changed here).
+        const HiddenFaces hidden = hidden_faces(surfaces[k], eye, near_reach);
+        if (hidden == HiddenFaces::none) {
+            glDisable(GL_CULL_FACE);
+        } else {
+            glEnable(GL_CULL_FACE);
+            glCullFace(hidden == HiddenFaces::clockwise ? GL_BACK : GL_FRONT);
+        }
         glBindVertexArray(entries[k]->tri_vao);
         glDrawElements(GL_TRIANGLES, entries[k]->tri_count, GL_UNSIGNED_INT, nullptr);
     }
+    glDisable(GL_CULL_FACE);
     glDisable(GL_POLYGON_OFFSET_FILL);
 
     // Pass 2: wireframes.

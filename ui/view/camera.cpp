@@ -38,11 +38,20 @@ glm::dmat4 view_matrix(const Camera& c) {
     return glm::lookAt(camera_eye(c), c.target, glm::dvec3(0, 0, 1));
 }
 
+namespace {
+// Clip planes follow the distance so zooming never clips the object being looked at.
+double near_plane(const Camera& c) {
+    return c.distance * 0.01;
+}
+} // namespace
+
 glm::dmat4 projection_matrix(const Camera& c, double aspect) {
-    // Clip planes follow the distance so zooming never clips the object being looked at.
-    const double near_plane = c.distance * 0.01;
-    const double far_plane = c.distance * 100.0;
-    return glm::perspective(c.fov_y, aspect, near_plane, far_plane);
+    return glm::perspective(c.fov_y, aspect, near_plane(c), c.distance * 100.0);
+}
+
+double near_plane_reach(const Camera& c, double aspect) {
+    const double t = std::tan(c.fov_y / 2); // half height over distance
+    return near_plane(c) * std::sqrt(1 + t * t * (1 + aspect * aspect));
 }
 
 glm::dmat4 view_projection(const Camera& c, double aspect) {

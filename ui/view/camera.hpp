@@ -31,6 +31,8 @@ glm::dvec3 camera_right(const Camera& c);   // unit, screen right
 glm::dvec3 camera_up(const Camera& c);      // unit, screen up
 glm::dmat4 view_matrix(const Camera& c);
 glm::dmat4 projection_matrix(const Camera& c, double aspect);
+// The farthest the near clipping rectangle reaches from the eye: nothing nearer is clipped.
+double near_plane_reach(const Camera& c, double aspect);
 glm::dmat4 view_projection(const Camera& c, double aspect);
 
 // Mouse gestures: pixel deltas as ImGui reports them (y down).

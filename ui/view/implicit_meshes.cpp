@@ -41,6 +41,7 @@ PolygonizeResult polygonize_key(const ImplicitKey& key,
         return r;
     }
     if (mesh->triangles.empty()) r.error = "the surface was not found in the bounds";
+    r.seen_side = geom::implicit::side_seen_from_outside(*program, opt, *mesh);
     r.mesh = std::move(*mesh);
     return r;
 }
@@ -51,8 +52,9 @@ ImplicitMeshes::~ImplicitMeshes() {
 }
 
 void ImplicitMeshes::adopt(Entry& e, const ImplicitKey& key, std::optional<geom::Mesh> mesh,
-                           std::string error) {
+                           std::string error, int seen_side) {
     e.shown = key;
+    e.seen_side = mesh ? seen_side : 0;
     e.error = std::move(error);
     e.mesh = mesh ? std::move(*mesh) : geom::Mesh{};
     e.revision = next_revision_++;
@@ -75,7 +77,7 @@ void ImplicitMeshes::update(const doc::Document& d, const Mode& mode) {
             e.worker = {};
             if (job->key == key) {
                 std::lock_guard lock(job->m);
-                adopt(e, key, std::move(job->mesh), job->error);
+                adopt(e, key, std::move(job->mesh), job->error, job->seen_side);
             }
         }
         if (e.shown && *e.shown == key) {
@@ -92,7 +94,7 @@ void ImplicitMeshes::update(const doc::Document& d, const Mode& mode) {
         if (mode.wait || grid_cells(key) <= synchronous_cells || !(key.cell > 0)) {
             PolygonizeResult r = polygonize_key(key);
             ++synchronous_runs_;
-            adopt(e, key, std::move(r.mesh), std::move(r.error));
+            adopt(e, key, std::move(r.mesh), std::move(r.error), r.seen_side);
             continue;
         }
         auto job = std::make_shared<Job>();
@@ -107,6 +109,7 @@ void ImplicitMeshes::update(const doc::Document& d, const Mode& mode) {
                 std::lock_guard lock(job->m);
                 job->mesh = std::move(r.mesh);
                 job->error = std::move(r.error);
+                job->seen_side = r.seen_side;
             }
             job->done.store(true);
             if (wake && !stop.stop_requested()) wake();
@@ -124,6 +127,7 @@ ImplicitMeshes::View ImplicitMeshes::view(std::uint64_t id) const {
     if (e.shown) {
         v.mesh = &e.mesh;
         v.cell = e.shown->cell;
+        v.seen_side = e.seen_side;
     }
     v.revision = e.revision;
     v.error = e.error;

@@ -34,6 +34,9 @@ public:
         double progress = -1;             // of the running background job; < 0 none
         double cell = 0;                  // cell of the mesh shown
         std::string error;                // polygonization error of the current key
+        // The mesh's side seen from outside its box (geom::implicit::side_seen_from_outside):
+        // +1 / -1 for a closed mesh, 0 otherwise.
+        int seen_side = 0;
     };
 
     ImplicitMeshes() = default;
@@ -56,17 +59,20 @@ private:
         std::mutex m;
         std::optional<geom::Mesh> mesh; // set when done without error
         std::string error;
+        int seen_side = 0;
     };
     struct Entry {
         std::optional<ImplicitKey> shown; // key of `mesh` (or of `error`)
         geom::Mesh mesh;
+        int seen_side = 0;
         std::uint64_t revision = 0;
         std::string error;
         std::shared_ptr<Job> job;
         std::jthread worker; // declared last: joined first on destruction
         bool used = false;
     };
-    void adopt(Entry& e, const ImplicitKey& key, std::optional<geom::Mesh> mesh, std::string error);
+    void adopt(Entry& e, const ImplicitKey& key, std::optional<geom::Mesh> mesh, std::string error,
+               int seen_side);
     std::unordered_map<std::uint64_t, Entry> entries_;
     std::uint64_t next_revision_ = 1;
     int synchronous_runs_ = 0;
@@ -76,6 +82,7 @@ private:
 struct PolygonizeResult {
     std::optional<geom::Mesh> mesh;
     std::string error;
+    int seen_side = 0; // geom::implicit::side_seen_from_outside
 };
 PolygonizeResult polygonize_key(const ImplicitKey& key,
                                 const std::function<bool(double)>& progress = {});

@@ -28,6 +28,11 @@ struct SurfaceDraw {
     // mesh_revision differs from the cached one; its wireframe is the triangle edges.
     const geom::Mesh* mesh = nullptr;
     std::uint64_t mesh_revision = 0;
+    // A closed mesh inside the box [box_lo, box_hi] is seen from outside the box only from
+    // this side (+1: where its triangles run counter-clockwise; -1: the other; 0: not closed,
+    // any side may show). See face_culling.hpp.
+    int seen_side = 0;
+    glm::dvec3 box_lo{0.0}, box_hi{0.0};
 };
 
 // The shaded surfaces' analysis colouring (doc::AnalysisMode, without the document): the

@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "core/geom/validate.hpp"
@@ -719,6 +720,21 @@ void repair_normals(Mesh& mesh) {
 }
 
 } // namespace
+
+int side_seen_from_outside(const Program& f, const PolygonizeOptions& options, const Mesh& mesh) {
+    if (mesh.triangles.empty()) return 0;
+    // A vertex on a face is where a grid edge in that face changes sign. Its coordinate across
+    // the face is the bound up to the rounding of an interpolation along the edge; a vertex of
+    // an edge into the box comes this near only at the edge's end on the face (the surface
+    // touches the face there): also open, on the safe side.
+    const glm::dvec3 tolerance =
+        1e-9 * glm::max(glm::abs(options.lo), glm::abs(options.hi)) + 1e-9 * options.cell;
+    for (const glm::dvec3& p : mesh.positions)
+        for (int a = 0; a < 3; ++a)
+            if (!(p[a] - options.lo[a] > tolerance[a] && options.hi[a] - p[a] > tolerance[a]))
+                return 0;
+    return positive(f.value(options.lo, options.parameters.data())) ? 1 : -1;
+}
 
 std::size_t drop_degenerate_triangles(Mesh& mesh) {
     const std::size_t before = mesh.triangles.size();

@@ -52,6 +52,15 @@ struct PolygonizeOptions {
 // An empty mesh (surface not found in the bounds) is not an error here; the caller reports it.
 Expected<Mesh> polygonize(const Program& f, const PolygonizeOptions& options);
 
+// The side from which anything outside the box sees a mesh that polygonize made with `options`:
+// +1 (the f > 0 side, where its triangles are counter-clockwise) or -1 when the mesh meets no
+// face of the box. Every grid point on the box's boundary is then on one side, the mesh is a
+// closed surface inside, and a line of sight entering the box meets it first from that side:
+// a renderer may cull the other side's triangles (they show only where the mesh passes
+// through itself, as at the seams of touching sheets, and at anti-aliased edges). 0 when a vertex
+// lies on a face (the surface leaves the box and its inside shows), or the mesh is empty.
+int side_seen_from_outside(const Program& f, const PolygonizeOptions& options, const Mesh& mesh);
+
 // Removes triangles that repeat a vertex (zero area by construction) and then the vertices no
 // triangle uses, keeping the order of everything else. Returns the number of triangles removed.
 std::size_t drop_degenerate_triangles(Mesh& mesh);
