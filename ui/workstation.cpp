@@ -21,6 +21,7 @@
 #include "ui/view/doc_access.hpp"
 #include "ui/view/implicit_meshes.hpp"
 #include "ui/view/scene_builder.hpp"
+#include "ui/view/triangle_domain.hpp"
 #include "ui/view/triangle_meshes.hpp"
 
 namespace isoparm::ui {
@@ -168,10 +169,13 @@ void Workstation::layout_panels() {
             const char* name;
             const char* what;
             void (*draw)(AppContext&);
+            const char* what_on_a_triangle = nullptr; // when it says something else there
         };
         static constexpr Tab tabs[] = {
-            {"Basis", "R_ij of the selected point at (u, v), N_i and N_j", draw_basis_plot_panel},
-            {"de Boor", "de Boor's construction at (u, v), step by step", draw_deboor_panel},
+            {"Basis", "R_ij of the selected point at (u, v), N_i and N_j", draw_basis_plot_panel,
+             "B_ijk (rational: R_ijk) of the selected point over the domain triangle"},
+            {"de Boor", "de Boor's construction at (u, v), step by step", draw_deboor_panel,
+             "de Casteljau's construction at (r, s, t), level by level"},
             {"Blossom", "every de Boor point as its polar form f(a_1, .., a_p)",
              draw_blossom_panel},
             {"Continuity", "every border of the patch group, measured", draw_continuity_panel},
@@ -183,8 +187,11 @@ void Workstation::layout_panels() {
         if (ui.deboor.show_tab) ui.left_tab = 1;
         if (ui.multires.show_tab) ui.left_tab = 5;
         ui.deboor.show_tab = ui.multires.show_tab = false;
+        const bool triangle = selected_triangle(ctx_.doc) != nullptr;
         std::vector<TabLabel> labels;
-        for (const Tab& t : tabs) labels.push_back({t.name, t.what});
+        for (const Tab& t : tabs)
+            labels.push_back(
+                {t.name, triangle && t.what_on_a_triangle ? t.what_on_a_triangle : t.what});
         ui.left_tab = tab_strip(labels, ui.left_tab);
         tabs[ui.left_tab].draw(ctx_);
     }

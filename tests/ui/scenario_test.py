@@ -413,7 +413,7 @@ def triangle_panels_trace_step_basis(s, ctx):
     edge keeps it on the triangle; r typed as 1.5 is refused and moves nothing, 0.5 is taken
     with s : t kept; the de Boor tab steps de Casteljau's levels 0..3 (10, 6, 3, 1 points) with
     > and ]; the Basis tab's R111 peaks at the centre at 2 B / (1 + B), B = 6/27, and the
-    basis functions sum to 1."""
+    basis functions sum to 1; a right click on the dot of b210 selects it."""
     vertex = s.rect("tracing/triangle/r1")
     s.click(vertex[0] - 1, vertex[1] - 1)
     # A pixel is 0.01 of a side 100 px long (presentation mode on a projector).
@@ -469,6 +469,17 @@ def triangle_panels_trace_step_basis(s, ctx):
     r = s.wait_for("the indicator at the peak",
                    lambda r: r["facts"].get("basis/triangle_value", 0) > 0.97 * 2 * B / (1 + B))
     ctx.shot(s, "basis-heat-map")
+
+    # A right click on a dot of the tracing triangle selects its control point, and the Basis
+    # tab follows (b210 has weight 1: its maximum is not R111's); the indicator stays.
+    before = r["facts"]["tracing/barycentric"]
+    x, y, _, _ = s.rect("tracing/triangle/b210")
+    s.click(x, y, button=3)
+    r = s.wait_for("b210 selected, its basis function shown",
+                   lambda r: r["point"] == [2, 1] and
+                   abs(r["facts"].get("basis/triangle_max", 0) - 2 * B / (1 + B)) > 1e-3)
+    check(r["facts"]["tracing/barycentric"] == before, "a right click moved the indicator")
+    ctx.shot(s, "dot-selected")
 
 
 def continuity_tab_measures_the_borders(s, ctx):

@@ -55,6 +55,19 @@ TEST(TriangleCanvas, PixelsRoundTripAndVerticesAreTheUnitPoints) {
         expect_near(pixel_to_barycentric(c, barycentric_to_pixel(c, p)), p, 1e-12);
 }
 
+TEST(TriangleCanvas, ADotIsFoundWithinItsRadiusOnly) {
+    const TriangleCanvas c = fit_triangle({0, 0, 400, 300}, 10);
+    const glm::dvec2 b111 = barycentric_to_pixel(c, {1.0 / 3, 1.0 / 3, 1.0 / 3});
+    EXPECT_EQ(domain_point_at(c, 3, b111 + glm::dvec2(3, -2), 6), std::pair(1, 1));
+    EXPECT_EQ(domain_point_at(c, 3, b111 + glm::dvec2(8, 0), 6), std::nullopt);
+    EXPECT_EQ(domain_point_at(c, 3, c.vertex[1], 6), std::pair(0, 3)); // b030 at s = 1
+    EXPECT_EQ(domain_point_at(c, 3, c.vertex[2] + glm::dvec2(-4, 3), 6), std::pair(0, 0));
+    // Between two dots closer than twice the radius: the nearer one.
+    const glm::dvec2 b300 = c.vertex[0], b210 = barycentric_to_pixel(c, {2.0 / 3, 1.0 / 3, 0});
+    EXPECT_EQ(domain_point_at(c, 3, b300 + 0.4 * (b210 - b300), 1000), std::pair(3, 0));
+    EXPECT_EQ(domain_point_at(c, 3, b300 + 0.6 * (b210 - b300), 1000), std::pair(2, 1));
+}
+
 TEST(TriangleCanvas, ClampingIsTheNearestPointOfTheTriangle) {
     const Barycentric inside = {0.2, 0.3, 0.5};
     EXPECT_EQ(clamp_to_triangle(inside), inside); // bit for bit

@@ -79,6 +79,10 @@ void draw_cross(ImDrawList* dl, const TriangleCanvas& c, const geom::Barycentric
     }
 }
 
+float dot_radius(int n, float k) {
+    return n <= 12 ? 3.5f * k : 2 * k;
+}
+
 // b_ijk at (i, j, k) / n, where B^n_ijk peaks (the selected one larger, in the selection's
 // colour); for a rational patch with Weights on, each weight beside its dot.
 void draw_domain_points(const AppContext& ctx, ImDrawList* dl, const TriangleCanvas& c,
@@ -86,7 +90,7 @@ void draw_domain_points(const AppContext& ctx, ImDrawList* dl, const TriangleCan
     const float k = ctx.ui.scale();
     const int n = t.degree;
     const doc::Selection& sel = ctx.doc.view.selection;
-    const float r = n <= 12 ? 3.5f * k : 2 * k;
+    const float r = dot_radius(n, k);
     const bool weights = t.rational && ctx.ui.show_weights && n <= 12;
     const glm::dvec2 centre = barycentric_to_pixel(c, {1.0 / 3, 1.0 / 3, 1.0 / 3});
     for (int i = n; i >= 0; --i)
@@ -94,6 +98,10 @@ void draw_domain_points(const AppContext& ctx, ImDrawList* dl, const TriangleCan
             const glm::dvec2 at =
                 barycentric_to_pixel(c, {static_cast<double>(i) / n, static_cast<double>(j) / n,
                                          static_cast<double>(n - i - j) / n});
+            if (n <= 9)
+                report_point("tracing/triangle/b" + std::to_string(i) + std::to_string(j) +
+                                 std::to_string(n - i - j),
+                             static_cast<float>(at.x), static_cast<float>(at.y));
             const bool chosen = sel.i == i && sel.j == j;
             dl->AddCircleFilled(to_imvec(at), r, chosen ? pal.selected : pal.dot, 12);
             // A ring, not a larger disc: the indicator is a red disc too.
@@ -227,10 +235,24 @@ void draw_triangle_tracing(AppContext& ctx, const doc::Object& obj, const geom::
     report_point("tracing/barycentric_handle", static_cast<float>(handle.x),
                  static_cast<float>(handle.y));
     report_fact("tracing/barycentric", {p[0], p[1], p[2]});
-    if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
+    // A right click on a dot selects its control point (the Basis tab then shows its basis
+    // function); the left button stays the indicator's, also on a dot.
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    const auto dot = ImGui::IsItemHovered()
+                         ? domain_point_at(c, n, {mouse.x, mouse.y}, 2.2f * dot_radius(n, k))
+                         : std::nullopt;
+    if (dot && ImGui::IsMouseClicked(ImGuiMouseButton_Right))
+        ctx.doc.view.selection = {obj.id, dot->first, dot->second};
+    if (dot && !ImGui::IsItemActive()) {
+        wrapped_tooltip(point_name('P', dot->first, dot->second, &obj) + " at (" +
+                        std::to_string(dot->first) + ", " + std::to_string(dot->second) + ", " +
+                        std::to_string(n - dot->first - dot->second) + ") / " + std::to_string(n) +
+                        ". Right-click to select it.");
+    } else if (ImGui::IsItemHovered() && !ImGui::IsItemActive()) {
         wrapped_tooltip("The domain triangle: each point is (r, s, t), r + s + t = 1. The dots "
                         "are (i, j, k) / n, where b_ijk pulls the patch most. Press or drag to "
-                        "move the indicator.");
+                        "move the indicator; right-click a dot to select its control point.");
+    }
 
     ImGui::SetCursorScreenPos(ImVec2(cur.x, box.y + box.h));
     coordinate_fields(ctx, avail.x);

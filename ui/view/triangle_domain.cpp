@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <glm/geometric.hpp>
 
 #include "core/geom/status.hpp"
 
@@ -55,6 +56,24 @@ geom::Barycentric pixel_to_barycentric(const TriangleCanvas& c, const glm::dvec2
     if (det == 0) return {1.0 / 3, 1.0 / 3, 1.0 / 3};
     const double r = (d.x * b.y - d.y * b.x) / det, s = (a.x * d.y - a.y * d.x) / det;
     return {r, s, 1 - r - s};
+}
+
+std::optional<std::pair<int, int>> domain_point_at(const TriangleCanvas& c, int n,
+                                                   const glm::dvec2& pixel, double radius) {
+    std::optional<std::pair<int, int>> best;
+    double best_distance = radius;
+    for (int i = 0; i <= n; ++i)
+        for (int j = 0; i + j <= n; ++j) {
+            const glm::dvec2 at =
+                barycentric_to_pixel(c, {static_cast<double>(i) / n, static_cast<double>(j) / n,
+                                         static_cast<double>(n - i - j) / n});
+            const double d = glm::distance(at, pixel);
+            if (d <= best_distance) {
+                best_distance = d;
+                best = std::pair(i, j);
+            }
+        }
+    return best;
 }
 
 geom::Barycentric clamp_to_triangle(const geom::Barycentric& p) {

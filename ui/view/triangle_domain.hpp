@@ -5,7 +5,9 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -35,6 +37,10 @@ TriangleCanvas fit_triangle(const Rect& box, double margin);
 glm::dvec2 barycentric_to_pixel(const TriangleCanvas& c, const geom::Barycentric& p);
 // The inverse, not clamped: outside the triangle a coordinate is negative.
 geom::Barycentric pixel_to_barycentric(const TriangleCanvas& c, const glm::dvec2& pixel);
+// The domain point (i, j, k) / n of a degree-n patch within `radius` pixels of `pixel` (the
+// nearest one), as (i, j); none when no dot is that near.
+std::optional<std::pair<int, int>> domain_point_at(const TriangleCanvas& c, int n,
+                                                   const glm::dvec2& pixel, double radius);
 // The nearest point of the triangle (the Euclidean projection onto the simplex r, s, t >= 0,
 // r + s + t = 1: Michelot's sort-and-shift). A point inside comes back unchanged.
 geom::Barycentric clamp_to_triangle(const geom::Barycentric& p);
