@@ -121,14 +121,20 @@ double bernstein_triangle(int n, int i, int j, const Barycentric& p) {
     return sign * std::exp(log_value);
 }
 
-std::optional<double> rational_bernstein_triangle(const TrianglePatch& t, int i, int j,
-                                                  const Barycentric& p) {
+double triangle_denominator(const TrianglePatch& t, const Barycentric& p) {
     const int n = t.degree;
     double denominator = 0;
     for (int a = n; a >= 0; --a)
         for (int b = n - a; b >= 0; --b)
             denominator +=
                 t.weights[TrianglePatch::index(n, a, b)] * bernstein_triangle(n, a, b, p);
+    return denominator;
+}
+
+std::optional<double> rational_bernstein_triangle(const TrianglePatch& t, int i, int j,
+                                                  const Barycentric& p) {
+    const int n = t.degree;
+    const double denominator = triangle_denominator(t, p);
     if (denominator == 0.0) return std::nullopt;
     return t.weights[TrianglePatch::index(n, i, j)] * bernstein_triangle(n, i, j, p) / denominator;
 }

@@ -45,6 +45,10 @@ Status validate_triangle(const TrianglePatch& t);
 // r + s + t = 1.
 double bernstein_triangle(int n, int i, int j, const Barycentric& p);
 
+// The denominator of a rational patch, sum w_abc B^n_abc(p) (1 for a non-rational one, whose
+// weights are all 1): where it is zero the patch point does not exist.
+double triangle_denominator(const TrianglePatch& t, const Barycentric& p);
+
 // The rational basis function R_ijk = w_ijk B^n_ijk / sum w_abc B^n_abc of the patch's control
 // point b_ijk (B itself for a non-rational patch); nullopt where the denominator is zero
 // (the patch point does not exist there).

@@ -198,6 +198,25 @@ TEST(TriangleHeatMap, ANegativeWeightsLowestValueIsSearched) {
     const BasisPeak high = triangle_basis_peak(t, 1, 1, h);
     EXPECT_EQ(high.value, 0.0);
     EXPECT_LT(std::min({high.at[0], high.at[1], high.at[2]}), 1e-12);
+    EXPECT_FALSE(h.denominator_vanishes); // 1 - 1.5 B >= 1 - 1.5 * 6 / 27 > 0
+}
+
+TEST(TriangleHeatMap, NoExtremeWhereTheDenominatorVanishesInside) {
+    // w_111 = -8: the denominator 1 - 9 B_111 is 1 on the border and 1 - 9 * 6 / 27 = -1 at
+    // the centre, zero on a closed curve between: R_111 = -8 B / (1 - 9 B) has a pole there,
+    // and no largest or smallest value.
+    TrianglePatch t = cubic(true);
+    t.weights[TrianglePatch::index(3, 1, 1)] = -8;
+    const TriangleHeat h = triangle_heat(t, 1, 1, 10);
+    EXPECT_TRUE(h.denominator_vanishes);
+    for (bool lowest : {false, true}) {
+        const BasisPeak e = triangle_basis_peak(t, 1, 1, h, lowest);
+        EXPECT_TRUE(e.unbounded);
+        EXPECT_FALSE(e.found);
+    }
+    // The denominator itself: 1 - 9 B_111.
+    EXPECT_NEAR(triangle_denominator(t, {1.0 / 3, 1.0 / 3, 1.0 / 3}), -1, 1e-14);
+    EXPECT_EQ(triangle_denominator(t, {1, 0, 0}), 1);
 }
 
 } // namespace

@@ -226,6 +226,12 @@ void extreme_line(const char* what, const char* mark, int n, int i, int j, const
 
 void peak_lines(const geom::TrianglePatch& t, int i, int j, const BasisPeak& peak,
                 const BasisPeak& low) {
+    report_fact("basis/triangle_unbounded", peak.unbounded ? 1 : 0);
+    if (peak.unbounded) {
+        ImGui::TextWrapped("No max or min: sum w_abc B_abc is zero inside the triangle (weights "
+                           "of both signs), and R_ijk grows without bound towards it.");
+        return;
+    }
     if (!peak.found) {
         ImGui::TextWrapped("The function exists nowhere on the grid (zero denominator).");
         return;

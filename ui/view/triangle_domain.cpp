@@ -170,10 +170,17 @@ TriangleHeat triangle_heat(const geom::TrianglePatch& t, int i, int j, int subdi
     h.subdivisions = subdivisions;
     const int N = subdivisions;
     h.values.assign(static_cast<std::size_t>(geom::TrianglePatch::count_for(N)), std::nan(""));
-    bool any = false;
+    bool any = false, positive = false, negative = false;
     for (int a = N; a >= 0; --a)
         for (int b = N - a; b >= 0; --b) {
-            const auto R = geom::rational_bernstein_triangle(t, i, j, grid_point(N, a, b));
+            const geom::Barycentric q = grid_point(N, a, b);
+            if (t.rational) {
+                const double w = geom::triangle_denominator(t, q);
+                positive |= !(w <= 0); // a NaN weight sum counts as vanishing too
+                negative |= !(w >= 0);
+                h.denominator_vanishes |= w == 0 || (positive && negative);
+            }
+            const auto R = geom::rational_bernstein_triangle(t, i, j, q);
             if (!R) continue;
             h.values[static_cast<std::size_t>(geom::TrianglePatch::index(N, a, b))] = *R;
             h.largest = any ? std::max(h.largest, *R) : *R;
@@ -196,6 +203,10 @@ BasisPeak triangle_basis_peak(const geom::TrianglePatch& t, int i, int j, const 
         peak.at = grid_point(n, i, j);
         peak.value = geom::bernstein_triangle(n, i, j, peak.at);
         peak.exact = peak.found = true;
+        return peak;
+    }
+    if (heat.denominator_vanishes) {
+        peak.unbounded = true; // a search would only run towards the pole
         return peak;
     }
     // The best grid point, then a compass search from there.

@@ -71,7 +71,10 @@ struct BasisPeak {
     geom::Barycentric at{};
     double value = 0;
     bool exact = false;
-    bool found = false; // false: R exists nowhere on the grid
+    bool found = false; // false: R exists nowhere on the grid, or has no extreme (unbounded)
+    // The denominator sum w_abc B_abc is zero inside the triangle: R_ijk grows without bound
+    // towards where it is, so there is no largest (or smallest) value to find.
+    bool unbounded = false;
 };
 
 // R_ijk (B^n_ijk for a non-rational patch) at the grid points (a, b, c) / N of the domain,
@@ -87,6 +90,9 @@ struct TriangleHeat {
     int i = -1, j = -1, subdivisions = 0;
     std::vector<double> values;
     double largest = 0, largest_magnitude = 0;
+    // The denominator is zero at a grid point, or has both signs over the grid: it vanishes
+    // inside the triangle (weights of both signs).
+    bool denominator_vanishes = false;
     bool valid = false;
     // The caller's triangle_basis_peak results, kept with the map they were searched from (they
     // too depend on the weights only); not filled by triangle_heat.
