@@ -594,7 +594,8 @@ def rational_picture_and_homogeneous_view(s, ctx):
 
 def triangle_patch_new_split_elevate(s, ctx):
     """Surface > New triangular patch > Degree 3 adds a flat cubic triangle with b111 selected;
-    the control point panel's z field lifts it; Split triangle at the indicator makes three
+    the control point panel's z field lifts it and its xy plane drags it (one undo step); Split
+    triangle at the indicator makes three
     patches and Ctrl+Z takes them back; Elevate triangle degree makes it a quartic."""
     before = len(objects_of(s.save()))
     s.menu("Surface", "New triangular patch", "Degree 3")
@@ -611,6 +612,15 @@ def triangle_patch_new_split_elevate(s, ctx):
     lifted = by_name(s.save(), tri["name"])["triangle"]["points"]
     check(lifted[4][2] == 1.5, f"b111 (point 4) is at z = {lifted[4][2]}, not 1.5")
     ctx.shot(s, "lifted")
+    # b111's disk dragged in the xy plane moves it in x and y only, one undo step.
+    disk = s.rect("cp/disk0")
+    s.drag(disk[0], disk[1], 25, -20)
+    dragged = by_name(s.save(), tri["name"])["triangle"]["points"]
+    check(dragged[4][:2] != lifted[4][:2] and dragged[4][2] == 1.5,
+          f"the xy drag moved b111 from {lifted[4]} to {dragged[4]}")
+    s.key("ctrl+z")
+    check(by_name(s.save(), tri["name"])["triangle"]["points"] == lifted,
+          "Ctrl+Z did not undo the plane drag in one step")
     s.menu("Surface", "triangle/split")
     split = s.save()
     check(len(objects_of(split, "triangle")) == 3, "the split did not make three triangles")

@@ -14,6 +14,7 @@
 #include "ui/panels/plane_canvas.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/canvas_map.hpp"
+#include "ui/view/control_net.hpp"
 #include "ui/view/doc_access.hpp"
 
 namespace isoparm::ui {
@@ -28,9 +29,9 @@ ImU32 u32(const doc::Rgba& c, float alpha = 1) {
 }
 
 // The framing of one plane: the control points' box in that plane, with a margin.
-PlaneMap frame_plane(const geom::Surface& s, const Rect& canvas, int a, int b, float margin) {
-    glm::dvec2 lo(s.points[0][a], s.points[0][b]), hi = lo;
-    for (const glm::dvec3& p : s.points) {
+PlaneMap frame_plane(const ControlNet& net, const Rect& canvas, int a, int b, float margin) {
+    glm::dvec2 lo(net.points[0][a], net.points[0][b]), hi = lo;
+    for (const glm::dvec3& p : net.points) {
         lo = glm::min(lo, glm::dvec2(p[a], p[b]));
         hi = glm::max(hi, glm::dvec2(p[a], p[b]));
     }
@@ -40,14 +41,17 @@ PlaneMap frame_plane(const geom::Surface& s, const Rect& canvas, int a, int b, f
     return fit_plane(canvas, lo - pad, hi + pad, margin);
 }
 
-void plane_canvas(AppContext& ctx, const doc::Object& obj, const geom::Surface& s, int plane,
+// The selected point's disk is dragged (one undo step a drag), a press on another dot selects
+// that point; the net is drawn projected.
+void plane_canvas(AppContext& ctx, const doc::Object& obj, const ControlNet& net, int plane,
                   const Rect& canvas) {
     const PlaneAxes ax = plane_axes[plane];
     const float k = ctx.ui.scale();
     PlaneDrag& pd = ctx.ui.plane_drag;
-    const PlaneMap map = pd.plane == plane ? pd.frozen : frame_plane(s, canvas, ax.a, ax.b, 8 * k);
+    const PlaneMap map =
+        pd.plane == plane ? pd.frozen : frame_plane(net, canvas, ax.a, ax.b, 8 * k);
     const int si = ctx.doc.view.selection.i, sj = ctx.doc.view.selection.j;
-    const glm::dvec3 sel = s.point(si, sj);
+    const glm::dvec3 sel = net.points[static_cast<std::size_t>(net.find(si, sj))];
     const glm::dvec2 disk = plane_to_pixel(map, {sel[ax.a], sel[ax.b]});
     const float disk_r = 7 * k;
 
@@ -67,12 +71,11 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const geom::Surface& 
             ctx.seal();
         } else {
             // A press on another point's dot selects that point instead.
-            for (int i = 0; i < s.n_u; ++i)
-                for (int j = 0; j < s.n_v; ++j) {
-                    const glm::dvec3& p = s.point(i, j);
-                    if (glm::length(plane_to_pixel(map, {p[ax.a], p[ax.b]}) - mouse) <= 5 * k)
-                        ctx.doc.view.selection = {obj.id, i, j};
-                }
+            for (std::size_t q = 0; q < net.points.size(); ++q) {
+                const glm::dvec3& p = net.points[q];
+                if (glm::length(plane_to_pixel(map, {p[ax.a], p[ax.b]}) - mouse) <= 5 * k)
+                    ctx.doc.view.selection = {obj.id, net.ids[q].first, net.ids[q].second};
+            }
         }
     }
     if (ImGui::IsItemActive() && pd.plane == plane) {
@@ -95,28 +98,23 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const geom::Surface& 
     begin_plane_canvas(dl, map, canvas, light);
     // The net, projected.
     const doc::Colors& col = ctx.doc.colors;
-    auto px = [&](int i, int j) {
-        const glm::dvec3& p = s.point(i, j);
+    auto px = [&](int q) {
+        const glm::dvec3& p = net.points[static_cast<std::size_t>(q)];
         return iv(plane_to_pixel(map, {p[ax.a], p[ax.b]}));
     };
-    // Rows and columns as polylines (far fewer vertices than one line per segment).
+    // The net's lines as polylines (far fewer vertices than one line per segment).
     std::vector<ImVec2> line;
     const ImU32 net_col = u32(col.control_net, 0.45f);
-    for (int i = 0; i < s.n_u; ++i) {
+    for (const std::vector<int>& l : net.lines) {
         line.clear();
-        for (int j = 0; j < s.n_v; ++j) line.push_back(px(i, j));
-        dl->AddPolyline(line.data(), static_cast<int>(line.size()), net_col, 0, 1 * k);
-    }
-    for (int j = 0; j < s.n_v; ++j) {
-        line.clear();
-        for (int i = 0; i < s.n_u; ++i) line.push_back(px(i, j));
+        for (int q : l) line.push_back(px(q));
         dl->AddPolyline(line.data(), static_cast<int>(line.size()), net_col, 0, 1 * k);
     }
     // Dots only while they stay readable; a dense net is clearer as lines alone.
-    if (s.n_u * s.n_v <= 144)
-        for (int i = 0; i < s.n_u; ++i)
-            for (int j = 0; j < s.n_v; ++j)
-                dl->AddCircleFilled(px(i, j), 2.5f * k, u32(col.control_points, 0.8f), 8);
+    if (net.points.size() <= 144)
+        for (std::size_t q = 0; q < net.points.size(); ++q)
+            dl->AddCircleFilled(px(static_cast<int>(q)), 2.5f * k, u32(col.control_points, 0.8f),
+                                8);
     const bool active = pd.plane == plane;
     dl->AddCircleFilled(iv(disk), disk_r, u32(col.selected_point), 20);
     dl->AddCircle(iv(disk), disk_r,
@@ -251,17 +249,61 @@ void weight_controls(AppContext& ctx, const doc::Object& obj) {
     }
 }
 
+// The three planes of the selected point, in a row when the panel is wide, else wrapped, with
+// room left under them for the fields and the weight. False when no point is selected after
+// them (a canvas's command may change the document).
+bool plane_canvases(AppContext& ctx) {
+    const float k = ctx.ui.scale();
+    const float spacing = ImGui::GetStyle().ItemSpacing.x;
+    const ImVec2 avail = ImGui::GetContentRegionAvail();
+    const float below =
+        ImGui::GetFrameHeightWithSpacing() * 3 + ImGui::GetTextLineHeightWithSpacing() * 3;
+    // The arrangement (3 in a row, 2 + 1, or a column) that gives the largest planes.
+    int cols = 3;
+    float side = 0;
+    for (int c = 1; c <= 3; ++c) {
+        const int r = (3 + c - 1) / c;
+        const float s =
+            std::min((avail.x - spacing * static_cast<float>(c - 1)) / static_cast<float>(c),
+                     (avail.y - below) / static_cast<float>(r) - spacing);
+        if (s > side) {
+            side = s;
+            cols = c;
+        }
+    }
+    const int rows = (3 + cols - 1) / cols;
+    side = std::max(side, 60 * k);
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    for (int p = 0; p < 3; ++p) {
+        const int r = p / cols, c = p % cols;
+        const Rect canvas{origin.x + static_cast<float>(c) * (side + spacing),
+                          origin.y + static_cast<float>(r) * (side + spacing), side, side};
+        // Re-read each time: the previous canvas may have executed a command.
+        const doc::Object* obj = ctx.doc.selected();
+        if (!obj || !has_valid_point(ctx.doc)) continue;
+        const ControlNet net = control_net_of(*obj);
+        if (net.find(ctx.doc.view.selection.i, ctx.doc.view.selection.j) >= 0)
+            plane_canvas(ctx, *obj, net, p, canvas);
+    }
+    ImGui::SetCursorScreenPos(
+        ImVec2(origin.x, origin.y + static_cast<float>(rows) * (side + spacing)));
+    return ctx.doc.selected() && has_valid_point(ctx.doc);
+}
+
 } // namespace
 
-// A triangle's point: its fields, no plane canvases (they draw a rectangular net).
+// A triangle's point: the planes with its triangular net, its fields and its weight.
 void triangle_point_panel(AppContext& ctx, const doc::Object& obj) {
     const int i = ctx.doc.view.selection.i, j = ctx.doc.view.selection.j;
     ImGui::Text("%s of %s", point_name('P', i, j, &obj).c_str(), obj.name.c_str());
     ImGui::SameLine();
     ImGui::TextDisabled("(%s, degree %d)", selected_point(obj, i, j).type, obj.triangle()->degree);
-    ImGui::TextDisabled("Drag it in the 3D view, or type its coordinates:");
-    coordinate_fields(ctx, obj);
-    const doc::Object* now = ctx.doc.find(obj.id);
+    const std::uint64_t id = obj.id; // obj may not outlive a canvas's command
+    if (!plane_canvases(ctx)) return;
+    const doc::Object* now = ctx.doc.find(id);
+    if (!now || !now->triangle()) return;
+    coordinate_fields(ctx, *now);
+    now = ctx.doc.find(id);
     if (now && has_valid_point(ctx.doc)) weight_controls(ctx, *now);
 }
 
@@ -290,45 +332,9 @@ void draw_control_point_panel(AppContext& ctx) {
     ImGui::Text("%s of %s", point_name('P', i, j, s->n_u, s->n_v).c_str(), obj->name.c_str());
     ImGui::SameLine();
     ImGui::TextDisabled("(%s)", geom::name_of(s->type));
-
-    // The three planes: in a row when the panel is wide, else wrapped.
-    const float k = ctx.ui.scale();
-    const float spacing = ImGui::GetStyle().ItemSpacing.x;
-    const ImVec2 avail = ImGui::GetContentRegionAvail();
-    const float below =
-        ImGui::GetFrameHeightWithSpacing() * 3 + ImGui::GetTextLineHeightWithSpacing() * 3;
-    // The arrangement (3 in a row, 2 + 1, or a column) that gives the largest planes.
-    int cols = 3;
-    float side = 0;
-    for (int c = 1; c <= 3; ++c) {
-        const int r = (3 + c - 1) / c;
-        const float s =
-            std::min((avail.x - spacing * static_cast<float>(c - 1)) / static_cast<float>(c),
-                     (avail.y - below) / static_cast<float>(r) - spacing);
-        if (s > side) {
-            side = s;
-            cols = c;
-        }
-    }
-    const int rows = (3 + cols - 1) / cols;
-    side = std::max(side, 60 * k);
-    const ImVec2 origin = ImGui::GetCursorScreenPos();
-    for (int p = 0; p < 3; ++p) {
-        const int r = p / cols, c = p % cols;
-        const Rect canvas{origin.x + static_cast<float>(c) * (side + spacing),
-                          origin.y + static_cast<float>(r) * (side + spacing), side, side};
-        // Re-read each time: the previous canvas may have executed a command.
-        obj = ctx.doc.selected();
-        s = obj ? obj->surface() : nullptr;
-        if (s && has_valid_point(ctx.doc)) plane_canvas(ctx, *obj, *s, p, canvas);
-    }
-    ImGui::SetCursorScreenPos(
-        ImVec2(origin.x, origin.y + static_cast<float>(rows) * (side + spacing)));
-
-    // The command may have changed the document: re-read before the fields.
+    if (!plane_canvases(ctx)) return;
     obj = ctx.doc.selected();
-    s = obj ? obj->surface() : nullptr;
-    if (!s || !has_valid_point(ctx.doc)) return;
+    if (!obj || !obj->surface() || !has_valid_point(ctx.doc)) return;
     coordinate_fields(ctx, *obj);
     obj = ctx.doc.selected();
     if (!obj || !obj->surface() || !has_valid_point(ctx.doc)) return;
