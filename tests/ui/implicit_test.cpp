@@ -218,4 +218,41 @@ TEST(ImplicitScene, ImplicitObjectsBecomeMeshDrawsWithTheirBox) {
     std::size_t lines = 0;
     for (const auto& b : s.overlay.lines) lines += b.vertices.size();
     EXPECT_EQ(lines, 24u); // the selected object's bounds: 12 edges
+    // The unit sphere inside its bounds is closed, seen from f > 0 outside its box.
+    const auto& f = std::get<doc::ImplicitObject>(d.objects[0].shape);
+    EXPECT_EQ(s.surfaces[0].seen_side, 1);
+    EXPECT_EQ(s.surfaces[0].box_lo, f.lo);
+    EXPECT_EQ(s.surfaces[0].box_hi, f.hi);
+}
+
+// While a new mesh is made in the background, the view keeps the shown mesh's side and box,
+// not the object's new bounds: culling decides by the box the shown mesh was made in.
+TEST(ImplicitScene, TheCullingBoxIsTheShownMeshs) {
+    std::uint64_t id = 0;
+    doc::Document d = one_implicit(id);
+    ImplicitMeshes cache;
+    ImplicitMeshes::Mode wait;
+    wait.wait = true;
+    cache.update(d, wait);
+    auto& f = std::get<doc::ImplicitObject>(d.objects[0].shape);
+    const glm::dvec3 lo = f.lo, hi = f.hi;
+    f.lo.x = -0.5; // cuts the sphere: open
+    f.cell = 0.02; // a fine grid: made in the background
+    cache.update(d, ImplicitMeshes::Mode{});
+    ImplicitMeshes::View v = cache.view(id);
+    ASSERT_NE(v.mesh, nullptr);
+    if (v.lo == lo) { // the new mesh may already be there on a fast machine
+        EXPECT_EQ(v.seen_side, 1);
+        EXPECT_EQ(v.hi, hi);
+        const BuiltScene s = build_scene(d, {}, &cache);
+        ASSERT_EQ(s.surfaces.size(), 1u);
+        EXPECT_EQ(s.surfaces[0].box_lo, lo); // not f.lo
+    }
+    while (v.lo == lo) { // no timing: poll until the worker's mesh is adopted
+        std::this_thread::yield();
+        cache.update(d, ImplicitMeshes::Mode{});
+        v = cache.view(id);
+    }
+    EXPECT_EQ(v.lo, f.lo);
+    EXPECT_EQ(v.seen_side, 0);
 }

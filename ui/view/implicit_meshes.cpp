@@ -128,6 +128,8 @@ ImplicitMeshes::View ImplicitMeshes::view(std::uint64_t id) const {
         v.mesh = &e.mesh;
         v.cell = e.shown->cell;
         v.seen_side = e.seen_side;
+        v.lo = e.shown->lo;
+        v.hi = e.shown->hi;
     }
     v.revision = e.revision;
     v.error = e.error;

@@ -35,8 +35,10 @@ public:
         double cell = 0;                  // cell of the mesh shown
         std::string error;                // polygonization error of the current key
         // The mesh's side seen from outside its box (geom::implicit::side_seen_from_outside):
-        // +1 / -1 for a closed mesh, 0 otherwise.
+        // +1 / -1 for a closed mesh, 0 otherwise; and that box, the shown mesh's own (the
+        // object's bounds may have changed while a new mesh is made).
         int seen_side = 0;
+        glm::dvec3 lo{0.0}, hi{0.0};
     };
 
     ImplicitMeshes() = default;

@@ -286,8 +286,8 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
                 sd.mesh = v.mesh;
                 sd.mesh_revision = v.revision;
                 sd.seen_side = v.seen_side;
-                sd.box_lo = im->lo;
-                sd.box_hi = im->hi;
+                sd.box_lo = v.lo;
+                sd.box_hi = v.hi;
                 sd.shaded = shaded;
                 // Every triangle edge over a shaded surface would hide it: wireframe only
                 // in the wireframe style.
