@@ -24,6 +24,7 @@
 #include "ui/view/layout.hpp"
 #include "ui/view/picking.hpp"
 #include "ui/view/scene_draw.hpp"
+#include "ui/view/triangle_denominator.hpp"
 #include "ui/view/triangle_domain.hpp"
 
 namespace isoparm::ui {
@@ -345,6 +346,7 @@ struct UiState {
     // set, and each control point's weight at its Greville point.
     bool show_denominator = false, show_weights = false;
     DenominatorView denominator;
+    TriangleDenominatorView triangle_denominator; // the same picture on a domain triangle
     HomogeneousState homogeneous;
     int left_tab = 0; // the teaching tab shown below the tracing square (ui/workstation.cpp)
 

@@ -413,7 +413,8 @@ def triangle_panels_trace_step_basis(s, ctx):
     edge keeps it on the triangle; r typed as 1.5 is refused and moves nothing, 0.5 is taken
     with s : t kept; the de Boor tab steps de Casteljau's levels 0..3 (10, 6, 3, 1 points) with
     > and ]; the Basis tab's R111 peaks at the centre at 2 B / (1 + B), B = 6/27, and the
-    basis functions sum to 1; a right click on the dot of b210 selects it."""
+    basis functions sum to 1; a right click on the dot of b210 selects it; Denominator w shows
+    the zero set that w111 = -8 makes."""
     vertex = s.rect("tracing/triangle/r1")
     s.click(vertex[0] - 1, vertex[1] - 1)
     # A pixel is 0.01 of a side 100 px long (presentation mode on a projector).
@@ -480,6 +481,38 @@ def triangle_panels_trace_step_basis(s, ctx):
                    abs(r["facts"].get("basis/triangle_max", 0) - 2 * B / (1 + B)) > 1e-3)
     check(r["facts"]["tracing/barycentric"] == before, "a right click moved the indicator")
     ctx.shot(s, "dot-selected")
+
+    # Denominator w on the triangle: nothing while every weight is positive; w111 typed as -8
+    # makes D = 1 - 9 B_111 negative in the middle, a closed zero set; Ctrl+Z takes it back.
+    x, y, _, _ = s.rect("tracing/triangle/b111")
+    s.click(x, y, button=3)
+    s.wait_for("b111 selected", lambda r: r["point"] == [1, 1])
+    # On a projector the checkbox is below the fold of its panel: scroll to it, as a person does.
+    panel = s.rect("panel/Domain and knots")
+    for _ in range(10):
+        x, y, w, h = s.rect("tracing/denominator")
+        if y + h < panel[1] + panel[3] - 4:
+            break
+        s.move(panel[0] + panel[2] / 2, panel[1] + panel[3] / 2)
+        s.xdo("click", 5)
+        time.sleep(0.3)
+    s.click(x + h / 2, y + h / 2)
+    s.wait_for("the denominator shown, no zero set",
+               lambda r: r["facts"].get("tracing/zero_set_segments") == 0)
+    x, y, w, h = s.rect("cp/weight")
+    s.click(x + w * 0.3, y + h / 2)
+    s.wait_for("the weight field to take the keyboard", lambda r: r.get("typing"))
+    s.key("ctrl+a")
+    s.key("minus")  # xdotool would take a leading "-" for an option of its own
+    s.xdo("type", "--delay", "30", "8")
+    s.key("Return")
+    s.wait_for("the weight field to let go", lambda r: not r.get("typing"))
+    s.wait_for("a zero set with w111 = -8",
+               lambda r: r["facts"].get("tracing/zero_set_segments", 0) > 8)
+    ctx.shot(s, "triangle-zero-set")
+    s.key("ctrl+z")
+    s.wait_for("the weight back (no zero set)",
+               lambda r: r["facts"].get("tracing/zero_set_segments") == 0)
 
 
 def continuity_tab_measures_the_borders(s, ctx):

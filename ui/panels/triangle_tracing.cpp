@@ -65,6 +65,35 @@ void draw_grid(ImDrawList* dl, const TriangleCanvas& c, int n, ImU32 color, floa
     }
 }
 
+// The square's Denominator w picture on the triangle: where sum w_ijk B_ijk is negative,
+// tinted red under the grid, and its zero set (where the patch goes to infinity) over it.
+const TriangleDenominatorView& denominator_picture(AppContext& ctx, const geom::TrianglePatch& t) {
+    constexpr int subdivisions = 48;
+    TriangleDenominatorView& v = ctx.ui.triangle_denominator;
+    if (!same_denominator(v, t, subdivisions)) v = triangle_denominator_view(t, subdivisions);
+    return v;
+}
+
+void draw_negative_part(const AppContext& ctx, ImDrawList* dl, const TriangleCanvas& c,
+                        const TriangleDenominatorView& v) {
+    // Opaque: translucent small triangles would show their seams.
+    const ImU32 tint =
+        ctx.ui.presentation ? IM_COL32(246, 196, 196, 255) : IM_COL32(96, 34, 40, 255);
+    for (const auto& small : v.negative)
+        dl->AddTriangleFilled(to_imvec(barycentric_to_pixel(c, small[0])),
+                              to_imvec(barycentric_to_pixel(c, small[1])),
+                              to_imvec(barycentric_to_pixel(c, small[2])), tint);
+}
+
+void draw_zero_set(ImDrawList* dl, const TriangleCanvas& c, const TriangleDenominatorView& v,
+                   float k) {
+    for (const auto& segment : v.zero_set)
+        dl->AddLine(to_imvec(barycentric_to_pixel(c, segment[0])),
+                    to_imvec(barycentric_to_pixel(c, segment[1])), IM_COL32(230, 40, 40, 255),
+                    2 * k);
+    report_fact("tracing/zero_set_segments", static_cast<double>(v.zero_set.size()));
+}
+
 // Lines r = const, s = const and t = const through the indicator: the three isoparametric
 // lines the 3D view draws on the patch.
 void draw_cross(ImDrawList* dl, const TriangleCanvas& c, const geom::Barycentric& p, ImU32 color,
@@ -224,7 +253,11 @@ void draw_triangle_tracing(AppContext& ctx, const doc::Object& obj, const geom::
     ImDrawList* dl = ImGui::GetWindowDrawList();
     const ImVec2 A = to_imvec(c.vertex[0]), B = to_imvec(c.vertex[1]), C = to_imvec(c.vertex[2]);
     dl->AddTriangleFilled(A, B, C, pal.bg);
+    const TriangleDenominatorView* denominator =
+        t.rational && ctx.ui.show_denominator ? &denominator_picture(ctx, t) : nullptr;
+    if (denominator) draw_negative_part(ctx, dl, c, *denominator);
     draw_grid(dl, c, n, pal.grid, k);
+    if (denominator) draw_zero_set(dl, c, *denominator, k);
     const geom::Barycentric& p = ctx.doc.view.barycentric;
     draw_cross(dl, c, p, pal.cross, k);
     dl->AddTriangle(A, B, C, pal.border, 1.5f * k);
@@ -265,6 +298,12 @@ void draw_triangle_tracing(AppContext& ctx, const doc::Object& obj, const geom::
         ImGui::PopStyleColor();
     }
     if (t.rational) {
+        ImGui::Checkbox("Denominator w", &ctx.ui.show_denominator);
+        report_item("tracing/denominator");
+        if (ImGui::IsItemHovered())
+            wrapped_tooltip("Where w(r, s, t) = sum w_ijk B_ijk is negative the triangle is "
+                            "tinted red; the red line is w = 0, where the patch goes to infinity.");
+        same_line_if_fits(toggle_width("Weights"));
         ImGui::Checkbox("Weights", &ctx.ui.show_weights);
         report_item("tracing/weights");
         if (ImGui::IsItemHovered())
