@@ -76,7 +76,7 @@ std::optional<double> basis_sum(const geom::TrianglePatch& t, const geom::Baryce
 // The heat map itself: one vertex per grid point, coloured by value / the largest |value|
 // (grey where R does not exist), two triangles per grid cell as tessellate_triangle makes them.
 void draw_heat(ImDrawList* dl, const TriangleCanvas& c, const TriangleHeat& h) {
-    const int N = h.subdivisions;
+    const int N = h.key.subdivisions;
     const int vertices = geom::TrianglePatch::count_for(N);
     const ImVec2 uv = ImGui::GetFontTexUvWhitePixel();
     dl->PrimReserve(3 * N * N, vertices);

@@ -30,17 +30,11 @@ void march(const geom::TrianglePatch& t, const std::array<geom::Barycentric, 3>&
 
 TriangleDenominatorView triangle_denominator_view(const geom::TrianglePatch& t, int subdivisions) {
     TriangleDenominatorView v;
-    v.degree = t.degree;
-    v.rational = t.rational;
-    v.weights = t.weights;
-    v.subdivisions = subdivisions;
+    v.key = TriangleWeightsKey::of(t, subdivisions);
     v.valid = true;
     if (!t.rational) return v; // D = 1
     const int N = subdivisions;
-    auto point = [&](int a, int b) {
-        return geom::Barycentric{static_cast<double>(a) / N, static_cast<double>(b) / N,
-                                 static_cast<double>(N - a - b) / N};
-    };
+    auto point = [N](int a, int b) { return triangle_grid_point(N, a, b); };
     std::vector<double> D(static_cast<std::size_t>(geom::TrianglePatch::count_for(N)));
     auto at = [&](int a, int b) -> double& {
         return D[static_cast<std::size_t>(geom::TrianglePatch::index(N, a, b))];
@@ -60,8 +54,7 @@ TriangleDenominatorView triangle_denominator_view(const geom::TrianglePatch& t, 
 
 bool same_denominator(const TriangleDenominatorView& v, const geom::TrianglePatch& t,
                       int subdivisions) {
-    return v.valid && v.degree == t.degree && v.rational == t.rational &&
-           v.subdivisions == subdivisions && v.weights == t.weights;
+    return v.valid && v.key.matches(t, subdivisions);
 }
 
 } // namespace isoparm::ui

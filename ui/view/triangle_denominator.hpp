@@ -8,15 +8,12 @@
 #include <vector>
 
 #include "core/geom/triangle.hpp"
+#include "ui/view/triangle_domain.hpp"
 
 namespace isoparm::ui {
 
 struct TriangleDenominatorView {
-    // The key.
-    int degree = 0;
-    bool rational = false;
-    std::vector<double> weights;
-    int subdivisions = 0;
+    TriangleWeightsKey key;
     bool valid = false;
     // Small triangles of the grid with D < 0 at their centroid.
     std::vector<std::array<geom::Barycentric, 3>> negative;

@@ -17,12 +17,21 @@ const char* coordinate_name(int which) {
     return names[which];
 }
 
-geom::Barycentric grid_point(int N, int a, int b) {
+} // namespace
+
+geom::Barycentric triangle_grid_point(int N, int a, int b) {
     const double n = N;
     return {a / n, b / n, (N - a - b) / n};
 }
 
-} // namespace
+TriangleWeightsKey TriangleWeightsKey::of(const geom::TrianglePatch& t, int subdivisions) {
+    return {t.degree, t.rational, t.weights, subdivisions};
+}
+
+bool TriangleWeightsKey::matches(const geom::TrianglePatch& t, int subdivisions_) const {
+    return degree == t.degree && rational == t.rational && subdivisions == subdivisions_ &&
+           weights == t.weights;
+}
 
 const geom::TrianglePatch* selected_triangle(const doc::Document& d, const doc::Object** object) {
     const doc::Object* o = d.selected();
@@ -156,24 +165,20 @@ std::vector<std::vector<double>> triangle_level_weights(const geom::TrianglePatc
 
 bool same_heat(const TriangleHeat& heat, const geom::TrianglePatch& t, int i, int j,
                int subdivisions) {
-    return heat.valid && heat.i == i && heat.j == j && heat.subdivisions == subdivisions &&
-           heat.degree == t.degree && heat.rational == t.rational && heat.weights == t.weights;
+    return heat.valid && heat.i == i && heat.j == j && heat.key.matches(t, subdivisions);
 }
 
 TriangleHeat triangle_heat(const geom::TrianglePatch& t, int i, int j, int subdivisions) {
     TriangleHeat h;
-    h.degree = t.degree;
-    h.rational = t.rational;
-    h.weights = t.weights;
+    h.key = TriangleWeightsKey::of(t, subdivisions);
     h.i = i;
     h.j = j;
-    h.subdivisions = subdivisions;
     const int N = subdivisions;
     h.values.assign(static_cast<std::size_t>(geom::TrianglePatch::count_for(N)), std::nan(""));
     bool any = false, positive = false, negative = false;
     for (int a = N; a >= 0; --a)
         for (int b = N - a; b >= 0; --b) {
-            const geom::Barycentric q = grid_point(N, a, b);
+            const geom::Barycentric q = triangle_grid_point(N, a, b);
             if (t.rational) {
                 const double w = geom::triangle_denominator(t, q);
                 positive |= !(w <= 0); // a NaN weight sum counts as vanishing too
@@ -200,7 +205,7 @@ BasisPeak triangle_basis_peak(const geom::TrianglePatch& t, int i, int j, const 
                                           [&](double w) { return w == t.weights[0] && w != 0; });
     if (!lowest && (!t.rational || unit_weights)) {
         // Equal weights cancel: R_ijk = B^n_ijk, whose peak is known.
-        peak.at = grid_point(n, i, j);
+        peak.at = triangle_grid_point(n, i, j);
         peak.value = geom::bernstein_triangle(n, i, j, peak.at);
         peak.exact = peak.found = true;
         return peak;
@@ -210,13 +215,13 @@ BasisPeak triangle_basis_peak(const geom::TrianglePatch& t, int i, int j, const 
         return peak;
     }
     // The best grid point, then a compass search from there.
-    const int N = heat.subdivisions;
+    const int N = heat.key.subdivisions;
     for (int a = N; a >= 0; --a)
         for (int b = N - a; b >= 0; --b) {
             const double v =
                 heat.values[static_cast<std::size_t>(geom::TrianglePatch::index(N, a, b))];
             if (std::isnan(v) || (peak.found && sign * v <= sign * peak.value)) continue;
-            peak = {grid_point(N, a, b), v, false, true};
+            peak = {triangle_grid_point(N, a, b), v, false, true};
         }
     if (!peak.found) return peak;
     static const int directions[6][3] = {{1, -1, 0}, {-1, 1, 0}, {1, 0, -1},

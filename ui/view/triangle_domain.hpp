@@ -77,6 +77,19 @@ struct BasisPeak {
     bool unbounded = false;
 };
 
+// What a picture over the domain triangle depends on when it depends on the weights alone (the
+// basis heat map, the denominator's sign): dragging a control point keeps it.
+struct TriangleWeightsKey {
+    int degree = 0;
+    bool rational = false;
+    std::vector<double> weights;
+    int subdivisions = 0; // of the picture's grid (a, b, c) / N, a + b + c = N
+    static TriangleWeightsKey of(const geom::TrianglePatch& t, int subdivisions);
+    bool matches(const geom::TrianglePatch& t, int subdivisions) const;
+};
+// The grid point (a, b, N - a - b) / N.
+geom::Barycentric triangle_grid_point(int N, int a, int b);
+
 // R_ijk (B^n_ijk for a non-rational patch) at the grid points (a, b, c) / N of the domain,
 // a + b + c = N, in TrianglePatch::index(N, a, b) order (b_N00's corner first); NaN where the
 // denominator is zero. `largest` is the largest finite value, `largest_magnitude` the
@@ -84,10 +97,8 @@ struct BasisPeak {
 struct TriangleHeat {
     // The key: R_ijk depends on the degree and the weights, not on where the points are (a
     // dragged point does not recompute the map).
-    int degree = 0;
-    bool rational = false;
-    std::vector<double> weights;
-    int i = -1, j = -1, subdivisions = 0;
+    TriangleWeightsKey key;
+    int i = -1, j = -1;
     std::vector<double> values;
     double largest = 0, largest_magnitude = 0;
     // The denominator is zero at a grid point, or has both signs over the grid: it vanishes
