@@ -43,7 +43,8 @@ PlaneMap frame_plane(const ControlNet& net, const Rect& canvas, int a, int b, fl
 
 // The selected point's disk is dragged (one undo step a drag), a press on another dot selects
 // that point; the net is drawn projected.
-void plane_canvas(AppContext& ctx, const doc::Object& obj, const ControlNet& net, int plane,
+// Returns whether it moved the point (the document changed).
+bool plane_canvas(AppContext& ctx, const doc::Object& obj, const ControlNet& net, int plane,
                   const Rect& canvas) {
     const PlaneAxes ax = plane_axes[plane];
     const float k = ctx.ui.scale();
@@ -54,6 +55,7 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const ControlNet& net
     const glm::dvec3 sel = net.points[static_cast<std::size_t>(net.find(si, sj))];
     const glm::dvec2 disk = plane_to_pixel(map, {sel[ax.a], sel[ax.b]});
     const float disk_r = 7 * k;
+    bool moved = false;
 
     ImGui::SetCursorScreenPos(ImVec2(canvas.x, canvas.y));
     ImGui::PushID(plane);
@@ -83,7 +85,10 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const ControlNet& net
         glm::dvec3 p = sel;
         p[ax.a] = ab.x;
         p[ax.b] = ab.y;
-        if (p != sel) ctx.execute(doc::move_control_point(obj.id, si, sj, p));
+        if (p != sel) {
+            ctx.execute(doc::move_control_point(obj.id, si, sj, p));
+            moved = true;
+        }
     }
     if (ImGui::IsItemDeactivated() && pd.plane == plane) {
         pd.plane = -1;
@@ -132,6 +137,7 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const ControlNet& net
     dl->AddText(ImVec2(a.x + 4 * k, a.y + 2 * k), tc, v);
     dl->AddText(ImVec2(a.x + (canvas.w - ImGui::CalcTextSize(ax.name).x) / 2, a.y + 2 * k),
                 ImGui::GetColorU32(ImGuiCol_TextDisabled), ax.name);
+    return moved;
 }
 
 // The selected control point of a surface or a triangle, as the fields edit it.
@@ -274,16 +280,19 @@ bool plane_canvases(AppContext& ctx) {
     const int rows = (3 + cols - 1) / cols;
     side = std::max(side, 60 * k);
     const ImVec2 origin = ImGui::GetCursorScreenPos();
+    const doc::Object* obj = ctx.doc.selected();
+    ControlNet net = obj ? control_net_of(*obj) : ControlNet{};
     for (int p = 0; p < 3; ++p) {
         const int r = p / cols, c = p % cols;
         const Rect canvas{origin.x + static_cast<float>(c) * (side + spacing),
                           origin.y + static_cast<float>(r) * (side + spacing), side, side};
-        // Re-read each time: the previous canvas may have executed a command.
-        const doc::Object* obj = ctx.doc.selected();
-        if (!obj || !has_valid_point(ctx.doc)) continue;
-        const ControlNet net = control_net_of(*obj);
-        if (net.find(ctx.doc.view.selection.i, ctx.doc.view.selection.j) >= 0)
-            plane_canvas(ctx, *obj, net, p, canvas);
+        // The net again only after a canvas moved a point (obj may not outlive the command).
+        if (!obj || !has_valid_point(ctx.doc)) break;
+        if (net.find(ctx.doc.view.selection.i, ctx.doc.view.selection.j) < 0) continue;
+        if (plane_canvas(ctx, *obj, net, p, canvas)) {
+            obj = ctx.doc.selected();
+            net = obj ? control_net_of(*obj) : ControlNet{};
+        }
     }
     ImGui::SetCursorScreenPos(
         ImVec2(origin.x, origin.y + static_cast<float>(rows) * (side + spacing)));

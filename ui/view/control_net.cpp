@@ -32,12 +32,13 @@ ControlNet surface_net(const geom::Surface& s) {
 ControlNet triangle_net(const geom::TrianglePatch& t) {
     ControlNet net;
     const int n = t.degree;
-    for (int i = n; i >= 0; --i)
-        for (int j = n - i; j >= 0; --j) {
-            net.ids.emplace_back(i, j);
-            net.points.push_back(t.points[geom::TrianglePatch::index(n, i, j)]);
-        }
-    auto at = [&](int i, int j) { return net.find(i, j); };
+    // In the patch's own order: point (i, j) is at TrianglePatch::index(n, i, j).
+    net.points = t.points;
+    net.ids.resize(t.points.size());
+    for (int i = 0; i <= n; ++i)
+        for (int j = 0; i + j <= n; ++j)
+            net.ids[static_cast<std::size_t>(geom::TrianglePatch::index(n, i, j))] = {i, j};
+    auto at = [n](int i, int j) { return geom::TrianglePatch::index(n, i, j); };
     for (int c = 0; c < n; ++c) { // a line of c + 1 .. n + 1 points: c = 0 is an edge
         std::vector<int>& i_const = net.lines.emplace_back();
         for (int j = 0; j <= n - c; ++j) i_const.push_back(at(c, j));
