@@ -203,6 +203,19 @@ def set_field(s, name, text):
     s.wait_for(f"{name} to let go of the keyboard", lambda r: not r.get("typing"))
 
 
+def set_field_negative(s, name, digits):
+    """set_field for a negative value: the minus sign as its key (xdotool would take a leading
+    "-" for an option of its own)."""
+    x, y, w, h = s.rect(name)
+    s.click(x + w * 0.3, y + h / 2)
+    s.wait_for(f"{name} to take the keyboard", lambda r: r.get("typing"))
+    s.key("ctrl+a")
+    s.key("minus")
+    s.xdo("type", "--delay", "30", digits)
+    s.key("Return")
+    s.wait_for(f"{name} to let go of the keyboard", lambda r: not r.get("typing"))
+
+
 def fig6_split_sequence_keeps_c1(s, ctx):
     """The paper's Fig. 6 done live with C1 on: split at u = 0.75, then the left part at
     v = 0.5; every border between the three parts is kept C1."""
@@ -499,14 +512,7 @@ def triangle_panels_trace_step_basis(s, ctx):
     s.click(x + h / 2, y + h / 2)
     s.wait_for("the denominator shown, no zero set",
                lambda r: r["facts"].get("tracing/zero_set_segments") == 0)
-    x, y, w, h = s.rect("cp/weight")
-    s.click(x + w * 0.3, y + h / 2)
-    s.wait_for("the weight field to take the keyboard", lambda r: r.get("typing"))
-    s.key("ctrl+a")
-    s.key("minus")  # xdotool would take a leading "-" for an option of its own
-    s.xdo("type", "--delay", "30", "8")
-    s.key("Return")
-    s.wait_for("the weight field to let go", lambda r: not r.get("typing"))
+    set_field_negative(s, "cp/weight", "8")
     s.wait_for("a zero set with w111 = -8",
                lambda r: r["facts"].get("tracing/zero_set_segments", 0) > 8)
     ctx.shot(s, "triangle-zero-set")
@@ -600,15 +606,7 @@ def rational_picture_and_homogeneous_view(s, ctx):
           "Fig. 3b (all weights positive) has no zero set")
     s.click_named("tracing/weights")
     r = s.wait_for("weight labels", lambda r: r["facts"].get("tracing/weight_labels", 0) > 0)
-    # The minus sign as its key: xdotool would take a leading "-" for an option of its own.
-    x, y, w, h = s.rect("cp/weight")
-    s.click(x + w * 0.3, y + h / 2)
-    s.wait_for("the weight field to take the keyboard", lambda r: r.get("typing"))
-    s.key("ctrl+a")
-    s.key("minus")
-    s.xdo("type", "--delay", "30", "8")
-    s.key("Return")
-    s.wait_for("the weight field to let go", lambda r: not r.get("typing"))
+    set_field_negative(s, "cp/weight", "8")
     r = s.wait_for("a zero set with w22 = -8",
                    lambda r: r["facts"].get("tracing/zero_set_segments", 0) > 8)
     ctx.shot(s, "denominator-zero-set")
