@@ -13,8 +13,8 @@
 #include "ui/render/gl.hpp"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h> // ImGui_ImplGlfw_KeyCallback
 #include <imgui.h>
-#include <imgui_impl_glfw.h> // ImGui_ImplGlfw_KeyCallback
 
 #include "app/commands.hpp"
 #include "core/scene/autosave.hpp"

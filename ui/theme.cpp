@@ -1,11 +1,11 @@
 // Themes and font sizes.
 #include "ui/theme.hpp"
 
+#include <backends/imgui_impl_opengl3.h>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <imgui.h>
-#include <imgui_impl_opengl3.h>
 
 namespace isoparm::ui {
 

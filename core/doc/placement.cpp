@@ -18,21 +18,10 @@ void grow(std::optional<Box>& box, const glm::dvec3& p) {
     box->hi = glm::max(box->hi, p);
 }
 
-template <class Points> std::optional<Box> box_of_points(const Points& points) {
-    std::optional<Box> box;
-    for (const auto& p : points) grow(box, glm::dvec3(p));
-    return box;
-}
-
-void translate(Shape& shape, const glm::dvec3& d) {
-    for (glm::dvec3& p : control_points_of(shape)) p += d;
-}
-
 } // namespace
 
 std::optional<Box> bounds_of(const Shape& shape) {
-    if (const ImplicitObject* f = implicit_of(shape)) return Box{f->lo, f->hi};
-    return box_of_points(control_points_of(shape));
+    return std::visit([](const auto& k) { return bounds(k); }, shape);
 }
 
 std::optional<Box> scene_bounds(const Document& doc) {
@@ -48,9 +37,10 @@ std::optional<Box> scene_bounds(const Document& doc) {
 }
 
 void place_beside_scene(const Document& doc, Shape& shape) {
-    // An implicit surface's expression is in absolute coordinates: moving its box alone
-    // would cut the field, so it stays where its formula puts it.
-    if (kind_of(shape) == ObjectKind::implicit) return;
+    // An object moves with its control points; one without them (an implicit surface, whose
+    // expression is in absolute coordinates: moving its box alone would cut the field) stays
+    // where its formula puts it.
+    if (control_points_of(shape).empty()) return;
     const std::optional<Box> scene = scene_bounds(doc);
     const std::optional<Box> own = bounds_of(shape);
     if (!scene || !own) return;
@@ -58,7 +48,7 @@ void place_beside_scene(const Document& doc, Shape& shape) {
     const double gap = std::max(0.25 * width, 0.5);
     glm::dvec3 d{scene->hi.x + gap - own->lo.x, 0, 0};
     d.y = 0.5 * (scene->lo.y + scene->hi.y) - 0.5 * (own->lo.y + own->hi.y);
-    translate(shape, d);
+    for (glm::dvec3& p : control_points_of(shape)) p += d;
 }
 
 } // namespace isoparm::doc

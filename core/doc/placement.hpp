@@ -9,10 +9,6 @@
 
 namespace isoparm::doc {
 
-struct Box {
-    glm::dvec3 lo{0}, hi{0};
-};
-
 // The box of an object's control points (an implicit surface: its polygonization bounds).
 std::optional<Box> bounds_of(const Shape& shape);
 // The box of every visible object; nothing when the scene shows nothing.

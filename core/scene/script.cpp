@@ -317,38 +317,76 @@ std::string list_text(const std::vector<double>& v) {
     return out + "]";
 }
 
-// A triangular patch: its degree and its control point b_ijk (i, j), k = n - i - j; it has
-// no knots and no tensor-product type.
-std::vector<std::string> unmet_on_triangle(const ExpectStep& e, const std::string& object_name,
-                                           const geom::TrianglePatch& t) {
+// The degree of a kind that has one (a surface's along `dir`), or none.
+std::optional<int> degree_of(const doc::Object& o, geom::Dir dir) {
+    if (const geom::Surface* s = o.surface()) return s->degree(dir);
+    if (const geom::Curve* c = o.curve()) return c->degree;
+    if (const geom::TrianglePatch* t = o.triangle()) return t->degree;
+    return std::nullopt;
+}
+
+// The expectations on one object: its spline type, degree and knots (the kinds that have
+// them; any other is named as what it is) and a control point's position and weight.
+std::vector<std::string> unmet_on_object(const ExpectStep& e, const doc::Object& o) {
     std::vector<std::string> out;
     const std::string tol = " (tolerance " + geom::format_number(e.tolerance) + ")";
-    const std::string name = "'" + object_name + "'";
-    if (e.knots || e.type)
-        out.push_back(name + " is a triangular patch: it has no knots and no spline type");
-    if (e.degree && t.degree != *e.degree)
-        out.push_back("expected " + name + "'s degree to be " + std::to_string(*e.degree) +
-                      ", it is " + std::to_string(t.degree));
+    const std::string name = "'" + o.name + "'";
+    const std::string is = name + " is " + doc::kind_noun(o.kind()) + ": it has no ";
+    const geom::Surface* s = o.surface();
+    const geom::Curve* c = o.curve();
+    if (e.type) {
+        if (!s && !c) {
+            out.push_back(is + "spline type");
+        } else if (const geom::SplineType t = s ? s->type : c->type; t != *e.type) {
+            out.push_back("expected " + name + " to be " + geom::name_of(*e.type) + ", it is " +
+                          geom::name_of(t));
+        }
+    }
+    if (e.degree) {
+        const std::optional<int> p = degree_of(o, e.direction);
+        if (!p)
+            out.push_back(is + "degree");
+        else if (*p != *e.degree)
+            out.push_back("expected " + name + "'s degree" +
+                          (s ? std::string(" in ") + geom::name_of(e.direction) : "") + " to be " +
+                          std::to_string(*e.degree) + ", it is " + std::to_string(*p));
+    }
+    if (e.knots) {
+        if (!s && !c) {
+            out.push_back(is + "knots");
+        } else {
+            const geom::Knots& U = s ? s->knots(e.direction) : c->knots;
+            bool same = U.size() == e.knots->size();
+            for (std::size_t k = 0; same && k < U.size(); ++k)
+                same = near(U[k], (*e.knots)[k], e.tolerance);
+            if (!same)
+                out.push_back("expected " + name + "'s knots" +
+                              (s ? std::string(" in ") + geom::name_of(e.direction) : "") + " " +
+                              list_text(*e.knots) + ", found " + list_text(U) + tol);
+        }
+    }
     if (!e.i) return out;
     const int i = *e.i, j = e.j.value_or(-1);
-    const std::string label =
-        "b" + std::to_string(i) + "," + std::to_string(j) + "," + std::to_string(t.degree - i - j);
-    if (i < 0 || j < 0 || i + j > t.degree) {
-        out.push_back(name + " has no control point b_ijk with i = " + std::to_string(i) +
-                      ", j = " + std::to_string(j));
+    if (doc::control_points_of(o.shape).empty()) {
+        out.push_back(is + "control points");
         return out;
     }
-    const auto at = static_cast<std::size_t>(geom::TrianglePatch::index(t.degree, i, j));
-    const glm::dvec3 p = t.points[at];
+    const std::string label = doc::point_label_of(o.shape, doc::PointName::indexed, i, j);
+    if (!doc::has_control_point(o.shape, i, j)) {
+        out.push_back(name + " has no control point " + label);
+        return out;
+    }
+    const auto at = *std::visit([&](const auto& k) { return point_index(k, i, j); }, o.shape);
+    const glm::dvec3 p = doc::control_points_of(o.shape)[at];
+    const double w = doc::control_weights_of(o.shape)[at];
     if (e.position &&
         !(near(p.x, e.position->x, e.tolerance) && near(p.y, e.position->y, e.tolerance) &&
           near(p.z, e.position->z, e.tolerance)))
         out.push_back("expected " + label + " of " + name + " at " + vec_text(*e.position) +
                       ", found " + vec_text(p) + tol);
-    if (e.weight && !near(t.weights[at], *e.weight, e.tolerance))
+    if (e.weight && !near(w, *e.weight, e.tolerance))
         out.push_back("expected the weight of " + label + " of " + name + " to be " +
-                      geom::format_number(*e.weight) + ", found " +
-                      geom::format_number(t.weights[at]) + tol);
+                      geom::format_number(*e.weight) + ", found " + geom::format_number(w) + tol);
     return out;
 }
 
@@ -370,60 +408,7 @@ std::vector<std::string> unmet(const ExpectStep& e, const doc::Document& d) {
         out.push_back("expected an object with id " + std::to_string(*e.id) + ", found none");
         return out;
     }
-    const geom::Surface* s = o->surface();
-    const geom::Curve* c = o->curve();
-    if (const geom::TrianglePatch* t = o->triangle()) return unmet_on_triangle(e, o->name, *t);
-    if (!s && !c) {
-        out.push_back("'" + o->name +
-                      "' is an implicit surface: it has no points, knots or degree");
-        return out;
-    }
-    const std::string name = "'" + o->name + "'";
-    if (e.type) {
-        const geom::SplineType t = s ? s->type : c->type;
-        if (t != *e.type)
-            out.push_back("expected " + name + " to be " + geom::name_of(*e.type) + ", it is " +
-                          geom::name_of(t));
-    }
-    if (e.degree) {
-        const int p = s ? s->degree(e.direction) : c->degree;
-        if (p != *e.degree)
-            out.push_back("expected " + name + "'s degree" +
-                          (s ? std::string(" in ") + geom::name_of(e.direction) : "") + " to be " +
-                          std::to_string(*e.degree) + ", it is " + std::to_string(p));
-    }
-    if (e.knots) {
-        const geom::Knots& U = s ? s->knots(e.direction) : c->knots;
-        bool same = U.size() == e.knots->size();
-        for (std::size_t k = 0; same && k < U.size(); ++k)
-            same = near(U[k], (*e.knots)[k], e.tolerance);
-        if (!same)
-            out.push_back("expected " + name + "'s knots" +
-                          (s ? std::string(" in ") + geom::name_of(e.direction) : "") + " " +
-                          list_text(*e.knots) + ", found " + list_text(U) + tol);
-    }
-    if (e.i) {
-        const int i = *e.i, j = e.j.value_or(-1);
-        const bool in_range = s ? (i < s->n_u && j >= 0 && j < s->n_v) : (i < c->count() && j < 0);
-        const std::string label =
-            "P" + std::to_string(i) + (j >= 0 ? "," + std::to_string(j) : std::string());
-        if (!in_range) {
-            out.push_back(name + " has no control point " + label);
-            return out;
-        }
-        const std::size_t index = static_cast<std::size_t>(s ? s->index(i, j) : i);
-        const glm::dvec3 p = s ? s->points[index] : c->points[index];
-        const double w = s ? s->weights[index] : c->weights[index];
-        if (e.position &&
-            !(near(p.x, e.position->x, e.tolerance) && near(p.y, e.position->y, e.tolerance) &&
-              near(p.z, e.position->z, e.tolerance)))
-            out.push_back("expected " + label + " of " + name + " at " + vec_text(*e.position) +
-                          ", found " + vec_text(p) + tol);
-        if (e.weight && !near(w, *e.weight, e.tolerance))
-            out.push_back("expected the weight of " + label + " of " + name + " to be " +
-                          geom::format_number(*e.weight) + ", found " + geom::format_number(w) +
-                          tol);
-    }
+    for (std::string& m : unmet_on_object(e, *o)) out.push_back(std::move(m));
     return out;
 }
 
