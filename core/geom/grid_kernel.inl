@@ -80,30 +80,13 @@ inline int reciprocal(vd& r, const vd& w) {
     return bits(w == 0.0);
 }
 
-// 1 / sqrt(x), the normals' length. The divider is no wider for zmm than for ymm registers (a
-// vsqrtpd and a vdivpd of 8 lanes take twice the cycles of 4: measured 16 and 7.5 cycles for
-// the division on this path's machine), so the normalization was what the AVX-512 path
-// waited for. AVX-512F has a 14-bit estimate (vrsqrt14pd) on the vector units: two Newton
-// steps take it to within an ulp or two, well inside the paths' agreement
-// (tests/geom/grid_kernel_test.cpp); outside [2^-1000, 2^1000] (zero, infinities, NaN, where
-// the estimate's range ends) the exact operations. The same for 1 / w (vrcp14pd) was measured
-// slower: there the divider is not the bottleneck, and the Newton steps add to what is.
+// 1 / sqrt(x), the normals' length. (AVX-512F's vrsqrt14pd with two Newton steps was measured
+// no faster here, within noise, and would make this path's normals differ from AVX2's in the
+// last bits: the two FMA paths give the same bits, which the protocol recordings rely on.)
 inline void reciprocal_sqrt(vd& r, const vd& x) {
 #if defined(__AVX512F__) && ISOPARM_KERNEL_LANES == 8
-    const __m512d X = (__m512d)x, half = _mm512_mul_pd(X, _mm512_set1_pd(0.5)),
-                  three_halves = _mm512_set1_pd(1.5);
-    __m512d y = _mm512_mask_rsqrt14_pd(X, 0xFF, X); // (masked: GCC 12 warns on the plain form)
-    // y (3/2 - x/2 y^2), twice: 2^-14 to 2^-28 to the last bit or two.
-    y = _mm512_mul_pd(y, _mm512_fnmadd_pd(_mm512_mul_pd(half, y), y, three_halves));
-    y = _mm512_mul_pd(y, _mm512_fnmadd_pd(_mm512_mul_pd(half, y), y, three_halves));
-    const __m512d a = _mm512_abs_pd(X);
-    const __mmask8 odd = _mm512_cmp_pd_mask(a, _mm512_set1_pd(0x1p-1000), _CMP_NGE_UQ) |
-                         _mm512_cmp_pd_mask(a, _mm512_set1_pd(0x1p1000), _CMP_NLE_UQ);
-    if (odd) {
-        const __m512d root = _mm512_mask_sqrt_pd(X, odd, X);
-        y = _mm512_mask_div_pd(y, odd, _mm512_set1_pd(1.0), root);
-    }
-    r = (vd)y;
+    // The masked form: GCC 12 warns about _mm512_sqrt_pd's undefined pass-through operand.
+    r = 1.0 / (vd)_mm512_mask_sqrt_pd((__m512d)x, (__mmask8)0xFF, (__m512d)x);
 #elif defined(__AVX__) && ISOPARM_KERNEL_LANES == 4
     r = 1.0 / (vd)_mm256_sqrt_pd((__m256d)x);
 #elif defined(__SSE2__) && ISOPARM_KERNEL_LANES == 2
