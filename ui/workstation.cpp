@@ -47,7 +47,8 @@ bool begin_panel(const char* name, const Rect& r, ImGuiWindowFlags extra = 0) {
 
 Workstation::Workstation(const WorkstationOptions& options) {
     IMGUI_CHECKVERSION();
-    ImGui::CreateContext();
+    imgui_ = ImGui::CreateContext();
+    transparent_ = options.transparent;
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr; // the layout is ours (settings.json), not imgui.ini
     io.LogFilename = nullptr;
@@ -73,6 +74,10 @@ Workstation::~Workstation() {
     renderer_.reset();
     ImGui_ImplOpenGL3_Shutdown();
     ImGui::DestroyContext();
+}
+
+void Workstation::make_current() {
+    ImGui::SetCurrentContext(imgui_);
 }
 
 std::string Workstation::renderer_error() const {
@@ -328,6 +333,8 @@ void Workstation::frame(unsigned target_framebuffer) {
     view.width = ui.view_fb_width;
     view.height = ui.view_fb_height;
     view.background = to_vec4(ctx_.doc.colors.background);
+    // Transparent: everything blends onto alpha 0 (premultiplied, made straight on read-back).
+    view.background = transparent_ ? glm::vec4(0) : glm::vec4(glm::vec3(view.background), 1);
     view.analysis = ui.analysis;
     renderer_->render(view, scene.surfaces, scene.overlay);
 
@@ -336,7 +343,10 @@ void Workstation::frame(unsigned target_framebuffer) {
     const int fb_h = static_cast<int>(io.DisplaySize.y * io.DisplayFramebufferScale.y);
     glViewport(0, 0, fb_w, fb_h);
     const ImVec4 bg = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg); // the panels' background
-    glClearColor(bg.x, bg.y, bg.z, 1.0f);
+    if (transparent_)
+        glClearColor(0, 0, 0, 0);
+    else
+        glClearColor(bg.x, bg.y, bg.z, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     // The 3D picture by a framebuffer copy (OpenGL rows run bottom-up), then ImGui on top.
     const ImVec2 fb_scale = io.DisplayFramebufferScale;
