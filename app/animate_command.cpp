@@ -73,13 +73,16 @@ std::vector<double> sweep_values(double from, double to, int n) {
 }
 
 // Steps generated from the options for the scene `d`; "" or why they cannot be.
-std::string generated_steps(const AnimateOptions& o, const doc::Document& d, json& steps) {
+// `deboor_on`: the scene already shows de Boor's construction (no step to switch it on, which
+// would make a picture of every level at once).
+std::string generated_steps(const AnimateOptions& o, const doc::Document& d, json& steps,
+                            bool deboor_on) {
     if (o.deboor) {
         const geom::TrianglePatch* t = ui::selected_triangle(d);
         const geom::Surface* s = t ? nullptr : ui::current_surface(d);
         if (!s && !t) return "--deboor needs a surface or a selected triangular patch";
         const int last = t ? t->degree : s->degree_u + s->degree_v + 1;
-        steps.push_back({{"display", {{"deboor", true}}}});
+        if (!deboor_on) steps.push_back({{"display", {{"deboor", true}}}});
         for (int k = 0; k <= last; ++k) steps.push_back({{"deboor_step", k}});
     }
     if (!o.sweep_weight.empty() || !o.sweep_knot.empty()) {
@@ -183,7 +186,8 @@ int run(const AnimateOptions& o) {
         req.script = std::move(script).value();
         if (generated) {
             json steps = json::array();
-            if (std::string bad = generated_steps(o, req.script.start, steps); !bad.empty()) {
+            if (std::string bad = generated_steps(o, req.script.start, steps, false);
+                !bad.empty()) {
                 std::cerr << name << bad << "\n";
                 return 2;
             }
@@ -211,8 +215,9 @@ int run(const AnimateOptions& o) {
         }
         doc::Document d = std::move(loaded).value();
         ui::normalize_selection(d);
+        if (o.deboor) d.view.display.deboor = true;
         json steps = json::array();
-        if (std::string bad = generated_steps(o, d, steps); !bad.empty()) {
+        if (std::string bad = generated_steps(o, d, steps, true); !bad.empty()) {
             std::cerr << name << bad << "\n";
             return 2;
         }
