@@ -18,6 +18,7 @@
 #include "core/scene/scene_io.hpp"
 #include "core/scene/script.hpp"
 #include "ui/headless/animation_job.hpp"
+#include "ui/headless/animation_sequences.hpp"
 #include "ui/headless/egl_context.hpp"
 #include "ui/view/camera.hpp"
 #include "ui/view/doc_access.hpp"
@@ -46,14 +47,6 @@ bool is_script_file(const std::string& path) {
     return j.is_object() && j.contains("format") && j["format"] == scene::script_format_name;
 }
 
-// The object a sweep acts on: the selected one, else the first surface or curve.
-const doc::Object* sweep_object(const doc::Document& d) {
-    if (const doc::Object* s = d.selected(); s && (s->surface() || s->curve())) return s;
-    for (const doc::Object& o : d.objects)
-        if (o.surface() || o.curve()) return &o;
-    return nullptr;
-}
-
 // "a:b:c" -> {"a", "b", "c"}.
 std::vector<std::string> split(const std::string& text) {
     std::vector<std::string> parts;
@@ -66,80 +59,56 @@ std::vector<std::string> split(const std::string& text) {
     }
 }
 
-std::vector<double> sweep_values(double from, double to, int n) {
-    std::vector<double> v;
-    for (int k = 0; k < n; ++k) v.push_back(n == 1 ? from : from + (to - from) * k / (n - 1));
-    return v;
+// The options as a sequence for the scene `d`; "" or why they do not fit it.
+std::string sequence_of(const AnimateOptions& o, const doc::Document& d, ui::Sequence& seq) {
+    seq.deboor = o.deboor;
+    seq.orbit = o.orbit;
+    seq.frames = o.frames;
+    if (!o.camera.empty()) {
+        const auto yp = numbers(o.camera, 2, 2);
+        if (!yp) return "--camera '" + o.camera + "' must be YAW,PITCH in degrees";
+        seq.orbit_start = std::pair{(*yp)[0], (*yp)[1]};
+    }
+    if (o.sweep_weight.empty() && o.sweep_knot.empty()) return "";
+    const doc::Object* obj = ui::sweep_object(d);
+    if (!obj) return "a sweep needs a surface or a curve in the scene";
+    if (!o.sweep_weight.empty()) {
+        const std::vector<std::string> parts = split(o.sweep_weight); // I[,J]:FROM:TO
+        const auto ij = parts.size() == 3 ? numbers(parts[0], 1, 2) : std::nullopt;
+        const auto from = parts.size() == 3 ? numbers(parts[1], 1, 1) : std::nullopt;
+        const auto to = parts.size() == 3 ? numbers(parts[2], 1, 1) : std::nullopt;
+        if (!ij || !from || !to || (obj->surface() && ij->size() != 2) ||
+            (obj->curve() && ij->size() != 1))
+            return "--sweep-weight '" + o.sweep_weight +
+                   "' must be I,J:FROM:TO for a surface or I:FROM:TO for a curve (" + obj->name +
+                   ")";
+        seq.weight = ui::WeightSweep{obj->id, static_cast<int>((*ij)[0]),
+                                     ij->size() == 2 ? static_cast<int>((*ij)[1]) : -1, (*from)[0],
+                                     (*to)[0]};
+    }
+    if (!o.sweep_knot.empty()) {
+        const std::vector<std::string> parts = split(o.sweep_knot); // DIR:K:FROM:TO
+        const auto k = parts.size() == 4 ? numbers(parts[1], 1, 1) : std::nullopt;
+        const auto a = parts.size() == 4 ? numbers(parts[2], 1, 1) : std::nullopt;
+        const auto b = parts.size() == 4 ? numbers(parts[3], 1, 1) : std::nullopt;
+        if (!k || !a || !b || (parts[0] != "u" && parts[0] != "v"))
+            return "--sweep-knot '" + o.sweep_knot +
+                   "' must be DIR:K:FROM:TO, e.g. u:4:0.2:0.8 (knot 4 of the u knots)";
+        seq.knot = ui::KnotSweep{obj->id, parts[0] == "u" ? geom::Dir::u : geom::Dir::v,
+                                 static_cast<int>((*k)[0]), (*a)[0], (*b)[0]};
+    }
+    return "";
 }
 
-// Steps generated from the options for the scene `d`; "" or why they cannot be.
-// `deboor_on`: the scene already shows de Boor's construction (no step to switch it on, which
-// would make a picture of every level at once).
+// The generated steps for `d`, or why not.
 std::string generated_steps(const AnimateOptions& o, const doc::Document& d, json& steps,
                             bool deboor_on) {
-    if (o.deboor) {
-        const geom::TrianglePatch* t = ui::selected_triangle(d);
-        const geom::Surface* s = t ? nullptr : ui::current_surface(d);
-        if (!s && !t) return "--deboor needs a surface or a selected triangular patch";
-        const int last = t ? t->degree : s->degree_u + s->degree_v + 1;
-        if (!deboor_on) steps.push_back({{"display", {{"deboor", true}}}});
-        for (int k = 0; k <= last; ++k) steps.push_back({{"deboor_step", k}});
-    }
-    if (!o.sweep_weight.empty() || !o.sweep_knot.empty()) {
-        const doc::Object* obj = sweep_object(d);
-        if (!obj) return "a sweep needs a surface or a curve in the scene";
-        if (!o.sweep_weight.empty()) {
-            // I[,J]:FROM:TO
-            const std::vector<std::string> parts = split(o.sweep_weight);
-            const auto ij = parts.size() == 3 ? numbers(parts[0], 1, 2) : std::nullopt;
-            const auto from = parts.size() == 3 ? numbers(parts[1], 1, 1) : std::nullopt;
-            const auto to = parts.size() == 3 ? numbers(parts[2], 1, 1) : std::nullopt;
-            if (!ij || !from || !to || (obj->surface() && ij->size() != 2) ||
-                (obj->curve() && ij->size() != 1))
-                return "--sweep-weight '" + o.sweep_weight +
-                       "' must be I,J:FROM:TO for a surface or I:FROM:TO for a curve (" +
-                       obj->name + ")";
-            const std::vector<double> ft{(*from)[0], (*to)[0]};
-            for (double w : sweep_values(ft[0], ft[1], o.frames)) {
-                json c = {{"command", "edit_point"},
-                          {"id", obj->id},
-                          {"i", static_cast<int>((*ij)[0])},
-                          {"weight", w}};
-                if (ij->size() == 2) c["j"] = static_cast<int>((*ij)[1]);
-                steps.push_back(c);
-            }
-        }
-        if (!o.sweep_knot.empty()) {
-            // DIR:K:FROM:TO
-            const std::vector<std::string> parts = split(o.sweep_knot);
-            const auto k = parts.size() == 4 ? numbers(parts[1], 1, 1) : std::nullopt;
-            const auto a = parts.size() == 4 ? numbers(parts[2], 1, 1) : std::nullopt;
-            const auto b = parts.size() == 4 ? numbers(parts[3], 1, 1) : std::nullopt;
-            if (!k || !a || !b || (parts[0] != "u" && parts[0] != "v"))
-                return "--sweep-knot '" + o.sweep_knot +
-                       "' must be DIR:K:FROM:TO, e.g. u:4:0.2:0.8 (knot 4 of the u knots)";
-            for (double v : sweep_values((*a)[0], (*b)[0], o.frames))
-                steps.push_back({{"command", "move_knot"},
-                                 {"id", obj->id},
-                                 {"direction", parts[0]},
-                                 {"k", static_cast<int>((*k)[0])},
-                                 {"value", v}});
-        }
-    }
-    if (o.orbit != 0) {
-        ui::Camera c;
-        double yaw = c.yaw * 180 / M_PI, pitch = c.pitch * 180 / M_PI;
-        if (!o.camera.empty()) {
-            const auto yp = numbers(o.camera, 2, 2);
-            if (!yp || std::abs((*yp)[1]) >= 90)
-                return "--camera '" + o.camera + "' must be YAW,PITCH in degrees (|pitch| < 90)";
-            yaw = (*yp)[0];
-            pitch = (*yp)[1];
-        }
-        for (int k = 0; k < o.frames; ++k)
-            steps.push_back(
-                {{"camera", {{"yaw", yaw + o.orbit * k / o.frames}, {"pitch", pitch}}}});
-    }
+    ui::Sequence seq;
+    if (std::string bad = sequence_of(o, d, seq); !bad.empty()) return bad;
+    std::string error;
+    auto made = ui::sequence_steps(seq, d, deboor_on, error);
+    if (!made) return error;
+    steps = std::move(*made);
     return "";
 }
 

@@ -13,7 +13,7 @@
 #include "ui/app_context.hpp"
 #include "ui/figure/drawing_files.hpp"
 #include "ui/headless/egl_context.hpp"
-#include "ui/headless/frame_capture.hpp"
+#include "ui/headless/view3d_figure_capture.hpp"
 #include "ui/view/doc_access.hpp"
 #include "ui/view/figures.hpp"
 #include "ui/view/scene_budget.hpp"
@@ -31,51 +31,6 @@ struct FigureCommandOptions {
 };
 
 const char* const name = "isoparm figure: ";
-
-// The 3D view: the camera as the window would fit it and the shaded raster under the lines,
-// both from one EGL render of the view with the lines switched off.
-geom::Expected<ui::Drawing> figure_3d(const FigureCommandOptions& o, const ui::AppContext& ctx,
-                                      const ui::FigureOptions& fo) {
-    std::string error;
-    const std::unique_ptr<ui::EglContext> egl = ui::EglContext::create(error);
-    if (!egl)
-        return geom::make_error_nopath(geom::ErrorCode::internal, "no headless OpenGL: " + error);
-    ui::CaptureSettings cs;
-    cs.width = std::max(16, static_cast<int>(fo.width * o.scale));
-    cs.height = std::max(16, static_cast<int>(fo.height * o.scale));
-    cs.view = ui::ViewMode::view3d_only;
-    cs.scale = static_cast<float>(o.scale);
-    cs.transparent = o.transparent;
-    ui::FrameCapture capture(cs);
-    if (!capture.error().empty())
-        return geom::make_error_nopath(geom::ErrorCode::internal, capture.error());
-    ui::AppContext& c = capture.context();
-    c.doc = ctx.doc;
-    ui::normalize_selection(c.doc);
-    c.ui.camera = ctx.ui.camera;
-    c.ui.zoom_after_fit = ctx.ui.zoom_after_fit;
-    doc::DisplaySettings& disp = c.doc.view.display;
-    disp.control_points = disp.control_net = disp.point_ids = disp.knot_curves = false;
-    disp.indicator_point = disp.deboor = false;
-    const bool raster = !o.no_raster && disp.style != doc::DisplayStyle::wireframe;
-    if (disp.style == doc::DisplayStyle::both) disp.style = doc::DisplayStyle::shaded;
-    const std::optional<ui::Picture> picture = capture.capture(error);
-    if (!picture) return geom::make_error_nopath(geom::ErrorCode::internal, error);
-    ui::View3dFigureInput in;
-    in.camera = c.ui.camera;
-    in.deboor_step = ctx.ui.deboor.step;
-    in.line_scale = 1;
-    if (raster) {
-        ui::DrawImage im;
-        im.size = {fo.width, fo.height};
-        im.pixels_w = picture->width;
-        im.pixels_h = picture->height;
-        im.rgba = picture->rgba;
-        im.role = "shaded-surface";
-        in.raster = std::move(im);
-    }
-    return ui::view3d_figure(ctx.doc, in, fo);
-}
 
 int run(const FigureCommandOptions& o) {
     if (!ui::drawing_format_of(o.output)) {
@@ -133,7 +88,14 @@ int run(const FigureCommandOptions& o) {
         }
     geom::Expected<ui::Drawing> drawing = geom::make_error_nopath(geom::ErrorCode::internal, "");
     if (three_d) {
-        drawing = figure_3d(o, ctx, fo);
+        // EGL for the camera fit and the shaded raster.
+        std::string error;
+        const std::unique_ptr<ui::EglContext> egl = ui::EglContext::create(error);
+        if (!egl) {
+            std::cerr << name << "no headless OpenGL: " << error << "\n";
+            return 1;
+        }
+        drawing = ui::capture_view3d_figure(ctx, fo, o.scale, !o.no_raster);
     } else {
         const auto view = geom::parse_name<ui::FigureView>(o.view);
         drawing = ui::make_figure(ctx.doc, *view, fo);
