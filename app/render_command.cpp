@@ -32,7 +32,9 @@ struct RenderOptions {
     std::string indicator, select, style, camera, analysis;
     // Display toggles: 0 = as the scene says, > 0 on, < 0 off (--x / --no-x).
     int points = 0, net = 0, ids = 0, knot_curves = 0, indicator_point = 0, deboor = 0;
-    int deboor_step = -1; // de Boor's construction up to this step (-1: all)
+    // De Boor's construction up to this step (-1: all); wide, so that any number typed is
+    // checked against the scene rather than failing to convert.
+    long long deboor_step = -1;
 };
 
 // "a,b[,c]" -> numbers; nullopt when the text is not 2 (or 3) finite numbers. Each part may
@@ -154,7 +156,7 @@ std::string configure(const RenderOptions& o, ui::AppContext& ctx) {
                    (t ? " (the levels of the selected triangle's de Casteljau construction)"
                       : " (p_u + p_v + 1 steps for the current surface)");
         d.view.display.deboor = true;
-        ctx.ui.deboor.step = o.deboor_step;
+        ctx.ui.deboor.step = static_cast<int>(o.deboor_step);
     }
     if (!o.camera.empty()) {
         const auto c = numbers(o.camera, 2, 3);
