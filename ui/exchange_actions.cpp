@@ -7,6 +7,7 @@
 #include "core/scene/export_document.hpp"
 #include "core/scene/import_document.hpp"
 #include "ui/actions.hpp"
+#include "ui/view/scene_budget.hpp"
 
 namespace isoparm::ui {
 
@@ -99,10 +100,24 @@ bool import_objects(AppContext& ctx, const std::string& path, std::string& error
         return false;
     }
     ctx.seal();
+    // The scene with the new objects must still be one the window can show: the density is
+    // lowered until it fits, or the import is taken back.
+    const int density = display_density_that_fits(ctx.doc);
+    if (density == 0) {
+        error = scene_over_budget(ctx.doc) + "; nothing imported";
+        undo(ctx);
+        return false;
+    }
+    std::string lowered;
+    if (density < ctx.doc.view.display.density) {
+        lowered = "; display density lowered from " +
+                  std::to_string(ctx.doc.view.display.density) + " to " + std::to_string(density);
+        ctx.doc.view.display.density = density;
+    }
     ctx.doc.view.selection = {ctx.doc.objects[ctx.doc.objects.size() - count].id, -1, -1};
     fit_view(ctx);
     ctx.ui.status = "Imported " + std::to_string(count) + (count == 1 ? " object" : " objects") +
-                    " from " + path + skipped_summary(imported->skipped);
+                    " from " + path + lowered + skipped_summary(imported->skipped);
     return true;
 }
 

@@ -26,6 +26,9 @@ inline constexpr int script_format_version = 1;
 // its multisampled buffers), all of a script's together at most 3e8 (about 300 pictures of
 // 1280 x 800), checked when the script is read, before anything runs.
 inline constexpr double max_screenshot_pixels = 4096.0 * 4096.0;
+// The steps' budget: the trial run (run_script with dry_run), which does every command's work,
+// stops with `limit` at the step it reaches after this long.
+inline constexpr double max_trial_seconds = 120;
 inline constexpr double max_script_pixels = 3e8;
 
 // Why `name` is not a screenshot's file name ("" when it is one): checked byte by byte (a NUL
@@ -151,7 +154,8 @@ struct ScriptResult {
 };
 
 // Runs the steps in order on `state` (which starts as script.start). In a dry run no hook is
-// called: it finds every step that cannot be carried out before anything is written.
+// called: it finds every step that cannot be carried out before anything is written, and the
+// steps that would take more than max_trial_seconds.
 ScriptResult run_script(const Script& script, ScriptState& state, const ScriptHooks& hooks,
                         bool dry_run = false);
 

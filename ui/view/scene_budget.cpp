@@ -12,12 +12,19 @@
 namespace isoparm::ui {
 
 SceneDisplayCost estimate_scene_display(const doc::Document& d) {
+    return estimate_scene_display(d, d.view.display.density);
+}
+
+SceneDisplayCost estimate_scene_display(const doc::Document& d, int density) {
     SceneDisplayCost cost;
     for (const doc::Object& o : d.objects) {
         cost.control_points += static_cast<double>(doc::control_points_of(o.shape).size());
+        if (const geom::Curve* c = o.curve())
+            cost.steps +=
+                geom::estimate_curve_evaluation(display_curve_evaluations, c->degree, 0).steps;
         const geom::Surface* s = o.surface();
         if (!s) continue;
-        const auto [su, sv] = display_samples(*s, d.view.display.density);
+        const auto [su, sv] = display_samples(*s, density);
         const double vertices = static_cast<double>(su) * sv;
         ++cost.surfaces;
         cost.vertices += vertices;
@@ -29,10 +36,22 @@ SceneDisplayCost estimate_scene_display(const doc::Document& d) {
     return cost;
 }
 
+namespace {
+
+double max_display_bytes() {
+    return geom::max_answer_numbers * geom::bytes_per_answer_number;
+}
+
+bool fits(const SceneDisplayCost& cost) {
+    return cost.bytes <= max_display_bytes() && cost.steps <= geom::max_work_steps;
+}
+
+} // namespace
+
 std::string scene_over_budget(const doc::Document& d) {
     const SceneDisplayCost cost = estimate_scene_display(d);
-    const double max_bytes = geom::max_answer_numbers * geom::bytes_per_answer_number;
-    if (cost.bytes <= max_bytes && cost.steps <= geom::max_work_steps) return "";
+    if (fits(cost)) return "";
+    const double max_bytes = max_display_bytes();
     const double mib = cost.bytes / (1 << 20);
     return "the scene is too large to show: its " + std::to_string(cost.surfaces) +
            " surfaces make " + geom::with_thousands(cost.vertices) + " vertices and " +
@@ -43,6 +62,13 @@ std::string scene_over_budget(const doc::Document& d) {
            geom::with_thousands(geom::max_work_steps) +
            " steps (about 10 s); a lower display density, fewer surfaces or fewer control points "
            "fit";
+}
+
+int display_density_that_fits(const doc::Document& d) {
+    for (int density : {256, 192, 128, 96, 64, 48, 32, 24, 16, 12, 8, 6, 4, 3, 2})
+        if (density <= d.view.display.density && fits(estimate_scene_display(d, density)))
+            return density;
+    return 0;
 }
 
 namespace {
