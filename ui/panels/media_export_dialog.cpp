@@ -139,8 +139,9 @@ void draw_media_export_dialog(AppContext& ctx) {
     ImGui::SetNextItemWidth(-1);
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
     // Clicking the name selects it all: typing replaces the suggested name.
-    const bool enter = ImGui::InputText(
-        "##name", &m.name, ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
+    const bool enter =
+        ImGui::InputText("##name", &m.name,
+                         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
     report_item("file/name");
     if (!m.error.empty()) {
         ImGui::PushTextWrapPos(0.0f);
