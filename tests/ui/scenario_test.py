@@ -705,11 +705,22 @@ def png_size(path):
     return int.from_bytes(head[16:20], "big"), int.from_bytes(head[20:24], "big")
 
 
+def type_export_name(s, text):
+    """Clicks the export dialog's name field (which selects the suggested name), types the
+    name over it and presses Enter."""
+    x, y, w, h = s.rect("file/name")
+    s.click(x + w * 0.3, y + h / 2)
+    s.wait_for("the name field to take the keyboard", lambda r: r.get("typing"))
+    s.xdo("type", "--delay", "30", text)
+    s.key("Return")
+    s.wait_for("the name field to let go of the keyboard", lambda r: not r.get("typing"))
+
+
 def export_dialog(s, menu_item, choice, name):
     """File > menu_item, a radio button of the dialog, a file name typed and Enter."""
     s.menu("File", menu_item)
     s.click_named(choice)
-    type_file_name(s, name)
+    type_export_name(s, name)
     path = os.path.join(s.work, name)
     wait_for_file(path)
     return path
@@ -735,7 +746,7 @@ def figures_from_the_window(s, ctx):
     s.menu("File", "Export picture...")
     s.click_named("export/target/0")
     s.click_named("export/scale/2")
-    type_file_name(s, "view3d-big.png")
+    type_export_name(s, "view3d-big.png")
     path = os.path.join(s.work, "view3d-big.png")
     wait_for_file(path)
     w, h = png_size(path)
