@@ -201,3 +201,40 @@ TEST(DrawingOfPicture, ShapesClipsAndPlacedLabels) {
 
 } // namespace
 } // namespace isoparm::ui
+
+#include "ui/view/picture_tap.hpp"
+
+namespace isoparm::ui {
+namespace {
+
+// What a backend offers while a tap is open is kept, the last of each view; nothing outside a
+// tap; nested taps give the pictures to the innermost.
+TEST(PictureTap, KeepsTheLastPictureOfEachViewWhileOpen) {
+    Picture a;
+    a.view = "tracing";
+    a.frame = {0, 0, 10, 10};
+    offer_picture(a); // no tap: dropped
+    PictureTap outer;
+    EXPECT_EQ(outer.size(), 0u);
+    offer_picture(a);
+    a.frame.w = 20;
+    offer_picture(a);
+    ASSERT_NE(outer.find("tracing"), nullptr);
+    EXPECT_EQ(outer.find("tracing")->frame.w, 20);
+    {
+        PictureTap inner;
+        Picture b;
+        b.view = "basis_u";
+        offer_picture(b);
+        EXPECT_NE(inner.find("basis_u"), nullptr);
+        EXPECT_EQ(outer.find("basis_u"), nullptr);
+    }
+    Picture c;
+    c.view = "curve";
+    offer_picture(c);
+    EXPECT_NE(outer.find("curve"), nullptr);
+    EXPECT_STREQ(picture_view_name(static_cast<int>(FigureView::basis)), "basis_u");
+}
+
+} // namespace
+} // namespace isoparm::ui
