@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "core/doc/command_spec.hpp"
 #include "core/doc/commands_common.hpp"
 #include "core/doc/curve_constructions.hpp"
 
@@ -201,6 +202,11 @@ public:
         return bytes;
     }
 
+    static bool has_constructions(const Document& doc) {
+        return std::any_of(doc.objects.begin(), doc.objects.end(),
+                           [](const Object& o) { return o.construction.has_value(); });
+    }
+
 private:
     struct Snapshot {
         Shape shape;
@@ -214,11 +220,6 @@ private:
         std::optional<Shape> shape;
         std::optional<std::optional<Recipe>> recipe;
     };
-
-    static bool has_constructions(const Document& doc) {
-        return std::any_of(doc.objects.begin(), doc.objects.end(),
-                           [](const Object& o) { return o.construction.has_value(); });
-    }
 
     void undo_changes(Document& doc) {
         for (auto c = changes_.rbegin(); c != changes_.rend(); ++c) {
@@ -249,6 +250,24 @@ std::unique_ptr<Command> associative(std::unique_ptr<Command> inner) {
 const Command& unwrapped(const Command& command) {
     const auto* a = dynamic_cast<const Associative*>(&command);
     return a ? a->inner() : command;
+}
+
+std::optional<ConstructedEdit> constructed_object_edited(const Document& doc,
+                                                         const CommandSpec& spec) {
+    if (!Associative::has_constructions(doc)) return std::nullopt;
+    // The command alone (not wrapped) on a copy: which constructed object's shape it changes.
+    Document scratch = doc;
+    const std::unique_ptr<Command> inner = make_command(spec);
+    if (!inner->apply(scratch)) return std::nullopt;
+    for (const Object& o : doc.objects) {
+        if (!o.construction) continue;
+        const Object* after = scratch.find(o.id);
+        if (!after || !after->construction || !same_recipe(*o.construction, *after->construction))
+            continue;
+        if (!same_shape(o.shape, after->shape) && !refinement_of(*inner, o.id))
+            return ConstructedEdit{o.id, inner->label()};
+    }
+    return std::nullopt;
 }
 
 bool reads(const Document& doc, std::uint64_t reader, std::uint64_t id) {

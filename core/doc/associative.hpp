@@ -26,6 +26,18 @@ std::unique_ptr<Command> associative(std::unique_ptr<Command> inner);
 // The command inside an associative wrapper (or the command itself).
 const Command& unwrapped(const Command& command);
 
+// The constructed object whose own shape the command `spec` would change on `doc` (not by a
+// refinement the recipe records): the edit `associative` refuses until that object is detached.
+// The window asks to detach it and then runs the command; `label` is what the command would
+// say it did (some labels are only known once applied). Nothing when the command edits no
+// constructed object or is refused for another reason.
+struct ConstructedEdit {
+    std::uint64_t object = 0;
+    std::string label;
+};
+std::optional<ConstructedEdit> constructed_object_edited(const Document& doc,
+                                                         const CommandSpec& spec);
+
 // The constructed objects that read any of `changed`, directly or through other constructed
 // objects, each after every constructed object it reads (the order to rebuild them in).
 std::vector<std::uint64_t> dependants_in_order(const Document& doc,

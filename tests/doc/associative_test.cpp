@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "core/doc/associative.hpp"
+#include "core/doc/command_spec.hpp"
 #include "core/doc/commands.hpp"
 #include "core/doc/commands_construction.hpp"
 #include "core/doc/commands_curve.hpp"
@@ -193,6 +194,43 @@ TEST(Associative, AConstructedSurfacesOwnPointsWaitForDetach) {
     ASSERT_TRUE(w.history.undo(w.doc));
     ASSERT_TRUE(w.history.undo(w.doc));
     EXPECT_TRUE(same_document(w.doc, before));
+}
+
+TEST(Associative, TheObjectARefusedEditWouldChangeIsNamedForTheDetachQuestion) {
+    // The window asks to detach exactly the constructed object an edit was refused for, then
+    // runs the edit: a point move, a knot split and a weight on the vase; not a refinement (the
+    // recipe records it), not an input's edit (the vase follows), not a command refused for
+    // another reason.
+    Workshop w;
+    const std::uint64_t vase =
+        w.build(Workshop::recipe(Construction::revolve, {w.profile}), "vase");
+    const auto spec_of = [](std::unique_ptr<Command> c) { return *c->spec(); };
+    const auto object_of = [&](const CommandSpec& spec) -> std::optional<std::uint64_t> {
+        const auto edit = constructed_object_edited(w.doc, spec);
+        if (!edit) return std::nullopt;
+        EXPECT_FALSE(edit->label.empty());
+        return edit->object;
+    };
+    EXPECT_EQ(object_of(spec_of(move_control_point(vase, 2, 2, {0, 0, 5}))), vase);
+    EXPECT_EQ(object_of(spec_of(set_weight(vase, 2, 2, 3.0))), vase);
+    ASSERT_TRUE(w.history.execute(w.doc, insert_knot(vase, Dir::v, 0.3)).ok());
+    ASSERT_TRUE(w.history.execute(w.doc, insert_knot(vase, Dir::v, 0.3)).ok());
+    w.history.seal();
+    const auto split_edit =
+        constructed_object_edited(w.doc, spec_of(split_knot(vase, Dir::v, 0.3, std::nullopt)));
+    ASSERT_TRUE(split_edit);
+    EXPECT_EQ(split_edit->label.rfind("Split knot v = 0.3 (x2 becomes x1", 0), 0u)
+        << split_edit->label;
+    EXPECT_EQ(object_of(spec_of(split_knot(vase, Dir::v, 0.3, std::nullopt))), vase);
+    EXPECT_EQ(object_of(spec_of(insert_knot(vase, Dir::u, 0.4))), std::nullopt);
+    EXPECT_EQ(object_of(spec_of(move_curve_point(w.profile, 4, {0.2, 0, 1}))), std::nullopt);
+    EXPECT_EQ(object_of(spec_of(move_control_point(vase, 99, 2, {0, 0, 5}))), std::nullopt);
+    // After detach the same edit runs.
+    const CommandSpec split = spec_of(split_knot(vase, Dir::v, 0.3, std::nullopt));
+    EXPECT_FALSE(w.history.execute(w.doc, make_command(split)).ok());
+    ASSERT_TRUE(w.history.execute(w.doc, detach(vase)).ok());
+    EXPECT_EQ(object_of(split), std::nullopt);
+    EXPECT_TRUE(w.history.execute(w.doc, make_command(split)).ok());
 }
 
 TEST(Associative, RefinementsAreRecordedAndRepeated) {
