@@ -6,6 +6,7 @@
 #include "core/scene/atomic_file.hpp"
 #include "core/scene/scene_io.hpp"
 #include "core/scene/script.hpp"
+#include "ui/animation_actions.hpp"
 #include "ui/lesson.hpp"
 #include "ui/view/doc_access.hpp"
 #include "ui/view/scene_budget.hpp"
@@ -162,6 +163,7 @@ void request_save_as(AppContext& ctx) {
 }
 
 bool save_as(AppContext& ctx, const std::string& path) {
+    suspend_animation(ctx); // the scene as it is, not an animation's frame
     const geom::Status st = scene::save_scene(ctx.doc, path);
     if (!st.ok()) {
         show_error(ctx, "Could not save scene",

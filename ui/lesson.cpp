@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ui/animation_actions.hpp"
 #include "ui/app_context.hpp"
 #include "ui/view/doc_access.hpp"
 
@@ -30,6 +31,7 @@ void lesson_next(AppContext& ctx) {
     Lesson& lesson = *ctx.ui.lesson;
     lesson.unmet.clear();
     lesson.refused.clear();
+    suspend_animation(ctx); // the steps act on the document, not an animation's frame
     scene::ScriptState state(ctx.doc, ctx.history);
     state.caption = lesson.caption;
     scene::ScriptResult result;
@@ -48,6 +50,16 @@ void lesson_next(AppContext& ctx) {
         }
         if (std::holds_alternative<scene::DeBoorStep>(step.action))
             ctx.ui.deboor.step = state.deboor_step;
+        // An animate step puts its target on the Animate slider and plays it (never an edit).
+        if (const auto* anim = std::get_if<scene::AnimateStep>(&step.action)) {
+            if (anim->stop) {
+                stop_animation(ctx);
+            } else if (start_animation(ctx, anim->target, anim->seconds, anim->repeat,
+                                       anim->play)) {
+                ctx.ui.modeler.animation.player.speed = anim->speed;
+                ctx.ui.modeler.animation.player.seek(anim->at);
+            }
+        }
         if (std::holds_alternative<scene::PauseStep>(step.action)) break;
     }
     ctx.seal();

@@ -73,6 +73,8 @@ void flush_ui_report(const AppContext& ctx) {
     j["point"] = {ctx.doc.view.selection.i, ctx.doc.view.selection.j};
     j["dirty"] = ctx.dirty();
     j["undo"] = ctx.history.can_undo() ? ctx.history.undo_label() : "";
+    j["undo_steps"] = ctx.history.size();
+    j["selection_size"] = ctx.ui.modeler.selection.points.size();
     j["presentation"] = ctx.ui.presentation;
     j["indicator"] = {ctx.doc.view.indicator.x, ctx.doc.view.indicator.y};
     j["typing"] = ImGui::GetIO().WantTextInput; // a text field has the keyboard

@@ -19,6 +19,7 @@
 #include "core/scene/recorder.hpp"
 #include "ui/lesson.hpp"
 #include "ui/media_export.hpp"
+#include "ui/modeler_state.hpp"
 #include "ui/view/camera.hpp"
 #include "ui/view/canvas_map.hpp"
 #include "ui/view/denominator_view.hpp"
@@ -138,7 +139,11 @@ struct CurveDesignerState {
     int frame_plane = -1;
     glm::dvec2 frame_lo{0}, frame_hi{0};
     int drag_knot = -1; // knot being dragged on the knot strip, -1 none
-    bool trace = true;  // show de Boor's construction at trace_t
+    // The canvas's own zoom and pan over the kept framing (wheel, right or middle drag); Fit
+    // (the button, or F over the canvas) goes back to the framing.
+    double view_zoom = 1;
+    glm::dvec2 view_pan{0};
+    bool trace = true;                                     // show de Boor's construction at trace_t
     bool comb = false, osculating = false, frenet = false; // curvature at a glance
     double trace_t = 0.4;                                  // normalised to [0, 1] over the domain
     double insert_t = 0.5;                                 // knot insertion parameter (normalised)
@@ -153,6 +158,9 @@ struct CurveDesignerState {
     double angle = 360, swing_scale = 1;
     int skin_degree = 0, parametrization = 0, sections = 16;
     int gordon_u_count = 2;
+    int iso_dir = 0;           // isocurve: 0 u, 1 v
+    double iso_t = 0.5;        // isocurve: where, in [0, 1] over the domain
+    std::uint64_t editing = 0; // Edit construction: the object whose recipe the dialog changes
     std::string note;  // the last construction's report (deviation, parameters, compatibility)
     std::string error; // why the last Build was refused, shown in the dialog until the next
 };
@@ -350,6 +358,9 @@ struct UiState {
     TriangleDenominatorView triangle_denominator; // the same picture on a domain triangle
     HomogeneousState homogeneous;
     int left_tab = 0; // the teaching tab shown below the tracing square (ui/workstation.cpp)
+    // Many selected points and their handle, grid and snap, the animated parameter, the detach
+    // question (ui/modeler_state.hpp).
+    ModelerState modeler;
     // File > Export picture / figure / animation and Ctrl+Shift+C (ui/media_export.hpp).
     MediaExportState media_export;
 

@@ -9,7 +9,9 @@
 #include <imgui_impl_opengl3.h>
 
 #include "ui/actions.hpp"
+#include "ui/animation_actions.hpp"
 #include "ui/media_export.hpp"
+#include "ui/modeler_actions.hpp"
 #include "ui/panels/fit_panel.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/panels/tab_strip.hpp"
@@ -283,6 +285,10 @@ void Workstation::frame(unsigned target_framebuffer) {
     // Between gestures (nothing held, no field being edited) the next edit is a new undo step.
     if (!ImGui::IsAnyItemActive() && !ImGui::IsAnyMouseDown()) ctx_.seal();
     normalize_selection(ctx_.doc);
+    sync_selection(ui.modeler.selection.points, ctx_.doc);
+    // An animated parameter shows its value from here to the end of the frame (never an edit);
+    // frames keep coming while it plays.
+    if (animation_begin_frame(ctx_, ImGui::GetTime()) && request_frame_) request_frame_();
     // Whenever de Boor's construction is switched on (menu, key, a loaded scene), its tab
     // comes forward.
     if (ctx_.doc.view.display.deboor && !deboor_was_on_) ui.deboor.show_tab = true;
@@ -300,6 +306,7 @@ void Workstation::frame(unsigned target_framebuffer) {
         draw_dialogs(ctx_);
         draw_construct_dialog(ctx_);
         draw_media_export_dialog(ctx_);
+        draw_animate_panel(ctx_);
     } else {
         const ImGuiViewport* vp = ImGui::GetMainViewport();
         ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
@@ -310,6 +317,7 @@ void Workstation::frame(unsigned target_framebuffer) {
         ImGui::End();
         ImGui::PopStyleVar(2);
     }
+    draw_detach_question(ctx_); // a drag in the 3D view alone asks too
     ImGui::Render();
     flush_ui_report(ctx_);
     ctx_.observe_for_recording(); // this frame's view changes (selection, indicator, display)
@@ -336,6 +344,21 @@ void Workstation::frame(unsigned target_framebuffer) {
         style.guide_axis = ui.drag.axis;
         style.guide_point = ui.drag.start;
     }
+    // The working plane z = 0 and its grid, at the step the 3D view's zoom shows.
+    if (ui.modeler.snap.grid_shown) {
+        style.working_grid = true;
+        style.grid_step = working_grid_step(ui).value();
+        const double reach =
+            2.5 * ui.camera.distance * std::tan(ui.camera.fov_y / 2) *
+            std::max(1.0, static_cast<double>(ui.view_fb_width) / std::max(1, ui.view_fb_height));
+        style.grid_lines = std::clamp(static_cast<int>(std::ceil(reach / style.grid_step)), 4, 80);
+        style.grid_centre = {ui.camera.target.x, ui.camera.target.y};
+    }
+    if (const doc::Object* sel = ctx_.doc.selected(); sel && ui.modeler.selection.points.size() > 1)
+        for (const PointIndex& p : ui.modeler.selection.points.points)
+            if (!(p.i == ctx_.doc.view.selection.i &&
+                  (p.j == ctx_.doc.view.selection.j || sel->curve())))
+                style.also_selected.push_back(doc::position_of(sel->shape, p));
     // Implicit meshes: coarse while a parameter slider moves, synchronous when headless.
     ImplicitMeshes::Mode mode;
     mode.wait = ui.headless;
@@ -371,6 +394,8 @@ void Workstation::frame(unsigned target_framebuffer) {
         static_cast<int>(std::lround((ui.view_rect.y + ui.view_rect.h) * fb_scale.y));
     renderer_->copy_to(target_framebuffer, view_x, fb_h - view_bottom);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    // The document as it is again: saving, autosave and the next frame's commands see it.
+    animation_end_frame(ctx_);
 }
 
 } // namespace isoparm::ui

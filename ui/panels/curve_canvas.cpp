@@ -12,6 +12,7 @@
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/tessellate.hpp"
+#include "ui/modeler_actions.hpp"
 #include "ui/panels/curve_designer.hpp"
 #include "ui/panels/plane_canvas.hpp"
 #include "ui/ui_report.hpp"
@@ -37,9 +38,27 @@ PlaneMap frame(CurveDesignerState& cd, std::uint64_t id, int plane, const geom::
         hi = glm::max(hi, glm::dvec2(p[a], p[b]));
     }
     const bool same = cd.frame_object == id && cd.frame_plane == plane;
+    if (!same) {
+        cd.view_zoom = 1;
+        cd.view_pan = {0, 0};
+    }
     cd.frame_object = id;
     cd.frame_plane = plane;
-    return kept_frame(cd.frame_lo, cd.frame_hi, same, lo, hi, 0.2, canvas, margin);
+    PlaneMap m = kept_frame(cd.frame_lo, cd.frame_hi, same, lo, hi, 0.2, canvas, margin);
+    // The canvas's own zoom and pan on top of the framing.
+    m.units_per_px /= cd.view_zoom;
+    m.center += cd.view_pan;
+    return m;
+}
+
+// The other points of the curve in the canvas's plane: what a dragged point snaps to.
+std::vector<glm::dvec2> other_points(const geom::Curve& g, const PlaneAxes& ax, int skip) {
+    std::vector<glm::dvec2> out;
+    for (int q = 0; q < g.count(); ++q)
+        if (q != skip)
+            out.push_back({g.points[static_cast<std::size_t>(q)][ax.a],
+                           g.points[static_cast<std::size_t>(q)][ax.b]});
+    return out;
 }
 
 const doc::CurveObject* curve_in(const AppContext& ctx, std::uint64_t id) {
@@ -66,12 +85,15 @@ void handle_press(AppContext& ctx, std::uint64_t id, const geom::Curve& g, const
     cd.message.clear();
     cd.press = mouse;
     const double radius = 8 * k;
+    // A curve built from a surface (an isocurve) follows it: ask before editing its points.
+    if (!may_edit_points(ctx, id)) return;
     if (const std::optional<int> i = point_under(px, mouse, radius)) {
         ctx.doc.view.selection = {id, *i, -1};
         start_drag(cd, *i, map, mouse - px[static_cast<std::size_t>(*i)]);
         return;
     }
-    const glm::dvec2 ab = pixel_to_plane(map, mouse);
+    const glm::dvec2 ab =
+        snap_in_plane(ctx, map, pixel_to_plane(map, mouse), other_points(g, ax, -1));
     if (ImGui::GetIO().KeyCtrl) {
         const std::optional<LegHit> hit = leg_under(px, mouse, radius);
         if (!hit) {
@@ -116,6 +138,12 @@ ImU32 level_color(int level, int levels) {
     return ImGui::ColorConvertFloat4ToU32(ImVec4(r, g, b, 1));
 }
 
+void fit_curve_canvas(CurveDesignerState& cd) {
+    cd.view_zoom = 1;
+    cd.view_pan = {0, 0};
+    cd.frame_object = 0; // framed afresh at the next frame
+}
+
 int canvas_plane(const AppContext& ctx, const doc::CurveObject& c) {
     switch (c.plane) {
     case doc::CurvePlane::xy:
@@ -146,21 +174,38 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const doc::CurveObjec
         cd.drag_point >= 0 ? cd.frozen : frame(cd, id, plane, c.curve, canvas, ax.a, ax.b, 14 * k);
 
     ImGui::SetCursorScreenPos(ImVec2(canvas.x, canvas.y));
-    ImGui::InvisibleButton("##curve_canvas", ImVec2(canvas.w, canvas.h));
+    ImGui::InvisibleButton("##curve_canvas", ImVec2(canvas.w, canvas.h),
+                           ImGuiButtonFlags_MouseButtonLeft);
     report_item("curve/canvas");
     const ImVec2 m = ImGui::GetIO().MousePos;
     const glm::dvec2 mouse(m.x, m.y);
+    // Zoom about the pointer (wheel), pan (right or middle drag); the panel's Fit frames again.
+    if (ImGui::IsItemHovered() && cd.drag_point < 0) {
+        ImGuiIO& io = ImGui::GetIO();
+        if (io.MouseWheel != 0) {
+            const glm::dvec2 before = pixel_to_plane(map, mouse);
+            cd.view_zoom = std::clamp(cd.view_zoom * std::pow(1.15, io.MouseWheel), 0.05, 200.0);
+            PlaneMap zoomed = map;
+            zoomed.units_per_px = map.units_per_px * std::pow(1.15, -io.MouseWheel);
+            cd.view_pan += before - pixel_to_plane(zoomed, mouse);
+        }
+        if (ImGui::IsMouseDragging(ImGuiMouseButton_Right, 0) ||
+            ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 0))
+            cd.view_pan += glm::dvec2(-io.MouseDelta.x, io.MouseDelta.y) * map.units_per_px;
+    }
     if (ImGui::IsItemActivated()) handle_press(ctx, id, c.curve, ax, map, mouse);
     // A press that has not moved yet moves nothing (rounding would nudge the point).
     if (ImGui::IsItemActive() && cd.drag_point >= 0 && mouse != cd.press) {
         const doc::CurveObject* cur = curve_in(ctx, id);
         if (cur && cd.drag_point < cur->curve.count()) {
             const glm::dvec3 old = cur->curve.points[static_cast<std::size_t>(cd.drag_point)];
-            const glm::dvec2 ab = pixel_to_plane(cd.frozen, mouse - cd.grab);
+            const glm::dvec2 ab =
+                snap_in_plane(ctx, cd.frozen, pixel_to_plane(cd.frozen, mouse - cd.grab),
+                              other_points(cur->curve, ax, cd.drag_point));
             glm::dvec3 p = old;
             p[ax.a] = ab.x;
             p[ax.b] = ab.y;
-            if (p != old && !ctx.execute(doc::move_curve_point(id, cd.drag_point, p)))
+            if (p != old && !ctx.execute(point_move_command(ctx, id, cd.drag_point, -1, p)))
                 cd.message = ctx.ui.status;
         }
     }
@@ -179,7 +224,8 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const doc::CurveObjec
     ImDrawList* dl = ImGui::GetWindowDrawList();
     const ImVec2 a(canvas.x, canvas.y), b(canvas.x + canvas.w, canvas.y + canvas.h);
     const bool light = ctx.ui.presentation;
-    begin_plane_canvas(dl, map, canvas, light);
+    const GridStep step = plane_grid_step(ctx.ui, map);
+    begin_plane_canvas(dl, map, canvas, light, ctx.ui.modeler.snap.grid_shown ? &step : nullptr);
 
     const doc::Colors& col = ctx.doc.colors;
     // The control polygon.
@@ -232,6 +278,7 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const doc::CurveObjec
     };
     for (int i = 0; i < g.count(); ++i) {
         const ImVec2 q = px(g.points[static_cast<std::size_t>(i)]);
+        report_point("curve/point/" + std::to_string(i), q.x, q.y);
         if (i == sel || (closed && i >= own && sel == i - own)) continue;
         dl->AddCircleFilled(q, 4 * k, rgba(col.control_points), 12);
         if (g.count() <= 40 && i < own)

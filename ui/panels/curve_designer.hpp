@@ -14,6 +14,8 @@ namespace isoparm::ui::curve_designer {
 // The canvas plane of a curve: its own plane, or for a 3D curve the chosen view (0 xy, 1 xz,
 // 2 yz, as ui::plane_axes).
 int canvas_plane(const AppContext& ctx, const doc::CurveObject& c);
+// The canvas framed afresh around the curve: its zoom and pan undone (the Fit button).
+void fit_curve_canvas(CurveDesignerState& cd);
 
 // The curve's parameter at the designer's normalised trace position.
 double trace_param(const AppContext& ctx, const geom::Curve& c);

@@ -12,6 +12,7 @@
 #include "core/geom/basis.hpp"
 #include "core/geom/deboor.hpp"
 #include "core/geom/knots.hpp"
+#include "ui/modeler_actions.hpp"
 #include "ui/panels/curve_designer.hpp"
 #include "ui/panels/enum_combo.hpp"
 #include "ui/panels/flow.hpp"
@@ -112,9 +113,9 @@ void point_controls(AppContext& ctx, const doc::Object& obj, const doc::CurveObj
                                     : std::max(ImGui::GetContentRegionAvail().x - label_w, whole));
         double value = p[a];
         if (ImGui::InputDouble(labels[a], &value, 0, 0, "%.3f") && std::isfinite(value) &&
-            value != p[a]) {
+            value != p[a] && may_edit_points(ctx, obj.id)) {
             p[a] = value;
-            if (!ctx.execute(doc::move_curve_point(obj.id, i, p)))
+            if (!ctx.execute(point_move_command(ctx, obj.id, i, -1, p)))
                 ctx.ui.curve.message = ctx.ui.status;
         }
         if (ImGui::IsItemDeactivatedAfterEdit()) ctx.seal();
@@ -341,7 +342,35 @@ void draw_curve_designer_panel(AppContext& ctx) {
     plane_canvas(ctx, *obj, *c, {origin.x, origin.y, avail.x, side_h});
     ImGui::SetCursorScreenPos(
         ImVec2(origin.x, origin.y + side_h + ImGui::GetStyle().ItemSpacing.y));
-    hint_text("Click: add a point   Ctrl+click a leg: insert   drag: move   Del: delete");
+    hint_text("Click: add a point   Ctrl+click a leg: insert   drag: move (Alt: no snap)   Del: "
+              "delete   wheel: zoom   right-drag: pan");
+    // Points before the first and after the last (a leg's insertion cannot reach the ends), and
+    // the canvas framed again.
+    {
+        const geom::Curve& g = c->curve;
+        const int n = g.count();
+        const glm::dvec3 first = g.points.front(), last = g.points.back();
+        const glm::dvec3 before =
+            n > 1 ? first + (first - g.points[1]) : first - glm::dvec3(0.5, 0, 0);
+        const glm::dvec3 after = n > 1 ? last + (last - g.points[static_cast<std::size_t>(n - 2)])
+                                       : last + glm::dvec3(0.5, 0, 0);
+        if (command_button(ctx, "Add before P0", *doc::insert_curve_point(id, 0, before),
+                           "A new first point, continuing the polygon's first leg backwards") &&
+            may_edit_points(ctx, id) && run(ctx, doc::insert_curve_point(id, 0, before)))
+            ctx.doc.view.selection = {id, 0, -1};
+        report_item("curve/add_first");
+        ImGui::SameLine();
+        const std::string last_label = "Add after P" + std::to_string(n - 1);
+        if (command_button(ctx, last_label.c_str(), *doc::insert_curve_point(id, n, after),
+                           "A new last point, continuing the polygon's last leg") &&
+            may_edit_points(ctx, id) && run(ctx, doc::insert_curve_point(id, n, after)))
+            ctx.doc.view.selection = {id, n, -1};
+        report_item("curve/add_last");
+        ImGui::SameLine();
+        if (ImGui::Button("Fit")) fit_curve_canvas(cd);
+        report_item("curve/fit");
+    }
+    if (!(c = selected_curve(ctx, &obj))) return;
     if (!cd.message.empty()) warn_text(ctx, cd.message);
 
     // Delete key: the selected point of this curve, unless a field has the keyboard.

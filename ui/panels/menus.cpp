@@ -11,7 +11,9 @@
 
 #include "core/doc/commands.hpp"
 #include "ui/actions.hpp"
+#include "ui/animation_actions.hpp"
 #include "ui/exchange_actions.hpp"
+#include "ui/modeler_actions.hpp"
 #include "ui/panels/fit_panel.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/surface_actions.hpp"
@@ -88,6 +90,21 @@ void edit_menu(AppContext& ctx) {
     const bool has_point = has_valid_point(ctx.doc);
     if (menu_item("Deselect point", "Esc", false, has_point)) {
         ctx.doc.view.selection.i = ctx.doc.view.selection.j = -1;
+    }
+    // Many points: Shift+click adds or removes one, Ctrl+drag draws a box (3D view; a plain
+    // drag on empty space in a plane).
+    if (menu_item("Select row of the point", "R", false, has_point)) select_row(ctx);
+    if (menu_item("Select column of the point", "Shift+R", false, has_point)) select_column(ctx);
+    const doc::Object* sel = ctx.doc.selected();
+    if (menu_item("Select all points", "Ctrl+A", false, sel && !sel->implicit()))
+        select_all_points(ctx);
+    ImGui::Separator();
+    SelectionState& st = ctx.ui.modeler.selection;
+    if (begin_menu("Symmetric editing")) {
+        const char* planes[] = {"Off", "About x = 0", "About y = 0", "About z = 0"};
+        for (int a = -1; a < 3; ++a)
+            if (menu_item(planes[a + 1], nullptr, st.symmetry == a)) st.symmetry = a;
+        ImGui::EndMenu();
     }
     ImGui::EndMenu();
 }
@@ -253,6 +270,24 @@ void display_menu(AppContext& ctx) {
     if (menu_item("de Boor: step forward", "]")) deboor_step(ctx, +1);
     if (menu_item(ctx.ui.deboor.playing ? "de Boor: pause" : "de Boor: play", "Space"))
         deboor_toggle_play(ctx, ImGui::GetTime());
+    ImGui::Separator();
+    // Grid and snap: the planes, the curve designer and the 3D view's working plane z = 0;
+    // Alt held during a drag snaps nothing.
+    SnapState& snap = ctx.ui.modeler.snap;
+    menu_item("Grid", "G", &snap.grid_shown);
+    menu_item("Snap while dragging (Alt: off)", nullptr, &snap.snapping);
+    if (begin_menu("Snap to")) {
+        menu_item("Grid steps", nullptr, &snap.settings.grid);
+        menu_item("Axes", nullptr, &snap.settings.axes);
+        menu_item("Other points", nullptr, &snap.settings.points);
+        ImGui::EndMenu();
+    }
+    if (menu_item("Animate...", nullptr, ctx.ui.modeler.animation.open)) {
+        AnimationState& a = ctx.ui.modeler.animation;
+        if (!a.open) a.focus = true;
+        a.open = !a.open;
+        if (!a.open) stop_animation(ctx);
+    }
     if (begin_menu("Analysis")) {
         // Curvature from exact derivatives as false colour, or reflection lines.
         for (const auto& m : doc::analysis_mode_names)
@@ -348,6 +383,9 @@ void handle_shortcuts(AppContext& ctx) {
             case GLFW_KEY_Q:
                 request_quit(ctx);
                 break;
+            case GLFW_KEY_A:
+                select_all_points(ctx);
+                break;
             default:
                 break;
             }
@@ -356,6 +394,12 @@ void handle_shortcuts(AppContext& ctx) {
         switch (k.key) {
         case GLFW_KEY_F:
             fit_view(ctx);
+            break;
+        case GLFW_KEY_R:
+            (k.shift ? select_column : select_row)(ctx);
+            break;
+        case GLFW_KEY_G:
+            ctx.ui.modeler.snap.grid_shown = !ctx.ui.modeler.snap.grid_shown;
             break;
         case GLFW_KEY_F11:
             ctx.ui.fullscreen_request = true;
@@ -413,7 +457,7 @@ void handle_shortcuts(AppContext& ctx) {
             if (ctx.ui.view_mode == ViewMode::view3d_only && !ctx.ui.headless)
                 toggle_view_only(ctx);
             else
-                ctx.doc.view.selection.i = ctx.doc.view.selection.j = -1;
+                ctx.doc.view.selection.i = ctx.doc.view.selection.j = -1; // and the many points
             break;
         default:
             break;

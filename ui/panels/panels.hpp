@@ -16,6 +16,8 @@ void draw_curve_designer_panel(AppContext& ctx); // the selected curve: canvas, 
 void draw_construct_menus(AppContext& ctx);      // Curve and Construct menus (in the menu bar)
 void toolbox_items(AppContext& ctx, bool curve); // removal, reduction, splitting, closing, convert
 void draw_construct_dialog(AppContext& ctx);     // the Construct menu's dialog
+void draw_animate_panel(AppContext& ctx);        // an animated parameter: play, keep, stop
+void draw_detach_question(AppContext& ctx);      // before a constructed object's points move
 void draw_basis_plot_panel(AppContext& ctx);     // R_ij at (u, v), its support, N_i and N_j
 void draw_deboor_panel(AppContext& ctx);         // de Boor's levels at (u, v), step control
 void draw_blossom_panel(AppContext& ctx);        // polar forms of de Boor's points, f(a_1..a_p)

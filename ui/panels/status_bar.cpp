@@ -3,8 +3,10 @@
 #include <imgui.h>
 #include <string>
 
+#include "ui/modeler_actions.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/render/renderer.hpp"
+#include "ui/ui_report.hpp"
 #include "ui/view/doc_access.hpp"
 
 namespace isoparm::ui {
@@ -65,6 +67,12 @@ void draw_status_bar(AppContext& ctx) {
             }
         } else {
             ImGui::TextUnformatted("no surface");
+        }
+        // Many selected points: how many and where their centroid is.
+        if (const std::string many = selection_summary(ctx); !many.empty()) {
+            ImGui::SameLine(0, 16 * ctx.ui.scale());
+            ImGui::TextUnformatted(many.c_str());
+            report_item("status/selection");
         }
         ImGui::SameLine(0, 24 * ctx.ui.scale());
         if (ctx.dirty())

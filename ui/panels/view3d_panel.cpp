@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <imgui.h>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "core/doc/placement.hpp"
 #include "core/geom/deboor.hpp"
 #include "ui/actions.hpp"
+#include "ui/modeler_actions.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/render/renderer.hpp"
 #include "ui/ui_report.hpp"
@@ -69,12 +71,6 @@ std::optional<Candidate> pick(const AppContext& ctx, const Viewport& vp, const g
     return cands[*k];
 }
 
-// Curves go through the designer's command, so chord-length / centripetal knots follow.
-std::unique_ptr<doc::Command> move_point(const PointRef& r, const glm::dvec3& p) {
-    if (r.j < 0) return doc::move_curve_point(r.object, r.i, p);
-    return doc::move_control_point(r.object, r.i, r.j, p);
-}
-
 int held_axis_key() {
     if (ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_X))) return 0;
     if (ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_Y))) return 1;
@@ -86,10 +82,152 @@ std::string point_label(int i, int j, int n_u, int n_v) {
     return point_name('P', i, j, n_u, n_v);
 }
 
+// The selection's handle where it is drawn: shown while two or more points are selected.
+std::optional<HandleLayout> selection_handle(const AppContext& ctx, const Viewport& vp) {
+    const SelectionState& st = ctx.ui.modeler.selection;
+    if (!st.handle || st.points.size() < 2 || !ctx.doc.find(st.points.object)) return std::nullopt;
+    if (!ctx.doc.view.display.control_points) return std::nullopt;
+    HandleLayout h =
+        handle_layout_3d(ctx.ui.camera, vp, selection_pivot(ctx), 70.0 * ctx.ui.scale());
+    h.centre_radius = 8.0 * ctx.ui.scale();
+    h.box_half = 5.0 * ctx.ui.scale();
+    return h;
+}
+
+// Starts a drag of the handle: the selected points and their positions at the press.
+void start_handle_drag(AppContext& ctx, const Viewport& vp, HandlePart part,
+                       const glm::dvec2& mouse, const HandleLayout& h) {
+    SelectionState& st = ctx.ui.modeler.selection;
+    const doc::Object* o = ctx.doc.find(st.points.object);
+    if (!o || !may_edit_points(ctx, o->id)) return;
+    SelectionGesture& g = st.gesture;
+    g = {};
+    g.kind = SelectionGesture::Kind::handle;
+    g.part = part;
+    g.press = g.now = mouse;
+    g.points = st.points.points;
+    for (const PointIndex& p : g.points) g.start.push_back(doc::position_of(o->shape, p));
+    g.pivot = selection_pivot(ctx);
+    g.pivot_px = h.centre;
+    if (const int axis = handle_axis(part); axis >= 0) {
+        glm::dvec3 e(0);
+        e[axis] = 1;
+        g.toward_viewer = glm::dot(e, camera_eye(ctx.ui.camera) - g.pivot) > 0;
+    }
+    (void)vp;
+    ctx.seal(); // a new gesture: a new undo step
+}
+
+// The handle held: the map from the press to now, applied to the points as they were.
+void drag_handle(AppContext& ctx, const Viewport& vp, const glm::dvec2& mouse) {
+    SelectionState& st = ctx.ui.modeler.selection;
+    SelectionGesture& g = st.gesture;
+    g.now = mouse;
+    const Camera& cam = ctx.ui.camera;
+    // The pointer as if it had been pressed on the pivot itself (no jump at the first motion).
+    const glm::dvec2 at = mouse + (g.pivot_px - g.press);
+    const bool snap = snapping_now(ctx);
+    glm::dmat4 m(1.0);
+    const int axis = handle_axis(g.part);
+    switch (g.part) {
+    case HandlePart::centre:
+    case HandlePart::arrow_x:
+    case HandlePart::arrow_y:
+    case HandlePart::arrow_z: {
+        glm::dvec3 to = g.part == HandlePart::centre ? drag_in_view_plane(cam, vp, g.pivot, at)
+                                                     : drag_along_axis(cam, vp, g.pivot, axis, at);
+        if (snap) { // the pivot lands on the grid (along the arrow's axis only)
+            const GridStep step = working_grid_step(ctx.ui);
+            for (int a = 0; a < 3; ++a)
+                if (g.part == HandlePart::centre || a == axis) to[a] = snap_to_grid(to[a], step);
+        }
+        m = doc::translation(to - g.pivot);
+        break;
+    }
+    case HandlePart::ring_x:
+    case HandlePart::ring_y:
+    case HandlePart::ring_z:
+        m = ring_turn(axis, g.pivot, g.pivot_px, g.press, mouse, g.toward_viewer,
+                      snap ? 15.0 : 0.0);
+        break;
+    case HandlePart::scale:
+        m = box_scale(g.pivot, g.pivot_px, g.press, mouse, snap ? 0.05 : 0.0);
+        break;
+    case HandlePart::none:
+        return;
+    }
+    std::vector<glm::dvec3> to;
+    for (const glm::dvec3& p : g.start) to.push_back(doc::apply_affine(m, p));
+    const char* what = axis >= 0 && g.part >= HandlePart::ring_x && g.part <= HandlePart::ring_z
+                           ? "Turn "
+                       : g.part == HandlePart::scale ? "Scale "
+                                                     : "Move ";
+    ctx.execute(move_points_command(ctx, st.points.object, g.points, to,
+                                    what + std::to_string(g.points.size()) + " points"));
+}
+
+// The points of the object whose screen positions are inside the box.
+std::vector<PointIndex> points_in_box(const AppContext& ctx, const Viewport& vp,
+                                      const doc::Object& o, const glm::dvec2& a,
+                                      const glm::dvec2& b) {
+    const glm::dmat4 m = view_projection(ctx.ui.camera, vp.aspect());
+    const std::vector<PointIndex> all = doc::all_points(o.shape);
+    std::vector<glm::dvec2> px;
+    std::vector<PointIndex> visible;
+    for (const PointIndex& p : all) {
+        const Projected q = project(m, vp, doc::position_of(o.shape, p));
+        if (!q.visible) continue;
+        px.push_back(q.pixel);
+        visible.push_back(p);
+    }
+    std::vector<PointIndex> out;
+    for (std::size_t k : inside_box(px, a, b)) out.push_back(visible[k]);
+    return out;
+}
+
+// The object a box selects in: the selected one, else the current surface.
+const doc::Object* box_object(const AppContext& ctx) {
+    if (const doc::Object* sel = ctx.doc.selected(); sel && !sel->implicit()) return sel;
+    const doc::Object* cur = nullptr;
+    current_surface(ctx.doc, &cur);
+    return cur;
+}
+
+// A dragged point snapped: to another point of its object on screen, or each coordinate the
+// drag moves to the grid (the working plane's step) or an axis.
+glm::dvec3 snapped_point(const AppContext& ctx, const Viewport& vp, const PointRef& ref,
+                         const glm::dvec3& p, int axis) {
+    if (!snapping_now(ctx)) return p;
+    const doc::Object* o = ctx.doc.find(ref.object);
+    if (!o) return p;
+    const glm::dmat4 m = view_projection(ctx.ui.camera, vp.aspect());
+    std::vector<glm::dvec3> others;
+    std::vector<glm::dvec2> others_px;
+    for (const PointIndex& q : doc::all_points(o->shape)) {
+        if (q.i == ref.i && (q.j == ref.j || o->curve())) continue;
+        const glm::dvec3 x = doc::position_of(o->shape, q);
+        const Projected pr = project(m, vp, x);
+        if (!pr.visible) continue;
+        others.push_back(x);
+        others_px.push_back(pr.pixel);
+    }
+    bool free_axes[3] = {axis < 0, axis < 0, axis < 0};
+    if (axis >= 0) free_axes[axis] = true;
+    SnapSettings s = ctx.ui.modeler.snap.settings;
+    s.radius_px *= ctx.ui.scale();
+    const double h = std::max(1.0, vp.h);
+    const double upp = 2 * ctx.ui.camera.distance * std::tan(ctx.ui.camera.fov_y / 2) / h;
+    return snap_space_point(p, project(m, vp, p).pixel, s, working_grid_step(ctx.ui), upp,
+                            free_axes, others, others_px)
+        .p;
+}
+
 void handle_mouse(AppContext& ctx, const Viewport& vp) {
     ImGuiIO& io = ImGui::GetIO();
     UiState& ui = ctx.ui;
     ViewDrag& drag = ui.drag;
+    SelectionState& st = ui.modeler.selection;
+    SelectionGesture& gesture = st.gesture;
     const glm::dvec2 mouse(io.MousePos.x, io.MousePos.y);
 
     if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f)
@@ -98,19 +236,57 @@ void handle_mouse(AppContext& ctx, const Viewport& vp) {
     if (ImGui::IsItemActivated()) {
         drag = {};
         drag.start_mouse = mouse;
-        if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !io.KeyCtrl) {
-            if (const auto hit = pick(ctx, vp, mouse)) {
-                ctx.doc.view.selection = {hit->ref.object, hit->ref.i, hit->ref.j};
-                drag.kind = ViewDrag::Kind::point;
-                drag.point = hit->ref;
-                drag.start = hit->position;
-                ctx.seal(); // a new gesture: a new undo step
+        gesture = {};
+        if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+            const std::optional<HandleLayout> handle = selection_handle(ctx, vp);
+            const HandlePart part =
+                handle ? hit_handle(*handle, mouse, 7.0 * ui.scale()) : HandlePart::none;
+            if (part != HandlePart::none && !io.KeyCtrl) {
+                start_handle_drag(ctx, vp, part, mouse, *handle);
+            } else if (const auto hit = !io.KeyCtrl ? pick(ctx, vp, mouse) : std::nullopt) {
+                const PointIndex p{hit->ref.i, hit->ref.j};
+                // A press on one of many selected points keeps the selection: a drag moves them
+                // all (the handle's centre), a click without moving selects that one alone.
+                const bool in_selection = st.points.size() > 1 &&
+                                          st.points.object == hit->ref.object &&
+                                          st.points.contains(p) && !io.KeyShift;
+                if (in_selection) {
+                    HandleLayout h = handle ? *handle : HandleLayout{};
+                    h.centre =
+                        project(view_projection(ui.camera, vp.aspect()), vp, selection_pivot(ctx))
+                            .pixel;
+                    start_handle_drag(ctx, vp, HandlePart::centre, mouse, h);
+                    gesture.points =
+                        st.points.points; // the press point itself moves with the pointer
+                } else {
+                    if (!io.KeyShift) {
+                        ctx.doc.view.selection = {hit->ref.object, hit->ref.i, hit->ref.j};
+                        sync_selection(st.points, ctx.doc);
+                        st.points.set(hit->ref.object, {p});
+                    }
+                    drag.kind = ViewDrag::Kind::point;
+                    drag.point = hit->ref;
+                    drag.start = hit->position;
+                    ctx.seal(); // a new gesture: a new undo step
+                }
+            } else if (io.KeyCtrl) {
+                // Ctrl+drag on empty space: a box selects the points inside (Shift adds).
+                gesture.kind = SelectionGesture::Kind::box;
+                gesture.press = gesture.now = mouse;
+                gesture.add = io.KeyShift;
             } else {
                 drag.kind = io.KeyShift ? ViewDrag::Kind::pan : ViewDrag::Kind::orbit;
             }
         } else {
             drag.kind = ViewDrag::Kind::pan;
         }
+    }
+
+    if (ImGui::IsItemActive() && gesture.kind != SelectionGesture::Kind::none) {
+        if (gesture.kind == SelectionGesture::Kind::box)
+            gesture.now = mouse;
+        else if (glm::length(mouse - gesture.press) > 2.0)
+            drag_handle(ctx, vp, mouse);
     }
 
     if (ImGui::IsItemActive() && drag.kind != ViewDrag::Kind::none) {
@@ -125,6 +301,11 @@ void handle_mouse(AppContext& ctx, const Viewport& vp) {
             break;
         case ViewDrag::Kind::point: {
             if (!drag.moved) break;
+            // A constructed object's own point: ask first (the drag waits for the answer).
+            if (!may_edit_points(ctx, drag.point.object)) {
+                drag = {};
+                break;
+            }
             // Axis: X/Y/Z held picks it; Shift locks the axis the drag started along.
             int axis = held_axis_key();
             if (axis < 0 && io.KeyShift) {
@@ -138,7 +319,8 @@ void handle_mouse(AppContext& ctx, const Viewport& vp) {
             }
             const glm::dvec3 p = axis >= 0 ? drag_along_axis(ui.camera, vp, drag.start, axis, mouse)
                                            : drag_in_view_plane(ui.camera, vp, drag.start, mouse);
-            ctx.execute(move_point(drag.point, p));
+            const glm::dvec3 q = snapped_point(ctx, vp, drag.point, p, axis);
+            ctx.execute(point_move_command(ctx, drag.point.object, drag.point.i, drag.point.j, q));
             break;
         }
         case ViewDrag::Kind::none:
@@ -147,12 +329,78 @@ void handle_mouse(AppContext& ctx, const Viewport& vp) {
     }
 
     if (ImGui::IsItemDeactivated()) {
+        if (gesture.kind == SelectionGesture::Kind::box) {
+            if (const doc::Object* o = box_object(ctx))
+                select_points(ctx, o->id, points_in_box(ctx, vp, *o, gesture.press, gesture.now),
+                              gesture.add);
+        } else if (gesture.kind == SelectionGesture::Kind::handle &&
+                   glm::length(mouse - gesture.press) <= 2.0 &&
+                   gesture.part == HandlePart::centre) {
+            // A click on one of the selected points (not a drag): that point alone.
+            if (const auto hit = pick(ctx, vp, mouse)) {
+                ctx.doc.view.selection = {hit->ref.object, hit->ref.i, hit->ref.j};
+                st.points.set(hit->ref.object, {{hit->ref.i, hit->ref.j}});
+            }
+        }
+        if (drag.kind == ViewDrag::Kind::point && !drag.moved && io.KeyShift) {
+            // Shift+click: the point in or out of the selection.
+            toggle_point(ctx, drag.point.object, {drag.point.i, drag.point.j});
+        }
         if (drag.kind == ViewDrag::Kind::orbit && !drag.moved) {
             ctx.doc.view.selection.i = ctx.doc.view.selection.j = -1; // a click on empty space
         }
         drag = {};
+        gesture = {};
         ctx.seal();
     }
+}
+
+// The selection's handle and the box being drawn.
+void draw_selection(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
+    const float k = ctx.ui.scale();
+    const SelectionGesture& g = ctx.ui.modeler.selection.gesture;
+    if (g.kind == SelectionGesture::Kind::box) {
+        const ImVec2 a(static_cast<float>(g.press.x), static_cast<float>(g.press.y));
+        const ImVec2 b(static_cast<float>(g.now.x), static_cast<float>(g.now.y));
+        dl->AddRectFilled(a, b, IM_COL32(120, 170, 255, 40));
+        dl->AddRect(a, b, IM_COL32(140, 190, 255, 220), 0, 0, 1.5f * k);
+    }
+    const std::optional<HandleLayout> h = selection_handle(ctx, vp);
+    if (!h) return;
+    report_point("view3d/handle", static_cast<float>(h->centre.x), static_cast<float>(h->centre.y));
+    const ImU32 colors[3] = {IM_COL32(240, 80, 80, 255), IM_COL32(90, 215, 90, 255),
+                             IM_COL32(90, 140, 255, 255)};
+    const char* names[3] = {"x", "y", "z"};
+    auto iv = [](const glm::dvec2& p) {
+        return ImVec2(static_cast<float>(p.x), static_cast<float>(p.y));
+    };
+    for (int a = 0; a < 3; ++a) {
+        const auto& ring = h->ring[a];
+        if (ring.size() > 2) {
+            std::vector<ImVec2> pts;
+            for (const glm::dvec2& p : ring) pts.push_back(iv(p));
+            dl->AddPolyline(pts.data(), static_cast<int>(pts.size()),
+                            (colors[a] & 0x00FFFFFF) | 0xA0000000, ImDrawFlags_Closed, 1.5f * k);
+            report_point(std::string("view3d/handle/ring_") + names[a], pts.front().x,
+                         pts.front().y);
+        }
+    }
+    for (int a = 0; a < 3; ++a) {
+        if (!h->axis_shown[a]) continue;
+        const ImVec2 c = iv(h->centre), t = iv(h->tip[a]);
+        dl->AddLine(c, t, colors[a], 2.5f * k);
+        dl->AddCircleFilled(t, 4.5f * k, colors[a], 12);
+        report_point(std::string("view3d/handle/") + names[a], t.x, t.y);
+    }
+    const ImVec2 c = iv(h->centre);
+    dl->AddCircleFilled(c, static_cast<float>(h->centre_radius), IM_COL32(255, 255, 255, 200), 20);
+    dl->AddCircle(c, static_cast<float>(h->centre_radius), IM_COL32(0, 0, 0, 255), 20, 1.5f * k);
+    const ImVec2 sb = iv(h->scale_box);
+    const float hb = static_cast<float>(h->box_half);
+    dl->AddRectFilled(ImVec2(sb.x - hb, sb.y - hb), ImVec2(sb.x + hb, sb.y + hb),
+                      IM_COL32(250, 210, 80, 230));
+    dl->AddRect(ImVec2(sb.x - hb, sb.y - hb), ImVec2(sb.x + hb, sb.y + hb), IM_COL32(0, 0, 0, 255));
+    report_point("view3d/handle/scale", sb.x, sb.y);
 }
 
 glm::vec3 background_of(const doc::Document& d) {
@@ -278,7 +526,7 @@ void draw_help_line(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
     // The longest wording that fits the view: a hint cut in the middle reads as a bug.
     static const char* const wordings[] = {
         "drag: orbit   right-drag: pan   wheel: zoom   click or drag a point (X/Y/Z: along "
-        "an axis)",
+        "an axis)   Shift+click: add   Ctrl+drag: box",
         "drag: orbit   right-drag: pan   wheel: zoom   drag a point",
         "drag: orbit   right: pan   wheel: zoom",
     };
@@ -539,6 +787,7 @@ void draw_view3d_panel(AppContext& ctx) {
     draw_labels(ctx, vp, dl);
     draw_deboor_labels(ctx, vp, dl);
     if (!ui.headless) draw_hover_ring(ctx, vp, dl);
+    draw_selection(ctx, vp, dl);
     draw_axes(ctx, vp, dl);
     ui.analysis = analysis_view(ctx.doc);
     draw_colour_bar(ctx, vp, dl);

@@ -349,6 +349,9 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
                                                      d.view.selection.j)];
         selected.points.push_back({glm::vec3(p), to_vec4(col.selected_point)});
     }
+    if (disp.control_points)
+        for (const glm::dvec3& p : style.also_selected)
+            selected.points.push_back({glm::vec3(p), to_vec4(col.selected_point)});
 
     // The indicator: S(u,v) as a small sphere, with the two isoparametric curves through it.
     LineBatch iso{{}, 1.6f * k, true};
@@ -404,6 +407,25 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
 
     LineBatch borders{{}, 5.0f * k, true};
     if (style.border_continuity) add_borders(borders, d);
+
+    // The working plane's grid, under everything (depth-tested, faint where hidden).
+    LineBatch grid{{}, 1.0f * k, true};
+    if (style.working_grid && style.grid_step > 0 && style.grid_lines > 0) {
+        const double step = style.grid_step;
+        const int n = style.grid_lines;
+        const glm::dvec2 c = glm::round(style.grid_centre / step) * step;
+        const glm::vec4 minor(0.55f, 0.58f, 0.65f, 0.28f), major(0.62f, 0.66f, 0.74f, 0.55f);
+        for (int q = -n; q <= n; ++q) {
+            const glm::dvec2 at = c + static_cast<double>(q) * step;
+            const glm::vec4 cx = std::llround(at.x / step) % 5 == 0 ? major : minor;
+            const glm::vec4 cy = std::llround(at.y / step) % 5 == 0 ? major : minor;
+            grid.vertices.push_back({glm::vec3(at.x, c.y - n * step, 0), cx});
+            grid.vertices.push_back({glm::vec3(at.x, c.y + n * step, 0), cx});
+            grid.vertices.push_back({glm::vec3(c.x - n * step, at.y, 0), cy});
+            grid.vertices.push_back({glm::vec3(c.x + n * step, at.y, 0), cy});
+        }
+        out.overlay.lines.push_back(std::move(grid));
+    }
 
     for (LineBatch* b :
          {&knots, &knots_double, &knots_full, &curves, &net, &box, &iso, &guide, &borders})
