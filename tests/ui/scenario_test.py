@@ -144,8 +144,19 @@ def control_points_after_starting_with_a_curve(s, ctx):
     r = s.wait_for("a point selected", lambda r: r["point"][0] >= 0)
     i, j = r["point"]
     before = s.save()
+    check("construction" in by_name(before, "vase"), "fig8's vase is no longer a revolution")
+    disk = s.rect("cp/disk0")
+    # The vase follows its profile: the first drag asks to detach it; Detach, then drag again.
+    s.drag(disk[0], disk[1], 25, -20)
+    s.rect("detach/yes")
+    ctx.shot(s, "detach-question")
+    check(not s.report()["dirty"], "the drag changed the linked vase before it was detached")
+    s.click_named("detach/yes")
+    s.wait_for("the vase detached", lambda r: r["undo"].startswith("Detach"))
+    check("construction" not in by_name(s.save(), "vase"), "Detach left the vase its recipe")
     disk = s.rect("cp/disk0")
     s.drag(disk[0], disk[1], 25, -20)
+    s.wait_for("the drag's undo step", lambda r: r["undo"].startswith("Move"))
     ctx.shot(s, "control-point-panel")
     after = s.save()
     # Scene files keep the net as rows of points (docs/scene-format.md).
@@ -328,9 +339,16 @@ def toolbox_split_knot_then_convert(s, ctx):
     """Surface menu: split the double knot v = 0.5 under the indicator (the shape moves a
     little, the knots change), then Convert to > Bezier asks first and makes the pieces."""
     before = s.save()
+    check("construction" in by_name(before, "vase"), "fig8's vase is no longer a revolution")
     s.menu("Surface", "Reshape", "Split knot v = 0.5 (x2)")
+    # The vase follows its profile: the split asks to detach it first, then splits.
+    s.rect("detach/yes")
+    ctx.shot(s, "split-asks-detach")
+    check(not s.report()["dirty"], "the split changed the linked vase before it was detached")
+    s.click_named("detach/yes")
     r = s.wait_for("the split knot", lambda r: r["undo"].startswith("Split knot v = 0.5"))
     after = s.save()
+    check("construction" not in by_name(after, "vase"), "the vase split but kept its recipe")
     k0 = by_name(before, "vase")["surface"]["knots"][1]
     k1 = by_name(after, "vase")["surface"]["knots"][1]
     check(k1.count(0.5) == k0.count(0.5) - 1 and len(k1) == len(k0),
@@ -809,6 +827,215 @@ def figures_from_the_window(s, ctx):
         print("scenario figures: xclip missing, the clipboard check skipped")
 
 
+# --- modelling aids (#32): linked constructions, many points, grid and snap, animation -------
+
+def drag_with(s, modifiers, x, y, dx, dy, steps=8):
+    """A drag with modifier keys held (Ctrl+drag draws a box in the 3D view)."""
+    for m in modifiers:
+        s.xdo("keydown", m)
+    try:
+        s.drag(x, y, dx, dy, steps)
+    finally:
+        for m in modifiers:
+            s.xdo("keyup", m)
+    time.sleep(0.2)
+
+
+def point_of(scene, name, i, j=None):
+    o = by_name(scene, name)
+    if o["kind"] == "curve":
+        return o["curve"]["points"][i]
+    return o["surface"]["points"][i][j]
+
+
+def revolve_then_drag_the_profile(s, ctx):
+    """Construct > Revolve builds a surface linked to its profile; dragging a profile point in
+    the curve designer rebuilds it (and the scene's vase) in the same undo step."""
+    s.wait_for("the curve designer", lambda r: "curve/canvas" in r["rects"])
+    s.menu("Construct", "Revolve...")
+    s.click_named("construct/build")
+    s.key("Escape")
+    built = s.save()
+    made = [o for o in built["objects"] if o.get("construction", {}).get("operation") == "revolve"
+            and o["name"] != "vase"]
+    check(made, "Revolve built no surface that keeps its recipe")
+    name = made[-1]["name"]
+    check(made[-1]["construction"]["inputs"] == [by_name(built, "profile")["id"]],
+          f"the recipe reads {made[-1]['construction']['inputs']}, not the profile")
+    # Back to the profile, and drag its point P8 outward.
+    s.click_named("objects/profile")
+    s.wait_for("the profile selected", lambda r: r["selected"] == "profile")
+    x, y, _, _ = s.rect("curve/point/8")
+    ctx.shot(s, "vase-before-drag")
+    s.drag(x, y, 45, 0)
+    r = s.wait_for("the rebuild's undo step", lambda r: "rebuilds" in r["undo"])
+    ctx.shot(s, "vase-follows-profile")
+    after = s.save()
+    p8 = point_of(after, "profile", 8)
+    check(p8 != point_of(built, "profile", 8), "the drag did not move P8")
+    for surface in (name, "vase"):
+        row = point_of(after, surface, 8, 0)
+        check(all(abs(a - b) < 1e-12 for a, b in zip(row, p8)),
+              f"{surface}'s row 8 starts at {row}, not at the moved profile point {p8}")
+    check(point_of(after, "vase", 8, 4)[0] == -p8[0] or abs(point_of(after, "vase", 8, 4)[0] + p8[0]) < 1e-12,
+          "the vase's half-turn column did not follow")
+    # One undo step takes the drag and both rebuilds back.
+    s.key("ctrl+z")
+    again = s.save()
+    check(point_of(again, "vase", 8, 0) == point_of(built, "vase", 8, 0),
+          "Ctrl+Z did not take the vase back with its profile")
+
+
+def box_select_a_row_and_raise_it(s, ctx):
+    """A drag on empty space in the xz plane boxes a row of points; the selection's handle
+    (its z arrow) raises them all in one undo step."""
+    s.click_named("objects/hill") if "objects/hill" in s.report().get("rects", {}) else None
+    r = s.wait_for("a point selected", lambda r: r["point"][0] >= 0)
+    before = s.save()
+    i = 3  # the row of points at x = x_3: one column of dots in the xz plane
+    dots = [s.rect(f"cp/dot1/{i},{j}") for j in range(5)]
+    xs = [d[0] for d in dots]
+    zs = [d[1] for d in dots]
+    others = [s.rect(f"cp/dot1/{q},0")[0] for q in range(5) if q != i]
+    gap = min(abs(o - xs[0]) for o in others) / 2
+    x0, y0 = min(xs) - gap * 0.8, min(zs) - 12
+    x1, y1 = max(xs) + gap * 0.8, max(zs) + 12
+    s.drag(x0, y0, x1 - x0, y1 - y0)
+    r = s.wait_for("the row selected", lambda r: r.get("selection_size") == 5)
+    tip = s.rect("cp/handle1/z")
+    ctx.shot(s, "selection-handle")
+    s.drag(tip[0], tip[1], 0, -40)
+    r = s.wait_for("the raise's undo step", lambda r: "5 points" in r["undo"])
+    after = s.save()
+    pts0 = by_name(before, "hill")["surface"]["points"]
+    pts1 = by_name(after, "hill")["surface"]["points"]
+    dz = pts1[i][0][2] - pts0[i][0][2]
+    check(dz > 0.05, f"the handle's z arrow raised the row by {dz}")
+    for q in range(5):
+        for j in range(5):
+            d = [b - a for a, b in zip(pts0[q][j], pts1[q][j])]
+            want = [0, 0, dz] if q == i else [0, 0, 0]
+            check(all(abs(u - v) < 1e-9 for u, v in zip(d, want)),
+                  f"P{q}{j} moved by {d}, expected {want}")
+    ctx.shot(s, "row-raised")
+    s.key("ctrl+z")
+    undone = s.save()
+    check(by_name(undone, "hill")["surface"]["points"] == pts0, "one Ctrl+Z did not undo the raise")
+
+
+def box_select_in_the_3d_view(s, ctx):
+    """Ctrl+drag in the 3D view boxes the control points inside; R takes the selected point's
+    row, Ctrl+A all points; the status bar shows the count and the centroid."""
+    r = s.wait_for("a point selected", lambda r: r["point"][0] >= 0)
+    if not r["control_points"]:
+        s.key("c")
+        s.wait_for("control points shown", lambda r: r["control_points"])
+    name = r["selected"]
+    pts = {k: s.rect(k) for k in s.rect_names(f"view3d/{name}/")}
+    check(len(pts) >= 4, "too few control points on screen")
+    xs = sorted(v[0] for v in pts.values())
+    ys = sorted(v[1] for v in pts.values())
+    # A box around the lower-left half of the net's screen box.
+    x0, y0 = xs[0] - 6, ys[len(ys) // 2] - 2
+    x1, y1 = (xs[0] + xs[-1]) / 2, ys[-1] + 6
+    inside = [k for k, v in pts.items() if x0 <= v[0] <= x1 and y0 <= v[1] <= y1]
+    drag_with(s, ["ctrl"], x0, y0, x1 - x0, y1 - y0)
+    r = s.wait_for("the boxed points", lambda r: r.get("selection_size", 0) == len(inside))
+    s.rect("status/selection")
+    ctx.shot(s, "box-select-3d")
+    s.key("Escape")
+    s.click_rect(pts[sorted(pts)[len(pts) // 2]])
+    s.key("r")
+    s.wait_for("a row (5 points)", lambda r: r.get("selection_size") == 5)
+    s.key("ctrl+a")
+    s.wait_for("all 25 points", lambda r: r.get("selection_size") == 25)
+
+
+def weight_animation_plays_without_editing(s, ctx):
+    """The selected point's weight on the Animate slider: it plays (frames differ), nothing goes
+    on the undo stack; Keep makes the value shown one undo step."""
+    r = s.wait_for("a point selected", lambda r: r["point"][0] >= 0)
+    steps0 = r["undo_steps"]
+    before = s.save()
+    s.click_named("cp/animate_weight")
+    r = s.wait_for("the animation playing", lambda r: r["facts"].get("animate/playing") == 1)
+    seen = set()
+    for shot in range(3):
+        r = s.wait_for("a new frame", lambda r: r["facts"].get("animate/value") is not None and
+                       round(r["facts"]["animate/value"], 3) not in seen)
+        seen.add(round(r["facts"]["animate/value"], 3))
+        ctx.shot(s, f"weight-animation-{shot}")
+        time.sleep(0.4)
+    check(len(seen) >= 3, f"the weight took only {sorted(seen)} while playing")
+    check(r["undo_steps"] == steps0, "the animation put an edit on the undo stack")
+    s.click_named("animate/play")  # pause
+    r = s.wait_for("paused", lambda r: r["facts"].get("animate/playing") == 0)
+    shown = r["facts"]["animate/value"]
+    s.click_named("animate/keep")
+    r = s.wait_for("the kept value", lambda r: r["undo_steps"] == steps0 + 1)
+    check("Set weight" in r["undo"], f"the kept value's undo step is {r['undo']!r}")
+    after = s.save()
+    i, j = r["point"]
+    w = by_name(after, r["selected"])["surface"]["weights"][i][j]
+    check(abs(w - shown) < 1e-9, f"kept w = {w}, the slider showed {shown}")
+    s.click_named("animate/stop")
+    s.key("ctrl+z")
+    again = s.save()
+    check(by_name(again, r["selected"])["surface"]["weights"] ==
+          by_name(before, r["selected"])["surface"]["weights"], "Ctrl+Z did not take the kept value back")
+
+
+def grid_and_snap_in_the_curve_designer(s, ctx):
+    """A new curve's point dragged near x = 0 in the curve designer lands exactly on the grid
+    (the axis at 0, the other coordinate a grid value); Alt held: not snapped."""
+    s.menu("Curve", "New curve in xy")
+    canvas = s.rect("curve/canvas")
+    x, y, _, _ = s.rect("curve/point/1")
+    before = s.save()
+    name = objects_of(before, "curve")[-1]["name"]
+    p1 = by_name(before, name)["curve"]["points"][1]
+    # Where x = 0 is on screen: between P0 and P3 (x = -1 and 1).
+    x0 = s.rect("curve/point/0")[0]
+    x3 = s.rect("curve/point/3")[0]
+    target_x = (x0 + x3) / 2 + 1  # one pixel off the axis
+    s.drag(x, y, target_x - x, -17)
+    after = s.save()
+    q = by_name(after, name)["curve"]["points"][1]
+    check(q[0] == 0.0, f"P1 dragged next to the axis: x = {q[0]!r}, not 0")
+    # y lands on a grid value: a short decimal, exactly as typed.
+    check(q[1] == float(repr(round(q[1], 6))), f"P1's y = {q[1]!r} is not a grid value")
+    ctx.shot(s, "grid-and-snap")
+    x, y, _, _ = s.rect("curve/point/2")
+    drag_with(s, ["alt"], x, y, 13, 7)
+    free = s.save()
+    r2 = by_name(free, name)["curve"]["points"][2]
+    check(r2 != by_name(after, name)["curve"]["points"][2], "the Alt drag did not move P2")
+
+
+def detach_question_before_editing_a_vase_point(s, ctx):
+    """Dragging a point of the linked vase asks to detach it first; Detach frees it, and the
+    drag after that moves its point."""
+    s.click_named("objects/vase")
+    r = s.wait_for("the vase selected", lambda r: r["selected"] == "vase")
+    if not r["control_points"]:
+        s.key("c")
+        s.wait_for("control points shown", lambda r: r["control_points"])
+    points = s.rect_names("view3d/vase/")
+    view = s.rect("panel/Drawing")
+    inside = [p for p in points if view[0] + 20 < s.rect(p)[0] < view[0] + view[2] - 20
+              and view[1] + 40 < s.rect(p)[1] < view[1] + view[3] - 80]
+    x, y, _, _ = s.rect(inside[len(inside) // 2])
+    s.drag(x, y, 20, -15)
+    s.rect("detach/yes")
+    ctx.shot(s, "detach-question")
+    s.click_named("detach/yes")
+    r = s.wait_for("detached", lambda r: r["undo"].startswith("Detach"))
+    saved = s.save()
+    check("construction" not in by_name(saved, "vase"), "Detach left the vase its recipe")
+    s.drag(x, y, 20, -15)
+    r = s.wait_for("the point moved", lambda r: r["undo"].startswith("Move"))
+
+
 SCENARIOS = [
     ("window_fits", "fig3b-weight-5.json", window_fits_the_screen),
     ("window_size", "fig3b-weight-5.json", window_size_is_remembered),
@@ -834,6 +1061,12 @@ SCENARIOS = [
     ("rational_picture", "fig3b-weight-5.json", rational_picture_and_homogeneous_view),
     ("triangle_patch", "fig3b-weight-5.json", triangle_patch_new_split_elevate),
     ("figures", "fig3b-weight-5.json", figures_from_the_window),
+    ("revolve_follows_profile", "fig8-revolution.json", revolve_then_drag_the_profile),
+    ("box_select_row_raise", "fig3b-weight-5.json", box_select_a_row_and_raise_it),
+    ("box_select_3d", "fig3b-weight-5.json", box_select_in_the_3d_view),
+    ("weight_animation", "fig3b-weight-5.json", weight_animation_plays_without_editing),
+    ("grid_snap", "fig3b-weight-5.json", grid_and_snap_in_the_curve_designer),
+    ("detach_question", "fig8-revolution.json", detach_question_before_editing_a_vase_point),
 ]
 
 
@@ -855,7 +1088,7 @@ def main():
     ap.add_argument("--scenes", required=True, help="folder of the example scenes")
     ap.add_argument("--screen", default="1024x768")
     ap.add_argument("--xvfb", action="store_true")
-    ap.add_argument("--only", help="run only this scenario")
+    ap.add_argument("--only", help="run only these scenarios (a comma-separated list of names)")
     ap.add_argument("--shots", help="save screenshots into this folder")
     ap.add_argument("--keep", action="store_true")
     ap.add_argument("--presentation", action="store_true",
@@ -889,8 +1122,13 @@ def run_scenarios(args):
     ctx = Context(args.shots, args.screen + ("-presentation" if args.presentation else ""),
                   os.path.abspath(args.scenes))
     passed = failed = 0
+    only = set(args.only.split(",")) if args.only else None
+    unknown = only - {name for name, _, _ in SCENARIOS} if only else set()
+    if unknown:
+        print(f"scenario: no scenario named {', '.join(sorted(unknown))}", file=sys.stderr)
+        return 2
     for name, scene, run in SCENARIOS:
-        if args.only and name != args.only:
+        if only and name not in only:
             continue
         ctx.name = name
         work = tempfile.mkdtemp(prefix=f"isoparm-scenario-{name}-")
