@@ -2,6 +2,7 @@
 #include "core/scene/script.hpp"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <filesystem>
 
@@ -29,7 +30,7 @@ constexpr std::size_t max_steps = 100000;
 // The member that says what a step is (besides "command", which makes it a command).
 constexpr std::string_view step_kinds[] = {
     "undo",   "redo",        "select",     "indicator", "barycentric", "display", "continuity",
-    "camera", "deboor_step", "screenshot", "caption",   "pause",       "expect"};
+    "camera", "deboor_step", "screenshot", "caption",   "pause",       "expect",  "animate"};
 
 std::string kinds_list() {
     std::string out = "command";
@@ -214,6 +215,160 @@ Expected<ExpectStep> read_expect(const json& v, const std::string& at) {
     return e;
 }
 
+// {"weight": {"object": 1, "point": [2, 2]}, "from": 0, "to": 5, "seconds": 4, "repeat":
+// "bounce", "speed": 1, "at": 0.5, "play": true}, {"knot": {"object", "direction", "k"}, ...},
+// {"parameter": {"object", "name"}, ...}, {"indicator": "line", "from": [u, v], "to": [u, v]},
+// {"indicator": "circle", "centre": [u, v], "radius": r}, {"deboor_step": true, "from": 0,
+// "to": 6}, or "stop".
+Expected<AnimateStep> read_animate(const json& v, const std::string& at) {
+    AnimateStep a;
+    if (v.is_string() && v.get<std::string>() == "stop") {
+        a.stop = true;
+        return a;
+    }
+    if (auto st = expect_object(v, at, "animate (or \"stop\")"); !st) return st.error();
+    const char* what[] = {"weight", "knot", "parameter", "indicator", "deboor_step"};
+    std::string_view kind;
+    for (std::string_view k : what)
+        if (find_member(v, k)) {
+            if (!kind.empty())
+                return schema_error("an animation moves one thing: it has both '" +
+                                        std::string(kind) + "' and '" + std::string(k) + "'",
+                                    at);
+            kind = k;
+        }
+    if (kind.empty())
+        return schema_error("an animation names what moves: weight, knot, parameter, indicator or "
+                            "deboor_step",
+                            at);
+    const bool indicator = kind == "indicator";
+    std::vector<std::string_view> allowed{kind, "seconds", "speed", "repeat", "at", "play"};
+    const json* shape = find_member(v, "indicator");
+    const bool circle = indicator && shape->is_string() && shape->get<std::string>() == "circle";
+    if (indicator && !(shape->is_string() && (shape->get<std::string>() == "line" || circle)))
+        return schema_error("indicator is \"line\" or \"circle\"", member_path(at, "indicator"));
+    if (circle) {
+        allowed.insert(allowed.end(), {"centre", "radius"});
+    } else {
+        allowed.insert(allowed.end(), {"from", "to"});
+    }
+    if (auto st = check_members(v, at, "an animate step", allowed); !st) return st.error();
+    doc::AnimationTarget& t = a.target;
+    const std::string kat = member_path(at, kind);
+    auto number = [&](std::string_view name, double& out) -> geom::Status {
+        const json* x = find_member(v, name);
+        if (!x) return geom::Ok{};
+        auto r = read_finite(*x, member_path(at, name), name);
+        if (!r) return r.error();
+        out = *r;
+        return geom::Ok{};
+    };
+    auto uv = [&](std::string_view name, glm::dvec2& out) -> geom::Status {
+        const json* x = find_member(v, name);
+        if (!x) return geom::Ok{};
+        auto r = indicator_from_json(*x, member_path(at, name));
+        if (!r) return r.error();
+        out = *r;
+        return geom::Ok{};
+    };
+    auto object_member = [&](const json& o,
+                             std::initializer_list<std::string_view> members) -> geom::Status {
+        if (auto st = expect_object(o, kat, std::string(kind)); !st) return st;
+        if (auto st = check_members(o, kat, std::string(kind), members); !st) return st;
+        const json* id = find_member(o, "object");
+        if (!id) return missing_member(kat, "object");
+        auto n = read_integer(*id, member_path(kat, "object"), "an object id", 1,
+                              static_cast<std::int64_t>(max_object_id));
+        if (!n) return n.error();
+        t.object = static_cast<std::uint64_t>(*n);
+        return geom::Ok{};
+    };
+    const json& k = v.at(std::string(kind));
+    if (kind == "weight") {
+        t.kind = doc::AnimatedKind::weight;
+        if (auto st = object_member(k, {"object", "point"}); !st) return st.error();
+        const json* point = find_member(k, "point");
+        if (!point) return missing_member(kat, "point");
+        const std::string pat = member_path(kat, "point");
+        if (!point->is_array() || point->empty() || point->size() > 2)
+            return schema_error("point is [i, j] (a surface's or triangle's) or [i] (a curve's)",
+                                pat);
+        for (std::size_t c = 0; c < point->size(); ++c) {
+            auto x = read_integer((*point)[c], pat + "/" + std::to_string(c),
+                                  "a control point index", 0, INT_MAX);
+            if (!x) return x.error();
+            (c == 0 ? t.i : t.j) = static_cast<int>(*x);
+        }
+        t.from = 0;
+        t.to = 5;
+    } else if (kind == "knot") {
+        t.kind = doc::AnimatedKind::knot;
+        if (auto st = object_member(k, {"object", "direction", "k"}); !st) return st.error();
+        if (const json* d = find_member(k, "direction")) {
+            const auto dir = enum_value<geom::Dir>(*d);
+            if (!dir)
+                return schema_error("direction must be u or v", member_path(kat, "direction"));
+            t.dir = *dir;
+        }
+        const json* idx = find_member(k, "k");
+        if (!idx) return missing_member(kat, "k");
+        auto x = read_integer(*idx, member_path(kat, "k"), "a knot index", 0, INT_MAX);
+        if (!x) return x.error();
+        t.k = static_cast<int>(*x);
+        if (!find_member(v, "from")) return missing_member(at, "from");
+        if (!find_member(v, "to")) return missing_member(at, "to");
+    } else if (kind == "parameter") {
+        t.kind = doc::AnimatedKind::implicit_parameter;
+        if (auto st = object_member(k, {"object", "name"}); !st) return st.error();
+        const json* name = find_member(k, "name");
+        if (!name) return missing_member(kat, "name");
+        auto n = read_string(*name, member_path(kat, "name"), "name");
+        if (!n) return n.error();
+        t.parameter = *n;
+        if (!find_member(v, "from")) return missing_member(at, "from");
+        if (!find_member(v, "to")) return missing_member(at, "to");
+    } else if (kind == "indicator") {
+        t.kind = circle ? doc::AnimatedKind::indicator_circle : doc::AnimatedKind::indicator_line;
+        if (auto st = uv("from", t.uv_from); !st) return st.error();
+        if (auto st = uv("to", t.uv_to); !st) return st.error();
+        if (auto st = uv("centre", t.centre); !st) return st.error();
+        if (auto st = number("radius", t.radius); !st) return st.error();
+        if (!(t.radius > 0 && t.radius <= 1))
+            return schema_error("radius is in (0, 1] (the domain square's sides are 1)",
+                                member_path(at, "radius"));
+    } else {
+        t.kind = doc::AnimatedKind::deboor_step;
+        if (auto st = read_true(k, kat, "deboor_step"); !st) return st.error();
+        t.from = 0;
+        t.to = 6;
+    }
+    if (!indicator) {
+        if (auto st = number("from", t.from); !st) return st.error();
+        if (auto st = number("to", t.to); !st) return st.error();
+    }
+    if (auto st = number("seconds", a.seconds); !st) return st.error();
+    if (!(a.seconds > 0 && a.seconds <= 3600))
+        return schema_error("seconds (one pass) is in (0, 3600]", member_path(at, "seconds"));
+    if (auto st = number("speed", a.speed); !st) return st.error();
+    if (!(a.speed > 0 && a.speed <= 100))
+        return schema_error("speed is in (0, 100]", member_path(at, "speed"));
+    if (auto st = number("at", a.at); !st) return st.error();
+    if (a.at < 0 || a.at > 1)
+        return schema_error("at is the phase shown in screenshots, in [0, 1]",
+                            member_path(at, "at"));
+    if (const json* r = find_member(v, "repeat")) {
+        const auto rep = enum_value<doc::Repeat>(*r);
+        if (!rep) return schema_error("repeat is once, loop or bounce", member_path(at, "repeat"));
+        a.repeat = *rep;
+    }
+    if (const json* p = find_member(v, "play")) {
+        auto b = read_bool(*p, member_path(at, "play"));
+        if (!b) return b.error();
+        a.play = *b;
+    }
+    return a;
+}
+
 Expected<Step> read_step(const json& j, const std::string& at) {
     if (auto st = expect_object(j, at, "a step"); !st) return st.error();
     if (find_member(j, "command")) {
@@ -288,6 +443,11 @@ Expected<Step> read_step(const json& j, const std::string& at) {
         auto s = read_screenshot(j, at);
         if (!s) return s.error();
         return step(*s);
+    }
+    if (kind == "animate") {
+        auto a = read_animate(v, kat);
+        if (!a) return a.error();
+        return step(*a);
     }
     if (kind == "caption") {
         auto t = read_string(v, kat, "caption");
@@ -556,6 +716,25 @@ geom::Status run_step(const Step& step, ScriptState& state, const ScriptHooks& h
         if (!dry_run && hooks.caption) hooks.caption(state, step);
     } else if (std::holds_alternative<PauseStep>(a)) {
         if (!dry_run && hooks.pause) hooks.pause(state, step);
+    } else if (const auto* anim = std::get_if<AnimateStep>(&a)) {
+        if (anim->stop) {
+            state.animation.reset();
+        } else {
+            // Checked against the document as it is now; paths as the step writes them.
+            if (auto st = doc::check_target(state.doc, anim->target); !st) {
+                Error e = st.error();
+                const char* kind = anim->target.kind == doc::AnimatedKind::weight ? "/weight"
+                                   : anim->target.kind == doc::AnimatedKind::knot ? "/knot"
+                                   : anim->target.kind == doc::AnimatedKind::implicit_parameter
+                                       ? "/parameter"
+                                       : "";
+                if (e.path == "/parameter") e.path = "/name";
+                if (e.path != "/from" && e.path != "/to" && e.path != "/centre")
+                    e.path = kind + e.path;
+                return at_step(e.under("/animate"));
+            }
+            state.animation = *anim;
+        }
     } else if (const auto* e = std::get_if<ExpectStep>(&a)) {
         for (const std::string& problem : unmet(*e, state.doc))
             result.failed_expects.push_back(step.path + ": " + problem);

@@ -12,6 +12,7 @@
 #include <variant>
 #include <vector>
 
+#include "core/doc/animated.hpp"
 #include "core/doc/command.hpp"
 #include "core/doc/command_spec.hpp"
 #include "core/doc/document.hpp"
@@ -60,6 +61,17 @@ struct CaptionStep {
     std::string text;
 };
 struct PauseStep {};
+// An animated parameter (docs/script-format.md, "animate"): a lesson played in the window runs
+// it on its slider; `isoparm script`'s screenshots after it show the value at phase `at` as a
+// preview. It never edits the document. `stop` ends the animation shown.
+struct AnimateStep {
+    doc::AnimationTarget target;
+    double seconds = 4, speed = 1;
+    doc::Repeat repeat = doc::Repeat::bounce;
+    double at = 0; // the phase in [0, 1] the screenshots show
+    bool play = true;
+    bool stop = false;
+};
 // A check on the document (docs/script-format.md: "expect").
 struct ExpectStep {
     std::optional<std::size_t> objects;
@@ -78,7 +90,7 @@ struct ExpectStep {
 
 using StepAction = std::variant<doc::CommandSpec, UndoStep, RedoStep, SelectStep, IndicatorStep,
                                 DisplayStep, ContinuityStep, CameraStep, DeBoorStep, ScreenshotStep,
-                                CaptionStep, PauseStep, ExpectStep, BarycentricStep>;
+                                CaptionStep, PauseStep, ExpectStep, BarycentricStep, AnimateStep>;
 
 struct Step {
     StepAction action;
@@ -120,6 +132,7 @@ public:
     std::optional<CameraStep> camera;
     int deboor_step = -1;
     std::string caption;
+    std::optional<AnimateStep> animation; // the last animate step, until a stop
 };
 
 struct ScriptHooks {
