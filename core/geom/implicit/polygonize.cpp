@@ -219,6 +219,17 @@ struct Polygonizer {
 
         Layer bottom = planes[c].view(tag_bottom);
         const BoundaryPlane& above = planes[c + 1];
+        // Room for about what the chunk will make, from its boundary planes' vertices: per
+        // slab about one layer's in-plane vertices and 4/3 of that across (seven edge
+        // directions, three in the plane), two triangles per vertex. Growing instead would
+        // copy the arrays at every doubling.
+        const double per_layer = 0.5 * static_cast<double>(planes[c].vertices.positions.size() +
+                                                           above.vertices.positions.size());
+        const auto expected =
+            static_cast<std::size_t>(2.5 * per_layer * (chunk.end_slab - chunk.first_slab));
+        chunk.vertices.positions.reserve(expected);
+        chunk.vertices.normals.reserve(expected);
+        chunk.triangles.reserve(2 * expected);
         int buffer = 0;
         for (int k = chunk.first_slab; k < chunk.end_slab; ++k) {
             if (stop) return;
@@ -558,6 +569,12 @@ Expected<Mesh> polygonize(const Program& f, const PolygonizeOptions& options) {
             pinned.emplace_back(point, static_cast<Index>(offset + id));
         return offset;
     };
+    // Sized once: appended group by group, the arrays would be copied again at every growth.
+    std::size_t vertex_total = 0;
+    for (const BoundaryPlane& bp : pz.planes) vertex_total += bp.vertices.positions.size();
+    for (const Chunk& ch : pz.chunks) vertex_total += ch.vertices.positions.size();
+    mesh.positions.reserve(vertex_total);
+    mesh.normals.reserve(vertex_total);
     std::size_t triangle_count = 0;
     for (std::size_t c = 0; c < pz.chunks.size(); ++c) {
         plane_offset[c] = append(pz.planes[c].vertices);
