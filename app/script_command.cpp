@@ -98,9 +98,25 @@ int run(const ScriptOptions& o) {
         }
     }
 
+    // The pictures are written to --out and compared with --check: one folder for both would
+    // overwrite every golden image with the picture it is then compared with (a match, always).
+    if (!o.check.empty()) {
+        std::error_code same_ec;
+        const bool same = std::filesystem::equivalent(o.out, o.check, same_ec) ||
+                          std::filesystem::weakly_canonical(o.out, same_ec) ==
+                              std::filesystem::weakly_canonical(o.check, same_ec);
+        if (same) {
+            std::cerr << name << "--out '" << o.out << "' is the --check folder '" << o.check
+                      << "': the screenshots would replace the golden images they are compared "
+                         "with; give another --out; nothing was written\n";
+            return 2;
+        }
+    }
+
     // Every step is tried first without writing anything: a step that cannot be carried out
     // stops the script before its first screenshot.
-    {
+    json_io::arm_memory_reserve();
+    try {
         scene::ScriptState trial(script.start);
         const scene::ScriptResult dry = scene::run_script(script, trial, {}, /*dry_run=*/true);
         if (dry.stopped) {
@@ -108,6 +124,10 @@ int run(const ScriptOptions& o) {
                       << "; nothing was written\n";
             return 2;
         }
+    } catch (const std::bad_alloc&) {
+        std::cerr << name << json_io::out_of_memory_message << " (trying '" << o.file
+                  << "'); nothing was written\n";
+        return 1;
     }
 
     std::unique_ptr<ui::HeadlessSession> session;

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "core/doc/patches.hpp"
+#include "core/geom/work_budget.hpp"
 #include "core/json/fields.hpp"
 #include "core/json/input_file.hpp"
 #include "core/json/reader.hpp"
@@ -38,6 +39,29 @@ std::string kinds_list() {
     return out;
 }
 
+// A name is checked byte by byte, as the system will take it: a C string ends at a NUL, so
+// ".bashrc\0.png" would write .bashrc; a separator or ".." would leave the folder; a control
+// character or a leading dot (a hidden file) has no place in a picture's name.
+std::string screenshot_name_problem(const std::string& name) {
+    std::string printable = short_name(name);
+    for (char& c : printable)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+    const std::string shown = "'" + printable + "'";
+    for (std::size_t k = 0; k < name.size(); ++k) {
+        const auto c = static_cast<unsigned char>(name[k]);
+        if (c == 0) return shown + " holds a NUL byte at " + std::to_string(k);
+        if (c < 0x20 || c == 0x7f)
+            return shown + " holds the control character " + std::to_string(c) + " at " +
+                   std::to_string(k);
+        if (c == '/' || c == '\\') return shown + " holds a folder separator";
+    }
+    if (name.size() <= 4 || name.compare(name.size() - 4, 4, ".png") != 0)
+        return shown + " does not end in .png after a name";
+    if (name.front() == '.') return shown + " begins with a dot (a hidden file)";
+    if (name.size() > 200) return shown + " is longer than 200 bytes";
+    return "";
+}
+
 Expected<bool> read_true(const json& v, const std::string& at, std::string_view what) {
     auto b = read_bool(v, at);
     if (!b) return b.error();
@@ -53,12 +77,10 @@ Expected<ScreenshotStep> read_screenshot(const json& j, const std::string& at) {
     ScreenshotStep shot;
     auto name = read_string(j["screenshot"], at + "/screenshot", "the screenshot's file name");
     if (!name) return name.error();
-    const std::filesystem::path p(*name);
-    if (name->empty() || p.has_parent_path() || p.filename() != p || p.extension() != ".png" ||
-        *name == ".png")
+    if (const std::string why = screenshot_name_problem(*name); !why.empty())
         return schema_error("a screenshot is a file name ending in .png, without folders (the "
-                            "folder is --out), got '" +
-                                short_name(*name) + "'",
+                            "folder is --out): " +
+                                why,
                             at + "/screenshot");
     shot.name = *name;
     if (const json* v = find_member(j, "view")) {
@@ -78,6 +100,17 @@ Expected<ScreenshotStep> read_screenshot(const json& j, const std::string& at) {
             if (!side) return side.error();
             (k == 0 ? shot.width : shot.height) = static_cast<int>(*side);
         }
+        // An 8192 x 8192 picture takes about 2.9 GB to render (colour, depth and multisampled
+        // buffers): the area is capped as well as the sides.
+        const double pixels = static_cast<double>(shot.width) * shot.height;
+        if (pixels > max_screenshot_pixels)
+            return make_error(ErrorCode::limit,
+                              "a screenshot of " + std::to_string(shot.width) + "x" +
+                                  std::to_string(shot.height) + " is " +
+                                  geom::with_thousands(pixels) + " pixels, more than " +
+                                  geom::with_thousands(max_screenshot_pixels) +
+                                  " (4096x4096, about 0.7 GB to render)",
+                              at + "/size");
     }
     return shot;
 }
@@ -645,9 +678,21 @@ Expected<Script> script_from_json(const json& j, const std::string& script_dir) 
                           "a script has at most " + std::to_string(max_steps) + " steps, got " +
                               std::to_string(steps->size()),
                           "/steps");
+    double pixels = 0;
     for (std::size_t k = 0; k < steps->size(); ++k) {
         auto step = read_step((*steps)[k], "/steps/" + std::to_string(k));
         if (!step) return step.error();
+        if (const auto* shot = std::get_if<ScreenshotStep>(&step->action)) {
+            // Every screenshot is a render: the script's pictures together have a budget.
+            pixels += static_cast<double>(shot->width) * shot->height;
+            if (pixels > max_script_pixels)
+                return make_error(ErrorCode::limit,
+                                  "the script's screenshots up to this one are " +
+                                      geom::with_thousands(pixels) + " pixels, more than " +
+                                      geom::with_thousands(max_script_pixels) +
+                                      " (about 300 pictures of 1280x800)",
+                                  step->path + "/screenshot");
+        }
         script.steps.push_back(std::move(step).value());
     }
     return script;

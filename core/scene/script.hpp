@@ -23,6 +23,17 @@ namespace isoparm::scene {
 inline constexpr const char* script_format_name = "isoparm-script";
 inline constexpr int script_format_version = 1;
 
+// The screenshots' budget: one picture at most 4096 x 4096 pixels (about 0.7 GB to render with
+// its multisampled buffers), all of a script's together at most 3e8 (about 300 pictures of
+// 1280 x 800), checked when the script is read, before anything runs.
+inline constexpr double max_screenshot_pixels = 4096.0 * 4096.0;
+inline constexpr double max_script_pixels = 3e8;
+
+// Why `name` is not a screenshot's file name ("" when it is one): checked byte by byte (a NUL
+// would end the name the system sees early), no separators or control characters, no leading
+// dot, ending in .png.
+std::string screenshot_name_problem(const std::string& name);
+
 // View steps: they change what is looked at, not the scene's geometry (no undo step).
 struct UndoStep {};
 struct RedoStep {};
