@@ -1013,27 +1013,52 @@ def grid_and_snap_in_the_curve_designer(s, ctx):
 
 
 def detach_question_before_editing_a_vase_point(s, ctx):
-    """Dragging a point of the linked vase asks to detach it first; Detach frees it, and the
-    drag after that moves its point."""
+    """Dragging a point of the linked vase asks to detach it first: Keep it linked changes
+    nothing; Detach frees it, and the drag after that moves its point. Ctrl+Z links it again;
+    Construct > Detach frees it without a question."""
     s.click_named("objects/vase")
     r = s.wait_for("the vase selected", lambda r: r["selected"] == "vase")
     if not r["control_points"]:
         s.key("c")
         s.wait_for("control points shown", lambda r: r["control_points"])
+    before = s.save()
+    check("construction" in by_name(before, "vase"), "fig8's vase is no longer a revolution")
     points = s.rect_names("view3d/vase/")
     view = s.rect("panel/Drawing")
     inside = [p for p in points if view[0] + 20 < s.rect(p)[0] < view[0] + view[2] - 20
               and view[1] + 40 < s.rect(p)[1] < view[1] + view[3] - 80]
+    check(inside, "no control point of the vase lies inside the 3D view")
     x, y, _, _ = s.rect(inside[len(inside) // 2])
+    s.drag(x, y, 20, -15)
+    s.rect("detach/no")
+    s.click_named("detach/no")
+    r = s.wait_for("the question closed", lambda r: "detach/no" not in r["rects"])
+    check(not r["dirty"], "Keep it linked changed the scene")
     s.drag(x, y, 20, -15)
     s.rect("detach/yes")
     ctx.shot(s, "detach-question")
     s.click_named("detach/yes")
     r = s.wait_for("detached", lambda r: r["undo"].startswith("Detach"))
-    saved = s.save()
-    check("construction" not in by_name(saved, "vase"), "Detach left the vase its recipe")
+    detached = s.save()
+    check("construction" not in by_name(detached, "vase"), "Detach left the vase its recipe")
+    check(by_name(detached, "vase")["surface"] == by_name(before, "vase")["surface"],
+          "Detach changed the vase's shape")
     s.drag(x, y, 20, -15)
     r = s.wait_for("the point moved", lambda r: r["undo"].startswith("Move"))
+    i, j = r["point"]
+    moved = s.save()
+    p0 = by_name(before, "vase")["surface"]["points"][i][j]
+    p1 = by_name(moved, "vase")["surface"]["points"][i][j]
+    check(p0 != p1, f"the drag after Detach did not move P{i}{j} ({p0})")
+    # Ctrl+Z twice: the point back, then the link back.
+    s.key("ctrl+z")
+    s.key("ctrl+z")
+    linked = s.save()
+    check(by_name(linked, "vase").get("construction") == by_name(before, "vase")["construction"],
+          "two Ctrl+Z did not link the vase again")
+    s.menu("Construct", "Detach (free the selected object)")
+    r = s.wait_for("Construct > Detach", lambda r: r["undo"].startswith("Detach"))
+    check("construction" not in by_name(s.save(), "vase"), "Construct > Detach left the recipe")
 
 
 SCENARIOS = [

@@ -584,7 +584,8 @@ void transform_slider(AppContext& ctx, int k, float width) {
         ImGui::SetTooltip(k < 3 ? "Drag left or right to move the selected surface along %s"
                                 : "Drag left or right to rotate the selected surface about %s",
                           axis_names[a]);
-    if (ImGui::IsItemActivated() && id != 0) {
+    // A constructed object follows its curves: the slider asks to detach it first.
+    if (ImGui::IsItemActivated() && id != 0 && may_edit_points(ctx, id)) {
         sl.active = k;
         sl.applied = 0;
         ctx.seal();
