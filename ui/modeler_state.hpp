@@ -53,7 +53,9 @@ struct SelectionState {
 
 struct SnapState {
     SnapSettings settings;
-    bool grid_shown = true;  // the grid in the planes, the curve canvas and the 3D view
+    // The grid in the planes, the curve canvas and the 3D view: off until G (Display > Grid),
+    // so the teaching pictures (and their golden renders) stay as they were.
+    bool grid_shown = false;
     bool snapping = true;    // View > Snap (Alt held during a drag turns it off)
     double min_grid_px = 18; // the finest grid lines' spacing, pixels at scale 1
 };

@@ -88,6 +88,7 @@ def window_size_is_remembered(s, ctx):
 def curve_designer_after_new_curve(s, ctx):
     """Curve > New curve in xy, then clicks in the designer's canvas add control points."""
     s.menu("Curve", "New curve in xy")
+    s.key("g")  # the grid shown (snapping works with or without it)
     canvas = s.rect("curve/canvas")
     before = s.save()
     curves = objects_of(before, "curve")
@@ -592,6 +593,7 @@ def multires_tab_drags_a_coarse_point(s, ctx):
     goes to level 1; dragging a coarse point changes the curve in one step that Ctrl+Z takes
     back; Detail x0 smooths it to the sweep, and Ctrl+Z brings the detail back."""
     s.menu("Curve", "New curve in xy")
+    s.key("g")  # the grid shown (snapping works with or without it)
     canvas = s.rect("curve/canvas")
     # A wave back along the top, above the starting S (clicks append after its last point).
     for fx, fy in ((0.8, 0.1), (0.7, 0.3), (0.6, 0.1), (0.5, 0.3), (0.4, 0.1), (0.3, 0.3),
@@ -989,6 +991,7 @@ def grid_and_snap_in_the_curve_designer(s, ctx):
     """A new curve's point dragged near x = 0 in the curve designer lands exactly on the grid
     (the axis at 0, the other coordinate a grid value); Alt held: not snapped."""
     s.menu("Curve", "New curve in xy")
+    s.key("g")  # the grid shown (snapping works with or without it)
     canvas = s.rect("curve/canvas")
     x, y, _, _ = s.rect("curve/point/1")
     before = s.save()
