@@ -524,3 +524,44 @@ TEST(SceneFormatDoc, ExamplesLoad) {
 }
 
 } // namespace
+
+TEST(SceneObjectDisplay, AnObjectsOwnTogglesRoundTripInVersionTwo) {
+    Document doc = sample_document();
+    // A scene without own displays stays version 1, as older builds wrote it.
+    EXPECT_NE(scene_to_text(doc).find("\"version\": 1"), std::string::npos);
+    doc.view.display.control_points = true;
+    doc.view.object_display[doc.objects[0].id] = ObjectDisplay{false, true, true, false};
+    const std::string text = scene_to_text(doc);
+    EXPECT_NE(text.find("\"version\": 2"), std::string::npos);
+    const Document back = round_trip(doc);
+    EXPECT_TRUE(same_document(doc, back));
+    EXPECT_FALSE(display_of(back.view, doc.objects[0].id).control_points);
+    EXPECT_TRUE(display_of(back.view, doc.objects[0].id).point_ids);
+    // The others take the scene's defaults.
+    EXPECT_TRUE(display_of(back.view, doc.objects[1].id).control_points);
+}
+
+TEST(SceneObjectDisplay, VersionOneOrBadMembersAreRefusedWithTheirPath) {
+    const std::string object = R"({"name": "s", "kind": "surface", "display": {"point_ids": true},
+        "surface": {"type": "nurbs", "degree": [1, 1], "knots": [[0, 0, 1, 1], [0, 0, 1, 1]],
+        "points": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]],
+        "weights": [[1, 1], [1, 2]]}})";
+    auto scene = [&](int version, const std::string& o) {
+        return R"({"format": "isoparm-scene", "version": )" + std::to_string(version) +
+               R"(, "objects": [)" + o + "]}";
+    };
+    const auto v1 = scene_from_text(scene(1, object));
+    ASSERT_FALSE(v1);
+    EXPECT_EQ(v1.error().path, "/objects/0/display");
+    const auto v2 = scene_from_text(scene(2, object));
+    ASSERT_TRUE(v2) << v2.error().message;
+    EXPECT_TRUE(display_of(v2->view, v2->objects[0].id).point_ids);
+    std::string bad = object;
+    bad.replace(bad.find("point_ids"), 9, "point_idz");
+    const auto wrong = scene_from_text(scene(2, bad));
+    ASSERT_FALSE(wrong);
+    EXPECT_EQ(wrong.error().path.rfind("/objects/0/display", 0), 0u) << wrong.error().path;
+    const auto newer = scene_from_text(scene(3, object));
+    ASSERT_FALSE(newer);
+    EXPECT_EQ(newer.error().path, "/version");
+}
