@@ -48,6 +48,7 @@ public:
 
 private:
     void layout_panels();
+    void render_view3d(float scale); // the scene into the renderer's texture
     void splitters();
     AppContext ctx_;
     std::function<void()> request_frame_;

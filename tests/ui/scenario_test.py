@@ -17,6 +17,7 @@ import time
 import traceback
 
 from gui_session import Failure, Session, display
+import projector_scenarios
 
 
 def check(cond, message):
@@ -689,7 +690,7 @@ SCENARIOS = [
     ("blossom_tab", "curve-designer.json", blossom_tab_reproduces_points),
     ("rational_picture", "fig3b-weight-5.json", rational_picture_and_homogeneous_view),
     ("triangle_patch", "fig3b-weight-5.json", triangle_patch_new_split_elevate),
-]
+] + projector_scenarios.SCENARIOS  # the stage, four views, labels apart (issue #30)
 
 
 class Context:
@@ -698,6 +699,7 @@ class Context:
         self.shots = shots
         self.screen = screen
         self.name = ""
+        self.sizes = {}  # staged canvases' sizes in pixels, printed at the end
 
     def shot(self, session, what):
         if self.shots:
@@ -744,12 +746,14 @@ def run_scenarios(args):
     ctx = Context(args.shots, args.screen + ("-presentation" if args.presentation else ""),
                   os.path.abspath(args.scenes))
     passed = failed = 0
-    for name, scene, run in SCENARIOS:
-        if args.only and name != args.only:
+    for name, scene, run, *extra in SCENARIOS:
+        if args.only and name != args.only and not (args.only.endswith("*") and
+                                                    name.startswith(args.only[:-1])):
             continue
         ctx.name = name
         work = tempfile.mkdtemp(prefix=f"isoparm-scenario-{name}-")
-        s = Session(args.isoparm, work, os.path.join(args.scenes, scene))
+        s = Session(args.isoparm, work, os.path.join(args.scenes, scene),
+                    extra_args=extra[0] if extra else ())
         ok = True
         started = time.time()
         try:
@@ -785,6 +789,8 @@ def run_scenarios(args):
         else:
             failed += 1
             print(f"scenario {name}: files kept in {work}")
+    for view, (w, h) in sorted(ctx.sizes.items()):
+        print(f"size [{ctx.screen}] {view}: {w}x{h} px")
     print(f"{passed} passed, {failed} failed")
     return 0 if failed == 0 and passed > 0 else 1
 
