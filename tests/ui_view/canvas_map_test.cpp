@@ -90,6 +90,15 @@ TEST(HitTick, KnotHandlesAreGenerousAndIgnoreTheFixedEnds) {
     EXPECT_FALSE(hit_movable_tick(px, movable, 80, r).has_value());
 }
 
+TEST(ThinLabels, KeepsEndsAndDropsCrowdedOnes) {
+    const auto keep = thin_labels({0, 5, 30, 33, 60, 100}, 20);
+    EXPECT_EQ(keep, (std::vector<bool>{true, false, true, false, true, true}));
+    // The last end wins over a kept label too close to it.
+    EXPECT_EQ(thin_labels({0, 50, 95, 100}, 20), (std::vector<bool>{true, true, false, true}));
+    EXPECT_EQ(thin_labels({7}, 20), (std::vector<bool>{true}));
+    EXPECT_TRUE(thin_labels({}, 20).empty());
+}
+
 TEST(PlaneMap, FitsTheBoxAtEqualScaleAndRoundTrips) {
     const Rect canvas{0, 0, 200, 100};
     const PlaneMap m = fit_plane(canvas, {-1, -1}, {3, 1}, 10);

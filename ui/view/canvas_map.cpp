@@ -82,6 +82,26 @@ std::optional<std::size_t> hit_movable_tick(const std::vector<double>& tick_px,
     return best;
 }
 
+std::vector<bool> thin_labels(const std::vector<double>& px, double min_gap) {
+    const std::size_t n = px.size();
+    std::vector<bool> keep(n, false);
+    if (n == 0) return keep;
+    keep[0] = true;
+    std::size_t last = 0;
+    for (std::size_t k = 1; k + 1 < n; ++k) {
+        if (px[k] - px[last] >= min_gap) {
+            keep[k] = true;
+            last = k;
+        }
+    }
+    if (n > 1) {
+        // The far end always shows; drop the previous kept label if it would crowd it.
+        if (last != 0 && px[n - 1] - px[last] < min_gap) keep[last] = false;
+        keep[n - 1] = true;
+    }
+    return keep;
+}
+
 PlaneMap fit_plane(const Rect& canvas, const glm::dvec2& lo, const glm::dvec2& hi,
                    double margin_px) {
     PlaneMap m;

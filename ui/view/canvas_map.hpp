@@ -47,7 +47,11 @@ std::optional<std::size_t> hit_movable_tick(const std::vector<double>& tick_px,
                                             const std::vector<bool>& movable, double pixel_pos,
                                             double radius_px);
 
-// Labels on a canvas: ui/view/label_placer.hpp (the one placer of every view).
+// Labels on a canvas: ui/view/label_placer.hpp (the one placer of every view). A row of tick
+// values can be thinned first: a label is kept when it is at least min_gap pixels from the
+// last kept one; the two ends are always kept (the last end replaces a kept label that would
+// crowd it). Input sorted ascending. (The figures' tick rows use it.)
+std::vector<bool> thin_labels(const std::vector<double>& px, double min_gap);
 
 // A 2D canvas showing world axes (ax, ay) at equal scale: the control-point panel's planes.
 struct PlaneMap {
