@@ -105,10 +105,14 @@ void wrapped_lines(const char* text, float width) {
         const ImVec2 v = ImGui::CalcTextSize(s.data(), s.data() + s.size());
         return glm::vec2(v.x, v.y);
     };
-    ImGui::BeginGroup();
-    for (const std::string& line : wrap_at_spaces(text, std::max(width, 1.f), measure))
-        ImGui::TextUnformatted(line.c_str());
-    ImGui::EndGroup();
+    // One text item of several lines, as ImGui::TextWrapped lays it out (no item spacing
+    // between the lines).
+    std::string joined;
+    for (const std::string& line : wrap_at_spaces(text, std::max(width, 1.f), measure)) {
+        if (!joined.empty()) joined += '\n';
+        joined += line;
+    }
+    ImGui::TextUnformatted(joined.c_str());
 }
 
 } // namespace

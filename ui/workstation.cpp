@@ -319,6 +319,7 @@ void Workstation::frame(unsigned target_framebuffer) {
     // The teaching view the pointer was over last frame (T stages it).
     ui.stage.hovered = ui.stage.hovered_next;
     ui.stage.hovered_next = StageView::none;
+    report_fact("stage/hovered", static_cast<double>(ui.stage.hovered));
     handle_shortcuts(ctx_); // Shift+P and Esc lead back from the 3D view alone
     // The 3D view sets its rectangle when it is drawn this frame; a staged teaching view
     // without it shows no 3D picture (nor is one rendered).

@@ -18,6 +18,7 @@
 #include "ui/view/canvas_map.hpp"
 #include "ui/view/control_net.hpp"
 #include "ui/view/doc_access.hpp"
+#include "ui/view/text_wrap.hpp"
 
 namespace isoparm::ui {
 
@@ -320,16 +321,34 @@ bool plane_canvases(AppContext& ctx) {
     return ctx.doc.selected() && has_valid_point(ctx.doc);
 }
 
+// The panel's first line: the point and its object, its type faint, the stage button at the
+// right end; cut to the column with the whole in the tooltip (a triangle's type is long).
+void header(AppContext& ctx, const std::string& what, const std::string& type) {
+    const float room = ImGui::GetContentRegionAvail().x - ImGui::GetFrameHeight() -
+                       ImGui::GetStyle().ItemSpacing.x * 2;
+    const MeasureText measure = imgui_measure();
+    const std::string first = shortened(what, room, measure);
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted(first.c_str());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s %s", what.c_str(), type.c_str());
+    const float left = room - measure(first).x - ImGui::GetStyle().ItemSpacing.x;
+    const std::string second = shortened(type, left, measure);
+    if (left > measure("(..)").x) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("%s", second.c_str());
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s %s", what.c_str(), type.c_str());
+    }
+    stage_button(ctx, StageView::plane_xy);
+}
+
 } // namespace
 
 // A triangle's point: the planes with its triangular net, its fields and its weight.
 void triangle_point_panel(AppContext& ctx, const doc::Object& obj) {
     const int i = ctx.doc.view.selection.i, j = ctx.doc.view.selection.j;
-    ImGui::AlignTextToFramePadding();
-    ImGui::Text("%s of %s", point_name('P', i, j, &obj).c_str(), obj.name.c_str());
-    ImGui::SameLine();
-    ImGui::TextDisabled("(%s, degree %d)", selected_point(obj, i, j).type, obj.triangle()->degree);
-    stage_button(ctx, StageView::plane_xy);
+    header(ctx, point_name('P', i, j, &obj) + " of " + obj.name,
+           "(" + std::string(selected_point(obj, i, j).type) + ", degree " +
+               std::to_string(obj.triangle()->degree) + ")");
     const std::uint64_t id = obj.id; // obj may not outlive a canvas's command
     if (!plane_canvases(ctx)) return;
     const doc::Object* now = ctx.doc.find(id);
@@ -372,11 +391,8 @@ void draw_control_point_panel(AppContext& ctx) {
         return;
     }
     const int i = ctx.doc.view.selection.i, j = ctx.doc.view.selection.j;
-    ImGui::AlignTextToFramePadding();
-    ImGui::Text("%s of %s", point_name('P', i, j, s->n_u, s->n_v).c_str(), obj->name.c_str());
-    ImGui::SameLine();
-    ImGui::TextDisabled("(%s)", geom::name_of(s->type));
-    stage_button(ctx, StageView::plane_xy);
+    header(ctx, point_name('P', i, j, s->n_u, s->n_v) + " of " + obj->name,
+           "(" + std::string(geom::name_of(s->type)) + ")");
     if (!plane_canvases(ctx)) return;
     obj = ctx.doc.selected();
     if (!obj || !obj->surface() || !has_valid_point(ctx.doc)) return;

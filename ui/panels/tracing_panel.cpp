@@ -23,14 +23,11 @@
 #include "ui/view/knot_drag.hpp"
 #include "ui/view/picture.hpp"
 #include "ui/view/text_wrap.hpp"
+#include "ui/view/tracing_picture.hpp"
 
 namespace isoparm::ui {
 
 namespace {
-
-ImVec2 iv(const glm::dvec2& p) {
-    return {static_cast<float>(p.x), static_cast<float>(p.y)};
-}
 
 // Knot values as ticks and runs show them: the one formatter (geom::format_short).
 std::string short_number(double x) {
@@ -64,24 +61,27 @@ std::string knot_vector_text(const geom::Knots& U) {
     return s;
 }
 
-struct Palette {
-    ImU32 bg, border, grid, tick, text, mult, indicator, cross, current;
-};
-
-Palette palette(const AppContext& ctx) {
+// The tracing square's colours in the window's theme (the dark one, or presentation's light).
+TracingColors tracing_colors(const AppContext& ctx) {
     const doc::Rgba& ic = ctx.doc.colors.indicator;
     const doc::Rgba& kc = ctx.doc.colors.knot_curves;
     const bool light = ctx.ui.presentation;
-    Palette p;
-    p.bg = light ? IM_COL32(250, 250, 250, 255) : IM_COL32(28, 30, 36, 255);
-    p.border = light ? IM_COL32(0, 0, 0, 255) : IM_COL32(170, 175, 190, 255);
+    TracingColors p;
+    p.background = light ? rgba8(250, 250, 250) : rgba8(28, 30, 36);
+    p.border = light ? rgba8(0, 0, 0) : rgba8(170, 175, 190);
     p.grid = ImGui::ColorConvertFloat4ToU32(ImVec4(kc.r, kc.g, kc.b, 0.55f));
     p.tick = ImGui::ColorConvertFloat4ToU32(ImVec4(kc.r, kc.g, kc.b, 1));
     p.text = ImGui::GetColorU32(ImGuiCol_Text);
-    p.mult = light ? IM_COL32(170, 60, 0, 255) : IM_COL32(255, 190, 90, 255);
+    p.faint = ImGui::GetColorU32(ImGuiCol_TextDisabled);
+    p.multiplicity = light ? rgba8(170, 60, 0) : rgba8(255, 190, 90);
     p.indicator = ImGui::ColorConvertFloat4ToU32(ImVec4(ic.r, ic.g, ic.b, 1));
     p.cross = ImGui::ColorConvertFloat4ToU32(ImVec4(ic.r, ic.g, ic.b, 0.45f));
-    p.current = light ? IM_COL32(255, 236, 200, 255) : IM_COL32(52, 56, 70, 255);
+    p.current = light ? rgba8(255, 236, 200) : rgba8(52, 56, 70);
+    p.negative = light ? rgba8(230, 60, 60, 70) : rgba8(230, 70, 70, 80);
+    p.zero = light ? rgba8(200, 0, 0) : rgba8(255, 90, 90);
+    p.weight = ImGui::GetColorU32(ImGuiCol_Text);
+    p.weight_warning = light ? rgba8(190, 0, 0) : rgba8(255, 110, 110);
+    p.weight_plate = light ? rgba8(255, 255, 255, 200) : rgba8(20, 22, 28, 190);
     return p;
 }
 
@@ -204,62 +204,6 @@ void continuity_controls(AppContext& ctx, const doc::Object& obj) {
     }
 }
 
-ImVec2 param_pixel(const Rect& sq, const geom::ParamRect& dom, double u, double v) {
-    return iv(domain_to_pixel(sq, {normalize_param(dom.u, u), normalize_param(dom.v, v)}));
-}
-
-Rgba8 u32(ImU32 c) {
-    return c;
-}
-
-// The rational picture over the current surface's part of the square: where w(u, v) < 0 a red
-// tint, and its zero set (where the surface goes to infinity) as a strong line.
-void draw_denominator(AppContext& ctx, const geom::Surface& s, const Rect& sq,
-                      const geom::ParamRect& dom, Picture& pic) {
-    const float k = ctx.ui.scale();
-    const bool light = ctx.ui.presentation;
-    auto px = [&](double u, double v) { return gv2(param_pixel(sq, dom, u, v)); };
-    const geom::ParamRect own = geom::domain(s);
-    DenominatorView& view = ctx.ui.denominator;
-    view.update(s);
-    const int n = DenominatorView::sign_cells;
-    const Rgba8 negative = light ? rgba8(230, 60, 60, 70) : rgba8(230, 70, 70, 80);
-    const Rgba8 zero = light ? rgba8(200, 0, 0) : rgba8(255, 90, 90);
-    const double du = (own.u.hi - own.u.lo) / n, dv = (own.v.hi - own.v.lo) / n;
-    for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j)
-            if (view.signs()[static_cast<std::size_t>(i) * n + j] < 0)
-                pic.box(px(own.u.lo + i * du, own.v.lo + (j + 1) * dv),
-                        px(own.u.lo + (i + 1) * du, own.v.lo + j * dv), negative);
-    for (const geom::ParamSegment& seg : view.zero_set())
-        pic.line(px(seg.a.x, seg.a.y), px(seg.b.x, seg.b.y), zero, 2.5f * k);
-    report_fact("tracing/zero_set_segments", static_cast<double>(view.zero_set().size()));
-}
-
-// Each weight as a label at its control point's Greville point (u_i*, v_j*), where that point
-// pulls the surface most; weights other than 1 first (they are what the lesson is about), the
-// rest where the placer finds room (the others are counted in its "+n").
-void weight_labels(AppContext& ctx, const geom::Surface& s, const Rect& sq,
-                   const geom::ParamRect& dom, Picture& pic) {
-    const bool light = ctx.ui.presentation;
-    const Rgba8 text = u32(ImGui::GetColorU32(ImGuiCol_Text));
-    const Rgba8 warn = light ? rgba8(190, 0, 0) : rgba8(255, 110, 110);
-    const Rgba8 back = light ? rgba8(255, 255, 255, 200) : rgba8(20, 22, 28, 190);
-    const std::size_t first = pic.labels.size();
-    for (int i = 0; i < s.n_u; ++i) {
-        const double u = geom::greville_abscissa(s.knots_u, s.degree_u, i);
-        for (int j = 0; j < s.n_v; ++j) {
-            const double w = s.weight(i, j);
-            const double v = geom::greville_abscissa(s.knots_v, s.degree_v, j);
-            LabelRequest& r = pic.label(gv2(param_pixel(sq, dom, u, v)), short_number(w),
-                                        w <= 0 ? warn : text, w != 1 ? 20 : 5);
-            r.plate = back;
-            r.tooltip = point_name('w', i, j, s.n_u, s.n_v) + " = " + geom::format_number(w);
-        }
-    }
-    report_fact("tracing/weight_labels", static_cast<double>(pic.labels.size() - first));
-}
-
 // Under the square for rational types: the denominator picture and the weight labels.
 void rational_toggles(AppContext& ctx) {
     ImGui::Checkbox("Denominator w", &ctx.ui.show_denominator);
@@ -379,10 +323,6 @@ void draw_tracing_panel(AppContext& ctx) {
     }
     const ImVec2 cur = ImGui::GetCursorScreenPos();
     const Rect canvas{cur.x + label_w, cur.y + 6 * k, side, side};
-    auto to_square = [&](double u, double v) {
-        return glm::dvec2{normalize_param(dom.u, u), normalize_param(dom.v, v)};
-    };
-
     // The square is one canvas: press anywhere to move the indicator there, then drag. On the
     // stage the wheel zooms into the domain and a right-drag pans (F fits).
     ImGui::SetCursorScreenPos(ImVec2(canvas.x, canvas.y));
@@ -396,125 +336,37 @@ void draw_tracing_panel(AppContext& ctx) {
     }
     ctx.ui.indicator_drag = ImGui::IsItemActive();
 
-    const Palette pal = palette(ctx);
-    Picture pic;
-    pic.view = "tracing";
-    pic.frame = {cur.x, cur.y, label_w + side + 6 * k, side + 6 * k + label_h};
-    pic.style.offset = 4 * k;
-    const ImVec2 a(canvas.x, canvas.y), b(canvas.x + canvas.w, canvas.y + canvas.h);
-    pic.box(gv2(a), gv2(b), pal.bg);
-    pic.begin_clip(canvas);
-
-    // The other subpatches, and the current one's part of the square.
-    if (!patches.empty()) {
-        for (const doc::Object* p : patches) {
-            const geom::ParamRect r = geom::domain(*p->surface());
-            const glm::vec2 lo = domain_to_pixel(sq, to_square(r.u.lo, r.v.hi));
-            const glm::vec2 hi = domain_to_pixel(sq, to_square(r.u.hi, r.v.lo));
-            if (p == obj) pic.box(lo, hi, pal.current);
-            pic.box(lo, hi, 0, pal.border, 2.5f * k);
-            pic.fixed_label({lo.x + 3 * k, lo.y + 2 * k}, p->name, pal.text, LabelAlign::top_left,
-                            40)
-                .tooltip = p->name;
-        }
+    // The drawing (ui/view/tracing_picture: the same Picture a figure of the view draws).
+    TracingInput in;
+    in.canvas = canvas;
+    in.square = sq;
+    in.label_w = label_w;
+    in.label_h = label_h;
+    in.scale = k;
+    in.line_height = ImGui::GetTextLineHeight();
+    in.colors = tracing_colors(ctx);
+    in.weights = rational && ctx.ui.show_weights;
+    if (rational && ctx.ui.show_denominator) {
+        ctx.ui.denominator.update(*s);
+        in.denominator = &ctx.ui.denominator;
+        report_fact("tracing/zero_set_segments",
+                    static_cast<double>(ctx.ui.denominator.zero_set().size()));
     }
-
-    // Knot lines across the current patch (where the knot curves run) and ticks with labels.
-    const geom::ParamRect own = geom::domain(*s);
-    const std::vector<KnotTick> tu = knot_ticks(s->knots_u, s->degree_u, s->n_u);
-    const std::vector<KnotTick> tv = knot_ticks(s->knots_v, s->degree_v, s->n_v);
-    const float tick = 7 * k;
-    std::vector<double> px_u, px_v;
-    for (const KnotTick& t : tu) px_u.push_back(sq.x + normalize_param(dom.u, t.value) * sq.w);
-    for (const KnotTick& t : tv)
-        px_v.push_back(sq.y + (1.0 - normalize_param(dom.v, t.value)) * sq.h);
-    const float own_top = static_cast<float>(domain_to_pixel(sq, to_square(own.u.lo, own.v.hi)).y);
-    const float own_bottom =
-        static_cast<float>(domain_to_pixel(sq, to_square(own.u.lo, own.v.lo)).y);
-    const float own_left = static_cast<float>(domain_to_pixel(sq, to_square(own.u.lo, own.v.lo)).x);
-    const float own_right =
-        static_cast<float>(domain_to_pixel(sq, to_square(own.u.hi, own.v.lo)).x);
     const KnotDrag& kd = ctx.ui.knot_drag;
-    auto held = [&](geom::Dir dir, const KnotTick& t) {
-        return kd.active && kd.object == obj->id && kd.dir == dir && kd.first == t.first_index;
-    };
-    // Ticks and their values at the visible square's edges; the domain's ends and a held knot
-    // matter most, so the placer drops an interior value that would merge with them.
-    auto tick_priority = [](const std::vector<KnotTick>& ts, std::size_t n, bool h) {
-        return h ? 200 : (n == 0 || n + 1 == ts.size()) ? 150 : 100;
-    };
-    for (std::size_t n = 0; n < tu.size(); ++n) {
-        const float x = static_cast<float>(px_u[n]);
-        const float w = (1.0f + static_cast<float>(tu[n].multiplicity - 1) * 1.2f) * k;
-        if (tu[n].interior) pic.line({x, own_top}, {x, own_bottom}, pal.grid, w);
+    if (kd.active && kd.object == obj->id) in.held = std::pair{kd.dir, kd.first};
+    const TracingPicture drawn = tracing_picture(ctx.doc, *obj, in);
+    if (in.weights) {
+        int weights = 0;
+        for (const LabelRequest& r : drawn.picture.labels)
+            weights += r.priority == 20 || r.priority == 5;
+        report_fact("tracing/weight_labels", weights);
     }
-    for (std::size_t n = 0; n < tv.size(); ++n) {
-        const float y = static_cast<float>(px_v[n]);
-        const float w = (1.0f + static_cast<float>(tv[n].multiplicity - 1) * 1.2f) * k;
-        if (tv[n].interior) pic.line({own_left, y}, {own_right, y}, pal.grid, w);
-    }
-    pic.end_clip();
-    const float lh = ImGui::GetTextLineHeight();
-    for (std::size_t n = 0; n < tu.size(); ++n) {
-        const float x = static_cast<float>(px_u[n]);
-        if (x < canvas.x - 0.5f || x > canvas.x + canvas.w + 0.5f) continue;
-        const bool h = held(geom::Dir::u, tu[n]);
-        pic.line({x, b.y}, {x, b.y + tick}, h ? pal.indicator : pal.tick, (h ? 4 : 2) * k);
-        const int pr = tick_priority(tu, n, h);
-        pic.fixed_label({x, b.y + tick + 1}, short_number(tu[n].value), pal.text,
-                        LabelAlign::top_center, pr)
-            .tooltip = "u knot " + geom::format_number(tu[n].value);
-        // Interior multiplicities (a clamped end's p + 1 says nothing new; the knot vector under
-        // the square lists it).
-        if (tu[n].multiplicity > 1 && (tu[n].interior || tu[n].multiplicity != s->degree_u + 1))
-            pic.fixed_label({x, b.y + tick + 5 + lh}, "x" + std::to_string(tu[n].multiplicity),
-                            pal.mult, LabelAlign::top_center, pr - 1);
-    }
-    for (std::size_t n = 0; n < tv.size(); ++n) {
-        const float y = static_cast<float>(px_v[n]);
-        if (y < canvas.y - 0.5f || y > canvas.y + canvas.h + 0.5f) continue;
-        const bool h = held(geom::Dir::v, tv[n]);
-        pic.line({a.x - tick, y}, {a.x, y}, h ? pal.indicator : pal.tick, (h ? 4 : 2) * k);
-        const bool mult =
-            tv[n].multiplicity > 1 && (tv[n].interior || tv[n].multiplicity != s->degree_v + 1);
-        const int pr = tick_priority(tv, n, h);
-        pic.fixed_label({a.x - tick - 3 * k, mult ? y : y}, short_number(tv[n].value), pal.text,
-                        mult ? LabelAlign::bottom_right : LabelAlign::center_right, pr)
-            .tooltip = "v knot " + geom::format_number(tv[n].value);
-        if (mult)
-            pic.fixed_label({a.x - tick - 3 * k, y}, "x" + std::to_string(tv[n].multiplicity),
-                            pal.mult, LabelAlign::top_right, pr - 1);
-    }
-    pic.box(gv2(a), gv2(b), 0, pal.border, 1.5f * k);
-    // The ends of the shared domain where the current patch does not reach them.
-    const Rgba8 faint = u32(ImGui::GetColorU32(ImGuiCol_TextDisabled));
-    if (own.u.lo > dom.u.lo)
-        pic.fixed_label({static_cast<float>(sq.x), b.y + tick + 1}, short_number(dom.u.lo), faint,
-                        LabelAlign::top_center, 90);
-    if (own.u.hi < dom.u.hi)
-        pic.fixed_label({static_cast<float>(sq.x + sq.w), b.y + tick + 1}, short_number(dom.u.hi),
-                        faint, LabelAlign::top_center, 90);
-    if (own.v.lo > dom.v.lo)
-        pic.fixed_label({a.x - tick - 3 * k, static_cast<float>(sq.y + sq.h)},
-                        short_number(dom.v.lo), faint, LabelAlign::center_right, 90);
-    if (own.v.hi < dom.v.hi)
-        pic.fixed_label({a.x - tick - 3 * k, static_cast<float>(sq.y)}, short_number(dom.v.hi),
-                        faint, LabelAlign::center_right, 90);
-    pic.fixed_label({b.x - 4 * k, b.y - 2 * k}, "u", pal.text, LabelAlign::bottom_right, 120);
-    pic.fixed_label({a.x + 4 * k, a.y + 2 * k}, "v", pal.text, LabelAlign::top_left, 120);
-
-    pic.begin_clip(canvas);
-    if (rational && ctx.ui.show_denominator) draw_denominator(ctx, *s, sq, dom, pic);
-    // The indicator with its two isoparametric lines.
-    const glm::vec2 ip = domain_to_pixel(sq, ctx.doc.view.indicator);
-    pic.line({ip.x, a.y}, {ip.x, b.y}, pal.cross, 1.5f * k);
-    pic.line({a.x, ip.y}, {b.x, ip.y}, pal.cross, 1.5f * k);
-    pic.disk(ip, 7 * k, pal.indicator, rgba8(0, 0, 0), 1.5f * k);
-    pic.end_clip();
-    if (canvas.contains(ip.x, ip.y))
-        pic.keep_clear.push_back({ip.x - 7 * k, ip.y - 7 * k, 14 * k, 14 * k});
-    if (rational && ctx.ui.show_weights) weight_labels(ctx, *s, sq, dom, pic);
-    draw_picture(pic);
+    draw_picture(drawn.picture);
+    const std::vector<KnotTick>& tu = drawn.ticks_u;
+    const std::vector<KnotTick>& tv = drawn.ticks_v;
+    const std::vector<double>& px_u = drawn.px_u;
+    const std::vector<double>& px_v = drawn.px_v;
+    const ImVec2 a(canvas.x, canvas.y), b(canvas.x + canvas.w, canvas.y + canvas.h);
 
     // Knot ticks are handles (after the drawing: their buttons sit beside the square).
     knot_strip(ctx, *obj, *s, geom::Dir::u, tu, px_u, {a.x - 4 * k, b.y, canvas.w + 8 * k, label_h},
