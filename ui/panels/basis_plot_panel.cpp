@@ -12,13 +12,13 @@
 #include "core/geom/knots.hpp"
 #include "core/geom/status.hpp"
 #include "core/geom/tessellate.hpp"
-#include "ui/panels/heat_color.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/panels/picture_draw.hpp"
 #include "ui/panels/stage_controls.hpp"
 #include "ui/panels/triangle_panels.hpp"
 #include "ui/theme.hpp"
 #include "ui/ui_report.hpp"
+#include "ui/view/basis_picture.hpp"
 #include "ui/view/canvas_map.hpp"
 #include "ui/view/doc_access.hpp"
 #include "ui/view/mesh_data.hpp"
@@ -28,7 +28,6 @@ namespace isoparm::ui {
 namespace {
 
 constexpr int heat_resolution = 40;
-constexpr int curve_samples = 161;
 
 // Recomputes the heat map only when the surface or the point changed.
 const HeatMapCache& heat_map(AppContext& ctx, const geom::Surface& s, int i, int j) {
@@ -77,40 +76,28 @@ void heat_canvas(AppContext& ctx, const doc::Object& obj, const geom::Surface& s
         ctx.doc.view.indicator =
             indicator_from_own_domain(ctx.doc, obj, pixel_to_domain(sq, {m.x, m.y}));
     }
-    Picture pic;
-    pic.view = "basis_heat";
-    pic.frame = canvas;
-    pic.border = ImGui::GetColorU32(ImGuiCol_Border);
-    pic.border_width = k;
-    const int r = h.resolution;
-    const float cw = sq.w / static_cast<float>(r), ch = sq.h / static_cast<float>(r);
-    for (int row = 0; row < r; ++row)
-        for (int c = 0; c < r; ++c) {
-            const float v = h.values[static_cast<std::size_t>(row * r + c)];
-            const glm::vec2 a(sq.x + static_cast<float>(c) * cw,
-                              sq.y + static_cast<float>(row) * ch);
-            const ImU32 col = std::isnan(v) ? IM_COL32(90, 90, 90, 255)
-                                            : heat_color(h.max_value > 0 ? v / h.max_value : 0.f);
-            pic.box(a, {a.x + cw + 0.5f, a.y + ch + 0.5f}, col);
-        }
+    // The drawing (ui/view/basis_picture: the same Picture a figure of the view draws).
+    HeatInput in;
+    in.canvas = canvas;
+    in.square = sq;
+    in.values = &h.values;
+    in.resolution = h.resolution;
+    in.max_value = h.max_value;
     // The support [u_i, u_{i+p+1}] x [v_j, v_{j+q+1}], clipped to the domain.
     const geom::Interval du = geom::domain(s, geom::Dir::u), dv = geom::domain(s, geom::Dir::v);
     auto clamp01 = [](double x) { return std::clamp(x, 0.0, 1.0); };
-    const double u0 = clamp01(normalize_param(du, s.knots_u[i]));
-    const double u1 = clamp01(normalize_param(du, s.knots_u[i + s.degree_u + 1]));
-    const double v0 = clamp01(normalize_param(dv, s.knots_v[j]));
-    const double v1 = clamp01(normalize_param(dv, s.knots_v[j + s.degree_v + 1]));
-    pic.box(domain_to_pixel(sq, {u0, v1}), domain_to_pixel(sq, {u1, v0}), 0,
-            rgba8(255, 255, 255, 230), 1.5f * k);
-    // The indicator: the map shows this patch alone, so the indicator in its own domain.
+    in.u0 = clamp01(normalize_param(du, s.knots_u[i]));
+    in.u1 = clamp01(normalize_param(du, s.knots_u[i + s.degree_u + 1]));
+    in.v0 = clamp01(normalize_param(dv, s.knots_v[j]));
+    in.v1 = clamp01(normalize_param(dv, s.knots_v[j + s.degree_v + 1]));
+    // The map shows this patch alone: the indicator in its own domain.
+    in.at = indicator_in_own_domain(ctx.doc, obj);
+    in.name = point_name('R', i, j, s.n_u, s.n_v);
+    in.scale = k;
+    in.border = ImGui::GetColorU32(ImGuiCol_Border);
     const doc::Rgba& ic = ctx.doc.colors.indicator;
-    const glm::vec2 p = domain_to_pixel(sq, indicator_in_own_domain(ctx.doc, obj));
-    pic.disk(p, 5 * k, ImGui::ColorConvertFloat4ToU32(ImVec4(ic.r, ic.g, ic.b, 1)), rgba8(0, 0, 0),
-             1.2f * k);
-    pic.fixed_label({canvas.x + 3 * k, canvas.y + 2 * k}, point_name('R', i, j, s.n_u, s.n_v),
-                    rgba8(255, 255, 255), LabelAlign::top_left)
-        .plate = rgba8(0, 0, 0, 140);
-    draw_picture(pic);
+    in.indicator = ImGui::ColorConvertFloat4ToU32(ImVec4(ic.r, ic.g, ic.b, 1));
+    draw_picture(heat_picture(in));
 }
 
 // N_k(t) of every k over the domain (faint) with N_index highlighted, the parameter marked.
@@ -122,45 +109,17 @@ void basis_curves(AppContext& ctx, const geom::Knots& U, int p, int n, int index
     ImGui::InvisibleButton(("##" + view).c_str(), ImVec2(box.w, box.h));
     report_item("basis/" + view);
     const CanvasView cv = canvas_view(ctx, "basis/" + view, box);
-    Picture pic;
-    pic.view = "basis_" + view;
-    pic.frame = box;
-    pic.background = light ? rgba8(250, 250, 250) : rgba8(26, 28, 34);
-    pic.border = ImGui::GetColorU32(ImGuiCol_Border);
-    pic.border_width = k;
-    const geom::Interval d = geom::Interval{U[p], U[n]};
-    const std::vector<double> ts = geom::uniform_params(d.lo, d.hi, curve_samples);
-    std::vector<std::vector<double>> values; // values[sample][k]
-    values.reserve(ts.size());
-    for (double x : ts) values.push_back(geom::all_basis(U, p, n, x)[0]);
-    const float line_h = ImGui::GetTextLineHeight();
-    const float top = box.y + 6 * k + line_h, h = box.h - 10 * k - line_h;
-    auto pt = [&](std::size_t sample, double y) {
-        const glm::dvec2 fitted(box.x + box.w * static_cast<double>(sample) /
-                                            static_cast<double>(ts.size() - 1),
-                                top + h * (1.0 - y));
-        return glm::vec2(view_pixel(cv, box, fitted));
-    };
-    const Rgba8 faint = light ? rgba8(160, 160, 160) : rgba8(110, 115, 135);
+    PlotColors c;
+    c.background = light ? rgba8(250, 250, 250) : rgba8(26, 28, 34);
+    c.border = ImGui::GetColorU32(ImGuiCol_Border);
+    c.faint = light ? rgba8(160, 160, 160) : rgba8(110, 115, 135);
     const doc::Rgba& sc = ctx.doc.colors.selected_point;
-    const Rgba8 strong = ImGui::ColorConvertFloat4ToU32(ImVec4(sc.r, sc.g, sc.b, 1));
-    auto curve = [&](int f, Rgba8 color, float width) {
-        std::vector<glm::vec2> line(ts.size());
-        for (std::size_t s = 0; s < ts.size(); ++s)
-            line[s] = pt(s, values[s][static_cast<std::size_t>(f)]);
-        pic.polyline(std::move(line), color, width);
-    };
-    for (int f = 0; f < n; ++f)
-        if (f != index) curve(f, faint, 1 * k);
-    if (index >= 0) curve(index, strong, 2.5f * k);
+    c.strong = ImGui::ColorConvertFloat4ToU32(ImVec4(sc.r, sc.g, sc.b, 1));
     const doc::Rgba& ic = ctx.doc.colors.indicator;
-    const float x =
-        static_cast<float>(view_pixel(cv, box, {box.x + box.w * normalize_param(d, t), 0}).x);
-    pic.line({x, box.y}, {x, box.y + box.h},
-             ImGui::ColorConvertFloat4ToU32(ImVec4(ic.r, ic.g, ic.b, 0.9f)), 1.5f * k);
-    pic.fixed_label({box.x + 4 * k, box.y + 2 * k}, name, ImGui::GetColorU32(ImGuiCol_TextDisabled),
-                    LabelAlign::top_left);
-    draw_picture(pic);
+    c.parameter = ImGui::ColorConvertFloat4ToU32(ImVec4(ic.r, ic.g, ic.b, 0.9f));
+    c.title = ImGui::GetColorU32(ImGuiCol_TextDisabled);
+    draw_picture(basis_curves_picture(U, p, n, index, t, name, "basis_" + view, box, cv, k,
+                                      ImGui::GetTextLineHeight(), c));
 }
 
 } // namespace
