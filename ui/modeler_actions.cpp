@@ -178,7 +178,7 @@ glm::dvec3 selection_pivot(const AppContext& ctx) {
     return doc::centroid(o->shape, st.points.points);
 }
 
-std::string selection_summary(const AppContext& ctx) {
+std::string points_selection_summary(const AppContext& ctx) {
     const PointSelection& s = ctx.ui.modeler.selection.points;
     if (s.size() < 2 || !ctx.doc.find(s.object)) return {};
     const glm::dvec3 c = doc::centroid(ctx.doc.find(s.object)->shape, s.points);

@@ -53,7 +53,7 @@ void select_points(AppContext& ctx, std::uint64_t id, const std::vector<PointInd
 // The selection's pivot: its centroid or the chosen point.
 glm::dvec3 selection_pivot(const AppContext& ctx);
 // "5 points selected, centroid (0.2, 0, 1.5)" (empty for one point or none).
-std::string selection_summary(const AppContext& ctx);
+std::string points_selection_summary(const AppContext& ctx);
 
 // The command that moves `points` of object id to `positions` (one move_points; with symmetric
 // editing on, the mirror partners too). A drag's commands merge into one undo step.

@@ -7,6 +7,7 @@
 #include "core/doc/associative.hpp"
 #include "core/doc/commands_common.hpp"
 #include "core/doc/curve_constructions.hpp"
+#include "core/doc/placement.hpp"
 
 namespace isoparm::doc {
 
@@ -42,7 +43,8 @@ public:
             auto built = build_construction(doc, recipe_);
             if (!built) return at_construction(built.error());
             Object o = std::move(built->object);
-            if (!name_.empty()) o.name = name_;
+            // A rebuild of the same recipe gets a name of its own (doc::unique_name).
+            o.name = name_.empty() ? unique_name(doc, o.name) : name_;
             o.construction = recipe_;
             note_ = std::move(built->note);
             made_ = std::move(o);

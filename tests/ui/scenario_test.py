@@ -17,6 +17,7 @@ import time
 import traceback
 
 from gui_session import Failure, Session, display
+import projector_scenarios
 
 
 def check(cond, message):
@@ -988,8 +989,8 @@ def weight_animation_plays_without_editing(s, ctx):
 
 
 def grid_and_snap_in_the_curve_designer(s, ctx):
-    """A new curve's point dragged near x = 0 in the curve designer lands exactly on the grid
-    (the axis at 0, the other coordinate a grid value); Alt held: not snapped."""
+    """A new curve's point dragged next to x = 0 (or next to another point's x) in the curve
+    designer lands exactly there, its other coordinate on a grid value; Alt held: not snapped."""
     s.menu("Curve", "New curve in xy")
     s.key("g")  # the grid shown (snapping works with or without it)
     canvas = s.rect("curve/canvas")
@@ -997,14 +998,22 @@ def grid_and_snap_in_the_curve_designer(s, ctx):
     before = s.save()
     name = objects_of(before, "curve")[-1]["name"]
     p1 = by_name(before, name)["curve"]["points"][1]
-    # Where x = 0 is on screen: between P0 and P3 (x = -1 and 1).
+    # Screen x of a world x, from P0 and P3 (a new curve is placed beside the scene, so the
+    # axis x = 0 may be off the canvas: then P1 goes next to P0's x and snaps onto it).
+    pts = by_name(before, name)["curve"]["points"]
     x0 = s.rect("curve/point/0")[0]
     x3 = s.rect("curve/point/3")[0]
-    target_x = (x0 + x3) / 2 + 1  # one pixel off the axis
+
+    def screen_x(wx):
+        return x0 + (wx - pts[0][0]) * (x3 - x0) / (pts[3][0] - pts[0][0])
+
+    axis_in_view = canvas[0] + 10 < screen_x(0.0) < canvas[0] + canvas[2] - 10
+    want_x = 0.0 if axis_in_view else pts[0][0]
+    target_x = screen_x(want_x) + 1  # one pixel off
     s.drag(x, y, target_x - x, -17)
     after = s.save()
     q = by_name(after, name)["curve"]["points"][1]
-    check(q[0] == 0.0, f"P1 dragged next to the axis: x = {q[0]!r}, not 0")
+    check(q[0] == want_x, f"P1 dragged one pixel from x = {want_x!r}: x = {q[0]!r}")
     # y lands on a grid value: a short decimal, exactly as typed.
     check(q[1] == float(repr(round(q[1], 6))), f"P1's y = {q[1]!r} is not a grid value")
     ctx.shot(s, "grid-and-snap")
@@ -1095,7 +1104,7 @@ SCENARIOS = [
     ("weight_animation", "fig3b-weight-5.json", weight_animation_plays_without_editing),
     ("grid_snap", "fig3b-weight-5.json", grid_and_snap_in_the_curve_designer),
     ("detach_question", "fig8-revolution.json", detach_question_before_editing_a_vase_point),
-]
+] + projector_scenarios.SCENARIOS  # the stage, four views, labels apart (issue #30)
 
 
 class Context:
@@ -1104,6 +1113,7 @@ class Context:
         self.shots = shots
         self.screen = screen
         self.name = ""
+        self.sizes = {}  # staged canvases' sizes in pixels, printed at the end
 
     def shot(self, session, what):
         if self.shots:
@@ -1150,17 +1160,24 @@ def run_scenarios(args):
     ctx = Context(args.shots, args.screen + ("-presentation" if args.presentation else ""),
                   os.path.abspath(args.scenes))
     passed = failed = 0
-    only = set(args.only.split(",")) if args.only else None
-    unknown = only - {name for name, _, _ in SCENARIOS} if only else set()
+    # --only: a comma-separated list of names; a name ending in * takes every scenario it starts.
+    only = args.only.split(",") if args.only else []
+
+    def chosen(name):
+        return any(name == o or (o.endswith("*") and name.startswith(o[:-1])) for o in only)
+
+    unknown = [o for o in only if not any(n == o or (o.endswith("*") and n.startswith(o[:-1]))
+                                          for n, *_ in SCENARIOS)]
     if unknown:
-        print(f"scenario: no scenario named {', '.join(sorted(unknown))}", file=sys.stderr)
+        print(f"scenario: no scenario named {', '.join(unknown)}", file=sys.stderr)
         return 2
-    for name, scene, run in SCENARIOS:
-        if only and name not in only:
+    for name, scene, run, *extra in SCENARIOS:
+        if only and not chosen(name):
             continue
         ctx.name = name
         work = tempfile.mkdtemp(prefix=f"isoparm-scenario-{name}-")
-        s = Session(args.isoparm, work, os.path.join(args.scenes, scene))
+        s = Session(args.isoparm, work, os.path.join(args.scenes, scene),
+                    extra_args=extra[0] if extra else ())
         ok = True
         started = time.time()
         try:
@@ -1196,6 +1213,8 @@ def run_scenarios(args):
         else:
             failed += 1
             print(f"scenario {name}: files kept in {work}")
+    for view, (w, h) in sorted(ctx.sizes.items()):
+        print(f"size [{ctx.screen}] {view}: {w}x{h} px")
     print(f"{passed} passed, {failed} failed")
     return 0 if failed == 0 and passed > 0 else 1
 
