@@ -397,6 +397,9 @@ def type_file_name(s, text):
     x, y, w, h = s.rect("file/name")
     s.click(x + w * 0.3, y + h / 2)
     s.wait_for("the name field to take the keyboard", lambda r: r.get("typing"))
+    # A person lets go of the button before Ctrl+A; xdotool's keys can otherwise reach ImGui
+    # while it still sees the button down over the field, and its drag clears the selection.
+    time.sleep(0.5)
     s.key("ctrl+a")
     s.xdo("type", "--delay", "30", text)
     s.key("Return")
