@@ -392,14 +392,14 @@ def wait_for_file(path, timeout=15):
 
 
 def type_file_name(s, text):
-    """Replaces the file dialog's name and presses Enter (Ctrl+A, the name, Enter: the window
-    queues keys, so a quick Ctrl+A from xdotool arrives whole at any frame time)."""
-    x, y, w, h = s.rect("file/name")
-    s.click(x + w * 0.3, y + h / 2)
+    """Replaces the file dialog's name and presses Enter. The dialog gives the name field the
+    keyboard with the name selected, so typing replaces it; Ctrl+A selects it again (a click is
+    made only when the field does not have the keyboard: a click into a field that has it
+    places the cursor, and a fast Ctrl+A under the held button was lost to ImGui's text drag)."""
+    if not s.report().get("typing"):
+        x, y, w, h = s.rect("file/name")
+        s.click(x + w * 0.3, y + h / 2)
     s.wait_for("the name field to take the keyboard", lambda r: r.get("typing"))
-    # A person lets go of the button before Ctrl+A; xdotool's keys can otherwise reach ImGui
-    # while it still sees the button down over the field, and its drag clears the selection.
-    time.sleep(0.5)
     s.key("ctrl+a")
     s.xdo("type", "--delay", "30", text)
     s.key("Return")
