@@ -25,5 +25,7 @@ ImVec4 error_text_color();
 void wrapped_tooltip(const std::string& text);
 // DejaVu Sans Mono at the same size, for columns of numbers (the default font when missing).
 ImFont* number_font();
+// DejaVu Sans Bold at the same size, or null where it is missing (bold then shows in colour).
+ImFont* bold_font();
 
 } // namespace isoparm::ui

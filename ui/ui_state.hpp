@@ -17,6 +17,7 @@
 #include "core/geom/types.hpp"
 #include "core/scene/autosave.hpp"
 #include "core/scene/recorder.hpp"
+#include "ui/course_state.hpp"
 #include "ui/lesson.hpp"
 #include "ui/view/camera.hpp"
 #include "ui/view/canvas_map.hpp"
@@ -74,8 +75,10 @@ struct FileDialog {
         save_recording,
         open_lesson,
         load_points,
-        export_file, // File > Export... (ui/exchange_actions.hpp)
-        import_file  // File > Import...
+        export_file,   // File > Export... (ui/exchange_actions.hpp)
+        import_file,   // File > Import...
+        save_lesson,   // the lesson editor's Save as (ui/course_actions.hpp)
+        open_exercise, // Lessons > Exercises > Open exercise...
     } mode = Mode::closed;
     bool just_opened = false;
     std::string directory;
@@ -91,6 +94,7 @@ struct PendingAction {
         open_file,
         open_dialog,
         open_lesson,
+        open_exercise,
         quit
     } kind = Kind::none;
     std::string path;
@@ -311,6 +315,7 @@ struct UiState {
     Rect drawing_rect;
     // The lesson being played (File > Open lesson), or null.
     std::unique_ptr<Lesson> lesson;
+    CourseState course; // lesson editor, exercise, authoring dialogs (ui/course_state.hpp)
     PendingAction pending;
     bool confirm_unsaved = false;
     bool confirm_overwrite_changed = false; // Save found the file changed on disk: ask

@@ -277,6 +277,7 @@ void Workstation::frame(unsigned target_framebuffer) {
         layout_panels();
         draw_status_bar(ctx_);
         draw_lesson_panel(ctx_);
+        draw_course_panels(ctx_); // lesson editor, exercise, Add stop / expectation
         draw_dialogs(ctx_);
         draw_construct_dialog(ctx_);
     } else {

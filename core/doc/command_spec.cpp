@@ -77,6 +77,9 @@ struct Build {
     }
     std::unique_ptr<Command> operator()(MultiresEditSpec& s) { return multires_edit(s); }
     std::unique_ptr<Command> operator()(SplitTriangleSpec& s) { return split_triangle(s.id, s.at); }
+    std::unique_ptr<Command> operator()(ConstructSpec& s) {
+        return construct(std::move(s.request), std::move(s.name));
+    }
 };
 
 } // namespace

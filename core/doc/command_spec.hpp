@@ -13,6 +13,7 @@
 #include <variant>
 #include <vector>
 
+#include "core/doc/curve_constructions.hpp"
 #include "core/doc/document.hpp"
 
 namespace isoparm::doc {
@@ -163,6 +164,14 @@ struct SplitTriangleSpec {
     geom::Barycentric at{};
 };
 
+// A surface built from the document's curves (the Construct menu; curve_constructions.hpp) and
+// added as a new object: scripts and recordings keep the recipe ("revolve curve 2 about z"),
+// not the surface it gave. `name` empty: the construction names it ("revolve profile").
+struct ConstructSpec {
+    ConstructionRequest request;
+    std::string name;
+};
+
 // The order of the alternatives is the order of command_names below.
 using CommandSpec =
     std::variant<AddObjectSpec, RemoveObjectSpec, RenameObjectSpec, SetVisibleSpec, EditShapeSpec,
@@ -171,7 +180,7 @@ using CommandSpec =
                  DeleteCurvePointSpec, MoveCurvePointSpec, SetCurveDegreeSpec, SetCurveKnotModeSpec,
                  SetCurvePlaneSpec, MakeCompatibleSpec, RemoveKnotSpec, ReduceDegreeSpec,
                  SplitKnotSpec, CloseSpec, ConvertSpec, AddObjectsSpec, MultiresEditSpec,
-                 SplitTriangleSpec>;
+                 SplitTriangleSpec, ConstructSpec>;
 
 // The command's name as scripts spell it ("edit_point"), indexed like CommandSpec.
 inline constexpr const char* command_names[] = {
@@ -203,6 +212,7 @@ inline constexpr const char* command_names[] = {
     "add_objects",
     "multires_edit",
     "split_triangle",
+    "construct",
 };
 static_assert(std::size(command_names) == std::variant_size_v<CommandSpec>);
 

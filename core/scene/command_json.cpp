@@ -39,6 +39,7 @@ public:
         auto r = read_integer(*v, path(name), std::string(name), INT_MIN, INT_MAX);
         return r ? static_cast<int>(*r) : fail(r.error(), 0);
     }
+    bool has(std::string_view name) { return find(name) != nullptr; }
     std::optional<int> optional_integer(std::string_view name) {
         if (!find(name)) return std::nullopt;
         return integer(name);
@@ -277,6 +278,50 @@ json to_json(const MultiresEditSpec& s) {
     return j;
 }
 
+// Only the members the construction reads (an angle means nothing to a skin).
+json to_json(const ConstructSpec& s) {
+    const ConstructionRequest& r = s.request;
+    json j = {{"construction", geom::name_of(r.kind)}, {"curves", r.curves}};
+    switch (r.kind) {
+    case Construction::revolve:
+        j["angle"] = r.angle;
+        break;
+    case Construction::swing:
+        j["scale"] = r.scale;
+        break;
+    case Construction::skin:
+        if (r.skin_degree != 0) j["degree"] = r.skin_degree;
+        j["parametrization"] = geom::name_of(r.parametrization);
+        break;
+    case Construction::oriented_sweep:
+        j["sections"] = r.sections;
+        break;
+    case Construction::gordon:
+        j["gordon_u_count"] = r.gordon_u_count;
+        break;
+    default:
+        break;
+    }
+    if (!s.name.empty()) j["name"] = s.name;
+    return j;
+}
+
+ConstructSpec read_construct(Members& m) {
+    ConstructSpec s;
+    ConstructionRequest& r = s.request;
+    r.kind = m.named<Construction>("construction", "construction");
+    r.curves = m.read<std::vector<std::uint64_t>>("curves", ids_from_json);
+    r.angle = m.optional_number("angle").value_or(r.angle);
+    r.scale = m.optional_number("scale").value_or(r.scale);
+    r.skin_degree = m.integer("degree", 0);
+    if (m.has("parametrization"))
+        r.parametrization = m.named<geom::Parametrization>("parametrization", "parametrization");
+    r.sections = m.integer("sections", r.sections);
+    r.gordon_u_count = m.integer("gordon_u_count", r.gordon_u_count);
+    s.name = m.text("name", "");
+    return s;
+}
+
 // The members each command takes besides "command", in CommandSpec's order.
 const std::initializer_list<std::string_view> command_members[] = {
     {"object"},                                        // add_object
@@ -308,6 +353,9 @@ const std::initializer_list<std::string_view> command_members[] = {
     // multires_edit
     {"id", "level", "level_v", "i", "j", "position", "detail_scale"},
     {"id", "param"}, // split_triangle
+    // construct
+    {"construction", "curves", "angle", "scale", "degree", "parametrization", "sections",
+     "gordon_u_count", "name"},
 };
 static_assert(std::size(command_members) == std::size(command_names));
 
@@ -437,6 +485,8 @@ CommandSpec read_spec(std::size_t index, Members& m) {
     case 27:
         return SplitTriangleSpec{m.id("id"),
                                  m.read<geom::Barycentric>("param", triangle_param_from_json)};
+    case 28:
+        return read_construct(m);
     case 25:
         return AddObjectsSpec{m.read<std::vector<Object>>("objects", objects_from_json),
                               m.text("label", "")};

@@ -27,6 +27,11 @@ std::vector<CommandSpec> one_of_each() {
     geom::Surface grid = make_planar_grid(3, 3, 2, 2, geom::SplineType::bspline);
     Colors colors;
     colors.background = {0.5f, 0.25f, 0.125f, 1};
+    ConstructSpec revolve;
+    revolve.request.kind = Construction::revolve;
+    revolve.request.curves = {curve_id};
+    revolve.request.angle = 270;
+    revolve.name = "vase";
     glm::dmat4 shift(1.0);
     shift[3] = glm::dvec4(1, 2, 3, 1);
     return {
@@ -58,6 +63,7 @@ std::vector<CommandSpec> one_of_each() {
         AddObjectsSpec{{added, added}, "Import two"},
         MultiresEditSpec{curve_id, 1, std::nullopt, 2, -1, glm::dvec3(1, 1, 0), std::nullopt},
         SplitTriangleSpec{tri_id, {0.25, 0.25, 0.5}},
+        revolve,
     };
 }
 
