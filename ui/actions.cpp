@@ -233,6 +233,9 @@ bool open_lesson(AppContext& ctx, const std::string& path) {
     lesson->path = path;
     lesson->script = std::move(script).value();
     prepare_lesson(*lesson);
+    // A lesson opened to be played, not edited: the editor (if open) gives it the view. Edit...
+    // in the caption box brings it back on this lesson.
+    ctx.ui.course.editor.open = false;
     // The lesson's scene is a copy, untitled: saving never writes over the lesson's files.
     adopt(ctx, lesson->script.start, "");
     ctx.ui.lesson = std::move(lesson);

@@ -38,6 +38,11 @@ struct ExerciseState {
     // The history when Check ran: the panel says so when the document changed since.
     std::size_t history_at_check = 0;
     const void* top_at_check = nullptr;
+    // The panel's place: chosen off the object (as the caption box), again when its height
+    // changes, until the user drags it.
+    Rect placed{};
+    bool placed_once = false, user_moved = false;
+    float last_height = 0;
 };
 
 // Where the caption box is: placed by the stop it shows, then the user's if dragged.
@@ -45,7 +50,7 @@ struct CaptionBoxState {
     std::size_t placed_for = static_cast<std::size_t>(-1); // the stop it was placed for
     Rect placed{}; // where it was put (the user moved it when it is elsewhere)
     bool user_moved = false;
-    float last_height = 0;
+    float last_height = 0; // the box's height last frame
 };
 
 struct CourseState {
@@ -60,6 +65,9 @@ struct CourseState {
     std::vector<scene::Fact> facts;
     std::vector<char> chosen;
     CaptionBoxState caption_box;
+    // Where the lesson editor and the Exercise panel were last frame (the caption box keeps
+    // clear of them).
+    std::vector<Rect> floating;
 };
 
 } // namespace isoparm::ui

@@ -41,17 +41,19 @@ TEST(CaptionPlace, TheFocusIsTheSelectedPointAndObjectOnScreen) {
     d.view.display.indicator_point = false;
     d.view.display.deboor = false;
     Camera cam;
-    const std::vector<glm::dvec3> pts = {{-2, -2, 0}, {2, 2, 1.6}};
-    fit_to_points(cam, pts, view.w / view.h);
+    fit_to_points(cam, focus_points(d), view.w / view.h);
     const CaptionFocus f = caption_focus(d, cam, view, 12);
     ASSERT_EQ(f.points.size(), 1u);
     ASSERT_EQ(f.objects.size(), 1u);
-    // The point's square lies inside the object's box, both inside the view.
+    // P2,2 (above the hill's top: a control point need not lie on its surface) and the hill's
+    // screen box, both inside the view; the point above the box's middle.
     const Rect& p = f.points[0];
     const Rect& o = f.objects[0];
-    EXPECT_TRUE(o.contains(p.x + 12, p.y + 12));
+    EXPECT_TRUE(view.contains(p.x + 12, p.y + 12));
     EXPECT_TRUE(view.contains(o.x, o.y));
+    EXPECT_TRUE(view.contains(o.x + o.w, o.y + o.h));
     EXPECT_GT(o.w, 100);
+    EXPECT_LT(p.y + 12, o.y + o.h / 2);
     // With the indicator's point shown, it is a point to avoid too.
     d.view.display.indicator_point = true;
     EXPECT_EQ(caption_focus(d, cam, view, 12).points.size(), 2u);
@@ -61,6 +63,24 @@ TEST(CaptionPlace, TheFocusIsTheSelectedPointAndObjectOnScreen) {
     const CaptionFocus all = caption_focus(d, cam, view, 12);
     EXPECT_TRUE(all.points.empty());
     EXPECT_EQ(all.objects.size(), 1u);
+}
+
+TEST(CaptionPlace, WithoutRoomBesideTheObjectTheCameraMovesItFromUnderTheBox) {
+    doc::Document d = doc::default_document();
+    Camera cam;
+    fit_to_points(cam, focus_points(d), view.w / view.h); // the hill fills the view
+    const Rect box = place_caption(view, 700, 260, caption_focus(d, cam, view, 12), 10);
+    ASSERT_GT(overlap_area(box, caption_focus(d, cam, view, 12).objects[0]), 0);
+    const Rect free = free_beside(view, box);
+    EXPECT_GT(free.h, 200); // above or below the box, the largest part left
+    fit_camera_into(cam, focus_points(d), view, free);
+    const CaptionFocus after = caption_focus(d, cam, view, 12);
+    for (const Rect& o : after.objects) {
+        EXPECT_FALSE(overlaps(box, o)) << o.x << " " << o.y << " " << o.w << " " << o.h;
+        EXPECT_GE(o.y, free.y);
+        EXPECT_LE(o.y + o.h, free.y + free.h);
+    }
+    for (const Rect& p : after.points) EXPECT_FALSE(overlaps(box, p));
 }
 
 } // namespace

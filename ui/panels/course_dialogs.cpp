@@ -94,6 +94,7 @@ void add_expectation_dialog(AppContext& ctx) {
 } // namespace
 
 void draw_course_panels(AppContext& ctx) {
+    ctx.ui.course.floating.clear(); // filled again by the two panels below
     draw_lesson_editor_panel(ctx);
     draw_exercise_panel(ctx);
     add_stop_dialog(ctx);

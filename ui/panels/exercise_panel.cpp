@@ -2,6 +2,7 @@
 // each passed or failed with what was found, and the hint for the first that fails), the
 // exercise's general hints one at a time, Start again and Close.
 #include <algorithm>
+#include <cmath>
 #include <imgui.h>
 #include <string>
 
@@ -10,6 +11,7 @@
 #include "ui/panels/rich_text.hpp"
 #include "ui/theme.hpp"
 #include "ui/ui_report.hpp"
+#include "ui/view/caption_place.hpp"
 
 namespace isoparm::ui {
 
@@ -21,9 +23,19 @@ void draw_exercise_panel(AppContext& ctx) {
     const ImGuiViewport* vp = ImGui::GetMainViewport();
     const Rect& view = ctx.ui.drawing_rect;
     const float width = std::max(std::min(440 * k, view.w - 16 * k), 260 * k);
-    // At the bottom left of the 3D view, where a lesson's caption box rarely goes.
-    ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + view.x + 8 * k, vp->Pos.y + view.y + view.h - 8 * k),
-                            ImGuiCond_Appearing, ImVec2(0, 1));
+    // Off the scene's objects where the view has room (ui/view/caption_place.hpp), placed
+    // again when the results change its height, until the user drags it elsewhere.
+    const float height = s.last_height > 0 ? s.last_height : 180 * k;
+    if (!s.user_moved && (!s.placed_once || std::abs(height - s.placed.h) > 2)) {
+        const Rect& area = ctx.ui.view_rect.w > 0 ? ctx.ui.view_rect : view;
+        CaptionFocus focus = caption_focus(ctx.doc, ctx.ui.camera, area, 14 * k);
+        focus.points.clear(); // a student works on the points: the panel need not dodge them
+        const Rect r =
+            place_caption(area, width, height, focus, 8 * k, s.placed_once ? &s.placed : nullptr);
+        ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + r.x, vp->Pos.y + r.y), ImGuiCond_Always);
+        s.placed = r;
+        s.placed_once = true;
+    }
     ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0), ImVec2(width, vp->Size.y * 0.7f));
     bool open = true;
     const std::string title = "Exercise: " + (ex.title.empty() ? s.path : ex.title) + "###exercise";
@@ -32,6 +44,11 @@ void draw_exercise_panel(AppContext& ctx) {
                          ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing)) {
         const ImVec2 wp = ImGui::GetWindowPos(), ws = ImGui::GetWindowSize();
         report_rect("exercise/window", wp.x, wp.y, ws.x, ws.y);
+        s.last_height = ws.y;
+        if (std::abs(wp.x - vp->Pos.x - s.placed.x) > 0.5f ||
+            std::abs(wp.y - vp->Pos.y - s.placed.y) > 0.5f)
+            s.user_moved = true; // dragged by its title bar
+        ctx.ui.course.floating.push_back({wp.x - vp->Pos.x, wp.y - vp->Pos.y, ws.x, ws.y});
         draw_rich_text(ex.task);
         ImGui::Spacing();
         const bool check = ImGui::Button("Check");

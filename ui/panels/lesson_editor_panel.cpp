@@ -46,6 +46,7 @@ void draw_lesson_editor_panel(AppContext& ctx) {
     }
     const ImVec2 wp = ImGui::GetWindowPos(), ws = ImGui::GetWindowSize();
     report_rect("editor/window", wp.x, wp.y, ws.x, ws.y);
+    ctx.ui.course.floating.push_back({wp.x - vp->Pos.x, wp.y - vp->Pos.y, ws.x, ws.y});
     ImGui::TextDisabled("%s", e.path.empty() ? "not saved yet" : e.path.c_str());
     ImGui::SetNextItemWidth(-80 * k);
     if (ImGui::InputText("Title", &d.title)) e.dirty = true;

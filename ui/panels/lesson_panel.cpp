@@ -19,20 +19,33 @@ namespace isoparm::ui {
 
 namespace {
 
-// Where the box goes this frame, or nothing (it stays where it is: placed, or dragged).
+// Where the box goes this frame, or nothing (it stays where it is: placed, or dragged). At a
+// new stop it is placed off the stop's point and object; where the view has no room beside
+// the object, the camera frames the object in the part of the view the box leaves free.
 std::optional<Rect> box_position(AppContext& ctx, const Lesson& lesson, float width,
                                  const CaptionFocus& focus) {
     CaptionBoxState& box = ctx.ui.course.caption_box;
     const float k = ctx.ui.scale();
     const Rect& view = ctx.ui.view_rect.w > 0 ? ctx.ui.view_rect : ctx.ui.drawing_rect;
-    const float height = box.last_height > 0 ? box.last_height : 120 * k;
+    const float height = box.last_height > 0 ? box.last_height : 160 * k;
     const bool new_stop = box.placed_for != lesson.stop;
+    // Placed with an estimate of its height (the last caption's): once this caption's own
+    // is known (an auto-sized window takes a frame or two), placed again.
+    const bool resized = !new_stop && !box.user_moved && std::abs(height - box.placed.h) > 2;
     bool covers = false;
     const Rect now{box.placed.x, box.placed.y, width, height};
     for (const Rect& p : focus.points) covers = covers || overlaps(now, p);
-    if (!new_stop && (box.user_moved || !covers)) return std::nullopt;
-    // A new stop, or the point came under the box (the camera turned): placed again.
+    if (!new_stop && !resized && (box.user_moved || !covers)) return std::nullopt;
+    // A new stop, its real height, or the point came under the box (the camera turned).
     const Rect r = place_caption(view, width, height, focus, 8 * k, new_stop ? nullptr : &now);
+    if (new_stop || resized) {
+        float covered = 0;
+        for (const Rect& o : focus.objects) covered += overlap_area(r, o);
+        if (covered > 0) {
+            fit_camera_into(ctx.ui.camera, focus_points(ctx.doc), view, free_beside(view, r));
+            ctx.ui.camera_needs_fit = false;
+        }
+    }
     box.placed_for = lesson.stop;
     box.placed = r;
     box.user_moved = false;
@@ -49,7 +62,9 @@ void draw_lesson_panel(AppContext& ctx) {
     const Rect& view = ctx.ui.drawing_rect;
     const float width = std::max(std::min(520 * k, view.w - 16 * k), 240 * k);
     // The stop's subject on screen: the box keeps off it.
-    const CaptionFocus focus = caption_focus(ctx.doc, ctx.ui.camera, ctx.ui.view_rect, 14 * k);
+    CaptionFocus focus = caption_focus(ctx.doc, ctx.ui.camera, ctx.ui.view_rect, 14 * k);
+    // The lesson editor and the Exercise panel float over the view too: the box keeps clear.
+    for (const Rect& w : ctx.ui.course.floating) focus.windows.push_back(w);
     if (const std::optional<Rect> at = box_position(ctx, lesson, width, focus))
         ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + at->x, vp->Pos.y + at->y), ImGuiCond_Always);
     ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0), ImVec2(width, vp->Size.y * 0.5f));
@@ -105,6 +120,7 @@ void draw_lesson_panel(AppContext& ctx) {
             ImGui::SetTooltip("The lesson editor: stops, captions, order; play from any stop");
         ImGui::SameLine();
         if (ImGui::Button("Close")) open = false;
+        report_item("lesson/close");
         // Right arrow or Page Down: the next stop, as a presenter's clicker sends.
         if (can_go_on && !ImGui::GetIO().WantTextInput &&
             (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow), false) ||

@@ -1,6 +1,8 @@
 // The Lessons menu: the shipped lessons by title with a one-line summary each, the user's own
-// (My lessons, from $XDG_DATA_HOME/isoparm/lessons), the exercises, and writing a lesson:
-// recording with stops and expectations, saving it as a lesson, the lesson editor.
+// (My lessons, from $XDG_DATA_HOME/isoparm/lessons), and writing a lesson: recording with
+// stops and expectations, saving it as a lesson, the lesson editor. The Exercises menu: the
+// shipped exercises, opening one, checking it.
+#include <algorithm>
 #include <imgui.h>
 #include <string>
 #include <vector>
@@ -40,7 +42,7 @@ std::string pick_from(const std::vector<CourseEntry>& entries, const char* repor
     for (const CourseEntry& e : entries) {
         if (ImGui::MenuItem(e.title.c_str(), e.summary.empty() ? nullptr : e.summary.c_str()))
             chosen = e.path;
-        report_item(std::string(report_prefix) + e.title);
+        report_item("menu/" + std::string(report_prefix) + e.title);
         if (ImGui::IsItemHovered() && !e.summary.empty()) ImGui::SetTooltip("%s", e.path.c_str());
     }
     return chosen;
@@ -57,25 +59,22 @@ void draw_lessons_menu(AppContext& ctx) {
     std::string lesson = pick_from(l.shipped, "lessons/");
     if (l.shipped.empty()) ImGui::TextDisabled("No shipped lessons found");
     ImGui::Separator();
-    if (begin_menu("My lessons")) {
-        if (ImGui::IsWindowAppearing()) listing().mine = list_lessons(user_lessons_dir());
-        const std::string mine = pick_from(listing().mine, "my-lessons/");
-        if (!mine.empty()) lesson = mine;
-        if (listing().mine.empty())
-            ImGui::TextDisabled("None yet: record one (Start recording, Add stop here, "
-                                "Save recording as lesson)");
-        ImGui::Separator();
-        ImGui::TextDisabled("%s", user_lessons_dir().c_str());
+    // The user's own, inline (a submenu beside this wide menu would open under the pointer):
+    // the first few here, the rest one level down.
+    ImGui::TextDisabled("My lessons (%s)", user_lessons_dir().c_str());
+    constexpr std::size_t inline_mine = 6;
+    const std::vector<CourseEntry> first(
+        l.mine.begin(), l.mine.begin() + static_cast<long>(std::min(l.mine.size(), inline_mine)));
+    if (std::string mine = pick_from(first, "my-lessons/"); !mine.empty()) lesson = mine;
+    if (l.mine.size() > inline_mine && begin_menu("More of my lessons")) {
+        const std::vector<CourseEntry> rest(l.mine.begin() + static_cast<long>(inline_mine),
+                                            l.mine.end());
+        if (std::string mine = pick_from(rest, "my-lessons/"); !mine.empty()) lesson = mine;
         ImGui::EndMenu();
     }
-    if (begin_menu("Exercises")) {
-        const std::string ex = pick_from(l.exercises, "exercises/");
-        if (l.exercises.empty()) ImGui::TextDisabled("No exercises found");
-        ImGui::Separator();
-        if (menu_item("Open exercise...")) request_open_exercise_dialog(ctx);
-        ImGui::EndMenu();
-        if (!ex.empty()) request_open_exercise(ctx, ex);
-    }
+    if (l.mine.empty())
+        ImGui::TextDisabled(
+            "  none yet: Start recording a lesson, Add stop here, Save recording as lesson");
     ImGui::Separator();
     // Writing a lesson: record a session, mark its stops and what must hold there.
     if (!ctx.recorder) {
@@ -91,6 +90,19 @@ void draw_lessons_menu(AppContext& ctx) {
     if (menu_item("Lesson editor")) open_lesson_editor(ctx);
     ImGui::EndMenu();
     if (!lesson.empty()) request_open_lesson(ctx, lesson);
+}
+
+void draw_exercises_menu(AppContext& ctx) {
+    if (!begin_menu("Exercises")) return;
+    if (ImGui::IsWindowAppearing()) listing().exercises = list_exercises(shipped_exercises_dir());
+    const std::string ex = pick_from(listing().exercises, "exercises/");
+    if (listing().exercises.empty()) ImGui::TextDisabled("No exercises found");
+    ImGui::Separator();
+    if (menu_item("Open exercise...")) request_open_exercise_dialog(ctx);
+    const bool open = ctx.ui.course.exercise_open && ctx.ui.course.exercise.exercise;
+    if (menu_item("Check the exercise", nullptr, false, open)) check_exercise(ctx);
+    ImGui::EndMenu();
+    if (!ex.empty()) request_open_exercise(ctx, ex);
 }
 
 } // namespace isoparm::ui

@@ -16,9 +16,13 @@ namespace {
 
 // Points of the object that bound what is drawn of it: a grid of surface points (the control
 // net can lie far from a rational surface), a curve's points, a triangle's net, an implicit
-// surface's box corners.
-std::vector<glm::dvec3> outline_points(const doc::Object& o) {
+// surface's box corners; and the control points where they are drawn.
+std::vector<glm::dvec3> outline_points(const doc::Object& o, const doc::DisplaySettings& show) {
     std::vector<glm::dvec3> out;
+    if (show.control_points || show.control_net) {
+        const std::span<const glm::dvec3> net = doc::control_points_of(o.shape);
+        out.assign(net.begin(), net.end());
+    }
     constexpr int n = 8;
     if (const geom::Surface* s = o.surface()) {
         const geom::ParamRect d = geom::domain(*s);
@@ -33,7 +37,7 @@ std::vector<glm::dvec3> outline_points(const doc::Object& o) {
             if (auto p = geom::curve_point(*c, d.lo + (d.hi - d.lo) * a / (4 * n)))
                 out.push_back(*p);
     } else if (const geom::TrianglePatch* t = o.triangle()) {
-        out = t->points;
+        out.insert(out.end(), t->points.begin(), t->points.end());
     } else if (const doc::ImplicitObject* f = o.implicit()) {
         for (int k = 0; k < 8; ++k)
             out.push_back(
@@ -70,6 +74,63 @@ std::optional<glm::dvec3> selected_point(const doc::Document& d) {
 
 } // namespace
 
+std::vector<glm::dvec3> focus_points(const doc::Document& d) {
+    std::vector<glm::dvec3> out;
+    const doc::Object* sel = d.selected();
+    for (const doc::Object& o : d.objects) {
+        if (!o.visible || (sel && &o != sel)) continue;
+        const std::vector<glm::dvec3> pts = outline_points(o, d.view.display);
+        out.insert(out.end(), pts.begin(), pts.end());
+    }
+    if (auto p = selected_point(d)) out.push_back(*p);
+    return out;
+}
+
+Rect free_beside(const Rect& view, const Rect& box) {
+    const Rect above{view.x, view.y, view.w, std::max(0.f, box.y - view.y)};
+    const Rect below{view.x, box.y + box.h, view.w,
+                     std::max(0.f, view.y + view.h - (box.y + box.h))};
+    const Rect left{view.x, view.y, std::max(0.f, box.x - view.x), view.h};
+    const Rect right{box.x + box.w, view.y, std::max(0.f, view.x + view.w - (box.x + box.w)),
+                     view.h};
+    Rect best = above;
+    for (const Rect& r : {below, left, right})
+        if (r.w * r.h > best.w * best.h) best = r;
+    return best;
+}
+
+void fit_camera_into(Camera& camera, const std::vector<glm::dvec3>& points, const Rect& view,
+                     const Rect& free) {
+    if (points.empty() || free.w < 8 || free.h < 8 || view.w < 8 || view.h < 8) return;
+    const Camera before = camera;
+    const Viewport vp{view.x, view.y, view.w, view.h};
+    fit_to_points(camera, points, vp.aspect());
+    // Fixed-point steps as in fit_to_points, toward the free rectangle's centre and ~90% of
+    // its size (perspective is nearly linear over a view's width).
+    const glm::dvec2 centre{free.x + free.w / 2.0, free.y + free.h / 2.0};
+    for (int iter = 0; iter < 8; ++iter) {
+        const glm::dmat4 m = view_projection(camera, vp.aspect());
+        glm::dvec2 lo{1e300}, hi{-1e300};
+        for (const glm::dvec3& p : points) {
+            const Projected q = project(m, vp, p);
+            if (!q.visible) {
+                camera = before;
+                return;
+            }
+            lo = glm::min(lo, q.pixel);
+            hi = glm::max(hi, q.pixel);
+        }
+        const glm::dvec2 shift = (lo + hi) * 0.5 - centre;
+        const double scale =
+            std::max((hi.x - lo.x) / (0.9 * free.w), (hi.y - lo.y) / (0.9 * free.h));
+        if (scale <= 0) break;
+        // World units per pixel at the target's depth (camera.hpp: pan).
+        const double unit = 2.0 * camera.distance * std::tan(camera.fov_y / 2) / view.h;
+        camera.target += (shift.x * camera_right(camera) - shift.y * camera_up(camera)) * unit;
+        camera.distance *= scale;
+    }
+}
+
 CaptionFocus caption_focus(const doc::Document& d, const Camera& camera, const Rect& view,
                            float point_radius) {
     CaptionFocus f;
@@ -93,7 +154,8 @@ CaptionFocus caption_focus(const doc::Document& d, const Camera& camera, const R
     const doc::Object* sel = d.selected();
     for (const doc::Object& o : d.objects) {
         if (!o.visible || (sel && &o != sel)) continue;
-        if (auto box = screen_box(outline_points(o), m, vp)) f.objects.push_back(*box);
+        if (auto box = screen_box(outline_points(o, d.view.display), m, vp))
+            f.objects.push_back(*box);
     }
     return f;
 }
