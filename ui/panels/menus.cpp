@@ -57,6 +57,13 @@ void file_menu(AppContext& ctx) {
     if (menu_item("Export...")) request_export_dialog(ctx);
     if (menu_item("Import...")) request_import_dialog(ctx);
     ImGui::Separator();
+    // Pictures, vector figures and animations for slides and notes (ui/media_export.hpp).
+    if (menu_item("Export picture...")) request_media_export(ctx, MediaExportState::Kind::picture);
+    if (menu_item("Export figure...")) request_media_export(ctx, MediaExportState::Kind::figure);
+    if (menu_item("Export animation..."))
+        request_media_export(ctx, MediaExportState::Kind::animation);
+    if (menu_item("Copy 3D view", "Ctrl+Shift+C")) ctx.ui.media_export.clipboard_pending = true;
+    ImGui::Separator();
     if (menu_item("Open lesson...")) request_open_lesson_dialog(ctx);
     // Recording: the session's edits as a script (docs/script-format.md) to replay or to show.
     if (!ctx.recorder) {
@@ -336,6 +343,9 @@ void handle_shortcuts(AppContext& ctx) {
                 break;
             case GLFW_KEY_Y:
                 redo(ctx);
+                break;
+            case GLFW_KEY_C:
+                if (k.shift) ctx.ui.media_export.clipboard_pending = true; // the 3D view
                 break;
             case GLFW_KEY_Q:
                 request_quit(ctx);
