@@ -107,6 +107,9 @@ void run_pending(AppContext& ctx) {
     case PendingAction::Kind::open_exercise:
         open_exercise(ctx, a.path);
         break;
+    case PendingAction::Kind::play_draft:
+        play_draft_from(ctx, a.stop);
+        break;
     case PendingAction::Kind::quit:
         ctx.ui.quit_now = true;
         break;

@@ -64,7 +64,7 @@ void request_open_exercise_dialog(AppContext& ctx) {
 }
 
 void request_open_exercise(AppContext& ctx, const std::string& path) {
-    ctx.ui.pending = {PendingAction::Kind::open_exercise, path};
+    ctx.ui.pending = {PendingAction::Kind::open_exercise, path, 0};
     if (ctx.dirty())
         ctx.ui.confirm_unsaved = true;
     else
@@ -249,6 +249,14 @@ std::string draft_problem(const LessonEditorState& e) {
     const scene::ScriptResult r = scene::run_script(*script, trial, {}, /*dry_run=*/true);
     if (r.stopped) return error_text(*r.stopped);
     return {};
+}
+
+void request_play_draft(AppContext& ctx, std::size_t stop) {
+    ctx.ui.pending = {PendingAction::Kind::play_draft, {}, stop};
+    if (ctx.dirty())
+        ctx.ui.confirm_unsaved = true;
+    else
+        run_pending(ctx);
 }
 
 void play_draft_from(AppContext& ctx, std::size_t stop) {

@@ -44,7 +44,9 @@ void request_save_lesson_dialog(AppContext& ctx);
 // inline when the folder changes, so the lesson opens wherever it goes). Errors go to the
 // editor's note; returns whether written.
 bool save_lesson(AppContext& ctx, const std::string& path);
-// Plays the editor's lesson (as edited, not saved) from its start to stop `stop`.
+// Plays the editor's lesson (as edited, not saved) from its start to stop `stop`, on a fresh
+// copy of its scene: unsaved changes are asked about first (request_), or not.
+void request_play_draft(AppContext& ctx, std::size_t stop);
 void play_draft_from(AppContext& ctx, std::size_t stop);
 // Whether the editor's lesson replays: "" or the first step that cannot be carried out.
 std::string draft_problem(const LessonEditorState& editor);

@@ -96,9 +96,11 @@ struct PendingAction {
         open_dialog,
         open_lesson,
         open_exercise,
+        play_draft, // the lesson editor's Play from here, from stop `stop`
         quit
     } kind = Kind::none;
     std::string path;
+    std::size_t stop = 0;
 };
 
 // R_ij heat map samples, recomputed only when the surface or the point changes.

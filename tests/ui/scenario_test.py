@@ -413,6 +413,14 @@ def lessons_menu_record_and_replay(s, ctx):
     r = s.wait_for("the lesson editor", lambda r: r.get("editor", {}).get("path") == path)
     check(r["editor"]["stops"] >= 2, f"the editor shows {r['editor']['stops']} stops")
     ctx.shot(s, "lesson-editor")
+    # The editor plays the lesson from its second stop on a fresh copy of its scene.
+    s.click_named("editor/stop1")
+    s.click_named("editor/play")
+    s.click_named("unsaved/discard")  # the recorded session's scene was not saved: asked first
+    r = s.wait_for("the lesson at its second stop", lambda r: r.get("lesson", {}).get("stop") == 2)
+    check(r["lesson"]["caption"] == "Second stop: a point dragged", f"{r['lesson']['caption']!r}")
+    s.click_named("lesson/close")
+    s.wait_for("the lesson closed", lambda r: "lesson" not in r)
     with open(path) as f:
         lesson = json.load(f)
     pauses = sum(1 for st in lesson["steps"] if "pause" in st)
@@ -441,6 +449,31 @@ def lessons_menu_record_and_replay(s, ctx):
     check(r["lesson"]["caption"] == "Second stop: a point dragged", f"{r['lesson']['caption']!r}")
     check(not r["lesson"]["unmet"] and not r["lesson"]["refused"], f"{r['lesson']}")
     ctx.shot(s, "my-lesson-stop2")
+
+
+def lesson_gallery(s, ctx):
+    """Every shipped lesson opened from the Lessons menu: its first stop has a caption, no
+    refused step or unmet expectation, and the caption box off the stop's point and object
+    (a picture of each with --shots)."""
+    lessons_dir = os.path.join(os.path.dirname(ctx.scenes), "lessons")
+    names = sorted(f for f in os.listdir(lessons_dir) if f.endswith(".json"))
+    check(len(names) >= 14, f"{len(names)} shipped lessons")
+    for name in names:
+        with open(os.path.join(lessons_dir, name)) as f:
+            title = json.load(f)["title"]
+        s.menu("Lessons", "lessons/" + title)
+        r = s.wait_for(f"{name} or the unsaved-changes question",
+                       lambda r: "unsaved/discard" in r["rects"]
+                       or r.get("lesson", {}).get("path", "").endswith(name))
+        if "unsaved/discard" in r["rects"]:
+            s.click_named("unsaved/discard")
+        r = s.wait_for(f"{name}'s first stop", lambda r: r.get("lesson", {}).get("path", "")
+                       .endswith(name) and r["lesson"]["stop"] == 1)
+        check(r["lesson"]["caption"], f"{name}: no caption at its first stop")
+        check(not r["lesson"]["refused"] and not r["lesson"]["unmet"], f"{name}: {r['lesson']}")
+        boxes_apart(s, name)
+        time.sleep(0.5)  # polygonized implicit meshes and the last frame on screen
+        ctx.shot(s, "gallery-" + name[:-5])
 
 
 def exercise_fails_then_passes(s, ctx):
@@ -977,6 +1010,13 @@ SCENARIOS = [
 ]
 
 
+# Run only when asked (--only): the gallery opens every shipped lesson, a minute of work that
+# CTest runs at the projector's size alone (ui.lesson_gallery).
+EXTRA_SCENARIOS = [
+    ("lesson_gallery", "fig3b-weight-5.json", lesson_gallery),
+]
+
+
 class Context:
     def __init__(self, shots, screen, scenes=""):
         self.scenes = scenes
@@ -1029,8 +1069,8 @@ def run_scenarios(args):
     ctx = Context(args.shots, args.screen + ("-presentation" if args.presentation else ""),
                   os.path.abspath(args.scenes))
     passed = failed = 0
-    for name, scene, run in SCENARIOS:
-        if args.only and name != args.only:
+    for name, scene, run in SCENARIOS + EXTRA_SCENARIOS:
+        if (args.only and name != args.only) or (not args.only and (name, scene, run) in EXTRA_SCENARIOS):
             continue
         ctx.name = name
         work = tempfile.mkdtemp(prefix=f"isoparm-scenario-{name}-")

@@ -113,7 +113,7 @@ void draw_lesson_editor_panel(AppContext& ctx) {
     const bool play = ImGui::Button("Play from here");
     report_item("editor/play");
     ImGui::EndDisabled();
-    if (play) play_draft_from(ctx, sel);
+    if (play) request_play_draft(ctx, sel); // unsaved changes are asked about first
 
     ImGui::Separator();
     ImGui::PushTextWrapPos(0);
