@@ -22,10 +22,6 @@ std::unique_ptr<Command> add_object(Object object); // id assigned on apply if 0
 // checks it, every one before any is added ("/objects/k/..."); objects without an id get fresh
 // ids after every id in use. label: the undo label (empty: "Add N objects"). add_objects.cpp.
 std::unique_ptr<Command> add_objects(std::vector<Object> objects, std::string label = {});
-// A surface built from the document's curves (Construct menu) as a new object, one undo step:
-// refusals are build_construction's ("/curves/1", "/angle", ...). name empty: the
-// construction's own ("revolve profile"). commands_construct.cpp.
-std::unique_ptr<Command> construct(ConstructionRequest request, std::string name = {});
 std::unique_ptr<Command> remove_object(std::uint64_t id);
 std::unique_ptr<Command> rename_object(std::uint64_t id, std::string name);
 // Hidden objects are neither drawn nor picked; they stay in the scene (the object list).

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/doc/commands.hpp"
+#include "core/doc/commands_construction.hpp"
 #include "core/doc/commands_curve.hpp"
 #include "core/doc/curve_constructions.hpp"
 #include "ui/actions.hpp"
