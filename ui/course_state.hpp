@@ -51,6 +51,10 @@ struct CaptionBoxState {
     Rect placed{}; // where it was put (the user moved it when it is elsewhere)
     bool user_moved = false;
     float last_height = 0; // the box's height last frame
+    // Frames in a row in which the box was placed again (its real height known, the camera
+    // framed, the point clear): the window draws only on input, so it asks for the next frame
+    // until the box stays put (at most a few).
+    int settling = 0;
 };
 
 struct CourseState {

@@ -65,8 +65,13 @@ void draw_lesson_panel(AppContext& ctx) {
     CaptionFocus focus = caption_focus(ctx.doc, ctx.ui.camera, ctx.ui.view_rect, 14 * k);
     // The lesson editor and the Exercise panel float over the view too: the box keeps clear.
     for (const Rect& w : ctx.ui.course.floating) focus.windows.push_back(w);
-    if (const std::optional<Rect> at = box_position(ctx, lesson, width, focus))
+    CaptionBoxState& placing = ctx.ui.course.caption_box;
+    if (const std::optional<Rect> at = box_position(ctx, lesson, width, focus)) {
         ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + at->x, vp->Pos.y + at->y), ImGuiCond_Always);
+        ++placing.settling;
+    } else {
+        placing.settling = 0;
+    }
     ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0), ImVec2(width, vp->Size.y * 0.5f));
     const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse |
                                    ImGuiWindowFlags_NoSavedSettings |
