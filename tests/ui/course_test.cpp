@@ -51,6 +51,7 @@ TEST(CourseActions, ARecordingWithoutStopsIsPlayedOneStepAtATime) {
     start_recording(ctx);
     ASSERT_TRUE(ctx.execute(doc::insert_knot(1, geom::Dir::u, 0.25, 1)));
     ctx.seal();
+    const double w22_after_knot = weight22(ctx); // 1.25: P2,2 blended with P1,2 (w 2 and 1)
     ASSERT_TRUE(ctx.execute(doc::edit_point({1, 2, 2, std::nullopt, 4.0})));
     request_stop_recording(ctx);
     ASSERT_TRUE(save_recording(ctx, tmp.path("recording.json")));
@@ -62,10 +63,11 @@ TEST(CourseActions, ARecordingWithoutStopsIsPlayedOneStepAtATime) {
     EXPECT_EQ(ctx.doc.objects.front().surface()->n_u, 5);
     lesson_next(ctx);
     EXPECT_EQ(ctx.doc.objects.front().surface()->n_u, 6); // the knot, not yet the weight
-    EXPECT_EQ(weight22(ctx), 2);
+    EXPECT_EQ(weight22(ctx), w22_after_knot);
     EXPECT_EQ(l.caption.rfind("Step 1 of 2: ", 0), 0u) << l.caption;
     lesson_next(ctx);
     EXPECT_EQ(l.caption.rfind("Step 2 of 2: ", 0), 0u) << l.caption;
+    EXPECT_EQ(weight22(ctx), 4);
     EXPECT_TRUE(l.finished());
 }
 
