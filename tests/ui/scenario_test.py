@@ -17,6 +17,7 @@ import time
 import traceback
 
 from gui_session import Failure, Session, display
+import projector_scenarios
 
 
 def check(cond, message):
@@ -1007,7 +1008,7 @@ SCENARIOS = [
     ("rational_picture", "fig3b-weight-5.json", rational_picture_and_homogeneous_view),
     ("triangle_patch", "fig3b-weight-5.json", triangle_patch_new_split_elevate),
     ("figures", "fig3b-weight-5.json", figures_from_the_window),
-]
+] + projector_scenarios.SCENARIOS  # the stage, four views, labels apart (issue #30)
 
 
 # Run only when asked (--only): the gallery opens every shipped lesson, a minute of work that
@@ -1023,6 +1024,7 @@ class Context:
         self.shots = shots
         self.screen = screen
         self.name = ""
+        self.sizes = {}  # staged canvases' sizes in pixels, printed at the end
 
     def shot(self, session, what):
         if self.shots:
@@ -1069,12 +1071,17 @@ def run_scenarios(args):
     ctx = Context(args.shots, args.screen + ("-presentation" if args.presentation else ""),
                   os.path.abspath(args.scenes))
     passed = failed = 0
-    for name, scene, run in SCENARIOS + EXTRA_SCENARIOS:
-        if (args.only and name != args.only) or (not args.only and (name, scene, run) in EXTRA_SCENARIOS):
+    for name, scene, run, *extra in SCENARIOS + EXTRA_SCENARIOS:
+        extra_only = any(name == e[0] for e in EXTRA_SCENARIOS)
+        if not args.only and extra_only:
+            continue
+        if args.only and name != args.only and not (args.only.endswith("*") and
+                                                    name.startswith(args.only[:-1])):
             continue
         ctx.name = name
         work = tempfile.mkdtemp(prefix=f"isoparm-scenario-{name}-")
-        s = Session(args.isoparm, work, os.path.join(args.scenes, scene))
+        s = Session(args.isoparm, work, os.path.join(args.scenes, scene),
+                    extra_args=extra[0] if extra else ())
         ok = True
         started = time.time()
         try:
@@ -1110,6 +1117,8 @@ def run_scenarios(args):
         else:
             failed += 1
             print(f"scenario {name}: files kept in {work}")
+    for view, (w, h) in sorted(ctx.sizes.items()):
+        print(f"size [{ctx.screen}] {view}: {w}x{h} px")
     print(f"{passed} passed, {failed} failed")
     return 0 if failed == 0 and passed > 0 else 1
 
