@@ -92,8 +92,10 @@ void answer_detach(AppContext& ctx) {
 void detach_selected(AppContext& ctx) {
     const doc::Object* o = ctx.doc.selected();
     if (!o || !o->construction) return;
+    const std::string name = o->name;
     ctx.seal();
-    ctx.execute(doc::detach(o->id));
+    if (ctx.execute(doc::detach(o->id)))
+        ctx.ui.status = "Detached '" + name + "': it no longer follows its curves";
     ctx.seal();
 }
 

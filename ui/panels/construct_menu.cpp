@@ -411,6 +411,7 @@ bool build(AppContext& ctx) {
             twin = o.name;
     const std::string title = std::string(doc::construction_label(r.kind)) + ": not built";
     ctx.seal();
+    // The recipe, not the surface: a recording (a lesson) keeps "revolve curve 2".
     const bool ok = ctx.execute(doc::construct(r));
     ctx.seal();
     if (!ok) {
