@@ -42,7 +42,14 @@ std::optional<Rect> box_position(AppContext& ctx, const Lesson& lesson, float wi
         float covered = 0;
         for (const Rect& o : focus.objects) covered += overlap_area(r, o);
         if (covered > 0) {
-            fit_camera_into(ctx.ui.camera, focus_points(ctx.doc), view, free_beside(view, r));
+            // The points' disks (focus.points, 14 k around each point) stay clear of the box
+            // too, not only their centres: otherwise a point at the free part's edge comes
+            // under the box by a pixel and the box is placed again on every frame.
+            const Rect free = free_beside(view, r);
+            const float m = 14 * k;
+            const Rect inside{free.x + m, free.y + m, std::max(0.f, free.w - 2 * m),
+                              std::max(0.f, free.h - 2 * m)};
+            fit_camera_into(ctx.ui.camera, focus_points(ctx.doc), view, inside);
             ctx.ui.camera_needs_fit = false;
         }
     }
