@@ -124,11 +124,21 @@ def implicit_editor_after_new_implicit(s, ctx):
     ctx.shot(s, "implicit-editor")
 
 
+def detach_the_vase(s):
+    """fig8's vase is a revolution of its profile: it follows the profile and refuses edits of
+    its own points. Construct > Detach makes it a free surface (one undo step)."""
+    s.click_named("objects/vase")
+    s.wait_for("the vase selected", lambda r: r["selected"] == "vase")
+    s.menu("Construct", "Detach (free the selected object)")
+    s.wait_for("the vase detached", lambda r: r["undo"] == "Detach vase")
+    check("construction" not in by_name(s.save(), "vase"), "Detach left the vase's recipe")
+
+
 def control_points_after_starting_with_a_curve(s, ctx):
     """fig8-revolution starts with its profile curve selected; select the surface and a point,
     then drag the point in the xy plane of the control-point panel."""
     r = s.wait_for("the curve designer", lambda r: "curve/canvas" in r["rects"])
-    s.click_named("objects/vase")
+    detach_the_vase(s)
     r = s.wait_for("the vase selected", lambda r: r["selected"] == "vase")
     if not r["control_points"]:  # this scene hides them: C shows them, as the help says
         s.key("c")
@@ -506,6 +516,7 @@ def exercise_fails_then_passes(s, ctx):
 def toolbox_split_knot_then_convert(s, ctx):
     """Surface menu: split the double knot v = 0.5 under the indicator (the shape moves a
     little, the knots change), then Convert to > Bezier asks first and makes the pieces."""
+    detach_the_vase(s)
     before = s.save()
     s.menu("Surface", "Reshape", "Split knot v = 0.5 (x2)")
     r = s.wait_for("the split knot", lambda r: r["undo"].startswith("Split knot v = 0.5"))
@@ -559,10 +570,13 @@ def wait_for_file(path, timeout=15):
 
 
 def type_file_name(s, text):
-    """Replaces the file dialog's name and presses Enter (Ctrl+A, the name, Enter: the window
-    queues keys, so a quick Ctrl+A from xdotool arrives whole at any frame time)."""
-    x, y, w, h = s.rect("file/name")
-    s.click(x + w * 0.3, y + h / 2)
+    """Replaces the file dialog's name and presses Enter. The dialog gives the name field the
+    keyboard with the name selected, so typing replaces it; Ctrl+A selects it again (a click is
+    made only when the field does not have the keyboard: a click into a field that has it
+    places the cursor, and a fast Ctrl+A under the held button was lost to ImGui's text drag)."""
+    if not s.report().get("typing"):
+        x, y, w, h = s.rect("file/name")
+        s.click(x + w * 0.3, y + h / 2)
     s.wait_for("the name field to take the keyboard", lambda r: r.get("typing"))
     s.key("ctrl+a")
     s.xdo("type", "--delay", "30", text)

@@ -121,6 +121,20 @@ void construct_menu(AppContext& ctx) {
         if (k == 6) ImGui::Separator(); // from a boundary or a network of curves
         if (menu_item(items[k])) open_dialog(ctx, k);
     }
+    ImGui::Separator();
+    // A constructed object follows its curves and refuses edits of its own points; detaching it
+    // (one undo step) makes it a free object again.
+    const doc::Object* sel = ctx.doc.selected();
+    const bool linked = sel && sel->construction;
+    if (menu_item("Detach (free the selected object)", nullptr, false, linked)) {
+        const std::string name = sel->name;
+        ctx.seal();
+        if (ctx.execute(doc::detach(sel->id)))
+            ctx.ui.status = "Detached '" + name + "': it no longer follows its curves";
+        ctx.seal();
+    }
+    if (!linked && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("Select a constructed object (one built from curves, still linked)");
     ImGui::EndMenu();
 }
 

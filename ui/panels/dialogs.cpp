@@ -194,7 +194,11 @@ void file_dialog(AppContext& ctx) {
     ImGui::EndChild();
     ImGui::SetNextItemWidth(-1);
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere(); // type a name right away
-    const bool enter = ImGui::InputText("##name", &fd.name, ImGuiInputTextFlags_EnterReturnsTrue);
+    // A click on the name selects all of it, so typing replaces it (a file name is most often
+    // typed anew).
+    const bool enter =
+        ImGui::InputText("##name", &fd.name,
+                         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
     report_item("file/name");
     if (enter && !fd.name.empty()) chosen = fd.name;
     fs::path target = fs::path(fd.directory) / fd.name;
