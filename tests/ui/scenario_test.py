@@ -1082,8 +1082,13 @@ def box_select_a_row_and_raise_it(s, ctx):
     zs = [d[1] for d in dots]
     others = [s.rect(f"cp/dot1/{q},0")[0] for q in range(5) if q != i]
     gap = min(abs(o - xs[0]) for o in others) / 2
-    x0, y0 = min(xs) - gap * 0.8, min(zs) - 12
-    x1, y1 = max(xs) + gap * 0.8, max(zs) + 12
+    # The box runs from the plane's top edge to its bottom edge: a press within the pick
+    # radius of a dot (12 px in presentation mode, where the plane is 75 px and the hill's
+    # dots lie within 8 px of z) would drag that point instead of starting a box.
+    px, py, pw, ph = s.rect("cp/plane1")
+    check(max(zs) - min(zs) < ph - 8, f"the xz plane ({ph} px) is too short for the row")
+    x0, y0 = min(xs) - gap * 0.8, py + 3
+    x1, y1 = max(xs) + gap * 0.8, py + ph - 3
     s.drag(x0, y0, x1 - x0, y1 - y0)
     r = s.wait_for("the row selected", lambda r: r.get("selection_size") == 5)
     tip = s.rect("cp/handle1/z")

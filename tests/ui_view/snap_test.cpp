@@ -69,7 +69,7 @@ TEST(Snap, GridRangeListsTheLinesInsideAView) {
     EXPECT_GT(grid_range({1, 0}, 0.2, 0.8).first, grid_range({1, 0}, 0.2, 0.8).last);
 }
 
-TEST(Snap, PlanePointsSnapToPointsThenAxesThenTheGrid) {
+TEST(Snap, PlanePointsSnapToPointsThenAxesThenAlignmentsThenTheGrid) {
     SnapSettings s; // grid, axes and points, 8 px
     const GridStep step{1, -1};
     const double upp = 0.01; // 100 px per unit: the radius is 0.08 units
@@ -82,6 +82,14 @@ TEST(Snap, PlanePointsSnapToPointsThenAxesThenTheGrid) {
     EXPECT_EQ(b.p, glm::dvec2(0, 0.8));
     EXPECT_EQ(b.kind[0], SnapKind::axis);
     EXPECT_EQ(b.kind[1], SnapKind::grid);
+    // Aligned with another point in one coordinate only: exactly that coordinate (1.55 is not a
+    // grid value), the other to the grid; the axis wins over an alignment.
+    Snapped2 d = snap_plane_point({1.56, 0.77}, s, step, upp, {{1.55, 0.3}, {1.5, 2}});
+    EXPECT_EQ(d.p, glm::dvec2(1.55, 0.8));
+    EXPECT_EQ(d.kind[0], SnapKind::point);
+    EXPECT_EQ(d.kind[1], SnapKind::grid);
+    EXPECT_EQ(d.point, -1);
+    EXPECT_EQ(snap_plane_point({0.003, 0.77}, s, step, upp, {{0.01, 3}}).p, glm::dvec2(0, 0.8));
     // Axes without the grid.
     s.grid = false;
     Snapped2 c = snap_plane_point({0.05, 0.77}, s, step, upp, {});

@@ -57,7 +57,12 @@ std::optional<HandleLayout> plane_handle(const AppContext& ctx, const doc::Objec
     const SelectionState& st = ctx.ui.modeler.selection;
     if (!st.handle || st.points.size() < 2 || st.points.object != obj.id) return std::nullopt;
     const float k = ctx.ui.scale();
-    HandleLayout h = handle_layout_plane(map, ax.a, ax.b, selection_pivot(ctx), 48.0 * k);
+    // At most 0.4 of the plane's shorter side: on a projector's small planes (75 px in
+    // presentation mode at 1024x768) a full-size arrow's tip lay outside the plane, where
+    // nobody can grab it.
+    const double size =
+        std::min(48.0 * k, 0.4 * static_cast<double>(std::min(map.canvas.w, map.canvas.h)));
+    HandleLayout h = handle_layout_plane(map, ax.a, ax.b, selection_pivot(ctx), size);
     h.centre_radius = 6.0 * k;
     h.box_half = 4.5 * k;
     return h;

@@ -116,9 +116,26 @@ Snapped2 snap_plane_point(const glm::dvec2& p, const SnapSettings& s, GridStep s
         }
     }
     for (int a = 0; a < 2; ++a) {
+        // Alignment: the nearest other point's coordinate within the radius (P1 straight above
+        // P0), as a drawing program's guides do; it need not be a grid value.
+        double aligned = 0, best = radius;
+        bool align = false;
+        if (s.points) {
+            for (const glm::dvec2& o : others) {
+                const double dist = std::abs(o[a] - p[a]);
+                if (dist <= best) {
+                    best = dist;
+                    aligned = o[a];
+                    align = true;
+                }
+            }
+        }
         if (s.axes && std::abs(p[a]) <= radius) {
             out.p[a] = 0;
             out.kind[a] = SnapKind::axis;
+        } else if (align) {
+            out.p[a] = aligned;
+            out.kind[a] = SnapKind::point;
         } else if (s.grid) {
             out.p[a] = snap_to_grid(p[a], step);
             out.kind[a] = SnapKind::grid;

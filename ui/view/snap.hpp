@@ -52,7 +52,9 @@ struct Snapped2 {
 };
 // A point dragged on a plane canvas with `units_per_px` (world units per pixel): first the
 // nearest of `others` within the radius (exactly its coordinates), else per coordinate the
-// axis within the radius, else the grid value (when grid is on), else as it is.
+// axis within the radius, else the nearest of `others`' same coordinate within the radius
+// (aligned with it: kind point, `point` stays -1), else the grid value (when grid is on),
+// else as it is.
 Snapped2 snap_plane_point(const glm::dvec2& p, const SnapSettings& s, GridStep step,
                           double units_per_px, const std::vector<glm::dvec2>& others);
 // The same in 3D (the 3D view's drag): `others` are compared by their screen distance
