@@ -2,13 +2,18 @@
 // or remote desktop has no GPU): one whole workstation frame at 1440x900, the way the window
 // draws it (no multisampling on a software rasteriser), for what a person does: nothing
 // (a frame drawn for a hover), dragging the indicator, dragging a control point, orbiting.
-// Process CPU time per frame (llvmpipe rasterises on worker threads), glFinish'ed.
+// Process CPU time per frame (llvmpipe rasterises on worker threads), glFinish'ed; each
+// frame's own times too, as the median and 95th percentile a drag's stutter shows in.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cfloat>
+#include <chrono>
 #include <cmath>
+#include <ctime>
 #include <imgui.h>
 #include <string>
+#include <vector>
 
 #include "core/doc/commands.hpp"
 #include "core/doc/commands_curve.hpp"
@@ -26,6 +31,21 @@ namespace {
 using namespace isoparm;
 
 enum class Gesture { idle, indicator, point, orbit, profile };
+
+double process_cpu_ms() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
+}
+
+// The q-quantile (nearest rank) of the frames' times.
+double quantile(std::vector<double> v, double q) {
+    if (v.empty()) return 0;
+    const auto k = static_cast<std::size_t>(std::ceil(q * static_cast<double>(v.size()))) - 1;
+    const std::size_t i = std::min(k, v.size() - 1);
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(i), v.end());
+    return v[i];
+}
 
 // A 64x64 bicubic NURBS surface, gently waved, with varying weights (the big-net drag case).
 doc::Document nurbs_64x64() {
@@ -111,7 +131,10 @@ void BM_Frame1440x900(benchmark::State& state, const char* scene, Gesture gestur
         const int pi = s ? s->n_u / 2 : 0, pj = s ? s->n_v / 2 : 0;
         const glm::dvec3 p0 = s ? s->point(pi, pj) : glm::dvec3(0);
         long n = 0;
+        std::vector<double> wall_ms, cpu_ms;
         for (auto _ : state) {
+            const auto wall0 = std::chrono::steady_clock::now();
+            const double cpu0 = process_cpu_ms();
             const double t = 0.02 * static_cast<double>(n++ % 40); // back and forth
             switch (gesture) {
             case Gesture::idle:
@@ -131,9 +154,17 @@ void BM_Frame1440x900(benchmark::State& state, const char* scene, Gesture gestur
             }
             ws.frame(fbo);
             glFinish();
+            cpu_ms.push_back(process_cpu_ms() - cpu0);
+            wall_ms.push_back(
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall0)
+                    .count());
         }
         state.counters["frames_per_s"] =
             benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsRate);
+        state.counters["wall_med_ms"] = quantile(wall_ms, 0.5);
+        state.counters["wall_p95_ms"] = quantile(wall_ms, 0.95);
+        state.counters["cpu_med_ms"] = quantile(cpu_ms, 0.5);
+        state.counters["cpu_p95_ms"] = quantile(cpu_ms, 0.95);
     }
 }
 
