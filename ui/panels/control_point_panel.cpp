@@ -530,7 +530,12 @@ void selection_section(AppContext& ctx) {
 bool plane_canvases(AppContext& ctx) {
     const float k = ctx.ui.scale();
     const float spacing = ImGui::GetStyle().ItemSpacing.x;
-    const ImVec2 avail = ImGui::GetContentRegionAvail();
+    ImVec2 avail = ImGui::GetContentRegionAvail();
+    // The width as if the scrollbar were shown: ImGui shows it a frame after the content
+    // outgrew the panel, and planes sized to the width without it made the content taller,
+    // then narrower with it, then shorter again, every other frame (the planes flickered by
+    // 6 px at 1920x1080 and a click could miss a button that moved 13 px).
+    if (ImGui::GetScrollMaxY() <= 0) avail.x -= ImGui::GetStyle().ScrollbarSize;
     // Room below for the coordinates, the weight's two fields and its note, so the note (the
     // convex-hull warning) is never below the fold on a projector.
     double w = 1;
