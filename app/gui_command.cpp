@@ -16,6 +16,7 @@
 #include <imgui_impl_glfw.h>
 
 #include "app/commands.hpp"
+#include "app/keep_libraries_loaded.hpp"
 #include "app/window_input.hpp"
 #include "core/scene/autosave.hpp"
 #include "core/scene/autosave_timer.hpp"
@@ -195,6 +196,7 @@ int run_window(const std::string& scene, const std::string& lesson, int autosave
     glfwSetWindowPos(window, place.x, place.y);
     glfwShowWindow(window);
     glfwMakeContextCurrent(window);
+    keep_libraries_loaded_for_leak_reports(); // the driver is loaded once a context is current
     glfwSwapInterval(1);
     ui::ScreenRect windowed = place; // where F11 returns to
     float xs = 1, ys = 1;
@@ -294,6 +296,7 @@ int run_window(const std::string& scene, const std::string& lesson, int autosave
             ImGui_ImplGlfw_Shutdown();
         }
     }
+    keep_libraries_loaded_for_leak_reports(); // and those loaded since (cursors, dialogs)
     glfwDestroyWindow(window);
     glfwTerminate();
     return status;
