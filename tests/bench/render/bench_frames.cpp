@@ -159,6 +159,7 @@ void BM_Frame1440x900(benchmark::State& state, const char* scene, Gesture gestur
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall0)
                     .count());
         }
+        state.SetLabel(egl->renderer_name()); // the figures are this renderer's (llvmpipe here)
         state.counters["frames_per_s"] =
             benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsRate);
         state.counters["wall_med_ms"] = quantile(wall_ms, 0.5);
