@@ -1,6 +1,5 @@
 // `isoparm [SCENE]`: the workstation window (GLFW, OpenGL 3.3 core, Dear ImGui).
 #include <algorithm>
-#include <array>
 #include <atomic>
 #include <chrono>
 #include <cstdlib>
@@ -14,9 +13,10 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
-#include <imgui_impl_glfw.h> // ImGui_ImplGlfw_KeyCallback
+#include <imgui_impl_glfw.h>
 
 #include "app/commands.hpp"
+#include "app/window_input.hpp"
 #include "core/scene/autosave.hpp"
 #include "core/scene/autosave_timer.hpp"
 #include "ui/actions.hpp"
@@ -56,63 +56,7 @@ void request_frame() {
 void wake(GLFWwindow*) {
     pending_frames() = 3;
 }
-void on_cursor(GLFWwindow* w, double, double) {
-    wake(w);
-}
-void on_button(GLFWwindow* w, int, int, int) {
-    wake(w);
-}
-void on_scroll(GLFWwindow* w, double, double) {
-    wake(w);
-}
-// Keys reach ImGui through here. ImGui 1.86 reads key state once per frame, so a press and
-// its release between two frames (a quick tap while a CPU rasteriser draws a slow frame) would
-// never be seen: Enter in a number field would be lost. A release that follows its press
-// within one frame is held back and given to ImGui after that frame.
-struct KeyRelay {
-    std::vector<int> pressed_this_frame;
-    std::vector<std::array<int, 4>> held_releases; // key, scancode, action, mods
-};
-KeyRelay& key_relay() {
-    static KeyRelay relay;
-    return relay;
-}
-
-void on_key(GLFWwindow* w, int key, int scancode, int action, int mods) {
-    wake(w);
-    KeyRelay& relay = key_relay();
-    if (action == GLFW_PRESS) relay.pressed_this_frame.push_back(key);
-    if (action == GLFW_RELEASE &&
-        std::find(relay.pressed_this_frame.begin(), relay.pressed_this_frame.end(), key) !=
-            relay.pressed_this_frame.end())
-        relay.held_releases.push_back({key, scancode, action, mods});
-    else
-        ImGui_ImplGlfw_KeyCallback(w, key, scancode, action, mods);
-    if (action == GLFW_RELEASE) return;
-    auto* ctx = static_cast<ui::AppContext*>(glfwGetWindowUserPointer(w));
-    if (ctx)
-        ctx->ui.key_presses.push_back({key, (mods & GLFW_MOD_CONTROL) != 0,
-                                       (mods & GLFW_MOD_SHIFT) != 0, (mods & GLFW_MOD_ALT) != 0});
-}
-
-// After a frame: the frame saw the presses; now the releases held back for it.
-void release_held_keys(GLFWwindow* w) {
-    KeyRelay& relay = key_relay();
-    relay.pressed_this_frame.clear();
-    if (relay.held_releases.empty()) return;
-    for (const auto& [key, scancode, action, mods] : relay.held_releases)
-        ImGui_ImplGlfw_KeyCallback(w, key, scancode, action, mods);
-    relay.held_releases.clear();
-    wake(w); // one more frame, in which ImGui sees the keys up
-}
-
-void on_char(GLFWwindow* w, unsigned) {
-    wake(w);
-}
 void on_size(GLFWwindow* w, int, int) {
-    wake(w);
-}
-void on_focus(GLFWwindow* w, int) {
     wake(w);
 }
 
@@ -261,12 +205,6 @@ int run_window(const std::string& scene, const std::string& lesson, int autosave
             status = 1;
         } else {
             ctx.settings = settings;
-            // Ours first, so ImGui's backend chains to them.
-            glfwSetCursorPosCallback(window, on_cursor);
-            glfwSetMouseButtonCallback(window, on_button);
-            glfwSetScrollCallback(window, on_scroll);
-            glfwSetCharCallback(window, on_char);
-            glfwSetWindowFocusCallback(window, on_focus);
             glfwSetFramebufferSizeCallback(window, on_size);
             glfwSetWindowContentScaleCallback(window, [](GLFWwindow* w, float sx, float sy) {
                 auto* c = static_cast<ui::AppContext*>(glfwGetWindowUserPointer(w));
@@ -274,9 +212,9 @@ int run_window(const std::string& scene, const std::string& lesson, int autosave
                 wake(w);
             });
             glfwSetWindowUserPointer(window, &ctx);
-            ImGui_ImplGlfw_InitForOpenGL(window, true);
-            // After the backend's own: ours forwards keys to it (see KeyRelay).
-            glfwSetKeyCallback(window, on_key);
+            // The backend without its callbacks: input goes through the queue (window_input).
+            ImGui_ImplGlfw_InitForOpenGL(window, false);
+            install_input_queue(window, wake);
 
             if (!scene.empty() && !ui::open_file(ctx, scene))
                 std::cerr << "isoparm: " << ctx.ui.error_message << "\n";
@@ -311,8 +249,9 @@ int run_window(const std::string& scene, const std::string& lesson, int autosave
                     pending_frames() = std::max(pending_frames(), 1);
                 const auto t0 = std::chrono::steady_clock::now();
                 ImGui_ImplGlfw_NewFrame();
+                if (feed_input_frame(ctx.ui.key_presses)) // more events than one frame shows
+                    pending_frames() = std::max(pending_frames(), 1);
                 ws.frame(0);
-                release_held_keys(window);
                 glfwSwapBuffers(window);
                 // The work of a frame, not the time between frames (idle waits excluded).
                 const double ms =

@@ -6,6 +6,7 @@
 #   python3 tests/ui/scenario_test.py --xvfb --screen 1024x768 --isoparm build/app/isoparm \
 #       --scenes assets/scenes [--only curve_designer] [--shots DIR]
 import argparse
+import contextlib
 import json
 import os
 import shutil
@@ -379,14 +380,12 @@ def wait_for_file(path, timeout=15):
 
 
 def type_file_name(s, text):
-    """Replaces the file dialog's name and presses Enter: End, then BackSpace over it one key
-    a frame (ImGui 1.86 misses a key pressed and released within one frame, so a quick
-    Ctrl+A from xdotool is not reliable there)."""
+    """Replaces the file dialog's name and presses Enter (Ctrl+A, the name, Enter: the window
+    queues keys, so a quick Ctrl+A from xdotool arrives whole at any frame time)."""
     x, y, w, h = s.rect("file/name")
     s.click(x + w * 0.3, y + h / 2)
     s.wait_for("the name field to take the keyboard", lambda r: r.get("typing"))
-    s.key("End")
-    s.xdo("key", "--clearmodifiers", "--repeat", "30", "--delay", "80", "BackSpace")
+    s.key("ctrl+a")
     s.xdo("type", "--delay", "30", text)
     s.key("Return")
     s.wait_for("the name field to let go of the keyboard", lambda r: not r.get("typing"))
@@ -716,12 +715,27 @@ def main():
     ap.add_argument("--keep", action="store_true")
     ap.add_argument("--presentation", action="store_true",
                     help="run every scenario in presentation mode (P first)")
+    ap.add_argument("--busy", type=int, default=0, metavar="N",
+                    help="N processes spinning on the CPU meanwhile (a slow, shared machine: "
+                         "every keystroke and drag must still arrive)")
     args = ap.parse_args()
-    with display(args.xvfb, args.screen) as name:
+    with display(args.xvfb, args.screen) as name, busy_processes(args.busy):
         if not name:
             print("scenario: no display; pass --xvfb or set DISPLAY", file=sys.stderr)
             return 2
         return run_scenarios(args)
+
+
+@contextlib.contextmanager
+def busy_processes(n):
+    """n processes that keep a core busy each (at the window's priority) until the end."""
+    procs = [subprocess.Popen([sys.executable, "-c", "while True: pass"]) for _ in range(n)]
+    try:
+        yield
+    finally:
+        for p in procs:
+            p.kill()
+            p.wait()
 
 
 def run_scenarios(args):

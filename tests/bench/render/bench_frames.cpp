@@ -6,6 +6,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cfloat>
+#include <cmath>
 #include <imgui.h>
 #include <string>
 
@@ -25,6 +26,23 @@ using namespace isoparm;
 
 enum class Gesture { idle, indicator, point, orbit };
 
+// A 64x64 bicubic NURBS surface, gently waved, with varying weights (the big-net drag case).
+doc::Document nurbs_64x64() {
+    doc::Document d;
+    doc::Object o;
+    o.name = "net64";
+    geom::Surface s = doc::make_planar_grid(64, 64, 3, 3, geom::SplineType::nurbs);
+    for (int i = 0; i < s.n_u; ++i)
+        for (int j = 0; j < s.n_v; ++j) {
+            s.point(i, j).z = 0.1 * std::sin(0.4 * i) * std::cos(0.3 * j);
+            s.weight(i, j) = 1.0 + 0.25 * std::sin(0.7 * i + 0.2 * j);
+        }
+    o.shape = doc::SurfaceObject{s};
+    d.objects.push_back(o);
+    d.objects.back().id = d.allocate_id();
+    return d;
+}
+
 void BM_Frame1440x900(benchmark::State& state, const char* scene, Gesture gesture) {
     std::string error;
     const std::unique_ptr<ui::EglContext> egl = ui::EglContext::create(error);
@@ -32,7 +50,10 @@ void BM_Frame1440x900(benchmark::State& state, const char* scene, Gesture gestur
         state.SkipWithError(("no headless OpenGL: " + error).c_str());
         return;
     }
-    auto loaded = scene::load_scene(std::string(ISOPARM_SOURCE_DIR "/assets/scenes/") + scene);
+    // No scene file: the 64x64 net.
+    auto loaded = *scene ? scene::load_scene(std::string(ISOPARM_SOURCE_DIR "/assets/scenes/") +
+                                             scene)
+                         : geom::Expected<doc::Document>(nurbs_64x64());
     if (!loaded.ok()) {
         state.SkipWithError(loaded.error().message.c_str());
         return;
@@ -92,6 +113,7 @@ FRAME_CASE(fig3b_idle, "fig3b-weight-5.json", Gesture::idle);
 FRAME_CASE(fig3b_indicator_drag, "fig3b-weight-5.json", Gesture::indicator);
 FRAME_CASE(fig3b_point_drag, "fig3b-weight-5.json", Gesture::point);
 FRAME_CASE(fig3b_orbit, "fig3b-weight-5.json", Gesture::orbit);
+FRAME_CASE(nurbs64_point_drag, "", Gesture::point);
 FRAME_CASE(implicit_gallery_idle, "implicit-gallery.json", Gesture::idle);
 // Each frame redraws some 880k triangles: the closed meshes without their hidden side.
 FRAME_CASE(implicit_gallery_orbit, "implicit-gallery.json", Gesture::orbit);
