@@ -7,6 +7,7 @@
 #include "core/scene/scene_io.hpp"
 #include "core/scene/script.hpp"
 #include "ui/lesson.hpp"
+#include "ui/platform/files.hpp"
 #include "ui/view/doc_access.hpp"
 #include "ui/view/scene_budget.hpp"
 #include "ui/view/scene_builder.hpp"
@@ -174,6 +175,7 @@ bool save_as(AppContext& ctx, const std::string& path) {
     add_recent(ctx.settings.recent, std::filesystem::absolute(path).lexically_normal().string());
     store_settings(ctx);
     ctx.ui.status = "Saved " + path;
+    files::hand_over(path); // the browser downloads it
     return true;
 }
 
@@ -278,6 +280,7 @@ bool save_recording(AppContext& ctx, const std::string& path) {
     ctx.ui.finished_recording.reset();
     ctx.ui.status = "Recording saved: " + path + " (" + std::to_string(steps) +
                     " steps; isoparm script replays it)";
+    files::hand_over(path);
     return true;
 }
 
@@ -313,7 +316,8 @@ void show_error(AppContext& ctx, const std::string& title, const std::string& me
 }
 
 void store_settings(AppContext& ctx) {
-    if (ctx.remember_settings) save_settings(ctx.settings, settings_path());
+    if (ctx.remember_settings && save_settings(ctx.settings, settings_path()))
+        files::keep_settings(); // the browser's local storage
 }
 
 } // namespace isoparm::ui

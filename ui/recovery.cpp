@@ -10,6 +10,7 @@
 #include "core/doc/restore_command.hpp"
 #include "core/scene/scene_io.hpp"
 #include "ui/actions.hpp"
+#include "ui/ui_report.hpp"
 #include "ui/view/doc_access.hpp"
 
 namespace isoparm::ui {
@@ -96,7 +97,9 @@ void draw_recovery_dialog(AppContext& ctx) {
     ImGui::TextWrapped("Restore opens them as unsaved changes (Undo returns to %s).",
                        offer.origin.empty() ? "a new scene" : "the saved scene");
     ImGui::Spacing();
-    if (ImGui::Button("Restore")) {
+    const bool restore = ImGui::Button("Restore");
+    report_item("recovery/restore");
+    if (restore) {
         ImGui::CloseCurrentPopup();
         r.offers.erase(r.offers.begin());
         hold_all(r); // one document at a time: the others are offered at the next start

@@ -1,14 +1,16 @@
 // The workstation in a browser: emscripten's GLFW on a canvas that fills the page, WebGL 2,
-// and a per-frame function the browser calls (requestAnimationFrame) instead of a loop.
+// and the window's turn (app/window_loop.hpp) called once per animation frame, since a page
+// cannot run a loop of its own.
 //
-// The page's address chooses what opens: ?scene=NAME (an example scene, assets/scenes/NAME.json)
-// and ?lesson=NAME (assets/lessons/NAME.json); ?report=1 records the UI report
-// (ui/ui_report.hpp) for tests, which read it through Module.uiReport().
+// The page's address chooses what opens: ?scene=NAME (an example, assets/scenes/NAME.json) and
+// ?lesson=NAME (assets/lessons/NAME.json). ?report=1 records the UI report for tests
+// (app/web/web_pre.js); ?autosave=S autosaves every S seconds instead of 15. Module.isoparmFrames collects each drawn frame's work in milliseconds
+// and Module.isoparmFirstFrame the time of the first (performance.now()).
 #include <emscripten/emscripten.h>
 #include <emscripten/html5.h>
+#include <unistd.h>
 
-#include <algorithm>
-#include <chrono>
+#include <cstdlib>
 #include <memory>
 #include <string>
 
@@ -17,51 +19,32 @@
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 
+#include "app/window_loop.hpp"
 #include "ui/actions.hpp"
+#include "ui/view/settings.hpp"
 #include "ui/workstation.hpp"
 
 namespace isoparm::web {
 
 namespace {
 
+// Autosaves are cheap in memory and a closed tab is likelier than a crash: every 15 s.
+constexpr int autosave_seconds = 15;
+
 struct WebApp {
     GLFWwindow* window = nullptr;
     std::unique_ptr<ui::Workstation> workstation;
-    int pending_frames = 3;
-    bool drew_once = false;
-    std::string title;
+    std::unique_ptr<app::WindowLoop> loop;
 };
 
-WebApp& app() {
+WebApp& web_app() {
     static WebApp a;
     return a;
 }
 
-void wake(GLFWwindow*) {
-    app().pending_frames = 3;
-}
-void on_cursor(GLFWwindow* w, double, double) {
-    wake(w);
-}
-void on_button(GLFWwindow* w, int, int, int) {
-    wake(w);
-}
-void on_scroll(GLFWwindow* w, double, double) {
-    wake(w);
-}
-void on_char(GLFWwindow* w, unsigned) {
-    wake(w);
-}
-void on_key(GLFWwindow* w, int key, int, int action, int mods) {
-    wake(w);
-    if (action == GLFW_RELEASE || !app().workstation) return;
-    app().workstation->context().ui.key_presses.push_back({key, (mods & GLFW_MOD_CONTROL) != 0,
-                                                           (mods & GLFW_MOD_SHIFT) != 0,
-                                                           (mods & GLFW_MOD_ALT) != 0});
-}
-
 EM_JS(int, page_width, (), { return window.innerWidth; });
 EM_JS(int, page_height, (), { return window.innerHeight; });
+// The value of ?name=... in the page's address (malloc'd; "" when absent).
 EM_JS(char*, page_parameter, (const char* name), {
     const value = new URLSearchParams(window.location.search).get(UTF8ToString(name)) || "";
     const size = lengthBytesUTF8(value) + 1;
@@ -69,11 +52,38 @@ EM_JS(char*, page_parameter, (const char* name), {
     stringToUTF8(value, out, size);
     return out;
 });
-// The frame's work in milliseconds, for the page (the test reads Module.isoparmFrames).
-EM_JS(void, frame_done, (double ms), {
-    if (!Module.isoparmFrames) Module.isoparmFrames = [];
-    Module.isoparmFrames.push(ms);
-    if (Module.isoparmFirstFrame == = undefined) Module.isoparmFirstFrame = performance.now();
+// WebGL drawn by the CPU (SwiftShader, llvmpipe under the browser): multisampling costs
+// there what it costs in the desktop's software_renderer().
+EM_JS(int, software_webgl, (), {
+    const gl = Module.canvas.getContext('webgl2');
+    const info = gl && gl.getExtension('WEBGL_debug_renderer_info');
+    const name = info ? String(gl.getParameter(info.UNMASKED_RENDERER_WEBGL)) : "";
+    return /SwiftShader|llvmpipe|softpipe|Software/i.test(name) ? 1 : 0;
+});
+EM_JS(void, frame_drawn, (double ms), {
+    (Module.isoparmFrames = Module.isoparmFrames || []).push(ms);
+    if (Module.isoparmFirstFrame === undefined) Module.isoparmFirstFrame = performance.now();
+});
+// emscripten 3.1.6's GLFW has no clipboard: ImGui's copy goes to the browser's clipboard, and
+// its paste reads the text of the page's last paste event (a page may not read the clipboard
+// whenever it likes).
+EM_JS(void, install_paste_listener, (), {
+    Module.isoparmPasted = "";
+    document.addEventListener('paste', function(e) {
+        Module.isoparmPasted = (e.clipboardData && e.clipboardData.getData('text/plain')) || "";
+    });
+});
+EM_JS(void, copy_text, (const char* text), {
+    const s = UTF8ToString(text);
+    Module.isoparmPasted = s; // pasting inside the page works even where writing is refused
+    if (navigator.clipboard) navigator.clipboard.writeText(s).catch(function() {});
+});
+EM_JS(char*, pasted_text, (), {
+    const s = Module.isoparmPasted || "";
+    const size = lengthBytesUTF8(s) + 1;
+    const out = _malloc(size);
+    stringToUTF8(s, out, size);
+    return out;
 });
 
 std::string parameter(const char* name) {
@@ -83,30 +93,48 @@ std::string parameter(const char* name) {
     return s;
 }
 
+void set_clipboard(void*, const char* text) {
+    copy_text(text);
+}
+const char* get_clipboard(void*) {
+    static std::string text;
+    char* s = pasted_text();
+    text = s;
+    free(s);
+    return text.c_str();
+}
+
 EM_BOOL on_resize(int, const EmscriptenUiEvent*, void*) {
-    glfwSetWindowSize(app().window, page_width(), page_height());
-    app().pending_frames = 3;
+    glfwSetWindowSize(web_app().window, page_width(), page_height());
+    app::wake_window(web_app().window);
     return EM_FALSE;
 }
 
-void frame(void*) {
-    WebApp& a = app();
+// The page is about to go (reload, close, another address): unsaved work goes to the recovery
+// file now, and the browser asks whether to leave.
+const char* on_before_unload(int, const void*, void*) {
+    WebApp& a = web_app();
+    a.loop->autosave_now();
+    return a.workstation->context().dirty() ? "The scene has unsaved changes." : nullptr;
+}
+
+void turn(void*) {
+    WebApp& a = web_app();
+    if (!a.loop->turn()) return;
+    frame_drawn(a.loop->last_frame_ms());
     ui::AppContext& ctx = a.workstation->context();
-    if (a.pending_frames == 0) return; // nothing happened: the last picture stands
-    --a.pending_frames;
-    if (ImGui::IsAnyItemActive() && ImGui::IsAnyMouseDown())
-        a.pending_frames = std::max(a.pending_frames, 1);
-    const auto t0 = std::chrono::steady_clock::now();
-    ImGui_ImplGlfw_NewFrame();
-    a.workstation->frame(0);
-    const double ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    double& shown = ctx.ui.frame_ms;
-    shown = shown <= 0 ? ms : shown * 0.8 + ms * 0.2;
-    frame_done(ms);
-    if (const std::string t = ctx.title(); t != a.title) {
-        glfwSetWindowTitle(a.window, t.c_str());
-        a.title = t;
+    if (ctx.ui.fullscreen_request) { // F11 or the menu: the browser's full screen
+        ctx.ui.fullscreen_request = false;
+        EmscriptenFullscreenChangeEvent state{};
+        emscripten_get_fullscreen_status(&state);
+        if (state.isFullscreen)
+            emscripten_exit_fullscreen();
+        else
+            emscripten_request_fullscreen("#canvas", EM_TRUE);
+    }
+    if (ctx.ui.quit_now) { // a page cannot close itself: it starts afresh instead
+        ctx.ui.quit_now = false;
+        ui::new_document(ctx);
     }
 }
 
@@ -114,29 +142,52 @@ void frame(void*) {
 
 } // namespace isoparm::web
 
+// For the page's scripts: draw a frame (an upload arrived).
+extern "C" EMSCRIPTEN_KEEPALIVE void isoparm_web_wake() {
+    isoparm::app::request_frame();
+}
+
+// For tests: 1 when no frame is due, i.e. the picture shows everything that happened.
+extern "C" EMSCRIPTEN_KEEPALIVE int isoparm_web_idle() {
+    const isoparm::web::WebApp& a = isoparm::web::web_app();
+    return a.loop && !a.loop->frame_due() ? 1 : 0;
+}
+
 int main() {
     using namespace isoparm;
-    web::WebApp& a = web::app();
+    web::WebApp& a = web::web_app();
+    // The file dialog starts among the page's own files: scenes/ and lessons/.
+    if (chdir("/isoparm/assets") != 0) return 1;
     if (!glfwInit()) return 1;
-    a.window = glfwCreateWindow(web::page_width(), web::page_height(), "isoparm", nullptr, nullptr);
+    a.window =
+        glfwCreateWindow(web::page_width(), web::page_height(), "isoparm", nullptr, nullptr);
     if (!a.window) return 1;
     glfwMakeContextCurrent(a.window);
+    // The settings the last visit kept in local storage (web_pre.js put them in place).
+    ui::Settings settings = ui::load_settings(ui::settings_path());
     a.workstation = std::make_unique<ui::Workstation>(
-        ui::WorkstationOptions{/*headless=*/false, 1.0f, ui::ViewMode::workstation, 4,
-                               [] { web::app().pending_frames = 3; }});
-    glfwSetCursorPosCallback(a.window, web::on_cursor);
-    glfwSetMouseButtonCallback(a.window, web::on_button);
-    glfwSetScrollCallback(a.window, web::on_scroll);
-    glfwSetCharCallback(a.window, web::on_char);
-    glfwSetKeyCallback(a.window, web::on_key);
-    ImGui_ImplGlfw_InitForOpenGL(a.window, true);
+        ui::WorkstationOptions{/*headless=*/false, 1.0f, ui::ViewMode::workstation,
+                               web::software_webgl() ? 0 : 4, app::request_frame});
+    ui::AppContext& ctx = a.workstation->context();
+    ctx.settings = settings;
+    ImGui_ImplGlfw_InitForOpenGL(a.window, false);
+    ImGuiIO& io = ImGui::GetIO();
+    web::install_paste_listener();
+    io.SetClipboardTextFn = web::set_clipboard;
+    io.GetClipboardTextFn = web::get_clipboard;
+    const std::string every = web::parameter("autosave");
+    a.loop = std::make_unique<app::WindowLoop>(
+        a.window, *a.workstation, every.empty() ? web::autosave_seconds : std::atoi(every.c_str()),
+        nullptr);
     emscripten_set_resize_callback(EMSCRIPTEN_EVENT_TARGET_WINDOW, nullptr, EM_FALSE,
                                    web::on_resize);
-    ui::AppContext& ctx = a.workstation->context();
+    emscripten_set_beforeunload_callback(nullptr, web::on_before_unload);
     if (const std::string s = web::parameter("scene"); !s.empty())
         ui::open_file(ctx, "/isoparm/assets/scenes/" + s + ".json");
     if (const std::string l = web::parameter("lesson"); !l.empty())
         ui::open_lesson(ctx, "/isoparm/assets/lessons/" + l + ".json");
-    emscripten_set_main_loop_arg(web::frame, nullptr, 0, false);
+    // Work a closed tab or a crash left: the recovery folder came back from IndexedDB.
+    ctx.ui.recovery.offers = app::recovery_offers("", ctx.settings.recent);
+    emscripten_set_main_loop_arg(web::turn, nullptr, 0, false);
     return 0;
 }

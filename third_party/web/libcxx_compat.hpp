@@ -21,6 +21,10 @@
 //   std::thread there throws. This jthread runs its function to completion inside its
 //   constructor: a background job (ui/view/implicit_meshes.cpp) is finished when started and
 //   its caller sees it done the next time it looks.
+//
+// The conversions themselves (namespace isoparm_web_compat) are plain C++: the desktop's tests
+// compile them with ISOPARM_WEB_COMPAT_TEST and compare them with libstdc++'s
+// (tests/web/charconv_compat_test.cpp).
 #pragma once
 
 #if defined(__EMSCRIPTEN__) && defined(__cplusplus)
@@ -29,9 +33,14 @@
 
 #if defined(__EMSCRIPTEN__) && defined(__cplusplus) && defined(_LIBCPP_VERSION) &&                 \
     _LIBCPP_VERSION < 14000
+#define ISOPARM_WEB_COMPAT_STD 1
+#endif
+
+#if defined(ISOPARM_WEB_COMPAT_STD) || defined(ISOPARM_WEB_COMPAT_TEST)
 
 #include <atomic>
 #include <bit>
+#include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -39,6 +48,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <system_error>
@@ -64,9 +74,15 @@ inline void shortest_digits(double x, std::string& digits, int& exponent) {
     exponent = std::atoi(e + 1);
 }
 
-inline std::string fixed_text(const std::string& d, int e) {
+// |x| in fixed notation from its shortest digits. Past the digits the value is an integer, and
+// of the spellings of that length the standard takes the nearest: the exact one (%.0f).
+inline std::string fixed_text(double x, const std::string& d, int e) {
     const int n = static_cast<int>(d.size());
-    if (e >= n - 1) return d + std::string(static_cast<std::size_t>(e - (n - 1)), '0');
+    if (e >= n - 1) {
+        char buf[400];
+        std::snprintf(buf, sizeof buf, "%.0f", std::fabs(x));
+        return buf;
+    }
     if (e >= 0) return d.substr(0, e + 1) + "." + d.substr(e + 1);
     return "0." + std::string(static_cast<std::size_t>(-e - 1), '0') + d;
 }
@@ -74,7 +90,7 @@ inline std::string fixed_text(const std::string& d, int e) {
 inline std::string scientific_text(const std::string& d, int e) {
     std::string s = d.substr(0, 1);
     if (d.size() > 1) s += "." + d.substr(1);
-    char exp[8];
+    char exp[16];
     std::snprintf(exp, sizeof exp, "e%c%02d", e < 0 ? '-' : '+', e < 0 ? -e : e);
     return s + exp;
 }
@@ -90,7 +106,7 @@ inline std::string shortest_text(double x, int style) {
     shortest_digits(std::fabs(x), digits, exponent);
     const std::string sci = scientific_text(digits, exponent);
     if (style == 1) return sign + sci;
-    const std::string fix = fixed_text(digits, exponent);
+    const std::string fix = fixed_text(x, digits, exponent);
     return sign + (fix.size() <= sci.size() ? fix : sci);
 }
 
@@ -111,7 +127,66 @@ inline bool starts_with_nocase(const char* p, const char* last, const char* word
     return true;
 }
 
+// from_chars for a double: 0, EINVAL (no number) or ERANGE (too large or too small: `value`
+// untouched); `end` is where the number ends.
+inline int parse_double(const char* first, const char* last, double& value, std::chars_format fmt,
+                        const char*& end) {
+    const char* p = first;
+    end = first;
+    if (p != last && *p == '-') ++p;
+    const char* body = p;
+    if (starts_with_nocase(p, last, "inf")) {
+        p += starts_with_nocase(p, last, "infinity") ? 8 : 3;
+    } else if (starts_with_nocase(p, last, "nan")) {
+        p += 3;
+        if (p != last && *p == '(') { // nan(n-char-sequence)
+            const char* q = p + 1;
+            while (q != last &&
+                   (is_digit(*q) || std::isalpha(static_cast<unsigned char>(*q)) || *q == '_'))
+                ++q;
+            if (q != last && *q == ')') p = q + 1;
+        }
+    } else {
+        int digits = 0;
+        while (p != last && is_digit(*p)) ++p, ++digits;
+        if (p != last && *p == '.') {
+            ++p;
+            while (p != last && is_digit(*p)) ++p, ++digits;
+        }
+        if (digits == 0) return EINVAL;
+        const bool may_exp = fmt != std::chars_format::fixed;
+        const bool must_exp = fmt == std::chars_format::scientific;
+        bool had_exp = false;
+        if (may_exp && p != last && (*p == 'e' || *p == 'E')) {
+            const char* q = p + 1;
+            if (q != last && (*q == '+' || *q == '-')) ++q;
+            if (q != last && is_digit(*q)) {
+                while (q != last && is_digit(*q)) ++q;
+                p = q;
+                had_exp = true;
+            }
+        }
+        if (must_exp && !had_exp) return EINVAL;
+    }
+    if (p == body) return EINVAL;
+    end = p;
+    if ((*body | 0x20) == 'n') { // a NaN's payload is not read: the quiet NaN, with its sign
+        value = std::copysign(std::numeric_limits<double>::quiet_NaN(), body == first ? 1.0 : -1.0);
+        return 0;
+    }
+    const std::string text(first, p);
+    errno = 0;
+    const double x = std::strtod(text.c_str(), nullptr);
+    if (errno == ERANGE && (std::isinf(x) || x == 0)) return ERANGE;
+    value = x;
+    return 0;
+}
+
 } // namespace isoparm_web_compat
+
+#endif
+
+#ifdef ISOPARM_WEB_COMPAT_STD
 
 namespace std {
 
@@ -141,9 +216,10 @@ inline to_chars_result to_chars(char* first, char* last, double value, chars_for
         std::string digits;
         int exponent = 0;
         isoparm_web_compat::shortest_digits(std::fabs(value), digits, exponent);
-        return isoparm_web_compat::copy_out(first, last,
-                                            (std::signbit(value) ? "-" : "") +
-                                                isoparm_web_compat::fixed_text(digits, exponent));
+        return isoparm_web_compat::copy_out(
+            first, last,
+            (std::signbit(value) ? "-" : "") +
+                isoparm_web_compat::fixed_text(value, digits, exponent));
     }
     return to_chars(first, last, value); // general: as the plain overload
 }
@@ -167,50 +243,11 @@ inline to_chars_result to_chars(char* first, char* last, double value, chars_for
 
 inline from_chars_result from_chars(const char* first, const char* last, double& value,
                                     chars_format fmt = chars_format::general) {
-    using isoparm_web_compat::is_digit;
-    const char* p = first;
-    if (p != last && *p == '-') ++p;
-    const char* body = p;
-    if (isoparm_web_compat::starts_with_nocase(p, last, "inf")) {
-        p += isoparm_web_compat::starts_with_nocase(p, last, "infinity") ? 8 : 3;
-    } else if (isoparm_web_compat::starts_with_nocase(p, last, "nan")) {
-        p += 3;
-        if (p != last && *p == '(') { // nan(n-char-sequence)
-            const char* q = p + 1;
-            while (q != last &&
-                   (is_digit(*q) || std::isalpha(static_cast<unsigned char>(*q)) || *q == '_'))
-                ++q;
-            if (q != last && *q == ')') p = q + 1;
-        }
-    } else {
-        int digits = 0;
-        while (p != last && is_digit(*p)) ++p, ++digits;
-        if (p != last && *p == '.') {
-            ++p;
-            while (p != last && is_digit(*p)) ++p, ++digits;
-        }
-        if (digits == 0) return {first, errc::invalid_argument};
-        const bool may_exp = fmt != chars_format::fixed;
-        const bool must_exp = fmt == chars_format::scientific;
-        bool had_exp = false;
-        if (may_exp && p != last && (*p == 'e' || *p == 'E')) {
-            const char* q = p + 1;
-            if (q != last && (*q == '+' || *q == '-')) ++q;
-            if (q != last && is_digit(*q)) {
-                while (q != last && is_digit(*q)) ++q;
-                p = q;
-                had_exp = true;
-            }
-        }
-        if (must_exp && !had_exp) return {first, errc::invalid_argument};
-    }
-    if (p == body) return {first, errc::invalid_argument};
-    const std::string text(first, p);
-    errno = 0;
-    const double x = std::strtod(text.c_str(), nullptr);
-    if (errno == ERANGE && (std::isinf(x) || x == 0)) return {p, errc::result_out_of_range};
-    value = x;
-    return {p, errc{}};
+    const char* end = first;
+    const int e = isoparm_web_compat::parse_double(first, last, value, fmt, end);
+    return {end, e == 0        ? errc{}
+                 : e == ERANGE ? errc::result_out_of_range
+                               : errc::invalid_argument};
 }
 
 // A stop state shared by a jthread and its tokens.
