@@ -15,5 +15,7 @@ Action register_render_command(CLI::App& app);   // ISOPARM_GUI only
 Action register_gui_command(CLI::App& app);      // ISOPARM_GUI only: the default with no subcommand
 Action register_examples_command(CLI::App& app); // ISOPARM_GUI only
 Action register_script_command(CLI::App& app);   // ISOPARM_GUI only
+Action register_figure_command(CLI::App& app);   // ISOPARM_GUI only
+Action register_animate_command(CLI::App& app);  // ISOPARM_GUI only
 
 } // namespace isoparm::app

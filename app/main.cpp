@@ -1,5 +1,5 @@
-// Entry point of `isoparm`: dispatches to the workstation, `render`, `script`, `geom`,
-// `export` or `import`.
+// Entry point of `isoparm`: dispatches to the workstation, `render`, `script`, `figure`,
+// `animate`, `geom`, `export` or `import`.
 #include <CLI/CLI.hpp>
 #include <iostream>
 
@@ -27,6 +27,8 @@ int main(int argc, char** argv) {
     const isoparm::app::Action gui = isoparm::app::register_gui_command(app);
     const isoparm::app::Action examples = isoparm::app::register_examples_command(app);
     const isoparm::app::Action script = isoparm::app::register_script_command(app);
+    const isoparm::app::Action figure = isoparm::app::register_figure_command(app);
+    const isoparm::app::Action animate = isoparm::app::register_animate_command(app);
 #endif
     try {
         app.parse(argc, argv);
@@ -41,6 +43,8 @@ int main(int argc, char** argv) {
         if (sub->get_name() == "render") return render();
         if (sub->get_name() == "examples") return examples();
         if (sub->get_name() == "script") return script();
+        if (sub->get_name() == "figure") return figure();
+        if (sub->get_name() == "animate") return animate();
 #endif
     }
 #ifdef ISOPARM_HAVE_GUI

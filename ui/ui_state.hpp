@@ -18,6 +18,7 @@
 #include "core/scene/autosave.hpp"
 #include "core/scene/recorder.hpp"
 #include "ui/lesson.hpp"
+#include "ui/media_export.hpp"
 #include "ui/view/camera.hpp"
 #include "ui/view/canvas_map.hpp"
 #include "ui/view/denominator_view.hpp"
@@ -349,6 +350,8 @@ struct UiState {
     TriangleDenominatorView triangle_denominator; // the same picture on a domain triangle
     HomogeneousState homogeneous;
     int left_tab = 0; // the teaching tab shown below the tracing square (ui/workstation.cpp)
+    // File > Export picture / figure / animation and Ctrl+Shift+C (ui/media_export.hpp).
+    MediaExportState media_export;
 
     // Presentation enlarges everything by half, or by a quarter in a window under 800 px
     // high (a 1024x768 projector), where text is then 19 px and the panels still fit.

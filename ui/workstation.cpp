@@ -9,6 +9,7 @@
 #include <imgui_impl_opengl3.h>
 
 #include "ui/actions.hpp"
+#include "ui/media_export.hpp"
 #include "ui/panels/fit_panel.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/panels/tab_strip.hpp"
@@ -47,7 +48,11 @@ bool begin_panel(const char* name, const Rect& r, ImGuiWindowFlags extra = 0) {
 
 Workstation::Workstation(const WorkstationOptions& options) {
     IMGUI_CHECKVERSION();
-    ImGui::CreateContext();
+    imgui_ = ImGui::CreateContext();
+    // CreateContext makes the new context current only when there is none: a picture export's
+    // workstation is made beside the window's.
+    ImGui::SetCurrentContext(imgui_);
+    transparent_ = options.transparent;
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr; // the layout is ours (settings.json), not imgui.ini
     io.LogFilename = nullptr;
@@ -71,8 +76,13 @@ Workstation::Workstation(const WorkstationOptions& options) {
 Workstation::~Workstation() {
     implicit_.reset(); // stops and joins background polygonizations
     renderer_.reset();
+    make_current();
     ImGui_ImplOpenGL3_Shutdown();
-    ImGui::DestroyContext();
+    ImGui::DestroyContext(imgui_);
+}
+
+void Workstation::make_current() {
+    ImGui::SetCurrentContext(imgui_);
 }
 
 std::string Workstation::renderer_error() const {
@@ -258,6 +268,16 @@ void Workstation::frame(unsigned target_framebuffer) {
         presentation_built_ = ui.presentation;
     }
 
+    // Pictures and animations asked for last frame, between frames: they draw with workstations
+    // of their own (their own ImGui contexts), then this one is current again.
+    {
+        MediaExportState& m = ui.media_export;
+        if (m.pending || m.clipboard_pending || m.job) {
+            run_media_exports(ctx_);
+            make_current();
+            if (m.job && request_frame_) request_frame_(); // the next frames of the animation
+        }
+    }
     ImGui_ImplOpenGL3_NewFrame();
     ImGui::NewFrame();
     // Between gestures (nothing held, no field being edited) the next edit is a new undo step.
@@ -279,6 +299,7 @@ void Workstation::frame(unsigned target_framebuffer) {
         draw_lesson_panel(ctx_);
         draw_dialogs(ctx_);
         draw_construct_dialog(ctx_);
+        draw_media_export_dialog(ctx_);
     } else {
         const ImGuiViewport* vp = ImGui::GetMainViewport();
         ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
@@ -328,6 +349,8 @@ void Workstation::frame(unsigned target_framebuffer) {
     view.width = ui.view_fb_width;
     view.height = ui.view_fb_height;
     view.background = to_vec4(ctx_.doc.colors.background);
+    // Transparent: everything blends onto alpha 0 (premultiplied, made straight on read-back).
+    view.background = transparent_ ? glm::vec4(0) : glm::vec4(glm::vec3(view.background), 1);
     view.analysis = ui.analysis;
     renderer_->render(view, scene.surfaces, scene.overlay);
 
@@ -336,7 +359,10 @@ void Workstation::frame(unsigned target_framebuffer) {
     const int fb_h = static_cast<int>(io.DisplaySize.y * io.DisplayFramebufferScale.y);
     glViewport(0, 0, fb_w, fb_h);
     const ImVec4 bg = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg); // the panels' background
-    glClearColor(bg.x, bg.y, bg.z, 1.0f);
+    if (transparent_)
+        glClearColor(0, 0, 0, 0);
+    else
+        glClearColor(bg.x, bg.y, bg.z, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     // The 3D picture by a framebuffer copy (OpenGL rows run bottom-up), then ImGui on top.
     const ImVec2 fb_scale = io.DisplayFramebufferScale;

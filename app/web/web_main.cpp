@@ -21,6 +21,7 @@
 
 #include "app/window_loop.hpp"
 #include "ui/actions.hpp"
+#include "ui/platform/files.hpp"
 #include "ui/view/settings.hpp"
 #include "ui/workstation.hpp"
 
@@ -132,9 +133,9 @@ void turn(void*) {
         else
             emscripten_request_fullscreen("#canvas", EM_TRUE);
     }
-    if (ctx.ui.quit_now) { // a page cannot close itself: it starts afresh instead
+    if (ctx.ui.quit_now) { // Ctrl+Q: a page cannot close its own tab, and says so
         ctx.ui.quit_now = false;
-        ui::new_document(ctx);
+        ctx.ui.status = ui::files::unavailable(ui::files::Feature::quit);
     }
 }
 

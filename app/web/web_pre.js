@@ -1,5 +1,5 @@
 // Runs before main (emcc --pre-js), in the module's scope: what the page keeps between visits
-// is put back in the in-memory file system first (ui/platform/files_browser.cpp writes it out).
+// is put back in the in-memory file system first (ui/platform/browser.cpp writes it out).
 //
 // - The settings (layout, recent files) from local storage into the settings file.
 // - The recovery folder (autosaved unsaved work, core/scene/autosave.hpp) mounted on IndexedDB

@@ -101,13 +101,20 @@ geom::Expected<ImportedObjects> import_text(std::string_view text, ImportFormat 
             o.shape = doc::SurfaceObject{std::move(std::get<geom::Surface>(shape.shape))};
         }
         // The document's own rules (add_object's checks, on a scratch document), so a scene
-        // written from these loads again; an object they refuse is an error naming it.
-        if (geom::Status st = doc::add_object(o)->apply(scratch); !st)
-            return geom::make_error(st.error().code, "imported object " + std::to_string(k) +
-                                                         " ('" + o.name +
-                                                         "'): " + st.error().message);
+        // written from these loads again; an object they refuse is left out, with the reason.
+        if (geom::Status st = doc::add_object(o)->apply(scratch); !st) {
+            out.skipped.push_back("object " + std::to_string(k) + " ('" + o.name +
+                                  "'): " + st.error().message);
+            continue;
+        }
         out.objects.push_back(std::move(o));
     }
+    if (out.objects.empty())
+        return geom::make_error(
+            geom::ErrorCode::schema,
+            std::string("the ") + import_format_label(format) +
+                " file holds no curve or surface isoparm can import (skipped: " +
+                out.skipped.front() + (out.skipped.size() > 1 ? ", ..." : "") + ")");
     return out;
 }
 

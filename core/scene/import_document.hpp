@@ -33,9 +33,10 @@ struct ImportedObjects {
 // The text of a file in `format` as objects, in file order: curves (custom knots, free 3D
 // plane) and surfaces, B-spline or NURBS (rational ones). Names: the file's where it gives one
 // (control characters made spaces), else "<format> k" ("iges 1", "step 2", "obj 3") counting
-// the imported objects. Errors: the reader's (the line or entity named), every object checked
-// by the document's own rules, and a file with nothing to import (`schema`, saying what was
-// skipped). On error there are no objects at all: an import is whole or nothing.
+// the imported objects. Every object is checked by the document's own rules, and one they
+// refuse is left out with the reason in `skipped` (each face of a CAD file stands on its own).
+// Errors: the reader's (the line or entity named) and a file with nothing to import (`schema`,
+// saying what was skipped). On error there are no objects at all.
 geom::Expected<ImportedObjects> import_text(std::string_view text, ImportFormat format);
 
 // The file at `path` (a regular file of at most 256 MiB, read_input_file's rules) in the format

@@ -134,7 +134,7 @@ def control_points_after_starting_with_a_curve(s, ctx):
         s.wait_for("control points shown", lambda r: r["control_points"])
     points = s.rect_names("view3d/vase/")
     check(points, "no control point of the vase is on screen")
-    view = s.rect("panel/Drawing")
+    view = s.rect("view3d/image")
     # A point well inside the view, not under the help line or the sliders.
     inside = [p for p in points if view[0] + 20 < s.rect(p)[0] < view[0] + view[2] - 20
               and view[1] + 40 < s.rect(p)[1] < view[1] + view[3] - 80]
@@ -415,6 +415,37 @@ def file_export_then_import(s, ctx):
     s.wait_for("one undo removes them all", lambda r: r["objects"] == before)
 
 
+def import_survives_files_that_crash_the_reader(s, ctx):
+    """File > Import... of STEP files that crash OpenCASCADE (it reads in a process of its own):
+    one it cannot read at all (edges that are their own edge) is refused in the dialog naming
+    the signal, the window alive and the scene as it was; in one where a single face crashes it
+    (a control point's entity renamed), that face is left out and the curve comes in."""
+    import re
+    before = s.report()["objects"]
+    step = os.path.join(s.work, "vase.step")
+    subprocess.run([s.isoparm, "export", s.scene, "-o", step], check=True,
+                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    text = open(step).read()
+    looped = re.sub(r"#(\d+)=ORIENTED_EDGE\('',\*,\*,#\d+,",
+                    lambda m: f"#{m.group(1)}=ORIENTED_EDGE('',*,*,#{m.group(1)},", text)
+    open(os.path.join(s.work, "looped.step"), "w").write(looped)
+    open(os.path.join(s.work, "renamed.step"), "w").write(
+        text.replace("#76=CARTESIAN_POINT", "#76=CARTESIAN_XPOINT"))
+    s.menu("File", "Import...")
+    type_file_name(s, "looped.step")
+    s.rect("file/error")
+    check(s.alive(), "the window died importing a file that crashes OpenCASCADE")
+    ctx.shot(s, "crash-refused")
+    check(s.report()["objects"] == before, "a refused import changed the scene")
+    s.key("Escape")
+    time.sleep(0.5)
+    s.menu("File", "Import...")
+    type_file_name(s, "renamed.step")
+    r = s.wait_for("the curve of the file", lambda r: r["objects"] == before + 1)
+    ctx.shot(s, "face-left-out")
+    check(s.alive(), "the window died")
+
+
 def near(a, b, tol):
     return all(abs(x - y) <= tol for x, y in zip(a, b))
 
@@ -666,6 +697,70 @@ def triangle_patch_new_split_elevate(s, ctx):
           f"elevation gave degree {elevated['degree']}, {len(elevated['points'])} points")
 
 
+def png_size(path):
+    """Width and height from a PNG's IHDR chunk."""
+    with open(path, "rb") as f:
+        head = f.read(24)
+    check(head[:8] == b"\x89PNG\r\n\x1a\n", f"{path} is not a PNG")
+    return int.from_bytes(head[16:20], "big"), int.from_bytes(head[20:24], "big")
+
+
+def export_dialog(s, menu_item, choice, name):
+    """File > menu_item, a radio button of the dialog, a file name typed and Enter."""
+    s.menu("File", menu_item)
+    s.click_named(choice)
+    type_file_name(s, name)
+    path = os.path.join(s.work, name)
+    wait_for_file(path)
+    return path
+
+
+def figures_from_the_window(s, ctx):
+    """File > Export picture writes the 3D view as a PNG of its size on screen (at 2x, twice
+    that), and the Domain and knots panel (the tracing square) cut out of the window; File >
+    Export figure writes the tracing square as an SVG with its labels as text; Ctrl+Shift+C puts
+    the 3D view on the clipboard where xclip is installed."""
+    view = s.rect("view3d/image")
+    path = export_dialog(s, "Export picture...", "export/target/0", "view3d.png")
+    w, h = png_size(path)
+    check(abs(w - view[2]) <= 1 and abs(h - view[3]) <= 1,
+          f"the 3D view's picture is {w}x{h}, the view {view[2]}x{view[3]}")
+    tracing = s.rect("panel/Domain and knots")
+    path = export_dialog(s, "Export picture...", "export/target/2", "tracing.png")
+    w, h = png_size(path)
+    check(abs(w - tracing[2]) <= 1 and abs(h - tracing[3]) <= 1,
+          f"the tracing square's picture is {w}x{h}, the panel {tracing[2]}x{tracing[3]}")
+    ctx.shot(s, "after-picture-exports")
+    # The same at twice the resolution, for print.
+    s.menu("File", "Export picture...")
+    s.click_named("export/target/0")
+    s.click_named("export/scale/2")
+    type_file_name(s, "view3d-big.png")
+    path = os.path.join(s.work, "view3d-big.png")
+    wait_for_file(path)
+    w, h = png_size(path)
+    check(abs(w - 2 * view[2]) <= 2 and abs(h - 2 * view[3]) <= 2,
+          f"the 2x picture is {w}x{h}, the view {view[2]}x{view[3]}")
+    # The tracing square as a vector figure.
+    path = export_dialog(s, "Export figure...", "export/view/0", "tracing.svg")
+    import xml.etree.ElementTree as ET
+    root = ET.parse(path).getroot()
+    texts = ["".join(t.itertext()) for t in root.iter("{http://www.w3.org/2000/svg}text")]
+    check(any("(u, v) = (" in t for t in texts), f"tracing.svg has no indicator label: {texts}")
+    if shutil.which("xclip"):
+        s.key("ctrl+shift+c")
+        deadline = time.time() + 10
+        data = b""
+        while time.time() < deadline and not data.startswith(b"\x89PNG"):
+            p = subprocess.run(["xclip", "-selection", "clipboard", "-t", "image/png", "-o"],
+                               capture_output=True, timeout=5)
+            data = p.stdout
+            time.sleep(0.3)
+        check(data.startswith(b"\x89PNG"), "Ctrl+Shift+C put no PNG on the clipboard")
+    else:
+        print("scenario figures: xclip missing, the clipboard check skipped")
+
+
 SCENARIOS = [
     ("window_fits", "fig3b-weight-5.json", window_fits_the_screen),
     ("window_size", "fig3b-weight-5.json", window_size_is_remembered),
@@ -684,11 +779,13 @@ SCENARIOS = [
     ("fit_panel", "fig3b-weight-5.json", fit_panel_least_squares),
     ("triangle_panels", "triangle-cubic.json", triangle_panels_trace_step_basis),
     ("export_import", "fig8-revolution.json", file_export_then_import),
+    ("import_crash", "fig8-revolution.json", import_survives_files_that_crash_the_reader),
     ("continuity_tab", "fig6c-split-left-v05.json", continuity_tab_measures_the_borders),
     ("multires_tab", "fig3b-weight-5.json", multires_tab_drags_a_coarse_point),
     ("blossom_tab", "curve-designer.json", blossom_tab_reproduces_points),
     ("rational_picture", "fig3b-weight-5.json", rational_picture_and_homogeneous_view),
     ("triangle_patch", "fig3b-weight-5.json", triangle_patch_new_split_elevate),
+    ("figures", "fig3b-weight-5.json", figures_from_the_window),
 ]
 
 

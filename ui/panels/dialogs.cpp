@@ -198,6 +198,7 @@ void file_dialog(AppContext& ctx) {
     if (!fd.error.empty()) { // wrapped: a refused export names the extensions it knows
         ImGui::PushTextWrapPos(0.0f);
         ImGui::TextColored(error_text_color(), "%s", fd.error.c_str());
+        report_item("file/error");
         ImGui::PopTextWrapPos();
     }
     if (recording && ctx.ui.finished_recording)

@@ -511,6 +511,7 @@ void draw_view3d_panel(AppContext& ctx) {
     avail.y = std::max(avail.y, 16.f);
     const ImVec2 p0 = ImGui::GetCursorScreenPos();
     ui.view_rect = {p0.x, p0.y, avail.x, avail.y};
+    report_rect("view3d/image", p0.x, p0.y, avail.x, avail.y); // what Export picture takes
     const ImVec2 fb_scale = ImGui::GetIO().DisplayFramebufferScale;
     ui.view_fb_width = std::max(1, static_cast<int>(std::lround(avail.x * fb_scale.x)));
     ui.view_fb_height = std::max(1, static_cast<int>(std::lround(avail.y * fb_scale.y)));

@@ -1,9 +1,9 @@
 // The files a user opens and saves, and the files that must outlive a session, reached one way
 // on the desktop and another in a browser, behind one interface with two implementations:
-// files_desktop.cpp (the program: paths on disk, which the file dialog lists and writes) and
-// files_browser.cpp (the page: the browser's upload and download around the page's in-memory
-// file system, local storage for the settings, IndexedDB for the recovery files). The build
-// compiles one of them (ui/CMakeLists.txt).
+// desktop.cpp (the program: paths on disk, which the file dialog lists and writes) and
+// browser.cpp (the page: the browser's upload and download around the page's in-memory file
+// system, local storage for the settings, IndexedDB for the recovery files). The build
+// compiles one of them (ui/CMakeLists.txt); they also answer what the browser cannot do.
 #pragma once
 
 #include <optional>
@@ -40,5 +40,17 @@ void keep_settings();
 // A recovery file was written or removed (core/scene/autosave.hpp): the browser stores the
 // recovery folder in IndexedDB, so a reload offers to restore. The desktop's are on disk.
 void keep_recovery();
+
+// A PNG on the browser's clipboard; false on the desktop, whose clipboard holds text only
+// (ui/media_export.cpp hands pictures to the desktop's own tools).
+bool copy_picture(const std::string& png);
+
+// What a menu item offers that the browser cannot do, for its greyed item's tooltip: why, in
+// words, and what to do instead; "" where it can (always on the desktop).
+enum class Feature {
+    quit,      // a page cannot close its own tab
+    animation, // GIF and MP4 need FFmpeg
+};
+std::string unavailable(Feature feature);
 
 } // namespace isoparm::ui::files

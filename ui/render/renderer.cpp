@@ -310,7 +310,7 @@ void Renderer::render(const SceneView& view, const std::vector<SurfaceDraw>& sur
     stats_.redrawn = true;
     im.target.resize(view.width, view.height);
     im.target.bind_for_drawing();
-    glClearColor(view.background.r, view.background.g, view.background.b, 1.0f);
+    glClearColor(view.background.r, view.background.g, view.background.b, view.background.a);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (!ok()) {
         im.target.resolve();

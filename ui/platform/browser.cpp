@@ -63,6 +63,20 @@ EM_JS(void, download_file, (const char* path), {
     (Module.isoparmDownloads = Module.isoparmDownloads || []).push(name);
 });
 
+// The clipboard takes the picture if the browser lets the page write images (Chromium does, on
+// a click or key: the menu item or Ctrl+Shift+C); otherwise the status says nothing happened.
+EM_JS(void, copy_png, (const char* data, int size), {
+    const bytes = HEAPU8.slice(data, data + size);
+    if (!navigator.clipboard || typeof ClipboardItem === 'undefined') {
+        console.warn('isoparm: this browser does not let a page put pictures on the clipboard');
+        return;
+    }
+    const item = new ClipboardItem({'image/png' : new Blob([bytes], {type : 'image/png'})});
+    navigator.clipboard.write([item]).catch(function(e) {
+        console.warn('isoparm: the clipboard refused the picture: ' + e);
+    });
+});
+
 EM_JS(void, store_settings_text, (const char* path), {
     try {
         localStorage.setItem('isoparm.settings', FS.readFile(UTF8ToString(path), {encoding : 'utf8'}));
@@ -120,6 +134,23 @@ void keep_settings() {
 
 void keep_recovery() {
     store_recovery_folder();
+}
+
+bool copy_picture(const std::string& png) {
+    copy_png(png.data(), static_cast<int>(png.size()));
+    return true;
+}
+
+std::string unavailable(Feature feature) {
+    switch (feature) {
+    case Feature::quit:
+        return "A page cannot close its own browser tab: close the tab instead (unsaved work is "
+               "autosaved, and the page offers it back when it opens again).";
+    case Feature::animation:
+        return "Animations are encoded by FFmpeg, which the browser version does not have: the "
+               "desktop program makes GIF and MP4 files (isoparm animate).";
+    }
+    return "";
 }
 
 } // namespace isoparm::ui::files

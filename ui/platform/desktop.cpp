@@ -19,4 +19,12 @@ void keep_settings() {}
 
 void keep_recovery() {}
 
+bool copy_picture(const std::string&) {
+    return false;
+}
+
+std::string unavailable(Feature) {
+    return "";
+}
+
 } // namespace isoparm::ui::files

@@ -1,0 +1,260 @@
+#include "core/exchange/import_wire.hpp"
+
+#include <cstdint>
+#include <cstring>
+#include <type_traits>
+
+namespace isoparm::exchange {
+
+namespace {
+
+// The stream starts with a magic word (a wrong one is garbage, not a reader's answer) and then
+// holds records: a tag byte and its fields, in this machine's byte order (both ends are the same
+// program).
+constexpr std::string_view magic = "isoparm-import-wire-1\n";
+
+enum Tag : char {
+    tag_transferred = 'T',
+    tag_curve = 'C',
+    tag_surface = 'S',
+    tag_skipped = 'K',
+    tag_error = 'E',
+    tag_done = 'D',
+};
+
+template <class T> void put(std::string& out, T value) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    char bytes[sizeof(T)];
+    std::memcpy(bytes, &value, sizeof(T));
+    out.append(bytes, sizeof(T));
+}
+
+void put_text(std::string& out, std::string_view s) {
+    put<std::uint64_t>(out, s.size());
+    out.append(s);
+}
+
+void put_reals(std::string& out, const std::vector<double>& v) {
+    put<std::uint64_t>(out, v.size());
+    out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(double));
+}
+
+void put_points(std::string& out, const std::vector<glm::dvec3>& v) {
+    put<std::uint64_t>(out, v.size());
+    for (const glm::dvec3& p : v) {
+        put(out, p.x);
+        put(out, p.y);
+        put(out, p.z);
+    }
+}
+
+// Reads fields from the bytes; the first failure makes every later read fail too.
+class Cursor {
+public:
+    explicit Cursor(std::string_view bytes) : rest_(bytes) {}
+    bool ok() const { return ok_; }
+    bool bad() const { return bad_; }
+    bool empty() const { return rest_.empty(); }
+
+    template <class T> T get() {
+        T value{};
+        if (!take(sizeof(T))) return value;
+        std::memcpy(&value, taken_, sizeof(T));
+        return value;
+    }
+    std::string text() {
+        const auto n = get<std::uint64_t>();
+        if (!ok_ || n > rest_.size()) return cut<std::string>();
+        take(n);
+        return std::string(taken_, n);
+    }
+    std::vector<double> reals() {
+        const auto n = get<std::uint64_t>();
+        if (!ok_ || n > rest_.size() / sizeof(double)) return cut<std::vector<double>>();
+        std::vector<double> v(n);
+        take(n * sizeof(double));
+        std::memcpy(v.data(), taken_, n * sizeof(double));
+        return v;
+    }
+    std::vector<glm::dvec3> points() {
+        const auto n = get<std::uint64_t>();
+        if (!ok_ || n > rest_.size() / (3 * sizeof(double))) return cut<std::vector<glm::dvec3>>();
+        std::vector<glm::dvec3> v(n);
+        for (glm::dvec3& p : v) {
+            p.x = get<double>();
+            p.y = get<double>();
+            p.z = get<double>();
+        }
+        return v;
+    }
+    // A value no writer writes.
+    template <class T> T fail() {
+        ok_ = false;
+        bad_ = true;
+        return T{};
+    }
+    // The bytes end inside a record (the writer died).
+    template <class T> T cut() {
+        ok_ = false;
+        return T{};
+    }
+
+private:
+    bool take(std::size_t n) {
+        if (!ok_ || n > rest_.size()) {
+            ok_ = false;
+            return false;
+        }
+        taken_ = rest_.data();
+        rest_.remove_prefix(n);
+        return true;
+    }
+    std::string_view rest_;
+    const char* taken_ = nullptr;
+    bool ok_ = true, bad_ = false;
+};
+
+geom::SplineType type_from(std::uint8_t t, Cursor& in) {
+    if (t > static_cast<std::uint8_t>(geom::SplineType::nurbs)) return in.fail<geom::SplineType>();
+    return static_cast<geom::SplineType>(t);
+}
+
+} // namespace
+
+ImportWireWriter::ImportWireWriter() : buffer_(magic) {}
+
+void ImportWireWriter::transferred(std::size_t items) {
+    buffer_.push_back(tag_transferred);
+    put<std::uint64_t>(buffer_, items);
+}
+
+void ImportWireWriter::object(const ImportedShape& shape) {
+    if (const auto* c = std::get_if<geom::Curve>(&shape.shape)) {
+        buffer_.push_back(tag_curve);
+        put_text(buffer_, shape.name);
+        put<std::uint8_t>(buffer_, static_cast<std::uint8_t>(c->type));
+        put<std::int32_t>(buffer_, c->degree);
+        put_reals(buffer_, c->knots);
+        put_points(buffer_, c->points);
+        put_reals(buffer_, c->weights);
+        return;
+    }
+    const auto& s = std::get<geom::Surface>(shape.shape);
+    buffer_.push_back(tag_surface);
+    put_text(buffer_, shape.name);
+    put<std::uint8_t>(buffer_, static_cast<std::uint8_t>(s.type));
+    put<std::int32_t>(buffer_, s.degree_u);
+    put<std::int32_t>(buffer_, s.degree_v);
+    put<std::int32_t>(buffer_, s.n_u);
+    put<std::int32_t>(buffer_, s.n_v);
+    put_reals(buffer_, s.knots_u);
+    put_reals(buffer_, s.knots_v);
+    put_points(buffer_, s.points);
+    put_reals(buffer_, s.weights);
+}
+
+void ImportWireWriter::skipped(const SkippedEntity& entity) {
+    buffer_.push_back(tag_skipped);
+    put_text(buffer_, entity.entity);
+    put_text(buffer_, entity.reason);
+}
+
+void ImportWireWriter::error(const geom::Error& error) {
+    buffer_.push_back(tag_error);
+    put<std::uint8_t>(buffer_, static_cast<std::uint8_t>(error.code));
+    put_text(buffer_, error.message);
+}
+
+void ImportWireWriter::done() {
+    buffer_.push_back(tag_done);
+}
+
+std::string ImportWireWriter::take() {
+    std::string out;
+    out.swap(buffer_);
+    return out;
+}
+
+ImportWireReading read_import_wire(std::string_view bytes) {
+    ImportWireReading r;
+    if (bytes.substr(0, magic.size()) != magic) {
+        // The start of the magic word is a stream cut short, anything else is not one.
+        r.garbled = bytes.size() >= magic.size() || magic.substr(0, bytes.size()) != bytes;
+        return r;
+    }
+    Cursor in(bytes.substr(magic.size()));
+    while (!in.empty() && !r.done) {
+        const char tag = in.get<char>();
+        switch (tag) {
+        case tag_transferred:
+            r.items = in.get<std::uint64_t>();
+            r.transferred = in.ok();
+            break;
+        case tag_curve: {
+            ImportedShape shape;
+            shape.name = in.text();
+            geom::Curve c;
+            c.type = type_from(in.get<std::uint8_t>(), in);
+            c.degree = in.get<std::int32_t>();
+            c.knots = in.reals();
+            c.points = in.points();
+            c.weights = in.reals();
+            if (!in.ok()) break;
+            shape.shape = std::move(c);
+            r.result.objects.push_back(std::move(shape));
+            break;
+        }
+        case tag_surface: {
+            ImportedShape shape;
+            shape.name = in.text();
+            geom::Surface s;
+            s.type = type_from(in.get<std::uint8_t>(), in);
+            s.degree_u = in.get<std::int32_t>();
+            s.degree_v = in.get<std::int32_t>();
+            s.n_u = in.get<std::int32_t>();
+            s.n_v = in.get<std::int32_t>();
+            s.knots_u = in.reals();
+            s.knots_v = in.reals();
+            s.points = in.points();
+            s.weights = in.reals();
+            if (!in.ok()) break;
+            shape.shape = std::move(s);
+            r.result.objects.push_back(std::move(shape));
+            break;
+        }
+        case tag_skipped: {
+            SkippedEntity e;
+            e.entity = in.text();
+            e.reason = in.text();
+            if (!in.ok()) break;
+            r.result.skipped.push_back(std::move(e));
+            break;
+        }
+        case tag_error: {
+            const auto code = in.get<std::uint8_t>();
+            std::string message = in.text();
+            if (!in.ok()) break;
+            if (code > static_cast<std::uint8_t>(geom::ErrorCode::internal)) {
+                in.fail<int>();
+                break;
+            }
+            r.error = geom::make_error(static_cast<geom::ErrorCode>(code), std::move(message));
+            break;
+        }
+        case tag_done:
+            r.done = true;
+            break;
+        default:
+            in.fail<int>();
+            break;
+        }
+        if (!in.ok()) {
+            // A record cut off where the child died is expected; a value no writer writes is not.
+            r.garbled = in.bad();
+            break;
+        }
+    }
+    return r;
+}
+
+} // namespace isoparm::exchange

@@ -1,0 +1,243 @@
+#include "core/exchange_occt/occt_convert.hpp"
+
+#include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomConvert.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <Geom_OffsetCurve.hxx>
+#include <Geom_OffsetSurface.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
+#include <Geom_TrimmedCurve.hxx>
+#include <Precision.hxx>
+#include <Standard_Failure.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <algorithm>
+#include <cmath>
+#include <variant>
+#include <vector>
+
+#include "core/geom/status.hpp"
+
+namespace isoparm::exchange_occt {
+
+namespace {
+
+std::vector<double> knot_sequence(const TColStd_Array1OfReal& a) {
+    std::vector<double> out;
+    out.reserve(static_cast<std::size_t>(a.Length()));
+    for (Standard_Integer k = a.Lower(); k <= a.Upper(); ++k) out.push_back(a(k));
+    return out;
+}
+
+// How many knots of the flat sequence equal the one at index k.
+int multiplicity_at(const TColStd_Array1OfReal& knots, Standard_Integer k) {
+    int m = 0;
+    for (Standard_Integer i = knots.Lower(); i <= knots.Upper(); ++i) m += knots(i) == knots(k);
+    return m;
+}
+
+// OCCT's readers turn a closed B-spline into its periodic form (poles shared around the seam),
+// and SetNotPeriodic unrolls that into unclamped knots running past the domain. Where the seam
+// knot has multiplicity >= p the file's spline passed through a control point there: it was a
+// clamped closed spline (a revolution, a circle), so it is clamped again to its domain (the
+// same poles and knots as the file's, up to rounding). Smooth periodic splines keep the
+// unrolled form, which is the file's unclamped one.
+void unroll_surface(Handle(Geom_BSplineSurface) & s) {
+    const bool u = s->IsUPeriodic(), v = s->IsVPeriodic();
+    if (u) s->SetUNotPeriodic();
+    if (v) s->SetVNotPeriodic();
+    if (!u && !v) return;
+    TColStd_Array1OfReal ku(1, s->NbUPoles() + s->UDegree() + 1);
+    TColStd_Array1OfReal kv(1, s->NbVPoles() + s->VDegree() + 1);
+    s->UKnotSequence(ku);
+    s->VKnotSequence(kv);
+    const int p = s->UDegree(), q = s->VDegree();
+    const bool clamp_u = u && multiplicity_at(ku, 1 + p) >= p && ku(1) != ku(1 + p);
+    const bool clamp_v = v && multiplicity_at(kv, 1 + q) >= q && kv(1) != kv(1 + q);
+    if (!clamp_u && !clamp_v) return;
+    const double u0 = ku(1 + p), u1 = ku(s->NbUPoles() + 1);
+    const double v0 = kv(1 + q), v1 = kv(s->NbVPoles() + 1);
+    s->Segment(u0, u1, v0, v1);
+}
+
+void unroll_curve(Handle(Geom_BSplineCurve) & c) {
+    if (!c->IsPeriodic()) return;
+    c->SetNotPeriodic();
+    TColStd_Array1OfReal k(1, c->NbPoles() + c->Degree() + 1);
+    c->KnotSequence(k);
+    const int p = c->Degree();
+    if (multiplicity_at(k, 1 + p) >= p && k(1) != k(1 + p))
+        c->Segment(k(1 + p), k(c->NbPoles() + 1));
+}
+
+geom::Surface to_surface(Handle(Geom_BSplineSurface) s) {
+    unroll_surface(s);
+    geom::Surface out;
+    out.type =
+        s->IsURational() || s->IsVRational() ? geom::SplineType::nurbs : geom::SplineType::bspline;
+    out.degree_u = s->UDegree();
+    out.degree_v = s->VDegree();
+    out.n_u = s->NbUPoles();
+    out.n_v = s->NbVPoles();
+    TColStd_Array1OfReal ku(1, out.n_u + out.degree_u + 1), kv(1, out.n_v + out.degree_v + 1);
+    s->UKnotSequence(ku);
+    s->VKnotSequence(kv);
+    out.knots_u = knot_sequence(ku);
+    out.knots_v = knot_sequence(kv);
+    out.points.resize(static_cast<std::size_t>(out.n_u) * out.n_v);
+    out.weights.resize(out.points.size());
+    const bool rational = out.type == geom::SplineType::nurbs;
+    for (int i = 0; i < out.n_u; ++i)
+        for (int j = 0; j < out.n_v; ++j) {
+            const gp_Pnt& p = s->Pole(i + 1, j + 1);
+            out.point(i, j) = {p.X(), p.Y(), p.Z()};
+            out.weight(i, j) = rational ? s->Weight(i + 1, j + 1) : 1.0;
+        }
+    return out;
+}
+
+geom::Curve to_curve(Handle(Geom_BSplineCurve) c) {
+    unroll_curve(c);
+    geom::Curve out;
+    out.type = c->IsRational() ? geom::SplineType::nurbs : geom::SplineType::bspline;
+    out.degree = c->Degree();
+    TColStd_Array1OfReal k(1, c->NbPoles() + c->Degree() + 1);
+    c->KnotSequence(k);
+    out.knots = knot_sequence(k);
+    out.points.reserve(static_cast<std::size_t>(c->NbPoles()));
+    out.weights.reserve(static_cast<std::size_t>(c->NbPoles()));
+    for (int i = 1; i <= c->NbPoles(); ++i) {
+        const gp_Pnt& p = c->Pole(i);
+        out.points.push_back({p.X(), p.Y(), p.Z()});
+        out.weights.push_back(out.type == geom::SplineType::nurbs ? c->Weight(i) : 1.0);
+    }
+    return out;
+}
+
+// Rounding, relative to the range: a box this close to the surface's range is its range.
+double rounding(double a, double b) {
+    return 1e-9 * std::max(1.0, std::abs(b - a));
+}
+
+std::string interval_text(double lo, double hi) {
+    return "[" + geom::format_number(lo) + ", " + geom::format_number(hi) + "]";
+}
+
+// One direction of a face's box fitted to its surface's (or an edge's range to its curve's).
+struct Range {
+    double lo = 0, hi = 0;
+    bool cut = false; // narrower than what the geometry spans: the geometry is segmented
+};
+using Fitted = std::variant<Range, std::string>;
+
+Fitted fit_range(double lo, double hi, double first, double last, bool periodic, double period,
+                 const char* what) {
+    const double huge = Precision::Infinite() / 2;
+    if (!(lo < hi))
+        return std::string("its ") + what + " range " + interval_text(lo, hi) + " is empty";
+    if (periodic) {
+        if (lo <= -huge || hi >= huge) return Range{first, first + period, false};
+        // A face is at most one period wide; wider is rounding (or nonsense) and means one turn.
+        if (hi - lo >= period - rounding(0, period)) return Range{lo, lo + period, false};
+        return Range{lo, hi, true};
+    }
+    lo = std::max(lo, first);
+    hi = std::min(hi, last);
+    if (lo <= -huge || hi >= huge)
+        return std::string("it is unbounded in ") + what +
+               " (no edges close it on an infinite surface or curve)";
+    if (!(lo < hi))
+        return std::string("its ") + what + " range lies outside its geometry's range " +
+               interval_text(first, last);
+    const double tol = rounding(first, last);
+    return Range{lo, hi, lo > first + tol || hi < last - tol};
+}
+
+Converted face_geometry(const TopoDS_Face& face) {
+    Handle(Geom_Surface) s = BRep_Tool::Surface(face);
+    if (s.IsNull()) return {std::nullopt, "a face without a surface"};
+    Standard_Real u0, u1, v0, v1;
+    BRepTools::UVBounds(face, u0, u1, v0, v1);
+    for (int depth = 0; depth < 64; ++depth) {
+        auto t = Handle(Geom_RectangularTrimmedSurface)::DownCast(s);
+        if (t.IsNull()) break;
+        s = t->BasisSurface();
+    }
+    const std::string kind = s->DynamicType()->Name();
+    if (!Handle(Geom_OffsetSurface)::DownCast(s).IsNull())
+        return {std::nullopt, kind + ": an offset surface has no exact NURBS form"};
+    Standard_Real a0, a1, b0, b1;
+    s->Bounds(a0, a1, b0, b1);
+    const bool up = s->IsUPeriodic(), vp = s->IsVPeriodic();
+    const Fitted fu = fit_range(u0, u1, a0, a1, up, up ? s->UPeriod() : 0, "u");
+    if (const auto* why = std::get_if<std::string>(&fu)) return {std::nullopt, kind + ": " + *why};
+    const Fitted fv = fit_range(v0, v1, b0, b1, vp, vp ? s->VPeriod() : 0, "v");
+    if (const auto* why = std::get_if<std::string>(&fv)) return {std::nullopt, kind + ": " + *why};
+    const Range u = std::get<Range>(fu), v = std::get<Range>(fv);
+
+    Handle(Geom_BSplineSurface) b;
+    if (auto bs = Handle(Geom_BSplineSurface)::DownCast(s); !bs.IsNull()) {
+        b = Handle(Geom_BSplineSurface)::DownCast(bs->Copy());
+        // A periodic B-spline is cut while still periodic: the piece may cross the seam.
+        if (u.cut || v.cut)
+            b->Segment(u.cut ? u.lo : a0, u.cut ? u.hi : a1, v.cut ? v.lo : b0, v.cut ? v.hi : b1);
+    } else {
+        Handle(Geom_RectangularTrimmedSurface) box =
+            new Geom_RectangularTrimmedSurface(s, u.lo, u.hi, v.lo, v.hi);
+        b = GeomConvert::SurfaceToBSplineSurface(box);
+    }
+    if (b.IsNull()) return {std::nullopt, kind + ": OCCT cannot convert it to a B-spline surface"};
+    return {to_surface(b), ""};
+}
+
+Converted edge_geometry(const TopoDS_Edge& edge) {
+    Standard_Real first = 0, last = 0;
+    Handle(Geom_Curve) c = BRep_Tool::Curve(edge, first, last);
+    if (c.IsNull()) return {std::nullopt, "an edge without a 3D curve"};
+    for (int depth = 0; depth < 64; ++depth) {
+        auto t = Handle(Geom_TrimmedCurve)::DownCast(c);
+        if (t.IsNull()) break;
+        c = t->BasisCurve();
+    }
+    const std::string kind = c->DynamicType()->Name();
+    if (!Handle(Geom_OffsetCurve)::DownCast(c).IsNull())
+        return {std::nullopt, kind + ": an offset curve has no exact NURBS form"};
+    const bool periodic = c->IsPeriodic();
+    const Fitted fitted = fit_range(first, last, c->FirstParameter(), c->LastParameter(), periodic,
+                                    periodic ? c->Period() : 0, "parameter");
+    if (const auto* why = std::get_if<std::string>(&fitted))
+        return {std::nullopt, kind + ": " + *why};
+    const Range r = std::get<Range>(fitted);
+    Handle(Geom_BSplineCurve) b;
+    if (auto bc = Handle(Geom_BSplineCurve)::DownCast(c); !bc.IsNull()) {
+        b = Handle(Geom_BSplineCurve)::DownCast(bc->Copy());
+        if (r.cut) b->Segment(r.lo, r.hi);
+    } else {
+        b = GeomConvert::CurveToBSplineCurve(new Geom_TrimmedCurve(c, r.lo, r.hi));
+    }
+    if (b.IsNull()) return {std::nullopt, kind + ": OCCT cannot convert it to a B-spline curve"};
+    return {to_curve(b), ""};
+}
+
+// OCCT reports what it refuses by exceptions (Standard_Failure); each stays with its item.
+template <class F> Converted guarded(F&& convert) {
+    try {
+        return convert();
+    } catch (const Standard_Failure& e) {
+        return {std::nullopt, std::string("OCCT failed converting it: ") + e.DynamicType()->Name() +
+                                  " " + e.GetMessageString()};
+    }
+}
+
+} // namespace
+
+Converted convert_face(const TopoDS_Face& face) {
+    return guarded([&] { return face_geometry(face); });
+}
+
+Converted convert_edge(const TopoDS_Edge& edge) {
+    return guarded([&] { return edge_geometry(edge); });
+}
+
+} // namespace isoparm::exchange_occt
