@@ -8,6 +8,7 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
+#include <imgui_internal.h> // the active item and the popup stack: see settling()
 
 #include "app/window_input.hpp"
 #include "ui/platform/files.hpp"
@@ -28,6 +29,19 @@ int& pending_frames() {
 std::atomic<bool>& frame_requested() {
     static std::atomic<bool> flag{false};
     return flag;
+}
+
+// ImGui 1.86 publishes some of a frame's changes only at the next frame: a field that took the
+// keyboard (io.WantTextInput), an item just activated, a popup opened or closed (laid out and
+// focused there). Such a frame asks for one more, so what the user sees (and the UI report
+// says) is never a frame behind.
+bool settling(int& popups_before) {
+    const ImGuiContext& g = *ImGui::GetCurrentContext();
+    const bool text_input = g.WantTextInputNextFrame > 0;
+    const bool changed = g.ActiveIdIsJustActivated || g.OpenPopupStack.Size != popups_before ||
+                         text_input != g.IO.WantTextInput;
+    popups_before = g.OpenPopupStack.Size;
+    return changed;
 }
 
 } // namespace
@@ -80,6 +94,7 @@ bool WindowLoop::turn() {
     if (feed_input_frame(ctx.ui.key_presses)) // more events than one frame shows
         pending_frames() = std::max(pending_frames(), 1);
     workstation_.frame(0);
+    if (settling(popups_)) pending_frames() = std::max(pending_frames(), 1);
     if (present_) present_();
     // The work of a frame, not the time between frames (idle waits excluded).
     last_ms_ =

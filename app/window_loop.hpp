@@ -61,6 +61,7 @@ private:
     std::function<void()> present_;
     std::string title_;
     double last_ms_ = 0;
+    int popups_ = 0; // ImGui's open popups after the last frame
 };
 
 } // namespace isoparm::app

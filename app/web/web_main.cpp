@@ -4,8 +4,9 @@
 //
 // The page's address chooses what opens: ?scene=NAME (an example, assets/scenes/NAME.json) and
 // ?lesson=NAME (assets/lessons/NAME.json). ?report=1 records the UI report for tests
-// (app/web/web_pre.js); ?autosave=S autosaves every S seconds instead of 15. Module.isoparmFrames collects each drawn frame's work in milliseconds
-// and Module.isoparmFirstFrame the time of the first (performance.now()).
+// (app/web/web_pre.js); ?autosave=S autosaves every S seconds instead of 15. Module.isoparmFrames
+// collects each drawn frame's work in milliseconds and Module.isoparmFirstFrame the time of the
+// first (performance.now()).
 #include <emscripten/emscripten.h>
 #include <emscripten/html5.h>
 #include <unistd.h>
@@ -43,6 +44,8 @@ WebApp& web_app() {
     return a;
 }
 
+// JavaScript (not C++: clang-format would respace its operators).
+// clang-format off
 EM_JS(int, page_width, (), { return window.innerWidth; });
 EM_JS(int, page_height, (), { return window.innerHeight; });
 // The value of ?name=... in the page's address (malloc'd; "" when absent).
@@ -59,25 +62,26 @@ EM_JS(int, software_webgl, (), {
     const gl = Module.canvas.getContext('webgl2');
     const info = gl && gl.getExtension('WEBGL_debug_renderer_info');
     const name = info ? String(gl.getParameter(info.UNMASKED_RENDERER_WEBGL)) : "";
-    return /SwiftShader|llvmpipe|softpipe|Software/i.test(name) ? 1 : 0;
+    return ['SwiftShader', 'llvmpipe', 'softpipe', 'Software'].some(function(s) { return name.indexOf(s) >= 0; }) ? 1 : 0;
 });
 EM_JS(void, frame_drawn, (double ms), {
     (Module.isoparmFrames = Module.isoparmFrames || []).push(ms);
-    if (Module.isoparmFirstFrame === undefined) Module.isoparmFirstFrame = performance.now();
+    if (Module.isoparmFirstFrame == undefined) Module.isoparmFirstFrame = performance.now();
 });
 // emscripten 3.1.6's GLFW has no clipboard: ImGui's copy goes to the browser's clipboard, and
 // its paste reads the text of the page's last paste event (a page may not read the clipboard
 // whenever it likes).
 EM_JS(void, install_paste_listener, (), {
     Module.isoparmPasted = "";
-    document.addEventListener('paste', function(e) {
-        Module.isoparmPasted = (e.clipboardData && e.clipboardData.getData('text/plain')) || "";
-    });
+    document.addEventListener(
+        'paste', function(e) {
+            Module.isoparmPasted = (e.clipboardData && e.clipboardData.getData('text/plain')) || "";
+        });
 });
 EM_JS(void, copy_text, (const char* text), {
     const s = UTF8ToString(text);
     Module.isoparmPasted = s; // pasting inside the page works even where writing is refused
-    if (navigator.clipboard) navigator.clipboard.writeText(s).catch(function() {});
+    if (navigator.clipboard) navigator.clipboard.writeText(s).catch(function(){});
 });
 EM_JS(char*, pasted_text, (), {
     const s = Module.isoparmPasted || "";
@@ -86,6 +90,7 @@ EM_JS(char*, pasted_text, (), {
     stringToUTF8(s, out, size);
     return out;
 });
+// clang-format on
 
 std::string parameter(const char* name) {
     char* v = page_parameter(name);
@@ -143,9 +148,9 @@ void turn(void*) {
 
 } // namespace isoparm::web
 
-// For the page's scripts: draw a frame (an upload arrived).
+// For the page's scripts: something arrived (an upload), draw frames as after an event.
 extern "C" EMSCRIPTEN_KEEPALIVE void isoparm_web_wake() {
-    isoparm::app::request_frame();
+    isoparm::app::wake_window(isoparm::web::web_app().window);
 }
 
 // For tests: 1 when no frame is due, i.e. the picture shows everything that happened.
@@ -160,8 +165,7 @@ int main() {
     // The file dialog starts among the page's own files: scenes/ and lessons/.
     if (chdir("/isoparm/assets") != 0) return 1;
     if (!glfwInit()) return 1;
-    a.window =
-        glfwCreateWindow(web::page_width(), web::page_height(), "isoparm", nullptr, nullptr);
+    a.window = glfwCreateWindow(web::page_width(), web::page_height(), "isoparm", nullptr, nullptr);
     if (!a.window) return 1;
     glfwMakeContextCurrent(a.window);
     // The settings the last visit kept in local storage (web_pre.js put them in place).

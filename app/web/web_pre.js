@@ -38,3 +38,13 @@ Module['uiReport'] = function () {
     return null;
   }
 };
+
+// The workstation's Ctrl shortcuts (save, open, undo, select all in a field, ...) are its own,
+// not the browser's "save page" or "open file": the browser's default is stopped for them.
+// Copy, cut and paste keep theirs (the paste event carries the text, web_main.cpp), and so
+// do the keys a browser never gives a page (Ctrl+N, Ctrl+T, Ctrl+W) and reload.
+window.addEventListener('keydown', function (e) {
+  if (!(e.ctrlKey || e.metaKey)) return;
+  const key = e.key.toLowerCase();
+  if (key.length === 1 && !'cvxrntw'.includes(key)) e.preventDefault();
+}, true);

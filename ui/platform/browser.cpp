@@ -13,6 +13,8 @@ namespace isoparm::ui::files {
 
 namespace {
 
+// JavaScript (not C++: clang-format would respace its operators).
+// clang-format off
 // The browser's file picker; the chosen file goes to /uploads/<its name> and into
 // Module.isoparmUploads, and the page's loop is asked for a frame to take it.
 EM_JS(void, pick_file, (int purpose, const char* accept), {
@@ -20,18 +22,19 @@ EM_JS(void, pick_file, (int purpose, const char* accept), {
     input.type = 'file';
     input.accept = UTF8ToString(accept);
     input.style.display = 'none';
-    input.addEventListener('change', function() {
-        const file = input.files && input.files[0];
-        input.remove();
-        if (!file) return;
-        file.arrayBuffer().then(function(buffer) {
-            FS.mkdirTree('/uploads');
-            const path = '/uploads/' + file.name.replace(/[\/\x00]/g, '_');
-            FS.writeFile(path, new Uint8Array(buffer));
-            (Module.isoparmUploads = Module.isoparmUploads || []).push([purpose, path]);
-            Module._isoparm_web_wake();
+    input.addEventListener(
+        'change', function() {
+            const file = input.files && input.files[0];
+            input.remove();
+            if (!file) return;
+            file.arrayBuffer().then(function(buffer) {
+                FS.mkdirTree('/uploads');
+                const path = '/uploads/' + file.name.split('/').join('_');
+                FS.writeFile(path, new Uint8Array(buffer));
+                (Module.isoparmUploads = Module.isoparmUploads || []).push([ purpose, path ]);
+                Module._isoparm_web_wake();
+            });
         });
-    });
     document.body.appendChild(input);
     input.click();
 });
@@ -52,14 +55,18 @@ EM_JS(char*, next_upload, (), {
 EM_JS(void, download_file, (const char* path), {
     const p = UTF8ToString(path);
     const name = p.substring(p.lastIndexOf('/') + 1);
-    const blob = new Blob([FS.readFile(p)], {type : 'application/octet-stream'});
+    const blob = new Blob([FS.readFile(p)], {
+        type:
+            'application/octet-stream'
+    });
     const link = document.createElement('a');
     link.href = URL.createObjectURL(blob);
     link.download = name;
     document.body.appendChild(link);
     link.click();
     link.remove();
-    setTimeout(function() { URL.revokeObjectURL(link.href); }, 60000);
+    setTimeout(
+        function() { URL.revokeObjectURL(link.href); }, 60000);
     (Module.isoparmDownloads = Module.isoparmDownloads || []).push(name);
 });
 
@@ -67,19 +74,25 @@ EM_JS(void, download_file, (const char* path), {
 // a click or key: the menu item or Ctrl+Shift+C); otherwise the status says nothing happened.
 EM_JS(void, copy_png, (const char* data, int size), {
     const bytes = HEAPU8.slice(data, data + size);
-    if (!navigator.clipboard || typeof ClipboardItem === 'undefined') {
+    if (!navigator.clipboard || typeof ClipboardItem == 'undefined') {
         console.warn('isoparm: this browser does not let a page put pictures on the clipboard');
         return;
     }
-    const item = new ClipboardItem({'image/png' : new Blob([bytes], {type : 'image/png'})});
-    navigator.clipboard.write([item]).catch(function(e) {
-        console.warn('isoparm: the clipboard refused the picture: ' + e);
+    const item = new ClipboardItem({
+        'image/png' : new Blob([bytes],
+                               {
+                                   type:
+                                       'image/png'
+                               })
     });
+    navigator.clipboard.write([item]).catch(
+        function(e) { console.warn('isoparm: the clipboard refused the picture: ' + e); });
 });
 
 EM_JS(void, store_settings_text, (const char* path), {
     try {
-        localStorage.setItem('isoparm.settings', FS.readFile(UTF8ToString(path), {encoding : 'utf8'}));
+        localStorage.setItem('isoparm.settings',
+                             FS.readFile(UTF8ToString(path), {encoding : 'utf8'}));
     } catch (e) {
         // Local storage off (a private window's policy): the settings last as long as the page.
     }
@@ -92,17 +105,19 @@ EM_JS(void, store_recovery_folder, (), {
         return;
     }
     Module.isoparmSyncing = true;
-    FS.syncfs(false, function done(error) {
-        if (error) console.warn('isoparm: the recovery files were not stored: ' + error);
-        if (Module.isoparmSyncAgain) {
-            Module.isoparmSyncAgain = false;
-            FS.syncfs(false, done);
-            return;
-        }
-        Module.isoparmSyncing = false;
-        Module.isoparmStored = (Module.isoparmStored || 0) + 1;
-    });
+    FS.syncfs(
+        false, function done(error) {
+            if (error) console.warn('isoparm: the recovery files were not stored: ' + error);
+            if (Module.isoparmSyncAgain) {
+                Module.isoparmSyncAgain = false;
+                FS.syncfs(false, done);
+                return;
+            }
+            Module.isoparmSyncing = false;
+            Module.isoparmStored = (Module.isoparmStored || 0) + 1;
+        });
 });
+// clang-format on
 
 } // namespace
 
@@ -120,8 +135,7 @@ std::optional<Upload> take_upload() {
     const std::string s = text;
     std::free(text);
     const std::size_t space = s.find(' ');
-    return Upload{static_cast<Purpose>(std::atoi(s.substr(0, space).c_str())),
-                  s.substr(space + 1)};
+    return Upload{static_cast<Purpose>(std::atoi(s.substr(0, space).c_str())), s.substr(space + 1)};
 }
 
 void hand_over(const std::string& path) {
@@ -136,9 +150,9 @@ void keep_recovery() {
     store_recovery_folder();
 }
 
-bool copy_picture(const std::string& png) {
-    copy_png(png.data(), static_cast<int>(png.size()));
-    return true;
+std::string copy_picture(const std::string& png) {
+    copy_png(png.data(), static_cast<int>(png.size())); // the browser answers later, if at all
+    return "";
 }
 
 std::string unavailable(Feature feature) {

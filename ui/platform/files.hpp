@@ -41,9 +41,9 @@ void keep_settings();
 // recovery folder in IndexedDB, so a reload offers to restore. The desktop's are on disk.
 void keep_recovery();
 
-// A PNG on the browser's clipboard; false on the desktop, whose clipboard holds text only
-// (ui/media_export.cpp hands pictures to the desktop's own tools).
-bool copy_picture(const std::string& png);
+// A PNG on the clipboard (Ctrl+Shift+C): the desktop's through xclip or wl-copy (GLFW's
+// clipboard holds text only), the browser's through its clipboard API. "" or why not.
+std::string copy_picture(const std::string& png);
 
 // What a menu item offers that the browser cannot do, for its greyed item's tooltip: why, in
 // words, and what to do instead; "" where it can (always on the desktop).
