@@ -51,8 +51,8 @@ Rect target_rect(const UiState& ui, PictureTarget t) {
 
 // A picture of what the window shows, `scale` times its pixels: the 3D view alone, the whole
 // window, or a panel cut out of the whole window.
-std::optional<Picture> take_picture(const AppContext& ctx, PictureTarget target, int width,
-                                    int height, float scale, bool transparent, std::string& error) {
+std::optional<Pixels> take_picture(const AppContext& ctx, PictureTarget target, int width,
+                                   int height, float scale, bool transparent, std::string& error) {
     const UiState& ui = ctx.ui;
     const bool view3d = target == PictureTarget::view3d;
     const Rect on_screen = target_rect(ui, view3d ? target : PictureTarget::window);
@@ -74,7 +74,7 @@ std::optional<Picture> take_picture(const AppContext& ctx, PictureTarget target,
     }
     copy_view_state(ctx, capture.context());
     // The same framing at another size: the view's camera keeps its distance.
-    std::optional<Picture> p = capture.capture(error);
+    std::optional<Pixels> p = capture.capture(error);
     if (!p || view3d || target == PictureTarget::window) return p;
     const Rect r = target_rect(capture.context().ui, target);
     auto cut = crop(*p, static_cast<int>(r.x), static_cast<int>(r.y), static_cast<int>(r.w),
@@ -180,7 +180,16 @@ std::string export_now(AppContext& ctx) {
             o.height = std::max(ctx.ui.view_rect.h * 0.75, 16.0);
             d = capture_view3d_figure(ctx, o, 2, true);
         } else {
-            d = make_figure(ctx.doc, static_cast<FigureView>(m.figure_view), o);
+            // The panel's own Picture where it draws one (one drawing code per view), else
+            // the figure in print colours.
+            std::string why;
+            if (auto panel = capture_panel_figure(ctx, static_cast<FigureView>(m.figure_view),
+                                                  static_cast<int>(ctx.ui.layout_input.width),
+                                                  static_cast<int>(ctx.ui.layout_input.height),
+                                                  ctx.ui.content_scale, why))
+                d = std::move(*panel);
+            else
+                d = make_figure(ctx.doc, static_cast<FigureView>(m.figure_view), o);
         }
         if (!d) return d.error().message;
         if (std::string problem = write_drawing(*d, path); !problem.empty()) return problem;

@@ -705,11 +705,51 @@ def png_size(path):
     return int.from_bytes(head[16:20], "big"), int.from_bytes(head[20:24], "big")
 
 
+def gif_frames(path):
+    """The number of images in a GIF, walking its blocks (GIF89a)."""
+    with open(path, "rb") as f:
+        d = f.read()
+    check(d[:6] in (b"GIF87a", b"GIF89a"), f"{path} is not a GIF")
+    pos, frames = 13, 0
+    if d[10] & 0x80:
+        pos += 3 * (2 << (d[10] & 7))
+
+    def skip_sub_blocks(pos):
+        while d[pos] != 0:
+            pos += d[pos] + 1
+        return pos + 1
+
+    while pos < len(d) and d[pos] != 0x3B:
+        if d[pos] == 0x21:  # an extension: label, then sub-blocks
+            pos = skip_sub_blocks(pos + 2)
+        elif d[pos] == 0x2C:  # an image: descriptor, local colours, LZW size, data
+            frames += 1
+            flags = d[pos + 9]
+            pos += 10
+            if flags & 0x80:
+                pos += 3 * (2 << (flags & 7))
+            pos = skip_sub_blocks(pos + 1)
+        else:
+            raise Failure(f"{path}: unexpected block 0x{d[pos]:02x} at {pos}")
+    return frames
+
+
+def type_export_name(s, text):
+    """Clicks the export dialog's name field (which selects the suggested name), types the
+    name over it and presses Enter."""
+    x, y, w, h = s.rect("file/name")
+    s.click(x + w * 0.3, y + h / 2)
+    s.wait_for("the name field to take the keyboard", lambda r: r.get("typing"))
+    s.xdo("type", "--delay", "30", text)
+    s.key("Return")
+    s.wait_for("the name field to let go of the keyboard", lambda r: not r.get("typing"))
+
+
 def export_dialog(s, menu_item, choice, name):
     """File > menu_item, a radio button of the dialog, a file name typed and Enter."""
     s.menu("File", menu_item)
     s.click_named(choice)
-    type_file_name(s, name)
+    type_export_name(s, name)
     path = os.path.join(s.work, name)
     wait_for_file(path)
     return path
@@ -718,7 +758,8 @@ def export_dialog(s, menu_item, choice, name):
 def figures_from_the_window(s, ctx):
     """File > Export picture writes the 3D view as a PNG of its size on screen (at 2x, twice
     that), and the Domain and knots panel (the tracing square) cut out of the window; File >
-    Export figure writes the tracing square as an SVG with its labels as text; Ctrl+Shift+C puts
+    Export figure writes the tracing square as an SVG with its labels as text; File > Export
+    animation writes de Boor's 8 steps as a GIF of 8 frames; Ctrl+Shift+C puts
     the 3D view on the clipboard where xclip is installed."""
     view = s.rect("view3d/image")
     path = export_dialog(s, "Export picture...", "export/target/0", "view3d.png")
@@ -735,7 +776,7 @@ def figures_from_the_window(s, ctx):
     s.menu("File", "Export picture...")
     s.click_named("export/target/0")
     s.click_named("export/scale/2")
-    type_file_name(s, "view3d-big.png")
+    type_export_name(s, "view3d-big.png")
     path = os.path.join(s.work, "view3d-big.png")
     wait_for_file(path)
     w, h = png_size(path)
@@ -747,6 +788,13 @@ def figures_from_the_window(s, ctx):
     root = ET.parse(path).getroot()
     texts = ["".join(t.itertext()) for t in root.iter("{http://www.w3.org/2000/svg}text")]
     check(any("(u, v) = (" in t for t in texts), f"tracing.svg has no indicator label: {texts}")
+    # de Boor's steps of the bicubic at the indicator as a GIF: steps 0 .. p_u + p_v + 1.
+    s.menu("File", "Export animation...")
+    s.click_named("export/source/0")
+    type_export_name(s, "deboor.gif")
+    path = os.path.join(s.work, "deboor.gif")
+    wait_for_file(path, timeout=60)
+    check(gif_frames(path) == 8, f"deboor.gif has {gif_frames(path)} frames, not 8")
     if shutil.which("xclip"):
         s.key("ctrl+shift+c")
         deadline = time.time() + 10

@@ -19,7 +19,7 @@ namespace {
 // and written as a PNG to `output`; needs a current GL context.
 std::string draw_to_png(doc::Document document, const std::string& scene_path,
                         const HeadlessRequest& req, const std::string& output) {
-    std::optional<Picture> picture;
+    std::optional<Pixels> picture;
     {
         CaptureSettings settings;
         settings.width = req.width;
