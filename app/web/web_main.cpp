@@ -4,9 +4,9 @@
 //
 // The page's address chooses what opens: ?scene=NAME (an example, assets/scenes/NAME.json) and
 // ?lesson=NAME (assets/lessons/NAME.json). ?report=1 records the UI report for tests
-// (app/web/web_pre.js); ?autosave=S autosaves every S seconds instead of 15. Module.isoparmFrames
-// collects each drawn frame's work in milliseconds and Module.isoparmFirstFrame the time of the
-// first (performance.now()).
+// (app/web/web_pre.js); ?autosave=S autosaves every S seconds instead of 15. For measurements:
+// Module.isoparmFrames collects each drawn frame's work in milliseconds, isoparmFrameEnds when
+// each ended and isoparmFirstFrame when the first did (performance.now(): from navigation).
 #include <emscripten/emscripten.h>
 #include <emscripten/html5.h>
 #include <unistd.h>
@@ -66,6 +66,7 @@ EM_JS(int, software_webgl, (), {
 });
 EM_JS(void, frame_drawn, (double ms), {
     (Module.isoparmFrames = Module.isoparmFrames || []).push(ms);
+    (Module.isoparmFrameEnds = Module.isoparmFrameEnds || []).push(performance.now());
     if (Module.isoparmFirstFrame == undefined) Module.isoparmFirstFrame = performance.now();
 });
 // emscripten 3.1.6's GLFW has no clipboard: ImGui's copy goes to the browser's clipboard, and
