@@ -18,7 +18,7 @@ namespace {
 
 struct ExportCommandOptions {
     std::string scene, output, object;
-    int samples = 32;
+    long long samples = 32; // wide: any number typed meets the 2..1000 rule, not a conversion
     bool mesh = false;
 };
 
@@ -53,7 +53,10 @@ int run(const ExportCommandOptions& o) {
     if (!objects) return fail(objects.error().message);
     scene::ExportOptions options;
     options.format = *format;
-    options.samples = o.samples;
+    if (o.samples < 2 || o.samples > 1000)
+        return fail("--samples " + std::to_string(o.samples) +
+                    " must be 2..1000 (points per direction of a surface's tessellation)");
+    options.samples = static_cast<int>(o.samples);
     options.name = stem(o.scene);
     const auto result = scene::export_document(*objects, options);
     if (!result) return fail(result.error().message);

@@ -33,7 +33,10 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        // --help and --version end here with 0; everything else is bad input: the message
+        // (which names the option and the value) and exit 2, as every subcommand's refusals.
+        const int status = app.exit(e);
+        return status == 0 ? 0 : 2;
     }
     for (CLI::App* sub : app.get_subcommands()) {
         if (sub->get_name() == "geom") return geom();

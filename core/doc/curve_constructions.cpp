@@ -6,6 +6,7 @@
 #include <charconv>
 
 #include "core/doc/commands_common.hpp"
+#include "core/doc/recipe_build.hpp"
 #include "core/geom/coons.hpp"
 #include "core/geom/gordon.hpp"
 #include "core/geom/validate.hpp"
@@ -98,6 +99,9 @@ geom::Error rehome(geom::Error e, const std::vector<const Object*>& objects,
     return e;
 }
 
+geom::Expected<ConstructionResult> build_from_curves(const Document& doc,
+                                                     const ConstructionRequest& request);
+
 std::string join_names(const std::vector<const Object*>& objects) {
     std::string s;
     for (std::size_t k = 0; k < objects.size(); ++k) s += (k ? "-" : "") + objects[k]->name;
@@ -108,6 +112,17 @@ std::string join_names(const std::vector<const Object*>& objects) {
 
 geom::Expected<ConstructionResult> build_construction(const Document& doc,
                                                       const ConstructionRequest& request) {
+    auto built = request.kind == Construction::isocurve ? detail::build_isocurve(doc, request)
+                                                        : build_from_curves(doc, request);
+    if (!built) return built;
+    if (auto st = detail::apply_refinements(*built, request.refinements); !st) return st.error();
+    return built;
+}
+
+namespace {
+
+geom::Expected<ConstructionResult> build_from_curves(const Document& doc,
+                                                     const ConstructionRequest& request) {
     const Construction kind = request.kind;
     const auto [lo, hi] = curve_count(kind);
     const std::size_t n = request.curves.size();
@@ -208,6 +223,8 @@ geom::Expected<ConstructionResult> build_construction(const Document& doc,
                    "the bilinear patch of the corners; it keeps all four boundaries exactly";
         break;
     }
+    case Construction::isocurve: // built by build_isocurve
+        break;
     case Construction::gordon: {
         const int nu = request.gordon_u_count;
         if (nu < 2 || static_cast<int>(n) - nu < 2)
@@ -236,5 +253,7 @@ geom::Expected<ConstructionResult> build_construction(const Document& doc,
     out.object.shape = SurfaceObject{std::move(surface)};
     return out;
 }
+
+} // namespace
 
 } // namespace isoparm::doc

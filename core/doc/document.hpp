@@ -4,11 +4,13 @@
 #include <array>
 #include <cstdint>
 #include <glm/vec2.hpp>
+#include <optional>
 #include <span>
 #include <string>
 #include <variant>
 #include <vector>
 
+#include "core/doc/recipe.hpp"
 #include "core/geom/status.hpp"
 #include "core/geom/triangle.hpp"
 #include "core/geom/types.hpp"
@@ -121,6 +123,10 @@ struct Object {
     // original parameters, so together they tile the original domain and the tracing square
     // shows that whole domain (core/doc/patches.hpp).
     std::uint64_t patch_group = 0;
+    // What built the object, when it stays linked to its inputs (core/doc/associative.hpp): an
+    // edit of an input rebuilds it in the same command; its own points are not edited until it
+    // is detached.
+    std::optional<Recipe> construction = std::nullopt;
 
     ObjectKind kind() const { return kind_of(shape); }
     geom::Surface* surface() { return surface_of(shape); }
@@ -250,8 +256,10 @@ struct Document {
 // Geometry that is bit-identical (undo tests compare with this): every object (id, name,
 // visibility, shape with all its numbers compared bit for bit) in the same order, and colours.
 bool same_geometry(const Document& a, const Document& b);
-// One object, bit for bit (as same_geometry compares them).
+// One object, bit for bit (as same_geometry compares them), its recipe included.
 bool same_object(const Object& a, const Object& b);
+// Two shapes, bit for bit.
+bool same_shape(const Shape& a, const Shape& b);
 // The view state (selection, indicator, display settings), bit for bit.
 bool same_view(const ViewState& a, const ViewState& b);
 // same_geometry plus the view state and the continuity setting, bit for bit.

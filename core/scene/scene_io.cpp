@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <set>
 
+#include "core/doc/associative.hpp"
 #include "core/doc/commands_common.hpp"
 #include "core/doc/patches.hpp"
 #include "core/geom/reshape.hpp"
@@ -16,6 +17,7 @@
 #include "core/json/out_of_memory.hpp"
 #include "core/json/reader.hpp"
 #include "core/json/shapes.hpp"
+#include "core/scene/recipe_json.hpp"
 
 namespace isoparm::scene {
 
@@ -242,17 +244,17 @@ Expected<Object> object_from_json(const json& j, const std::string& at) {
     auto kind = read_kind(j, at);
     if (!kind) return kind.error();
     const bool surface = *kind == ObjectKind::surface, curve = *kind == ObjectKind::curve;
-    if (auto st =
-            surface ? check_members(j, at, "a surface object",
-                                    {"id", "name", "kind", "visible", "patch_group", "surface"})
-            : curve
-                ? check_members(j, at, "a curve object",
-                                {"id", "name", "kind", "visible", "plane", "knot_mode", "curve"})
-            : *kind == ObjectKind::triangle
-                ? check_members(j, at, "a triangle object",
-                                {"id", "name", "kind", "visible", "triangle"})
-                : check_members(j, at, "an implicit object",
-                                {"id", "name", "kind", "visible", "implicit"});
+    if (auto st = surface ? check_members(j, at, "a surface object",
+                                          {"id", "name", "kind", "visible", "patch_group",
+                                           "surface", "construction"})
+                  : curve ? check_members(j, at, "a curve object",
+                                          {"id", "name", "kind", "visible", "plane", "knot_mode",
+                                           "curve", "construction"})
+                  : *kind == ObjectKind::triangle
+                      ? check_members(j, at, "a triangle object",
+                                      {"id", "name", "kind", "visible", "triangle"})
+                      : check_members(j, at, "an implicit object",
+                                      {"id", "name", "kind", "visible", "implicit"});
         !st)
         return st.error();
 
@@ -283,6 +285,12 @@ Expected<Object> object_from_json(const json& j, const std::string& at) {
     auto shape = read_shape(j, at, *kind);
     if (!shape) return shape.error();
     o.shape = std::move(shape).value();
+    // Its links to the other objects are checked with the whole scene (check_constructions).
+    if (const auto recipe = j.find("construction"); recipe != j.end()) {
+        auto r = recipe_from_json(*recipe, at + "/construction");
+        if (!r) return r.error();
+        o.construction = std::move(r).value();
+    }
     return o;
 }
 
@@ -337,6 +345,7 @@ json object_to_json(const Object& o) {
     if (o.patch_group != 0) j["patch_group"] = o.patch_group;
     const json shape = shape_to_json(o.shape);
     for (const auto& [key, value] : shape.items()) j[key] = value;
+    if (o.construction) j["construction"] = recipe_to_json(*o.construction);
     return j;
 }
 
@@ -572,7 +581,11 @@ json scene_to_json(const Document& doc) {
 
     json scene = json::object();
     scene["format"] = scene_format_name;
-    scene["version"] = scene_format_version;
+    // Version 2 only where it is needed (a construction), so other scenes save as before.
+    const bool constructions =
+        std::any_of(doc.objects.begin(), doc.objects.end(),
+                    [](const Object& o) { return o.construction.has_value(); });
+    scene["version"] = constructions ? scene_format_version : 1;
     scene["objects"] = std::move(objects);
     scene["colors"] = std::move(colors);
     scene["display"] = std::move(display);
@@ -679,6 +692,19 @@ Expected<Document> scene_from_json(const json& j) {
         doc.continuity = *continuity;
     }
     if (auto e = check_patch_groups(doc)) return *e;
+    // Each recipe's inputs exist, are of the kind it reads, and no recipe reads itself.
+    if (*v < 2)
+        for (std::size_t k = 0; k < doc.objects.size(); ++k)
+            if (doc.objects[k].construction)
+                return schema_error("construction needs scene format version 2 (this scene says " +
+                                        std::to_string(*v) + ")",
+                                    "/objects/" + std::to_string(k) + "/construction");
+    for (std::size_t k = 0; k < doc.objects.size(); ++k) {
+        const Object& o = doc.objects[k];
+        if (!o.construction) continue;
+        if (auto st = check_recipe_links(doc, o.id, o, *o.construction); !st)
+            return st.error().under("/objects/" + std::to_string(k));
+    }
     if (const auto ind = j.find("indicator"); ind != j.end()) {
         auto uv = indicator_from_json(*ind, "/indicator");
         if (!uv) return uv.error();

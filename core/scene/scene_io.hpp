@@ -11,9 +11,12 @@
 
 namespace isoparm::scene {
 
-// The scene format's name and the newest version this build reads and writes.
+// The scene format's name and the newest version this build reads and writes. Version 2 added
+// the objects' "construction" (a recipe that keeps them linked to their inputs); a scene is
+// written as version 1 while none of its objects has one, so that it stays readable by older
+// builds.
 inline constexpr const char* scene_format_name = "isoparm-scene";
-inline constexpr int scene_format_version = 1;
+inline constexpr int scene_format_version = 2;
 // The largest object (and patch group) id a file or command may name: 2^53, exact in every
 // JSON reader.
 inline constexpr std::uint64_t max_object_id = 9007199254740992ull;

@@ -2,10 +2,12 @@
 #include "core/scene/script.hpp"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <filesystem>
 
 #include "core/doc/patches.hpp"
+#include "core/geom/work_budget.hpp"
 #include "core/json/fields.hpp"
 #include "core/json/input_file.hpp"
 #include "core/json/reader.hpp"
@@ -29,12 +31,35 @@ constexpr std::size_t max_steps = 100000;
 // The member that says what a step is (besides "command", which makes it a command).
 constexpr std::string_view step_kinds[] = {
     "undo",   "redo",        "select",     "indicator", "barycentric", "display", "continuity",
-    "camera", "deboor_step", "screenshot", "caption",   "pause",       "expect"};
+    "camera", "deboor_step", "screenshot", "caption",   "pause",       "expect",  "animate"};
 
 std::string kinds_list() {
     std::string out = "command";
     for (std::string_view k : step_kinds) out += ", " + std::string(k);
     return out;
+}
+
+// A name is checked byte by byte, as the system will take it: a C string ends at a NUL, so
+// ".bashrc\0.png" would write .bashrc; a separator or ".." would leave the folder; a control
+// character or a leading dot (a hidden file) has no place in a picture's name.
+std::string screenshot_name_problem(const std::string& name) {
+    std::string printable = short_name(name);
+    for (char& c : printable)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+    const std::string shown = "'" + printable + "'";
+    for (std::size_t k = 0; k < name.size(); ++k) {
+        const auto c = static_cast<unsigned char>(name[k]);
+        if (c == 0) return shown + " holds a NUL byte at " + std::to_string(k);
+        if (c < 0x20 || c == 0x7f)
+            return shown + " holds the control character " + std::to_string(c) + " at " +
+                   std::to_string(k);
+        if (c == '/' || c == '\\') return shown + " holds a folder separator";
+    }
+    if (name.size() <= 4 || name.compare(name.size() - 4, 4, ".png") != 0)
+        return shown + " does not end in .png after a name";
+    if (name.front() == '.') return shown + " begins with a dot (a hidden file)";
+    if (name.size() > 200) return shown + " is longer than 200 bytes";
+    return "";
 }
 
 Expected<bool> read_true(const json& v, const std::string& at, std::string_view what) {
@@ -52,12 +77,10 @@ Expected<ScreenshotStep> read_screenshot(const json& j, const std::string& at) {
     ScreenshotStep shot;
     auto name = read_string(j["screenshot"], at + "/screenshot", "the screenshot's file name");
     if (!name) return name.error();
-    const std::filesystem::path p(*name);
-    if (name->empty() || p.has_parent_path() || p.filename() != p || p.extension() != ".png" ||
-        *name == ".png")
+    if (const std::string why = screenshot_name_problem(*name); !why.empty())
         return schema_error("a screenshot is a file name ending in .png, without folders (the "
-                            "folder is --out), got '" +
-                                short_name(*name) + "'",
+                            "folder is --out): " +
+                                why,
                             at + "/screenshot");
     shot.name = *name;
     if (const json* v = find_member(j, "view")) {
@@ -77,6 +100,17 @@ Expected<ScreenshotStep> read_screenshot(const json& j, const std::string& at) {
             if (!side) return side.error();
             (k == 0 ? shot.width : shot.height) = static_cast<int>(*side);
         }
+        // An 8192 x 8192 picture takes about 2.9 GB to render (colour, depth and multisampled
+        // buffers): the area is capped as well as the sides.
+        const double pixels = static_cast<double>(shot.width) * shot.height;
+        if (pixels > max_screenshot_pixels)
+            return make_error(ErrorCode::limit,
+                              "a screenshot of " + std::to_string(shot.width) + "x" +
+                                  std::to_string(shot.height) + " is " +
+                                  geom::with_thousands(pixels) + " pixels, more than " +
+                                  geom::with_thousands(max_screenshot_pixels) +
+                                  " (4096x4096, about 0.7 GB to render)",
+                              at + "/size");
     }
     return shot;
 }
@@ -214,6 +248,160 @@ Expected<ExpectStep> read_expect(const json& v, const std::string& at) {
     return e;
 }
 
+// {"weight": {"object": 1, "point": [2, 2]}, "from": 0, "to": 5, "seconds": 4, "repeat":
+// "bounce", "speed": 1, "at": 0.5, "play": true}, {"knot": {"object", "direction", "k"}, ...},
+// {"parameter": {"object", "name"}, ...}, {"indicator": "line", "from": [u, v], "to": [u, v]},
+// {"indicator": "circle", "centre": [u, v], "radius": r}, {"deboor_step": true, "from": 0,
+// "to": 6}, or "stop".
+Expected<AnimateStep> read_animate(const json& v, const std::string& at) {
+    AnimateStep a;
+    if (v.is_string() && v.get<std::string>() == "stop") {
+        a.stop = true;
+        return a;
+    }
+    if (auto st = expect_object(v, at, "animate (or \"stop\")"); !st) return st.error();
+    const char* what[] = {"weight", "knot", "parameter", "indicator", "deboor_step"};
+    std::string_view kind;
+    for (std::string_view k : what)
+        if (find_member(v, k)) {
+            if (!kind.empty())
+                return schema_error("an animation moves one thing: it has both '" +
+                                        std::string(kind) + "' and '" + std::string(k) + "'",
+                                    at);
+            kind = k;
+        }
+    if (kind.empty())
+        return schema_error("an animation names what moves: weight, knot, parameter, indicator or "
+                            "deboor_step",
+                            at);
+    const bool indicator = kind == "indicator";
+    std::vector<std::string_view> allowed{kind, "seconds", "speed", "repeat", "at", "play"};
+    const json* shape = find_member(v, "indicator");
+    const bool circle = indicator && shape->is_string() && shape->get<std::string>() == "circle";
+    if (indicator && !(shape->is_string() && (shape->get<std::string>() == "line" || circle)))
+        return schema_error("indicator is \"line\" or \"circle\"", member_path(at, "indicator"));
+    if (circle) {
+        allowed.insert(allowed.end(), {"centre", "radius"});
+    } else {
+        allowed.insert(allowed.end(), {"from", "to"});
+    }
+    if (auto st = check_members(v, at, "an animate step", allowed); !st) return st.error();
+    doc::AnimationTarget& t = a.target;
+    const std::string kat = member_path(at, kind);
+    auto number = [&](std::string_view name, double& out) -> geom::Status {
+        const json* x = find_member(v, name);
+        if (!x) return geom::Ok{};
+        auto r = read_finite(*x, member_path(at, name), name);
+        if (!r) return r.error();
+        out = *r;
+        return geom::Ok{};
+    };
+    auto uv = [&](std::string_view name, glm::dvec2& out) -> geom::Status {
+        const json* x = find_member(v, name);
+        if (!x) return geom::Ok{};
+        auto r = indicator_from_json(*x, member_path(at, name));
+        if (!r) return r.error();
+        out = *r;
+        return geom::Ok{};
+    };
+    auto object_member = [&](const json& o,
+                             std::initializer_list<std::string_view> members) -> geom::Status {
+        if (auto st = expect_object(o, kat, std::string(kind)); !st) return st;
+        if (auto st = check_members(o, kat, std::string(kind), members); !st) return st;
+        const json* id = find_member(o, "object");
+        if (!id) return missing_member(kat, "object");
+        auto n = read_integer(*id, member_path(kat, "object"), "an object id", 1,
+                              static_cast<std::int64_t>(max_object_id));
+        if (!n) return n.error();
+        t.object = static_cast<std::uint64_t>(*n);
+        return geom::Ok{};
+    };
+    const json& k = v.at(std::string(kind));
+    if (kind == "weight") {
+        t.kind = doc::AnimatedKind::weight;
+        if (auto st = object_member(k, {"object", "point"}); !st) return st.error();
+        const json* point = find_member(k, "point");
+        if (!point) return missing_member(kat, "point");
+        const std::string pat = member_path(kat, "point");
+        if (!point->is_array() || point->empty() || point->size() > 2)
+            return schema_error("point is [i, j] (a surface's or triangle's) or [i] (a curve's)",
+                                pat);
+        for (std::size_t c = 0; c < point->size(); ++c) {
+            auto x = read_integer((*point)[c], pat + "/" + std::to_string(c),
+                                  "a control point index", 0, INT_MAX);
+            if (!x) return x.error();
+            (c == 0 ? t.i : t.j) = static_cast<int>(*x);
+        }
+        t.from = 0;
+        t.to = 5;
+    } else if (kind == "knot") {
+        t.kind = doc::AnimatedKind::knot;
+        if (auto st = object_member(k, {"object", "direction", "k"}); !st) return st.error();
+        if (const json* d = find_member(k, "direction")) {
+            const auto dir = enum_value<geom::Dir>(*d);
+            if (!dir)
+                return schema_error("direction must be u or v", member_path(kat, "direction"));
+            t.dir = *dir;
+        }
+        const json* idx = find_member(k, "k");
+        if (!idx) return missing_member(kat, "k");
+        auto x = read_integer(*idx, member_path(kat, "k"), "a knot index", 0, INT_MAX);
+        if (!x) return x.error();
+        t.k = static_cast<int>(*x);
+        if (!find_member(v, "from")) return missing_member(at, "from");
+        if (!find_member(v, "to")) return missing_member(at, "to");
+    } else if (kind == "parameter") {
+        t.kind = doc::AnimatedKind::implicit_parameter;
+        if (auto st = object_member(k, {"object", "name"}); !st) return st.error();
+        const json* name = find_member(k, "name");
+        if (!name) return missing_member(kat, "name");
+        auto n = read_string(*name, member_path(kat, "name"), "name");
+        if (!n) return n.error();
+        t.parameter = *n;
+        if (!find_member(v, "from")) return missing_member(at, "from");
+        if (!find_member(v, "to")) return missing_member(at, "to");
+    } else if (kind == "indicator") {
+        t.kind = circle ? doc::AnimatedKind::indicator_circle : doc::AnimatedKind::indicator_line;
+        if (auto st = uv("from", t.uv_from); !st) return st.error();
+        if (auto st = uv("to", t.uv_to); !st) return st.error();
+        if (auto st = uv("centre", t.centre); !st) return st.error();
+        if (auto st = number("radius", t.radius); !st) return st.error();
+        if (!(t.radius > 0 && t.radius <= 1))
+            return schema_error("radius is in (0, 1] (the domain square's sides are 1)",
+                                member_path(at, "radius"));
+    } else {
+        t.kind = doc::AnimatedKind::deboor_step;
+        if (auto st = read_true(k, kat, "deboor_step"); !st) return st.error();
+        t.from = 0;
+        t.to = 6;
+    }
+    if (!indicator) {
+        if (auto st = number("from", t.from); !st) return st.error();
+        if (auto st = number("to", t.to); !st) return st.error();
+    }
+    if (auto st = number("seconds", a.seconds); !st) return st.error();
+    if (!(a.seconds > 0 && a.seconds <= 3600))
+        return schema_error("seconds (one pass) is in (0, 3600]", member_path(at, "seconds"));
+    if (auto st = number("speed", a.speed); !st) return st.error();
+    if (!(a.speed > 0 && a.speed <= 100))
+        return schema_error("speed is in (0, 100]", member_path(at, "speed"));
+    if (auto st = number("at", a.at); !st) return st.error();
+    if (a.at < 0 || a.at > 1)
+        return schema_error("at is the phase shown in screenshots, in [0, 1]",
+                            member_path(at, "at"));
+    if (const json* r = find_member(v, "repeat")) {
+        const auto rep = enum_value<doc::Repeat>(*r);
+        if (!rep) return schema_error("repeat is once, loop or bounce", member_path(at, "repeat"));
+        a.repeat = *rep;
+    }
+    if (const json* p = find_member(v, "play")) {
+        auto b = read_bool(*p, member_path(at, "play"));
+        if (!b) return b.error();
+        a.play = *b;
+    }
+    return a;
+}
+
 Expected<Step> read_step(const json& j, const std::string& at) {
     if (auto st = expect_object(j, at, "a step"); !st) return st.error();
     if (find_member(j, "command")) {
@@ -288,6 +476,11 @@ Expected<Step> read_step(const json& j, const std::string& at) {
         auto s = read_screenshot(j, at);
         if (!s) return s.error();
         return step(*s);
+    }
+    if (kind == "animate") {
+        auto a = read_animate(v, kat);
+        if (!a) return a.error();
+        return step(*a);
     }
     if (kind == "caption") {
         auto t = read_string(v, kat, "caption");
@@ -485,9 +678,21 @@ Expected<Script> script_from_json(const json& j, const std::string& script_dir) 
                           "a script has at most " + std::to_string(max_steps) + " steps, got " +
                               std::to_string(steps->size()),
                           "/steps");
+    double pixels = 0;
     for (std::size_t k = 0; k < steps->size(); ++k) {
         auto step = read_step((*steps)[k], "/steps/" + std::to_string(k));
         if (!step) return step.error();
+        if (const auto* shot = std::get_if<ScreenshotStep>(&step->action)) {
+            // Every screenshot is a render: the script's pictures together have a budget.
+            pixels += static_cast<double>(shot->width) * shot->height;
+            if (pixels > max_script_pixels)
+                return make_error(ErrorCode::limit,
+                                  "the script's screenshots up to this one are " +
+                                      geom::with_thousands(pixels) + " pixels, more than " +
+                                      geom::with_thousands(max_script_pixels) +
+                                      " (about 300 pictures of 1280x800)",
+                                  step->path + "/screenshot");
+        }
         script.steps.push_back(std::move(step).value());
     }
     return script;
@@ -556,6 +761,25 @@ geom::Status run_step(const Step& step, ScriptState& state, const ScriptHooks& h
         if (!dry_run && hooks.caption) hooks.caption(state, step);
     } else if (std::holds_alternative<PauseStep>(a)) {
         if (!dry_run && hooks.pause) hooks.pause(state, step);
+    } else if (const auto* anim = std::get_if<AnimateStep>(&a)) {
+        if (anim->stop) {
+            state.animation.reset();
+        } else {
+            // Checked against the document as it is now; paths as the step writes them.
+            if (auto st = doc::check_target(state.doc, anim->target); !st) {
+                Error e = st.error();
+                const char* kind = anim->target.kind == doc::AnimatedKind::weight ? "/weight"
+                                   : anim->target.kind == doc::AnimatedKind::knot ? "/knot"
+                                   : anim->target.kind == doc::AnimatedKind::implicit_parameter
+                                       ? "/parameter"
+                                       : "";
+                if (e.path == "/parameter") e.path = "/name";
+                if (e.path != "/from" && e.path != "/to" && e.path != "/centre")
+                    e.path = kind + e.path;
+                return at_step(e.under("/animate"));
+            }
+            state.animation = *anim;
+        }
     } else if (const auto* e = std::get_if<ExpectStep>(&a)) {
         for (const std::string& problem : unmet(*e, state.doc))
             result.failed_expects.push_back(step.path + ": " + problem);

@@ -12,6 +12,7 @@
 #include <variant>
 #include <vector>
 
+#include "core/doc/animated.hpp"
 #include "core/doc/command.hpp"
 #include "core/doc/command_spec.hpp"
 #include "core/doc/document.hpp"
@@ -21,6 +22,17 @@ namespace isoparm::scene {
 
 inline constexpr const char* script_format_name = "isoparm-script";
 inline constexpr int script_format_version = 1;
+
+// The screenshots' budget: one picture at most 4096 x 4096 pixels (about 0.7 GB to render with
+// its multisampled buffers), all of a script's together at most 3e8 (about 300 pictures of
+// 1280 x 800), checked when the script is read, before anything runs.
+inline constexpr double max_screenshot_pixels = 4096.0 * 4096.0;
+inline constexpr double max_script_pixels = 3e8;
+
+// Why `name` is not a screenshot's file name ("" when it is one): checked byte by byte (a NUL
+// would end the name the system sees early), no separators or control characters, no leading
+// dot, ending in .png.
+std::string screenshot_name_problem(const std::string& name);
 
 // View steps: they change what is looked at, not the scene's geometry (no undo step).
 struct UndoStep {};
@@ -60,6 +72,17 @@ struct CaptionStep {
     std::string text;
 };
 struct PauseStep {};
+// An animated parameter (docs/script-format.md, "animate"): a lesson played in the window runs
+// it on its slider; `isoparm script`'s screenshots after it show the value at phase `at` as a
+// preview. It never edits the document. `stop` ends the animation shown.
+struct AnimateStep {
+    doc::AnimationTarget target;
+    double seconds = 4, speed = 1;
+    doc::Repeat repeat = doc::Repeat::bounce;
+    double at = 0; // the phase in [0, 1] the screenshots show
+    bool play = true;
+    bool stop = false;
+};
 // A check on the document (docs/script-format.md: "expect").
 struct ExpectStep {
     std::optional<std::size_t> objects;
@@ -78,7 +101,7 @@ struct ExpectStep {
 
 using StepAction = std::variant<doc::CommandSpec, UndoStep, RedoStep, SelectStep, IndicatorStep,
                                 DisplayStep, ContinuityStep, CameraStep, DeBoorStep, ScreenshotStep,
-                                CaptionStep, PauseStep, ExpectStep, BarycentricStep>;
+                                CaptionStep, PauseStep, ExpectStep, BarycentricStep, AnimateStep>;
 
 struct Step {
     StepAction action;
@@ -120,6 +143,7 @@ public:
     std::optional<CameraStep> camera;
     int deboor_step = -1;
     std::string caption;
+    std::optional<AnimateStep> animation; // the last animate step, until a stop
 };
 
 struct ScriptHooks {

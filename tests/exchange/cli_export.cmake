@@ -100,6 +100,13 @@ run(curve_as_mesh 2 "a curve has no mesh"
 expect_missing(${OUT_DIR}/p.stl)
 run(samples 2 "samples 1 must be 2..1000" ${SCENES}/fig3c-weight-0.3.json -o ${OUT_DIR}/s.stl --samples 1)
 expect_missing(${OUT_DIR}/s.stl)
+# A number too large for an int is still that rule, not a conversion failure (it was exit 104).
+run(samples_huge 2 "samples 99999999999 must be 2..1000" ${SCENES}/fig3c-weight-0.3.json
+    -o ${OUT_DIR}/s.stl --samples 99999999999)
+expect_missing(${OUT_DIR}/s.stl)
+run(samples_not_a_number 2 "--samples" ${SCENES}/fig3c-weight-0.3.json -o ${OUT_DIR}/s.stl
+    --samples 1e999)
+expect_missing(${OUT_DIR}/s.stl)
 run(missing_scene 2 "no-such.json" ${OUT_DIR}/no-such.json -o ${OUT_DIR}/n.stp)
 expect_missing(${OUT_DIR}/n.stp)
 

@@ -213,10 +213,10 @@ TEST(SceneRead, TopLevelErrors) {
 
 TEST(SceneRead, NewerVersionIsRefusedBeforeItsNewMembers) {
     auto doc = scene_from_text(
-        R"({"format": "isoparm-scene", "version": 2, "objects": [], "patches": []})");
+        R"({"format": "isoparm-scene", "version": 3, "objects": [], "patches": []})");
     ASSERT_FALSE(doc.ok());
     EXPECT_EQ(doc.error().path, "/version");
-    EXPECT_NE(doc.error().message.find("version 2"), std::string::npos) << doc.error().message;
+    EXPECT_NE(doc.error().message.find("version 3"), std::string::npos) << doc.error().message;
 }
 
 TEST(SceneRead, ObjectErrors) {

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "core/doc/commands.hpp"
+#include "core/doc/commands_curve.hpp"
 #include "core/scene/scene_io.hpp"
 #include "ui/headless/egl_context.hpp"
 #include "ui/headless/offscreen_target.hpp"
@@ -24,7 +25,7 @@ namespace {
 
 using namespace isoparm;
 
-enum class Gesture { idle, indicator, point, orbit };
+enum class Gesture { idle, indicator, point, orbit, profile };
 
 // A 64x64 bicubic NURBS surface, gently waved, with varying weights (the big-net drag case).
 doc::Document nurbs_64x64() {
@@ -43,6 +44,25 @@ doc::Document nurbs_64x64() {
     return d;
 }
 
+// Fig. 8's vase refined to 64x64 control points (53 knots inserted along u, 55 along v after
+// the 11x9 revolution), still linked to its 11-point profile: a drag of a profile point rebuilds
+// it every frame (the associative constructions' drag case). The profile is selected, as when
+// its point is dragged in the curve designer.
+doc::Document vase_64x64(std::uint64_t& profile, glm::dvec3& p0) {
+    auto d = scene::load_scene(ISOPARM_SOURCE_DIR "/assets/scenes/fig8-revolution.json");
+    if (!d) return {};
+    doc::History h;
+    const std::uint64_t vase = 1;
+    profile = 2;
+    for (int k = 0; k < 53; ++k)
+        (void)h.execute(*d, doc::insert_knot(vase, geom::Dir::u, (k + 0.37) / 53));
+    for (int k = 0; k < 55; ++k)
+        (void)h.execute(*d, doc::insert_knot(vase, geom::Dir::v, (k + 0.37) / 55));
+    d->view.selection = {profile, 5, -1};
+    p0 = d->find(profile)->curve()->points[5];
+    return std::move(d).value();
+}
+
 void BM_Frame1440x900(benchmark::State& state, const char* scene, Gesture gesture) {
     std::string error;
     const std::unique_ptr<ui::EglContext> egl = ui::EglContext::create(error);
@@ -50,10 +70,22 @@ void BM_Frame1440x900(benchmark::State& state, const char* scene, Gesture gestur
         state.SkipWithError(("no headless OpenGL: " + error).c_str());
         return;
     }
-    // No scene file: the 64x64 net.
-    auto loaded = *scene ? scene::load_scene(std::string(ISOPARM_SOURCE_DIR "/assets/scenes/") +
-                                             scene)
-                         : geom::Expected<doc::Document>(nurbs_64x64());
+    // No scene file: the 64x64 net (or the 64x64 vase that follows its profile).
+    std::uint64_t profile = 0;
+    glm::dvec3 profile_p0(0);
+    auto loaded = *scene
+                      ? scene::load_scene(std::string(ISOPARM_SOURCE_DIR "/assets/scenes/") + scene)
+                  : gesture == Gesture::profile
+                      ? geom::Expected<doc::Document>(vase_64x64(profile, profile_p0))
+                      : geom::Expected<doc::Document>(nurbs_64x64());
+    if (loaded.ok() && gesture == Gesture::profile) {
+        const doc::Object* vase = loaded->find(1);
+        const geom::Surface* vs = vase ? vase->surface() : nullptr;
+        if (!vs || vs->n_u != 64 || vs->n_v != 64 || !vase->construction) {
+            state.SkipWithError("the 64x64 vase was not built");
+            return;
+        }
+    }
     if (!loaded.ok()) {
         state.SkipWithError(loaded.error().message.c_str());
         return;
@@ -93,6 +125,9 @@ void BM_Frame1440x900(benchmark::State& state, const char* scene, Gesture gestur
             case Gesture::orbit:
                 ui::orbit(ctx.ui.camera, 3, 1);
                 break;
+            case Gesture::profile:
+                ctx.execute(doc::move_curve_point(profile, 5, profile_p0 + glm::dvec3(t, 0, 0)));
+                break;
             }
             ws.frame(fbo);
             glFinish();
@@ -114,6 +149,8 @@ FRAME_CASE(fig3b_indicator_drag, "fig3b-weight-5.json", Gesture::indicator);
 FRAME_CASE(fig3b_point_drag, "fig3b-weight-5.json", Gesture::point);
 FRAME_CASE(fig3b_orbit, "fig3b-weight-5.json", Gesture::orbit);
 FRAME_CASE(nurbs64_point_drag, "", Gesture::point);
+// A profile point dragged while a 64x64 revolved surface follows it (rebuilt every frame).
+FRAME_CASE(vase64_profile_drag, "", Gesture::profile);
 FRAME_CASE(implicit_gallery_idle, "implicit-gallery.json", Gesture::idle);
 // Each frame redraws some 880k triangles: the closed meshes without their hidden side.
 FRAME_CASE(implicit_gallery_orbit, "implicit-gallery.json", Gesture::orbit);
