@@ -18,7 +18,8 @@
 //  3. drag: a control point dragged in the control-point panel's xy plane moves (Ctrl+S
 //     downloads the scene: the point's x and y changed, z did not); the indicator dragged in
 //     the tracing square moves to where it was dropped.
-//  4. lesson: File > Open lesson... with weights-and-knots, Next and the Right arrow step it.
+//  4. lesson: File > Open lesson... with weights-and-knots, Next and the Right arrow step it;
+//     P shows the stop in presentation mode and back.
 //  5. files: File > Open... > From this computer... uploads a scene; an edit autosaved into
 //     IndexedDB is offered back after a reload, and Restore brings it back.
 // Timings (medians of --runs loads and drags) are printed as "figure: ..." lines and written
@@ -270,7 +271,14 @@ async function lesson(p, args) {
   check(r.lesson.caption.includes('0.3'), 'the third caption is ' + JSON.stringify(r.lesson.caption));
   await p.idle();
   await p.page.screenshot({ path: path.join(args.out, 'web-lesson-third-stop.png') });
-  console.log('ok lesson: weights-and-knots stepped to its third stop');
+  // The classroom's view of the same stop: P turns presentation mode on and off.
+  await p.page.keyboard.press('p');
+  await p.waitFor('presentation mode', (r) => r.presentation);
+  await p.idle();
+  await p.page.screenshot({ path: path.join(args.out, 'web-lesson-presentation.png') });
+  await p.page.keyboard.press('p');
+  await p.waitFor('presentation mode off', (r) => !r.presentation);
+  console.log('ok lesson: weights-and-knots stepped to its third stop, shown in presentation mode');
 }
 
 // 5. Upload, autosave into IndexedDB, restore after a reload.

@@ -3,9 +3,9 @@
 # which `bash .ci/quickstart web` does). Included by the top level before anything else when
 # EMSCRIPTEN is set; docs/web.md says what differs from the desktop build and why.
 #
-# - Header-only libraries (GLM, nlohmann-json, stb, tinygltf) are Debian's, reached through a
-#   folder of links: never -isystem /usr/include, which would mix glibc's headers into the
-#   wasm sysroot's.
+# - Header-only libraries (GLM, nlohmann-json, stb, tinygltf, CGAL, Boost) are Debian's,
+#   reached through a folder of links: never -isystem /usr/include, which would mix glibc's
+#   headers into the wasm sysroot's.
 # - Dear ImGui is compiled from Debian's source package (fetch_imgui.sh), the same version as
 #   the desktop's libimgui-dev, with its GLFW and OpenGL ES 3 backends.
 # - GLFW and WebGL 2 are emscripten's own (-sUSE_GLFW=3); no zlib (stb deflates the PNGs), no
@@ -40,6 +40,8 @@ isoparm_web_link(glm /usr/include/glm)
 isoparm_web_link(nlohmann /usr/include/nlohmann)
 isoparm_web_link(stb /usr/include/stb)
 isoparm_web_link(tiny_gltf.h /usr/include/tiny_gltf.h)
+isoparm_web_link(CGAL /usr/include/CGAL)
+isoparm_web_link(boost /usr/include/boost)
 
 add_library(glm::glm INTERFACE IMPORTED)
 target_include_directories(glm::glm SYSTEM INTERFACE ${ISOPARM_WEB_INCLUDE})
@@ -47,6 +49,14 @@ add_library(nlohmann_json::nlohmann_json INTERFACE IMPORTED)
 target_include_directories(nlohmann_json::nlohmann_json SYSTEM INTERFACE ${ISOPARM_WEB_INCLUDE})
 # Found by ui/image through this variable (find_path keeps a value already set).
 set(ISOPARM_STB_HEADERS ${ISOPARM_WEB_INCLUDE} CACHE PATH "stb's headers (web: the links folder)")
+# Trimmed domains' constrained Delaunay triangulation (core/geom/trim/trim_triangulate.cpp):
+# Debian's CGAL and Boost headers, header-only, without GMP (the exact fallback is MP_Float
+# and Boost.Multiprecision). WebAssembly rounds to nearest only and cannot switch to rounding
+# upward, so CGAL's interval filters widen each result to the next double instead
+# (CGAL_ALWAYS_ROUND_TO_NEAREST): the predicates stay exact.
+add_library(CGAL::CGAL INTERFACE IMPORTED)
+target_include_directories(CGAL::CGAL SYSTEM INTERFACE ${ISOPARM_WEB_INCLUDE})
+target_compile_definitions(CGAL::CGAL INTERFACE CGAL_ALWAYS_ROUND_TO_NEAREST)
 # One thread: Threads::Threads adds nothing (no -pthread, no shared memory).
 add_library(Threads::Threads INTERFACE IMPORTED)
 
