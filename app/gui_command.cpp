@@ -19,6 +19,7 @@
 #include "ui/actions.hpp"
 #include "ui/render/renderer.hpp"
 #include "ui/view/settings.hpp"
+#include "ui/view/stage.hpp"
 #include "ui/view/window_placement.hpp"
 #include "ui/workstation.hpp"
 
@@ -89,7 +90,14 @@ void toggle_fullscreen(GLFWwindow* window, ui::ScreenRect& windowed) {
     glfwSetWindowMonitor(window, m, 0, 0, mode->width, mode->height, mode->refreshRate);
 }
 
-int run_window(const std::string& scene, const std::string& lesson, int autosave_seconds) {
+// What the window shows first: the workstation, a teaching view on the stage, or four views.
+struct FirstView {
+    ui::StageView stage = ui::StageView::none;
+    bool four_views = false;
+};
+
+int run_window(const std::string& scene, const std::string& lesson, int autosave_seconds,
+               const FirstView& first) {
     const char* x11 = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     if ((!x11 || !*x11) && (!wayland || !*wayland)) {
@@ -158,6 +166,8 @@ int run_window(const std::string& scene, const std::string& lesson, int autosave
                 std::cerr << "isoparm: " << ctx.ui.error_message << "\n";
             if (!lesson.empty() && !ui::open_lesson(ctx, lesson))
                 std::cerr << "isoparm: " << ctx.ui.error_message << "\n";
+            ctx.ui.stage.view = first.stage;
+            ctx.ui.stage.four_views = first.four_views;
             if (autosave_seconds > 0)
                 ctx.ui.recovery.offers = recovery_offers(scene, ctx.settings.recent);
             while (!ctx.ui.quit_now) {
@@ -213,8 +223,24 @@ Action register_gui_command(CLI::App& app) {
                    "next start offers to restore after a crash (0: no autosave, no offer)")
         ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
-    return [scene, lesson, autosave_seconds]() -> int {
-        return run_window(*scene, *lesson, *autosave_seconds);
+    auto stage = std::make_shared<std::string>();
+    app.add_option("--stage", *stage,
+                   "open with this teaching view at full size (Esc returns to the workstation): " +
+                       ui::stage_view_names())
+        ->check([](const std::string& name) -> std::string {
+            if (ui::stage_view_named(name)) return {};
+            return "'" + name + "' is not a teaching view; one of " + ui::stage_view_names();
+        });
+    auto layout = std::make_shared<std::string>("workstation");
+    app.add_option("--layout", *layout,
+                   "open with this layout: workstation, or four (xy, 3D, xz, yz at equal size)")
+        ->check(CLI::IsMember({"workstation", "four"}))
+        ->capture_default_str();
+    return [scene, lesson, autosave_seconds, stage, layout]() -> int {
+        FirstView first;
+        if (!stage->empty()) first.stage = *ui::stage_view_named(*stage);
+        first.four_views = *layout == "four" && first.stage == ui::StageView::none;
+        return run_window(*scene, *lesson, *autosave_seconds, first);
     };
 }
 

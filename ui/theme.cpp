@@ -1,11 +1,16 @@
 // Themes and font sizes.
 #include "ui/theme.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdarg>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
+
+#include "ui/view/text_wrap.hpp"
 
 namespace isoparm::ui {
 
@@ -93,12 +98,42 @@ std::string rebuild_fonts(float scale) {
     return note;
 }
 
+namespace {
+
+void wrapped_lines(const char* text, float width) {
+    const MeasureText measure = [](std::string_view s) {
+        const ImVec2 v = ImGui::CalcTextSize(s.data(), s.data() + s.size());
+        return glm::vec2(v.x, v.y);
+    };
+    // One text item of several lines, as ImGui::TextWrapped lays it out (no item spacing
+    // between the lines).
+    std::string joined;
+    for (const std::string& line : wrap_at_spaces(text, std::max(width, 1.f), measure)) {
+        if (!joined.empty()) joined += '\n';
+        joined += line;
+    }
+    ImGui::TextUnformatted(joined.c_str());
+}
+
+} // namespace
+
 void wrapped_tooltip(const std::string& text) {
     ImGui::BeginTooltip();
-    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
-    ImGui::TextUnformatted(text.c_str());
-    ImGui::PopTextWrapPos();
+    wrapped_lines(text.c_str(), ImGui::GetFontSize() * 28.0f);
     ImGui::EndTooltip();
+}
+
+void text_wrapped(const char* fmt, ...) {
+    va_list args, again;
+    va_start(args, fmt);
+    va_copy(again, args);
+    const int n = std::vsnprintf(nullptr, 0, fmt, args);
+    va_end(args);
+    std::string text(static_cast<std::size_t>(std::max(n, 0)) + 1, '\0');
+    std::vsnprintf(text.data(), text.size(), fmt, again);
+    va_end(again);
+    text.pop_back();
+    wrapped_lines(text.c_str(), ImGui::GetContentRegionAvail().x);
 }
 
 ImVec4 error_text_color() {

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -25,6 +26,7 @@
 #include "ui/view/layout.hpp"
 #include "ui/view/picking.hpp"
 #include "ui/view/scene_draw.hpp"
+#include "ui/view/stage.hpp"
 #include "ui/view/triangle_denominator.hpp"
 #include "ui/view/triangle_domain.hpp"
 
@@ -62,6 +64,9 @@ struct PlaneDrag {
 
 struct NewSurfaceForm {
     int rows = 5, cols = 5, degree_u = 3, degree_v = 3;
+    // The degrees chosen for B-spline and NURBS types: a Bezier type shows rows - 1 and
+    // cols - 1 without forgetting them, so switching back restores them.
+    int spline_degree_u = 3, spline_degree_v = 3;
     int type = 3; // geom::SplineType: 0 bezier, 1 rational bezier, 2 bspline, 3 nurbs
     bool open = false;
     std::string error;
@@ -270,6 +275,19 @@ struct BlossomState {
     int span = -1, v_span = -1;
 };
 
+// The stage (ui/workstation.cpp): one teaching view at full size in the main area, or the
+// four-view layout (3D + xy + xz + yz); the zoom and pan of the canvases shown there.
+struct StageState {
+    StageView view = StageView::none;
+    bool four_views = false;
+    std::map<std::string, CanvasView> canvases; // by canvas name (tracing, plane/xy, ...)
+    std::string panning;                        // the canvas a right-drag pans, "" none
+    StageView hovered = StageView::none;        // the teaching view under the pointer (T stages it)
+    StageView hovered_next = StageView::none;   // ... as this frame's panels report it
+    bool fit = false;                           // F: the staged canvases return to their fit
+    bool active() const { return view != StageView::none || four_views; }
+};
+
 // When the status bar's message appeared (it fades, then goes, after status_seconds).
 struct StatusAge {
     std::string text;
@@ -349,6 +367,7 @@ struct UiState {
     DenominatorView denominator;
     TriangleDenominatorView triangle_denominator; // the same picture on a domain triangle
     HomogeneousState homogeneous;
+    StageState stage;
     int left_tab = 0; // the teaching tab shown below the tracing square (ui/workstation.cpp)
     // File > Export picture / figure / animation and Ctrl+Shift+C (ui/media_export.hpp).
     MediaExportState media_export;

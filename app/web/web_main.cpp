@@ -2,17 +2,20 @@
 // and the window's turn (app/window_loop.hpp) called once per animation frame, since a page
 // cannot run a loop of its own.
 //
-// The page's address chooses what opens: ?scene=NAME (an example, assets/scenes/NAME.json) and
-// ?lesson=NAME (assets/lessons/NAME.json). ?report=1 records the UI report for tests
-// (app/web/web_pre.js); ?autosave=S autosaves every S seconds instead of 15. For measurements:
-// Module.isoparmFrames collects each drawn frame's work in milliseconds, isoparmFrameEnds when
-// each ended and isoparmFirstFrame when the first did (performance.now(): from navigation).
+// The page's address chooses what opens: ?scene=NAME (an example, assets/scenes/NAME.json),
+// ?lesson=NAME (assets/lessons/NAME.json), ?stage=NAME (a teaching view on the stage, as
+// `isoparm --stage NAME`) and ?layout=four (the four views). ?report=1 records the UI report for
+// tests (app/web/web_pre.js); ?autosave=S autosaves every S seconds instead of 15. For
+// measurements: Module.isoparmFrames collects each drawn frame's work in milliseconds,
+// isoparmFrameEnds when each ended and isoparmFirstFrame when the first did (performance.now():
+// from navigation).
 #include <emscripten/emscripten.h>
 #include <emscripten/html5.h>
 #include <unistd.h>
 
 #include <cstdlib>
 #include <memory>
+#include <optional>
 #include <string>
 
 #define GLFW_INCLUDE_NONE
@@ -24,6 +27,7 @@
 #include "ui/actions.hpp"
 #include "ui/platform/files.hpp"
 #include "ui/view/settings.hpp"
+#include "ui/view/stage.hpp"
 #include "ui/workstation.hpp"
 
 namespace isoparm::web {
@@ -192,6 +196,15 @@ int main() {
         ui::open_file(ctx, "/isoparm/assets/scenes/" + s + ".json");
     if (const std::string l = web::parameter("lesson"); !l.empty())
         ui::open_lesson(ctx, "/isoparm/assets/lessons/" + l + ".json");
+    // What the page shows first, as `isoparm --stage NAME` and `--layout four` choose it.
+    if (const std::string st = web::parameter("stage"); !st.empty()) {
+        if (const std::optional<ui::StageView> v = ui::stage_view_named(st))
+            ctx.ui.stage.view = *v;
+        else
+            ctx.ui.status = "?stage=" + st + " is not a teaching view: " + ui::stage_view_names();
+    }
+    if (web::parameter("layout") == "four" && ctx.ui.stage.view == ui::StageView::none)
+        ctx.ui.stage.four_views = true;
     // Work a closed tab or a crash left: the recovery folder came back from IndexedDB.
     ctx.ui.recovery.offers = app::recovery_offers("", ctx.settings.recent);
     emscripten_set_main_loop_arg(web::turn, nullptr, 0, false);

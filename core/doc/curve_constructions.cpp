@@ -191,9 +191,9 @@ geom::Expected<ConstructionResult> build_from_curves(const Document& doc,
         surface = std::move(r->skinned.surface);
         out.note = "oriented sweep of " + std::to_string(r->sections + 1) +
                    " profile copies: largest deviation from the ideal sweep " +
-                   geom::format_number(r->max_deviation) + " at (u, v) = (" +
-                   geom::format_number(r->deviation_u) + ", " +
-                   geom::format_number(r->deviation_v) + "); more sections make it smaller";
+                   geom::format_short(r->max_deviation) + " at (u, v) = (" +
+                   geom::format_short(r->deviation_u) + ", " + geom::format_short(r->deviation_v) +
+                   "); more sections make it smaller";
         break;
     }
     case Construction::skin: {
@@ -212,7 +212,7 @@ geom::Expected<ConstructionResult> build_from_curves(const Document& doc,
         out.note = std::string("skin of ") + std::to_string(count) + " curves, v-degree " +
                    std::to_string(degree) + ", " +
                    geom::parametrization_name(request.parametrization) + " parameters v =";
-        for (double v : r->params) out.note += " " + geom::format_number(v);
+        for (double v : r->params) out.note += " " + geom::format_short(v);
         break;
     }
     case Construction::coons: {
@@ -239,9 +239,9 @@ geom::Expected<ConstructionResult> build_from_curves(const Document& doc,
         if (!r) return rehome(r.error(), objects, nu);
         surface = std::move(r->surface);
         out.note = "Gordon surface through " + std::to_string(nu) + " u-curves (at v =";
-        for (double v : r->v_params) out.note += " " + geom::format_number(v);
+        for (double v : r->v_params) out.note += " " + geom::format_short(v);
         out.note += ") and " + std::to_string(n - nu) + " v-curves (at u =";
-        for (double u : r->u_params) out.note += " " + geom::format_number(u);
+        for (double u : r->u_params) out.note += " " + geom::format_short(u);
         out.note += ")";
         break;
     }

@@ -199,7 +199,17 @@ bool same_view(const ViewState& a, const ViewState& b) {
            same_bits(a.indicator.y, b.indicator.y) &&
            same_bits(a.barycentric[0], b.barycentric[0]) &&
            same_bits(a.barycentric[1], b.barycentric[1]) &&
-           same_bits(a.barycentric[2], b.barycentric[2]) && a.display == b.display;
+           same_bits(a.barycentric[2], b.barycentric[2]) && a.display == b.display &&
+           a.object_display == b.object_display;
+}
+
+ObjectDisplay defaults_of(const DisplaySettings& d) {
+    return {d.control_points, d.control_net, d.point_ids, d.knot_curves};
+}
+
+ObjectDisplay display_of(const ViewState& view, std::uint64_t id) {
+    const auto it = view.object_display.find(id);
+    return it != view.object_display.end() ? it->second : defaults_of(view.display);
 }
 
 bool same_document(const Document& a, const Document& b) {

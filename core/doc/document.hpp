@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <glm/vec2.hpp>
+#include <map>
 #include <optional>
 #include <span>
 #include <string>
@@ -230,14 +231,31 @@ struct Selection {
 
 // What the user is looking at rather than what the scene is: saved with the scene, but not
 // part of undo (an undo restores geometry and leaves the view where it is).
+// One object's own display toggles (C, N, I, K with the object selected; Display > Selected
+// object): control points, net, point names and knot curves. An object without its own takes
+// the scene's DisplaySettings, which are the defaults for new objects, so hiding one object's
+// points never hides the next new surface's.
+struct ObjectDisplay {
+    bool control_points = true;
+    bool control_net = true;
+    bool point_ids = false;
+    bool knot_curves = false;
+    bool operator==(const ObjectDisplay&) const = default;
+};
+ObjectDisplay defaults_of(const DisplaySettings& d);
+
 struct ViewState {
     Selection selection;
     glm::dvec2 indicator{0.5, 0.5}; // (u, v) normalized to [0,1]^2 over the current domain
     // A triangle's indicator (r, s, t), barycentric: its own, since the square's (u, v) has
     // no meaning on a triangle and switching objects should keep both.
     geom::Barycentric barycentric{1.0 / 3, 1.0 / 3, 1.0 / 3};
-    DisplaySettings display;
+    DisplaySettings display;                               // the defaults for every object
+    std::map<std::uint64_t, ObjectDisplay> object_display; // objects with their own, by id
 };
+
+// What object `id` shows: its own toggles, else the scene's defaults.
+ObjectDisplay display_of(const ViewState& view, std::uint64_t id);
 
 struct Document {
     std::vector<Object> objects;

@@ -59,6 +59,16 @@ template <class D> auto display_flags(D& d) {
     }};
 }
 
+template <class D> auto object_display_flags(D& d) {
+    using B = std::conditional_t<std::is_const_v<D>, const bool*, bool*>;
+    return std::array<std::pair<const char*, B>, 4>{{
+        {"control_points", &d.control_points},
+        {"control_net", &d.control_net},
+        {"point_ids", &d.point_ids},
+        {"knot_curves", &d.knot_curves},
+    }};
+}
+
 constexpr int max_density = 256;
 constexpr std::size_t max_objects = 100000;
 
@@ -568,9 +578,45 @@ Expected<Continuity> continuity_from_json(const json& j, const std::string& at) 
 
 namespace {} // namespace
 
+json without_display(const json& object) {
+    json rest = object;
+    rest.erase("display");
+    return rest;
+}
+
+json object_display_to_json(const ObjectDisplay& d) {
+    json j = json::object();
+    for (const auto& [name, flag] : object_display_flags(d)) j[name] = *flag;
+    return j;
+}
+
+Expected<ObjectDisplay> object_display_from_json(const json& j, const std::string& at,
+                                                 ObjectDisplay d) {
+    if (auto st = expect_object(j, at, "display"); !st) return st.error();
+    std::vector<std::string_view> allowed;
+    for (auto& [name, flag] : object_display_flags(d)) allowed.push_back(name);
+    if (auto st = check_members(j, at, "an object's display", allowed); !st) return st.error();
+    for (auto& [name, flag] : object_display_flags(d))
+        if (const auto it = j.find(name); it != j.end()) {
+            auto v = read_bool(*it, member_path(at, name));
+            if (!v) return v.error();
+            *flag = *v;
+        }
+    return d;
+}
+
 json scene_to_json(const Document& doc) {
     json objects = json::array();
-    for (const Object& o : doc.objects) objects.push_back(object_to_json(o));
+    bool own_display = false;
+    for (const Object& o : doc.objects) {
+        json oj = object_to_json(o);
+        // An object's own display toggles (format version 2); the others take the scene's.
+        if (const auto d = doc.view.object_display.find(o.id); d != doc.view.object_display.end()) {
+            oj["display"] = object_display_to_json(d->second);
+            own_display = true;
+        }
+        objects.push_back(std::move(oj));
+    }
     json colors = colors_to_json(doc.colors);
 
     json display = display_to_json(doc.view.display);
@@ -581,11 +627,12 @@ json scene_to_json(const Document& doc) {
 
     json scene = json::object();
     scene["format"] = scene_format_name;
-    // Version 2 only where it is needed (a construction), so other scenes save as before.
+    // Version 2 only where it is needed (an object's own display toggles or a construction), so
+    // other scenes save as version 1 and read in older builds as before.
     const bool constructions =
         std::any_of(doc.objects.begin(), doc.objects.end(),
                     [](const Object& o) { return o.construction.has_value(); });
-    scene["version"] = constructions ? scene_format_version : 1;
+    scene["version"] = own_display || constructions ? scene_format_version : 1;
     scene["objects"] = std::move(objects);
     scene["colors"] = std::move(colors);
     scene["display"] = std::move(display);
@@ -650,9 +697,19 @@ Expected<Document> scene_from_json(const json& j) {
                               " objects, got " + std::to_string(objects->size()),
                           "/objects");
     std::set<std::uint64_t> ids;
+    std::vector<std::pair<std::size_t, const json*>> own_displays; // object index, its display
     for (std::size_t k = 0; k < objects->size(); ++k) {
         const std::string at = "/objects/" + std::to_string(k);
-        auto o = object_from_json((*objects)[k], at);
+        const json& oj = (*objects)[k];
+        // An object's own display is view state, not geometry: read apart (version 2).
+        const bool own = oj.is_object() && oj.contains("display");
+        if (own && *v < 2)
+            return schema_error("an object's display needs format version 2, this scene says "
+                                "version " +
+                                    std::to_string(*v),
+                                at + "/display");
+        if (own) own_displays.emplace_back(k, &oj.at("display"));
+        auto o = own ? object_from_json(without_display(oj), at) : object_from_json(oj, at);
         if (!o) return o.error();
         if (o->id != 0 && !ids.insert(o->id).second)
             return schema_error("object id " + std::to_string(o->id) + " is used twice",
@@ -680,6 +737,12 @@ Expected<Document> scene_from_json(const json& j) {
         auto display = display_from_json(*d, "/display", doc.view.display);
         if (!display) return display.error();
         doc.view.display = *display;
+    }
+    for (const auto& [k, dj] : own_displays) {
+        auto d = object_display_from_json(*dj, "/objects/" + std::to_string(k) + "/display",
+                                          defaults_of(doc.view.display));
+        if (!d) return d.error();
+        doc.view.object_display[doc.objects[k].id] = *d;
     }
     if (const auto s = j.find("selection"); s != j.end()) {
         auto selection = selection_from_json(*s, "/selection", doc);

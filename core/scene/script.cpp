@@ -30,8 +30,9 @@ constexpr std::size_t max_steps = 100000;
 
 // The member that says what a step is (besides "command", which makes it a command).
 constexpr std::string_view step_kinds[] = {
-    "undo",   "redo",        "select",     "indicator", "barycentric", "display", "continuity",
-    "camera", "deboor_step", "screenshot", "caption",   "pause",       "expect",  "animate"};
+    "undo",    "redo",       "select", "indicator",   "barycentric",
+    "display", "continuity", "camera", "deboor_step", "screenshot",
+    "caption", "pause",      "expect", "animate",     "object_display"};
 
 std::string kinds_list() {
     std::string out = "command";
@@ -456,6 +457,19 @@ Expected<Step> read_step(const json& j, const std::string& at) {
         if (!d) return d.error();
         return step(DisplayStep{v});
     }
+    if (kind == "object_display") {
+        if (auto st = expect_object(v, kat, "object_display"); !st) return st.error();
+        const auto id = v.find("object");
+        if (id == v.end()) return missing_member(kat, "object");
+        auto n = read_integer(*id, kat + "/object", "object", 1,
+                              static_cast<std::int64_t>(max_object_id));
+        if (!n) return n.error();
+        json flags = v;
+        flags.erase("object");
+        auto d = object_display_from_json(flags, kat, doc::ObjectDisplay{});
+        if (!d) return d.error();
+        return step(ObjectDisplayStep{static_cast<std::uint64_t>(*n), std::move(flags)});
+    }
     if (kind == "continuity") {
         auto c = continuity_from_json(v, kat);
         if (!c) return c.error();
@@ -743,6 +757,15 @@ geom::Status run_step(const Step& step, ScriptState& state, const ScriptHooks& h
         auto d = display_from_json(disp->display, "/display", state.doc.view.display);
         if (!d) return at_step(d.error());
         state.doc.view.display = *d;
+    } else if (const auto* od = std::get_if<ObjectDisplayStep>(&a)) {
+        if (!state.doc.find(od->object))
+            return at_step(geom::make_error(
+                ErrorCode::schema, "there is no object with id " + std::to_string(od->object),
+                "/object_display/object"));
+        auto d = object_display_from_json(od->display, "/object_display",
+                                          doc::display_of(state.doc.view, od->object));
+        if (!d) return at_step(d.error());
+        state.doc.view.object_display[od->object] = *d;
     } else if (const auto* cont = std::get_if<ContinuityStep>(&a)) {
         state.doc.continuity = cont->mode;
     } else if (const auto* cam = std::get_if<CameraStep>(&a)) {

@@ -49,6 +49,12 @@ struct BarycentricStep {
 struct DisplayStep {
     nlohmann::json display; // as a scene file's "display"; members not named keep their value
 };
+// One object's own display toggles ({"object_display": {"object": id, "control_points": ...}});
+// members not named keep the object's value.
+struct ObjectDisplayStep {
+    std::uint64_t object = 0;
+    nlohmann::json display;
+};
 struct ContinuityStep {
     doc::Continuity mode = doc::Continuity::off;
 };
@@ -99,9 +105,10 @@ struct ExpectStep {
     double tolerance = 1e-9;
 };
 
-using StepAction = std::variant<doc::CommandSpec, UndoStep, RedoStep, SelectStep, IndicatorStep,
-                                DisplayStep, ContinuityStep, CameraStep, DeBoorStep, ScreenshotStep,
-                                CaptionStep, PauseStep, ExpectStep, BarycentricStep, AnimateStep>;
+using StepAction =
+    std::variant<doc::CommandSpec, UndoStep, RedoStep, SelectStep, IndicatorStep, DisplayStep,
+                 ContinuityStep, CameraStep, DeBoorStep, ScreenshotStep, CaptionStep, PauseStep,
+                 ExpectStep, BarycentricStep, AnimateStep, ObjectDisplayStep>;
 
 struct Step {
     StepAction action;

@@ -17,6 +17,7 @@ import time
 import traceback
 
 from gui_session import Failure, Session, display
+import projector_scenarios
 
 
 def check(cond, message):
@@ -123,11 +124,21 @@ def implicit_editor_after_new_implicit(s, ctx):
     ctx.shot(s, "implicit-editor")
 
 
+def detach_the_vase(s):
+    """fig8's vase is a revolution of its profile: it follows the profile and refuses edits of
+    its own points. Construct > Detach makes it a free surface (one undo step)."""
+    s.click_named("objects/vase")
+    s.wait_for("the vase selected", lambda r: r["selected"] == "vase")
+    s.menu("Construct", "Detach (free the selected object)")
+    s.wait_for("the vase detached", lambda r: r["undo"] == "Detach vase")
+    check("construction" not in by_name(s.save(), "vase"), "Detach left the vase's recipe")
+
+
 def control_points_after_starting_with_a_curve(s, ctx):
     """fig8-revolution starts with its profile curve selected; select the surface and a point,
     then drag the point in the xy plane of the control-point panel."""
     r = s.wait_for("the curve designer", lambda r: "curve/canvas" in r["rects"])
-    s.click_named("objects/vase")
+    detach_the_vase(s)
     r = s.wait_for("the vase selected", lambda r: r["selected"] == "vase")
     if not r["control_points"]:  # this scene hides them: C shows them, as the help says
         s.key("c")
@@ -327,6 +338,7 @@ def lesson_steps_from_pause_to_pause(s, ctx):
 def toolbox_split_knot_then_convert(s, ctx):
     """Surface menu: split the double knot v = 0.5 under the indicator (the shape moves a
     little, the knots change), then Convert to > Bezier asks first and makes the pieces."""
+    detach_the_vase(s)
     before = s.save()
     s.menu("Surface", "Reshape", "Split knot v = 0.5 (x2)")
     r = s.wait_for("the split knot", lambda r: r["undo"].startswith("Split knot v = 0.5"))
@@ -834,7 +846,7 @@ SCENARIOS = [
     ("rational_picture", "fig3b-weight-5.json", rational_picture_and_homogeneous_view),
     ("triangle_patch", "fig3b-weight-5.json", triangle_patch_new_split_elevate),
     ("figures", "fig3b-weight-5.json", figures_from_the_window),
-]
+] + projector_scenarios.SCENARIOS  # the stage, four views, labels apart (issue #30)
 
 
 class Context:
@@ -843,6 +855,7 @@ class Context:
         self.shots = shots
         self.screen = screen
         self.name = ""
+        self.sizes = {}  # staged canvases' sizes in pixels, printed at the end
 
     def shot(self, session, what):
         if self.shots:
@@ -889,12 +902,14 @@ def run_scenarios(args):
     ctx = Context(args.shots, args.screen + ("-presentation" if args.presentation else ""),
                   os.path.abspath(args.scenes))
     passed = failed = 0
-    for name, scene, run in SCENARIOS:
-        if args.only and name != args.only:
+    for name, scene, run, *extra in SCENARIOS:
+        if args.only and name != args.only and not (args.only.endswith("*") and
+                                                    name.startswith(args.only[:-1])):
             continue
         ctx.name = name
         work = tempfile.mkdtemp(prefix=f"isoparm-scenario-{name}-")
-        s = Session(args.isoparm, work, os.path.join(args.scenes, scene))
+        s = Session(args.isoparm, work, os.path.join(args.scenes, scene),
+                    extra_args=extra[0] if extra else ())
         ok = True
         started = time.time()
         try:
@@ -930,6 +945,8 @@ def run_scenarios(args):
         else:
             failed += 1
             print(f"scenario {name}: files kept in {work}")
+    for view, (w, h) in sorted(ctx.sizes.items()):
+        print(f"size [{ctx.screen}] {view}: {w}x{h} px")
     print(f"{passed} passed, {failed} failed")
     return 0 if failed == 0 and passed > 0 else 1
 

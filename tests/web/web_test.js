@@ -14,7 +14,8 @@
 //     byte for byte as `isoparm geom` with the baseline kernel (ISOPARM_SIMD=baseline), and a
 //     text that is not JSON throws the command line's message.
 //  2. picture: fig3b-weight-5 at 1024x768 matches `isoparm render --view workstation` of the
-//     same scene (compare_png, tolerance stated below).
+//     same scene (compare_png, tolerance stated below); ?stage=tracing puts the tracing
+//     square on the stage.
 //  3. drag: a control point dragged in the control-point panel's xy plane moves (Ctrl+S
 //     downloads the scene: the point's x and y changed, z did not); the indicator dragged in
 //     the tracing square moves to where it was dropped.
@@ -205,6 +206,12 @@ async function picture(p, args) {
                       ' (pictures: ' + shot + ', ' + reference + ', ' + diff + ')');
   }
   console.log('ok picture: ' + out.trim());
+  // A teaching view on the stage, chosen by the page's address as `isoparm --stage` chooses it.
+  await p.open('scene=fig3b-weight-5&stage=tracing');
+  await p.rect('stage/tracing');
+  await p.idle();
+  await p.page.screenshot({ path: path.join(args.out, 'web-fig3b-stage-tracing.png') });
+  console.log('ok stage: ?stage=tracing shows the tracing square on the stage');
 }
 
 // 3. A control point and the indicator, dragged.

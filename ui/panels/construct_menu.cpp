@@ -7,8 +7,10 @@
 #include <vector>
 
 #include "core/doc/commands.hpp"
+#include "core/doc/commands_construction.hpp"
 #include "core/doc/commands_curve.hpp"
 #include "core/doc/curve_constructions.hpp"
+#include "core/doc/placement.hpp"
 #include "ui/actions.hpp"
 #include "ui/panels/fit_panel.hpp"
 #include "ui/panels/panels.hpp"
@@ -22,11 +24,15 @@ namespace {
 
 constexpr int make_compatible_kind = 8; // after the doc::Construction values
 
+// A new curve beside what the scene holds (never on top of it), with a name no other object
+// has; selected, and the camera refits to show it.
 void add_and_select(AppContext& ctx, geom::Expected<doc::Object> o, const char* what) {
     if (!o) {
         show_error(ctx, std::string("Cannot add the ") + what, o.error().message);
         return;
     }
+    doc::place_beside_scene(ctx.doc, o->shape);
+    o->name = doc::unique_name(ctx.doc, o->name);
     ctx.seal();
     if (ctx.execute(doc::add_object(std::move(o).value()))) {
         ctx.doc.view.selection = {ctx.doc.objects.back().id, -1, -1};
@@ -115,6 +121,20 @@ void construct_menu(AppContext& ctx) {
         if (k == 6) ImGui::Separator(); // from a boundary or a network of curves
         if (menu_item(items[k])) open_dialog(ctx, k);
     }
+    ImGui::Separator();
+    // A constructed object follows its curves and refuses edits of its own points; detaching it
+    // (one undo step) makes it a free object again.
+    const doc::Object* sel = ctx.doc.selected();
+    const bool linked = sel && sel->construction;
+    if (menu_item("Detach (free the selected object)", nullptr, false, linked)) {
+        const std::string name = sel->name;
+        ctx.seal();
+        if (ctx.execute(doc::detach(sel->id)))
+            ctx.ui.status = "Detached '" + name + "': it no longer follows its curves";
+        ctx.seal();
+    }
+    if (!linked && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("Select a constructed object (one built from curves, still linked)");
     ImGui::EndMenu();
 }
 
@@ -306,6 +326,8 @@ bool build(AppContext& ctx) {
         cd.error = title + ". " + result.error().message;
         return false;
     }
+    // Built from its curves where they are; a rebuild gets a name of its own.
+    result->object.name = doc::unique_name(ctx.doc, result->object.name);
     const std::string name = result->object.name;
     ctx.seal();
     if (!ctx.execute(doc::add_object(std::move(result->object)))) {
@@ -353,25 +375,25 @@ void draw_construct_dialog(AppContext& ctx) {
                             : doc::construction_label(static_cast<doc::Construction>(kind));
     ImGui::TextUnformatted(title);
     ImGui::Separator();
-    ImGui::TextWrapped("%s", what_it_does(kind));
+    text_wrapped("%s", what_it_does(kind));
     ImGui::Spacing();
     curve_chooser(ctx);
     if (kind == make_compatible_kind && !cd.chosen.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-        ImGui::TextWrapped("%s", curves_text(ctx.doc, cd.chosen).c_str());
+        text_wrapped("%s", curves_text(ctx.doc, cd.chosen).c_str());
         ImGui::PopStyleColor();
     }
     parameters(ctx);
     if (!cd.note.empty()) {
         ImGui::Separator();
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.45f, 0.85f, 0.5f, 1));
-        ImGui::TextWrapped("%s", cd.note.c_str());
+        text_wrapped("%s", cd.note.c_str());
         ImGui::PopStyleColor();
     }
     if (!cd.error.empty()) {
         ImGui::Separator();
         ImGui::PushStyleColor(ImGuiCol_Text, error_text_color());
-        ImGui::TextWrapped("%s", cd.error.c_str());
+        text_wrapped("%s", cd.error.c_str());
         ImGui::PopStyleColor();
     }
     ImGui::Spacing();

@@ -11,21 +11,27 @@
 
 #include "core/doc/commands.hpp"
 #include "ui/panels/panels.hpp"
-#include "ui/panels/plane_canvas.hpp"
+#include "ui/panels/picture_draw.hpp"
+#include "ui/panels/stage_controls.hpp"
+#include "ui/theme.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/canvas_map.hpp"
 #include "ui/view/control_net.hpp"
 #include "ui/view/doc_access.hpp"
+#include "ui/view/text_wrap.hpp"
 
 namespace isoparm::ui {
 
 namespace {
 
-ImVec2 iv(const glm::dvec2& p) {
-    return {static_cast<float>(p.x), static_cast<float>(p.y)};
-}
 ImU32 u32(const doc::Rgba& c, float alpha = 1) {
     return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, alpha));
+}
+
+StageView stage_plane_view(int plane) {
+    return plane == 0   ? StageView::plane_xy
+           : plane == 1 ? StageView::plane_xz
+                        : StageView::plane_yz;
 }
 
 // The framing of one plane: the control points' box in that plane, with a margin.
@@ -97,46 +103,52 @@ bool plane_canvas(AppContext& ctx, const doc::Object& obj, const ControlNet& net
     const bool hovered = ImGui::IsItemHovered();
     ImGui::PopID();
 
-    ImDrawList* dl = ImGui::GetWindowDrawList();
-    const ImVec2 a(canvas.x, canvas.y), b(canvas.x + canvas.w, canvas.y + canvas.h);
+    if (hovered) ctx.ui.stage.hovered_next = stage_plane_view(plane);
     const bool light = ctx.ui.presentation;
-    begin_plane_canvas(dl, map, canvas, light);
+    Picture pic;
+    pic.view = std::string("cp/") + ax.name;
+    pic.frame = canvas;
+    pic.background = light ? rgba8(250, 250, 250) : rgba8(26, 28, 34);
+    pic.border = light ? rgba8(0, 0, 0) : rgba8(110, 115, 130);
+    pic.border_width = 1 * k;
+    const glm::dvec2 o = plane_to_pixel(map, {0, 0});
+    const Rgba8 axis_col = light ? rgba8(150, 150, 150) : rgba8(80, 84, 96);
+    pic.line({canvas.x, static_cast<float>(o.y)}, {canvas.x + canvas.w, static_cast<float>(o.y)},
+             axis_col);
+    pic.line({static_cast<float>(o.x), canvas.y}, {static_cast<float>(o.x), canvas.y + canvas.h},
+             axis_col);
     // The net, projected.
     const doc::Colors& col = ctx.doc.colors;
     auto px = [&](int q) {
         const glm::dvec3& p = net.points[static_cast<std::size_t>(q)];
-        return iv(plane_to_pixel(map, {p[ax.a], p[ax.b]}));
+        return glm::vec2(plane_to_pixel(map, {p[ax.a], p[ax.b]}));
     };
-    // The net's lines as polylines (far fewer vertices than one line per segment).
-    std::vector<ImVec2> line;
-    const ImU32 net_col = u32(col.control_net, 0.45f);
+    const Rgba8 net_col = u32(col.control_net, 0.45f);
     for (const std::vector<int>& l : net.lines) {
-        line.clear();
+        std::vector<glm::vec2> line;
         for (int q : l) line.push_back(px(q));
-        dl->AddPolyline(line.data(), static_cast<int>(line.size()), net_col, 0, 1 * k);
+        pic.polyline(std::move(line), net_col, 1 * k);
     }
     // Dots only while they stay readable; a dense net is clearer as lines alone.
     if (net.points.size() <= 144)
         for (std::size_t q = 0; q < net.points.size(); ++q)
-            dl->AddCircleFilled(px(static_cast<int>(q)), 2.5f * k, u32(col.control_points, 0.8f),
-                                8);
+            pic.disk(px(static_cast<int>(q)), 2.5f * k, u32(col.control_points, 0.8f));
     const bool active = pd.plane == plane;
-    dl->AddCircleFilled(iv(disk), disk_r, u32(col.selected_point), 20);
-    dl->AddCircle(iv(disk), disk_r,
-                  active || hovered ? IM_COL32(255, 255, 255, 255) : IM_COL32(0, 0, 0, 255), 20,
-                  1.5f * k);
-    dl->PopClipRect();
-    dl->AddRect(a, b, light ? IM_COL32(0, 0, 0, 255) : IM_COL32(110, 115, 130, 255), 0, 0, 1 * k);
-    // Axis names: horizontal bottom-right, vertical top-left.
+    pic.disk(glm::vec2(disk), disk_r, u32(col.selected_point),
+             active || hovered ? rgba8(255, 255, 255) : rgba8(0, 0, 0), 1.5f * k);
+    pic.keep_clear.push_back({static_cast<float>(disk.x) - disk_r,
+                              static_cast<float>(disk.y) - disk_r, 2 * disk_r, 2 * disk_r});
+    // Axis names: horizontal bottom-right, vertical top-left, the plane's name on top.
     const char names[3] = {'x', 'y', 'z'};
-    const char h[2] = {names[ax.a], 0}, v[2] = {names[ax.b], 0};
-    const ImU32 tc = ImGui::GetColorU32(ImGuiCol_Text);
-    dl->AddText(
-        ImVec2(b.x - ImGui::CalcTextSize(h).x - 4 * k, b.y - ImGui::GetTextLineHeight() - 2 * k),
-        tc, h);
-    dl->AddText(ImVec2(a.x + 4 * k, a.y + 2 * k), tc, v);
-    dl->AddText(ImVec2(a.x + (canvas.w - ImGui::CalcTextSize(ax.name).x) / 2, a.y + 2 * k),
-                ImGui::GetColorU32(ImGuiCol_TextDisabled), ax.name);
+    const Rgba8 tc = ImGui::GetColorU32(ImGuiCol_Text);
+    const float in = 3 * k;
+    pic.fixed_label({canvas.x + canvas.w - in, canvas.y + canvas.h - in},
+                    std::string(1, names[ax.a]), tc, LabelAlign::bottom_right);
+    pic.fixed_label({canvas.x + in, canvas.y + in}, std::string(1, names[ax.b]), tc,
+                    LabelAlign::top_left);
+    pic.fixed_label({canvas.x + canvas.w / 2, canvas.y + in}, ax.name,
+                    ImGui::GetColorU32(ImGuiCol_TextDisabled), LabelAlign::top_center, 90);
+    draw_picture(pic);
     return moved;
 }
 
@@ -183,11 +195,25 @@ void coordinate_fields(AppContext& ctx, const doc::Object& obj) {
     }
 }
 
+// What a weight does to the surface, under the weight's fields.
+const char* weight_note(double w) {
+    // With every weight >= 0 the rational basis functions are still >= 0 and sum to 1
+    // wherever the surface exists, so it stays in the hull of the points with w > 0
+    // (Piegl & Tiller sec. 4.4); only a negative weight breaks that.
+    if (w == 0)
+        return "w = 0: this point no longer pulls on the surface. The convex-hull property "
+               "still holds while no weight is negative: only negative weights break it.";
+    if (w < 0)
+        return "w < 0: the convex-hull property no longer holds; the surface is pushed away "
+               "and may leave the hull of the control net.";
+    return "Larger w pulls the surface toward the point, smaller pushes it away.";
+}
+
 void weight_controls(AppContext& ctx, const doc::Object& obj) {
     const int i = ctx.doc.view.selection.i, j = ctx.doc.view.selection.j;
     const SelectedPoint sp = selected_point(obj, i, j);
     if (!sp.rational && obj.triangle()) {
-        ImGui::TextWrapped("Weight: this triangular patch is non-rational (all weights 1).");
+        text_wrapped("Weight: this triangular patch is non-rational (all weights 1).");
         // Unit weights keep the shape: the patch only becomes one whose weights can change.
         if (ImGui::Button("Make it rational")) {
             geom::TrianglePatch t = *obj.triangle();
@@ -200,9 +226,9 @@ void weight_controls(AppContext& ctx, const doc::Object& obj) {
         return;
     }
     if (!sp.rational) {
-        ImGui::TextWrapped("Weight: this %s surface is non-rational (all weights 1). Weights "
-                           "belong to rational Bezier and NURBS surfaces.",
-                           sp.type);
+        text_wrapped("Weight: this %s surface is non-rational (all weights 1). Weights "
+                     "belong to rational Bezier and NURBS surfaces.",
+                     sp.type);
         return;
     }
     double w = sp.weight;
@@ -234,25 +260,10 @@ void weight_controls(AppContext& ctx, const doc::Object& obj) {
 
     const double now = selected_point(*ctx.doc.find(obj.id), i, j).weight;
     const ImVec4 warn = ctx.ui.presentation ? ImVec4(0.7f, 0.25f, 0, 1) : ImVec4(1, 0.72f, 0.3f, 1);
-    if (now == 0) {
-        ImGui::PushStyleColor(ImGuiCol_Text, warn);
-        // With every weight >= 0 the rational basis functions are still >= 0 and sum to 1
-        // wherever the surface exists, so it stays in the hull of the points with w > 0
-        // (Piegl & Tiller sec. 4.4); only a negative weight breaks that.
-        ImGui::TextWrapped("w = 0: this point no longer pulls on the surface. The "
-                           "convex-hull property still holds while no weight is negative: "
-                           "only negative weights break it.");
-        ImGui::PopStyleColor();
-    } else if (now < 0) {
-        ImGui::PushStyleColor(ImGuiCol_Text, warn);
-        ImGui::TextWrapped("w < 0: the convex-hull property no longer holds; the surface "
-                           "is pushed away and may leave the hull of the control net.");
-        ImGui::PopStyleColor();
-    } else {
-        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-        ImGui::TextWrapped("Larger w pulls the surface toward the point, smaller pushes it away.");
-        ImGui::PopStyleColor();
-    }
+    ImGui::PushStyleColor(ImGuiCol_Text,
+                          now > 0 ? ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled) : warn);
+    text_wrapped("%s", weight_note(now));
+    ImGui::PopStyleColor();
 }
 
 // The three planes of the selected point, in a row when the panel is wide, else wrapped, with
@@ -262,8 +273,19 @@ bool plane_canvases(AppContext& ctx) {
     const float k = ctx.ui.scale();
     const float spacing = ImGui::GetStyle().ItemSpacing.x;
     const ImVec2 avail = ImGui::GetContentRegionAvail();
-    const float below =
-        ImGui::GetFrameHeightWithSpacing() * 3 + ImGui::GetTextLineHeightWithSpacing() * 3;
+    // Room below for the coordinates, the weight's two fields and its note, so the note (the
+    // convex-hull warning) is never below the fold on a projector.
+    double w = 1;
+    if (const doc::Object* o = ctx.doc.selected(); o && has_valid_point(ctx.doc))
+        w = selected_point(*o, ctx.doc.view.selection.i, ctx.doc.view.selection.j).weight;
+    const float note_h = ImGui::CalcTextSize(weight_note(w), nullptr, false, avail.x).y;
+    const ImGuiStyle& st = ImGui::GetStyle();
+    const float whole = ImGui::CalcTextSize("-00.0000").x + st.FramePadding.x * 2;
+    const float in_row =
+        (avail.x - st.ItemSpacing.x * 2) / 3 - ImGui::CalcTextSize("x").x - st.ItemInnerSpacing.x;
+    const int field_rows = (in_row >= whole ? 1 : 3) + 2; // x y z, then the weight's two fields
+    const float below = ImGui::GetFrameHeightWithSpacing() * static_cast<float>(field_rows) +
+                        note_h + st.ItemSpacing.y * 2;
     // The arrangement (3 in a row, 2 + 1, or a column) that gives the largest planes.
     int cols = 3;
     float side = 0;
@@ -299,14 +321,34 @@ bool plane_canvases(AppContext& ctx) {
     return ctx.doc.selected() && has_valid_point(ctx.doc);
 }
 
+// The panel's first line: the point and its object, its type faint, the stage button at the
+// right end; cut to the column with the whole in the tooltip (a triangle's type is long).
+void header(AppContext& ctx, const std::string& what, const std::string& type) {
+    const float room = ImGui::GetContentRegionAvail().x - ImGui::GetFrameHeight() -
+                       ImGui::GetStyle().ItemSpacing.x * 2;
+    const MeasureText measure = imgui_measure();
+    const std::string first = shortened(what, room, measure);
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted(first.c_str());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s %s", what.c_str(), type.c_str());
+    const float left = room - measure(first).x - ImGui::GetStyle().ItemSpacing.x;
+    const std::string second = shortened(type, left, measure);
+    if (left > measure("(..)").x) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("%s", second.c_str());
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s %s", what.c_str(), type.c_str());
+    }
+    stage_button(ctx, StageView::plane_xy);
+}
+
 } // namespace
 
 // A triangle's point: the planes with its triangular net, its fields and its weight.
 void triangle_point_panel(AppContext& ctx, const doc::Object& obj) {
     const int i = ctx.doc.view.selection.i, j = ctx.doc.view.selection.j;
-    ImGui::Text("%s of %s", point_name('P', i, j, &obj).c_str(), obj.name.c_str());
-    ImGui::SameLine();
-    ImGui::TextDisabled("(%s, degree %d)", selected_point(obj, i, j).type, obj.triangle()->degree);
+    header(ctx, point_name('P', i, j, &obj) + " of " + obj.name,
+           "(" + std::string(selected_point(obj, i, j).type) + ", degree " +
+               std::to_string(obj.triangle()->degree) + ")");
     const std::uint64_t id = obj.id; // obj may not outlive a canvas's command
     if (!plane_canvases(ctx)) return;
     const doc::Object* now = ctx.doc.find(id);
@@ -317,6 +359,7 @@ void triangle_point_panel(AppContext& ctx, const doc::Object& obj) {
 }
 
 void draw_control_point_panel(AppContext& ctx) {
+    note_hovered_view(ctx, StageView::plane_xy);
     const doc::Object* obj = ctx.doc.selected();
     if (obj && obj->triangle() && has_valid_point(ctx.doc)) {
         triangle_point_panel(ctx, *obj);
@@ -324,8 +367,18 @@ void draw_control_point_panel(AppContext& ctx) {
     }
     const geom::Surface* s = obj ? obj->surface() : nullptr;
     if (!s || !has_valid_point(ctx.doc)) {
-        ImGui::TextWrapped("Click a control point in the 3D view to select it; it can then "
-                           "be moved here in the xy, xz and yz planes.");
+        const doc::Object* shown = obj;
+        if (!shown || !shown->surface()) current_surface(ctx.doc, &shown);
+        if (shown && !doc::display_of(ctx.doc.view, shown->id).control_points)
+            text_wrapped("The control points of %s are hidden: C (or Display > Control points) "
+                         "shows them to click one in the 3D view.",
+                         shown->name.c_str());
+        else if (shown && !shown->visible)
+            text_wrapped("%s is hidden: its box in the Objects tab shows it again.",
+                         shown->name.c_str());
+        else
+            text_wrapped("Click a control point in the 3D view to select it; it can then "
+                         "be moved here in the xy, xz and yz planes.");
         if (const geom::Surface* cur = current_surface(ctx.doc, &obj); cur && obj) {
             ImGui::Spacing();
             ImGui::TextDisabled("Or choose one of %s:", obj->name.c_str());
@@ -338,9 +391,8 @@ void draw_control_point_panel(AppContext& ctx) {
         return;
     }
     const int i = ctx.doc.view.selection.i, j = ctx.doc.view.selection.j;
-    ImGui::Text("%s of %s", point_name('P', i, j, s->n_u, s->n_v).c_str(), obj->name.c_str());
-    ImGui::SameLine();
-    ImGui::TextDisabled("(%s)", geom::name_of(s->type));
+    header(ctx, point_name('P', i, j, s->n_u, s->n_v) + " of " + obj->name,
+           "(" + std::string(geom::name_of(s->type)) + ")");
     if (!plane_canvases(ctx)) return;
     obj = ctx.doc.selected();
     if (!obj || !obj->surface() || !has_valid_point(ctx.doc)) return;

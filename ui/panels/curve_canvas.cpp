@@ -11,19 +11,17 @@
 #include "core/geom/deboor.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
+#include "core/geom/status.hpp"
 #include "core/geom/tessellate.hpp"
 #include "ui/panels/curve_designer.hpp"
-#include "ui/panels/plane_canvas.hpp"
+#include "ui/panels/picture_draw.hpp"
+#include "ui/panels/stage_controls.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/polygon_hits.hpp"
 
 namespace isoparm::ui::curve_designer {
 
 namespace {
-
-ImVec2 iv(const glm::dvec2& p) {
-    return {static_cast<float>(p.x), static_cast<float>(p.y)};
-}
 
 // The framing of the canvas: the control points' box in the plane with room around it (a
 // single point or a flat polygon still gets some room). The box is kept while every point
@@ -142,15 +140,19 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const doc::CurveObjec
     const int plane = canvas_plane(ctx, c);
     const PlaneAxes ax = plane_axes[plane];
     const float k = ctx.ui.scale();
-    const PlaneMap map =
-        cd.drag_point >= 0 ? cd.frozen : frame(cd, id, plane, c.curve, canvas, ax.a, ax.b, 14 * k);
-
     ImGui::SetCursorScreenPos(ImVec2(canvas.x, canvas.y));
     ImGui::InvisibleButton("##curve_canvas", ImVec2(canvas.w, canvas.h));
     report_item("curve/canvas");
+    // On the stage the wheel zooms and a right-drag pans (the kept framing, seen through it).
+    const CanvasView cv = canvas_view(ctx, "curve", canvas);
+    const PlaneMap map =
+        cd.drag_point >= 0
+            ? cd.frozen
+            : view_map(cv, frame(cd, id, plane, c.curve, canvas, ax.a, ax.b, 14 * k));
     const ImVec2 m = ImGui::GetIO().MousePos;
     const glm::dvec2 mouse(m.x, m.y);
-    if (ImGui::IsItemActivated()) handle_press(ctx, id, c.curve, ax, map, mouse);
+    if (ImGui::IsItemActivated() && ImGui::IsMouseDown(ImGuiMouseButton_Left))
+        handle_press(ctx, id, c.curve, ax, map, mouse);
     // A press that has not moved yet moves nothing (rounding would nudge the point).
     if (ImGui::IsItemActive() && cd.drag_point >= 0 && mouse != cd.press) {
         const doc::CurveObject* cur = curve_in(ctx, id);
@@ -174,19 +176,32 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const doc::CurveObjec
     const doc::CurveObject* cur = curve_in(ctx, id);
     if (!cur) return;
     const geom::Curve& g = cur->curve;
-    auto px = [&](const glm::dvec3& p) { return iv(plane_to_pixel(map, {p[ax.a], p[ax.b]})); };
+    auto gx = [&](const glm::dvec3& p) {
+        return glm::vec2(plane_to_pixel(map, {p[ax.a], p[ax.b]}));
+    };
 
-    ImDrawList* dl = ImGui::GetWindowDrawList();
-    const ImVec2 a(canvas.x, canvas.y), b(canvas.x + canvas.w, canvas.y + canvas.h);
     const bool light = ctx.ui.presentation;
-    begin_plane_canvas(dl, map, canvas, light);
+    Picture pic;
+    pic.view = "curve";
+    pic.frame = canvas;
+    pic.background = light ? rgba8(250, 250, 250) : rgba8(26, 28, 34);
+    pic.border = light ? rgba8(0, 0, 0) : rgba8(110, 115, 130);
+    pic.border_width = 1 * k;
+    pic.style.offset = 5 * k;
+    {
+        const glm::dvec2 o = plane_to_pixel(map, {0, 0});
+        const Rgba8 axis_col = light ? rgba8(150, 150, 150) : rgba8(80, 84, 96);
+        pic.line({canvas.x, static_cast<float>(o.y)},
+                 {canvas.x + canvas.w, static_cast<float>(o.y)}, axis_col);
+        pic.line({static_cast<float>(o.x), canvas.y},
+                 {static_cast<float>(o.x), canvas.y + canvas.h}, axis_col);
+    }
 
     const doc::Colors& col = ctx.doc.colors;
     // The control polygon.
-    std::vector<ImVec2> line;
-    for (const glm::dvec3& p : g.points) line.push_back(px(p));
-    dl->AddPolyline(line.data(), static_cast<int>(line.size()), rgba(col.control_net, 0.7f), 0,
-                    1.2f * k);
+    std::vector<glm::vec2> line;
+    for (const glm::dvec3& p : g.points) line.push_back(gx(p));
+    pic.polyline(line, rgba(col.control_net, 0.7f), 1.2f * k);
     // The curve: uniform samples plus the knots, so corners at multiple knots stay sharp.
     const geom::Interval d = geom::domain(g);
     std::vector<double> ts = geom::uniform_params(d.lo, d.hi, 401);
@@ -195,14 +210,12 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const doc::CurveObjec
     std::sort(ts.begin(), ts.end());
     line.clear();
     auto flush = [&] {
-        if (line.size() > 1)
-            dl->AddPolyline(line.data(), static_cast<int>(line.size()), rgba(col.selected_surface),
-                            0, 2.2f * k);
+        pic.polyline(line, rgba(col.selected_surface), 2.2f * k);
         line.clear();
     };
     for (double t : ts) {
         if (const auto p = geom::curve_point(g, t))
-            line.push_back(px(*p));
+            line.push_back(gx(*p));
         else
             flush(); // a zero weight sum: the curve does not exist there
     }
@@ -211,16 +224,17 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const doc::CurveObjec
     for (const geom::KnotRun& run : geom::knot_runs(g.knots)) {
         if (run.value < d.lo || run.value > d.hi) continue;
         if (const auto p = geom::curve_point(g, run.value)) {
-            const ImVec2 q = px(*p);
+            const glm::vec2 q = gx(*p);
             const float r = (2.5f + static_cast<float>(run.multiplicity > 1)) * k;
-            dl->AddRectFilled(ImVec2(q.x - r, q.y - r), ImVec2(q.x + r, q.y + r),
-                              rgba(col.knot_curves));
+            pic.box({q.x - r, q.y - r}, {q.x + r, q.y + r}, rgba(col.knot_curves));
         }
     }
-    draw_curve_analysis(ctx, g, trace_param(ctx, g), dl, px);
+    draw_curve_analysis(ctx, g, trace_param(ctx, g), pic, gx);
+    // Over them: the points, de Boor's construction; every text is placed with the others.
+    Picture& top = pic;
     // Control points, labelled P0..Pn while the labels stay readable.
     const int sel = ctx.doc.view.selection.object == id ? ctx.doc.view.selection.i : -1;
-    const ImU32 text_col = ImGui::GetColorU32(ImGuiCol_Text);
+    const Rgba8 text_col = ImGui::GetColorU32(ImGuiCol_Text);
     // A closed curve repeats its first p points at its end: one label says both names.
     const bool closed = cur->knot_mode == doc::CurveKnotMode::closed;
     const int own = closed ? g.count() - g.degree : g.count();
@@ -231,22 +245,17 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const doc::CurveObjec
         return s;
     };
     for (int i = 0; i < g.count(); ++i) {
-        const ImVec2 q = px(g.points[static_cast<std::size_t>(i)]);
+        const glm::vec2 q = gx(g.points[static_cast<std::size_t>(i)]);
         if (i == sel || (closed && i >= own && sel == i - own)) continue;
-        dl->AddCircleFilled(q, 4 * k, rgba(col.control_points), 12);
-        if (g.count() <= 40 && i < own)
-            dl->AddText(ImVec2(q.x + 5 * k, q.y - ImGui::GetTextLineHeight() - 1 * k), text_col,
-                        name(i).c_str());
+        top.disk(q, 4 * k, rgba(col.control_points));
+        if (g.count() <= 40 && i < own) top.label(q, name(i), text_col, 5);
     }
     if (sel >= 0 && sel < g.count()) {
-        const ImVec2 q = px(g.points[static_cast<std::size_t>(sel)]);
-        dl->AddCircleFilled(q, 6.5f * k, rgba(col.selected_point), 20);
-        dl->AddCircle(q, 6.5f * k,
-                      cd.drag_point >= 0 || hovered ? IM_COL32(255, 255, 255, 255)
-                                                    : IM_COL32(0, 0, 0, 255),
-                      20, 1.5f * k);
-        dl->AddText(ImVec2(q.x + 7 * k, q.y - ImGui::GetTextLineHeight() - 2 * k), text_col,
-                    name(sel).c_str());
+        const glm::vec2 q = gx(g.points[static_cast<std::size_t>(sel)]);
+        top.disk(q, 6.5f * k, rgba(col.selected_point),
+                 cd.drag_point >= 0 || hovered ? rgba8(255, 255, 255) : rgba8(0, 0, 0), 1.5f * k);
+        top.keep_clear.push_back({q.x - 6.5f * k, q.y - 6.5f * k, 13 * k, 13 * k});
+        top.label(q, name(sel), text_col, 30);
     }
     // De Boor's construction at the trace parameter, on top: every level's polygon.
     if (cd.trace) {
@@ -254,33 +263,26 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const doc::CurveObjec
         const geom::DeBoorTriangle tri = geom::deboor_curve(g, t);
         const int levels = static_cast<int>(tri.levels.size()) - 1;
         for (int lv = 1; lv <= levels; ++lv) {
-            std::vector<ImVec2> pts;
+            std::vector<glm::vec2> pts;
             for (const geom::HPoint& h : tri.levels[static_cast<std::size_t>(lv)])
-                if (const auto p = geom::DeBoorTriangle::cartesian(h)) pts.push_back(px(*p));
+                if (const auto p = geom::DeBoorTriangle::cartesian(h)) pts.push_back(gx(*p));
             const ImU32 lc = level_color(lv, levels);
-            if (pts.size() > 1)
-                dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), lc, 0, 1.6f * k);
-            for (const ImVec2& q : pts)
-                dl->AddCircleFilled(q, (lv == levels ? 5.f : 3.f) * k, lc, 12);
+            top.polyline(pts, lc, 1.6f * k);
+            for (const glm::vec2& q : pts) top.disk(q, (lv == levels ? 5.f : 3.f) * k, lc);
         }
-        if (const auto p = geom::DeBoorTriangle::cartesian(tri.levels.back().front())) {
-            const ImVec2 q = px(*p);
-            char text[48];
-            std::snprintf(text, sizeof text, "C(%.3g)", t);
-            dl->AddText(ImVec2(q.x + 7 * k, q.y + 2 * k), IM_COL32(235, 60, 60, 255), text);
-        }
+        if (const auto p = geom::DeBoorTriangle::cartesian(tri.levels.back().front()))
+            top.label(gx(*p), "C(" + geom::format_short(t, 3) + ")", rgba8(235, 60, 60), 40)
+                .tooltip = "C(" + geom::format_number(t) + ")";
     }
-    dl->PopClipRect();
-    dl->AddRect(a, b, light ? IM_COL32(0, 0, 0, 255) : IM_COL32(110, 115, 130, 255), 0, 0, 1 * k);
     const char names[3] = {'x', 'y', 'z'};
-    const char h[2] = {names[ax.a], 0}, v[2] = {names[ax.b], 0};
-    dl->AddText(
-        ImVec2(b.x - ImGui::CalcTextSize(h).x - 4 * k, b.y - ImGui::GetTextLineHeight() - 2 * k),
-        text_col, h);
-    dl->AddText(ImVec2(a.x + 4 * k, a.y + 2 * k), text_col, v);
-    const std::string title = std::string(ax.name) + " plane";
-    dl->AddText(ImVec2(a.x + (canvas.w - ImGui::CalcTextSize(title.c_str()).x) / 2, a.y + 2 * k),
-                ImGui::GetColorU32(ImGuiCol_TextDisabled), title.c_str());
+    const float in = 4 * k;
+    top.fixed_label({canvas.x + canvas.w - in, canvas.y + canvas.h - 2 * k},
+                    std::string(1, names[ax.a]), text_col, LabelAlign::bottom_right);
+    top.fixed_label({canvas.x + in, canvas.y + 2 * k}, std::string(1, names[ax.b]), text_col,
+                    LabelAlign::top_left);
+    top.fixed_label({canvas.x + canvas.w / 2, canvas.y + 2 * k}, std::string(ax.name) + " plane",
+                    ImGui::GetColorU32(ImGuiCol_TextDisabled), LabelAlign::top_center, 90);
+    draw_picture(top);
 }
 
 } // namespace isoparm::ui::curve_designer

@@ -8,6 +8,7 @@
 #include "core/doc/document.hpp"
 #include "ui/app_context.hpp"
 #include "ui/view/canvas_map.hpp"
+#include "ui/view/picture.hpp"
 
 namespace isoparm::ui::curve_designer {
 
@@ -38,8 +39,8 @@ void basis_plot(AppContext& ctx, const doc::CurveObject& c, int selected, const 
 // canvas); curvature against t over the domain, the trace parameter marked, kappa and tau
 // written.
 void analysis_toggles(AppContext& ctx);
-void draw_curve_analysis(const AppContext& ctx, const geom::Curve& c, double t, ImDrawList* dl,
-                         const std::function<ImVec2(const glm::dvec3&)>& px);
+void draw_curve_analysis(const AppContext& ctx, const geom::Curve& c, double t, Picture& pic,
+                         const std::function<glm::vec2(const glm::dvec3&)>& px);
 void curvature_plot(AppContext& ctx, const geom::Curve& c, const Rect& box);
 
 // Colours shared by the pieces.

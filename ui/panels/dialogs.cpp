@@ -21,6 +21,7 @@
 #include "ui/toolbox_actions.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/uploads.hpp"
+#include "ui/view/doc_access.hpp"
 
 namespace isoparm::ui {
 
@@ -65,25 +66,31 @@ void new_surface_dialog(AppContext& ctx) {
     }
     center_next(360, ctx.ui.scale());
     if (!ImGui::BeginPopupModal("New surface", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-    ImGui::TextWrapped("A flat grid of control points in the xy-plane; shape it by moving points.");
+    text_wrapped("A flat grid of control points in the xy-plane; shape it by moving points.");
     auto type = static_cast<geom::SplineType>(f.type);
     if (enum_combo("Type", type, ItemCase::capitalized)) f.type = static_cast<int>(type);
+    report_item("new_surface/type");
     const bool bezier = f.type <= 1;
     ImGui::InputInt("Rows (u)", &f.rows);
     ImGui::InputInt("Columns (v)", &f.cols);
     f.rows = std::clamp(f.rows, 2, 64);
     f.cols = std::clamp(f.cols, 2, 64);
-    if (bezier) {
-        // A Bezier patch's degree follows from its point count.
-        f.degree_u = f.rows - 1;
-        f.degree_v = f.cols - 1;
-    }
+    // A Bezier patch's degree follows from its point count; the B-spline degrees are kept for
+    // when the type changes back (the dialog used to keep rows - 1 then).
+    f.degree_u = bezier ? f.rows - 1 : f.spline_degree_u;
+    f.degree_v = bezier ? f.cols - 1 : f.spline_degree_v;
     ImGui::BeginDisabled(bezier);
     ImGui::InputInt("Degree in u", &f.degree_u);
     ImGui::InputInt("Degree in v", &f.degree_v);
     ImGui::EndDisabled();
     f.degree_u = std::clamp(f.degree_u, 1, 63);
     f.degree_v = std::clamp(f.degree_v, 1, 63);
+    if (!bezier) {
+        f.spline_degree_u = f.degree_u;
+        f.spline_degree_v = f.degree_v;
+    }
+    report_fact("new_surface/degree_u", f.degree_u);
+    report_fact("new_surface/degree_v", f.degree_v);
     const std::string err = new_surface_error(f);
     if (!err.empty()) ImGui::TextColored(error_text_color(), "%s", err.c_str());
     ImGui::BeginDisabled(!err.empty());
@@ -91,10 +98,7 @@ void new_surface_dialog(AppContext& ctx) {
     report_item("new_surface/create");
     if (create) {
         doc::Object o;
-        int n = 1;
-        for (const doc::Object& x : ctx.doc.objects)
-            n += x.kind() == doc::ObjectKind::surface ? 1 : 0;
-        o.name = "Surface " + std::to_string(n);
+        o.name = fresh_name(ctx.doc, "Surface"); // unique, whatever was deleted or renamed
         o.shape = doc::SurfaceObject{doc::make_planar_grid(f.rows, f.cols, f.degree_u, f.degree_v,
                                                            static_cast<geom::SplineType>(f.type))};
         doc::place_beside_scene(ctx.doc, o.shape);
@@ -309,9 +313,9 @@ void overwrite_changed_dialog(AppContext& ctx) {
     center_next(480, ctx.ui.scale());
     if (!ImGui::BeginPopupModal("File changed on disk", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
         return;
-    ImGui::TextWrapped("'%s' was changed on disk since it was opened or last saved (by another "
-                       "window or program). Saving now replaces those changes with this scene.",
-                       ctx.file_path.c_str());
+    text_wrapped("'%s' was changed on disk since it was opened or last saved (by another "
+                 "window or program). Saving now replaces those changes with this scene.",
+                 ctx.file_path.c_str());
     ImGui::Spacing();
     if (ImGui::Button("Save anyway")) {
         ImGui::CloseCurrentPopup();
@@ -342,7 +346,7 @@ void error_dialog(AppContext& ctx) {
         return;
     ImGui::TextUnformatted(ctx.ui.error_title.c_str());
     ImGui::Separator();
-    ImGui::TextWrapped("%s", ctx.ui.error_message.c_str());
+    text_wrapped("%s", ctx.ui.error_message.c_str());
     ImGui::Spacing();
     // Keys count only once the dialog is up: the Enter that confirmed a file name must not
     // also dismiss the error it caused.
@@ -409,9 +413,9 @@ void help_dialog(AppContext& ctx) {
         for (const Entry& e : entries) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            ImGui::TextWrapped("%s", e.keys);
+            text_wrapped("%s", e.keys);
             ImGui::TableNextColumn();
-            ImGui::TextWrapped("%s", e.action);
+            text_wrapped("%s", e.action);
         }
         ImGui::EndTable();
     }

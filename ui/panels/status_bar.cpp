@@ -41,31 +41,8 @@ void draw_status_bar(AppContext& ctx) {
                                ctx.recorder->step_count());
         }
         ImGui::SameLine(0, 24 * ctx.ui.scale());
-        const doc::Object* obj = nullptr;
-        const doc::Object* sel = ctx.doc.selected();
-        if (const geom::TrianglePatch* t = sel ? sel->triangle() : nullptr) {
-            const geom::Barycentric& b = ctx.doc.view.barycentric;
-            ImGui::Text("%s: %striangle, degree %d  (r, s, t) = (%.3g, %.3g, %.3g)",
-                        sel->name.c_str(), t->rational ? "rational " : "", t->degree, b[0], b[1],
-                        b[2]);
-            if (has_valid_point(ctx.doc)) {
-                ImGui::SameLine();
-                ImGui::Text("  %s", point_name('P', ctx.doc.view.selection.i,
-                                               ctx.doc.view.selection.j, ctx.doc)
-                                        .c_str());
-            }
-        } else if (const geom::Surface* s = current_surface(ctx.doc, &obj)) {
-            ImGui::Text("%s: %s %dx%d, degree (%d,%d)", obj->name.c_str(), geom::name_of(s->type),
-                        s->n_u, s->n_v, s->degree_u, s->degree_v);
-            if (has_valid_point(ctx.doc)) {
-                ImGui::SameLine();
-                ImGui::Text("  %s", point_name('P', ctx.doc.view.selection.i,
-                                               ctx.doc.view.selection.j, ctx.doc)
-                                        .c_str());
-            }
-        } else {
-            ImGui::TextUnformatted("no surface");
-        }
+        // The selected object, whatever its kind (never another one).
+        ImGui::TextUnformatted(selection_summary(ctx).c_str());
         ImGui::SameLine(0, 24 * ctx.ui.scale());
         if (ctx.dirty())
             ImGui::TextUnformatted("* unsaved changes");

@@ -234,9 +234,14 @@ struct Renderer::Impl {
         m.density = 0;
         m.mesh = IncrementalMesh{}; // a later surface under this id starts afresh
         const geom::Mesh& mesh = *d.mesh;
-        // An implicit mesh has no curvature here: undefined under a curvature kind.
+        // An implicit surface's curvature at each vertex from f's gradient and Hessian; a mesh
+        // of another kind (or an f that does not compile) is undefined under a curvature kind.
+        const std::vector<double> scalars =
+            m.scalar_kind == AnalysisKind::off || !d.implicit
+                ? std::vector<double>{}
+                : implicit_vertex_curvature(*d.implicit, mesh, m.scalar_kind);
         const std::vector<float> verts =
-            interleave(mesh, 0, mesh.positions.size(), {},
+            interleave(mesh, 0, mesh.positions.size(), scalars,
                        m.scalar_kind == AnalysisKind::off ? 0.0f : undefined_scalar);
         // Each edge of a closed, consistently oriented mesh appears once in each direction.
         std::vector<std::uint32_t> wire;
