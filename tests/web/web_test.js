@@ -85,7 +85,9 @@ class Page {
     await this.cdp.send('Storage.clearDataForOrigin',
                         { origin: this.base, storageTypes: 'indexeddb,local_storage' });
     await this.page.goto(this.base + '/index.html?report=1' + (query ? '&' + query : ''));
-    await this.waitFor('the first frame', (r) => r.rects && r.rects['panel/Drawing']);
+    // The workstation's 3D view, or the teaching view ?stage= put on the stage.
+    await this.waitFor('the first frame', (r) => r.rects &&
+                       (r.rects['panel/Drawing'] || Object.keys(r.rects).some((k) => k.startsWith('stage/'))));
     await this.idle();
   }
   report() {
