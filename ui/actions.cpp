@@ -6,8 +6,10 @@
 #include "core/scene/atomic_file.hpp"
 #include "core/scene/scene_io.hpp"
 #include "core/scene/script.hpp"
+#include "ui/course_actions.hpp"
 #include "ui/lesson.hpp"
 #include "ui/platform/files.hpp"
+#include "ui/view/course_files.hpp"
 #include "ui/view/doc_access.hpp"
 #include "ui/view/scene_budget.hpp"
 #include "ui/view/scene_builder.hpp"
@@ -61,6 +63,10 @@ void adopt(AppContext& ctx, doc::Document d, const std::string& path) {
 
 } // namespace
 
+void adopt_document(AppContext& ctx, doc::Document d, const std::string& path) {
+    adopt(ctx, std::move(d), path);
+}
+
 void request_new_document(AppContext& ctx) {
     guard(ctx, {PendingAction::Kind::new_document, {}});
 }
@@ -98,6 +104,12 @@ void run_pending(AppContext& ctx) {
     }
     case PendingAction::Kind::open_lesson:
         open_lesson(ctx, a.path);
+        break;
+    case PendingAction::Kind::open_exercise:
+        open_exercise(ctx, a.path);
+        break;
+    case PendingAction::Kind::play_draft:
+        play_draft_from(ctx, a.stop);
         break;
     case PendingAction::Kind::quit:
         ctx.ui.quit_now = true;
@@ -197,6 +209,9 @@ void redo(AppContext& ctx) {
 
 void request_open_lesson_dialog(AppContext& ctx) {
     FileDialog& fd = open_file_dialog(ctx, FileDialog::Mode::open_lesson);
+    // In the lessons: the user's own when there are any, else the shipped ones.
+    fd.directory = lesson_dialog_dir();
+    fd.name.clear();
     std::error_code ec;
     if (fd.directory.empty()) fd.directory = std::filesystem::current_path(ec).string();
 }
@@ -222,6 +237,10 @@ bool open_lesson(AppContext& ctx, const std::string& path) {
     auto lesson = std::make_unique<Lesson>();
     lesson->path = path;
     lesson->script = std::move(script).value();
+    prepare_lesson(*lesson);
+    // A lesson opened to be played, not edited: the editor (if open) gives it the view. Edit...
+    // in the caption box brings it back on this lesson.
+    ctx.ui.course.editor.open = false;
     // The lesson's scene is a copy, untitled: saving never writes over the lesson's files.
     adopt(ctx, lesson->script.start, "");
     ctx.ui.lesson = std::move(lesson);
@@ -233,6 +252,7 @@ void restart_lesson(AppContext& ctx) {
     if (!ctx.ui.lesson) return;
     std::unique_ptr<Lesson> lesson = std::move(ctx.ui.lesson);
     lesson->next = 0;
+    lesson->stop = 0;
     lesson->caption.clear();
     adopt(ctx, lesson->script.start, "");
     ctx.ui.lesson = std::move(lesson);

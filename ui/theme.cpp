@@ -55,6 +55,7 @@ void apply_theme(bool presentation, float scale) {
 namespace {
 
 ImFont* g_number_font = nullptr;
+ImFont* g_bold_font = nullptr;
 
 // Debian's fonts-dejavu-core; ISOPARM_FONT_DIR overrides the folder (tests, other systems).
 std::string font_dir() {
@@ -72,6 +73,7 @@ std::string rebuild_fonts(float scale) {
     ImGuiIO& io = ImGui::GetIO();
     io.Fonts->Clear();
     g_number_font = nullptr;
+    g_bold_font = nullptr;
     const float pixels = std::round(base_font_pixels * scale);
     const std::string sans = font_dir() + "/DejaVuSans.ttf";
     const std::string mono = font_dir() + "/DejaVuSansMono.ttf";
@@ -89,8 +91,12 @@ std::string rebuild_fonts(float scale) {
         io.Fonts->AddFontDefault(&fallback);
         note = "DejaVu Sans not found in " + font_dir() +
                " (install fonts-dejavu-core): using the built-in bitmap font";
-    } else if (readable(mono)) {
-        g_number_font = io.Fonts->AddFontFromFileTTF(mono.c_str(), pixels, &cfg, ranges);
+    } else {
+        if (readable(mono))
+            g_number_font = io.Fonts->AddFontFromFileTTF(mono.c_str(), pixels, &cfg, ranges);
+        // Lesson captions' **bold** (ui/panels/rich_text.cpp).
+        if (const std::string bold = font_dir() + "/DejaVuSans-Bold.ttf"; readable(bold))
+            g_bold_font = io.Fonts->AddFontFromFileTTF(bold.c_str(), pixels, &cfg, ranges);
     }
     io.Fonts->Build();
     ImGui_ImplOpenGL3_DestroyFontsTexture();
@@ -140,6 +146,10 @@ ImVec4 error_text_color() {
     const ImVec4 bg = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg);
     const bool light = 0.2126f * bg.x + 0.7152f * bg.y + 0.0722f * bg.z > 0.5f;
     return light ? ImVec4(0.70f, 0.05f, 0.0f, 1) : ImVec4(1.0f, 0.62f, 0.35f, 1);
+}
+
+ImFont* bold_font() {
+    return g_bold_font;
 }
 
 ImFont* number_font() {

@@ -29,5 +29,7 @@ void wrapped_tooltip(const std::string& text);
 void text_wrapped(const char* fmt, ...) IM_FMTARGS(1);
 // DejaVu Sans Mono at the same size, for columns of numbers (the default font when missing).
 ImFont* number_font();
+// DejaVu Sans Bold at the same size, or null where it is missing (bold then shows in colour).
+ImFont* bold_font();
 
 } // namespace isoparm::ui

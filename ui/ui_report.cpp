@@ -83,7 +83,23 @@ void flush_ui_report(const AppContext& ctx) {
     j["font_pixels"] = ImGui::GetFontSize();
     j["recording"] = ctx.recorder ? static_cast<long>(ctx.recorder->step_count()) : -1;
     if (ctx.ui.lesson)
-        j["lesson"] = {{"next", ctx.ui.lesson->next}, {"caption", ctx.ui.lesson->caption}};
+        j["lesson"] = {{"next", ctx.ui.lesson->next},      {"caption", ctx.ui.lesson->caption},
+                       {"stop", ctx.ui.lesson->stop},      {"stops", ctx.ui.lesson->stops()},
+                       {"path", ctx.ui.lesson->path},      {"unmet", ctx.ui.lesson->unmet},
+                       {"refused", ctx.ui.lesson->refused}};
+    if (ctx.recorder) j["recording_stops"] = ctx.recorder->stop_count();
+    if (const LessonEditorState& e = ctx.ui.course.editor; e.open && e.draft)
+        j["editor"] = {{"path", e.path}, {"stops", e.draft->size()}, {"problem", e.problem}};
+    if (const ExerciseState& x = ctx.ui.course.exercise;
+        ctx.ui.course.exercise_open && x.exercise) {
+        j["exercise"] = {{"path", x.path}, {"checked", x.grade.has_value()}};
+        if (x.grade) {
+            j["exercise"]["passed"] = x.grade->passed();
+            j["exercise"]["passed_count"] = x.grade->passed_count();
+            const scene::CheckResult* f = x.grade->first_failure();
+            j["exercise"]["first_failure"] = f ? f->message : "";
+        }
+    }
     r.rects.clear(); // what the next frame draws, it reports again
     r.facts.clear();
     std::string text = j.dump(1);

@@ -18,6 +18,7 @@
 #include "core/geom/types.hpp"
 #include "core/scene/autosave.hpp"
 #include "core/scene/recorder.hpp"
+#include "ui/course_state.hpp"
 #include "ui/lesson.hpp"
 #include "ui/media_export.hpp"
 #include "ui/view/camera.hpp"
@@ -80,8 +81,10 @@ struct FileDialog {
         save_recording,
         open_lesson,
         load_points,
-        export_file, // File > Export... (ui/exchange_actions.hpp)
-        import_file  // File > Import...
+        export_file,   // File > Export... (ui/exchange_actions.hpp)
+        import_file,   // File > Import...
+        save_lesson,   // the lesson editor's Save as (ui/course_actions.hpp)
+        open_exercise, // Lessons > Exercises > Open exercise...
     } mode = Mode::closed;
     bool just_opened = false;
     std::string directory;
@@ -97,9 +100,12 @@ struct PendingAction {
         open_file,
         open_dialog,
         open_lesson,
+        open_exercise,
+        play_draft, // the lesson editor's Play from here, from stop `stop`
         quit
     } kind = Kind::none;
     std::string path;
+    std::size_t stop = 0;
 };
 
 // R_ij heat map samples, recomputed only when the surface or the point changes.
@@ -330,6 +336,7 @@ struct UiState {
     Rect drawing_rect;
     // The lesson being played (File > Open lesson), or null.
     std::unique_ptr<Lesson> lesson;
+    CourseState course; // lesson editor, exercise, authoring dialogs (ui/course_state.hpp)
     PendingAction pending;
     bool confirm_unsaved = false;
     bool confirm_overwrite_changed = false; // Save found the file changed on disk: ask

@@ -2,6 +2,7 @@
 #include "ui/uploads.hpp"
 
 #include "ui/actions.hpp"
+#include "ui/course_actions.hpp"
 #include "ui/exchange_actions.hpp"
 #include "ui/panels/fit_panel.hpp"
 #include "ui/platform/files.hpp"
@@ -24,6 +25,9 @@ bool request_upload_for(FileDialog::Mode mode) {
     case Mode::load_points:
         files::request_upload(Purpose::load_points, ".csv,.xyz,.txt");
         return true;
+    case Mode::open_exercise:
+        files::request_upload(Purpose::open_exercise, ".json");
+        return true;
     default:
         return false;
     }
@@ -45,6 +49,9 @@ void receive_uploads(AppContext& ctx) {
         case files::Purpose::load_points:
             if (!load_fit_points(ctx, u->path, error))
                 show_error(ctx, "Could not load the data points", error);
+            break;
+        case files::Purpose::open_exercise:
+            request_open_exercise(ctx, u->path);
             break;
         }
     }

@@ -330,6 +330,11 @@ void Workstation::frame(unsigned target_framebuffer) {
         layout_panels();
         draw_status_bar(ctx_);
         draw_lesson_panel(ctx_);
+        // The caption box placed again this frame: the next frame shows whether it stays.
+        if (ui.course.caption_box.settling > 0 && ui.course.caption_box.settling < 6 &&
+            request_frame_)
+            request_frame_();
+        draw_course_panels(ctx_); // lesson editor, exercise, Add stop / expectation
         draw_dialogs(ctx_);
         draw_construct_dialog(ctx_);
         draw_media_export_dialog(ctx_);

@@ -87,6 +87,17 @@ void Recorder::observe(const doc::Document& doc,
     remember_view(doc);
 }
 
+void Recorder::add_steps(const json& steps) {
+    for (const json& step : steps) steps_.push_back(step);
+    last_kind_ = "authored"; // a later view change is a step of its own
+}
+
+std::size_t Recorder::stop_count() const {
+    std::size_t n = 0;
+    for (const json& step : steps_) n += step.contains("pause") ? 1 : 0;
+    return n;
+}
+
 json Recorder::script() const {
     return {{"format", script_format_name},
             {"version", script_format_version},

@@ -146,109 +146,6 @@ Expected<CameraStep> read_camera(const json& v, const std::string& at) {
     return c;
 }
 
-Expected<std::vector<double>> read_numbers(const json& v, const std::string& at,
-                                           std::string_view what) {
-    if (!v.is_array()) return schema_error(std::string(what) + " is an array of numbers", at);
-    std::vector<double> out;
-    for (std::size_t k = 0; k < v.size(); ++k) {
-        auto x = read_finite(v[k], at + "/" + std::to_string(k), "a number");
-        if (!x) return x.error();
-        out.push_back(*x);
-    }
-    return out;
-}
-
-Expected<ExpectStep> read_expect(const json& v, const std::string& at) {
-    if (auto st = expect_object(v, at, "expect"); !st) return st.error();
-    if (auto st = check_members(v, at, "expect",
-                                {"objects", "id", "point", "position", "weight", "direction",
-                                 "knots", "degree", "type", "group", "borders", "tolerance"});
-        !st)
-        return st.error();
-    ExpectStep e;
-    auto member = [&](std::string_view name) { return find_member(v, name); };
-    auto path = [&](std::string_view name) { return member_path(at, name); };
-    if (const json* m = member("objects")) {
-        auto n = read_integer(*m, path("objects"), "objects", 0, 1 << 30);
-        if (!n) return n.error();
-        e.objects = static_cast<std::size_t>(*n);
-    }
-    if (const json* m = member("id")) {
-        auto n = read_integer(*m, path("id"), "an object id", 1,
-                              static_cast<std::int64_t>(max_object_id));
-        if (!n) return n.error();
-        e.id = static_cast<std::uint64_t>(*n);
-    }
-    if (const json* m = member("point")) {
-        if (!m->is_array() || m->empty() || m->size() > 2)
-            return schema_error("point is [i, j] (a surface's) or [i] (a curve's)", path("point"));
-        for (std::size_t k = 0; k < m->size(); ++k) {
-            auto n = read_integer((*m)[k], path("point") + "/" + std::to_string(k),
-                                  "a control point index", 0, 1 << 30);
-            if (!n) return n.error();
-            (k == 0 ? e.i : e.j) = static_cast<int>(*n);
-        }
-    }
-    if (const json* m = member("position")) {
-        auto p = read_point(*m, path("position"), "a position");
-        if (!p) return p.error();
-        e.position = *p;
-    }
-    if (const json* m = member("weight")) {
-        auto w = read_finite(*m, path("weight"), "weight");
-        if (!w) return w.error();
-        e.weight = *w;
-    }
-    if (const json* m = member("direction")) {
-        const auto d = enum_value<geom::Dir>(*m);
-        if (!d) return schema_error("direction is \"u\" or \"v\"", path("direction"));
-        e.direction = *d;
-    }
-    if (const json* m = member("knots")) {
-        auto k = read_numbers(*m, path("knots"), "knots");
-        if (!k) return k.error();
-        e.knots = *k;
-    }
-    if (const json* m = member("degree")) {
-        auto n = read_integer(*m, path("degree"), "degree", 1, 1 << 20);
-        if (!n) return n.error();
-        e.degree = static_cast<int>(*n);
-    }
-    if (const json* m = member("type")) {
-        const auto t = enum_value<geom::SplineType>(*m);
-        if (!t)
-            return schema_error("type is bezier, rational_bezier, bspline or nurbs", path("type"));
-        e.type = *t;
-    }
-    if (const json* m = member("group")) {
-        auto n = read_integer(*m, path("group"), "a patch group id", 1,
-                              static_cast<std::int64_t>(max_object_id));
-        if (!n) return n.error();
-        e.group = static_cast<std::uint64_t>(*n);
-    }
-    if (const json* m = member("borders")) {
-        auto c = continuity_from_json(*m, path("borders"));
-        if (!c) return c.error();
-        e.borders = *c;
-    }
-    if (const json* m = member("tolerance")) {
-        auto t = read_finite(*m, path("tolerance"), "tolerance");
-        if (!t) return t.error();
-        if (*t < 0) return schema_error("tolerance is 0 or more", path("tolerance"));
-        e.tolerance = *t;
-    }
-    const bool about_object = e.i || e.position || e.weight || e.knots || e.degree || e.type;
-    if (about_object && !e.id)
-        return schema_error("an expect about an object's point, weight, knots, degree or type "
-                            "names the object: add \"id\"",
-                            at);
-    if ((e.position || e.weight) && !e.i)
-        return schema_error("an expected position or weight belongs to a point: add \"point\"", at);
-    if (e.borders && !e.group)
-        return schema_error("an expect about borders names the patch group: add \"group\"", at);
-    return e;
-}
-
 // {"weight": {"object": 1, "point": [2, 2]}, "from": 0, "to": 5, "seconds": 4, "repeat":
 // "bounce", "speed": 1, "at": 0.5, "play": true}, {"knot": {"object", "direction", "k"}, ...},
 // {"parameter": {"object", "name"}, ...}, {"indicator": "line", "from": [u, v], "to": [u, v]},
@@ -501,137 +398,9 @@ Expected<Step> read_step(const json& j, const std::string& at) {
         if (!t) return t.error();
         return step(CaptionStep{*t});
     }
-    auto e = read_expect(v, kat);
+    auto e = expect_from_json(v, kat);
     if (!e) return e.error();
     return step(*e);
-}
-
-// ---------------------------------------------------------------------------------------
-// Expectations.
-
-bool near(double got, double want, double tolerance) {
-    return std::abs(got - want) <= tolerance * std::max(1.0, std::abs(want));
-}
-
-std::string vec_text(const glm::dvec3& p) {
-    return "(" + geom::format_number(p.x) + ", " + geom::format_number(p.y) + ", " +
-           geom::format_number(p.z) + ")";
-}
-
-std::string list_text(const std::vector<double>& v) {
-    std::string out = "[";
-    for (std::size_t k = 0; k < v.size(); ++k) out += (k ? ", " : "") + geom::format_number(v[k]);
-    return out + "]";
-}
-
-// A triangular patch: its degree and its control point b_ijk (i, j), k = n - i - j; it has
-// no knots and no tensor-product type.
-std::vector<std::string> unmet_on_triangle(const ExpectStep& e, const std::string& object_name,
-                                           const geom::TrianglePatch& t) {
-    std::vector<std::string> out;
-    const std::string tol = " (tolerance " + geom::format_number(e.tolerance) + ")";
-    const std::string name = "'" + object_name + "'";
-    if (e.knots || e.type)
-        out.push_back(name + " is a triangular patch: it has no knots and no spline type");
-    if (e.degree && t.degree != *e.degree)
-        out.push_back("expected " + name + "'s degree to be " + std::to_string(*e.degree) +
-                      ", it is " + std::to_string(t.degree));
-    if (!e.i) return out;
-    const int i = *e.i, j = e.j.value_or(-1);
-    const std::string label =
-        "b" + std::to_string(i) + "," + std::to_string(j) + "," + std::to_string(t.degree - i - j);
-    if (i < 0 || j < 0 || i + j > t.degree) {
-        out.push_back(name + " has no control point b_ijk with i = " + std::to_string(i) +
-                      ", j = " + std::to_string(j));
-        return out;
-    }
-    const auto at = static_cast<std::size_t>(geom::TrianglePatch::index(t.degree, i, j));
-    const glm::dvec3 p = t.points[at];
-    if (e.position &&
-        !(near(p.x, e.position->x, e.tolerance) && near(p.y, e.position->y, e.tolerance) &&
-          near(p.z, e.position->z, e.tolerance)))
-        out.push_back("expected " + label + " of " + name + " at " + vec_text(*e.position) +
-                      ", found " + vec_text(p) + tol);
-    if (e.weight && !near(t.weights[at], *e.weight, e.tolerance))
-        out.push_back("expected the weight of " + label + " of " + name + " to be " +
-                      geom::format_number(*e.weight) + ", found " +
-                      geom::format_number(t.weights[at]) + tol);
-    return out;
-}
-
-// Every way the document differs from the expectation, one sentence each.
-std::vector<std::string> unmet(const ExpectStep& e, const doc::Document& d) {
-    std::vector<std::string> out;
-    const std::string tol = " (tolerance " + geom::format_number(e.tolerance) + ")";
-    if (e.objects && d.objects.size() != *e.objects)
-        out.push_back("expected " + std::to_string(*e.objects) + " objects, found " +
-                      std::to_string(d.objects.size()));
-    if (e.borders) {
-        if (!continuity_holds(d, *e.group, *e.borders, e.tolerance))
-            out.push_back("expected the borders of patch group " + std::to_string(*e.group) +
-                          " to hold " + doc::continuity_name(*e.borders) + tol);
-    }
-    if (!e.id) return out;
-    const doc::Object* o = d.find(*e.id);
-    if (!o) {
-        out.push_back("expected an object with id " + std::to_string(*e.id) + ", found none");
-        return out;
-    }
-    const geom::Surface* s = o->surface();
-    const geom::Curve* c = o->curve();
-    if (const geom::TrianglePatch* t = o->triangle()) return unmet_on_triangle(e, o->name, *t);
-    if (!s && !c) {
-        out.push_back("'" + o->name +
-                      "' is an implicit surface: it has no points, knots or degree");
-        return out;
-    }
-    const std::string name = "'" + o->name + "'";
-    if (e.type) {
-        const geom::SplineType t = s ? s->type : c->type;
-        if (t != *e.type)
-            out.push_back("expected " + name + " to be " + geom::name_of(*e.type) + ", it is " +
-                          geom::name_of(t));
-    }
-    if (e.degree) {
-        const int p = s ? s->degree(e.direction) : c->degree;
-        if (p != *e.degree)
-            out.push_back("expected " + name + "'s degree" +
-                          (s ? std::string(" in ") + geom::name_of(e.direction) : "") + " to be " +
-                          std::to_string(*e.degree) + ", it is " + std::to_string(p));
-    }
-    if (e.knots) {
-        const geom::Knots& U = s ? s->knots(e.direction) : c->knots;
-        bool same = U.size() == e.knots->size();
-        for (std::size_t k = 0; same && k < U.size(); ++k)
-            same = near(U[k], (*e.knots)[k], e.tolerance);
-        if (!same)
-            out.push_back("expected " + name + "'s knots" +
-                          (s ? std::string(" in ") + geom::name_of(e.direction) : "") + " " +
-                          list_text(*e.knots) + ", found " + list_text(U) + tol);
-    }
-    if (e.i) {
-        const int i = *e.i, j = e.j.value_or(-1);
-        const bool in_range = s ? (i < s->n_u && j >= 0 && j < s->n_v) : (i < c->count() && j < 0);
-        const std::string label =
-            "P" + std::to_string(i) + (j >= 0 ? "," + std::to_string(j) : std::string());
-        if (!in_range) {
-            out.push_back(name + " has no control point " + label);
-            return out;
-        }
-        const std::size_t index = static_cast<std::size_t>(s ? s->index(i, j) : i);
-        const glm::dvec3 p = s ? s->points[index] : c->points[index];
-        const double w = s ? s->weights[index] : c->weights[index];
-        if (e.position &&
-            !(near(p.x, e.position->x, e.tolerance) && near(p.y, e.position->y, e.tolerance) &&
-              near(p.z, e.position->z, e.tolerance)))
-            out.push_back("expected " + label + " of " + name + " at " + vec_text(*e.position) +
-                          ", found " + vec_text(p) + tol);
-        if (e.weight && !near(w, *e.weight, e.tolerance))
-            out.push_back("expected the weight of " + label + " of " + name + " to be " +
-                          geom::format_number(*e.weight) + ", found " + geom::format_number(w) +
-                          tol);
-    }
-    return out;
 }
 
 } // namespace
@@ -640,7 +409,9 @@ std::vector<std::string> unmet(const ExpectStep& e, const doc::Document& d) {
 
 Expected<Script> script_from_json(const json& j, const std::string& script_dir) {
     if (auto st = expect_object(j, "", "a script"); !st) return st.error();
-    if (auto st = check_members(j, "", "a script", {"format", "version", "scene", "steps"}); !st)
+    if (auto st = check_members(j, "", "a script",
+                                {"format", "version", "title", "summary", "scene", "steps"});
+        !st)
         return st.error();
     const json* format = find_member(j, "format");
     if (!format) return missing_member("", "format");
@@ -653,6 +424,13 @@ Expected<Script> script_from_json(const json& j, const std::string& script_dir) 
     if (!v) return v.error();
 
     Script script;
+    for (auto [name, into] :
+         {std::pair{"title", &script.title}, std::pair{"summary", &script.summary}})
+        if (const json* m = find_member(j, name)) {
+            auto text = read_string(*m, member_path("", name), name);
+            if (!text) return text.error();
+            *into = *text;
+        }
     script.start = doc::default_document();
     script.scene_name = "(default)";
     if (const json* scene = find_member(j, "scene")) {
@@ -696,6 +474,7 @@ Expected<Script> script_from_json(const json& j, const std::string& script_dir) 
     for (std::size_t k = 0; k < steps->size(); ++k) {
         auto step = read_step((*steps)[k], "/steps/" + std::to_string(k));
         if (!step) return step.error();
+        step->source = (*steps)[k];
         if (const auto* shot = std::get_if<ScreenshotStep>(&step->action)) {
             // Every screenshot is a render: the script's pictures together have a budget.
             pixels += static_cast<double>(shot->width) * shot->height;
@@ -804,7 +583,7 @@ geom::Status run_step(const Step& step, ScriptState& state, const ScriptHooks& h
             state.animation = *anim;
         }
     } else if (const auto* e = std::get_if<ExpectStep>(&a)) {
-        for (const std::string& problem : unmet(*e, state.doc))
+        for (const std::string& problem : unmet_expectations(*e, state.doc))
             result.failed_expects.push_back(step.path + ": " + problem);
     }
     return geom::Ok{};

@@ -17,6 +17,7 @@
 #include "core/doc/command_spec.hpp"
 #include "core/doc/document.hpp"
 #include "core/geom/status.hpp"
+#include "core/scene/expect.hpp"
 
 namespace isoparm::scene {
 
@@ -89,22 +90,6 @@ struct AnimateStep {
     bool play = true;
     bool stop = false;
 };
-// A check on the document (docs/script-format.md: "expect").
-struct ExpectStep {
-    std::optional<std::size_t> objects;
-    std::optional<std::uint64_t> id;
-    std::optional<int> i, j;
-    std::optional<glm::dvec3> position;
-    std::optional<double> weight;
-    geom::Dir direction = geom::Dir::u;
-    std::optional<std::vector<double>> knots;
-    std::optional<int> degree;
-    std::optional<geom::SplineType> type;
-    std::optional<std::uint64_t> group;
-    std::optional<doc::Continuity> borders;
-    double tolerance = 1e-9;
-};
-
 using StepAction =
     std::variant<doc::CommandSpec, UndoStep, RedoStep, SelectStep, IndicatorStep, DisplayStep,
                  ContinuityStep, CameraStep, DeBoorStep, ScreenshotStep, CaptionStep, PauseStep,
@@ -112,13 +97,16 @@ using StepAction =
 
 struct Step {
     StepAction action;
-    std::string path; // "/steps/12", for every message about this step
+    std::string path;                // "/steps/12", for every message about this step
+    nlohmann::json source = nullptr; // the step as written (the lesson editor writes it back)
 };
 
 struct Script {
     doc::Document start;
     std::string scene_name; // the starting scene's file, "(inline)" or "(default)"
     std::vector<Step> steps;
+    // What the Lessons menu shows: a title and a one-line summary (both optional).
+    std::string title, summary;
 };
 
 // Reads a script: the format and version, the starting scene ("scene": a path relative to

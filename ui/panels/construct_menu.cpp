@@ -330,7 +330,8 @@ bool build(AppContext& ctx) {
     result->object.name = doc::unique_name(ctx.doc, result->object.name);
     const std::string name = result->object.name;
     ctx.seal();
-    if (!ctx.execute(doc::add_object(std::move(result->object)))) {
+    // The recipe, not the surface: a recording (a lesson) keeps "revolve curve 2".
+    if (!ctx.execute(doc::construct(r))) {
         cd.error = title + ". " + ctx.ui.status;
         return false;
     }

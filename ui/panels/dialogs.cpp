@@ -11,6 +11,7 @@
 #include "core/doc/commands.hpp"
 #include "core/doc/placement.hpp"
 #include "ui/actions.hpp"
+#include "ui/course_actions.hpp"
 #include "ui/exchange_actions.hpp"
 #include "ui/panels/enum_combo.hpp"
 #include "ui/panels/fit_panel.hpp"
@@ -149,16 +150,20 @@ void file_dialog(AppContext& ctx) {
     const bool recording = fd.mode == FileDialog::Mode::save_recording;
     const bool lesson = fd.mode == FileDialog::Mode::open_lesson;
     const bool points = fd.mode == FileDialog::Mode::load_points;
-    const bool saving = fd.mode == FileDialog::Mode::save || recording;
+    const bool lesson_out = fd.mode == FileDialog::Mode::save_lesson;
+    const bool exercise = fd.mode == FileDialog::Mode::open_exercise;
+    const bool saving = fd.mode == FileDialog::Mode::save || recording || lesson_out;
     const bool exporting = fd.mode == FileDialog::Mode::export_file;
     const bool importing = fd.mode == FileDialog::Mode::import_file;
-    const char* title = recording   ? "Save recording as script"
-                        : saving    ? "Save scene as"
-                        : exporting ? "Export visible objects (.step .igs .obj .stl .ply .glb)"
-                        : importing ? "Import curves and surfaces (.step .igs .obj)"
-                        : lesson    ? "Open lesson (a script)"
-                        : points    ? "Load data points (CSV or XYZ)"
-                                    : "Open scene";
+    const char* title = recording    ? "Save recording as script"
+                        : lesson_out ? "Save lesson as"
+                        : exercise   ? "Open exercise"
+                        : saving     ? "Save scene as"
+                        : exporting  ? "Export visible objects (.step .igs .obj .stl .ply .glb)"
+                        : importing  ? "Import curves and surfaces (.step .igs .obj)"
+                        : lesson     ? "Open lesson (a script)"
+                        : points     ? "Load data points (CSV or XYZ)"
+                                     : "Open scene";
     if (fd.just_opened) {
         ImGui::OpenPopup(title);
         fd.just_opened = false;
@@ -191,7 +196,11 @@ void file_dialog(AppContext& ctx) {
     ImGui::EndChild();
     ImGui::SetNextItemWidth(-1);
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere(); // type a name right away
-    const bool enter = ImGui::InputText("##name", &fd.name, ImGuiInputTextFlags_EnterReturnsTrue);
+    // A click on the name selects all of it, so typing replaces it (a file name is most often
+    // typed anew).
+    const bool enter =
+        ImGui::InputText("##name", &fd.name,
+                         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
     report_item("file/name");
     if (enter && !fd.name.empty()) chosen = fd.name;
     fs::path target = fs::path(fd.directory) / fd.name;
@@ -240,10 +249,24 @@ void file_dialog(AppContext& ctx) {
             ImGui::TextDisabled("The browser downloads the file.");
         }
     }
+    // A folder typed or picked (a path in the name field too) is opened in the dialog, never
+    // taken as the file: nothing is asked or refused for it.
+    if (!chosen.empty() && fs::is_directory(fs::path(fd.directory) / chosen, ec)) {
+        fd.directory = (fs::path(fd.directory) / chosen).lexically_normal().string();
+        if (fd.directory.size() > 1 && fd.directory.back() == '/') fd.directory.pop_back();
+        fd.name.clear();
+        fd.error.clear();
+        chosen.clear();
+    }
     if (!chosen.empty()) {
         target = fs::path(fd.directory) / chosen;
         if (saving && target.extension().empty()) target += ".json";
-        if (exporting || importing) {
+        if (lesson_out) {
+            close = save_lesson(ctx, target.string());
+        } else if (exercise) {
+            close = true;
+            request_open_exercise(ctx, target.string());
+        } else if (exporting || importing) {
             // A refusal keeps the dialog open with the reason; nothing was written or added.
             close = exporting ? export_visible_objects(ctx, target.string(), fd.error)
                               : import_objects(ctx, target.string(), fd.error);

@@ -397,6 +397,8 @@ void help_menu(AppContext& ctx) {
 void draw_menus(AppContext& ctx) {
     if (!ImGui::BeginMainMenuBar()) return;
     file_menu(ctx);
+    draw_lessons_menu(ctx);   // lessons_menu.cpp
+    draw_exercises_menu(ctx); // lessons_menu.cpp
     edit_menu(ctx);
     surface_menu(ctx);
     draw_construct_menus(ctx); // Curve, Construct (construct_menu.cpp)

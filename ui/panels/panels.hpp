@@ -28,6 +28,11 @@ void draw_control_panel(AppContext& ctx);        // colours and display settings
 void draw_object_list_panel(AppContext& ctx);    // every object: select, rename, hide, delete
 void draw_status_bar(AppContext& ctx);           // frame time, object, unsaved mark
 void draw_lesson_panel(AppContext& ctx);         // a lesson's caption and Next / Restart
+void draw_lessons_menu(AppContext& ctx);         // Lessons: shipped, mine, writing one
+void draw_exercises_menu(AppContext& ctx);       // Exercises: shipped, open, check
+void draw_lesson_editor_panel(AppContext& ctx);  // a lesson's stops, captions, order, play
+void draw_exercise_panel(AppContext& ctx);       // an exercise's task, Check and hints
+void draw_course_panels(AppContext& ctx);        // the two above and the authoring dialogs
 void draw_dialogs(AppContext& ctx);              // new surface, files, unsaved changes, errors
 
 // The stage (stage_panel.cpp): the staged teaching view at full size in `area`, or the

@@ -16,7 +16,7 @@ namespace isoparm::ui::files {
 bool in_browser();
 
 // What a file chosen for opening is for.
-enum class Purpose { open_scene, open_lesson, import_file, load_points };
+enum class Purpose { open_scene, open_lesson, import_file, load_points, open_exercise };
 
 // The browser's file picker (`accept`: extensions as in ".json,.txt"). The file chosen is
 // copied into the page's file system and comes back from take_upload() at a later frame; no
