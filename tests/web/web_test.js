@@ -19,7 +19,7 @@
 //  3. drag: a control point dragged in the control-point panel's xy plane moves (Ctrl+S
 //     downloads the scene: the point's x and y changed, z did not); the indicator dragged in
 //     the tracing square moves to where it was dropped.
-//  4. lesson: File > Open lesson... with weights-and-knots, Next and the Right arrow step it;
+//  4. lesson: File > Open lesson... with 00-weights-and-knots, Next and the Right arrow step it;
 //     P shows the stop in presentation mode and back.
 //  5. files: File > Open... > From this computer... uploads a scene; an edit autosaved into
 //     IndexedDB is offered back after a reload, and Restore brings it back.
@@ -267,7 +267,7 @@ async function lesson(p, args) {
   await p.page.keyboard.down('Control');
   await p.page.keyboard.press('a');
   await p.page.keyboard.up('Control');
-  await p.page.keyboard.type('/isoparm/assets/lessons/weights-and-knots.json');
+  await p.page.keyboard.type('/isoparm/assets/lessons/00-weights-and-knots.json');
   await p.page.keyboard.press('Enter');
   let r = await p.waitFor('the lesson\'s first stop', (r) => r.lesson && r.lesson.next > 0);
   check(r.lesson.caption.includes('Fig. 3'), 'the first caption is ' + JSON.stringify(r.lesson.caption));
@@ -287,7 +287,7 @@ async function lesson(p, args) {
   await p.page.screenshot({ path: path.join(args.out, 'web-lesson-presentation.png') });
   await p.page.keyboard.press('p');
   await p.waitFor('presentation mode off', (r) => !r.presentation);
-  console.log('ok lesson: weights-and-knots stepped to its third stop, shown in presentation mode');
+  console.log('ok lesson: 00-weights-and-knots stepped to its third stop, shown in presentation mode');
 }
 
 // 5. Upload, autosave into IndexedDB, restore after a reload.
