@@ -83,10 +83,15 @@ void flush_ui_report(const AppContext& ctx) {
     j["font_pixels"] = ImGui::GetFontSize();
     j["recording"] = ctx.recorder ? static_cast<long>(ctx.recorder->step_count()) : -1;
     if (ctx.ui.lesson)
-        j["lesson"] = {{"next", ctx.ui.lesson->next},      {"caption", ctx.ui.lesson->caption},
-                       {"stop", ctx.ui.lesson->stop},      {"stops", ctx.ui.lesson->stops()},
-                       {"path", ctx.ui.lesson->path},      {"unmet", ctx.ui.lesson->unmet},
-                       {"refused", ctx.ui.lesson->refused}};
+        j["lesson"] = {{"next", ctx.ui.lesson->next},
+                       {"caption", ctx.ui.lesson->caption},
+                       {"stop", ctx.ui.lesson->stop},
+                       {"stops", ctx.ui.lesson->stops()},
+                       {"path", ctx.ui.lesson->path},
+                       {"unmet", ctx.ui.lesson->unmet},
+                       {"refused", ctx.ui.lesson->refused},
+                       // The caption box was not placed again this frame: it is where it stays.
+                       {"settled", ctx.ui.course.caption_box.settling == 0}};
     if (ctx.recorder) j["recording_stops"] = ctx.recorder->stop_count();
     if (const LessonEditorState& e = ctx.ui.course.editor; e.open && e.draft)
         j["editor"] = {{"path", e.path}, {"stops", e.draft->size()}, {"problem", e.problem}};

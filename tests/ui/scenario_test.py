@@ -325,7 +325,7 @@ def lesson_steps_from_pause_to_pause(s, ctx):
     r = s.wait_for("the lesson's first stop", lambda r: r.get("lesson", {}).get("next", 0) > 0)
     check("Fig. 3" in r["lesson"]["caption"], f"the first caption is {r['lesson']['caption']!r}")
     ctx.shot(s, "lesson-start")
-    s.click_named("lesson/next")
+    click_lesson(s, "lesson/next")
     r = s.wait_for("the second stop", lambda r: "w22 = 5" in r["undo"])
     s.key("Right")
     r = s.wait_for("the third stop", lambda r: "w22 = 0.3" in r["undo"])
@@ -343,6 +343,13 @@ def covered_by_caption(r):
     bx, by, bw, bh = rects["lesson/box"]
     return [name for name, (x, y, w, h) in rects.items() if name.startswith("lesson/focus/")
             and not (x >= bx + bw or bx >= x + w or y >= by + bh or by >= y + h)]
+
+
+def click_lesson(s, name):
+    """Clicks a button of the caption box once the box has come to rest (it is placed, measured
+    and placed again over a few frames; a click while it moves lands where it was)."""
+    s.wait_for("the caption box at rest", lambda r: r.get("lesson", {}).get("settled", True))
+    s.click_named(name)
 
 
 def boxes_apart(s, what):
@@ -391,13 +398,13 @@ def lessons_menu_record_and_replay(s, ctx):
     check("Bezier surface" in r["lesson"]["caption"], f"first caption: {r['lesson']['caption']!r}")
     boxes_apart(s, "stop 1")
     ctx.shot(s, "lesson-stop1")
-    s.click_named("lesson/next")
+    click_lesson(s, "lesson/next")
     r = s.wait_for("the second stop", lambda r: r.get("lesson", {}).get("stop") == 2)
     check("rational Bezier" in r["lesson"]["caption"], f"second caption: {r['lesson']['caption']!r}")
     check(not r["lesson"]["unmet"], f"unmet expectations: {r['lesson']['unmet']}")
     boxes_apart(s, "stop 2")
     ctx.shot(s, "lesson-stop2")
-    s.click_named("lesson/close")
+    click_lesson(s, "lesson/close")
     s.wait_for("the lesson closed", lambda r: "lesson" not in r)
 
     # A lesson of two stops, written in the window.
@@ -430,7 +437,7 @@ def lessons_menu_record_and_replay(s, ctx):
     s.click_named("unsaved/discard")  # the recorded session's scene was not saved: asked first
     r = s.wait_for("the lesson at its second stop", lambda r: r.get("lesson", {}).get("stop") == 2)
     check(r["lesson"]["caption"] == "Second stop: a point dragged", f"{r['lesson']['caption']!r}")
-    s.click_named("lesson/close")
+    click_lesson(s, "lesson/close")
     s.wait_for("the lesson closed", lambda r: "lesson" not in r)
     with open(path) as f:
         lesson = json.load(f)
