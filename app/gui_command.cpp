@@ -14,6 +14,7 @@
 #include <imgui_impl_glfw.h>
 
 #include "app/commands.hpp"
+#include "app/keep_libraries_loaded.hpp"
 #include "app/window_loop.hpp"
 #include "core/scene/autosave.hpp"
 #include "ui/actions.hpp"
@@ -133,6 +134,7 @@ int run_window(const std::string& scene, const std::string& lesson, int autosave
     glfwSetWindowPos(window, place.x, place.y);
     glfwShowWindow(window);
     glfwMakeContextCurrent(window);
+    keep_libraries_loaded_for_leak_reports(); // the driver is loaded once a context is current
     glfwSwapInterval(1);
     ui::ScreenRect windowed = place; // where F11 returns to
     float xs = 1, ys = 1;

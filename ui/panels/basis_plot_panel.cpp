@@ -68,9 +68,9 @@ void heat_canvas(AppContext& ctx, const doc::Object& obj, const geom::Surface& s
     const CanvasView cv = canvas_view(ctx, "basis/heat", canvas);
     const Rect sq = view_rect(cv, canvas, canvas);
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Support of %s (white box); max %s",
+        ImGui::SetTooltip("Support of %s (white box); largest sampled value %s",
                           point_name('R', i, j, s.n_u, s.n_v).c_str(),
-                          geom::format_number(h.max_value).c_str());
+                          geom::format_short(h.max_value).c_str());
     if (ImGui::IsItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
         const ImVec2 m = ImGui::GetIO().MousePos;
         ctx.doc.view.indicator =

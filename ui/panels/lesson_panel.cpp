@@ -38,11 +38,20 @@ std::optional<Rect> box_position(AppContext& ctx, const Lesson& lesson, float wi
     if (!new_stop && !resized && (box.user_moved || !covers)) return std::nullopt;
     // A new stop, its real height, or the point came under the box (the camera turned).
     const Rect r = place_caption(view, width, height, focus, 8 * k, new_stop ? nullptr : &now);
-    if (new_stop || resized) {
+    {
+        // Wherever it goes (a new stop, its real height, a point that came under it), the
+        // object it lands on is framed again beside it.
         float covered = 0;
         for (const Rect& o : focus.objects) covered += overlap_area(r, o);
         if (covered > 0) {
-            fit_camera_into(ctx.ui.camera, focus_points(ctx.doc), view, free_beside(view, r));
+            // The points' disks (focus.points, 14 k around each point) stay clear of the box
+            // too, not only their centres: otherwise a point at the free part's edge comes
+            // under the box by a pixel and the box is placed again on every frame.
+            const Rect free = free_beside(view, r);
+            const float m = 14 * k;
+            const Rect inside{free.x + m, free.y + m, std::max(0.f, free.w - 2 * m),
+                              std::max(0.f, free.h - 2 * m)};
+            fit_camera_into(ctx.ui.camera, focus_points(ctx.doc), view, inside);
             ctx.ui.camera_needs_fit = false;
         }
     }

@@ -32,7 +32,7 @@ void draw_rich_text(const std::string& text) {
     ImFont* bold = bold_font();
     const float left = ImGui::GetCursorPosX();
     const float right = left + ImGui::GetContentRegionAvail().x;
-    for (const TextLine& line : parse_caption(text)) {
+    for (const CaptionLine& line : parse_caption(text)) {
         float x = left;
         bool first = true;
         if (line.bullet) {
@@ -43,7 +43,7 @@ void draw_rich_text(const std::string& text) {
         }
         const float indent = x;
         if (line.runs.empty() && !line.bullet) ImGui::NewLine();
-        for (const TextRun& run : line.runs) {
+        for (const CaptionRun& run : line.runs) {
             if (run.bold && bold) ImGui::PushFont(bold);
             if (run.bold && !bold)
                 ImGui::PushStyleColor(ImGuiCol_Text,

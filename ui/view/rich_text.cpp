@@ -3,15 +3,15 @@
 
 namespace isoparm::ui {
 
-std::vector<TextLine> parse_caption(std::string_view text) {
-    std::vector<TextLine> out;
+std::vector<CaptionLine> parse_caption(std::string_view text) {
+    std::vector<CaptionLine> out;
     std::size_t start = 0;
     while (start <= text.size()) {
         std::size_t end = text.find('\n', start);
         if (end == std::string_view::npos) end = text.size();
         std::string_view line = text.substr(start, end - start);
         if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-        TextLine l;
+        CaptionLine l;
         if (line.starts_with("- ") || line.starts_with("* ")) {
             l.bullet = true;
             line.remove_prefix(2);

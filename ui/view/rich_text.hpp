@@ -8,16 +8,18 @@
 
 namespace isoparm::ui {
 
-struct TextRun {
+// Not "TextRun": drawing.hpp has a ui::TextRun of its own (sub/superscripts), and two classes
+// of one name break the one-definition rule (their vectors' code is shared by the linker).
+struct CaptionRun {
     std::string text;
     bool bold = false;
 };
-struct TextLine {
-    std::vector<TextRun> runs;
+struct CaptionLine {
+    std::vector<CaptionRun> runs;
     bool bullet = false;
 };
 
 // An unclosed ** is bold to the end of its line; "**" alone on a line is nothing.
-std::vector<TextLine> parse_caption(std::string_view text);
+std::vector<CaptionLine> parse_caption(std::string_view text);
 
 } // namespace isoparm::ui
