@@ -203,6 +203,7 @@ int run_window(const std::string& scene, const std::string& lesson, int autosave
             ImGui_ImplGlfw_Shutdown();
         }
     }
+    keep_libraries_loaded_for_leak_reports(); // and those loaded since (cursors, dialogs)
     glfwDestroyWindow(window);
     glfwTerminate();
     return status;

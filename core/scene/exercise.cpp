@@ -9,6 +9,7 @@
 #include "core/json/shapes.hpp"
 #include "core/scene/exercise_text.hpp"
 #include "core/scene/scene_io.hpp"
+#include "core/scene/starting_scene.hpp"
 
 namespace isoparm::scene {
 
@@ -344,31 +345,10 @@ Expected<Exercise> exercise_from_json(const json& j, const std::string& dir) {
     }
     const json* scene = find_member(j, "scene");
     if (!scene) return missing_member("", "scene");
-    if (scene->is_string()) {
-        const std::filesystem::path rel(scene->get<std::string>());
-        const std::string path =
-            rel.is_absolute() ? rel.string() : (std::filesystem::path(dir) / rel).string();
-        auto loaded = load_scene(path);
-        if (!loaded) {
-            Error e = loaded.error();
-            e.message = "the starting scene '" + path + "': " + e.message +
-                        (e.has_path && !e.path.empty() ? " (at " + e.path + " in that file)" : "");
-            e.path = "/scene";
-            e.has_path = true;
-            return e;
-        }
-        ex.start = std::move(loaded).value();
-        ex.scene_name = path;
-    } else if (scene->is_object()) {
-        auto inline_scene = scene_from_json(*scene);
-        if (!inline_scene) return inline_scene.error().under("/scene");
-        ex.start = std::move(inline_scene).value();
-        ex.scene_name = "(inline)";
-    } else {
-        return schema_error("scene is a path to a scene file (relative to the exercise) or a "
-                            "scene written inline",
-                            "/scene");
-    }
+    auto start = read_starting_scene(*scene, dir, "the exercise");
+    if (!start) return start.error();
+    ex.start = std::move(start->document);
+    ex.scene_name = std::move(start->name);
     const json* checks = find_member(j, "checks");
     if (!checks) return missing_member("", "checks");
     if (!checks->is_array() || checks->empty())

@@ -14,6 +14,7 @@
 #include "core/json/shapes.hpp"
 #include "core/scene/command_json.hpp"
 #include "core/scene/scene_io.hpp"
+#include "core/scene/starting_scene.hpp"
 
 namespace isoparm::scene {
 
@@ -434,33 +435,10 @@ Expected<Script> script_from_json(const json& j, const std::string& script_dir) 
     script.start = doc::default_document();
     script.scene_name = "(default)";
     if (const json* scene = find_member(j, "scene")) {
-        if (scene->is_string()) {
-            const std::filesystem::path rel(scene->get<std::string>());
-            const std::string path = rel.is_absolute()
-                                         ? rel.string()
-                                         : (std::filesystem::path(script_dir) / rel).string();
-            auto loaded = load_scene(path);
-            if (!loaded) {
-                Error e = loaded.error();
-                e.message =
-                    "the starting scene '" + path + "': " + e.message +
-                    (e.has_path && !e.path.empty() ? " (at " + e.path + " in that file)" : "");
-                e.path = "/scene";
-                e.has_path = true;
-                return e;
-            }
-            script.start = std::move(loaded).value();
-            script.scene_name = path;
-        } else if (scene->is_object()) {
-            auto inline_scene = scene_from_json(*scene);
-            if (!inline_scene) return inline_scene.error().under("/scene");
-            script.start = std::move(inline_scene).value();
-            script.scene_name = "(inline)";
-        } else {
-            return schema_error("scene is a path to a scene file (relative to the script) or a "
-                                "scene written inline",
-                                "/scene");
-        }
+        auto start = read_starting_scene(*scene, script_dir, "the script");
+        if (!start) return start.error();
+        script.start = std::move(start->document);
+        script.scene_name = std::move(start->name);
     }
     const json* steps = find_member(j, "steps");
     if (!steps) return missing_member("", "steps");
