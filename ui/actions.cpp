@@ -9,6 +9,7 @@
 #include "ui/animation_actions.hpp"
 #include "ui/course_actions.hpp"
 #include "ui/lesson.hpp"
+#include "ui/platform/files.hpp"
 #include "ui/view/course_files.hpp"
 #include "ui/view/doc_access.hpp"
 #include "ui/view/scene_budget.hpp"
@@ -188,6 +189,7 @@ bool save_as(AppContext& ctx, const std::string& path) {
     add_recent(ctx.settings.recent, std::filesystem::absolute(path).lexically_normal().string());
     store_settings(ctx);
     ctx.ui.status = "Saved " + path;
+    files::hand_over(path); // the browser downloads it
     return true;
 }
 
@@ -300,6 +302,7 @@ bool save_recording(AppContext& ctx, const std::string& path) {
     ctx.ui.finished_recording.reset();
     ctx.ui.status = "Recording saved: " + path + " (" + std::to_string(steps) +
                     " steps; isoparm script replays it)";
+    files::hand_over(path);
     return true;
 }
 
@@ -335,7 +338,8 @@ void show_error(AppContext& ctx, const std::string& title, const std::string& me
 }
 
 void store_settings(AppContext& ctx) {
-    if (ctx.remember_settings) save_settings(ctx.settings, settings_path());
+    if (ctx.remember_settings && save_settings(ctx.settings, settings_path()))
+        files::keep_settings(); // the browser's local storage
 }
 
 } // namespace isoparm::ui

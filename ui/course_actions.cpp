@@ -11,6 +11,7 @@
 #include "core/scene/script.hpp"
 #include "ui/actions.hpp"
 #include "ui/lesson.hpp"
+#include "ui/platform/files.hpp"
 #include "ui/view/course_files.hpp"
 
 namespace isoparm::ui {
@@ -231,6 +232,7 @@ bool save_lesson(AppContext& ctx, const std::string& path) {
         ctx.ui.file_dialog.error = "Not saved: " + st.error().message;
         return false;
     }
+    files::hand_over(path); // the browser downloads it
     e.draft = std::move(out);
     e.path = path;
     e.base_dir = folder_of(path);

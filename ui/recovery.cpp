@@ -11,6 +11,7 @@
 #include "core/scene/scene_io.hpp"
 #include "ui/actions.hpp"
 #include "ui/theme.hpp"
+#include "ui/ui_report.hpp"
 #include "ui/view/doc_access.hpp"
 
 namespace isoparm::ui {
@@ -97,7 +98,9 @@ void draw_recovery_dialog(AppContext& ctx) {
     text_wrapped("Restore opens them as unsaved changes (Undo returns to %s).",
                  offer.origin.empty() ? "a new scene" : "the saved scene");
     ImGui::Spacing();
-    if (ImGui::Button("Restore")) {
+    const bool restore = ImGui::Button("Restore");
+    report_item("recovery/restore");
+    if (restore) {
         ImGui::CloseCurrentPopup();
         r.offers.erase(r.offers.begin());
         hold_all(r); // one document at a time: the others are offered at the next start

@@ -59,7 +59,7 @@ Workstation::Workstation(const WorkstationOptions& options) {
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr; // the layout is ours (settings.json), not imgui.ini
     io.LogFilename = nullptr;
-    ImGui_ImplOpenGL3_Init("#version 330 core");
+    ImGui_ImplOpenGL3_Init(glsl_version);
     ImGui_ImplOpenGL3_CreateDeviceObjects();
 
     ctx_.ui.headless = options.headless;

@@ -16,10 +16,12 @@
 #include "ui/panels/enum_combo.hpp"
 #include "ui/panels/fit_panel.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/platform/files.hpp"
 #include "ui/recovery.hpp"
 #include "ui/theme.hpp"
 #include "ui/toolbox_actions.hpp"
 #include "ui/ui_report.hpp"
+#include "ui/uploads.hpp"
 #include "ui/view/doc_access.hpp"
 
 namespace isoparm::ui {
@@ -235,6 +237,18 @@ void file_dialog(AppContext& ctx) {
             discard_recording(ctx);
         }
     }
+    // In a browser the list shows the page's own files (the examples, the lessons, uploads);
+    // the user's are reached through the browser's picker, and what is written downloads.
+    if (files::in_browser()) {
+        if (!saving && !exporting) {
+            ImGui::SameLine();
+            const bool upload = ImGui::Button("From this computer...");
+            report_item("file/upload");
+            if (upload && request_upload_for(fd.mode)) close = true;
+        } else {
+            ImGui::TextDisabled("The browser downloads the file.");
+        }
+    }
     // A folder typed or picked (a path in the name field too) is opened in the dialog, never
     // taken as the file: nothing is asked or refused for it.
     if (!chosen.empty() && fs::is_directory(fs::path(fd.directory) / chosen, ec)) {
@@ -435,6 +449,7 @@ void help_dialog(AppContext& ctx) {
 } // namespace
 
 void draw_dialogs(AppContext& ctx) {
+    receive_uploads(ctx); // the browser's: before the dialogs they may open
     new_surface_dialog(ctx);
     file_dialog(ctx);
     unsaved_dialog(ctx);

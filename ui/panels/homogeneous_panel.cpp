@@ -30,7 +30,6 @@ namespace isoparm::ui {
 
 namespace {
 
-constexpr const char* plane_names[] = {"xy", "xz", "yz"};
 constexpr std::array<std::array<int, 2>, 3> plane_axes{{{0, 1}, {0, 2}, {1, 2}}};
 
 // What is lifted: the curve, the coordinates seen, the traced parameter and a caption.

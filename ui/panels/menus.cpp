@@ -19,6 +19,7 @@
 #include "ui/panels/fit_panel.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/panels/stage_controls.hpp"
+#include "ui/platform/files.hpp"
 #include "ui/surface_actions.hpp"
 #include "ui/theme.hpp"
 #include "ui/toolbox_actions.hpp"
@@ -31,6 +32,12 @@
 namespace isoparm::ui {
 
 namespace {
+
+// The reason a greyed item cannot act, when the pointer rests on it.
+void explain_greyed(const std::string& why) {
+    if (!why.empty() && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        wrapped_tooltip(why);
+}
 
 // Whether the open popups are menus only (the menu bar's and their submenus), not a dialog or a
 // combo's list.
@@ -77,9 +84,13 @@ void file_menu(AppContext& ctx) {
     if (!begin_menu("File")) return;
     if (menu_item("New", "Ctrl+N")) request_new_document(ctx);
     if (menu_item("Open...", "Ctrl+O")) request_open_dialog(ctx);
-    if (begin_menu("Open Recent", !ctx.settings.recent.empty())) {
+    // In a browser, files from the user's computer last one visit: only those still here.
+    std::vector<std::string> recent = ctx.settings.recent;
+    if (files::in_browser())
+        std::erase_if(recent, [](const std::string& r) { return !std::filesystem::exists(r); });
+    if (begin_menu("Open Recent", !recent.empty())) {
         std::string chosen;
-        for (const std::string& r : ctx.settings.recent)
+        for (const std::string& r : recent)
             if (menu_item(r.c_str())) chosen = r;
         ImGui::Separator();
         if (menu_item("Clear list")) {
@@ -106,8 +117,10 @@ void file_menu(AppContext& ctx) {
     // Pictures, vector figures and animations for slides and notes (ui/media_export.hpp).
     if (menu_item("Export picture...")) request_media_export(ctx, MediaExportState::Kind::picture);
     if (menu_item("Export figure...")) request_media_export(ctx, MediaExportState::Kind::figure);
-    if (menu_item("Export animation..."))
+    const std::string no_animation = files::unavailable(files::Feature::animation);
+    if (menu_item("Export animation...", nullptr, false, no_animation.empty()))
         request_media_export(ctx, MediaExportState::Kind::animation);
+    explain_greyed(no_animation);
     if (menu_item("Copy 3D view", "Ctrl+Shift+C")) ctx.ui.media_export.clipboard_pending = true;
     ImGui::Separator();
     if (menu_item("Open lesson...")) request_open_lesson_dialog(ctx);
@@ -120,7 +133,9 @@ void file_menu(AppContext& ctx) {
         if (menu_item(stop.c_str())) request_stop_recording(ctx);
     }
     ImGui::Separator();
-    if (menu_item("Quit", "Ctrl+Q")) request_quit(ctx);
+    const std::string no_quit = files::unavailable(files::Feature::quit);
+    if (menu_item("Quit", "Ctrl+Q", false, no_quit.empty())) request_quit(ctx);
+    explain_greyed(no_quit);
     ImGui::EndMenu();
 }
 
