@@ -83,6 +83,9 @@ void flush_ui_report(const AppContext& ctx) {
     j["control_points"] =
         doc::display_of(ctx.doc.view, ctx.doc.view.selection.object).control_points;
     j["font_pixels"] = ImGui::GetFontSize();
+    // Which frame this is: a scenario waits for a layout that two frames agree on (a font or
+    // a mode changes the layout over a frame or two) before it clicks on it.
+    j["frame"] = ImGui::GetFrameCount();
     j["recording"] = ctx.recorder ? static_cast<long>(ctx.recorder->step_count()) : -1;
     if (ctx.ui.lesson)
         j["lesson"] = {{"next", ctx.ui.lesson->next},
