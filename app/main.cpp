@@ -1,5 +1,5 @@
-// Entry point of `isoparm`: dispatches to the workstation, `render`, `script`, `geom`,
-// `export` or `import`.
+// Entry point of `isoparm`: dispatches to the workstation, `render`, `script`, `figure`,
+// `animate`, `geom`, `export` or `import`.
 #include <CLI/CLI.hpp>
 #include <iostream>
 
@@ -22,11 +22,14 @@ int main(int argc, char** argv) {
     const isoparm::app::Action geom = isoparm::app::register_geom_command(app);
     const isoparm::app::Action export_scene = isoparm::app::register_export_command(app);
     const isoparm::app::Action import_file = isoparm::app::register_import_command(app);
+    const isoparm::app::Action check = isoparm::app::register_check_command(app);
 #ifdef ISOPARM_HAVE_GUI
     const isoparm::app::Action render = isoparm::app::register_render_command(app);
     const isoparm::app::Action gui = isoparm::app::register_gui_command(app);
     const isoparm::app::Action examples = isoparm::app::register_examples_command(app);
     const isoparm::app::Action script = isoparm::app::register_script_command(app);
+    const isoparm::app::Action figure = isoparm::app::register_figure_command(app);
+    const isoparm::app::Action animate = isoparm::app::register_animate_command(app);
 #endif
     try {
         app.parse(argc, argv);
@@ -40,10 +43,13 @@ int main(int argc, char** argv) {
         if (sub->get_name() == "geom") return geom();
         if (sub->get_name() == "export") return export_scene();
         if (sub->get_name() == "import") return import_file();
+        if (sub->get_name() == "check") return check();
 #ifdef ISOPARM_HAVE_GUI
         if (sub->get_name() == "render") return render();
         if (sub->get_name() == "examples") return examples();
         if (sub->get_name() == "script") return script();
+        if (sub->get_name() == "figure") return figure();
+        if (sub->get_name() == "animate") return animate();
 #endif
     }
 #ifdef ISOPARM_HAVE_GUI

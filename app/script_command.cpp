@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "core/doc/animated.hpp"
 #include "core/json/out_of_memory.hpp"
 #include "core/scene/atomic_file.hpp"
 #include "core/scene/scene_io.hpp"
@@ -73,6 +74,8 @@ std::string configure_shot(const scene::ScriptState& state, const std::tuple<int
         if (state.camera->zoom_percent) ctx.ui.zoom_after_fit = *state.camera->zoom_percent / 100.0;
     }
     ctx.ui.deboor.step = state.deboor_step;
+    if (state.animation && state.animation->target.kind == doc::AnimatedKind::deboor_step)
+        ctx.ui.deboor.step = doc::step_at(state.animation->target, state.animation->at);
     const doc::Object* current = nullptr;
     if (ui::current_surface(ctx.doc, &current)) ui::follow_indicator(ctx.doc, current->id);
     return "";
@@ -160,7 +163,14 @@ int run(const ScriptOptions& o) {
         req.rendered = [&cameras, key](const ui::AppContext& ctx) {
             cameras.fitted[key] = ctx.ui.camera;
         };
-        return session->render(state.doc, req);
+        if (!state.animation) return session->render(state.doc, req);
+        // An animation's frame: its value at the step's phase, shown on a copy (never an edit).
+        doc::Document shown = state.doc;
+        const doc::AnimationTarget& t = state.animation->target;
+        auto preview = doc::show_preview(shown, t, doc::value_at(t, state.animation->at),
+                                         doc::indicator_at(t, state.animation->at));
+        if (!preview) return preview.error().message;
+        return session->render(shown, req);
     };
     hooks.caption = [](const scene::ScriptState&, const scene::Step& step) {
         std::cout << step.path << ": " << std::get<scene::CaptionStep>(step.action).text << "\n";

@@ -7,6 +7,7 @@
 #include "core/scene/export_document.hpp"
 #include "core/scene/import_document.hpp"
 #include "ui/actions.hpp"
+#include "ui/platform/files.hpp"
 #include "ui/view/scene_budget.hpp"
 
 namespace isoparm::ui {
@@ -83,6 +84,7 @@ bool export_visible_objects(AppContext& ctx, const std::string& path, std::strin
     }
     ctx.ui.status = std::string("Exported ") + scene::export_format_label(*format) + " " + path +
                     skipped_summary(result->skipped);
+    files::hand_over(path); // the browser downloads it
     return true;
 }
 

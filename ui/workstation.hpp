@@ -11,6 +11,8 @@
 
 #include "ui/app_context.hpp"
 
+struct ImGuiContext;
+
 namespace isoparm::ui {
 
 class Renderer;
@@ -25,6 +27,9 @@ struct WorkstationOptions {
     // Asks the window for another frame from any thread (a mesh ready in the background, the
     // next step of an animation); the window otherwise draws only on input. Unset headless.
     std::function<void()> request_frame;
+    // Pictures with a transparent background (File > Export picture, `isoparm render
+    // --transparent`): the frame is cleared to alpha 0 and everything blends onto that.
+    bool transparent = false;
 };
 
 class Workstation {
@@ -45,11 +50,17 @@ public:
     // One frame. The caller has set io.DisplaySize, io.DeltaTime and input (or run the GLFW
     // backend's NewFrame). The frame is drawn into `target_framebuffer` (0: the window).
     void frame(unsigned target_framebuffer = 0);
+    // Makes this workstation's ImGui context current (another workstation, e.g. a picture
+    // export's, may have taken its place).
+    void make_current();
 
 private:
     void layout_panels();
+    void render_view3d(float scale); // the scene into the renderer's texture
     void splitters();
     AppContext ctx_;
+    ImGuiContext* imgui_ = nullptr;
+    bool transparent_ = false;
     std::function<void()> request_frame_;
     std::unique_ptr<Renderer> renderer_;
     std::unique_ptr<ImplicitMeshes> implicit_;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/doc/document.hpp"
+#include "core/doc/point_set.hpp"
 
 namespace isoparm::doc {
 
@@ -163,6 +164,41 @@ struct SplitTriangleSpec {
     geom::Barycentric at{};
 };
 
+// Constructions that stay linked to their inputs (commands_construction.hpp): a new object
+// built by `recipe` (name: empty for the construction's own, "revolve profile"), an existing
+// constructed object's recipe changed (its refinements kept), and a constructed object made
+// free (its recipe dropped, its shape kept).
+struct ConstructSpec {
+    Recipe recipe;
+    std::string name;
+};
+struct EditConstructionSpec {
+    std::uint64_t id = 0;
+    Recipe recipe;
+};
+struct DetachSpec {
+    std::uint64_t id = 0;
+};
+
+// Many control points of one object at once (commands_points.hpp): moved to positions (a
+// drag, a symmetric edit), or mapped by an affine matrix about a pivot (typed values).
+struct MovePointsSpec {
+    std::uint64_t id = 0;
+    std::vector<PointIndex> points;
+    std::vector<glm::dvec3> positions; // one per point
+    std::string label;                 // empty: "Move 3 points"
+};
+enum class Pivot { origin, centroid, point };
+struct TransformPointsSpec {
+    std::uint64_t id = 0;
+    std::vector<PointIndex> points;
+    glm::dmat4 matrix{1.0};
+    Pivot about =
+        Pivot::origin; // the matrix acts about the origin, the points' centroid or `pivot`
+    glm::dvec3 pivot{0};
+    std::string label; // empty: "Transform 3 points"
+};
+
 // The order of the alternatives is the order of command_names below.
 using CommandSpec =
     std::variant<AddObjectSpec, RemoveObjectSpec, RenameObjectSpec, SetVisibleSpec, EditShapeSpec,
@@ -171,7 +207,8 @@ using CommandSpec =
                  DeleteCurvePointSpec, MoveCurvePointSpec, SetCurveDegreeSpec, SetCurveKnotModeSpec,
                  SetCurvePlaneSpec, MakeCompatibleSpec, RemoveKnotSpec, ReduceDegreeSpec,
                  SplitKnotSpec, CloseSpec, ConvertSpec, AddObjectsSpec, MultiresEditSpec,
-                 SplitTriangleSpec>;
+                 SplitTriangleSpec, ConstructSpec, EditConstructionSpec, DetachSpec, MovePointsSpec,
+                 TransformPointsSpec>;
 
 // The command's name as scripts spell it ("edit_point"), indexed like CommandSpec.
 inline constexpr const char* command_names[] = {
@@ -203,6 +240,11 @@ inline constexpr const char* command_names[] = {
     "add_objects",
     "multires_edit",
     "split_triangle",
+    "construct",
+    "edit_construction",
+    "detach",
+    "move_points",
+    "transform_points",
 };
 static_assert(std::size(command_names) == std::variant_size_v<CommandSpec>);
 

@@ -339,7 +339,7 @@ public:
         const std::string weight =
             tri ? detail::triangle_point_label('w', triangle_degree_, spec_.i, spec_.j)
                 : detail::point_label('w', spec_.i, j);
-        return "Set weight " + weight + " = " + geom::format_number(spec_.weight.value_or(1.0));
+        return "Set weight " + weight + " = " + geom::format_short(spec_.weight.value_or(1.0));
     }
 
 private:
@@ -512,7 +512,7 @@ public:
     }
 
     std::string label() const override {
-        std::string s = "Set knot " + label_name() + " = " + geom::format_number(value_);
+        std::string s = "Set knot " + label_name() + " = " + geom::format_short(value_);
         if (count_ > 1) s += " (" + std::to_string(count_) + " copies)";
         return s;
     }

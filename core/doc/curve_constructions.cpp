@@ -6,6 +6,7 @@
 #include <charconv>
 
 #include "core/doc/commands_common.hpp"
+#include "core/doc/recipe_build.hpp"
 #include "core/geom/coons.hpp"
 #include "core/geom/gordon.hpp"
 #include "core/geom/validate.hpp"
@@ -98,6 +99,9 @@ geom::Error rehome(geom::Error e, const std::vector<const Object*>& objects,
     return e;
 }
 
+geom::Expected<ConstructionResult> build_from_curves(const Document& doc,
+                                                     const ConstructionRequest& request);
+
 std::string join_names(const std::vector<const Object*>& objects) {
     std::string s;
     for (std::size_t k = 0; k < objects.size(); ++k) s += (k ? "-" : "") + objects[k]->name;
@@ -108,6 +112,17 @@ std::string join_names(const std::vector<const Object*>& objects) {
 
 geom::Expected<ConstructionResult> build_construction(const Document& doc,
                                                       const ConstructionRequest& request) {
+    auto built = request.kind == Construction::isocurve ? detail::build_isocurve(doc, request)
+                                                        : build_from_curves(doc, request);
+    if (!built) return built;
+    if (auto st = detail::apply_refinements(*built, request.refinements); !st) return st.error();
+    return built;
+}
+
+namespace {
+
+geom::Expected<ConstructionResult> build_from_curves(const Document& doc,
+                                                     const ConstructionRequest& request) {
     const Construction kind = request.kind;
     const auto [lo, hi] = curve_count(kind);
     const std::size_t n = request.curves.size();
@@ -176,9 +191,9 @@ geom::Expected<ConstructionResult> build_construction(const Document& doc,
         surface = std::move(r->skinned.surface);
         out.note = "oriented sweep of " + std::to_string(r->sections + 1) +
                    " profile copies: largest deviation from the ideal sweep " +
-                   geom::format_number(r->max_deviation) + " at (u, v) = (" +
-                   geom::format_number(r->deviation_u) + ", " +
-                   geom::format_number(r->deviation_v) + "); more sections make it smaller";
+                   geom::format_short(r->max_deviation) + " at (u, v) = (" +
+                   geom::format_short(r->deviation_u) + ", " + geom::format_short(r->deviation_v) +
+                   "); more sections make it smaller";
         break;
     }
     case Construction::skin: {
@@ -197,7 +212,7 @@ geom::Expected<ConstructionResult> build_construction(const Document& doc,
         out.note = std::string("skin of ") + std::to_string(count) + " curves, v-degree " +
                    std::to_string(degree) + ", " +
                    geom::parametrization_name(request.parametrization) + " parameters v =";
-        for (double v : r->params) out.note += " " + geom::format_number(v);
+        for (double v : r->params) out.note += " " + geom::format_short(v);
         break;
     }
     case Construction::coons: {
@@ -208,6 +223,8 @@ geom::Expected<ConstructionResult> build_construction(const Document& doc,
                    "the bilinear patch of the corners; it keeps all four boundaries exactly";
         break;
     }
+    case Construction::isocurve: // built by build_isocurve
+        break;
     case Construction::gordon: {
         const int nu = request.gordon_u_count;
         if (nu < 2 || static_cast<int>(n) - nu < 2)
@@ -222,9 +239,9 @@ geom::Expected<ConstructionResult> build_construction(const Document& doc,
         if (!r) return rehome(r.error(), objects, nu);
         surface = std::move(r->surface);
         out.note = "Gordon surface through " + std::to_string(nu) + " u-curves (at v =";
-        for (double v : r->v_params) out.note += " " + geom::format_number(v);
+        for (double v : r->v_params) out.note += " " + geom::format_short(v);
         out.note += ") and " + std::to_string(n - nu) + " v-curves (at u =";
-        for (double u : r->u_params) out.note += " " + geom::format_number(u);
+        for (double u : r->u_params) out.note += " " + geom::format_short(u);
         out.note += ")";
         break;
     }
@@ -236,5 +253,7 @@ geom::Expected<ConstructionResult> build_construction(const Document& doc,
     out.object.shape = SurfaceObject{std::move(surface)};
     return out;
 }
+
+} // namespace
 
 } // namespace isoparm::doc

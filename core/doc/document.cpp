@@ -143,6 +143,8 @@ bool same_implicit(const ImplicitObject& a, const ImplicitObject& b) {
            same_bits(a.hi, b.hi) && same_bits(a.cell, b.cell);
 }
 
+} // namespace
+
 bool same_shape(const Shape& a, const Shape& b) {
     if (kind_of(a) != kind_of(b)) return false;
     switch (kind_of(a)) {
@@ -165,6 +167,8 @@ bool same_shape(const Shape& a, const Shape& b) {
     return false;
 }
 
+namespace {
+
 bool same_colors(const Colors& a, const Colors& b) {
     return same_bits(a.background, b.background) && same_bits(a.surface, b.surface) &&
            same_bits(a.selected_surface, b.selected_surface) &&
@@ -178,7 +182,9 @@ bool same_colors(const Colors& a, const Colors& b) {
 
 bool same_object(const Object& a, const Object& b) {
     return a.id == b.id && a.name == b.name && a.visible == b.visible &&
-           a.patch_group == b.patch_group && same_shape(a.shape, b.shape);
+           a.patch_group == b.patch_group && same_shape(a.shape, b.shape) &&
+           a.construction.has_value() == b.construction.has_value() &&
+           (!a.construction || same_recipe(*a.construction, *b.construction));
 }
 
 bool same_geometry(const Document& a, const Document& b) {
@@ -193,7 +199,17 @@ bool same_view(const ViewState& a, const ViewState& b) {
            same_bits(a.indicator.y, b.indicator.y) &&
            same_bits(a.barycentric[0], b.barycentric[0]) &&
            same_bits(a.barycentric[1], b.barycentric[1]) &&
-           same_bits(a.barycentric[2], b.barycentric[2]) && a.display == b.display;
+           same_bits(a.barycentric[2], b.barycentric[2]) && a.display == b.display &&
+           a.object_display == b.object_display;
+}
+
+ObjectDisplay defaults_of(const DisplaySettings& d) {
+    return {d.control_points, d.control_net, d.point_ids, d.knot_curves};
+}
+
+ObjectDisplay display_of(const ViewState& view, std::uint64_t id) {
+    const auto it = view.object_display.find(id);
+    return it != view.object_display.end() ? it->second : defaults_of(view.display);
 }
 
 bool same_document(const Document& a, const Document& b) {

@@ -2,6 +2,9 @@
 #include "core/doc/placement.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <string>
 
 #include <glm/common.hpp>
 
@@ -47,10 +50,53 @@ std::optional<Box> scene_bounds(const Document& doc) {
     return box;
 }
 
+ImplicitObject translated(const ImplicitObject& f, const glm::dvec3& d) {
+    ImplicitObject out = f;
+    out.lo += d;
+    out.hi += d;
+    // Identifiers are whole words: "exp" keeps its x, a parameter "xa" is not x.
+    const std::string& e = f.expression;
+    std::string r;
+    std::size_t k = 0;
+    auto ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    while (k < e.size()) {
+        if (!ident(e[k])) {
+            r += e[k++];
+            continue;
+        }
+        std::size_t end = k;
+        while (end < e.size() && ident(e[end])) ++end;
+        const std::string word = e.substr(k, end - k);
+        const bool number = std::isdigit(static_cast<unsigned char>(word[0])) != 0;
+        const int axis = word == "x" ? 0 : word == "y" ? 1 : word == "z" ? 2 : -1;
+        if (!number && axis >= 0 && d[axis] != 0)
+            r += "(" + word + (d[axis] > 0 ? " - " : " + ") +
+                 geom::format_number(std::abs(d[axis])) + ")";
+        else
+            r += word;
+        // A number's exponent (1e-3) is one token with its sign: copy it as it is.
+        k = end;
+        if (number && k < e.size() && (e[k] == '-' || e[k] == '+') &&
+            (r.back() == 'e' || r.back() == 'E'))
+            r += e[k++];
+    }
+    out.expression = r;
+    return out;
+}
+
+std::string unique_name(const Document& doc, const std::string& wanted, std::uint64_t except) {
+    auto taken = [&](const std::string& n) {
+        return std::any_of(doc.objects.begin(), doc.objects.end(),
+                           [&](const Object& o) { return o.id != except && o.name == n; });
+    };
+    if (!taken(wanted)) return wanted;
+    for (int n = 2;; ++n) {
+        const std::string name = wanted + " (" + std::to_string(n) + ")";
+        if (!taken(name)) return name;
+    }
+}
+
 void place_beside_scene(const Document& doc, Shape& shape) {
-    // An implicit surface's expression is in absolute coordinates: moving its box alone
-    // would cut the field, so it stays where its formula puts it.
-    if (kind_of(shape) == ObjectKind::implicit) return;
     const std::optional<Box> scene = scene_bounds(doc);
     const std::optional<Box> own = bounds_of(shape);
     if (!scene || !own) return;
@@ -58,6 +104,11 @@ void place_beside_scene(const Document& doc, Shape& shape) {
     const double gap = std::max(0.25 * width, 0.5);
     glm::dvec3 d{scene->hi.x + gap - own->lo.x, 0, 0};
     d.y = 0.5 * (scene->lo.y + scene->hi.y) - 0.5 * (own->lo.y + own->hi.y);
+    // An implicit surface's formula is in absolute coordinates: it moves with its box.
+    if (ImplicitObject* f = implicit_of(shape)) {
+        *f = translated(*f, d);
+        return;
+    }
     translate(shape, d);
 }
 

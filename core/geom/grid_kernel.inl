@@ -38,11 +38,25 @@ inline void madd(vd& acc, const vd& a, const vd& b) {
     acc += a * b;
 #endif
 }
+// a in every lane (vd{} + a would add +0.0 first: an addition before each broadcast).
+inline vd splat(double a) {
+#if defined(__AVX512F__) && ISOPARM_KERNEL_LANES == 8
+    return (vd)_mm512_set1_pd(a);
+#elif defined(__AVX__) && ISOPARM_KERNEL_LANES == 4
+    return (vd)_mm256_set1_pd(a);
+#elif defined(__SSE2__) && ISOPARM_KERNEL_LANES == 2
+    return (vd)_mm_set1_pd(a);
+#else
+    vd v;
+    for (int l = 0; l < W; ++l) v[l] = a;
+    return v;
+#endif
+}
 inline void madd(vd& acc, double a, const vd& b) {
-    madd(acc, vd{} + a, b);
+    madd(acc, splat(a), b);
 }
 inline void madd(vd& acc, const vd& a, double b) {
-    madd(acc, a, vd{} + b);
+    madd(acc, a, splat(b));
 }
 
 // One bit per lane where the mask is set.
@@ -60,16 +74,27 @@ inline int bits(const vm& m) {
 #endif
 }
 
-inline void vsqrt(vd& r, const vd& x) {
+// 1 / w, and the lanes where w is zero (one bit each: the points that do not exist).
+inline int reciprocal(vd& r, const vd& w) {
+    r = 1.0 / w;
+    return bits(w == 0.0);
+}
+
+// 1 / sqrt(x), the normals' length. (AVX-512F's vrsqrt14pd with two Newton steps was measured
+// no faster here, within noise, and would make this path's normals differ from AVX2's in the
+// last bits: the two FMA paths give the same bits, which the protocol recordings rely on.)
+inline void reciprocal_sqrt(vd& r, const vd& x) {
 #if defined(__AVX512F__) && ISOPARM_KERNEL_LANES == 8
     // The masked form: GCC 12 warns about _mm512_sqrt_pd's undefined pass-through operand.
-    r = (vd)_mm512_mask_sqrt_pd((__m512d)x, (__mmask8)0xFF, (__m512d)x);
+    r = 1.0 / (vd)_mm512_mask_sqrt_pd((__m512d)x, (__mmask8)0xFF, (__m512d)x);
 #elif defined(__AVX__) && ISOPARM_KERNEL_LANES == 4
-    r = (vd)_mm256_sqrt_pd((__m256d)x);
+    r = 1.0 / (vd)_mm256_sqrt_pd((__m256d)x);
 #elif defined(__SSE2__) && ISOPARM_KERNEL_LANES == 2
-    r = (vd)_mm_sqrt_pd((__m128d)x);
+    r = 1.0 / (vd)_mm_sqrt_pd((__m128d)x);
 #else
-    for (int l = 0; l < W; ++l) r[l] = __builtin_sqrt(x[l]);
+    vd root;
+    for (int l = 0; l < W; ++l) root[l] = __builtin_sqrt(x[l]);
+    r = 1.0 / root;
 #endif
 }
 
@@ -86,6 +111,39 @@ inline void store_xyz4(double* out, const v4& x, const v4& y, const v4& z) {
     __builtin_memcpy(out + 8, &o2, 32);
 }
 
+#if defined(__AVX512F__) && ISOPARM_KERNEL_LANES == 8
+// How 8 lanes of x, y, z (24 consecutive doubles, starting `offset` doubles into a 64-byte
+// line) fall into the 4 lines they touch: per line, the permute indices of x and y (0-7 x,
+// 8-15 y) and of z, the lanes z fills and the lanes that are the chunk's at all.
+struct StorePlan {
+    alignas(64) long long xy[4][8];
+    alignas(64) long long z[4][8];
+    unsigned char z_lanes[4], lanes[4];
+};
+struct StorePlans {
+    StorePlan p[8];
+};
+constexpr StorePlans make_store_plans() {
+    StorePlans plans{};
+    for (int offset = 0; offset < 8; ++offset)
+        for (int k = 0; k < 4; ++k)
+            for (int l = 0; l < 8; ++l) {
+                const int q = 8 * k + l - offset; // the double's place among the 24
+                if (q < 0 || q >= 24) continue;
+                StorePlan& p = plans.p[offset];
+                p.lanes[k] |= static_cast<unsigned char>(1 << l);
+                if (q % 3 == 2) {
+                    p.z[k][l] = q / 3;
+                    p.z_lanes[k] |= static_cast<unsigned char>(1 << l);
+                } else {
+                    p.xy[k][l] = q / 3 + 8 * (q % 3);
+                }
+            }
+    return plans;
+}
+constexpr StorePlans store_plans = make_store_plans();
+#endif
+
 inline void store_xyz(double* out, const vd& x, const vd& y, const vd& z) {
 #if ISOPARM_KERNEL_LANES == 2
     typedef double v2 __attribute__((vector_size(16)));
@@ -96,6 +154,22 @@ inline void store_xyz(double* out, const vd& x, const vd& y, const vd& z) {
     __builtin_memcpy(out + 4, &o2, 16);
 #elif ISOPARM_KERNEL_LANES == 4
     store_xyz4(out, x, y, z);
+#elif defined(__AVX512F__) && ISOPARM_KERNEL_LANES == 8
+    // Straight into the cache lines the 24 doubles cover: four aligned (masked where a line
+    // is shared with the neighbours) stores of two permutes each (x and y together, then z
+    // into its lanes), by the plan for the address's offset in its line. Unaligned 64-byte
+    // stores would each touch two lines: the output vectors (16 bytes past a line from
+    // malloc) made such split stores the largest cost of this path.
+    const std::uintptr_t at = reinterpret_cast<std::uintptr_t>(out);
+    const StorePlan& plan = store_plans.p[(at >> 3) & 7];
+    double* line = reinterpret_cast<double*>(at & ~std::uintptr_t{63});
+    const __m512d X = (__m512d)x, Y = (__m512d)y, Z = (__m512d)z;
+    for (int k = 0; k < 4; ++k) {
+        const __m512d t = _mm512_permutex2var_pd(X, _mm512_load_si512(plan.xy[k]), Y);
+        const __m512d o =
+            _mm512_mask_permutexvar_pd(t, plan.z_lanes[k], _mm512_load_si512(plan.z[k]), Z);
+        _mm512_mask_store_pd(line + 8 * k, plan.lanes[k], o);
+    }
 #else
     for (int h = 0; h < W; h += 4) {
         v4 a, b, c;
@@ -173,6 +247,7 @@ void contract_v(const GridArgs& g, int a, int ch0, int nch, double* H, int c0, i
         const double* P = H + 4L * (g.f0[ch] - c0);
         vd x = {}, y = {}, z = {}, w = {};
         if (!Rv) {
+#pragma GCC unroll 10
             for (int c = 0; c < nc; ++c) {
                 vd mc;
                 load(mc, m + c * W);
@@ -184,6 +259,7 @@ void contract_v(const GridArgs& g, int a, int ch0, int nch, double* H, int c0, i
         } else {
             const double* dm = g.dM + static_cast<long>(ch) * nc * W;
             vd xv = {}, yv = {}, zv = {}, wv = {};
+#pragma GCC unroll 10
             for (int c = 0; c < nc; ++c) {
                 vd mc, dc;
                 load(mc, m + c * W);
@@ -213,8 +289,27 @@ template <int P1> long row_positions(const GridArgs& g, int i, int ch0, int nch,
     double* out = g.positions + 3L * i * g.samples_v;
     std::uint8_t* st = g.status + static_cast<long>(i - g.i0) * (g.j1 - g.j0 + 1);
     long bad = 0;
-    for (int k = 0; k < nch; ++k) {
+    // The row's u basis in registers (the output stores could alias nu: loads in the loop
+    // would be repeated for every chunk).
+    vd N[P1 > 0 ? P1 : 1];
+    if constexpr (P1 > 0)
+        for (int r = 0; r < P1; ++r) N[r] = splat(nu[r]);
+    const auto finish = [&](int k, const vd& x, const vd& y, const vd& z, const vd& w) {
+        vd inv;
+        const int missing = reciprocal(inv, w);
+        const int j = (ch0 + k) * W;
+        const Lanes L{j, g.j0 > j ? g.j0 - j : 0, g.j1 < j + W - 1 ? g.j1 - j : W - 1};
+        put_xyz(out, L, x * inv, y * inv, z * inv);
+        if (missing == 0 && L.whole()) {
+            __builtin_memset(st + (j - g.j0), 0, W);
+        } else {
+            bad += put_status(st, g.j0, L, missing, 0);
+        }
+    };
+    int k = 0;
+    for (; k < nch; ++k) {
         vd x = {}, y = {}, z = {}, w = {};
+#pragma GCC unroll 8
         for (int r = 0; r < p1; ++r) {
             const double* Rr = R + 4 * r * B + k * W;
             vd a0, a1, a2, a3;
@@ -222,21 +317,13 @@ template <int P1> long row_positions(const GridArgs& g, int i, int ch0, int nch,
             load(a1, Rr + B);
             load(a2, Rr + 2 * B);
             load(a3, Rr + 3 * B);
-            madd(x, nu[r], a0);
-            madd(y, nu[r], a1);
-            madd(z, nu[r], a2);
-            madd(w, nu[r], a3);
+            const vd n = P1 > 0 ? N[r] : splat(nu[r]);
+            madd(x, n, a0);
+            madd(y, n, a1);
+            madd(z, n, a2);
+            madd(w, n, a3);
         }
-        const vd inv = 1.0 / w;
-        const int j = (ch0 + k) * W;
-        const Lanes L{j, g.j0 > j ? g.j0 - j : 0, g.j1 < j + W - 1 ? g.j1 - j : W - 1};
-        put_xyz(out, L, x * inv, y * inv, z * inv);
-        const int missing = bits(w == 0.0);
-        if (missing == 0 && L.whole()) {
-            __builtin_memset(st + (j - g.j0), 0, W);
-        } else {
-            bad += put_status(st, g.j0, L, missing, 0);
-        }
+        finish(k, x, y, z, w);
     }
     return bad;
 }
@@ -254,10 +341,17 @@ long row_normals(const GridArgs& g, int i, int ch0, int nch, const double* R, co
     double* nout = g.normals + 3L * i * g.samples_v;
     std::uint8_t* st = g.status + static_cast<long>(i - g.i0) * (g.j1 - g.j0 + 1);
     long bad = 0;
+    vd N[P1 > 0 ? P1 : 1], dN[P1 > 0 ? P1 : 1];
+    if constexpr (P1 > 0)
+        for (int r = 0; r < P1; ++r) {
+            N[r] = splat(nu[r]);
+            dN[r] = splat(dnu[r]);
+        }
     for (int k = 0; k < nch; ++k) {
         vd x = {}, y = {}, z = {}, w = {};
         vd xu = {}, yu = {}, zu = {}, wu = {};
         vd xv = {}, yv = {}, zv = {}, wv = {};
+#pragma GCC unroll 8
         for (int r = 0; r < p1; ++r) {
             const double* Rr = R + 4 * r * B + k * W;
             const double* Vr = Rv + 4 * r * B + k * W;
@@ -270,7 +364,7 @@ long row_normals(const GridArgs& g, int i, int ch0, int nch, const double* R, co
             load(b1, Vr + B);
             load(b2, Vr + 2 * B);
             load(b3, Vr + 3 * B);
-            const double n = nu[r], dn = dnu[r];
+            const vd n = P1 > 0 ? N[r] : splat(nu[r]), dn = P1 > 0 ? dN[r] : splat(dnu[r]);
             madd(x, n, a0);
             madd(y, n, a1);
             madd(z, n, a2);
@@ -284,7 +378,8 @@ long row_normals(const GridArgs& g, int i, int ch0, int nch, const double* R, co
             madd(zv, n, b2);
             madd(wv, n, b3);
         }
-        const vd inv = 1.0 / w;
+        vd inv;
+        const int missing = reciprocal(inv, w);
         const vd sx = x * inv, sy = y * inv, sz = z * inv;
         const vd ux = (xu - wu * sx) * inv, uy = (yu - wu * sy) * inv, uz = (zu - wu * sz) * inv;
         const vd vx = (xv - wv * sx) * inv, vy = (yv - wv * sy) * inv, vz = (zv - wv * sz) * inv;
@@ -294,14 +389,13 @@ long row_normals(const GridArgs& g, int i, int ch0, int nch, const double* R, co
         const vd big2 = su2 > sv2 ? su2 : sv2;
         // len2 - len2 == 0 is false for infinities and NaN (isfinite without a library call).
         const vm good = (len2 > 1e-20 * big2 * big2) & (len2 - len2 == 0.0);
-        vd root;
-        vsqrt(root, len2);
-        const vd rn = 1.0 / root;
+        vd rn;
+        reciprocal_sqrt(rn, len2);
         const int j = (ch0 + k) * W;
         const Lanes L{j, g.j0 > j ? g.j0 - j : 0, g.j1 < j + W - 1 ? g.j1 - j : W - 1};
         put_xyz(out, L, sx, sy, sz);
         put_xyz(nout, L, nx * rn, ny * rn, nz * rn);
-        const int missing = bits(w == 0.0), degenerate = ~bits(good) & ((1 << W) - 1);
+        const int degenerate = ~bits(good) & ((1 << W) - 1);
         if ((missing | degenerate) == 0 && L.whole()) {
             __builtin_memset(st + (j - g.j0), 0, W);
         } else {

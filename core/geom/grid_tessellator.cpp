@@ -3,6 +3,8 @@
 // (points that do not exist, degenerate normals).
 #include "core/geom/grid_tessellator.hpp"
 
+#include <cstdint>
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -149,10 +151,13 @@ long GridTessellator::evaluate_block(const Surface& s, glm::dvec3* positions, gl
                        nullptr,
                        generic_};
     // Grow-only per thread (the pool's threads persist): no allocation per drag frame.
+    // Aligned to a cache line: the kernel's vector loads of the ring are then never split
+    // across two lines (a 64-byte AVX-512 load from a 16-byte-aligned address always is).
     thread_local std::vector<double> scratch;
-    const size_t need = kernel::scratch_doubles(a, band_.lanes);
+    const size_t need = kernel::scratch_doubles(a, band_.lanes) + 8;
     if (scratch.size() < need) scratch.resize(need);
-    a.scratch = scratch.data();
+    const auto at = reinterpret_cast<std::uintptr_t>(scratch.data());
+    a.scratch = scratch.data() + ((64 - at % 64) % 64) / sizeof(double);
     return kernel::run(path_, a);
 }
 
@@ -207,7 +212,8 @@ void GridTessellator::run_rows(const Surface& s, glm::dvec3* positions, glm::dve
     // at su * j0), and each vertex is computed by the same instructions whichever thread runs
     // its block. Degenerate normals are settled in the task too (pointwise, possibly a whole
     // row of them at a pole); only points that do not exist wait for the serial pass (exists).
-    threads = std::max(threads, 1);
+    // While the pool's contention guard keeps calls on the caller, the caller's blocks.
+    threads = WorkerPool::shared().solo() ? 1 : std::max(threads, 1);
     const int width = block_columns(sv, threads), blocks = (sv + width - 1) / width;
     missing_buffer.assign(blocks, 0);
     long* const missing = missing_buffer.data();

@@ -51,6 +51,21 @@ public:
     // Helper threads started so far.
     int helpers() const;
 
+    // The contention guard. Under competing load two threads can lose badly to one: waking a
+    // helper puts it on a busy core or on the caller's own (whose time it then takes), and a
+    // helper preempted in the middle of a task keeps the caller waiting for a time slice
+    // (measured 2.8 ms instead of 0.1 ms for a 256 x 256 grid at a load of 15 on two cores).
+    // So each call with helpers compares its wall time with the CPU time its threads spent in
+    // the tasks (what one thread running them without interruption would take); where the
+    // wall time was longer by more than an eighth (and 20 us), the next calls run on the caller
+    // alone for solo_start, twice that after a second loss and so on up to solo_max, and then
+    // try the helpers again. A call they win (wall time under 0.8 of the CPU time) halves the
+    // span; one about even keeps it, and the calls after it on the caller too. Where threads
+    // have no CPU clock the guard stays off.
+    static constexpr std::chrono::milliseconds solo_start{50}, solo_max{1600};
+    // Whether calls now run on the caller alone (the guard's last verdict is still on).
+    bool solo() const;
+
     // The task of the h-th handout when `tasks` are shared by `threads`: the tasks are cut into
     // `threads` runs of q = ceil(tasks / threads) and handed out across them, 0, q, 2q, ..., 1,
     // q + 1, 2q + 1, ..., so that each thread works down a run of its own (and takes over the
@@ -67,9 +82,10 @@ private:
         int joined = 0; // guarded by m_
         std::atomic<int> next{0};
         std::exception_ptr error; // guarded by m_
+        double helper_cpu = 0;    // seconds of CPU the helpers spent in tasks, guarded by m_
     };
     void run_impl(int tasks, int threads, void (*call)(void*, int), void* fn);
-    void work(Job& job);
+    int work(Job& job); // returns the tasks this thread ran
     void helper_loop();
 
     std::mutex busy_; // held by the caller whose loop the helpers serve
@@ -83,6 +99,9 @@ private:
     std::atomic<int> active_{0}; // helpers inside job_
     std::atomic<bool> stop_{false};
     int sleepers_ = 0; // helpers blocked on wake_, guarded by m_
+    // The contention guard (guarded by busy_; solo_until_ also read by solo()).
+    std::atomic<std::chrono::steady_clock::rep> solo_until_{0};
+    std::chrono::steady_clock::duration solo_span_{0};
 };
 
 } // namespace isoparm::geom

@@ -8,6 +8,7 @@
 
 #include "core/json/fields.hpp"
 #include "core/json/shapes.hpp"
+#include "core/scene/recipe_json.hpp"
 #include "core/scene/scene_io.hpp"
 
 namespace isoparm::scene {
@@ -59,6 +60,7 @@ public:
         auto r = read_point(*v, path(name), "a position");
         return r ? *r : fail(r.error(), glm::dvec3(0));
     }
+    bool has(std::string_view name) { return find(name) != nullptr; }
     std::optional<glm::dvec3> optional_point(std::string_view name) {
         if (!find(name)) return std::nullopt;
         return point(name);
@@ -277,6 +279,80 @@ json to_json(const MultiresEditSpec& s) {
     return j;
 }
 
+json to_json(const ConstructSpec& s) {
+    json j = {{"construction", recipe_to_json(s.recipe)}};
+    if (!s.name.empty()) j["name"] = s.name;
+    return j;
+}
+json to_json(const EditConstructionSpec& s) {
+    return {{"id", s.id}, {"construction", recipe_to_json(s.recipe)}};
+}
+json to_json(const DetachSpec& s) {
+    return {{"id", s.id}};
+}
+
+json points_to_json(const std::vector<PointIndex>& points) {
+    json out = json::array();
+    for (PointIndex p : points)
+        out.push_back(p.j < 0 ? json::array({p.i}) : json::array({p.i, p.j}));
+    return out;
+}
+
+// [[i, j], ...] (surfaces, triangles) or [[i], ...] (curves).
+Expected<std::vector<PointIndex>> points_from_json(const json& v, const std::string& at) {
+    if (!v.is_array())
+        return schema_error(std::string("points is an array of [i, j] or [i], got ") + type_name(v),
+                            at);
+    std::vector<PointIndex> out;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+        const std::string pat = at + "/" + std::to_string(k);
+        const json& p = v[k];
+        if (!p.is_array() || p.empty() || p.size() > 2)
+            return schema_error("a control point is [i, j] (a surface's or triangle's) or [i] (a "
+                                "curve's)",
+                                pat);
+        PointIndex q;
+        for (std::size_t c = 0; c < p.size(); ++c) {
+            auto x = read_integer(p[c], pat + "/" + std::to_string(c), "a control point index", 0,
+                                  INT_MAX);
+            if (!x) return x.error();
+            (c == 0 ? q.i : q.j) = static_cast<int>(*x);
+        }
+        out.push_back(q);
+    }
+    return out;
+}
+
+Expected<std::vector<glm::dvec3>> positions_from_json(const json& v, const std::string& at) {
+    if (!v.is_array())
+        return schema_error(std::string("positions is an array of [x, y, z], got ") + type_name(v),
+                            at);
+    std::vector<glm::dvec3> out;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+        auto p = read_point(v[k], at + "/" + std::to_string(k), "a position");
+        if (!p) return p.error();
+        out.push_back(*p);
+    }
+    return out;
+}
+
+json to_json(const MovePointsSpec& s) {
+    json positions = json::array();
+    for (const glm::dvec3& p : s.positions) positions.push_back({p.x, p.y, p.z});
+    json j = {
+        {"id", s.id}, {"points", points_to_json(s.points)}, {"positions", std::move(positions)}};
+    if (!s.label.empty()) j["label"] = s.label;
+    return j;
+}
+json to_json(const TransformPointsSpec& s) {
+    json j = {
+        {"id", s.id}, {"points", points_to_json(s.points)}, {"matrix", matrix_to_json(s.matrix)}};
+    if (s.about == Pivot::centroid) j["about"] = "centroid";
+    if (s.about == Pivot::point) j["about"] = {s.pivot.x, s.pivot.y, s.pivot.z};
+    if (!s.label.empty()) j["label"] = s.label;
+    return j;
+}
+
 // The members each command takes besides "command", in CommandSpec's order.
 const std::initializer_list<std::string_view> command_members[] = {
     {"object"},                                        // add_object
@@ -307,7 +383,12 @@ const std::initializer_list<std::string_view> command_members[] = {
     {"objects", "label"},                              // add_objects
     // multires_edit
     {"id", "level", "level_v", "i", "j", "position", "detail_scale"},
-    {"id", "param"}, // split_triangle
+    {"id", "param"},                              // split_triangle
+    {"construction", "name"},                     // construct
+    {"id", "construction"},                       // edit_construction
+    {"id"},                                       // detach
+    {"id", "points", "positions", "label"},       // move_points
+    {"id", "points", "matrix", "about", "label"}, // transform_points
 };
 static_assert(std::size(command_members) == std::size(command_names));
 
@@ -440,7 +521,51 @@ CommandSpec read_spec(std::size_t index, Members& m) {
     case 25:
         return AddObjectsSpec{m.read<std::vector<Object>>("objects", objects_from_json),
                               m.text("label", "")};
-    default: {
+    case 28:
+        return ConstructSpec{m.read<Recipe>("construction", recipe_from_json), m.text("name", "")};
+    case 29: {
+        EditConstructionSpec s;
+        s.id = m.id("id");
+        s.recipe = m.read<Recipe>("construction", recipe_from_json);
+        return s;
+    }
+    case 30:
+        return DetachSpec{m.id("id")};
+    case 31: {
+        MovePointsSpec s;
+        s.id = m.id("id");
+        s.points = m.read<std::vector<PointIndex>>("points", points_from_json);
+        s.positions = m.read<std::vector<glm::dvec3>>("positions", positions_from_json);
+        s.label = m.text("label", "");
+        return s;
+    }
+    case 32: {
+        TransformPointsSpec s;
+        s.id = m.id("id");
+        s.points = m.read<std::vector<PointIndex>>("points", points_from_json);
+        s.matrix = m.read<glm::dmat4>("matrix", matrix_from_json);
+        s.label = m.text("label", "");
+        if (m.has("about")) {
+            const auto about = m.read<std::pair<Pivot, glm::dvec3>>(
+                "about",
+                [](const json& v, const std::string& at) -> Expected<std::pair<Pivot, glm::dvec3>> {
+                    if (v.is_string()) {
+                        if (v.get<std::string>() == "centroid")
+                            return std::pair{Pivot::centroid, glm::dvec3(0)};
+                        return schema_error("about is \"centroid\" or a point [x, y, z], got '" +
+                                                v.get<std::string>() + "'",
+                                            at);
+                    }
+                    auto p = read_point(v, at, "the pivot");
+                    if (!p) return p.error();
+                    return std::pair{Pivot::point, *p};
+                });
+            s.about = about.first;
+            s.pivot = about.second;
+        }
+        return s;
+    }
+    default: { // 24
         ConvertSpec s;
         s.id = m.id("id");
         s.to = m.named<geom::SplineType>("to", "to");

@@ -12,10 +12,12 @@
 #include <variant>
 #include <vector>
 
+#include "core/doc/animated.hpp"
 #include "core/doc/command.hpp"
 #include "core/doc/command_spec.hpp"
 #include "core/doc/document.hpp"
 #include "core/geom/status.hpp"
+#include "core/scene/expect.hpp"
 
 namespace isoparm::scene {
 
@@ -51,6 +53,12 @@ struct BarycentricStep {
 struct DisplayStep {
     nlohmann::json display; // as a scene file's "display"; members not named keep their value
 };
+// One object's own display toggles ({"object_display": {"object": id, "control_points": ...}});
+// members not named keep the object's value.
+struct ObjectDisplayStep {
+    std::uint64_t object = 0;
+    nlohmann::json display;
+};
 struct ContinuityStep {
     doc::Continuity mode = doc::Continuity::off;
 };
@@ -74,35 +82,34 @@ struct CaptionStep {
     std::string text;
 };
 struct PauseStep {};
-// A check on the document (docs/script-format.md: "expect").
-struct ExpectStep {
-    std::optional<std::size_t> objects;
-    std::optional<std::uint64_t> id;
-    std::optional<int> i, j;
-    std::optional<glm::dvec3> position;
-    std::optional<double> weight;
-    geom::Dir direction = geom::Dir::u;
-    std::optional<std::vector<double>> knots;
-    std::optional<int> degree;
-    std::optional<geom::SplineType> type;
-    std::optional<std::uint64_t> group;
-    std::optional<doc::Continuity> borders;
-    double tolerance = 1e-9;
+// An animated parameter (docs/script-format.md, "animate"): a lesson played in the window runs
+// it on its slider; `isoparm script`'s screenshots after it show the value at phase `at` as a
+// preview. It never edits the document. `stop` ends the animation shown.
+struct AnimateStep {
+    doc::AnimationTarget target;
+    double seconds = 4, speed = 1;
+    doc::Repeat repeat = doc::Repeat::bounce;
+    double at = 0; // the phase in [0, 1] the screenshots show
+    bool play = true;
+    bool stop = false;
 };
-
-using StepAction = std::variant<doc::CommandSpec, UndoStep, RedoStep, SelectStep, IndicatorStep,
-                                DisplayStep, ContinuityStep, CameraStep, DeBoorStep, ScreenshotStep,
-                                CaptionStep, PauseStep, ExpectStep, BarycentricStep>;
+using StepAction =
+    std::variant<doc::CommandSpec, UndoStep, RedoStep, SelectStep, IndicatorStep, DisplayStep,
+                 ContinuityStep, CameraStep, DeBoorStep, ScreenshotStep, CaptionStep, PauseStep,
+                 ExpectStep, BarycentricStep, AnimateStep, ObjectDisplayStep>;
 
 struct Step {
     StepAction action;
-    std::string path; // "/steps/12", for every message about this step
+    std::string path;                // "/steps/12", for every message about this step
+    nlohmann::json source = nullptr; // the step as written (the lesson editor writes it back)
 };
 
 struct Script {
     doc::Document start;
     std::string scene_name; // the starting scene's file, "(inline)" or "(default)"
     std::vector<Step> steps;
+    // What the Lessons menu shows: a title and a one-line summary (both optional).
+    std::string title, summary;
 };
 
 // Reads a script: the format and version, the starting scene ("scene": a path relative to
@@ -134,6 +141,7 @@ public:
     std::optional<CameraStep> camera;
     int deboor_step = -1;
     std::string caption;
+    std::optional<AnimateStep> animation; // the last animate step, until a stop
 };
 
 struct ScriptHooks {

@@ -1,9 +1,11 @@
 // The persistent pool: every task runs exactly once, the helpers are started once and reused,
 // nested and concurrent calls run on their caller, an exception reaches the caller, and the
-// handout order keeps threads on runs of their own.
+// handout order keeps threads on runs of their own; a helper that keeps the caller waiting
+// sends the next calls to the caller alone for a while.
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -83,4 +85,38 @@ TEST(WorkerPool, HandoutIsAPermutationAcrossRuns) {
     order.clear();
     for (int h = 0; h < 7; ++h) order.push_back(WorkerPool::handout_task(h, 7, 3));
     EXPECT_EQ(order, (std::vector<int>{0, 3, 6, 1, 4, 2, 5})); // runs 0-2, 3-5, 6
+}
+
+// The contention guard: a call whose wall time exceeds its threads' CPU time in the tasks (a
+// helper that sleeps in its task, as one preempted by another process does) sends the next
+// calls to the caller alone, for WorkerPool::solo_start, after which the helpers are tried
+// again.
+TEST(WorkerPool, ALateHelperSendsTheNextCallsToTheCallerAlone) {
+    using namespace std::chrono_literals;
+    WorkerPool pool;
+    const auto me = std::this_thread::get_id();
+    // The caller's tasks take 1 ms, a helper's 40 ms, asleep. Repeated until a helper took a
+    // task (one that wakes after the caller ran them all need not slow the call).
+    for (int attempt = 0; attempt < 20 && !pool.solo(); ++attempt) {
+        std::atomic<int> theirs{0};
+        pool.run(8, 2, [&](int) {
+            if (std::this_thread::get_id() == me) {
+                std::this_thread::sleep_for(1ms);
+            } else {
+                theirs.fetch_add(1);
+                std::this_thread::sleep_for(40ms);
+            }
+        });
+        if (theirs.load() > 0) {
+            EXPECT_TRUE(pool.solo());
+        }
+    }
+    ASSERT_TRUE(pool.solo());
+    std::atomic<int> elsewhere{0};
+    pool.run(64, 2, [&](int) {
+        if (std::this_thread::get_id() != me) elsewhere.fetch_add(1);
+    });
+    EXPECT_EQ(elsewhere.load(), 0);
+    std::this_thread::sleep_for(WorkerPool::solo_start + 20ms);
+    EXPECT_FALSE(pool.solo());
 }

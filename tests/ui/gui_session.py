@@ -152,6 +152,26 @@ class Session:
             time.sleep(0.25)
         raise Failure(f"timed out waiting for {what}; last report: {json.dumps(self.report())[:2000]}")
 
+    def settle(self, timeout=20):
+        """Waits until two reports at least two frames apart show the same rectangles and
+        font (a new font or mode lays the window out again over a frame or two, and a click
+        aimed at the layout before it misses); returns the later report."""
+        deadline = time.time() + timeout
+        first = None
+        while time.time() < deadline:
+            if not self.alive():
+                raise Failure("the window died while its layout settled")
+            r = self.report()
+            if r and "frame" in r:
+                layout = (r.get("rects"), r.get("font_pixels"), r.get("window"))
+                if first is None or layout != first[1]:
+                    first = (r["frame"], layout)
+                elif r["frame"] >= first[0] + 2:
+                    return r
+            self.xdo("mousemove_relative", "--", 1, 0)  # asks for a frame
+            time.sleep(0.1)
+        raise Failure(f"the layout did not settle in {timeout} s")
+
     def rect(self, name, timeout=20):
         r = self.wait_for(f"'{name}' on screen", lambda r: name in r.get("rects", {}), timeout)
         return r["rects"][name]

@@ -1,20 +1,15 @@
 // Headless rendering: EGL context, Workstation frames into an FBO, read back, PNG.
 #include "ui/headless/headless_render.hpp"
 
-#include <cfloat>
-#include <cstring>
-#include <imgui.h>
 #include <vector>
 
 #include "core/scene/atomic_file.hpp"
 #include "core/scene/scene_io.hpp"
 #include "ui/headless/egl_context.hpp"
-#include "ui/headless/offscreen_target.hpp"
+#include "ui/headless/frame_capture.hpp"
 #include "ui/image/png_writer.hpp"
-#include "ui/render/gl.hpp"
 #include "ui/view/doc_access.hpp"
 #include "ui/view/scene_budget.hpp"
-#include "ui/workstation.hpp"
 
 namespace isoparm::ui {
 
@@ -24,15 +19,17 @@ namespace {
 // and written as a PNG to `output`; needs a current GL context.
 std::string draw_to_png(doc::Document document, const std::string& scene_path,
                         const HeadlessRequest& req, const std::string& output) {
-    std::vector<std::uint8_t> pixels(static_cast<std::size_t>(req.width) * req.height * 4);
+    std::optional<Pixels> picture;
     {
-        OffscreenTarget target(req.width, req.height);
-        if (!target.complete())
-            return "cannot create a " + std::to_string(req.width) + "x" +
-                   std::to_string(req.height) + " framebuffer";
-        Workstation ws({/*headless=*/true, req.scale, req.view, /*msaa_samples=*/4, {}});
-        if (!ws.renderer_error().empty()) return "shaders failed: " + ws.renderer_error();
-        AppContext& ctx = ws.context();
+        CaptureSettings settings;
+        settings.width = req.width;
+        settings.height = req.height;
+        settings.view = req.view;
+        settings.scale = req.scale;
+        settings.transparent = req.transparent;
+        FrameCapture capture(settings);
+        if (!capture.error().empty()) return capture.error();
+        AppContext& ctx = capture.context();
         ctx.doc = std::move(document);
         ctx.file_path = scene_path;
         normalize_selection(ctx.doc);
@@ -41,32 +38,12 @@ std::string draw_to_png(doc::Document document, const std::string& scene_path,
             // Options that do not fit the scene stop here: no PNG is written.
             if (std::string problem = req.configure(ctx); !problem.empty()) return problem;
         }
-
-        ImGuiIO& io = ImGui::GetIO();
-        io.DisplaySize = ImVec2(static_cast<float>(req.width), static_cast<float>(req.height));
-        io.DisplayFramebufferScale = ImVec2(1, 1);
-        io.DeltaTime = 1.0f / 60.0f;
-        io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
-        // Two frames: the first settles layout-dependent sizes (menu bar, tables, camera fit).
-        for (int f = 0; f < 2; ++f) ws.frame(target.fbo());
+        std::string error;
+        picture = capture.capture(error);
+        if (!picture) return error;
         if (req.rendered) req.rendered(ctx);
-
-        while (glGetError() != GL_NO_ERROR) {
-        } // only the read-back's own errors count below
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, target.fbo());
-        glPixelStorei(GL_PACK_ALIGNMENT, 1);
-        glReadPixels(0, 0, req.width, req.height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        if (glGetError() != GL_NO_ERROR) return "reading the picture back failed";
     }
-    // OpenGL's first row is the bottom: flip, and make the picture opaque.
-    const std::size_t row = static_cast<std::size_t>(req.width) * 4;
-    std::vector<std::uint8_t> flipped(pixels.size());
-    for (int y = 0; y < req.height; ++y)
-        std::memcpy(&flipped[static_cast<std::size_t>(y) * row],
-                    &pixels[static_cast<std::size_t>(req.height - 1 - y) * row], row);
-    for (std::size_t k = 3; k < flipped.size(); k += 4) flipped[k] = 255;
-    return write_png(output, req.width, req.height, flipped);
+    return write_png(output, picture->width, picture->height, picture->rgba);
 }
 
 } // namespace

@@ -15,7 +15,8 @@ struct HeadlessRequest {
     std::string output;     // PNG path
     int width = 1280, height = 800;
     ViewMode view = ViewMode::workstation;
-    float scale = 1; // UI scale (fonts, lines)
+    float scale = 1;          // UI scale (fonts, lines)
+    bool transparent = false; // background left transparent (alpha 0)
     // Adjusts the state after loading and before rendering (selection, indicator, camera,
     // display toggles...); the render command's options go through here. Returns "" or the
     // reason the options do not fit the scene (then nothing is rendered).

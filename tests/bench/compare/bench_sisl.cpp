@@ -1,5 +1,7 @@
-// isoparm against SISL (the SINTEF Spline Library), on the same surfaces in one run: grid
-// positions, grid positions + normals, single points, knot insertion and degree elevation.
+// isoparm against SISL (the SINTEF Spline Library) and OpenCASCADE (where found: its
+// span-cached GeomAdaptor_Surface point by point, occt_grid.cpp), on the same surfaces in one
+// run: grid positions, grid positions + normals, single points, knot insertion and degree
+// elevation.
 // Prints points per second for both, the ratio, the largest difference between their points,
 // and the machine's ceiling for the grid case (the vector FMA peak in flops / flops per point
 // of isoparm's scheme), per kernel path (every one this CPU runs) and for one and two threads;
@@ -16,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -25,6 +28,9 @@
 #include "core/geom/refine.hpp"
 #include "core/geom/worker_pool.hpp"
 #include "tests/bench/compare/peak_fma.hpp"
+#ifdef ISOPARM_BENCH_OCCT
+#include "tests/bench/compare/occt_grid.hpp"
+#endif
 #include "tests/support/random_geometry.hpp"
 
 using namespace isoparm::geom;
@@ -182,6 +188,37 @@ void BM_GridNormals_sisl_grid(benchmark::State& state) {
     }
     set_rate(state, grid * grid);
 }
+
+#ifdef ISOPARM_BENCH_OCCT
+const isoparm::bench::OcctGrid& occt_for(int n) {
+    static std::map<int, std::unique_ptr<isoparm::bench::OcctGrid>> cache;
+    auto& g = cache[n];
+    if (!g) g = std::make_unique<isoparm::bench::OcctGrid>(pair_for(n).ours);
+    return *g;
+}
+
+void BM_GridPositions_occt(benchmark::State& state) {
+    const auto& g = occt_for(static_cast<int>(state.range(0)));
+    std::vector<double> out(3 * grid * grid);
+    for (auto _ : state) {
+        g.positions(grid_params(), out.data());
+        benchmark::DoNotOptimize(out.data());
+    }
+    set_rate(state, grid * grid);
+}
+BENCHMARK(BM_GridPositions_occt)->Arg(8)->Arg(32)->Arg(128)->Unit(benchmark::kMillisecond);
+
+void BM_GridNormals_occt(benchmark::State& state) {
+    const auto& g = occt_for(static_cast<int>(state.range(0)));
+    std::vector<double> pos(3 * grid * grid), nrm(3 * grid * grid);
+    for (auto _ : state) {
+        g.normals(grid_params(), pos.data(), nrm.data());
+        benchmark::DoNotOptimize(nrm.data());
+    }
+    set_rate(state, grid * grid);
+}
+BENCHMARK(BM_GridNormals_occt)->Arg(8)->Arg(32)->Arg(128)->Unit(benchmark::kMillisecond);
+#endif
 
 // --- one against two threads, interleaved -------------------------------------------------
 
@@ -421,6 +458,20 @@ void print_agreement(int n) {
     std::printf(
         "  %3dx%-3d  max |point difference| %.3g (net size %.3g), max |normal difference| %.3g\n",
         n, n, dp, scale, dn);
+#ifdef ISOPARM_BENCH_OCCT
+    std::vector<double> op(3 * grid * grid), on(3 * grid * grid);
+    occt_for(n).normals(u, op.data(), on.data());
+    double ep = 0, en = 0;
+    for (int k = 0; k < grid * grid; ++k) {
+        ep =
+            std::max(ep, glm::length(pos[k] - glm::dvec3(op[3 * k], op[3 * k + 1], op[3 * k + 2])));
+        en =
+            std::max(en, glm::length(nrm[k] - glm::dvec3(on[3 * k], on[3 * k + 1], on[3 * k + 2])));
+    }
+    std::printf("  %3dx%-3d  against OCCT: max |point difference| %.3g, max |normal difference| "
+                "%.3g\n",
+                n, n, ep, en);
+#endif
 }
 
 } // namespace
@@ -459,11 +510,11 @@ int main(int argc, char** argv) {
     std::printf("\nSummary (medians; points per second = %d x %d grid points / time per grid; "
                 "kernel chosen here: %s)\n",
                 grid, grid, kernel::name(kernel::active_path()));
-    std::printf("  %-9s %-10s %-14s %11s %11s %11s %8s %8s %10s\n", "net", "case", "path/threads",
-                "isoparm", "SISL s1506", "SISL point", "vs 1506", "vs point", "of peak");
+    std::printf("  %-9s %-10s %-14s %11s %11s %11s %11s %8s %8s %8s %9s %8s\n", "net", "case",
+                "path/threads", "isoparm", "SISL s1506", "SISL point", "OCCT", "vs 1506",
+                "vs point", "vs OCCT", "flops/pt", "of peak");
     for (int n : {8, 32, 128}) {
         const Surface& s = pair_for(n).ours;
-        const GridTessellator tess(s, grid, grid);
         for (const char* kind : {"Positions", "Normals"}) {
             const bool normals = kind[0] == 'N';
             const std::string suffix = "/" + std::to_string(n);
@@ -471,14 +522,9 @@ int main(int argc, char** argv) {
                 grid * grid * rate("BM_Grid" + std::string(kind) + "_sisl_grid" + suffix);
             const double point =
                 grid * grid * rate("BM_Grid" + std::string(kind) + "_sisl_pointwise" + suffix);
-            // Flops per point of this scheme (grid_kernel.hpp): step 2 is 4 (p + 1) multiply-adds
-            // per homogeneous value (3 values with derivatives); step 1, nc per value for each
-            // of n control rows, is shared by the grid's rows; then the quotient (4 flops) or
-            // the quotient rule, cross product and normalization (about 54 flops).
-            const int p = s.degree_u, nc = tess.band_columns();
-            const double fma =
-                (normals ? 12.0 : 4.0) * (p + 1) + (normals ? 8.0 : 4.0) * nc * s.n_u / grid;
-            const double flops = 2 * fma + (normals ? 54 : 4);
+            const double occt =
+                grid * grid * rate("BM_Grid" + std::string(kind) + "_occt" + suffix);
+            const auto ratio = [](double a, double b) { return b > 0 ? a / b : 0.0; };
             for (kernel::Path path : paths) {
                 if (!kernel::supported(path)) {
                     std::printf("  %3dx%-5d %-10s %-14s %11s\n", n, n, kind,
@@ -486,21 +532,30 @@ int main(int argc, char** argv) {
                                 "not measurable here");
                     continue;
                 }
+                // Flops per point of this scheme (grid_kernel.hpp), an FMA counted as two as in
+                // the peak: step 2 is 4 (p + 1) multiply-adds per homogeneous value (3 values
+                // with derivatives); step 1, nc per value (nc: the path's band width) for each
+                // of n control rows, is shared by the grid's rows; then the quotient (4 flops)
+                // or the quotient rule, cross product and normalization (about 54 flops).
+                GridTessellator tess(s, grid, grid);
+                tess.use_kernel(path);
+                const int p = s.degree_u, nc = tess.band_columns();
+                const double fma =
+                    (normals ? 12.0 : 4.0) * (p + 1) + (normals ? 8.0 : 4.0) * nc * s.n_u / grid;
+                const double flops = 2 * fma + (normals ? 54 : 4);
                 for (int threads : {1, 2}) {
                     const double ours = grid * grid * rate(grid_name(kind, n, path, threads));
                     if (ours == 0) continue;
                     const double peak = (path == kernel::Path::avx512 ? peak8 : peak4) * threads;
                     std::printf(
-                        "  %3dx%-5d %-10s %-14s %11.4g %11.4g %11.4g %7.1fx %7.1fx %9.1f%%\n", n, n,
-                        kind,
+                        "  %3dx%-5d %-10s %-14s %11.4g %11.4g %11.4g %11.4g %7.1fx %7.1fx "
+                        "%7.1fx %9.0f %7.1f%%\n",
+                        n, n, kind,
                         (std::string(kernel::name(path)) + "/" + std::to_string(threads)).c_str(),
-                        ours, s1506, point, s1506 > 0 ? ours / s1506 : 0,
-                        point > 0 ? ours / point : 0, peak > 0 ? 100 * ours * flops / peak : 0);
+                        ours, s1506, point, occt, ratio(ours, s1506), ratio(ours, point),
+                        ratio(ours, occt), flops, peak > 0 ? 100 * ours * flops / peak : 0);
                 }
             }
-            std::printf("  %3dx%-5d %-10s %.0f flops/point (band %d, p %d): roofline %.4g pts/s "
-                        "(AVX2 peak, one core)\n",
-                        n, n, kind, flops, nc, p, peak4 / flops);
         }
     }
     const double sp_ours = rate("BM_SinglePoint_isoparm"), sp_sisl = rate("BM_SinglePoint_sisl");
@@ -535,7 +590,7 @@ int main(int argc, char** argv) {
                             collector.counters[key + "speedup_asleep"],
                             collector.counters[key + "speedup_spinning"]);
             }
-    std::printf("\nAgreement with SISL (same parameters, s1421 point by point):\n");
+    std::printf("\nAgreement with SISL (same parameters, s1421 point by point) and OCCT:\n");
     for (int n : {8, 32, 128}) print_agreement(n);
     benchmark::Shutdown();
     return 0;
