@@ -70,7 +70,6 @@ int run_unguarded(const ExportCommandOptions& o) {
     return 0;
 }
 
-
 // Out of memory is an error, never an abort: a reserve of address space is released on the
 // first failed allocation so the unwinding finds memory (core/json/out_of_memory.hpp).
 int run(const ExportCommandOptions& o) {

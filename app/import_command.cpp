@@ -8,8 +8,8 @@
 #include <string>
 
 #include "app/commands.hpp"
-#include "core/json/out_of_memory.hpp"
 #include "core/doc/commands.hpp"
+#include "core/json/out_of_memory.hpp"
 #include "core/scene/atomic_file.hpp"
 #include "core/scene/export_document.hpp"
 #include "core/scene/import_document.hpp"
@@ -50,7 +50,9 @@ int run_unguarded(const ImportCommandOptions& o) {
     // a thousand faces at the default density would need gigabytes, so the density is lowered
     // until it fits (or, where nothing fits, nothing is written).
     const int density = ui::display_density_that_fits(document);
-    if (density == 0) return fail(ui::scene_over_budget(document));
+    if (density == 0)
+        return fail("'" + o.input + "': " + ui::scene_over_budget(document, 2, {}) +
+                    " (at display density 2)");
     if (density < document.view.display.density) {
         std::cerr << "isoparm import: display density " << document.view.display.density
                   << " lowered to " << density << " so that the " << document.objects.size()
@@ -65,7 +67,6 @@ int run_unguarded(const ImportCommandOptions& o) {
     }
     return 0;
 }
-
 
 // Out of memory is an error, never an abort: a reserve of address space is released on the
 // first failed allocation so the unwinding finds memory (core/json/out_of_memory.hpp).

@@ -143,7 +143,8 @@ int run(const ScriptOptions& o) {
             if (ec) return "cannot create the folder '" + o.out + "': " + ec.message();
             // Under `ulimit -v` the driver crashes when its malloc fails: refused first, as
             // `isoparm render` does.
-            if (std::string short_of = ui::memory_limit_problem(state.doc, ui::display_driver_bytes);
+            if (std::string short_of =
+                    ui::memory_limit_problem(state.doc, ui::display_driver_bytes);
                 !short_of.empty())
                 return short_of;
             session = ui::HeadlessSession::create(session_error);

@@ -3,8 +3,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <glm/vec4.hpp>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>

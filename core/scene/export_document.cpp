@@ -85,10 +85,11 @@ geom::Status check_mesh_budget(const std::vector<const doc::Object*>& objects,
     const double per_surface = std::floor(std::sqrt(max_export_bytes / bytes * n * n));
     return geom::make_error_nopath(
         geom::ErrorCode::limit,
-        geom::with_thousands(vertices) + " vertices (" + std::to_string(options.samples) +
-            " x " + std::to_string(options.samples) + " samples of each surface) would take about " +
-            geom::with_thousands(bytes / (1 << 20)) + " MiB as " + export_format_label(options.format) +
-            ", more than the " + geom::with_thousands(max_export_bytes / (1 << 20)) +
+        geom::with_thousands(vertices) + " vertices (" + std::to_string(options.samples) + " x " +
+            std::to_string(options.samples) + " samples of each surface) would take about " +
+            geom::with_thousands(bytes / (1 << 20)) + " MiB as " +
+            export_format_label(options.format) + ", more than the " +
+            geom::with_thousands(max_export_bytes / (1 << 20)) +
             " MiB an export may use; at most " + geom::with_thousands(per_surface) +
             " samples per direction fit, or export fewer objects");
 }

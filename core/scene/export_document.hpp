@@ -59,8 +59,9 @@ struct ExportResult {
 // control point and suggesting a mesh format). Mesh formats take surfaces, tessellated
 // samples x samples over their domain, and implicit surfaces, polygonized with their own box
 // and cell; a curve is skipped. The vertices are charged first (`limit` when they would take
-// more than max_export_bytes, saying how many samples fit). Every mesh is welded (core/exchange/mesh_weld.hpp), so closed
-// surfaces give closed meshes. Nothing left to write is an error (`schema`) that says why.
+// more than max_export_bytes, saying how many samples fit). Every mesh is welded
+// (core/exchange/mesh_weld.hpp), so closed surfaces give closed meshes. Nothing left to write is an
+// error (`schema`) that says why.
 geom::Expected<ExportResult> export_document(const std::vector<const doc::Object*>& objects,
                                              const ExportOptions& options);
 
