@@ -108,7 +108,10 @@ class Session:
                 self.window = out[0]
                 self.update_geometry()
                 self.xdo("windowfocus", "--sync", self.window)
-                time.sleep(1)
+                time.sleep(0.2)
+                # The first frames lay the window out; input waits for a layout that holds.
+                with contextlib.suppress(Failure):
+                    self.settle(timeout=10)
                 return True
             time.sleep(0.3)
         return False
@@ -241,13 +244,18 @@ class Session:
         if not self.alive():
             return self.proc.returncode
         self.key("ctrl+q")
-        try:
-            return self.proc.wait(timeout=3)
-        except subprocess.TimeoutExpired:
-            pass
-        # Unsaved changes: the window asks first; a scenario's changes are not kept.
-        discard = self.report().get("rects", {}).get("unsaved/discard")
+        # The window closes, or (unsaved changes) asks first: a scenario's changes are not kept.
+        deadline = time.time() + 3
+        discard = None
+        while time.time() < deadline and self.alive():
+            discard = self.report().get("rects", {}).get("unsaved/discard")
+            if discard:
+                break
+            time.sleep(0.1)
         if discard:
+            # A new popup is sized over its first frames: click where it comes to rest.
+            with contextlib.suppress(Failure):
+                discard = self.settle(timeout=5)["rects"].get("unsaved/discard", discard)
             self.click_rect(discard)
         try:
             return self.proc.wait(timeout=15)

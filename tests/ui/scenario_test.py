@@ -361,7 +361,8 @@ def click_lesson(s, name):
     """Clicks a button of the caption box once the box has come to rest (it is placed, measured
     and placed again over a few frames; a click while it moves lands where it was)."""
     s.wait_for("the caption box at rest", lambda r: r.get("lesson", {}).get("settled", True))
-    s.click_named(name)
+    # ... and two frames agree on where it is (a slow frame can report rest before the last move).
+    s.click_rect(s.settle()["rects"][name])
 
 
 def boxes_apart(s, what):
