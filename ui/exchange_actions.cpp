@@ -114,14 +114,15 @@ bool import_objects(AppContext& ctx, const std::string& path, std::string& error
     ctx.seal();
     std::string lowered;
     if (density < ctx.doc.view.display.density) {
-        lowered = "; display density lowered from " + std::to_string(ctx.doc.view.display.density) +
-                  " to " + std::to_string(density);
+        // Said before the path, which the status bar may cut.
+        lowered = " (display density lowered from " + std::to_string(ctx.doc.view.display.density) +
+                  " to " + std::to_string(density) + " to show them)";
         ctx.doc.view.display.density = density;
     }
     ctx.doc.view.selection = {ctx.doc.objects[ctx.doc.objects.size() - count].id, -1, -1};
     fit_view(ctx);
     ctx.ui.status = "Imported " + std::to_string(count) + (count == 1 ? " object" : " objects") +
-                    " from " + path + lowered + skipped_summary(imported->skipped);
+                    lowered + " from " + path + skipped_summary(imported->skipped);
     return true;
 }
 

@@ -69,6 +69,7 @@ void flush_ui_report(const AppContext& ctx) {
     const ImGuiViewport* vp = ImGui::GetMainViewport();
     j["window"] = {vp->Size.x, vp->Size.y};
     j["objects"] = ctx.doc.objects.size();
+    j["density"] = ctx.doc.view.display.density; // the scene's display density
     const doc::Object* sel = ctx.doc.selected();
     j["selected"] = sel ? sel->name : "";
     j["point"] = {ctx.doc.view.selection.i, ctx.doc.view.selection.j};

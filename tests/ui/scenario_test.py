@@ -606,7 +606,8 @@ def type_file_name(s, text):
 def file_export_then_import(s, ctx):
     """File > Export... writes the visible objects as OBJ (an unknown extension keeps the
     dialog open with the reason and writes nothing); File > Import... reads them back, added
-    as one undo step that Ctrl+Z removes whole."""
+    as one undo step that Ctrl+Z removes whole. An import too large to show at the scene's
+    display density lowers the density until it fits; one that fits at none is refused."""
     before = s.report()["objects"]
     s.menu("File", "Export...")
     type_file_name(s, "vase.xyz")
@@ -625,6 +626,30 @@ def file_export_then_import(s, ctx):
     check("import" in r["undo"].lower(), f"the last undo step is {r['undo']!r}, not the import")
     s.key("ctrl+z")
     s.wait_for("one undo removes them all", lambda r: r["objects"] == before)
+    # A file of 100 surfaces of 8 x 8 spans would need about 77 GB to show at density 32: the
+    # import lowers the display density to the largest that fits (12) and says so; one of
+    # 20,000 fits at no density and is refused in the dialog, the scene unchanged.
+    def surfaces_obj(name, count):
+        text = "".join(f"v {i} {j} 0\n" for j in range(9) for i in range(9))
+        text += "cstype bspline\ndeg 1 1\n"
+        surf = ("surf 0 8 0 8 " + " ".join(str(k) for k in range(1, 82)) +
+                "\nparm u 0 0 1 2 3 4 5 6 7 8 8\nparm v 0 0 1 2 3 4 5 6 7 8 8\nend\n")
+        open(os.path.join(s.work, name), "w").write(text + surf * count)
+    surfaces_obj("hundred.obj", 100)
+    surfaces_obj("too-many.obj", 20000)
+    s.menu("File", "Import...")
+    type_file_name(s, "too-many.obj")
+    s.rect("file/error")
+    time.sleep(0.5)
+    ctx.shot(s, "too-many-refused")
+    check(s.report()["objects"] == before, "a refused import changed the scene")
+    s.key("Escape")
+    time.sleep(0.5)
+    s.menu("File", "Import...")
+    type_file_name(s, "hundred.obj")
+    s.wait_for("100 surfaces in at density 12",
+               lambda r: r["objects"] == before + 100 and r["density"] == 12)
+    ctx.shot(s, "density-lowered")
 
 
 def import_survives_files_that_crash_the_reader(s, ctx):
