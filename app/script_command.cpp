@@ -23,6 +23,7 @@
 #include "ui/view/camera.hpp"
 #include "ui/view/current_patch.hpp"
 #include "ui/view/doc_access.hpp"
+#include "ui/view/scene_budget.hpp"
 
 namespace isoparm::app {
 
@@ -140,6 +141,12 @@ int run(const ScriptOptions& o) {
         if (!session) {
             std::filesystem::create_directories(o.out, ec);
             if (ec) return "cannot create the folder '" + o.out + "': " + ec.message();
+            // Under `ulimit -v` the driver crashes when its malloc fails: refused first, as
+            // `isoparm render` does.
+            if (std::string short_of =
+                    ui::memory_limit_problem(state.doc, ui::display_driver_bytes);
+                !short_of.empty())
+                return short_of;
             session = ui::HeadlessSession::create(session_error);
             if (!session) return session_error;
         }

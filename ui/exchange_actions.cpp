@@ -8,6 +8,7 @@
 #include "core/scene/import_document.hpp"
 #include "ui/actions.hpp"
 #include "ui/platform/files.hpp"
+#include "ui/view/scene_budget.hpp"
 
 namespace isoparm::ui {
 
@@ -93,6 +94,16 @@ bool import_objects(AppContext& ctx, const std::string& path, std::string& error
         error = imported.error().message;
         return false;
     }
+    // The scene with the new objects must still be one the window can show: the density is
+    // lowered until it fits, checked before the import is carried out; where nothing fits the
+    // import is refused and the scene is left as it was.
+    const int density = display_density_that_fits(ctx.doc, imported->objects);
+    if (density == 0) {
+        error = "'" + path + "': with its objects " +
+                scene_over_budget(ctx.doc, 2, imported->objects) +
+                " (at display density 2); nothing imported";
+        return false;
+    }
     const std::size_t count = imported->objects.size();
     const std::string label = "Import " + fs::path(path).filename().string();
     ctx.seal();
@@ -101,10 +112,16 @@ bool import_objects(AppContext& ctx, const std::string& path, std::string& error
         return false;
     }
     ctx.seal();
+    std::string lowered;
+    if (density < ctx.doc.view.display.density) {
+        lowered = "; display density lowered from " + std::to_string(ctx.doc.view.display.density) +
+                  " to " + std::to_string(density);
+        ctx.doc.view.display.density = density;
+    }
     ctx.doc.view.selection = {ctx.doc.objects[ctx.doc.objects.size() - count].id, -1, -1};
     fit_view(ctx);
     ctx.ui.status = "Imported " + std::to_string(count) + (count == 1 ? " object" : " objects") +
-                    " from " + path + skipped_summary(imported->skipped);
+                    " from " + path + lowered + skipped_summary(imported->skipped);
     return true;
 }
 

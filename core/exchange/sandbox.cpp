@@ -149,7 +149,7 @@ SandboxRun run_sandboxed(const std::function<void(int fd)>& body, const SandboxL
     using clock = std::chrono::steady_clock;
     const auto deadline =
         clock::now() + std::chrono::milliseconds(static_cast<long long>(limits.wall_seconds * 1e3));
-    bool killed = false;
+    bool killed = false, too_much = false;
     char buffer[1 << 16];
     while (true) {
         const auto left =
@@ -169,6 +169,11 @@ SandboxRun run_sandboxed(const std::function<void(int fd)>& body, const SandboxL
         if (n < 0 && errno == EINTR) continue;
         if (n <= 0) break; // end of the child's output (it ended, or closed it on its way out)
         run.output.append(buffer, static_cast<std::size_t>(n));
+        if (limits.output_bytes > 0 && run.output.size() > limits.output_bytes) {
+            ::kill(pid, SIGKILL);
+            killed = too_much = true;
+            break;
+        }
     }
     ::close(fds[0]);
     int status = 0;
@@ -185,7 +190,9 @@ SandboxRun run_sandboxed(const std::function<void(int fd)>& body, const SandboxL
             ::usleep(1000);
         }
     }
-    if (killed) {
+    if (too_much) {
+        run.ending = SandboxRun::Ending::too_much;
+    } else if (killed) {
         run.ending = SandboxRun::Ending::timed_out;
     } else if (WIFSIGNALED(status)) {
         run.ending = SandboxRun::Ending::signaled;

@@ -2,6 +2,7 @@
 #include "core/scene/script.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <climits>
 #include <cmath>
 #include <filesystem>
@@ -568,9 +569,22 @@ geom::Status run_step(const Step& step, ScriptState& state, const ScriptHooks& h
 }
 
 ScriptResult run_script(const Script& script, ScriptState& state, const ScriptHooks& hooks,
-                        bool dry_run) {
+                        bool dry_run, double trial_seconds) {
     ScriptResult result;
+    using clock = std::chrono::steady_clock;
+    const auto deadline = clock::now() + std::chrono::duration_cast<clock::duration>(
+                                             std::chrono::duration<double>(trial_seconds));
     for (const Step& step : script.steps) {
+        // The trial run does every command's work: a script whose commands take longer than
+        // that stops there, before anything is written.
+        if (dry_run && clock::now() >= deadline) {
+            result.stopped = make_error(ErrorCode::limit,
+                                        "the script's steps up to this one took more than " +
+                                            geom::format_number(trial_seconds) +
+                                            " s to try (the work budget of a script)",
+                                        step.path);
+            break;
+        }
         if (auto st = run_step(step, state, hooks, dry_run, result); !st) {
             result.stopped = st.error();
             break;

@@ -29,6 +29,10 @@ inline constexpr int script_format_version = 1;
 // 1280 x 800), checked when the script is read, before anything runs.
 inline constexpr double max_screenshot_pixels = 4096.0 * 4096.0;
 inline constexpr double max_script_pixels = 3e8;
+// The steps' budget: at most 100,000 steps (checked when the script is read), each command
+// within the protocol's work budget, and the trial run (run_script with dry_run), which does
+// every command's work, stops with `limit` at the step it reaches after this many seconds.
+inline constexpr double max_trial_seconds = 120;
 
 // Why `name` is not a screenshot's file name ("" when it is one): checked byte by byte (a NUL
 // would end the name the system sees early), no separators or control characters, no leading
@@ -159,9 +163,10 @@ struct ScriptResult {
 };
 
 // Runs the steps in order on `state` (which starts as script.start). In a dry run no hook is
-// called: it finds every step that cannot be carried out before anything is written.
+// called: it finds every step that cannot be carried out before anything is written, and the
+// steps that would take more than `trial_seconds` (a dry run only).
 ScriptResult run_script(const Script& script, ScriptState& state, const ScriptHooks& hooks,
-                        bool dry_run = false);
+                        bool dry_run = false, double trial_seconds = max_trial_seconds);
 
 // One step (the runner's and a lesson player's unit). Returns the refusal, with the step's path.
 geom::Status run_step(const Step& step, ScriptState& state, const ScriptHooks& hooks, bool dry_run,

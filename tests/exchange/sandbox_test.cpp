@@ -156,6 +156,21 @@ TEST(Sandbox, SharedMemoryTellsHowFarTheChildGot) {
     EXPECT_EQ(progress->step.load(), 0);
 }
 
+TEST(Sandbox, AChildThatWritesTooMuchIsStopped) {
+    SandboxLimits l = quick();
+    l.output_bytes = 1 << 20;
+    const SandboxRun run = run_sandboxed(
+        [](int fd) {
+            const std::string block(1 << 16, 'x');
+            while (write_to_parent(fd, block)) {
+            }
+        },
+        l);
+    EXPECT_EQ(run.ending, SandboxRun::Ending::too_much);
+    EXPECT_LE(run.output.size(), (1u << 20) + (1u << 16));
+    expect_no_child_left();
+}
+
 TEST(Sandbox, LimitsGrowWithTheInput) {
     const SandboxLimits small = sandbox_limits_for(1000), big = sandbox_limits_for(50'000'000);
     EXPECT_GE(small.cpu_seconds, 10);
