@@ -141,6 +141,32 @@ class Session:
         except (OSError, ValueError):
             return {}
 
+    def nudge(self):
+        """A frame is drawn on input only: a harmless motion inside the window asks for one
+        (one pixel, back and forth, so that the pointer stays where it was put)."""
+        self._nudge = -getattr(self, "_nudge", -1)
+        self.xdo("mousemove_relative", "--", self._nudge, 0)
+
+    def frame(self):
+        return self.report().get("frame")
+
+    def frames_after(self, since, count=3, timeout=5):
+        """Waits until `count` frames have begun after the frame `since`, read after some input
+        was sent: the input queue gives ImGui a press, a release or a key per frame, so three
+        frames have seen a click. A slow frame (ASan, a loaded machine) makes this wait longer,
+        a fast one shorter, where a fixed pause was either too short or wasted. Never fails: a
+        later wait_for names what is missing."""
+        if since is None:
+            time.sleep(0.3)
+            return
+        deadline = time.time() + timeout
+        while time.time() < deadline and self.alive():
+            f = self.frame()
+            if f is not None and f >= since + count:
+                return
+            self.nudge()
+            time.sleep(0.03)
+
     def wait_for(self, what, predicate, timeout=20):
         """Waits until predicate(report) is true; returns the report."""
         deadline = time.time() + timeout
@@ -150,9 +176,8 @@ class Session:
             r = self.report()
             if r and predicate(r):
                 return r
-            # A frame is drawn on input only: a harmless motion inside the window asks for one.
-            self.xdo("mousemove_relative", "--", 1, 0)
-            time.sleep(0.25)
+            self.nudge()
+            time.sleep(0.1)
         raise Failure(f"timed out waiting for {what}; last report: {json.dumps(self.report())[:2000]}")
 
     def settle(self, timeout=20):
@@ -171,7 +196,7 @@ class Session:
                     first = (r["frame"], layout)
                 elif r["frame"] >= first[0] + 2:
                     return r
-            self.xdo("mousemove_relative", "--", 1, 0)  # asks for a frame
+            self.nudge()
             time.sleep(0.1)
         raise Failure(f"the layout did not settle in {timeout} s")
 
@@ -185,18 +210,21 @@ class Session:
     # --- input, in window pixels --------------------------------------------------------------
     def move(self, x, y):
         self.xdo("mousemove", int(self.x0 + x), int(self.y0 + y))
-        time.sleep(0.15)
+        self.frames_after(self.frame(), 2)
 
     def click(self, x, y, button=1, modifiers=()):
         self.move(x, y)
+        # Two clicks closer than ImGui's double-click time (0.30 s) would be a double click.
+        time.sleep(max(0.0, getattr(self, "_pressed_at", 0) + 0.4 - time.time()))
         for m in modifiers:
             self.xdo("keydown", m)
         self.xdo("mousedown", button)
+        self._pressed_at = time.time()
         time.sleep(0.12)
         self.xdo("mouseup", button)
         for m in modifiers:
             self.xdo("keyup", m)
-        time.sleep(0.3)
+        self.frames_after(self.frame())
 
     def click_rect(self, rect, fx=0.5, fy=0.5):
         x, y, w, h = rect
@@ -207,6 +235,7 @@ class Session:
 
     def drag(self, x, y, dx, dy, steps=8):
         self.move(x, y)
+        time.sleep(max(0.0, getattr(self, "_pressed_at", 0) + 0.4 - time.time()))
         self.xdo("mousedown", 1)
         time.sleep(0.15)
         for k in range(1, steps + 1):
@@ -215,11 +244,12 @@ class Session:
             time.sleep(0.06)
         time.sleep(0.15)
         self.xdo("mouseup", 1)
-        time.sleep(0.3)
+        self._pressed_at = time.time()
+        self.frames_after(self.frame())
 
     def key(self, keys):
         self.xdo("key", "--clearmodifiers", keys)
-        time.sleep(0.3)
+        self.frames_after(self.frame())
 
     def menu(self, *path):
         """Opens the menu bar's path[0] and picks path[1] (and so on), as a person does."""

@@ -562,8 +562,21 @@ bool plane_canvases(AppContext& ctx) {
             cols = c;
         }
     }
+    if (const float least = 60 * k; side < least) {
+        // Too little height for planes a person can aim in (a projector's presentation mode):
+        // as many in a row as fit the width at that size, as wide as the row allows, and the
+        // panel scrolls; three of the least size in a row were cut at the panel's edge.
+        cols = 1;
+        for (int c = 3; c > 1; --c) {
+            if (static_cast<float>(c) * least + spacing * static_cast<float>(c - 1) <= avail.x) {
+                cols = c;
+                break;
+            }
+        }
+        side = std::max(least, (avail.x - spacing * static_cast<float>(cols - 1)) /
+                                   static_cast<float>(cols));
+    }
     const int rows = (3 + cols - 1) / cols;
-    side = std::max(side, 60 * k);
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const doc::Object* obj = ctx.doc.selected();
     ControlNet net = obj ? control_net_of(*obj) : ControlNet{};
