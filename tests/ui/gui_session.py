@@ -143,9 +143,9 @@ class Session:
 
     def nudge(self):
         """A frame is drawn on input only: a harmless motion inside the window asks for one
-        (one pixel, back and forth, so that the pointer stays where it was put)."""
-        self._nudge = -getattr(self, "_nudge", -1)
-        self.xdo("mousemove_relative", "--", self._nudge, 0)
+        (one pixel there and back, so that the pointer ends where it was put: a drag or a
+        click after a wait starts on its pixel)."""
+        self.xdo("mousemove_relative", "--", 1, 0, "mousemove_relative", "--", -1, 0)
 
     def frame(self):
         return self.report().get("frame")

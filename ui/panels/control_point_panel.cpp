@@ -562,20 +562,11 @@ bool plane_canvases(AppContext& ctx) {
             cols = c;
         }
     }
-    if (const float least = 60 * k; side < least) {
-        // Too little height for planes a person can aim in (a projector's presentation mode):
-        // as many in a row as fit the width at that size, as wide as the row allows, and the
-        // panel scrolls; three of the least size in a row were cut at the panel's edge.
-        cols = 1;
-        for (int c = 3; c > 1; --c) {
-            if (static_cast<float>(c) * least + spacing * static_cast<float>(c - 1) <= avail.x) {
-                cols = c;
-                break;
-            }
-        }
-        side = std::max(least, (avail.x - spacing * static_cast<float>(cols - 1)) /
-                                   static_cast<float>(cols));
-    }
+    // Planes of at least the least size a person can aim in, but never wider than the column
+    // allows in their row: in presentation mode at 1024x768 three of the least size in a row
+    // were cut at the panel's edge (and more rows would push the fields below the fold).
+    side = std::max(side, std::min(60 * k, (avail.x - spacing * static_cast<float>(cols - 1)) /
+                                               static_cast<float>(cols)));
     const int rows = (3 + cols - 1) / cols;
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const doc::Object* obj = ctx.doc.selected();
