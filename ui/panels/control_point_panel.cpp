@@ -565,8 +565,11 @@ bool plane_canvases(AppContext& ctx) {
     // Planes of at least the least size a person can aim in, but never wider than the column
     // allows in their row: in presentation mode at 1024x768 three of the least size in a row
     // were cut at the panel's edge (and more rows would push the fields below the fold).
-    side = std::max(side, std::min(60 * k, (avail.x - spacing * static_cast<float>(cols - 1)) /
-                                               static_cast<float>(cols)));
+    const float row_fits =
+        (avail.x - spacing * static_cast<float>(cols - 1)) / static_cast<float>(cols);
+    // A pixel at least: a headless picture can give the column no width at all (ImGui asserts
+    // on a button of no size).
+    side = std::max({side, std::min(60 * k, row_fits), 1.0f});
     const int rows = (3 + cols - 1) / cols;
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const doc::Object* obj = ctx.doc.selected();
