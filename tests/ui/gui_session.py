@@ -212,10 +212,13 @@ class Session:
         self.xdo("mousemove", int(self.x0 + x), int(self.y0 + y))
         self.frames_after(self.frame(), 2)
 
+    def after_last_press(self):
+        """Presses closer than ImGui's double-click time (0.30 s) would make a double click."""
+        time.sleep(max(0.0, getattr(self, "_pressed_at", 0) + 0.4 - time.time()))
+
     def click(self, x, y, button=1, modifiers=()):
         self.move(x, y)
-        # Two clicks closer than ImGui's double-click time (0.30 s) would be a double click.
-        time.sleep(max(0.0, getattr(self, "_pressed_at", 0) + 0.4 - time.time()))
+        self.after_last_press()
         for m in modifiers:
             self.xdo("keydown", m)
         self.xdo("mousedown", button)
@@ -235,7 +238,7 @@ class Session:
 
     def drag(self, x, y, dx, dy, steps=8):
         self.move(x, y)
-        time.sleep(max(0.0, getattr(self, "_pressed_at", 0) + 0.4 - time.time()))
+        self.after_last_press()
         self.xdo("mousedown", 1)
         time.sleep(0.15)
         for k in range(1, steps + 1):
