@@ -8,6 +8,7 @@
 #include <string>
 
 #include "app/commands.hpp"
+#include "core/json/out_of_memory.hpp"
 #include "core/scene/atomic_file.hpp"
 #include "core/scene/export_document.hpp"
 #include "core/scene/scene_io.hpp"
@@ -18,7 +19,7 @@ namespace {
 
 struct ExportCommandOptions {
     std::string scene, output, object;
-    int samples = 32;
+    long long samples = 32; // wide: any number typed meets the 2..1000 rule, not a conversion
     bool mesh = false;
 };
 
@@ -30,7 +31,7 @@ std::string stem(const std::string& path) {
     return dot == std::string::npos || dot == 0 ? name : name.substr(0, dot);
 }
 
-int run(const ExportCommandOptions& o) {
+int run_unguarded(const ExportCommandOptions& o) {
     auto fail = [](const std::string& message) {
         std::cerr << "isoparm export: " << message << "; nothing written\n";
         return 2;
@@ -53,7 +54,10 @@ int run(const ExportCommandOptions& o) {
     if (!objects) return fail(objects.error().message);
     scene::ExportOptions options;
     options.format = *format;
-    options.samples = o.samples;
+    if (o.samples < 2 || o.samples > 1000)
+        return fail("--samples " + std::to_string(o.samples) +
+                    " must be 2..1000 (points per direction of a surface's tessellation)");
+    options.samples = static_cast<int>(o.samples);
     options.name = stem(o.scene);
     const auto result = scene::export_document(*objects, options);
     if (!result) return fail(result.error().message);
@@ -64,6 +68,19 @@ int run(const ExportCommandOptions& o) {
         return 1;
     }
     return 0;
+}
+
+// Out of memory is an error, never an abort: a reserve of address space is released on the
+// first failed allocation so the unwinding finds memory (core/json/out_of_memory.hpp).
+int run(const ExportCommandOptions& o) {
+    json_io::arm_memory_reserve();
+    try {
+        return run_unguarded(o);
+    } catch (const std::bad_alloc&) {
+        std::cerr << "isoparm export: " << json_io::out_of_memory_message << " (exporting '"
+                  << o.scene << "'); nothing written\n";
+        return 1;
+    }
 }
 
 } // namespace

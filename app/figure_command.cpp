@@ -27,6 +27,7 @@ struct FigureCommandOptions {
     double font_size = 9, t = 0.4, scale = 2;
     int level = -1;
     bool no_comb = false, no_frenet = false, transparent = false, no_raster = false;
+    bool from_panel = false;
     ViewOptions view_options;
 };
 
@@ -98,7 +99,23 @@ int run(const FigureCommandOptions& o) {
         drawing = ui::capture_view3d_figure(ctx, fo, o.scale, !o.no_raster);
     } else {
         const auto view = geom::parse_name<ui::FigureView>(o.view);
-        drawing = ui::make_figure(ctx.doc, *view, fo);
+        if (o.from_panel) {
+            // The panel's own Picture, from a headless frame of the workstation.
+            std::string error;
+            const std::unique_ptr<ui::EglContext> egl = ui::EglContext::create(error);
+            if (!egl) {
+                std::cerr << name << "no headless OpenGL: " << error << "\n";
+                return 1;
+            }
+            auto panel = ui::capture_panel_figure(ctx, *view, 1280, 800, 1, error);
+            if (!panel) {
+                std::cerr << name << error << "\n";
+                return 2;
+            }
+            drawing = std::move(*panel);
+        } else {
+            drawing = ui::make_figure(ctx.doc, *view, fo);
+        }
     }
     if (!drawing) {
         std::cerr << name << drawing.error().message << "\n";
@@ -142,6 +159,9 @@ Action register_figure_command(CLI::App& app) {
                     "PNG pixels per point, and the 3D raster's resolution (1..4, default 2)")
         ->check(CLI::Range(1.0, 4.0));
     sub->add_flag("--transparent", o->transparent, "no background");
+    sub->add_flag("--from-panel", o->from_panel,
+                  "the 2D view as its panel draws it in the window (its Picture), not the figure "
+                  "in print colours");
     sub->add_flag("--no-raster", o->no_raster,
                   "3d: the lines alone, without the shaded surfaces' raster under them");
     add_view_options(sub, o->view_options);

@@ -9,10 +9,12 @@
 
 #include "app/commands.hpp"
 #include "core/doc/commands.hpp"
+#include "core/json/out_of_memory.hpp"
 #include "core/scene/atomic_file.hpp"
 #include "core/scene/export_document.hpp"
 #include "core/scene/import_document.hpp"
 #include "core/scene/scene_io.hpp"
+#include "ui/view/scene_budget.hpp"
 
 namespace isoparm::app {
 
@@ -22,7 +24,7 @@ struct ImportCommandOptions {
     std::string input, output;
 };
 
-int run(const ImportCommandOptions& o) {
+int run_unguarded(const ImportCommandOptions& o) {
     auto fail = [](const std::string& message) {
         std::cerr << "isoparm import: " << message << "; nothing written\n";
         return 2;
@@ -44,6 +46,19 @@ int run(const ImportCommandOptions& o) {
     for (doc::Object& object : imported->objects)
         if (geom::Status st = doc::add_object(std::move(object))->apply(document); !st)
             return fail(st.error().message); // import_file checked them: not expected
+    // The scene written must be one the workstation and `isoparm render` can show: a part of
+    // a thousand faces at the default density would need gigabytes, so the density is lowered
+    // until it fits (or, where nothing fits, nothing is written).
+    const int density = ui::display_density_that_fits(document);
+    if (density == 0)
+        return fail("'" + o.input + "': " + ui::scene_over_budget(document, 2, {}) +
+                    " (at display density 2)");
+    if (density < document.view.display.density) {
+        std::cerr << "isoparm import: display density " << document.view.display.density
+                  << " lowered to " << density << " so that the " << document.objects.size()
+                  << " objects can be shown\n";
+        document.view.display.density = density;
+    }
     for (const std::string& s : imported->skipped)
         std::cerr << "isoparm import: skipped " << s << "\n";
     if (geom::Status st = scene::save_scene(document, o.output); !st) {
@@ -51,6 +66,19 @@ int run(const ImportCommandOptions& o) {
         return 1;
     }
     return 0;
+}
+
+// Out of memory is an error, never an abort: a reserve of address space is released on the
+// first failed allocation so the unwinding finds memory (core/json/out_of_memory.hpp).
+int run(const ImportCommandOptions& o) {
+    json_io::arm_memory_reserve();
+    try {
+        return run_unguarded(o);
+    } catch (const std::bad_alloc&) {
+        std::cerr << "isoparm import: " << json_io::out_of_memory_message << " (importing '"
+                  << o.input << "'); nothing written\n";
+        return 1;
+    }
 }
 
 } // namespace

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "core/doc/animated.hpp"
 #include "core/json/out_of_memory.hpp"
 #include "core/scene/atomic_file.hpp"
 #include "core/scene/scene_io.hpp"
@@ -22,6 +23,7 @@
 #include "ui/view/camera.hpp"
 #include "ui/view/current_patch.hpp"
 #include "ui/view/doc_access.hpp"
+#include "ui/view/scene_budget.hpp"
 
 namespace isoparm::app {
 
@@ -72,6 +74,8 @@ std::string configure_shot(const scene::ScriptState& state, const std::tuple<int
         if (state.camera->zoom_percent) ctx.ui.zoom_after_fit = *state.camera->zoom_percent / 100.0;
     }
     ctx.ui.deboor.step = state.deboor_step;
+    if (state.animation && state.animation->target.kind == doc::AnimatedKind::deboor_step)
+        ctx.ui.deboor.step = doc::step_at(state.animation->target, state.animation->at);
     const doc::Object* current = nullptr;
     if (ui::current_surface(ctx.doc, &current)) ui::follow_indicator(ctx.doc, current->id);
     return "";
@@ -95,9 +99,25 @@ int run(const ScriptOptions& o) {
         }
     }
 
+    // The pictures are written to --out and compared with --check: one folder for both would
+    // overwrite every golden image with the picture it is then compared with (a match, always).
+    if (!o.check.empty()) {
+        std::error_code same_ec;
+        const bool same = std::filesystem::equivalent(o.out, o.check, same_ec) ||
+                          std::filesystem::weakly_canonical(o.out, same_ec) ==
+                              std::filesystem::weakly_canonical(o.check, same_ec);
+        if (same) {
+            std::cerr << name << "--out '" << o.out << "' is the --check folder '" << o.check
+                      << "': the screenshots would replace the golden images they are compared "
+                         "with; give another --out; nothing was written\n";
+            return 2;
+        }
+    }
+
     // Every step is tried first without writing anything: a step that cannot be carried out
     // stops the script before its first screenshot.
-    {
+    json_io::arm_memory_reserve();
+    try {
         scene::ScriptState trial(script.start);
         const scene::ScriptResult dry = scene::run_script(script, trial, {}, /*dry_run=*/true);
         if (dry.stopped) {
@@ -105,6 +125,10 @@ int run(const ScriptOptions& o) {
                       << "; nothing was written\n";
             return 2;
         }
+    } catch (const std::bad_alloc&) {
+        std::cerr << name << json_io::out_of_memory_message << " (trying '" << o.file
+                  << "'); nothing was written\n";
+        return 1;
     }
 
     std::unique_ptr<ui::HeadlessSession> session;
@@ -117,6 +141,12 @@ int run(const ScriptOptions& o) {
         if (!session) {
             std::filesystem::create_directories(o.out, ec);
             if (ec) return "cannot create the folder '" + o.out + "': " + ec.message();
+            // Under `ulimit -v` the driver crashes when its malloc fails: refused first, as
+            // `isoparm render` does.
+            if (std::string short_of =
+                    ui::memory_limit_problem(state.doc, ui::display_driver_bytes);
+                !short_of.empty())
+                return short_of;
             session = ui::HeadlessSession::create(session_error);
             if (!session) return session_error;
         }
@@ -134,7 +164,14 @@ int run(const ScriptOptions& o) {
         req.rendered = [&cameras, key](const ui::AppContext& ctx) {
             cameras.fitted[key] = ctx.ui.camera;
         };
-        return session->render(state.doc, req);
+        if (!state.animation) return session->render(state.doc, req);
+        // An animation's frame: its value at the step's phase, shown on a copy (never an edit).
+        doc::Document shown = state.doc;
+        const doc::AnimationTarget& t = state.animation->target;
+        auto preview = doc::show_preview(shown, t, doc::value_at(t, state.animation->at),
+                                         doc::indicator_at(t, state.animation->at));
+        if (!preview) return preview.error().message;
+        return session->render(shown, req);
     };
     hooks.caption = [](const scene::ScriptState&, const scene::Step& step) {
         std::cout << step.path << ": " << std::get<scene::CaptionStep>(step.action).text << "\n";

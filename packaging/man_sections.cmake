@@ -1,7 +1,7 @@
 # Writes the man page's extra sections (help2man --include): the help of each subcommand, so
 # isoparm(1) covers every subcommand and option. Run with -DISOPARM=<binary> -DOUT=<file>.
 set(text "[SUBCOMMANDS]\n")
-foreach(sub geom render export import examples)
+foreach(sub geom render figure animate export import examples)
   execute_process(COMMAND ${ISOPARM} ${sub} --help OUTPUT_VARIABLE help RESULT_VARIABLE rc)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "isoparm ${sub} --help failed (${rc})")

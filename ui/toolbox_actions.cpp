@@ -9,6 +9,7 @@
 #include "core/doc/commands.hpp"
 #include "core/geom/knots.hpp"
 #include "ui/panels/curve_designer.hpp"
+#include "ui/theme.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/doc_access.hpp"
 
@@ -49,9 +50,7 @@ std::string param_name(geom::Dir dir, bool curve) {
 
 // Four significant digits in a menu; the command gets the knot's exact value.
 std::string where(geom::Dir dir, bool curve, double t) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.4g", t);
-    return param_name(dir, curve) + " = " + buf;
+    return param_name(dir, curve) + " = " + geom::format_short(t);
 }
 
 const char* direction_suffix(geom::Dir dir, bool curve) {
@@ -200,7 +199,7 @@ void draw_convert_dialog(AppContext& ctx) {
     }
     ImGui::Text("Convert '%s' to %s?", o->name.c_str(), geom::label_of(q.to));
     ImGui::Separator();
-    ImGui::TextWrapped("%s", q.text.c_str());
+    text_wrapped("%s", q.text.c_str());
     ImGui::TextDisabled("Edit > Undo takes it back.");
     ImGui::Spacing();
     const bool convert = ImGui::Button("Convert");

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/doc/document.hpp"
+#include "core/doc/point_set.hpp"
 
 namespace isoparm::doc {
 
@@ -194,6 +195,46 @@ struct SplitTriangleSpec {
     geom::Barycentric at{};
 };
 
+// Constructions that stay linked to their inputs (commands_construction.hpp): a new object
+// built by `recipe` (name: empty for the construction's own, "revolve profile"), an existing
+// constructed object's recipe changed (its refinements kept), and a constructed object made
+// free (its recipe dropped, its shape kept).
+struct ConstructSpec {
+    static constexpr const char* script_name = "construct";
+    Recipe recipe;
+    std::string name;
+};
+struct EditConstructionSpec {
+    static constexpr const char* script_name = "edit_construction";
+    std::uint64_t id = 0;
+    Recipe recipe;
+};
+struct DetachSpec {
+    static constexpr const char* script_name = "detach";
+    std::uint64_t id = 0;
+};
+
+// Many control points of one object at once (commands_points.hpp): moved to positions (a
+// drag, a symmetric edit), or mapped by an affine matrix about a pivot (typed values).
+struct MovePointsSpec {
+    static constexpr const char* script_name = "move_points";
+    std::uint64_t id = 0;
+    std::vector<PointIndex> points;
+    std::vector<glm::dvec3> positions; // one per point
+    std::string label;                 // empty: "Move 3 points"
+};
+enum class Pivot { origin, centroid, point };
+struct TransformPointsSpec {
+    static constexpr const char* script_name = "transform_points";
+    std::uint64_t id = 0;
+    std::vector<PointIndex> points;
+    glm::dmat4 matrix{1.0};
+    Pivot about =
+        Pivot::origin; // the matrix acts about the origin, the points' centroid or `pivot`
+    glm::dvec3 pivot{0};
+    std::string label; // empty: "Transform 3 points"
+};
+
 // Every command; each names itself (Spec::name), and core/scene/command_json.cpp gives each
 // its JSON form (a spec without one does not build).
 using CommandSpec =
@@ -203,7 +244,8 @@ using CommandSpec =
                  DeleteCurvePointSpec, MoveCurvePointSpec, SetCurveDegreeSpec, SetCurveKnotModeSpec,
                  SetCurvePlaneSpec, MakeCompatibleSpec, RemoveKnotSpec, ReduceDegreeSpec,
                  SplitKnotSpec, CloseSpec, ConvertSpec, AddObjectsSpec, MultiresEditSpec,
-                 SplitTriangleSpec>;
+                 SplitTriangleSpec, ConstructSpec, EditConstructionSpec, DetachSpec, MovePointsSpec,
+                 TransformPointsSpec>;
 
 namespace detail {
 template <class V> struct SpecNames;

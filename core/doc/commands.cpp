@@ -299,7 +299,7 @@ public:
             weight_name_.empty() ? detail::point_label('w', spec_.i, spec_.j) : weight_name_;
         if (spec_.position && spec_.weight) return "Edit " + point;
         if (spec_.position) return "Move " + point;
-        return "Set weight " + weight + " = " + geom::format_number(spec_.weight.value_or(1.0));
+        return "Set weight " + weight + " = " + geom::format_short(spec_.weight.value_or(1.0));
     }
 
 private:
@@ -461,7 +461,7 @@ public:
     }
 
     std::string label() const override {
-        std::string s = "Set knot " + label_name() + " = " + geom::format_number(value_);
+        std::string s = "Set knot " + label_name() + " = " + geom::format_short(value_);
         if (count_ > 1) s += " (" + std::to_string(count_) + " copies)";
         return s;
     }

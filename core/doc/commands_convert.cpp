@@ -7,6 +7,7 @@
 
 #include "core/doc/commands.hpp"
 #include "core/doc/commands_common.hpp"
+#include "core/doc/placement.hpp"
 #include "core/geom/convert.hpp"
 
 namespace isoparm::doc {
@@ -104,7 +105,7 @@ public:
             o.id = ids_[k];
             o.shape = std::move((*pieces)[k]);
             if (count_ > 1) {
-                o.name = obj.name + "." + std::to_string(k + 1);
+                o.name = unique_name(doc, obj.name + "." + std::to_string(k + 1), obj.id);
                 // The pieces share the original domain, as the pieces of a split do.
                 if (surface && o.patch_group == 0) o.patch_group = obj.id;
             }

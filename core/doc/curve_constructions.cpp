@@ -6,6 +6,7 @@
 #include <charconv>
 
 #include "core/doc/commands_common.hpp"
+#include "core/doc/recipe_build.hpp"
 #include "core/geom/coons.hpp"
 #include "core/geom/gordon.hpp"
 #include "core/geom/validate.hpp"
@@ -98,11 +99,27 @@ geom::Error rehome(geom::Error e, const std::vector<const Object*>& objects,
     return e;
 }
 
+geom::Expected<ConstructionResult> build_from_curves(const Document& doc,
+                                                     const ConstructionRequest& request);
+
 std::string join_names(const std::vector<const Object*>& objects) {
     std::string s;
     for (std::size_t k = 0; k < objects.size(); ++k) s += (k ? "-" : "") + objects[k]->name;
     return s;
 }
+
+} // namespace
+
+geom::Expected<ConstructionResult> build_construction(const Document& doc,
+                                                      const ConstructionRequest& request) {
+    auto built = request.kind == Construction::isocurve ? detail::build_isocurve(doc, request)
+                                                        : build_from_curves(doc, request);
+    if (!built) return built;
+    if (auto st = detail::apply_refinements(*built, request.refinements); !st) return st.error();
+    return built;
+}
+
+namespace {
 
 // The request's curves, checked: as many as the construction takes, each a curve.
 struct Chosen {
@@ -184,10 +201,10 @@ geom::Expected<geom::Surface> construct_surface(const ConstructionRequest& reque
         if (!r) return rehome(r.error(), objects);
         surface = std::move(r->skinned.surface);
         note = "oriented sweep of " + std::to_string(r->sections + 1) +
-               " profile copies: largest deviation from the ideal sweep " +
-               geom::format_number(r->max_deviation) + " at (u, v) = (" +
-               geom::format_number(r->deviation_u) + ", " + geom::format_number(r->deviation_v) +
-               "); more sections make it smaller";
+                   " profile copies: largest deviation from the ideal sweep " +
+                   geom::format_short(r->max_deviation) + " at (u, v) = (" +
+                   geom::format_short(r->deviation_u) + ", " + geom::format_short(r->deviation_v) +
+                   "); more sections make it smaller";
         break;
     }
     case Construction::skin: {
@@ -204,9 +221,9 @@ geom::Expected<geom::Surface> construct_surface(const ConstructionRequest& reque
         if (!r) return rehome(r.error(), objects);
         surface = std::move(r->surface);
         note = std::string("skin of ") + std::to_string(count) + " curves, v-degree " +
-               std::to_string(degree) + ", " + geom::parametrization_name(request.parametrization) +
-               " parameters v =";
-        for (double v : r->params) note += " " + geom::format_number(v);
+                   std::to_string(degree) + ", " +
+                   geom::parametrization_name(request.parametrization) + " parameters v =";
+        for (double v : r->params) note += " " + geom::format_short(v);
         break;
     }
     case Construction::coons: {
@@ -214,9 +231,11 @@ geom::Expected<geom::Surface> construct_surface(const ConstructionRequest& reque
         if (!r) return rehome(r.error(), objects);
         surface = std::move(r).value();
         note = "Coons patch: the ruled surfaces between opposite boundaries, added, minus "
-               "the bilinear patch of the corners; it keeps all four boundaries exactly";
+                   "the bilinear patch of the corners; it keeps all four boundaries exactly";
         break;
     }
+    case Construction::isocurve: // built by build_isocurve
+        break;
     case Construction::gordon: {
         const int nu = request.gordon_u_count;
         if (nu < 2 || static_cast<int>(n) - nu < 2)
@@ -231,9 +250,9 @@ geom::Expected<geom::Surface> construct_surface(const ConstructionRequest& reque
         if (!r) return rehome(r.error(), objects, nu);
         surface = std::move(r->surface);
         note = "Gordon surface through " + std::to_string(nu) + " u-curves (at v =";
-        for (double v : r->v_params) note += " " + geom::format_number(v);
+        for (double v : r->v_params) note += " " + geom::format_short(v);
         note += ") and " + std::to_string(n - nu) + " v-curves (at u =";
-        for (double u : r->u_params) note += " " + geom::format_number(u);
+        for (double u : r->u_params) note += " " + geom::format_short(u);
         note += ")";
         break;
     }
@@ -241,10 +260,8 @@ geom::Expected<geom::Surface> construct_surface(const ConstructionRequest& reque
     return surface;
 }
 
-} // namespace
-
-geom::Expected<ConstructionResult> build_construction(const Document& doc,
-                                                      const ConstructionRequest& request) {
+geom::Expected<ConstructionResult> build_from_curves(const Document& doc,
+                                                     const ConstructionRequest& request) {
     auto chosen = chosen_curves(doc, request);
     if (!chosen) return chosen.error();
     ConstructionResult out;
@@ -257,5 +274,7 @@ geom::Expected<ConstructionResult> build_construction(const Document& doc,
     out.object.shape = SurfaceObject{std::move(surface).value()};
     return out;
 }
+
+} // namespace
 
 } // namespace isoparm::doc

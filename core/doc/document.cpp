@@ -108,11 +108,15 @@ bool same_bits(const Rgba& a, const Rgba& b) {
     return bit_equal(a.r, b.r) && bit_equal(a.g, b.g) && bit_equal(a.b, b.b) && bit_equal(a.a, b.a);
 }
 
+} // namespace
+
 bool same_shape(const Shape& a, const Shape& b) {
     if (a.index() != b.index()) return false;
     return std::visit(
         [&](const auto& k) { return same_bits(k, std::get<std::decay_t<decltype(k)>>(b)); }, a);
 }
+
+namespace {
 
 bool same_colors(const Colors& a, const Colors& b) {
     return same_bits(a.background, b.background) && same_bits(a.surface, b.surface) &&
@@ -127,7 +131,9 @@ bool same_colors(const Colors& a, const Colors& b) {
 
 bool same_object(const Object& a, const Object& b) {
     return a.id == b.id && a.name == b.name && a.visible == b.visible &&
-           a.patch_group == b.patch_group && same_shape(a.shape, b.shape);
+           a.patch_group == b.patch_group && same_shape(a.shape, b.shape) &&
+           a.construction.has_value() == b.construction.has_value() &&
+           (!a.construction || same_recipe(*a.construction, *b.construction));
 }
 
 bool same_geometry(const Document& a, const Document& b) {
@@ -142,7 +148,17 @@ bool same_view(const ViewState& a, const ViewState& b) {
            bit_equal(a.indicator.y, b.indicator.y) &&
            bit_equal(a.barycentric[0], b.barycentric[0]) &&
            bit_equal(a.barycentric[1], b.barycentric[1]) &&
-           bit_equal(a.barycentric[2], b.barycentric[2]) && a.display == b.display;
+           bit_equal(a.barycentric[2], b.barycentric[2]) && a.display == b.display &&
+           a.object_display == b.object_display;
+}
+
+ObjectDisplay defaults_of(const DisplaySettings& d) {
+    return {d.control_points, d.control_net, d.point_ids, d.knot_curves};
+}
+
+ObjectDisplay display_of(const ViewState& view, std::uint64_t id) {
+    const auto it = view.object_display.find(id);
+    return it != view.object_display.end() ? it->second : defaults_of(view.display);
 }
 
 bool same_document(const Document& a, const Document& b) {

@@ -4,6 +4,8 @@
 #include <array>
 #include <cstdint>
 #include <glm/vec2.hpp>
+#include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <utility>
@@ -14,6 +16,7 @@
 #include "core/doc/kinds/implicit_kind.hpp"
 #include "core/doc/kinds/surface_kind.hpp"
 #include "core/doc/kinds/triangle_kind.hpp"
+#include "core/doc/recipe.hpp"
 #include "core/geom/status.hpp"
 #include "core/geom/triangle.hpp"
 #include "core/geom/types.hpp"
@@ -78,6 +81,10 @@ struct Object {
     // original parameters, so together they tile the original domain and the tracing square
     // shows that whole domain (core/doc/patches.hpp).
     std::uint64_t patch_group = 0;
+    // What built the object, when it stays linked to its inputs (core/doc/associative.hpp): an
+    // edit of an input rebuilds it in the same command; its own points are not edited until it
+    // is detached.
+    std::optional<Recipe> construction = std::nullopt;
 
     ObjectKind kind() const { return kind_of(shape); }
     geom::Surface* surface() { return surface_of(shape); }
@@ -185,14 +192,31 @@ struct Selection {
 
 // What the user is looking at rather than what the scene is: saved with the scene, but not
 // part of undo (an undo restores geometry and leaves the view where it is).
+// One object's own display toggles (C, N, I, K with the object selected; Display > Selected
+// object): control points, net, point names and knot curves. An object without its own takes
+// the scene's DisplaySettings, which are the defaults for new objects, so hiding one object's
+// points never hides the next new surface's.
+struct ObjectDisplay {
+    bool control_points = true;
+    bool control_net = true;
+    bool point_ids = false;
+    bool knot_curves = false;
+    bool operator==(const ObjectDisplay&) const = default;
+};
+ObjectDisplay defaults_of(const DisplaySettings& d);
+
 struct ViewState {
     Selection selection;
     glm::dvec2 indicator{0.5, 0.5}; // (u, v) normalized to [0,1]^2 over the current domain
     // A triangle's indicator (r, s, t), barycentric: its own, since the square's (u, v) has
     // no meaning on a triangle and switching objects should keep both.
     geom::Barycentric barycentric{1.0 / 3, 1.0 / 3, 1.0 / 3};
-    DisplaySettings display;
+    DisplaySettings display;                               // the defaults for every object
+    std::map<std::uint64_t, ObjectDisplay> object_display; // objects with their own, by id
 };
+
+// What object `id` shows: its own toggles, else the scene's defaults.
+ObjectDisplay display_of(const ViewState& view, std::uint64_t id);
 
 struct Document {
     std::vector<Object> objects;
@@ -211,8 +235,10 @@ struct Document {
 // Geometry that is bit-identical (undo tests compare with this): every object (id, name,
 // visibility, shape with all its numbers compared bit for bit) in the same order, and colours.
 bool same_geometry(const Document& a, const Document& b);
-// One object, bit for bit (as same_geometry compares them).
+// One object, bit for bit (as same_geometry compares them), its recipe included.
 bool same_object(const Object& a, const Object& b);
+// Two shapes, bit for bit.
+bool same_shape(const Shape& a, const Shape& b);
 // The view state (selection, indicator, display settings), bit for bit.
 bool same_view(const ViewState& a, const ViewState& b);
 // same_geometry plus the view state and the continuity setting, bit for bit.

@@ -2,6 +2,9 @@
 #include "core/doc/placement.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <string>
 
 #include <glm/common.hpp>
 
@@ -36,11 +39,19 @@ std::optional<Box> scene_bounds(const Document& doc) {
     return box;
 }
 
+std::string unique_name(const Document& doc, const std::string& wanted, std::uint64_t except) {
+    auto taken = [&](const std::string& n) {
+        return std::any_of(doc.objects.begin(), doc.objects.end(),
+                           [&](const Object& o) { return o.id != except && o.name == n; });
+    };
+    if (!taken(wanted)) return wanted;
+    for (int n = 2;; ++n) {
+        const std::string name = wanted + " (" + std::to_string(n) + ")";
+        if (!taken(name)) return name;
+    }
+}
+
 void place_beside_scene(const Document& doc, Shape& shape) {
-    // An object moves with its control points; one without them (an implicit surface, whose
-    // expression is in absolute coordinates: moving its box alone would cut the field) stays
-    // where its formula puts it.
-    if (control_points_of(shape).empty()) return;
     const std::optional<Box> scene = scene_bounds(doc);
     const std::optional<Box> own = bounds_of(shape);
     if (!scene || !own) return;
@@ -48,7 +59,8 @@ void place_beside_scene(const Document& doc, Shape& shape) {
     const double gap = std::max(0.25 * width, 0.5);
     glm::dvec3 d{scene->hi.x + gap - own->lo.x, 0, 0};
     d.y = 0.5 * (scene->lo.y + scene->hi.y) - 0.5 * (own->lo.y + own->hi.y);
-    for (glm::dvec3& p : control_points_of(shape)) p += d;
+    // Each kind moves as it is drawn: control points, or an implicit surface's formula.
+    std::visit([&](auto& k) { translate(k, d); }, shape);
 }
 
 } // namespace isoparm::doc

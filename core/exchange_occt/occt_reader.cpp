@@ -89,6 +89,11 @@ std::string how_it_ended(const exchange::SandboxRun& run, const exchange::Sandbo
     case Ending::timed_out:
         return "took longer than " + geom::format_number(limits.wall_seconds) +
                " s and was stopped";
+    case Ending::too_much:
+        return "answered with more than " + std::to_string(limits.output_bytes >> 20) +
+               " MiB of curves and surfaces (more than the " +
+               std::to_string(exchange::max_import_control_points) +
+               " control points one import takes) and was stopped";
     case Ending::signaled:
         if (run.signal == SIGXCPU || run.signal == SIGKILL)
             return "was stopped by " + exchange::describe_signal(run.signal) +
@@ -143,6 +148,9 @@ geom::Expected<exchange::ImportResult> read(std::string_view text, CadFormat for
         plan.path = file->path();
     }
     exchange::SandboxLimits limits = exchange::sandbox_limits_for(text.size());
+    // The import's budget in bytes on the wire: its control points and weights (32 bytes each)
+    // and twice that again for knots, names and records.
+    limits.output_bytes = 3 * 32 * exchange::max_import_control_points;
     // ISOPARM_IMPORT_CPU_SECONDS: another CPU time limit (a slow machine, a huge file, a test).
     if (const char* v = std::getenv("ISOPARM_IMPORT_CPU_SECONDS")) {
         char* end = nullptr;
@@ -221,7 +229,8 @@ geom::Expected<exchange::ImportResult> read(std::string_view text, CadFormat for
             continue;
         }
         if (stage == ReadProgress::converting && item >= 0 && attempt < max_crashed_items &&
-            run.ending != exchange::SandboxRun::Ending::timed_out) {
+            run.ending != exchange::SandboxRun::Ending::timed_out &&
+            run.ending != exchange::SandboxRun::Ending::too_much) {
             // One face took the reader down: read again without it.
             plan.skip.push_back({item, "OCCT " + how + (plan.careful ? " reading" : " converting") +
                                            " it; it is left out"});

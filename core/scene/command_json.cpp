@@ -8,6 +8,7 @@
 
 #include "core/json/fields.hpp"
 #include "core/json/shapes.hpp"
+#include "core/scene/recipe_json.hpp"
 #include "core/scene/scene_io.hpp"
 
 namespace isoparm::scene {
@@ -59,6 +60,7 @@ public:
         auto r = read_point(*v, path(name), "a position");
         return r ? *r : fail(r.error(), glm::dvec3(0));
     }
+    bool has(std::string_view name) { return find(name) != nullptr; }
     std::optional<glm::dvec3> optional_point(std::string_view name) {
         if (!find(name)) return std::nullopt;
         return point(name);
@@ -163,6 +165,51 @@ Expected<std::vector<std::uint64_t>> ids_from_json(const json& v, const std::str
         ids.push_back(static_cast<std::uint64_t>(*id));
     }
     return ids;
+}
+
+json points_to_json(const std::vector<PointIndex>& points) {
+    json out = json::array();
+    for (PointIndex p : points)
+        out.push_back(p.j < 0 ? json::array({p.i}) : json::array({p.i, p.j}));
+    return out;
+}
+
+// [[i, j], ...] (surfaces, triangles) or [[i], ...] (curves).
+Expected<std::vector<PointIndex>> points_from_json(const json& v, const std::string& at) {
+    if (!v.is_array())
+        return schema_error(std::string("points is an array of [i, j] or [i], got ") + type_name(v),
+                            at);
+    std::vector<PointIndex> out;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+        const std::string pat = at + "/" + std::to_string(k);
+        const json& p = v[k];
+        if (!p.is_array() || p.empty() || p.size() > 2)
+            return schema_error("a control point is [i, j] (a surface's or triangle's) or [i] (a "
+                                "curve's)",
+                                pat);
+        PointIndex q;
+        for (std::size_t c = 0; c < p.size(); ++c) {
+            auto x = read_integer(p[c], pat + "/" + std::to_string(c), "a control point index", 0,
+                                  INT_MAX);
+            if (!x) return x.error();
+            (c == 0 ? q.i : q.j) = static_cast<int>(*x);
+        }
+        out.push_back(q);
+    }
+    return out;
+}
+
+Expected<std::vector<glm::dvec3>> positions_from_json(const json& v, const std::string& at) {
+    if (!v.is_array())
+        return schema_error(std::string("positions is an array of [x, y, z], got ") + type_name(v),
+                            at);
+    std::vector<glm::dvec3> out;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+        auto p = read_point(v[k], at + "/" + std::to_string(k), "a position");
+        if (!p) return p.error();
+        out.push_back(*p);
+    }
+    return out;
 }
 
 // Each command's JSON form in one place: its members (besides "command"), its reader and its
@@ -483,6 +530,99 @@ template <> struct Form<MultiresEditSpec> {
         if (s.j >= 0) j["j"] = s.j;
         if (s.position) j["position"] = point_to_json(*s.position);
         if (s.detail_scale) j["detail_scale"] = *s.detail_scale;
+        return j;
+    }
+};
+
+template <> struct Form<ConstructSpec> {
+    static constexpr std::string_view members[]{"construction", "name"};
+    static ConstructSpec read(Members& m) {
+        return ConstructSpec{m.read<Recipe>("construction", recipe_from_json), m.text("name", "")};
+    }
+    static json write(const ConstructSpec& s) {
+        json j = {{"construction", recipe_to_json(s.recipe)}};
+        if (!s.name.empty()) j["name"] = s.name;
+        return j;
+    }
+};
+template <> struct Form<EditConstructionSpec> {
+    static constexpr std::string_view members[]{"id", "construction"};
+    static EditConstructionSpec read(Members& m) {
+        EditConstructionSpec s;
+        s.id = m.id("id");
+        s.recipe = m.read<Recipe>("construction", recipe_from_json);
+        return s;
+    }
+    static json write(const EditConstructionSpec& s) {
+        return {{"id", s.id}, {"construction", recipe_to_json(s.recipe)}};
+    }
+};
+template <> struct Form<DetachSpec> {
+    static constexpr std::string_view members[]{"id"};
+    static DetachSpec read(Members& m) { return DetachSpec{m.id("id")}; }
+    static json write(const DetachSpec& s) { return {{"id", s.id}}; }
+};
+template <> struct Form<MovePointsSpec> {
+    static constexpr std::string_view members[]{"id", "points", "positions", "label"};
+    static MovePointsSpec read(Members& m) {
+        MovePointsSpec s;
+        s.id = m.id("id");
+        s.points = m.read<std::vector<PointIndex>>("points", points_from_json);
+        s.positions = m.read<std::vector<glm::dvec3>>("positions", positions_from_json);
+        s.label = m.text("label", "");
+        return s;
+    }
+    static json write(const MovePointsSpec& s) {
+        json positions = json::array();
+        for (const glm::dvec3& p : s.positions) positions.push_back({p.x, p.y, p.z});
+        json j = {{"id", s.id},
+                  {"points", points_to_json(s.points)},
+                  {"positions", std::move(positions)}};
+        if (!s.label.empty()) j["label"] = s.label;
+        return j;
+    }
+};
+// "about": "centroid" or a point [x, y, z]; absent: the origin.
+Expected<std::pair<Pivot, glm::dvec3>> pivot_from_json(const json& v, const std::string& at) {
+    if (v.is_string()) {
+        if (v.get<std::string>() == "centroid") return std::pair{Pivot::centroid, glm::dvec3(0)};
+        return schema_error(
+            "about is \"centroid\" or a point [x, y, z], got '" + v.get<std::string>() + "'", at);
+    }
+    auto p = read_point(v, at, "the pivot");
+    if (!p) return p.error();
+    return std::pair{Pivot::point, *p};
+}
+template <> struct Form<TransformPointsSpec> {
+    static constexpr std::string_view members[]{"id", "points", "matrix", "about", "label"};
+    static TransformPointsSpec read(Members& m) {
+        TransformPointsSpec s;
+        s.id = m.id("id");
+        s.points = m.read<std::vector<PointIndex>>("points", points_from_json);
+        s.matrix = m.read<glm::dmat4>("matrix", matrix_from_json);
+        s.label = m.text("label", "");
+        if (m.has("about")) {
+            const auto about = m.read<std::pair<Pivot, glm::dvec3>>("about", pivot_from_json);
+            s.about = about.first;
+            s.pivot = about.second;
+        }
+        return s;
+    }
+    static json write(const TransformPointsSpec& s) {
+        json j = {{"id", s.id},
+                  {"points", points_to_json(s.points)},
+                  {"matrix", matrix_to_json(s.matrix)}};
+        switch (s.about) {
+        case Pivot::origin:
+            break;
+        case Pivot::centroid:
+            j["about"] = "centroid";
+            break;
+        case Pivot::point:
+            j["about"] = {s.pivot.x, s.pivot.y, s.pivot.z};
+            break;
+        }
+        if (!s.label.empty()) j["label"] = s.label;
         return j;
     }
 };

@@ -57,6 +57,9 @@ std::string export_extensions();
 geom::Expected<std::vector<const doc::Object*>> export_objects(const doc::Document& doc,
                                                                const std::string& which);
 
+// What one export may use at its peak (checked for mesh formats before any tessellation).
+inline constexpr double max_export_bytes = 1024.0 * 1024 * 1024;
+
 struct ExportOptions {
     ExportFormat format = ExportFormat::step;
     int samples = 32; // tessellation points per direction of a parametric surface (2..1000)
@@ -74,8 +77,10 @@ struct ExportResult {
 // form); IGES and STEP refuse a non-positive weight (`weights`, naming the object and the
 // control point and suggesting a mesh format). Mesh formats take surfaces, tessellated
 // samples x samples over their domain, and implicit surfaces, polygonized with their own box
-// and cell; a curve is skipped. Every mesh is welded (core/exchange/mesh_weld.hpp), so closed
-// surfaces give closed meshes. Nothing left to write is an error (`schema`) that says why.
+// and cell; a curve is skipped. The vertices are charged first (`limit` when they would take
+// more than max_export_bytes, saying how many samples fit). Every mesh is welded
+// (core/exchange/mesh_weld.hpp), so closed surfaces give closed meshes. Nothing left to write is an
+// error (`schema`) that says why.
 geom::Expected<ExportResult> export_document(const std::vector<const doc::Object*>& objects,
                                              const ExportOptions& options);
 

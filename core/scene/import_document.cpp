@@ -47,6 +47,16 @@ geom::Expected<ImportedObjects> import_text(std::string_view text, ImportFormat 
             : exchange::read_cad(text, format == ImportFormat::iges ? exchange::CadFormat::iges
                                                                     : exchange::CadFormat::step);
     if (!read) return read.error();
+    // The import's budget (the OBJ reader counts while it reads; a CAD reader's answer here).
+    std::size_t points = 0;
+    for (const exchange::ImportedShape& shape : read->objects)
+        points += std::visit([](const auto& g) { return g.points.size(); }, shape.shape);
+    if (points > exchange::max_import_control_points)
+        return geom::make_error(geom::ErrorCode::limit,
+                                "the file's curves and surfaces have " + std::to_string(points) +
+                                    " control points in all, more than the " +
+                                    std::to_string(exchange::max_import_control_points) +
+                                    " one import takes");
     ImportedObjects out;
     for (const exchange::SkippedEntity& s : read->skipped)
         out.skipped.push_back(s.entity + ": " + s.reason);

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <set>
 
+#include "core/doc/associative.hpp"
 #include "core/doc/commands_common.hpp"
 #include "core/doc/patches.hpp"
 #include "core/geom/reshape.hpp"
@@ -16,6 +17,7 @@
 #include "core/json/out_of_memory.hpp"
 #include "core/json/reader.hpp"
 #include "core/json/shapes.hpp"
+#include "core/scene/recipe_json.hpp"
 
 namespace isoparm::scene {
 
@@ -54,6 +56,16 @@ template <class D> auto display_flags(D& d) {
         {"knot_curves", &d.knot_curves},
         {"indicator_point", &d.indicator_point},
         {"deboor", &d.deboor},
+    }};
+}
+
+template <class D> auto object_display_flags(D& d) {
+    using B = std::conditional_t<std::is_const_v<D>, const bool*, bool*>;
+    return std::array<std::pair<const char*, B>, 4>{{
+        {"control_points", &d.control_points},
+        {"control_net", &d.control_net},
+        {"point_ids", &d.point_ids},
+        {"knot_curves", &d.knot_curves},
     }};
 }
 
@@ -124,6 +136,7 @@ KindMembers kind_members(ObjectKind kind, bool object) {
                            : std::vector<std::string_view>{"kind"};
         if (object && K::in_patch_groups) m.allowed.push_back("patch_group");
         m.allowed.insert(m.allowed.end(), K::shape_members.begin(), K::shape_members.end());
+        if (object && K::constructed) m.allowed.push_back("construction");
         m.what = kind_file_noun(kind) + (object ? " object" : " shape");
         return m;
     });
@@ -184,6 +197,12 @@ Expected<Object> object_from_json(const json& j, const std::string& at) {
     auto shape = read_shape(j, at, *kind);
     if (!shape) return shape.error();
     o.shape = std::move(shape).value();
+    // Its links to the other objects are checked with the whole scene (check_constructions).
+    if (const auto recipe = j.find("construction"); recipe != j.end()) {
+        auto r = recipe_from_json(*recipe, at + "/construction");
+        if (!r) return r.error();
+        o.construction = std::move(r).value();
+    }
     return o;
 }
 
@@ -211,6 +230,7 @@ json object_to_json(const Object& o) {
     if (o.patch_group != 0) j["patch_group"] = o.patch_group;
     const json shape = shape_to_json(o.shape);
     for (const auto& [key, value] : shape.items()) j[key] = value;
+    if (o.construction) j["construction"] = recipe_to_json(*o.construction);
     return j;
 }
 
@@ -403,9 +423,45 @@ Expected<Continuity> continuity_from_json(const json& j, const std::string& at) 
 
 namespace {} // namespace
 
+json without_display(const json& object) {
+    json rest = object;
+    rest.erase("display");
+    return rest;
+}
+
+json object_display_to_json(const ObjectDisplay& d) {
+    json j = json::object();
+    for (const auto& [name, flag] : object_display_flags(d)) j[name] = *flag;
+    return j;
+}
+
+Expected<ObjectDisplay> object_display_from_json(const json& j, const std::string& at,
+                                                 ObjectDisplay d) {
+    if (auto st = expect_object(j, at, "display"); !st) return st.error();
+    std::vector<std::string_view> allowed;
+    for (auto& [name, flag] : object_display_flags(d)) allowed.push_back(name);
+    if (auto st = check_members(j, at, "an object's display", allowed); !st) return st.error();
+    for (auto& [name, flag] : object_display_flags(d))
+        if (const auto it = j.find(name); it != j.end()) {
+            auto v = read_bool(*it, member_path(at, name));
+            if (!v) return v.error();
+            *flag = *v;
+        }
+    return d;
+}
+
 json scene_to_json(const Document& doc) {
     json objects = json::array();
-    for (const Object& o : doc.objects) objects.push_back(object_to_json(o));
+    bool own_display = false;
+    for (const Object& o : doc.objects) {
+        json oj = object_to_json(o);
+        // An object's own display toggles (format version 2); the others take the scene's.
+        if (const auto d = doc.view.object_display.find(o.id); d != doc.view.object_display.end()) {
+            oj["display"] = object_display_to_json(d->second);
+            own_display = true;
+        }
+        objects.push_back(std::move(oj));
+    }
     json colors = colors_to_json(doc.colors);
 
     json display = display_to_json(doc.view.display);
@@ -416,7 +472,12 @@ json scene_to_json(const Document& doc) {
 
     json scene = json::object();
     scene["format"] = scene_format_name;
-    scene["version"] = scene_format_version;
+    // Version 2 only where it is needed (an object's own display toggles or a construction), so
+    // other scenes save as version 1 and read in older builds as before.
+    const bool constructions =
+        std::any_of(doc.objects.begin(), doc.objects.end(),
+                    [](const Object& o) { return o.construction.has_value(); });
+    scene["version"] = own_display || constructions ? scene_format_version : 1;
     scene["objects"] = std::move(objects);
     scene["colors"] = std::move(colors);
     scene["display"] = std::move(display);
@@ -481,9 +542,19 @@ Expected<Document> scene_from_json(const json& j) {
                               " objects, got " + std::to_string(objects->size()),
                           "/objects");
     std::set<std::uint64_t> ids;
+    std::vector<std::pair<std::size_t, const json*>> own_displays; // object index, its display
     for (std::size_t k = 0; k < objects->size(); ++k) {
         const std::string at = "/objects/" + std::to_string(k);
-        auto o = object_from_json((*objects)[k], at);
+        const json& oj = (*objects)[k];
+        // An object's own display is view state, not geometry: read apart (version 2).
+        const bool own = oj.is_object() && oj.contains("display");
+        if (own && *v < 2)
+            return schema_error("an object's display needs format version 2, this scene says "
+                                "version " +
+                                    std::to_string(*v),
+                                at + "/display");
+        if (own) own_displays.emplace_back(k, &oj.at("display"));
+        auto o = own ? object_from_json(without_display(oj), at) : object_from_json(oj, at);
         if (!o) return o.error();
         if (o->id != 0 && !ids.insert(o->id).second)
             return schema_error("object id " + std::to_string(o->id) + " is used twice",
@@ -512,6 +583,12 @@ Expected<Document> scene_from_json(const json& j) {
         if (!display) return display.error();
         doc.view.display = *display;
     }
+    for (const auto& [k, dj] : own_displays) {
+        auto d = object_display_from_json(*dj, "/objects/" + std::to_string(k) + "/display",
+                                          defaults_of(doc.view.display));
+        if (!d) return d.error();
+        doc.view.object_display[doc.objects[k].id] = *d;
+    }
     if (const auto s = j.find("selection"); s != j.end()) {
         auto selection = selection_from_json(*s, "/selection", doc);
         if (!selection) return selection.error();
@@ -523,6 +600,19 @@ Expected<Document> scene_from_json(const json& j) {
         doc.continuity = *continuity;
     }
     if (auto e = check_patch_groups(doc)) return *e;
+    // Each recipe's inputs exist, are of the kind it reads, and no recipe reads itself.
+    if (*v < 2)
+        for (std::size_t k = 0; k < doc.objects.size(); ++k)
+            if (doc.objects[k].construction)
+                return schema_error("construction needs scene format version 2 (this scene says " +
+                                        std::to_string(*v) + ")",
+                                    "/objects/" + std::to_string(k) + "/construction");
+    for (std::size_t k = 0; k < doc.objects.size(); ++k) {
+        const Object& o = doc.objects[k];
+        if (!o.construction) continue;
+        if (auto st = check_recipe_links(doc, o.id, o, *o.construction); !st)
+            return st.error().under("/objects/" + std::to_string(k));
+    }
     if (const auto ind = j.find("indicator"); ind != j.end()) {
         auto uv = indicator_from_json(*ind, "/indicator");
         if (!uv) return uv.error();

@@ -36,6 +36,26 @@ def run(args, expect=0):
     return p
 
 
+def png_rgba(path):
+    """Width, height and RGBA rows of a PNG as isoparm writes it (8-bit RGBA, filter 0)."""
+    import struct
+    import zlib
+    with open(path, "rb") as f:
+        data = f.read()
+    pos, idat, w, h = 8, b"", 0, 0
+    while pos < len(data):
+        n, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + n]
+        if kind == b"IHDR":
+            w, h = struct.unpack(">II", body[:8])
+        elif kind == b"IDAT":
+            idat += body
+        pos += 12 + n
+    raw = zlib.decompress(idat)
+    rows = [raw[r * (4 * w + 1) + 1:(r + 1) * (4 * w + 1)] for r in range(h)]
+    return w, h, rows
+
+
 def svg_texts(root):
     """The plain text of every <text> element, scripts included ("N0,3")."""
     return ["".join(t.itertext()) for t in root.iter(SVG + "text")]
@@ -129,6 +149,14 @@ def main():
                                 os.path.basename(doc)], cwd=a.work, capture_output=True,
                                text=True)
             check(p.returncode == 0, f"{view}.tex compiles with pdflatex")
+
+    # A transparent picture: alpha 0 where the background was, opaque on the surface.
+    out = os.path.join(a.work, "transparent.png")
+    p = run([iso, "render", os.path.join(scenes, "fig8-revolution.json"), "--view", "3d",
+             "--size", "160x120", "--transparent", "-o", out])
+    w, h, rows = png_rgba(out)
+    check(p.returncode == 0 and rows[2][4 * 150 + 3] == 0 and rows[60][4 * 80 + 3] == 255,
+          "render --transparent: the corner is transparent, the vase opaque")
 
     # Refusals write nothing.
     bad = os.path.join(a.work, "refused.odt")

@@ -8,6 +8,7 @@
 #include "core/scene/scene_io.hpp"
 #include "ui/figure/drawing_files.hpp"
 #include "ui/image/png_compare.hpp"
+#include "ui/view/drawing_picture.hpp"
 #include "ui/view/figures.hpp"
 
 namespace isoparm::ui {
@@ -103,8 +104,8 @@ TEST(Figures, DeBoorLabelsEveryIntermediatePoint) {
 
 TEST(Figures, ViewsSayWhatTheyNeed) {
     doc::Document empty;
-    for (FigureView v : {FigureView::tracing, FigureView::basis, FigureView::curve,
-                         FigureView::homogeneous}) {
+    for (FigureView v :
+         {FigureView::tracing, FigureView::basis, FigureView::curve, FigureView::homogeneous}) {
         const auto fig = make_figure(empty, v, {});
         ASSERT_FALSE(fig.ok());
         EXPECT_NE(fig.error().message.find("needs"), std::string::npos);
@@ -145,11 +146,94 @@ TEST(DrawingFiles, PdfAndPngThroughCairo) {
     ASSERT_TRUE(image) << error;
     EXPECT_EQ(image->width, 80);
     EXPECT_EQ(image->height, 60);
-    const auto px = [&](int x, int y) { return &image->rgb[(static_cast<std::size_t>(y) * 80 + x) * 3]; };
+    const auto px = [&](int x, int y) {
+        return &image->rgb[(static_cast<std::size_t>(y) * 80 + x) * 3];
+    };
     EXPECT_EQ(px(40, 30)[0], 255); // inside the red rectangle
     EXPECT_EQ(px(40, 30)[1], 0);
     EXPECT_EQ(px(5, 5)[1], 255); // white outside
     EXPECT_NE(write_drawing(d, "x.odt"), "");
+}
+
+} // namespace
+} // namespace isoparm::ui
+
+namespace isoparm::ui {
+namespace {
+
+// A panel's Picture (shapes, a clip, label requests) through the vector path: every shape
+// becomes a path or a disk in page coordinates (the frame's corner at the origin), each in
+// its clip, and every placed label a text; the SVG holds them all.
+TEST(DrawingOfPicture, ShapesClipsAndPlacedLabels) {
+    Picture p;
+    p.view = "tracing";
+    p.frame = {100, 50, 200, 150};
+    p.background = rgba8(255, 255, 255);
+    p.line({110, 60}, {290, 190}, rgba8(0, 0, 0), 2);
+    p.begin_clip({120, 70, 100, 100});
+    p.box({130, 80}, {200, 150}, rgba8(200, 220, 255), rgba8(0, 0, 0));
+    p.end_clip();
+    p.disk({150, 100}, 4, rgba8(255, 0, 0));
+    p.label({150, 100}, "(u, v)", rgba8(0, 0, 0));
+    p.fixed_label({110, 195}, "u", rgba8(0, 0, 0), LabelAlign::bottom_left);
+    const Drawing d = drawing_of(p, 9);
+    EXPECT_EQ(d.width, 200);
+    EXPECT_EQ(d.height, 150);
+    int paths = 0, circles = 0, texts = 0, clips = 0;
+    for (const DrawItem& item : d.items) {
+        paths += std::holds_alternative<DrawPath>(item);
+        circles += std::holds_alternative<DrawCircle>(item);
+        texts += std::holds_alternative<DrawText>(item);
+        clips += std::holds_alternative<DrawClip>(item);
+    }
+    EXPECT_EQ(paths, 2); // the segment and the box (no leader: the label sits beside it)
+    EXPECT_EQ(circles, 1);
+    EXPECT_EQ(texts, 2);
+    EXPECT_EQ(clips, 4); // frame, the box's clip, frame again, none for the labels
+    const auto& seg = std::get<DrawPath>(d.items[1]);
+    EXPECT_EQ(seg.points[0], glm::dvec2(10, 10)); // page coordinates
+    const auto& box_clip = std::get<DrawClip>(d.items[2]);
+    EXPECT_EQ(box_clip.origin, glm::dvec2(20, 20));
+    const std::string svg = svg_document(d);
+    EXPECT_NE(svg.find(">(u, v)</text>"), std::string::npos);
+    EXPECT_NE(svg.find("clip-path"), std::string::npos);
+}
+
+} // namespace
+} // namespace isoparm::ui
+
+#include "ui/view/picture_tap.hpp"
+
+namespace isoparm::ui {
+namespace {
+
+// What a backend offers while a tap is open is kept, the last of each view; nothing outside a
+// tap; nested taps give the pictures to the innermost.
+TEST(PictureTap, KeepsTheLastPictureOfEachViewWhileOpen) {
+    Picture a;
+    a.view = "tracing";
+    a.frame = {0, 0, 10, 10};
+    offer_picture(a); // no tap: dropped
+    PictureTap outer;
+    EXPECT_EQ(outer.size(), 0u);
+    offer_picture(a);
+    a.frame.w = 20;
+    offer_picture(a);
+    ASSERT_NE(outer.find("tracing"), nullptr);
+    EXPECT_EQ(outer.find("tracing")->frame.w, 20);
+    {
+        PictureTap inner;
+        Picture b;
+        b.view = "basis_u";
+        offer_picture(b);
+        EXPECT_NE(inner.find("basis_u"), nullptr);
+        EXPECT_EQ(outer.find("basis_u"), nullptr);
+    }
+    Picture c;
+    c.view = "curve";
+    offer_picture(c);
+    EXPECT_NE(outer.find("curve"), nullptr);
+    EXPECT_STREQ(picture_view_name(static_cast<int>(FigureView::basis)), "basis_u");
 }
 
 } // namespace

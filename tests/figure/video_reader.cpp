@@ -19,10 +19,9 @@ std::optional<VideoFacts> read_video(const std::string& path, int keep_frame, st
     AVPacket* packet = av_packet_alloc();
     AVFrame* frame = av_frame_alloc();
     SwsContext* sws = nullptr;
-    const int stream =
-        avformat_find_stream_info(format, nullptr) >= 0
-            ? av_find_best_stream(format, AVMEDIA_TYPE_VIDEO, -1, -1, nullptr, 0)
-            : -1;
+    const int stream = avformat_find_stream_info(format, nullptr) >= 0
+                           ? av_find_best_stream(format, AVMEDIA_TYPE_VIDEO, -1, -1, nullptr, 0)
+                           : -1;
     if (stream < 0) {
         error = "no video stream in " + path;
     } else {
@@ -50,8 +49,7 @@ std::optional<VideoFacts> read_video(const std::string& path, int keep_frame, st
                                                 frame->height * 4);
                         std::uint8_t* dst[1] = {facts.frame_rgba.data()};
                         const int stride[1] = {frame->width * 4};
-                        sws_scale(sws, frame->data, frame->linesize, 0, frame->height, dst,
-                                  stride);
+                        sws_scale(sws, frame->data, frame->linesize, 0, frame->height, dst, stride);
                     }
                     ++facts.frames;
                     av_frame_unref(frame);

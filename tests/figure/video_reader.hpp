@@ -12,8 +12,8 @@ namespace isoparm::test {
 struct VideoFacts {
     int frames = 0;
     int width = 0, height = 0;
-    std::string codec; // "gif", "h264"
-    double fps = 0;    // the stream's average frame rate
+    std::string codec;                    // "gif", "h264"
+    double fps = 0;                       // the stream's average frame rate
     std::vector<std::uint8_t> frame_rgba; // the frame asked for (RGBA, top row first)
 };
 

@@ -90,7 +90,7 @@ std::string AnimationJob::picture() {
     const doc::Object* current = nullptr;
     if (current_surface(ctx.doc, &current)) follow_indicator(ctx.doc, current->id);
     std::string error;
-    const std::optional<Picture> p = capture_->capture(error, first_picture_ ? 2 : 1);
+    const std::optional<Pixels> p = capture_->capture(error, first_picture_ ? 2 : 1);
     first_picture_ = false;
     if (!p) return error;
     for (int k = 0; k < req_.step_frames; ++k) {

@@ -39,7 +39,7 @@ AppContext& FrameCapture::context() {
     return workstation_->context();
 }
 
-std::optional<Picture> FrameCapture::capture(std::string& error, int frames) {
+std::optional<Pixels> FrameCapture::capture(std::string& error, int frames) {
     if (!error_.empty()) {
         error = error_;
         return std::nullopt;
@@ -66,7 +66,7 @@ std::optional<Picture> FrameCapture::capture(std::string& error, int frames) {
     }
     // OpenGL's first row is the bottom: flip. Opaque pictures get alpha 255 everywhere; a
     // transparent one was drawn premultiplied (blending onto alpha 0) and is made straight.
-    Picture out{w, h, std::vector<std::uint8_t>(pixels.size())};
+    Pixels out{w, h, std::vector<std::uint8_t>(pixels.size())};
     const std::size_t row = static_cast<std::size_t>(w) * 4;
     for (int y = 0; y < h; ++y)
         std::memcpy(&out.rgba[static_cast<std::size_t>(y) * row],
@@ -84,11 +84,11 @@ std::optional<Picture> FrameCapture::capture(std::string& error, int frames) {
     return out;
 }
 
-std::optional<Picture> crop(const Picture& p, int x, int y, int w, int h) {
+std::optional<Pixels> crop(const Pixels& p, int x, int y, int w, int h) {
     const int x0 = std::clamp(x, 0, p.width), y0 = std::clamp(y, 0, p.height);
     const int x1 = std::clamp(x + w, 0, p.width), y1 = std::clamp(y + h, 0, p.height);
     if (x1 <= x0 || y1 <= y0) return std::nullopt;
-    Picture out{x1 - x0, y1 - y0, {}};
+    Pixels out{x1 - x0, y1 - y0, {}};
     out.rgba.resize(static_cast<std::size_t>(out.width) * out.height * 4);
     for (int r = 0; r < out.height; ++r)
         std::memcpy(&out.rgba[static_cast<std::size_t>(r) * out.width * 4],

@@ -18,7 +18,7 @@ namespace isoparm::ui {
 class Workstation;
 class OffscreenTarget;
 
-struct Picture {
+struct Pixels {
     int width = 0, height = 0;
     std::vector<std::uint8_t> rgba; // first row at the top; straight (not premultiplied) alpha
 };
@@ -46,7 +46,7 @@ public:
     // Draws `frames` frames of the workstation as the context stands (the first settles
     // layout-dependent sizes and the camera fit) and reads the picture back; nothing, with
     // `error` set, when the read-back failed.
-    std::optional<Picture> capture(std::string& error, int frames = 2);
+    std::optional<Pixels> capture(std::string& error, int frames = 2);
 
 private:
     CaptureSettings settings_;
@@ -56,7 +56,7 @@ private:
 };
 
 // The part [x, x + w) x [y, y + h) of a picture (clamped to it); nothing when that is empty.
-std::optional<Picture> crop(const Picture& p, int x, int y, int w, int h);
+std::optional<Pixels> crop(const Pixels& p, int x, int y, int w, int h);
 
 // What the window shows beyond the document (camera, tabs, splitters, the teaching panels'
 // settings) copied to another workstation's context, so its picture matches the window.

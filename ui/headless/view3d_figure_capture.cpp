@@ -4,6 +4,8 @@
 
 #include "ui/headless/frame_capture.hpp"
 #include "ui/view/doc_access.hpp"
+#include "ui/view/drawing_picture.hpp"
+#include "ui/view/picture_tap.hpp"
 
 namespace isoparm::ui {
 
@@ -30,7 +32,7 @@ geom::Expected<Drawing> capture_view3d_figure(const AppContext& ctx, const Figur
     raster = raster && disp.style != doc::DisplayStyle::wireframe;
     if (disp.style == doc::DisplayStyle::both) disp.style = doc::DisplayStyle::shaded;
     std::string error;
-    const std::optional<Picture> picture = capture.capture(error);
+    const std::optional<Pixels> picture = capture.capture(error);
     if (!picture) return geom::make_error_nopath(geom::ErrorCode::internal, error);
     View3dFigureInput in;
     in.camera = c.ui.camera;
@@ -45,6 +47,31 @@ geom::Expected<Drawing> capture_view3d_figure(const AppContext& ctx, const Figur
         in.raster = std::move(im);
     }
     return view3d_figure(ctx.doc, in, o);
+}
+
+std::optional<Drawing> capture_panel_figure(const AppContext& ctx, FigureView view, int window_w,
+                                            int window_h, float scale, std::string& error) {
+    const std::string name = picture_view_name(static_cast<int>(view));
+    PictureTap tap;
+    CaptureSettings cs;
+    cs.width = std::clamp(window_w, 16, 8192);
+    cs.height = std::clamp(window_h, 16, 8192);
+    cs.view = ViewMode::workstation;
+    cs.scale = scale;
+    FrameCapture capture(cs);
+    if (!capture.error().empty()) {
+        error = capture.error();
+        return std::nullopt;
+    }
+    copy_view_state(ctx, capture.context());
+    // The teaching tab that shows the view (workstation.cpp's order), brought forward.
+    constexpr int tab_of[] = {-1, 0, -1, 1, 4, 2};
+    if (const int tab = tab_of[static_cast<int>(view)]; tab >= 0)
+        capture.context().ui.left_tab = tab;
+    if (!capture.capture(error)) return std::nullopt;
+    if (const Picture* p = tap.find(name)) return drawing_of(*p);
+    error = "the " + name + " panel draws no Picture in this build";
+    return std::nullopt;
 }
 
 } // namespace isoparm::ui

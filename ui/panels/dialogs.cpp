@@ -11,14 +11,18 @@
 #include "core/doc/commands.hpp"
 #include "core/doc/placement.hpp"
 #include "ui/actions.hpp"
+#include "ui/course_actions.hpp"
 #include "ui/exchange_actions.hpp"
 #include "ui/panels/enum_combo.hpp"
 #include "ui/panels/fit_panel.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/platform/files.hpp"
 #include "ui/recovery.hpp"
 #include "ui/theme.hpp"
 #include "ui/toolbox_actions.hpp"
 #include "ui/ui_report.hpp"
+#include "ui/uploads.hpp"
+#include "ui/view/doc_access.hpp"
 
 namespace isoparm::ui {
 
@@ -63,25 +67,31 @@ void new_surface_dialog(AppContext& ctx) {
     }
     center_next(360, ctx.ui.scale());
     if (!ImGui::BeginPopupModal("New surface", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-    ImGui::TextWrapped("A flat grid of control points in the xy-plane; shape it by moving points.");
+    text_wrapped("A flat grid of control points in the xy-plane; shape it by moving points.");
     auto type = static_cast<geom::SplineType>(f.type);
     if (enum_combo("Type", type, ItemCase::capitalized)) f.type = static_cast<int>(type);
+    report_item("new_surface/type");
     const bool bezier = f.type <= 1;
     ImGui::InputInt("Rows (u)", &f.rows);
     ImGui::InputInt("Columns (v)", &f.cols);
     f.rows = std::clamp(f.rows, 2, 64);
     f.cols = std::clamp(f.cols, 2, 64);
-    if (bezier) {
-        // A Bezier patch's degree follows from its point count.
-        f.degree_u = f.rows - 1;
-        f.degree_v = f.cols - 1;
-    }
+    // A Bezier patch's degree follows from its point count; the B-spline degrees are kept for
+    // when the type changes back (the dialog used to keep rows - 1 then).
+    f.degree_u = bezier ? f.rows - 1 : f.spline_degree_u;
+    f.degree_v = bezier ? f.cols - 1 : f.spline_degree_v;
     ImGui::BeginDisabled(bezier);
     ImGui::InputInt("Degree in u", &f.degree_u);
     ImGui::InputInt("Degree in v", &f.degree_v);
     ImGui::EndDisabled();
     f.degree_u = std::clamp(f.degree_u, 1, 63);
     f.degree_v = std::clamp(f.degree_v, 1, 63);
+    if (!bezier) {
+        f.spline_degree_u = f.degree_u;
+        f.spline_degree_v = f.degree_v;
+    }
+    report_fact("new_surface/degree_u", f.degree_u);
+    report_fact("new_surface/degree_v", f.degree_v);
     const std::string err = new_surface_error(f);
     if (!err.empty()) ImGui::TextColored(error_text_color(), "%s", err.c_str());
     ImGui::BeginDisabled(!err.empty());
@@ -89,10 +99,7 @@ void new_surface_dialog(AppContext& ctx) {
     report_item("new_surface/create");
     if (create) {
         doc::Object o;
-        int n = 1;
-        for (const doc::Object& x : ctx.doc.objects)
-            n += x.kind() == doc::ObjectKind::surface ? 1 : 0;
-        o.name = "Surface " + std::to_string(n);
+        o.name = fresh_name(ctx.doc, "Surface"); // unique, whatever was deleted or renamed
         o.shape = doc::SurfaceObject{doc::make_planar_grid(f.rows, f.cols, f.degree_u, f.degree_v,
                                                            static_cast<geom::SplineType>(f.type))};
         doc::place_beside_scene(ctx.doc, o.shape);
@@ -143,16 +150,20 @@ void file_dialog(AppContext& ctx) {
     const bool recording = fd.mode == FileDialog::Mode::save_recording;
     const bool lesson = fd.mode == FileDialog::Mode::open_lesson;
     const bool points = fd.mode == FileDialog::Mode::load_points;
-    const bool saving = fd.mode == FileDialog::Mode::save || recording;
+    const bool lesson_out = fd.mode == FileDialog::Mode::save_lesson;
+    const bool exercise = fd.mode == FileDialog::Mode::open_exercise;
+    const bool saving = fd.mode == FileDialog::Mode::save || recording || lesson_out;
     const bool exporting = fd.mode == FileDialog::Mode::export_file;
     const bool importing = fd.mode == FileDialog::Mode::import_file;
-    const char* title = recording   ? "Save recording as script"
-                        : saving    ? "Save scene as"
-                        : exporting ? "Export visible objects (.step .igs .obj .stl .ply .glb)"
-                        : importing ? "Import curves and surfaces (.step .igs .obj)"
-                        : lesson    ? "Open lesson (a script)"
-                        : points    ? "Load data points (CSV or XYZ)"
-                                    : "Open scene";
+    const char* title = recording    ? "Save recording as script"
+                        : lesson_out ? "Save lesson as"
+                        : exercise   ? "Open exercise"
+                        : saving     ? "Save scene as"
+                        : exporting  ? "Export visible objects (.step .igs .obj .stl .ply .glb)"
+                        : importing  ? "Import curves and surfaces (.step .igs .obj)"
+                        : lesson     ? "Open lesson (a script)"
+                        : points     ? "Load data points (CSV or XYZ)"
+                                     : "Open scene";
     if (fd.just_opened) {
         ImGui::OpenPopup(title);
         fd.just_opened = false;
@@ -185,7 +196,11 @@ void file_dialog(AppContext& ctx) {
     ImGui::EndChild();
     ImGui::SetNextItemWidth(-1);
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere(); // type a name right away
-    const bool enter = ImGui::InputText("##name", &fd.name, ImGuiInputTextFlags_EnterReturnsTrue);
+    // A click on the name selects all of it, so typing replaces it (a file name is most often
+    // typed anew).
+    const bool enter =
+        ImGui::InputText("##name", &fd.name,
+                         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
     report_item("file/name");
     if (enter && !fd.name.empty()) chosen = fd.name;
     fs::path target = fs::path(fd.directory) / fd.name;
@@ -222,10 +237,36 @@ void file_dialog(AppContext& ctx) {
             discard_recording(ctx);
         }
     }
+    // In a browser the list shows the page's own files (the examples, the lessons, uploads);
+    // the user's are reached through the browser's picker, and what is written downloads.
+    if (files::in_browser()) {
+        if (!saving && !exporting) {
+            ImGui::SameLine();
+            const bool upload = ImGui::Button("From this computer...");
+            report_item("file/upload");
+            if (upload && request_upload_for(fd.mode)) close = true;
+        } else {
+            ImGui::TextDisabled("The browser downloads the file.");
+        }
+    }
+    // A folder typed or picked (a path in the name field too) is opened in the dialog, never
+    // taken as the file: nothing is asked or refused for it.
+    if (!chosen.empty() && fs::is_directory(fs::path(fd.directory) / chosen, ec)) {
+        fd.directory = (fs::path(fd.directory) / chosen).lexically_normal().string();
+        if (fd.directory.size() > 1 && fd.directory.back() == '/') fd.directory.pop_back();
+        fd.name.clear();
+        fd.error.clear();
+        chosen.clear();
+    }
     if (!chosen.empty()) {
         target = fs::path(fd.directory) / chosen;
         if (saving && target.extension().empty()) target += ".json";
-        if (exporting || importing) {
+        if (lesson_out) {
+            close = save_lesson(ctx, target.string());
+        } else if (exercise) {
+            close = true;
+            request_open_exercise(ctx, target.string());
+        } else if (exporting || importing) {
             // A refusal keeps the dialog open with the reason; nothing was written or added.
             close = exporting ? export_visible_objects(ctx, target.string(), fd.error)
                               : import_objects(ctx, target.string(), fd.error);
@@ -295,9 +336,9 @@ void overwrite_changed_dialog(AppContext& ctx) {
     center_next(480, ctx.ui.scale());
     if (!ImGui::BeginPopupModal("File changed on disk", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
         return;
-    ImGui::TextWrapped("'%s' was changed on disk since it was opened or last saved (by another "
-                       "window or program). Saving now replaces those changes with this scene.",
-                       ctx.file_path.c_str());
+    text_wrapped("'%s' was changed on disk since it was opened or last saved (by another "
+                 "window or program). Saving now replaces those changes with this scene.",
+                 ctx.file_path.c_str());
     ImGui::Spacing();
     if (ImGui::Button("Save anyway")) {
         ImGui::CloseCurrentPopup();
@@ -328,7 +369,7 @@ void error_dialog(AppContext& ctx) {
         return;
     ImGui::TextUnformatted(ctx.ui.error_title.c_str());
     ImGui::Separator();
-    ImGui::TextWrapped("%s", ctx.ui.error_message.c_str());
+    text_wrapped("%s", ctx.ui.error_message.c_str());
     ImGui::Spacing();
     // Keys count only once the dialog is up: the Enter that confirmed a file name must not
     // also dismiss the error it caused.
@@ -395,9 +436,9 @@ void help_dialog(AppContext& ctx) {
         for (const Entry& e : entries) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            ImGui::TextWrapped("%s", e.keys);
+            text_wrapped("%s", e.keys);
             ImGui::TableNextColumn();
-            ImGui::TextWrapped("%s", e.action);
+            text_wrapped("%s", e.action);
         }
         ImGui::EndTable();
     }
@@ -408,6 +449,7 @@ void help_dialog(AppContext& ctx) {
 } // namespace
 
 void draw_dialogs(AppContext& ctx) {
+    receive_uploads(ctx); // the browser's: before the dialogs they may open
     new_surface_dialog(ctx);
     file_dialog(ctx);
     unsaved_dialog(ctx);

@@ -138,7 +138,10 @@ void draw_media_export_dialog(AppContext& ctx) {
     report_item("export/directory");
     ImGui::SetNextItemWidth(-1);
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-    const bool enter = ImGui::InputText("##name", &m.name, ImGuiInputTextFlags_EnterReturnsTrue);
+    // Clicking the name selects it all: typing replaces the suggested name.
+    const bool enter =
+        ImGui::InputText("##name", &m.name,
+                         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
     report_item("file/name");
     if (!m.error.empty()) {
         ImGui::PushTextWrapPos(0.0f);

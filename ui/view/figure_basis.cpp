@@ -129,8 +129,8 @@ geom::Expected<Drawing> basis_figure(const doc::Document& d, const FigureOptions
     // The parameter the panels trace.
     const DrawStroke hair = stroke(Palette::indicator, 0.8, {3, 2});
     dr.line(m(at, 0), m(at, 1.05), hair, "indicator-line");
-    dr.text(m(at, 1.05) + glm::dvec2(0, -0.3 * fs), std::string(var) + " = " + number(at), 0.9 * fs,
-            Palette::indicator, HAlign::center, VAlign::bottom, "indicator-label");
+    dr.text(m(at, 1.05) + glm::dvec2(0.3 * fs, 0), std::string(var) + " = " + number(at), 0.9 * fs,
+            Palette::indicator, HAlign::left, VAlign::baseline, "indicator-label");
     dr.text({plot.x, plot.y + plot.h + 3.4 * fs}, "U = {" + knot_vector_text(U) + "}", 0.9 * fs,
             Palette::muted, HAlign::left, VAlign::baseline, "knot-vector");
     return dr;

@@ -8,6 +8,7 @@
 #include "core/geom/rational_picture.hpp"
 #include "ui/view/canvas_map.hpp"
 #include "ui/view/doc_access.hpp"
+#include "ui/view/label_placer.hpp"
 
 namespace isoparm::ui {
 
@@ -56,9 +57,6 @@ PageBox start_page(Drawing& d, const FigureOptions& o, const std::string& title)
 void point_labels(Drawing& d, const std::vector<glm::dvec2>& anchors,
                   const std::vector<std::string>& texts, double size, DrawColor color,
                   const std::string& role) {
-    std::vector<glm::dvec2> sizes;
-    for (const std::string& t : texts) sizes.emplace_back(approximate_text_width(t, size), size);
-    const std::vector<glm::dvec2> at = place_labels(anchors, sizes, 0.5 * size);
     // The visible part of the page: the last clip in force, else the page.
     glm::dvec2 lo(0), hi(d.width, d.height);
     for (const DrawItem& item : d.items)
@@ -66,15 +64,44 @@ void point_labels(Drawing& d, const std::vector<glm::dvec2>& anchors,
             lo = c->active() ? c->origin : glm::dvec2(0);
             hi = c->active() ? c->origin + c->size : glm::dvec2(d.width, d.height);
         }
-    for (std::size_t k = 0; k < at.size() && k < texts.size(); ++k) {
-        // A point off the page has no label; one near an edge is pushed back in.
+    // The one label placer (label_placer.hpp), measuring with the figure's font; the page's
+    // points are its pixels.
+    std::vector<LabelRequest> requests;
+    std::vector<std::size_t> which;
+    for (std::size_t k = 0; k < anchors.size() && k < texts.size(); ++k) {
+        // A point off the visible page has no label.
         if (anchors[k].x < lo.x || anchors[k].y < lo.y || anchors[k].x > hi.x ||
             anchors[k].y > hi.y)
             continue;
-        const double x = std::clamp(at[k].x, 1.0, std::max(1.0, d.width - sizes[k].x - 1));
-        const double y = std::clamp(at[k].y, lo.y + 1, std::max(lo.y + 1, hi.y - size - 1));
-        d.text({x, y + size * 0.78}, texts[k], size, color, HAlign::left, VAlign::baseline, role);
+        LabelRequest r;
+        r.anchor = glm::vec2(anchors[k]);
+        r.text = texts[k];
+        r.priority = -static_cast<int>(requests.size()); // earlier labels matter more
+        requests.push_back(std::move(r));
+        which.push_back(k);
     }
+    const MeasureText measure = [size](std::string_view text) {
+        return glm::vec2(static_cast<float>(approximate_text_width(std::string(text), size)),
+                         static_cast<float>(size * 1.15));
+    };
+    PlacerStyle style;
+    style.offset = static_cast<float>(0.45 * size);
+    style.padding = static_cast<float>(0.1 * size);
+    const Rect bounds{static_cast<float>(lo.x), static_cast<float>(lo.y),
+                      static_cast<float>(hi.x - lo.x), static_cast<float>(hi.y - lo.y)};
+    const LabelPlacement placement = place_labels(requests, bounds, measure, style);
+    for (const PlacedLabel& p : placement.placed) {
+        if (p.leader)
+            d.line(glm::dvec2(p.leader->first), glm::dvec2(p.leader->second),
+                   stroke(Palette::faint, 0.5), role + "-leader");
+        // text_at is the text's top-left; the baseline lies an ascent below it.
+        d.text({p.text_at.x, p.text_at.y + 0.9 * size}, requests[p.request].text, size, color,
+               HAlign::left, VAlign::baseline, role);
+    }
+    if (placement.more)
+        d.text({placement.more_text_at.x, placement.more_text_at.y + 0.9 * size},
+               placement.more_text, 0.8 * size, Palette::muted, HAlign::left, VAlign::baseline,
+               role + "-dropped");
 }
 
 } // namespace figure_detail

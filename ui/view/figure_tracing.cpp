@@ -113,8 +113,8 @@ geom::Expected<Drawing> tracing_figure(const doc::Document& d, const FigureOptio
                                 "} = " + number(s->weight(i, j)));
             }
         if (only_special)
-            dr.text({sq.x + sq.w, sq.y + sq.h + 3.0 * fs}, "other weights 1", 0.85 * fs,
-                    Palette::muted, HAlign::right, VAlign::baseline, "weight-note");
+            dr.text({sq.x, sq.y + sq.h + 3.0 * fs}, "other weights 1", 0.85 * fs, Palette::muted,
+                    HAlign::left, VAlign::baseline, "weight-note");
     }
     const std::size_t first = dr.items.size();
     point_labels(dr, at, texts, 0.85 * fs, Palette::muted, "weight");

@@ -242,14 +242,16 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
     for (const doc::Object& o : d.objects) {
         if (!o.visible) continue;
         const bool is_selected = o.id == d.view.selection.object;
+        // The object's own toggles (C, N, K with it selected), else the scene's defaults.
+        const doc::ObjectDisplay own = doc::display_of(d.view, o.id);
         if (const geom::Surface* s = o.surface()) {
             SurfaceDraw sd = patch_style(o.id, is_selected, shaded, wire, col, k);
             sd.surface = s;
             sd.density = disp.density;
             out.surfaces.push_back(sd);
 
-            if (disp.control_net) add_net(net, *s, to_vec4(col.control_net));
-            if (disp.control_points)
+            if (own.control_net) add_net(net, *s, to_vec4(col.control_net));
+            if (own.control_points)
                 for (int i = 0; i < s->n_u; ++i)
                     for (int j = 0; j < s->n_v; ++j) {
                         const bool sel =
@@ -258,7 +260,7 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
                         points.points.push_back(
                             {glm::vec3(s->point(i, j)), to_vec4(col.control_points)});
                     }
-            if (disp.knot_curves) {
+            if (own.knot_curves) {
                 // Knot curves S(u_k, v) and S(u, v_k); a repeated knot draws thicker.
                 for (geom::Dir dir : {geom::Dir::u, geom::Dir::v}) {
                     const geom::Interval dom = geom::domain(*s, dir);
@@ -285,6 +287,7 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
                 sd.id = o.id;
                 sd.mesh = v.mesh;
                 sd.mesh_revision = v.revision;
+                sd.implicit = im;
                 sd.seen_side = v.seen_side;
                 sd.box_lo = v.lo;
                 sd.box_hi = v.hi;
@@ -307,8 +310,8 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
                 sd.mesh_revision = v.revision;
                 out.surfaces.push_back(sd);
             }
-            if (disp.control_net) add_triangle_net(net, *t, to_vec4(col.control_net));
-            if (disp.control_points)
+            if (own.control_net) add_triangle_net(net, *t, to_vec4(col.control_net));
+            if (own.control_points)
                 for (int i = 0; i <= t->degree; ++i)
                     for (int j = 0; i + j <= t->degree; ++j)
                         if (!(is_selected && d.view.selection.i == i && d.view.selection.j == j))
@@ -323,12 +326,12 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
                             : readable_on(glm::mix(to_vec4(col.surface), glm::vec4(1), 0.6f),
                                           background, line_contrast);
             Overlay::add_polyline(curves, curve_polyline(*c, 200), cc);
-            if (disp.control_net) {
+            if (own.control_net) {
                 std::vector<glm::vec3> poly;
                 for (const glm::dvec3& p : c->points) poly.emplace_back(p);
                 Overlay::add_polyline(net, poly, to_vec4(col.control_net));
             }
-            if (disp.control_points)
+            if (own.control_points)
                 for (int i = 0; i < c->count(); ++i)
                     if (!(is_selected && d.view.selection.i == i))
                         points.points.push_back(
@@ -336,8 +339,10 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
         }
     }
 
-    // The selected control point: larger, in its own colour, always visible.
-    if (disp.control_points && has_valid_point(d)) {
+    // The selected control point: larger, in its own colour, always visible (unless its object
+    // is hidden, or shows no points).
+    if (has_valid_point(d) && d.selected()->visible &&
+        doc::display_of(d.view, d.view.selection.object).control_points) {
         const doc::Object* o = d.selected();
         glm::dvec3 p{0};
         if (const geom::Surface* s = o->surface())
@@ -349,6 +354,9 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
                                                      d.view.selection.j)];
         selected.points.push_back({glm::vec3(p), to_vec4(col.selected_point)});
     }
+    if (disp.control_points)
+        for (const glm::dvec3& p : style.also_selected)
+            selected.points.push_back({glm::vec3(p), to_vec4(col.selected_point)});
 
     // The indicator: S(u,v) as a small sphere, with the two isoparametric curves through it.
     LineBatch iso{{}, 1.6f * k, true};
@@ -366,7 +374,8 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
             indicator.points.push_back({glm::vec3(*p), ic});
     } else if (disp.indicator_point) {
         const doc::Object* current = nullptr;
-        if (const geom::Surface* s = current_surface(d, &current)) {
+        // A hidden surface draws nothing, its indicator included.
+        if (const geom::Surface* s = current_surface(d, &current); s && current->visible) {
             const glm::dvec2 uv = indicator_params(d, *current);
             const glm::vec4 ic = to_vec4(col.indicator);
             for (const auto& piece : iso_curve(*s, geom::Dir::u, uv.x, 97))
@@ -395,7 +404,7 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
         add_triangle_de_casteljau(*sel_triangle, d.view.barycentric, style.deboor_step, k, deboor);
     } else if (disp.deboor) {
         const doc::Object* current = nullptr;
-        if (const geom::Surface* s = current_surface(d, &current)) {
+        if (const geom::Surface* s = current_surface(d, &current); s && current->visible) {
             const glm::dvec2 uv = indicator_params(d, *current);
             add_deboor_overlay(geom::deboor_surface(*s, uv.x, uv.y), s->degree_u, s->degree_v,
                                style.deboor_step, k, deboor);
@@ -404,6 +413,25 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
 
     LineBatch borders{{}, 5.0f * k, true};
     if (style.border_continuity) add_borders(borders, d);
+
+    // The working plane's grid, under everything (depth-tested, faint where hidden).
+    LineBatch grid{{}, 1.0f * k, true};
+    if (style.working_grid && style.grid_step > 0 && style.grid_lines > 0) {
+        const double step = style.grid_step;
+        const int n = style.grid_lines;
+        const glm::dvec2 c = glm::round(style.grid_centre / step) * step;
+        const glm::vec4 minor(0.55f, 0.58f, 0.65f, 0.28f), major(0.62f, 0.66f, 0.74f, 0.55f);
+        for (int q = -n; q <= n; ++q) {
+            const glm::dvec2 at = c + static_cast<double>(q) * step;
+            const glm::vec4 cx = std::llround(at.x / step) % 5 == 0 ? major : minor;
+            const glm::vec4 cy = std::llround(at.y / step) % 5 == 0 ? major : minor;
+            grid.vertices.push_back({glm::vec3(at.x, c.y - n * step, 0), cx});
+            grid.vertices.push_back({glm::vec3(at.x, c.y + n * step, 0), cx});
+            grid.vertices.push_back({glm::vec3(c.x - n * step, at.y, 0), cy});
+            grid.vertices.push_back({glm::vec3(c.x + n * step, at.y, 0), cy});
+        }
+        out.overlay.lines.push_back(std::move(grid));
+    }
 
     for (LineBatch* b :
          {&knots, &knots_double, &knots_full, &curves, &net, &box, &iso, &guide, &borders})

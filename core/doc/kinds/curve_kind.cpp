@@ -135,12 +135,20 @@ std::optional<Box> bounds(const CurveObject& c) {
     return detail::box_of(c.curve.points);
 }
 
+void translate(CurveObject& c, const glm::dvec3& d) {
+    for (glm::dvec3& p : control_points(c)) p += d;
+}
+
 ExactForm exact_form(const CurveObject& c) {
     return c.curve;
 }
 
 geom::Expected<MeshForm> mesh_form(const CurveObject&, int) {
     return MeshForm{NoForm{"a curve has no mesh (export IGES, STEP or OBJ free-form)"}};
+}
+
+double mesh_vertices(const CurveObject&, int) {
+    return 0; // no mesh (mesh_form)
 }
 
 std::size_t heap_bytes(const CurveObject& c) {

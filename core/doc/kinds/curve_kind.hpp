@@ -50,6 +50,7 @@ struct CurveObject {
     static constexpr ObjectKind kind = ObjectKind::curve;
     static constexpr std::array<std::string_view, 3> shape_members{"plane", "knot_mode", "curve"};
     static constexpr bool in_patch_groups = false;
+    static constexpr bool constructed = true; // a recipe builds curves (isocurves)
 };
 
 geom::Expected<CurveObject> read_kind(std::type_identity<CurveObject>, const nlohmann::json& j,
@@ -68,8 +69,10 @@ geom::Expected<std::size_t> point_index(const CurveObject& c, int i, int j);
 std::string point_label(const CurveObject& c, PointName name, int i, int j);
 std::string unit_weights_rule(const CurveObject& c);
 std::optional<Box> bounds(const CurveObject& c);
+void translate(CurveObject& c, const glm::dvec3& d);
 ExactForm exact_form(const CurveObject& c);
 geom::Expected<MeshForm> mesh_form(const CurveObject& c, int samples);
+double mesh_vertices(const CurveObject& c, int samples);
 std::size_t heap_bytes(const CurveObject& c);
 bool same_bits(const CurveObject& a, const CurveObject& b);
 

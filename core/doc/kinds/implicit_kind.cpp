@@ -2,6 +2,7 @@
 // the polygonized mesh as its export form.
 #include "core/doc/kinds/implicit_kind.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -244,6 +245,44 @@ std::optional<Box> bounds(const ImplicitObject& f) {
     return Box{f.lo, f.hi};
 }
 
+void translate(ImplicitObject& f, const glm::dvec3& d) {
+    f = translated(f, d);
+}
+
+ImplicitObject translated(const ImplicitObject& f, const glm::dvec3& d) {
+    ImplicitObject out = f;
+    out.lo += d;
+    out.hi += d;
+    // Identifiers are whole words: "exp" keeps its x, a parameter "xa" is not x.
+    const std::string& e = f.expression;
+    std::string r;
+    std::size_t k = 0;
+    auto ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    while (k < e.size()) {
+        if (!ident(e[k])) {
+            r += e[k++];
+            continue;
+        }
+        std::size_t end = k;
+        while (end < e.size() && ident(e[end])) ++end;
+        const std::string word = e.substr(k, end - k);
+        const bool number = std::isdigit(static_cast<unsigned char>(word[0])) != 0;
+        const int axis = word == "x" ? 0 : word == "y" ? 1 : word == "z" ? 2 : -1;
+        if (!number && axis >= 0 && d[axis] != 0)
+            r += "(" + word + (d[axis] > 0 ? " - " : " + ") +
+                 geom::format_number(std::abs(d[axis])) + ")";
+        else
+            r += word;
+        // A number's exponent (1e-3) is one token with its sign: copy it as it is.
+        k = end;
+        if (number && k < e.size() && (e[k] == '-' || e[k] == '+') &&
+            (r.back() == 'e' || r.back() == 'E'))
+            r += e[k++];
+    }
+    out.expression = r;
+    return out;
+}
+
 ExactForm exact_form(const ImplicitObject&) {
     return NoForm{"an implicit surface has no exact form (export a mesh: STL, PLY, glTF or OBJ "
                   "mesh)"};
@@ -263,6 +302,10 @@ geom::Expected<MeshForm> mesh_form(const ImplicitObject& f, int) {
     if (mesh->triangles.empty())
         return MeshForm{NoForm{"the implicit surface was not found in its box"}};
     return MeshForm{std::move(mesh).value()};
+}
+
+double mesh_vertices(const ImplicitObject&, int) {
+    return 0; // its polygonizer keeps its own budget (cells, triangles)
 }
 
 std::size_t heap_bytes(const ImplicitObject& f) {

@@ -19,6 +19,7 @@ struct ImplicitObject {
     static constexpr ObjectKind kind = ObjectKind::implicit;
     static constexpr std::array<std::string_view, 1> shape_members{"implicit"};
     static constexpr bool in_patch_groups = false;
+    static constexpr bool constructed = false;
 };
 
 geom::Expected<ImplicitObject> read_kind(std::type_identity<ImplicitObject>,
@@ -38,11 +39,19 @@ geom::Expected<std::size_t> point_index(const ImplicitObject& f, int i, int j);
 std::string point_label(const ImplicitObject& f, PointName name, int i, int j);
 std::string unit_weights_rule(const ImplicitObject& f);
 std::optional<Box> bounds(const ImplicitObject& f);
+// Moved with its formula (in absolute coordinates: moving its box alone would cut the field):
+// its box moves by d and x, y, z become (x - d.x), ... (translated).
+void translate(ImplicitObject& f, const glm::dvec3& d);
 ExactForm exact_form(const ImplicitObject& f);
 geom::Expected<MeshForm> mesh_form(const ImplicitObject& f, int samples);
+double mesh_vertices(const ImplicitObject& f, int samples);
 std::size_t heap_bytes(const ImplicitObject& f);
 bool same_bits(const ImplicitObject& a, const ImplicitObject& b);
 
 static_assert(KindFacts<ImplicitObject>);
+
+// An implicit surface moved by d: its box moved and every x, y, z of its expression replaced
+// by (x - d.x), (y - d.y), (z - d.z) (a zero component leaves its coordinate as it is).
+ImplicitObject translated(const ImplicitObject& f, const glm::dvec3& d);
 
 } // namespace isoparm::doc

@@ -77,14 +77,16 @@ template <class... F> overloaded(F...) -> overloaded<F...>;
 
 // Every fact a kind K answers. `K::kind` is its ObjectKind; `K::shape_members` the members of
 // its JSON form beside "kind" (one is its geometry, named as the kind: "surface": {...});
-// `K::in_patch_groups` whether its objects may carry "patch_group" (subpatches).
+// `K::in_patch_groups` whether its objects may carry "patch_group" (subpatches);
+// `K::constructed` whether a recipe builds objects of the kind (they may carry "construction").
 template <class K>
 concept KindFacts = requires(K& k, const K& c, int i, int j, PointName name, int samples,
                              const nlohmann::json& json, nlohmann::json& out,
-                             const std::string& at) {
+                             const std::string& at, const glm::dvec3& d) {
     { K::kind } -> std::convertible_to<ObjectKind>;
     { K::shape_members } -> std::convertible_to<std::span<const std::string_view>>;
     { K::in_patch_groups } -> std::convertible_to<bool>;
+    { K::constructed } -> std::convertible_to<bool>;
     // JSON: the kind's members (json: the object or shape holding them, at: its path) in
     // both directions, and a selected control point ("point": [i, j] or [i]).
     { read_kind(std::type_identity<K>{}, json, at) } -> std::same_as<geom::Expected<K>>;
@@ -108,9 +110,14 @@ concept KindFacts = requires(K& k, const K& c, int i, int j, PointName name, int
     // Why a weight other than 1 is refused here (a non-rational object keeps unit weights).
     { unit_weights_rule(c) } -> std::same_as<std::string>;
     { bounds(c) } -> std::same_as<std::optional<Box>>;
+    // The object moved by d (a new object placed beside the scene).
+    { translate(k, d) } -> std::same_as<void>;
     { exact_form(c) } -> std::same_as<ExactForm>;
     // samples: points along each edge of a surface's tessellation.
     { mesh_form(c, samples) } -> std::same_as<geom::Expected<MeshForm>>;
+    // The vertices its mesh form takes at `samples`, known before tessellating (an export's
+    // memory budget); 0 for a kind without a mesh or with its own budget.
+    { mesh_vertices(c, samples) } -> std::same_as<double>;
     // Approximate heap bytes, for the history's memory bound; and bit-for-bit equality.
     { heap_bytes(c) } -> std::same_as<std::size_t>;
     { same_bits(c, c) } -> std::same_as<bool>;

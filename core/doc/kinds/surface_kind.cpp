@@ -108,12 +108,21 @@ std::optional<Box> bounds(const SurfaceObject& s) {
     return detail::box_of(s.surface.points);
 }
 
+void translate(SurfaceObject& s, const glm::dvec3& d) {
+    for (glm::dvec3& p : control_points(s)) p += d;
+}
+
 ExactForm exact_form(const SurfaceObject& s) {
     return s.surface;
 }
 
 geom::Expected<MeshForm> mesh_form(const SurfaceObject& s, int samples) {
     return MeshForm{geom::tessellate(s.surface, samples, samples)};
+}
+
+// A samples x samples grid.
+double mesh_vertices(const SurfaceObject&, int samples) {
+    return double(samples) * samples;
 }
 
 std::size_t heap_bytes(const SurfaceObject& s) {

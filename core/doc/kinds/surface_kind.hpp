@@ -14,6 +14,7 @@ struct SurfaceObject {
     static constexpr ObjectKind kind = ObjectKind::surface;
     static constexpr std::array<std::string_view, 1> shape_members{"surface"};
     static constexpr bool in_patch_groups = true; // split surfaces share a domain
+    static constexpr bool constructed = true; // a recipe builds surfaces
 };
 
 geom::Expected<SurfaceObject> read_kind(std::type_identity<SurfaceObject>, const nlohmann::json& j,
@@ -33,8 +34,10 @@ geom::Expected<std::size_t> point_index(const SurfaceObject& s, int i, int j);
 std::string point_label(const SurfaceObject& s, PointName name, int i, int j);
 std::string unit_weights_rule(const SurfaceObject& s);
 std::optional<Box> bounds(const SurfaceObject& s);
+void translate(SurfaceObject& s, const glm::dvec3& d);
 ExactForm exact_form(const SurfaceObject& s);
 geom::Expected<MeshForm> mesh_form(const SurfaceObject& s, int samples);
+double mesh_vertices(const SurfaceObject& s, int samples);
 std::size_t heap_bytes(const SurfaceObject& s);
 bool same_bits(const SurfaceObject& a, const SurfaceObject& b);
 

@@ -107,6 +107,10 @@ std::optional<Box> bounds(const TriangleObject& t) {
     return detail::box_of(t.patch.points);
 }
 
+void translate(TriangleObject& t, const glm::dvec3& d) {
+    for (glm::dvec3& p : control_points(t)) p += d;
+}
+
 ExactForm exact_form(const TriangleObject&) {
     return NoForm{"IGES, STEP and OBJ free-form have no triangular Bezier patch (export a mesh: "
                   "STL, PLY, glTF or OBJ mesh)"};
@@ -115,6 +119,11 @@ ExactForm exact_form(const TriangleObject&) {
 // `samples` points along each edge: (samples - 1)^2 triangles.
 geom::Expected<MeshForm> mesh_form(const TriangleObject& t, int samples) {
     return MeshForm{geom::tessellate_triangle(t.patch, samples - 1)};
+}
+
+// samples points along each edge: samples (samples + 1) / 2 in the triangle.
+double mesh_vertices(const TriangleObject&, int samples) {
+    return double(samples) * (samples + 1) / 2;
 }
 
 std::size_t heap_bytes(const TriangleObject& t) {

@@ -16,6 +16,7 @@ struct TriangleObject {
     static constexpr ObjectKind kind = ObjectKind::triangle;
     static constexpr std::array<std::string_view, 1> shape_members{"triangle"};
     static constexpr bool in_patch_groups = false;
+    static constexpr bool constructed = false;
 };
 
 geom::Expected<TriangleObject> read_kind(std::type_identity<TriangleObject>,
@@ -35,8 +36,10 @@ geom::Expected<std::size_t> point_index(const TriangleObject& t, int i, int j);
 std::string point_label(const TriangleObject& t, PointName name, int i, int j);
 std::string unit_weights_rule(const TriangleObject& t);
 std::optional<Box> bounds(const TriangleObject& t);
+void translate(TriangleObject& t, const glm::dvec3& d);
 ExactForm exact_form(const TriangleObject& t);
 geom::Expected<MeshForm> mesh_form(const TriangleObject& t, int samples);
+double mesh_vertices(const TriangleObject& t, int samples);
 std::size_t heap_bytes(const TriangleObject& t);
 bool same_bits(const TriangleObject& a, const TriangleObject& b);
 
