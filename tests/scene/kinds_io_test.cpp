@@ -49,10 +49,11 @@ TEST(KindsIo, EachKindAllowsItsOwnMembersAndNamesItselfInTheRefusal) {
     auto ball = with(ball_id, "patch_group");
     ASSERT_FALSE(ball.ok());
     EXPECT_NE(ball.error().message.find("in an implicit object"), std::string::npos);
-    // A surface may be a subpatch (patch_group), a curve may not.
+    // A surface may be a subpatch (patch_group), a curve may not; both may be constructed.
     EXPECT_NE(with(curve_id, "patch_group")
                   .error()
-                  .message.find("(allowed: id, name, kind, visible, plane, knot_mode, curve)"),
+                  .message.find(
+                      "(allowed: id, name, kind, visible, plane, knot_mode, curve, construction)"),
               std::string::npos);
     EXPECT_TRUE(with(hill_id, "patch_group").ok());
     nlohmann::json shape = scene::shape_to_json(doc.find(hill_id)->shape);
