@@ -201,10 +201,10 @@ geom::Expected<geom::Surface> construct_surface(const ConstructionRequest& reque
         if (!r) return rehome(r.error(), objects);
         surface = std::move(r->skinned.surface);
         note = "oriented sweep of " + std::to_string(r->sections + 1) +
-                   " profile copies: largest deviation from the ideal sweep " +
-                   geom::format_short(r->max_deviation) + " at (u, v) = (" +
-                   geom::format_short(r->deviation_u) + ", " + geom::format_short(r->deviation_v) +
-                   "); more sections make it smaller";
+               " profile copies: largest deviation from the ideal sweep " +
+               geom::format_short(r->max_deviation) + " at (u, v) = (" +
+               geom::format_short(r->deviation_u) + ", " + geom::format_short(r->deviation_v) +
+               "); more sections make it smaller";
         break;
     }
     case Construction::skin: {
@@ -221,8 +221,8 @@ geom::Expected<geom::Surface> construct_surface(const ConstructionRequest& reque
         if (!r) return rehome(r.error(), objects);
         surface = std::move(r->surface);
         note = std::string("skin of ") + std::to_string(count) + " curves, v-degree " +
-                   std::to_string(degree) + ", " +
-                   geom::parametrization_name(request.parametrization) + " parameters v =";
+               std::to_string(degree) + ", " + geom::parametrization_name(request.parametrization) +
+               " parameters v =";
         for (double v : r->params) note += " " + geom::format_short(v);
         break;
     }
@@ -231,7 +231,7 @@ geom::Expected<geom::Surface> construct_surface(const ConstructionRequest& reque
         if (!r) return rehome(r.error(), objects);
         surface = std::move(r).value();
         note = "Coons patch: the ruled surfaces between opposite boundaries, added, minus "
-                   "the bilinear patch of the corners; it keeps all four boundaries exactly";
+               "the bilinear patch of the corners; it keeps all four boundaries exactly";
         break;
     }
     case Construction::isocurve: // built by build_isocurve

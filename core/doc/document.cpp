@@ -17,13 +17,21 @@ ObjectKind kind_of(const Shape& shape) {
     return std::visit([](const auto& k) { return std::decay_t<decltype(k)>::kind; }, shape);
 }
 
+namespace {
+
+// The kind K's part `member` of the shape, or nullptr when the shape is of another kind.
+template <class K, class Part, class S> auto* part_of(S& shape, Part K::*member) {
+    auto* k = std::get_if<K>(&shape);
+    return k ? &(k->*member) : nullptr;
+}
+
+} // namespace
+
 geom::Surface* surface_of(Shape& shape) {
-    auto* s = std::get_if<SurfaceObject>(&shape);
-    return s ? &s->surface : nullptr;
+    return part_of(shape, &SurfaceObject::surface);
 }
 const geom::Surface* surface_of(const Shape& shape) {
-    const auto* s = std::get_if<SurfaceObject>(&shape);
-    return s ? &s->surface : nullptr;
+    return part_of(shape, &SurfaceObject::surface);
 }
 CurveObject* curve_object_of(Shape& shape) {
     return std::get_if<CurveObject>(&shape);
@@ -32,12 +40,10 @@ const CurveObject* curve_object_of(const Shape& shape) {
     return std::get_if<CurveObject>(&shape);
 }
 geom::Curve* curve_of(Shape& shape) {
-    auto* c = std::get_if<CurveObject>(&shape);
-    return c ? &c->curve : nullptr;
+    return part_of(shape, &CurveObject::curve);
 }
 const geom::Curve* curve_of(const Shape& shape) {
-    const auto* c = std::get_if<CurveObject>(&shape);
-    return c ? &c->curve : nullptr;
+    return part_of(shape, &CurveObject::curve);
 }
 ImplicitObject* implicit_of(Shape& shape) {
     return std::get_if<ImplicitObject>(&shape);
@@ -46,12 +52,10 @@ const ImplicitObject* implicit_of(const Shape& shape) {
     return std::get_if<ImplicitObject>(&shape);
 }
 geom::TrianglePatch* triangle_of(Shape& shape) {
-    auto* t = std::get_if<TriangleObject>(&shape);
-    return t ? &t->patch : nullptr;
+    return part_of(shape, &TriangleObject::patch);
 }
 const geom::TrianglePatch* triangle_of(const Shape& shape) {
-    const auto* t = std::get_if<TriangleObject>(&shape);
-    return t ? &t->patch : nullptr;
+    return part_of(shape, &TriangleObject::patch);
 }
 
 std::span<glm::dvec3> control_points_of(Shape& shape) {

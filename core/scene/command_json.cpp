@@ -381,29 +381,21 @@ template <> struct Form<SetColorsSpec> {
     }
     static json write(const SetColorsSpec& s) { return {{"colors", colors_to_json(s.colors)}}; }
 };
-template <> struct Form<InsertCurvePointSpec> {
+// insert_curve_point and move_curve_point: a curve's point i and a position.
+template <class Spec> struct CurvePointForm {
     static constexpr std::string_view members[]{"id", "i", "position"};
-    static InsertCurvePointSpec read(Members& m) {
-        return {m.id("id"), m.integer("i"), m.point("position")};
-    }
-    static json write(const InsertCurvePointSpec& s) {
+    static Spec read(Members& m) { return {m.id("id"), m.integer("i"), m.point("position")}; }
+    static json write(const Spec& s) {
         return {{"id", s.id}, {"i", s.i}, {"position", point_to_json(s.position)}};
     }
 };
+template <> struct Form<InsertCurvePointSpec> : CurvePointForm<InsertCurvePointSpec> {};
 template <> struct Form<DeleteCurvePointSpec> {
     static constexpr std::string_view members[]{"id", "i"};
     static DeleteCurvePointSpec read(Members& m) { return {m.id("id"), m.integer("i")}; }
     static json write(const DeleteCurvePointSpec& s) { return {{"id", s.id}, {"i", s.i}}; }
 };
-template <> struct Form<MoveCurvePointSpec> {
-    static constexpr std::string_view members[]{"id", "i", "position"};
-    static MoveCurvePointSpec read(Members& m) {
-        return {m.id("id"), m.integer("i"), m.point("position")};
-    }
-    static json write(const MoveCurvePointSpec& s) {
-        return {{"id", s.id}, {"i", s.i}, {"position", point_to_json(s.position)}};
-    }
-};
+template <> struct Form<MoveCurvePointSpec> : CurvePointForm<MoveCurvePointSpec> {};
 template <> struct Form<SetCurveDegreeSpec> {
     static constexpr std::string_view members[]{"id", "degree"};
     static SetCurveDegreeSpec read(Members& m) { return {m.id("id"), m.integer("degree")}; }

@@ -109,18 +109,22 @@ Expected<Rgba> read_color(const json& v, const std::string& at) {
 // ---------------------------------------------------------------------------------------
 // Objects.
 
+// A name of E's table ("style": "shaded"); anything else is refused with the table's names.
+template <class E> Expected<E> read_named(const json& v, const std::string& at, const char* what) {
+    auto s = read_string(v, at, what);
+    if (!s) return s.error();
+    const std::optional<E> named = geom::parse_name<E>(*s);
+    if (!named)
+        return schema_error(
+            std::string(what) + " must be " + geom::names_list<E>() + ", got '" + *s + "'", at);
+    return *named;
+}
+
 // The kind a scene object or a command's shape names ("/kind" under at).
 Expected<ObjectKind> read_kind_name(const json& j, const std::string& at) {
     const auto kind_it = j.find("kind");
     if (kind_it == j.end()) return missing_member(at, "kind");
-    auto kind = read_string(*kind_it, at + "/kind", "kind");
-    if (!kind) return kind.error();
-    const std::optional<ObjectKind> named = geom::parse_name<ObjectKind>(*kind);
-    if (!named)
-        return schema_error("kind must be " + geom::names_list<ObjectKind>() + ", got '" + *kind +
-                                "'",
-                            at + "/kind");
-    return *named;
+    return read_named<ObjectKind>(*kind_it, at + "/kind", "kind");
 }
 
 // The members a scene object (`object`) or a command's shape of this kind may have, and how
@@ -281,13 +285,8 @@ Expected<DisplaySettings> display_from_json(const json& j, const std::string& at
     for (const auto& item : j.items()) {
         const std::string mat = member_path(at, item.key());
         if (item.key() == "style") {
-            auto s = read_string(item.value(), mat, "style");
-            if (!s) return s.error();
-            const std::optional<DisplayStyle> style = geom::parse_name<DisplayStyle>(*s);
-            if (!style)
-                return schema_error("style must be " + geom::names_list<DisplayStyle>() +
-                                        ", got '" + *s + "'",
-                                    mat);
+            auto style = read_named<DisplayStyle>(item.value(), mat, "style");
+            if (!style) return style.error();
             d.style = *style;
             continue;
         }
@@ -298,13 +297,8 @@ Expected<DisplaySettings> display_from_json(const json& j, const std::string& at
             continue;
         }
         if (item.key() == "analysis") {
-            auto a = read_string(item.value(), mat, "analysis");
-            if (!a) return a.error();
-            const std::optional<AnalysisMode> mode = geom::parse_name<AnalysisMode>(*a);
-            if (!mode)
-                return schema_error("analysis must be " + geom::names_list<AnalysisMode>() +
-                                        ", got '" + *a + "'",
-                                    mat);
+            auto mode = read_named<AnalysisMode>(item.value(), mat, "analysis");
+            if (!mode) return mode.error();
             d.analysis = *mode;
             continue;
         }
@@ -497,10 +491,11 @@ json scene_to_json(const Document& doc) {
     return scene;
 }
 
-Expected<Document> scene_from_json(const json& j) {
-    if (!j.is_object())
-        return schema_error(std::string("a scene is a JSON object, got ") + type_name(j), "");
-    // Format and version first: a newer file may well have members this version lacks.
+namespace {
+
+// The scene's format version, after its format: checked first, since a newer file may well have
+// members this version lacks.
+Expected<std::int64_t> scene_version(const json& j) {
     const auto format = j.find("format");
     if (format == j.end())
         return schema_error("missing member 'format' (an isoparm scene has \"format\": \"" +
@@ -524,13 +519,15 @@ Expected<Document> scene_from_json(const json& j) {
                             "/version");
     if (*v < 1)
         return schema_error("version must be at least 1, got " + std::to_string(*v), "/version");
-    if (auto st = check_members(j, "", "a scene",
-                                {"format", "version", "objects", "colors", "display", "selection",
-                                 "indicator", "barycentric", "continuity", "next_id"});
-        !st)
-        return st.error();
+    return *v;
+}
 
-    Document doc;
+// An object's own display toggles, read after the scene's (object index, its JSON).
+using OwnDisplays = std::vector<std::pair<std::size_t, const json*>>;
+
+// The objects, with fresh ids for those written without one, and next_id.
+geom::Status read_scene_objects(const json& j, std::int64_t version, Document& doc,
+                                OwnDisplays& own_displays) {
     const auto objects = j.find("objects");
     if (objects == j.end()) return missing_member("", "objects");
     if (!objects->is_array())
@@ -542,16 +539,15 @@ Expected<Document> scene_from_json(const json& j) {
                               " objects, got " + std::to_string(objects->size()),
                           "/objects");
     std::set<std::uint64_t> ids;
-    std::vector<std::pair<std::size_t, const json*>> own_displays; // object index, its display
     for (std::size_t k = 0; k < objects->size(); ++k) {
         const std::string at = "/objects/" + std::to_string(k);
         const json& oj = (*objects)[k];
         // An object's own display is view state, not geometry: read apart (version 2).
         const bool own = oj.is_object() && oj.contains("display");
-        if (own && *v < 2)
+        if (own && version < 2)
             return schema_error("an object's display needs format version 2, this scene says "
                                 "version " +
-                                    std::to_string(*v),
+                                    std::to_string(version),
                                 at + "/display");
         if (own) own_displays.emplace_back(k, &oj.at("display"));
         auto o = own ? object_from_json(without_display(oj), at) : object_from_json(oj, at);
@@ -572,7 +568,11 @@ Expected<Document> scene_from_json(const json& j) {
         if (!v) return v.error();
         doc.next_id = static_cast<std::uint64_t>(*v);
     }
+    return geom::Ok{};
+}
 
+// Colours, display settings (the scene's, then each object's own), selection and continuity.
+geom::Status read_scene_settings(const json& j, Document& doc, const OwnDisplays& own_displays) {
     if (const auto c = j.find("colors"); c != j.end()) {
         auto colors = colors_from_json(*c, "/colors", doc.colors);
         if (!colors) return colors.error();
@@ -599,13 +599,16 @@ Expected<Document> scene_from_json(const json& j) {
         if (!continuity) return continuity.error();
         doc.continuity = *continuity;
     }
-    if (auto e = check_patch_groups(doc)) return *e;
-    // Each recipe's inputs exist, are of the kind it reads, and no recipe reads itself.
-    if (*v < 2)
+    return geom::Ok{};
+}
+
+// Each recipe's inputs exist, are of the kind it reads, and no recipe reads itself.
+geom::Status check_scene_constructions(const Document& doc, std::int64_t version) {
+    if (version < 2)
         for (std::size_t k = 0; k < doc.objects.size(); ++k)
             if (doc.objects[k].construction)
                 return schema_error("construction needs scene format version 2 (this scene says " +
-                                        std::to_string(*v) + ")",
+                                        std::to_string(version) + ")",
                                     "/objects/" + std::to_string(k) + "/construction");
     for (std::size_t k = 0; k < doc.objects.size(); ++k) {
         const Object& o = doc.objects[k];
@@ -613,6 +616,28 @@ Expected<Document> scene_from_json(const json& j) {
         if (auto st = check_recipe_links(doc, o.id, o, *o.construction); !st)
             return st.error().under("/objects/" + std::to_string(k));
     }
+    return geom::Ok{};
+}
+
+} // namespace
+
+Expected<Document> scene_from_json(const json& j) {
+    if (!j.is_object())
+        return schema_error(std::string("a scene is a JSON object, got ") + type_name(j), "");
+    const auto v = scene_version(j);
+    if (!v) return v.error();
+    if (auto st = check_members(j, "", "a scene",
+                                {"format", "version", "objects", "colors", "display", "selection",
+                                 "indicator", "barycentric", "continuity", "next_id"});
+        !st)
+        return st.error();
+
+    Document doc;
+    OwnDisplays own_displays;
+    if (auto st = read_scene_objects(j, *v, doc, own_displays); !st) return st.error();
+    if (auto st = read_scene_settings(j, doc, own_displays); !st) return st.error();
+    if (auto e = check_patch_groups(doc)) return *e;
+    if (auto st = check_scene_constructions(doc, *v); !st) return st.error();
     if (const auto ind = j.find("indicator"); ind != j.end()) {
         auto uv = indicator_from_json(*ind, "/indicator");
         if (!uv) return uv.error();

@@ -10,7 +10,7 @@
 #include "core/doc/patches.hpp"
 #include "core/geom/work_budget.hpp"
 #include "core/json/fields.hpp"
-#include "core/json/input_file.hpp"
+#include "core/json/json_file.hpp"
 #include "core/json/reader.hpp"
 #include "core/json/shapes.hpp"
 #include "core/scene/command_json.hpp"
@@ -148,6 +148,172 @@ Expected<CameraStep> read_camera(const json& v, const std::string& at) {
     return c;
 }
 
+// A number member of an animate step, left as it is when absent.
+geom::Status optional_number(const json& v, const std::string& at, std::string_view name,
+                             double& out) {
+    const json* x = find_member(v, name);
+    if (!x) return geom::Ok{};
+    auto r = read_finite(*x, member_path(at, name), name);
+    if (!r) return r.error();
+    out = *r;
+    return geom::Ok{};
+}
+
+// A point [u, v] of the domain square, left as it is when absent.
+geom::Status optional_uv(const json& v, const std::string& at, std::string_view name,
+                         glm::dvec2& out) {
+    const json* x = find_member(v, name);
+    if (!x) return geom::Ok{};
+    auto r = indicator_from_json(*x, member_path(at, name));
+    if (!r) return r.error();
+    out = *r;
+    return geom::Ok{};
+}
+
+// What an animation moves, as named ("weight", "knot", ...) with its JSON `k` at `kat`.
+struct AnimatedMember {
+    std::string_view kind;
+    const json& k;
+    std::string kat;
+};
+
+// The object an animation moves ({"object": id, ...}), its members checked.
+geom::Status read_animated_object(const AnimatedMember& m,
+                                  std::initializer_list<std::string_view> members,
+                                  doc::AnimationTarget& t) {
+    if (auto st = expect_object(m.k, m.kat, std::string(m.kind)); !st) return st;
+    if (auto st = check_members(m.k, m.kat, std::string(m.kind), members); !st) return st;
+    const json* id = find_member(m.k, "object");
+    if (!id) return missing_member(m.kat, "object");
+    auto n = read_integer(*id, member_path(m.kat, "object"), "an object id", 1,
+                          static_cast<std::int64_t>(max_object_id));
+    if (!n) return n.error();
+    t.object = static_cast<std::uint64_t>(*n);
+    return geom::Ok{};
+}
+
+// {"object": 1, "point": [i, j] or [i]}: a control point's weight, 0 to 5 unless told.
+geom::Status read_weight_target(const AnimatedMember& m, doc::AnimationTarget& t) {
+    t.kind = doc::AnimatedKind::weight;
+    if (auto st = read_animated_object(m, {"object", "point"}, t); !st) return st;
+    const json* point = find_member(m.k, "point");
+    if (!point) return missing_member(m.kat, "point");
+    const std::string pat = member_path(m.kat, "point");
+    if (!point->is_array() || point->empty() || point->size() > 2)
+        return schema_error("point is [i, j] (a surface's or triangle's) or [i] (a curve's)", pat);
+    for (std::size_t c = 0; c < point->size(); ++c) {
+        auto x = read_integer((*point)[c], pat + "/" + std::to_string(c), "a control point index",
+                              0, INT_MAX);
+        if (!x) return x.error();
+        (c == 0 ? t.i : t.j) = static_cast<int>(*x);
+    }
+    t.from = 0;
+    t.to = 5;
+    return geom::Ok{};
+}
+
+// A knot and a parameter have no natural range: the step says from and to.
+geom::Status need_range(const json& v, const std::string& at) {
+    if (!find_member(v, "from")) return missing_member(at, "from");
+    if (!find_member(v, "to")) return missing_member(at, "to");
+    return geom::Ok{};
+}
+
+// {"object": 1, "direction": "u", "k": 4}: knot k along a direction.
+geom::Status read_knot_target(const AnimatedMember& m, doc::AnimationTarget& t) {
+    t.kind = doc::AnimatedKind::knot;
+    if (auto st = read_animated_object(m, {"object", "direction", "k"}, t); !st) return st;
+    if (const json* d = find_member(m.k, "direction")) {
+        const auto dir = enum_value<geom::Dir>(*d);
+        if (!dir) return schema_error("direction must be u or v", member_path(m.kat, "direction"));
+        t.dir = *dir;
+    }
+    const json* idx = find_member(m.k, "k");
+    if (!idx) return missing_member(m.kat, "k");
+    auto x = read_integer(*idx, member_path(m.kat, "k"), "a knot index", 0, INT_MAX);
+    if (!x) return x.error();
+    t.k = static_cast<int>(*x);
+    return geom::Ok{};
+}
+
+// {"object": 1, "name": "a"}: an implicit surface's parameter.
+geom::Status read_parameter_target(const AnimatedMember& m, doc::AnimationTarget& t) {
+    t.kind = doc::AnimatedKind::implicit_parameter;
+    if (auto st = read_animated_object(m, {"object", "name"}, t); !st) return st;
+    const json* name = find_member(m.k, "name");
+    if (!name) return missing_member(m.kat, "name");
+    auto n = read_string(*name, member_path(m.kat, "name"), "name");
+    if (!n) return n.error();
+    t.parameter = *n;
+    return geom::Ok{};
+}
+
+// "line" from [u, v] to [u, v], or "circle" about a centre with a radius.
+geom::Status read_indicator_target(const json& v, const std::string& at, bool circle,
+                                   doc::AnimationTarget& t) {
+    t.kind = circle ? doc::AnimatedKind::indicator_circle : doc::AnimatedKind::indicator_line;
+    if (auto st = optional_uv(v, at, "from", t.uv_from); !st) return st;
+    if (auto st = optional_uv(v, at, "to", t.uv_to); !st) return st;
+    if (auto st = optional_uv(v, at, "centre", t.centre); !st) return st;
+    if (auto st = optional_number(v, at, "radius", t.radius); !st) return st;
+    if (!(t.radius > 0 && t.radius <= 1))
+        return schema_error("radius is in (0, 1] (the domain square's sides are 1)",
+                            member_path(at, "radius"));
+    return geom::Ok{};
+}
+
+// What the step animates, by its member; then its range where the kind takes one.
+geom::Status read_animated_target(const json& v, const std::string& at, std::string_view kind,
+                                  bool circle, doc::AnimationTarget& t) {
+    const AnimatedMember m{kind, v.at(std::string(kind)), member_path(at, kind)};
+    geom::Status st = geom::Ok{};
+    if (kind == "weight") {
+        st = read_weight_target(m, t);
+    } else if (kind == "knot") {
+        st = read_knot_target(m, t);
+        if (st) st = need_range(v, at);
+    } else if (kind == "parameter") {
+        st = read_parameter_target(m, t);
+        if (st) st = need_range(v, at);
+    } else if (kind == "indicator") {
+        return read_indicator_target(v, at, circle, t);
+    } else {
+        t.kind = doc::AnimatedKind::deboor_step;
+        if (auto r = read_true(m.k, m.kat, "deboor_step"); !r) return r.error();
+        t.from = 0;
+        t.to = 6;
+    }
+    if (!st) return st;
+    if (auto r = optional_number(v, at, "from", t.from); !r) return r;
+    return optional_number(v, at, "to", t.to);
+}
+
+// How long one pass takes, how fast it plays, the phase screenshots show, how it repeats and
+// whether it plays.
+geom::Status read_animation_timing(const json& v, const std::string& at, AnimateStep& a) {
+    if (auto st = optional_number(v, at, "seconds", a.seconds); !st) return st;
+    if (!(a.seconds > 0 && a.seconds <= 3600))
+        return schema_error("seconds (one pass) is in (0, 3600]", member_path(at, "seconds"));
+    if (auto st = optional_number(v, at, "speed", a.speed); !st) return st;
+    if (!(a.speed > 0 && a.speed <= 100))
+        return schema_error("speed is in (0, 100]", member_path(at, "speed"));
+    if (auto st = optional_number(v, at, "at", a.at); !st) return st;
+    if (a.at < 0 || a.at > 1)
+        return schema_error("at is the phase shown in screenshots, in [0, 1]",
+                            member_path(at, "at"));
+    if (const json* r = find_member(v, "repeat")) {
+        const auto rep = enum_value<doc::Repeat>(*r);
+        if (!rep) return schema_error("repeat is once, loop or bounce", member_path(at, "repeat"));
+        a.repeat = *rep;
+    }
+    if (const json* p = find_member(v, "play")) {
+        auto b = read_bool(*p, member_path(at, "play"));
+        if (!b) return b.error();
+        a.play = *b;
+    }
+    return geom::Ok{};
+}
+
 // {"weight": {"object": 1, "point": [2, 2]}, "from": 0, "to": 5, "seconds": 4, "repeat":
 // "bounce", "speed": 1, "at": 0.5, "play": true}, {"knot": {"object", "direction", "k"}, ...},
 // {"parameter": {"object", "name"}, ...}, {"indicator": "line", "from": [u, v], "to": [u, v]},
@@ -186,119 +352,8 @@ Expected<AnimateStep> read_animate(const json& v, const std::string& at) {
         allowed.insert(allowed.end(), {"from", "to"});
     }
     if (auto st = check_members(v, at, "an animate step", allowed); !st) return st.error();
-    doc::AnimationTarget& t = a.target;
-    const std::string kat = member_path(at, kind);
-    auto number = [&](std::string_view name, double& out) -> geom::Status {
-        const json* x = find_member(v, name);
-        if (!x) return geom::Ok{};
-        auto r = read_finite(*x, member_path(at, name), name);
-        if (!r) return r.error();
-        out = *r;
-        return geom::Ok{};
-    };
-    auto uv = [&](std::string_view name, glm::dvec2& out) -> geom::Status {
-        const json* x = find_member(v, name);
-        if (!x) return geom::Ok{};
-        auto r = indicator_from_json(*x, member_path(at, name));
-        if (!r) return r.error();
-        out = *r;
-        return geom::Ok{};
-    };
-    auto object_member = [&](const json& o,
-                             std::initializer_list<std::string_view> members) -> geom::Status {
-        if (auto st = expect_object(o, kat, std::string(kind)); !st) return st;
-        if (auto st = check_members(o, kat, std::string(kind), members); !st) return st;
-        const json* id = find_member(o, "object");
-        if (!id) return missing_member(kat, "object");
-        auto n = read_integer(*id, member_path(kat, "object"), "an object id", 1,
-                              static_cast<std::int64_t>(max_object_id));
-        if (!n) return n.error();
-        t.object = static_cast<std::uint64_t>(*n);
-        return geom::Ok{};
-    };
-    const json& k = v.at(std::string(kind));
-    if (kind == "weight") {
-        t.kind = doc::AnimatedKind::weight;
-        if (auto st = object_member(k, {"object", "point"}); !st) return st.error();
-        const json* point = find_member(k, "point");
-        if (!point) return missing_member(kat, "point");
-        const std::string pat = member_path(kat, "point");
-        if (!point->is_array() || point->empty() || point->size() > 2)
-            return schema_error("point is [i, j] (a surface's or triangle's) or [i] (a curve's)",
-                                pat);
-        for (std::size_t c = 0; c < point->size(); ++c) {
-            auto x = read_integer((*point)[c], pat + "/" + std::to_string(c),
-                                  "a control point index", 0, INT_MAX);
-            if (!x) return x.error();
-            (c == 0 ? t.i : t.j) = static_cast<int>(*x);
-        }
-        t.from = 0;
-        t.to = 5;
-    } else if (kind == "knot") {
-        t.kind = doc::AnimatedKind::knot;
-        if (auto st = object_member(k, {"object", "direction", "k"}); !st) return st.error();
-        if (const json* d = find_member(k, "direction")) {
-            const auto dir = enum_value<geom::Dir>(*d);
-            if (!dir)
-                return schema_error("direction must be u or v", member_path(kat, "direction"));
-            t.dir = *dir;
-        }
-        const json* idx = find_member(k, "k");
-        if (!idx) return missing_member(kat, "k");
-        auto x = read_integer(*idx, member_path(kat, "k"), "a knot index", 0, INT_MAX);
-        if (!x) return x.error();
-        t.k = static_cast<int>(*x);
-        if (!find_member(v, "from")) return missing_member(at, "from");
-        if (!find_member(v, "to")) return missing_member(at, "to");
-    } else if (kind == "parameter") {
-        t.kind = doc::AnimatedKind::implicit_parameter;
-        if (auto st = object_member(k, {"object", "name"}); !st) return st.error();
-        const json* name = find_member(k, "name");
-        if (!name) return missing_member(kat, "name");
-        auto n = read_string(*name, member_path(kat, "name"), "name");
-        if (!n) return n.error();
-        t.parameter = *n;
-        if (!find_member(v, "from")) return missing_member(at, "from");
-        if (!find_member(v, "to")) return missing_member(at, "to");
-    } else if (kind == "indicator") {
-        t.kind = circle ? doc::AnimatedKind::indicator_circle : doc::AnimatedKind::indicator_line;
-        if (auto st = uv("from", t.uv_from); !st) return st.error();
-        if (auto st = uv("to", t.uv_to); !st) return st.error();
-        if (auto st = uv("centre", t.centre); !st) return st.error();
-        if (auto st = number("radius", t.radius); !st) return st.error();
-        if (!(t.radius > 0 && t.radius <= 1))
-            return schema_error("radius is in (0, 1] (the domain square's sides are 1)",
-                                member_path(at, "radius"));
-    } else {
-        t.kind = doc::AnimatedKind::deboor_step;
-        if (auto st = read_true(k, kat, "deboor_step"); !st) return st.error();
-        t.from = 0;
-        t.to = 6;
-    }
-    if (!indicator) {
-        if (auto st = number("from", t.from); !st) return st.error();
-        if (auto st = number("to", t.to); !st) return st.error();
-    }
-    if (auto st = number("seconds", a.seconds); !st) return st.error();
-    if (!(a.seconds > 0 && a.seconds <= 3600))
-        return schema_error("seconds (one pass) is in (0, 3600]", member_path(at, "seconds"));
-    if (auto st = number("speed", a.speed); !st) return st.error();
-    if (!(a.speed > 0 && a.speed <= 100))
-        return schema_error("speed is in (0, 100]", member_path(at, "speed"));
-    if (auto st = number("at", a.at); !st) return st.error();
-    if (a.at < 0 || a.at > 1)
-        return schema_error("at is the phase shown in screenshots, in [0, 1]",
-                            member_path(at, "at"));
-    if (const json* r = find_member(v, "repeat")) {
-        const auto rep = enum_value<doc::Repeat>(*r);
-        if (!rep) return schema_error("repeat is once, loop or bounce", member_path(at, "repeat"));
-        a.repeat = *rep;
-    }
-    if (const json* p = find_member(v, "play")) {
-        auto b = read_bool(*p, member_path(at, "play"));
-        if (!b) return b.error();
-        a.play = *b;
-    }
+    if (auto st = read_animated_target(v, at, kind, circle, a.target); !st) return st.error();
+    if (auto st = read_animation_timing(v, at, a); !st) return st.error();
     return a;
 }
 
@@ -471,17 +526,10 @@ Expected<Script> script_from_json(const json& j, const std::string& script_dir) 
 }
 
 Expected<Script> load_script(const std::string& path) {
-    auto text = read_input_file(path, max_script_bytes);
-    if (!text) return text.error();
-    auto read = read_json(*text);
-    if (!read) {
-        Error e = read.error();
-        e.message = "'" + path + "' is not JSON: " + e.message;
-        return e;
-    }
-    if (!read->problems.empty()) return read->problems.front();
+    auto value = read_json_file(path, max_script_bytes);
+    if (!value) return value.error();
     const std::string dir = std::filesystem::path(path).parent_path().string();
-    return script_from_json(read->value, dir.empty() ? "." : dir);
+    return script_from_json(*value, dir.empty() ? "." : dir);
 }
 
 geom::Status run_step(const Step& step, ScriptState& state, const ScriptHooks& hooks, bool dry_run,

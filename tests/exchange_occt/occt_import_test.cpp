@@ -26,7 +26,7 @@
 #include "core/exchange_occt/occt_reader.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
-#include "tests/exchange/import_round_trip.hpp"
+#include "tests/scene/import_round_trip.hpp"
 #include "tests/support/temp_dir.hpp"
 
 using namespace isoparm;

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "core/scene/import_document.hpp"
-#include "tests/exchange/import_round_trip.hpp"
+#include "tests/scene/import_round_trip.hpp"
 
 using namespace isoparm;
 

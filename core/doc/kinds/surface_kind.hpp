@@ -14,7 +14,7 @@ struct SurfaceObject {
     static constexpr ObjectKind kind = ObjectKind::surface;
     static constexpr std::array<std::string_view, 1> shape_members{"surface"};
     static constexpr bool in_patch_groups = true; // split surfaces share a domain
-    static constexpr bool constructed = true; // a recipe builds surfaces
+    static constexpr bool constructed = true;     // a recipe builds surfaces
 };
 
 geom::Expected<SurfaceObject> read_kind(std::type_identity<SurfaceObject>, const nlohmann::json& j,
