@@ -140,36 +140,47 @@ std::vector<Entry> list_directory(const std::string& dir, bool exchange = false)
     return out;
 }
 
-void file_dialog(AppContext& ctx) {
-    FileDialog& fd = ctx.ui.file_dialog;
-    // A stopped recording is saved as a script; another scene opened while recording asks too.
-    if (ctx.ui.offer_recording_save && fd.mode == FileDialog::Mode::closed) {
-        ctx.ui.offer_recording_save = false;
-        request_stop_recording(ctx);
+// What the dialog is for, read once from its mode.
+struct FileDialogKind {
+    bool recording, lesson, points, lesson_out, exercise, saving, exporting, importing;
+
+    explicit FileDialogKind(FileDialog::Mode m)
+        : recording(m == FileDialog::Mode::save_recording),
+          lesson(m == FileDialog::Mode::open_lesson), points(m == FileDialog::Mode::load_points),
+          lesson_out(m == FileDialog::Mode::save_lesson),
+          exercise(m == FileDialog::Mode::open_exercise),
+          saving(m == FileDialog::Mode::save || recording || lesson_out),
+          exporting(m == FileDialog::Mode::export_file),
+          importing(m == FileDialog::Mode::import_file) {}
+};
+
+const char* file_dialog_title(FileDialog::Mode m) {
+    switch (m) {
+    case FileDialog::Mode::save_recording:
+        return "Save recording as script";
+    case FileDialog::Mode::save_lesson:
+        return "Save lesson as";
+    case FileDialog::Mode::open_exercise:
+        return "Open exercise";
+    case FileDialog::Mode::save:
+        return "Save scene as";
+    case FileDialog::Mode::export_file:
+        return "Export visible objects (.step .igs .obj .stl .ply .glb)";
+    case FileDialog::Mode::import_file:
+        return "Import curves and surfaces (.step .igs .obj)";
+    case FileDialog::Mode::open_lesson:
+        return "Open lesson (a script)";
+    case FileDialog::Mode::load_points:
+        return "Load data points (CSV or XYZ)";
+    case FileDialog::Mode::open:
+    case FileDialog::Mode::closed:
+        return "Open scene";
     }
-    const bool recording = fd.mode == FileDialog::Mode::save_recording;
-    const bool lesson = fd.mode == FileDialog::Mode::open_lesson;
-    const bool points = fd.mode == FileDialog::Mode::load_points;
-    const bool lesson_out = fd.mode == FileDialog::Mode::save_lesson;
-    const bool exercise = fd.mode == FileDialog::Mode::open_exercise;
-    const bool saving = fd.mode == FileDialog::Mode::save || recording || lesson_out;
-    const bool exporting = fd.mode == FileDialog::Mode::export_file;
-    const bool importing = fd.mode == FileDialog::Mode::import_file;
-    const char* title = recording    ? "Save recording as script"
-                        : lesson_out ? "Save lesson as"
-                        : exercise   ? "Open exercise"
-                        : saving     ? "Save scene as"
-                        : exporting  ? "Export visible objects (.step .igs .obj .stl .ply .glb)"
-                        : importing  ? "Import curves and surfaces (.step .igs .obj)"
-                        : lesson     ? "Open lesson (a script)"
-                        : points     ? "Load data points (CSV or XYZ)"
-                                     : "Open scene";
-    if (fd.just_opened) {
-        ImGui::OpenPopup(title);
-        fd.just_opened = false;
-    }
-    center_next(560, ctx.ui.scale());
-    if (!ImGui::BeginPopupModal(title, nullptr, 0)) return;
+    return "Open scene";
+}
+
+// The folder line and the list of its files; returns the name double-clicked, if any.
+std::string draw_file_list(FileDialog& fd, bool exchange) {
     if (ImGui::Button("Up")) {
         const fs::path parent = fs::path(fd.directory).parent_path();
         if (!parent.empty()) fd.directory = parent.string();
@@ -180,7 +191,7 @@ void file_dialog(AppContext& ctx) {
     std::string chosen;
     const float list_h = ImGui::GetTextLineHeightWithSpacing() * 14;
     if (ImGui::BeginChild("##files", ImVec2(0, list_h), true)) {
-        for (const Entry& e : list_directory(fd.directory, exporting || importing)) {
+        for (const Entry& e : list_directory(fd.directory, exchange)) {
             const std::string label = e.directory ? e.name + "/" : e.name;
             if (ImGui::Selectable(label.c_str(), !e.directory && e.name == fd.name,
                                   ImGuiSelectableFlags_AllowDoubleClick)) {
@@ -194,6 +205,12 @@ void file_dialog(AppContext& ctx) {
         }
     }
     ImGui::EndChild();
+    return chosen;
+}
+
+// The name field and what is said under it; returns the name if Enter confirmed it.
+std::string draw_name_field(AppContext& ctx, const FileDialogKind& k) {
+    FileDialog& fd = ctx.ui.file_dialog;
     ImGui::SetNextItemWidth(-1);
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere(); // type a name right away
     // A click on the name selects all of it, so typing replaces it (a file name is most often
@@ -202,11 +219,10 @@ void file_dialog(AppContext& ctx) {
         ImGui::InputText("##name", &fd.name,
                          ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
     report_item("file/name");
-    if (enter && !fd.name.empty()) chosen = fd.name;
     fs::path target = fs::path(fd.directory) / fd.name;
-    if (saving && !fd.name.empty() && target.extension().empty()) target += ".json";
+    if (k.saving && !fd.name.empty() && target.extension().empty()) target += ".json";
     std::error_code ec;
-    if ((saving || exporting) && !fd.name.empty() && fs::exists(target, ec))
+    if ((k.saving || k.exporting) && !fd.name.empty() && fs::exists(target, ec))
         ImGui::TextDisabled("%s exists and will be replaced.", target.filename().string().c_str());
     if (!fd.error.empty()) { // wrapped: a refused export names the extensions it knows
         ImGui::PushTextWrapPos(0.0f);
@@ -214,11 +230,18 @@ void file_dialog(AppContext& ctx) {
         report_item("file/error");
         ImGui::PopTextWrapPos();
     }
-    if (recording && ctx.ui.finished_recording)
+    if (k.recording && ctx.ui.finished_recording)
         ImGui::TextDisabled("A script of %zu steps. Cancel goes on recording; Discard drops it.",
                             ctx.ui.finished_recording->step_count());
+    return enter && !fd.name.empty() ? fd.name : std::string();
+}
+
+// The dialog's buttons; returns true when one of them closes it (the name confirmed goes to
+// `chosen`).
+bool draw_file_buttons(AppContext& ctx, const FileDialogKind& k, std::string& chosen) {
+    FileDialog& fd = ctx.ui.file_dialog;
     ImGui::BeginDisabled(fd.name.empty());
-    if (ImGui::Button(exporting ? "Export" : importing ? "Import" : saving ? "Save" : "Open"))
+    if (ImGui::Button(k.exporting ? "Export" : k.importing ? "Import" : k.saving ? "Save" : "Open"))
         chosen = fd.name;
     ImGui::EndDisabled();
     ImGui::SameLine();
@@ -227,10 +250,10 @@ void file_dialog(AppContext& ctx) {
         close = true;
         ctx.ui.pending = {};
         // Nothing is lost: the recording goes on where it stopped.
-        if (recording && ctx.ui.finished_recording && !ctx.recorder)
+        if (k.recording && ctx.ui.finished_recording && !ctx.recorder)
             ctx.recorder = std::move(ctx.ui.finished_recording);
     }
-    if (recording) {
+    if (k.recording) {
         ImGui::SameLine();
         if (ImGui::Button("Discard")) {
             close = true;
@@ -240,7 +263,7 @@ void file_dialog(AppContext& ctx) {
     // In a browser the list shows the page's own files (the examples, the lessons, uploads);
     // the user's are reached through the browser's picker, and what is written downloads.
     if (files::in_browser()) {
-        if (!saving && !exporting) {
+        if (!k.saving && !k.exporting) {
             ImGui::SameLine();
             const bool upload = ImGui::Button("From this computer...");
             report_item("file/upload");
@@ -249,8 +272,65 @@ void file_dialog(AppContext& ctx) {
             ImGui::TextDisabled("The browser downloads the file.");
         }
     }
+    return close;
+}
+
+// Does with the file chosen what the dialog was opened for; `close` becomes true when that
+// closes the dialog (a refusal keeps it open with the reason).
+void take_chosen_file(AppContext& ctx, const FileDialogKind& k, const std::string& chosen,
+                      bool& close) {
+    FileDialog& fd = ctx.ui.file_dialog;
+    fs::path target = fs::path(fd.directory) / chosen;
+    if (k.saving && target.extension().empty()) target += ".json";
+    if (k.lesson_out) {
+        close = save_lesson(ctx, target.string());
+    } else if (k.exercise) {
+        close = true;
+        request_open_exercise(ctx, target.string());
+    } else if (k.exporting || k.importing) {
+        // A refusal keeps the dialog open with the reason; nothing was written or added.
+        close = k.exporting ? export_visible_objects(ctx, target.string(), fd.error)
+                            : import_objects(ctx, target.string(), fd.error);
+    } else if (k.recording) {
+        if (save_recording(ctx, target.string())) close = true;
+    } else if (k.saving) {
+        if (save_as(ctx, target.string())) {
+            close = true;
+            run_pending(ctx); // e.g. quit after "Save" in the unsaved-changes dialog
+        }
+    } else if (k.lesson) {
+        close = true;
+        request_open_lesson(ctx, target.string());
+    } else if (k.points) {
+        // A file that is not points keeps the dialog open with the line at fault.
+        close = load_fit_points(ctx, target.string(), fd.error);
+    } else {
+        close = true;
+        open_file(ctx, target.string());
+    }
+}
+
+void file_dialog(AppContext& ctx) {
+    FileDialog& fd = ctx.ui.file_dialog;
+    // A stopped recording is saved as a script; another scene opened while recording asks too.
+    if (ctx.ui.offer_recording_save && fd.mode == FileDialog::Mode::closed) {
+        ctx.ui.offer_recording_save = false;
+        request_stop_recording(ctx);
+    }
+    const FileDialogKind k(fd.mode);
+    const char* title = file_dialog_title(fd.mode);
+    if (fd.just_opened) {
+        ImGui::OpenPopup(title);
+        fd.just_opened = false;
+    }
+    center_next(560, ctx.ui.scale());
+    if (!ImGui::BeginPopupModal(title, nullptr, 0)) return;
+    std::string chosen = draw_file_list(fd, k.exporting || k.importing);
+    if (std::string typed = draw_name_field(ctx, k); !typed.empty()) chosen = std::move(typed);
+    bool close = draw_file_buttons(ctx, k, chosen);
     // A folder typed or picked (a path in the name field too) is opened in the dialog, never
     // taken as the file: nothing is asked or refused for it.
+    std::error_code ec;
     if (!chosen.empty() && fs::is_directory(fs::path(fd.directory) / chosen, ec)) {
         fd.directory = (fs::path(fd.directory) / chosen).lexically_normal().string();
         if (fd.directory.size() > 1 && fd.directory.back() == '/') fd.directory.pop_back();
@@ -258,36 +338,7 @@ void file_dialog(AppContext& ctx) {
         fd.error.clear();
         chosen.clear();
     }
-    if (!chosen.empty()) {
-        target = fs::path(fd.directory) / chosen;
-        if (saving && target.extension().empty()) target += ".json";
-        if (lesson_out) {
-            close = save_lesson(ctx, target.string());
-        } else if (exercise) {
-            close = true;
-            request_open_exercise(ctx, target.string());
-        } else if (exporting || importing) {
-            // A refusal keeps the dialog open with the reason; nothing was written or added.
-            close = exporting ? export_visible_objects(ctx, target.string(), fd.error)
-                              : import_objects(ctx, target.string(), fd.error);
-        } else if (recording) {
-            if (save_recording(ctx, target.string())) close = true;
-        } else if (saving) {
-            if (save_as(ctx, target.string())) {
-                close = true;
-                run_pending(ctx); // e.g. quit after "Save" in the unsaved-changes dialog
-            }
-        } else if (lesson) {
-            close = true;
-            request_open_lesson(ctx, target.string());
-        } else if (points) {
-            // A file that is not points keeps the dialog open with the line at fault.
-            close = load_fit_points(ctx, target.string(), fd.error);
-        } else {
-            close = true;
-            open_file(ctx, target.string());
-        }
-    }
+    if (!chosen.empty()) take_chosen_file(ctx, k, chosen, close);
     if (close) {
         fd.mode = FileDialog::Mode::closed;
         ImGui::CloseCurrentPopup();
@@ -295,14 +346,27 @@ void file_dialog(AppContext& ctx) {
     ImGui::EndPopup();
 }
 
-void unsaved_dialog(AppContext& ctx) {
-    if (ctx.ui.confirm_unsaved) {
-        ImGui::OpenPopup("Unsaved changes");
-        ctx.ui.confirm_unsaved = false;
+// Opens the centred modal `title` when `requested` (once), and begins it.
+bool begin_modal(const char* title, bool& requested, float w_units, float scale,
+                 ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize) {
+    if (requested) {
+        ImGui::OpenPopup(title);
+        requested = false;
     }
-    center_next(0, ctx.ui.scale());
-    if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
-        return;
+    center_next(w_units, scale);
+    return ImGui::BeginPopupModal(title, nullptr, flags);
+}
+
+// Cancel (or Escape) closes a question and forgets what was to follow its answer.
+void cancel_pending_button(AppContext& ctx) {
+    if (ImGui::Button("Cancel") || escape_pressed()) {
+        ImGui::CloseCurrentPopup();
+        ctx.ui.pending = {};
+    }
+}
+
+void unsaved_dialog(AppContext& ctx) {
+    if (!begin_modal("Unsaved changes", ctx.ui.confirm_unsaved, 0, ctx.ui.scale())) return;
     const std::string name =
         ctx.file_path.empty() ? "this untitled scene" : fs::path(ctx.file_path).filename().string();
     ImGui::Text("Save the changes to %s first?", name.c_str());
@@ -319,22 +383,14 @@ void unsaved_dialog(AppContext& ctx) {
         run_pending(ctx);
     }
     ImGui::SameLine();
-    if (ImGui::Button("Cancel") || escape_pressed()) {
-        ImGui::CloseCurrentPopup();
-        ctx.ui.pending = {};
-    }
+    cancel_pending_button(ctx);
     ImGui::EndPopup();
 }
 
 // Save found the file changed on disk since it was loaded or last saved (another window or
 // program wrote it): replacing it would silently lose that work, so ask.
 void overwrite_changed_dialog(AppContext& ctx) {
-    if (ctx.ui.confirm_overwrite_changed) {
-        ImGui::OpenPopup("File changed on disk");
-        ctx.ui.confirm_overwrite_changed = false;
-    }
-    center_next(480, ctx.ui.scale());
-    if (!ImGui::BeginPopupModal("File changed on disk", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
+    if (!begin_modal("File changed on disk", ctx.ui.confirm_overwrite_changed, 480, ctx.ui.scale()))
         return;
     text_wrapped("'%s' was changed on disk since it was opened or last saved (by another "
                  "window or program). Saving now replaces those changes with this scene.",
@@ -351,21 +407,13 @@ void overwrite_changed_dialog(AppContext& ctx) {
         request_save_as(ctx);
     }
     ImGui::SameLine();
-    if (ImGui::Button("Cancel") || escape_pressed()) {
-        ImGui::CloseCurrentPopup();
-        ctx.ui.pending = {};
-    }
+    cancel_pending_button(ctx);
     ImGui::EndPopup();
 }
 
 void error_dialog(AppContext& ctx) {
-    if (ctx.ui.show_error) {
-        ImGui::OpenPopup("##error");
-        ctx.ui.show_error = false;
-    }
-    center_next(480, ctx.ui.scale());
-    if (!ImGui::BeginPopupModal("##error", nullptr,
-                                ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoTitleBar))
+    if (!begin_modal("##error", ctx.ui.show_error, 480, ctx.ui.scale(),
+                     ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoTitleBar))
         return;
     ImGui::TextUnformatted(ctx.ui.error_title.c_str());
     ImGui::Separator();

@@ -224,6 +224,120 @@ glm::dvec3 snapped_point(const AppContext& ctx, const Viewport& vp, const PointR
         .p;
 }
 
+// A press in the view: on the selection's handle, on a control point (one of many selected
+// keeps them), Ctrl on empty space starts a box, else the camera orbits or (Shift, right or
+// middle button) pans.
+void start_gesture(AppContext& ctx, const Viewport& vp, const glm::dvec2& mouse) {
+    ImGuiIO& io = ImGui::GetIO();
+    UiState& ui = ctx.ui;
+    ViewDrag& drag = ui.drag;
+    SelectionState& st = ui.modeler.selection;
+    SelectionGesture& gesture = st.gesture;
+    drag = {};
+    drag.start_mouse = mouse;
+    gesture = {};
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+        const std::optional<HandleLayout> handle = selection_handle(ctx, vp);
+        const HandlePart part =
+            handle ? hit_handle(*handle, mouse, 7.0 * ui.scale()) : HandlePart::none;
+        if (part != HandlePart::none && !io.KeyCtrl) {
+            start_handle_drag(ctx, vp, part, mouse, *handle);
+        } else if (const auto hit = !io.KeyCtrl ? pick(ctx, vp, mouse) : std::nullopt) {
+            const PointIndex p{hit->ref.i, hit->ref.j};
+            // A press on one of many selected points keeps the selection: a drag moves them
+            // all (the handle's centre), a click without moving selects that one alone.
+            const bool in_selection = st.points.size() > 1 && st.points.object == hit->ref.object &&
+                                      st.points.contains(p) && !io.KeyShift;
+            if (in_selection) {
+                HandleLayout h = handle ? *handle : HandleLayout{};
+                h.centre =
+                    project(view_projection(ui.camera, vp.aspect()), vp, selection_pivot(ctx))
+                        .pixel;
+                start_handle_drag(ctx, vp, HandlePart::centre, mouse, h);
+                gesture.points = st.points.points; // the press point itself moves with the pointer
+            } else {
+                if (!io.KeyShift) {
+                    ctx.doc.view.selection = {hit->ref.object, hit->ref.i, hit->ref.j};
+                    sync_selection(st.points, ctx.doc);
+                    st.points.set(hit->ref.object, {p});
+                }
+                drag.kind = ViewDrag::Kind::point;
+                drag.point = hit->ref;
+                drag.start = hit->position;
+                ctx.seal(); // a new gesture: a new undo step
+            }
+        } else if (io.KeyCtrl) {
+            // Ctrl+drag on empty space: a box selects the points inside (Shift adds).
+            gesture.kind = SelectionGesture::Kind::box;
+            gesture.press = gesture.now = mouse;
+            gesture.add = io.KeyShift;
+        } else {
+            drag.kind = io.KeyShift ? ViewDrag::Kind::pan : ViewDrag::Kind::orbit;
+        }
+    } else {
+        drag.kind = ViewDrag::Kind::pan;
+    }
+}
+
+// A held control point follows the pointer (along an axis when one is held or locked), snapped.
+void drag_point(AppContext& ctx, const Viewport& vp, const glm::dvec2& mouse) {
+    ImGuiIO& io = ImGui::GetIO();
+    UiState& ui = ctx.ui;
+    ViewDrag& drag = ui.drag;
+    if (!drag.moved) return;
+    // A constructed object's own point: ask first (the drag waits for the answer).
+    if (!may_edit_points(ctx, drag.point.object)) {
+        drag = {};
+        return;
+    }
+    // Axis: X/Y/Z held picks it; Shift locks the axis the drag started along.
+    int axis = held_axis_key();
+    if (axis < 0 && io.KeyShift) {
+        if (drag.axis < 0)
+            drag.axis = dominant_axis(ui.camera, vp, drag.start, mouse - drag.start_mouse);
+        axis = drag.axis;
+    } else if (axis >= 0) {
+        drag.axis = axis;
+    } else {
+        drag.axis = -1;
+    }
+    const glm::dvec3 p = axis >= 0 ? drag_along_axis(ui.camera, vp, drag.start, axis, mouse)
+                                   : drag_in_view_plane(ui.camera, vp, drag.start, mouse);
+    const glm::dvec3 q = snapped_point(ctx, vp, drag.point, p, axis);
+    ctx.execute(point_move_command(ctx, drag.point.object, drag.point.i, drag.point.j, q));
+}
+
+// The release: a box selects, a click picks, toggles or clears; the gesture is one undo step.
+void end_gesture(AppContext& ctx, const Viewport& vp, const glm::dvec2& mouse) {
+    ImGuiIO& io = ImGui::GetIO();
+    UiState& ui = ctx.ui;
+    ViewDrag& drag = ui.drag;
+    SelectionState& st = ui.modeler.selection;
+    SelectionGesture& gesture = st.gesture;
+    if (gesture.kind == SelectionGesture::Kind::box) {
+        if (const doc::Object* o = box_object(ctx))
+            select_points(ctx, o->id, points_in_box(ctx, vp, *o, gesture.press, gesture.now),
+                          gesture.add);
+    } else if (gesture.kind == SelectionGesture::Kind::handle &&
+               glm::length(mouse - gesture.press) <= 2.0 && gesture.part == HandlePart::centre) {
+        // A click on one of the selected points (not a drag): that point alone.
+        if (const auto hit = pick(ctx, vp, mouse)) {
+            ctx.doc.view.selection = {hit->ref.object, hit->ref.i, hit->ref.j};
+            st.points.set(hit->ref.object, {{hit->ref.i, hit->ref.j}});
+        }
+    }
+    if (drag.kind == ViewDrag::Kind::point && !drag.moved && io.KeyShift) {
+        // Shift+click: the point in or out of the selection.
+        toggle_point(ctx, drag.point.object, {drag.point.i, drag.point.j});
+    }
+    if (drag.kind == ViewDrag::Kind::orbit && !drag.moved) {
+        ctx.doc.view.selection.i = ctx.doc.view.selection.j = -1; // a click on empty space
+    }
+    drag = {};
+    gesture = {};
+    ctx.seal();
+}
+
 void handle_mouse(AppContext& ctx, const Viewport& vp) {
     ImGuiIO& io = ImGui::GetIO();
     UiState& ui = ctx.ui;
@@ -235,54 +349,7 @@ void handle_mouse(AppContext& ctx, const Viewport& vp) {
     if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f)
         zoom(ui.camera, std::pow(0.88, io.MouseWheel));
 
-    if (ImGui::IsItemActivated()) {
-        drag = {};
-        drag.start_mouse = mouse;
-        gesture = {};
-        if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
-            const std::optional<HandleLayout> handle = selection_handle(ctx, vp);
-            const HandlePart part =
-                handle ? hit_handle(*handle, mouse, 7.0 * ui.scale()) : HandlePart::none;
-            if (part != HandlePart::none && !io.KeyCtrl) {
-                start_handle_drag(ctx, vp, part, mouse, *handle);
-            } else if (const auto hit = !io.KeyCtrl ? pick(ctx, vp, mouse) : std::nullopt) {
-                const PointIndex p{hit->ref.i, hit->ref.j};
-                // A press on one of many selected points keeps the selection: a drag moves them
-                // all (the handle's centre), a click without moving selects that one alone.
-                const bool in_selection = st.points.size() > 1 &&
-                                          st.points.object == hit->ref.object &&
-                                          st.points.contains(p) && !io.KeyShift;
-                if (in_selection) {
-                    HandleLayout h = handle ? *handle : HandleLayout{};
-                    h.centre =
-                        project(view_projection(ui.camera, vp.aspect()), vp, selection_pivot(ctx))
-                            .pixel;
-                    start_handle_drag(ctx, vp, HandlePart::centre, mouse, h);
-                    gesture.points =
-                        st.points.points; // the press point itself moves with the pointer
-                } else {
-                    if (!io.KeyShift) {
-                        ctx.doc.view.selection = {hit->ref.object, hit->ref.i, hit->ref.j};
-                        sync_selection(st.points, ctx.doc);
-                        st.points.set(hit->ref.object, {p});
-                    }
-                    drag.kind = ViewDrag::Kind::point;
-                    drag.point = hit->ref;
-                    drag.start = hit->position;
-                    ctx.seal(); // a new gesture: a new undo step
-                }
-            } else if (io.KeyCtrl) {
-                // Ctrl+drag on empty space: a box selects the points inside (Shift adds).
-                gesture.kind = SelectionGesture::Kind::box;
-                gesture.press = gesture.now = mouse;
-                gesture.add = io.KeyShift;
-            } else {
-                drag.kind = io.KeyShift ? ViewDrag::Kind::pan : ViewDrag::Kind::orbit;
-            }
-        } else {
-            drag.kind = ViewDrag::Kind::pan;
-        }
-    }
+    if (ImGui::IsItemActivated()) start_gesture(ctx, vp, mouse);
 
     if (ImGui::IsItemActive() && gesture.kind != SelectionGesture::Kind::none) {
         if (gesture.kind == SelectionGesture::Kind::box)
@@ -301,60 +368,15 @@ void handle_mouse(AppContext& ctx, const Viewport& vp) {
         case ViewDrag::Kind::pan:
             pan(ui.camera, delta.x, delta.y, vp.h);
             break;
-        case ViewDrag::Kind::point: {
-            if (!drag.moved) break;
-            // A constructed object's own point: ask first (the drag waits for the answer).
-            if (!may_edit_points(ctx, drag.point.object)) {
-                drag = {};
-                break;
-            }
-            // Axis: X/Y/Z held picks it; Shift locks the axis the drag started along.
-            int axis = held_axis_key();
-            if (axis < 0 && io.KeyShift) {
-                if (drag.axis < 0)
-                    drag.axis = dominant_axis(ui.camera, vp, drag.start, mouse - drag.start_mouse);
-                axis = drag.axis;
-            } else if (axis >= 0) {
-                drag.axis = axis;
-            } else {
-                drag.axis = -1;
-            }
-            const glm::dvec3 p = axis >= 0 ? drag_along_axis(ui.camera, vp, drag.start, axis, mouse)
-                                           : drag_in_view_plane(ui.camera, vp, drag.start, mouse);
-            const glm::dvec3 q = snapped_point(ctx, vp, drag.point, p, axis);
-            ctx.execute(point_move_command(ctx, drag.point.object, drag.point.i, drag.point.j, q));
+        case ViewDrag::Kind::point:
+            drag_point(ctx, vp, mouse);
             break;
-        }
         case ViewDrag::Kind::none:
             break;
         }
     }
 
-    if (ImGui::IsItemDeactivated()) {
-        if (gesture.kind == SelectionGesture::Kind::box) {
-            if (const doc::Object* o = box_object(ctx))
-                select_points(ctx, o->id, points_in_box(ctx, vp, *o, gesture.press, gesture.now),
-                              gesture.add);
-        } else if (gesture.kind == SelectionGesture::Kind::handle &&
-                   glm::length(mouse - gesture.press) <= 2.0 &&
-                   gesture.part == HandlePart::centre) {
-            // A click on one of the selected points (not a drag): that point alone.
-            if (const auto hit = pick(ctx, vp, mouse)) {
-                ctx.doc.view.selection = {hit->ref.object, hit->ref.i, hit->ref.j};
-                st.points.set(hit->ref.object, {{hit->ref.i, hit->ref.j}});
-            }
-        }
-        if (drag.kind == ViewDrag::Kind::point && !drag.moved && io.KeyShift) {
-            // Shift+click: the point in or out of the selection.
-            toggle_point(ctx, drag.point.object, {drag.point.i, drag.point.j});
-        }
-        if (drag.kind == ViewDrag::Kind::orbit && !drag.moved) {
-            ctx.doc.view.selection.i = ctx.doc.view.selection.j = -1; // a click on empty space
-        }
-        drag = {};
-        gesture = {};
-        ctx.seal();
-    }
+    if (ImGui::IsItemDeactivated()) end_gesture(ctx, vp, mouse);
 }
 
 // The selection's handle and the box being drawn.
