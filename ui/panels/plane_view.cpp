@@ -15,6 +15,7 @@
 #include "core/doc/placement.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/panels/picture_draw.hpp"
+#include "ui/panels/plane_canvas.hpp"
 #include "ui/panels/stage_controls.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/canvas_map.hpp"
@@ -186,18 +187,7 @@ void draw_plane_dots(Picture& pic, const doc::Document& d, const PlaneFrame& f, 
     report_point(name + "/disk", c.x, c.y);
 }
 
-// The axes through the origin, their names and the view's name, inside the frame.
-void draw_plane_axes(Picture& pic, const Rect& canvas, const PlaneFrame& f) {
-    const glm::dvec2 o = plane_to_pixel(f.map, {0, 0});
-    const float k = f.k;
-    const bool light = f.light;
-    const Rgba8 axis = light ? rgba8(150, 150, 150) : rgba8(80, 84, 96);
-    pic.line({canvas.x, static_cast<float>(o.y)}, {canvas.x + canvas.w, static_cast<float>(o.y)},
-             axis, 1 * k);
-    pic.line({static_cast<float>(o.x), canvas.y}, {static_cast<float>(o.x), canvas.y + canvas.h},
-             axis, 1 * k);
-}
-
+// The axes' names and the view's name, inside the frame.
 void draw_plane_names(Picture& pic, const Rect& canvas, const PlaneFrame& f, int plane) {
     const char letters[3] = {'x', 'y', 'z'};
     const Rgba8 text = f.light ? rgba8(0, 0, 0) : rgba8(230, 230, 230);
@@ -240,14 +230,9 @@ void draw_plane_view(AppContext& ctx, int plane, const Rect& canvas) {
     plane_drag(ctx, f, drag_id, glm::dvec2(m.x, m.y));
 
     // The drawing, of the document as it is now.
-    Picture pic;
-    pic.view = name;
-    pic.frame = canvas;
-    pic.background = light ? rgba8(250, 250, 250) : rgba8(26, 28, 34);
-    pic.border = light ? rgba8(0, 0, 0) : rgba8(110, 115, 130);
-    pic.border_width = 1 * k;
+    Picture pic = plane_picture(name, canvas, light, k);
     pic.style.offset = 7 * k;
-    draw_plane_axes(pic, canvas, f);
+    plane_origin_axes(pic, f.map, canvas, light, 1 * k);
     draw_plane_wires(pic, ctx.doc, f);
     draw_plane_dots(pic, ctx.doc, f, pd.plane == drag_id || ImGui::IsItemHovered(), name);
     draw_plane_names(pic, canvas, f, plane);
