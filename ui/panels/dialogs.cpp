@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <imgui.h>
 #include <imgui_stdlib.h>
+#include <iterator>
 #include <string>
 #include <system_error>
 #include <tuple>
@@ -35,10 +36,7 @@ bool escape_pressed() {
 }
 
 void center_next(float w_units, float scale) {
-    const ImGuiViewport* vp = ImGui::GetMainViewport();
-    ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x * 0.5f, vp->Pos.y + vp->Size.y * 0.5f),
-                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    if (w_units > 0) ImGui::SetNextWindowSize(ImVec2(w_units * scale, 0));
+    center_next_window(w_units > 0 ? w_units * scale : 0);
 }
 
 std::string new_surface_error(const NewSurfaceForm& f) {
@@ -154,29 +152,35 @@ struct FileDialogKind {
           importing(m == FileDialog::Mode::import_file) {}
 };
 
-const char* file_dialog_title(FileDialog::Mode m) {
-    switch (m) {
-    case FileDialog::Mode::save_recording:
-        return "Save recording as script";
-    case FileDialog::Mode::save_lesson:
-        return "Save lesson as";
-    case FileDialog::Mode::open_exercise:
-        return "Open exercise";
-    case FileDialog::Mode::save:
-        return "Save scene as";
-    case FileDialog::Mode::export_file:
-        return "Export visible objects (.step .igs .obj .stl .ply .glb)";
-    case FileDialog::Mode::import_file:
-        return "Import curves and surfaces (.step .igs .obj)";
-    case FileDialog::Mode::open_lesson:
-        return "Open lesson (a script)";
-    case FileDialog::Mode::load_points:
-        return "Load data points (CSV or XYZ)";
-    case FileDialog::Mode::open:
-    case FileDialog::Mode::closed:
-        return "Open scene";
-    }
-    return "Open scene";
+// Each mode's title and confirming button, in the order of FileDialog::Mode.
+struct FileDialogText {
+    FileDialog::Mode mode;
+    const char* title;
+    const char* button;
+};
+constexpr FileDialogText file_dialog_texts[] = {
+    {FileDialog::Mode::closed, "Open scene", "Open"},
+    {FileDialog::Mode::open, "Open scene", "Open"},
+    {FileDialog::Mode::save, "Save scene as", "Save"},
+    {FileDialog::Mode::save_recording, "Save recording as script", "Save"},
+    {FileDialog::Mode::open_lesson, "Open lesson (a script)", "Open"},
+    {FileDialog::Mode::load_points, "Load data points (CSV or XYZ)", "Open"},
+    {FileDialog::Mode::export_file, "Export visible objects (.step .igs .obj .stl .ply .glb)",
+     "Export"},
+    {FileDialog::Mode::import_file, "Import curves and surfaces (.step .igs .obj)", "Import"},
+    {FileDialog::Mode::save_lesson, "Save lesson as", "Save"},
+    {FileDialog::Mode::open_exercise, "Open exercise", "Open"},
+};
+static_assert(std::size(file_dialog_texts) ==
+              static_cast<std::size_t>(FileDialog::Mode::open_exercise) + 1);
+static_assert([] {
+    for (std::size_t k = 0; k < std::size(file_dialog_texts); ++k)
+        if (static_cast<std::size_t>(file_dialog_texts[k].mode) != k) return false;
+    return true;
+}());
+
+const FileDialogText& file_dialog_text(FileDialog::Mode m) {
+    return file_dialog_texts[static_cast<std::size_t>(m)];
 }
 
 // The folder line and the list of its files; returns the name double-clicked, if any.
@@ -241,8 +245,7 @@ std::string draw_name_field(AppContext& ctx, const FileDialogKind& k) {
 bool draw_file_buttons(AppContext& ctx, const FileDialogKind& k, std::string& chosen) {
     FileDialog& fd = ctx.ui.file_dialog;
     ImGui::BeginDisabled(fd.name.empty());
-    if (ImGui::Button(k.exporting ? "Export" : k.importing ? "Import" : k.saving ? "Save" : "Open"))
-        chosen = fd.name;
+    if (ImGui::Button(file_dialog_text(fd.mode).button)) chosen = fd.name;
     ImGui::EndDisabled();
     ImGui::SameLine();
     bool close = false;
@@ -318,7 +321,7 @@ void file_dialog(AppContext& ctx) {
         request_stop_recording(ctx);
     }
     const FileDialogKind k(fd.mode);
-    const char* title = file_dialog_title(fd.mode);
+    const char* title = file_dialog_text(fd.mode).title;
     if (fd.just_opened) {
         ImGui::OpenPopup(title);
         fd.just_opened = false;
@@ -349,12 +352,7 @@ void file_dialog(AppContext& ctx) {
 // Opens the centred modal `title` when `requested` (once), and begins it.
 bool begin_modal(const char* title, bool& requested, float w_units, float scale,
                  ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize) {
-    if (requested) {
-        ImGui::OpenPopup(title);
-        requested = false;
-    }
-    center_next(w_units, scale);
-    return ImGui::BeginPopupModal(title, nullptr, flags);
+    return begin_centered_modal(title, requested, w_units > 0 ? w_units * scale : 0, flags);
 }
 
 // Cancel (or Escape) closes a question and forgets what was to follow its answer.
