@@ -8,7 +8,6 @@
 
 #include "core/doc/commands.hpp"
 #include "core/geom/knots.hpp"
-#include "ui/panels/curve_designer.hpp"
 #include "ui/theme.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/doc_access.hpp"
@@ -31,7 +30,7 @@ Target target(const AppContext& ctx, geom::Dir dir, bool curve) {
         const doc::CurveObject* c = o ? o->curve_object() : nullptr;
         if (!c) return out;
         out = {o, &c->curve.knots, c->curve.degree, c->curve.count(),
-               curve_designer::trace_param(ctx, c->curve)};
+               ctx.ui.curve.trace_param(c->curve)};
         return out;
     }
     const geom::Surface* s = current_surface(ctx.doc, &out.object);

@@ -126,7 +126,8 @@ void basis_curves(AppContext& ctx, const geom::Knots& U, int p, int n, int index
 
 void draw_basis_plot_panel(AppContext& ctx) {
     const doc::Object* obj = nullptr;
-    const geom::Surface* s = teaching_panel_surface(ctx, StageView::basis, draw_triangle_basis, &obj);
+    const geom::Surface* s =
+        teaching_panel_surface(ctx, StageView::basis, draw_triangle_basis, &obj);
     if (!s) return;
     const glm::dvec2 uv = indicator_params(ctx.doc, *obj);
     const bool point = has_valid_point(ctx.doc) && ctx.doc.view.selection.object == obj->id;

@@ -157,11 +157,6 @@ int canvas_plane(const AppContext& ctx, const doc::CurveObject& c) {
     return std::clamp(ctx.ui.curve.view_plane, 0, 2);
 }
 
-double trace_param(const AppContext& ctx, const geom::Curve& c) {
-    const geom::Interval d = geom::domain(c);
-    return denormalize_param(d, std::clamp(ctx.ui.curve.trace_t, 0.0, 1.0));
-}
-
 namespace {
 
 // Zoom about the pointer (wheel), pan (right or middle drag); the panel's Fit frames again.
@@ -276,7 +271,7 @@ void draw_curve_points(const AppContext& ctx, Picture& top, const doc::CurveObje
 void draw_curve_deboor(const AppContext& ctx, Picture& top, const geom::Curve& g,
                        const CanvasPixel& gx) {
     const float k = ctx.ui.scale();
-    const double t = trace_param(ctx, g);
+    const double t = ctx.ui.curve.trace_param(g);
     const geom::DeBoorTriangle tri = geom::deboor_curve(g, t);
     const int levels = static_cast<int>(tri.levels.size()) - 1;
     for (int lv = 1; lv <= levels; ++lv) {
@@ -341,7 +336,7 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const doc::CurveObjec
     plane_origin_axes(pic, map, canvas, light);
 
     draw_curve_and_polygon(ctx, pic, g, gx);
-    draw_curve_analysis(ctx, g, trace_param(ctx, g), pic, gx);
+    draw_curve_analysis(ctx, g, ctx.ui.curve.trace_param(g), pic, gx);
     // Over them: the points, de Boor's construction; every text is placed with the others.
     Picture& top = pic;
     const Rgba8 text_col = ImGui::GetColorU32(ImGuiCol_Text);

@@ -63,7 +63,8 @@ void triangle_lines(const geom::DeBoorTriangle& t, bool u_stage, int row, int up
 
 void draw_deboor_panel(AppContext& ctx) {
     const doc::Object* obj = nullptr;
-    const geom::Surface* s = teaching_panel_surface(ctx, StageView::deboor, draw_triangle_casteljau, &obj);
+    const geom::Surface* s =
+        teaching_panel_surface(ctx, StageView::deboor, draw_triangle_casteljau, &obj);
     if (!s) return;
     const glm::dvec2 uv = indicator_params(ctx.doc, *obj);
     const geom::DeBoorSurfaceTrace trace = geom::deboor_surface(*s, uv.x, uv.y);

@@ -7,9 +7,9 @@
 #include "core/geom/status.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/panels/stage_controls.hpp"
-#include "ui/view/triangle_domain.hpp"
 #include "ui/theme.hpp"
 #include "ui/view/doc_access.hpp"
+#include "ui/view/triangle_domain.hpp"
 
 namespace isoparm::ui {
 
@@ -89,7 +89,8 @@ const geom::Surface* teaching_panel_surface(AppContext& ctx, StageView view,
         triangle_panel(ctx, *triangle, *t);
         return nullptr;
     }
-    const geom::Surface* s = selected_non_surface(ctx.doc) ? nullptr : current_surface(ctx.doc, obj);
+    const geom::Surface* s =
+        selected_non_surface(ctx.doc) ? nullptr : current_surface(ctx.doc, obj);
     if (!s) no_surface_text(ctx);
     return s;
 }

@@ -382,5 +382,4 @@ void handle_mouse(AppContext& ctx, const Viewport& vp) {
     if (ImGui::IsItemDeactivated()) end_gesture(ctx, vp, mouse);
 }
 
-
 } // namespace isoparm::ui
