@@ -4,10 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
-#include <iterator>
 
 #include "core/geom/curvature.hpp"
-#include "core/geom/enum_names.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/tessellate.hpp"
@@ -71,20 +69,20 @@ BorderLevel border_level(const BorderMeasure& m, double size) {
     return h.g2 ? BorderLevel::g2 : BorderLevel::c1;
 }
 
-namespace {
-
-// As the Continuity tab, the status line and the measurements name each level.
-constexpr geom::EnumName<BorderLevel> border_level_names[] = {
-    {BorderLevel::broken, "broken"}, {BorderLevel::c0, "C0"},      {BorderLevel::g1, "G1"},
-    {BorderLevel::c1, "C1"},         {BorderLevel::g2, "C1 + G2"},
-};
-static_assert(geom::in_declaration_order(border_level_names));
-
-} // namespace
-
 const char* border_level_name(BorderLevel level) {
-    const auto k = static_cast<std::size_t>(level);
-    return k < std::size(border_level_names) ? border_level_names[k].name : "?";
+    switch (level) {
+    case BorderLevel::broken:
+        return "broken";
+    case BorderLevel::c0:
+        return "C0";
+    case BorderLevel::g1:
+        return "G1";
+    case BorderLevel::c1:
+        return "C1";
+    case BorderLevel::g2:
+        return "C1 + G2";
+    }
+    return "?";
 }
 
 double group_size(const Document& doc, std::uint64_t group) {

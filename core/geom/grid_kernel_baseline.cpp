@@ -6,10 +6,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <initializer_list>
-#include <iterator>
 
 #define ISOPARM_KERNEL_LANES 2
-#include "core/geom/enum_names.hpp"
 #include "core/geom/grid_kernel.inl"
 
 namespace isoparm::geom::kernel {
@@ -54,26 +52,23 @@ bool supported(Path path) {
     return false;
 }
 
-namespace {
-// As ISOPARM_SIMD and the benchmarks' labels spell the paths.
-constexpr EnumName<Path> path_names[] = {
-    {Path::baseline, "baseline"},
-    {Path::avx2, "avx2"},
-    {Path::avx512, "avx512"},
-};
-static_assert(in_declaration_order(path_names));
-} // namespace
-
 const char* name(Path path) {
-    const auto k = static_cast<std::size_t>(path);
-    return k < std::size(path_names) ? path_names[k].name : "?";
+    switch (path) {
+    case Path::baseline:
+        return "baseline";
+    case Path::avx2:
+        return "avx2";
+    case Path::avx512:
+        return "avx512";
+    }
+    return "?";
 }
 
 namespace {
 Path choose() {
     if (const char* forced = std::getenv("ISOPARM_SIMD"); forced && *forced) {
-        for (const EnumName<Path>& p : path_names)
-            if (std::strcmp(forced, p.name) == 0 && supported(p.value)) return p.value;
+        for (Path p : {Path::baseline, Path::avx2, Path::avx512})
+            if (std::strcmp(forced, name(p)) == 0 && supported(p)) return p;
     }
     for (Path p : {Path::avx512, Path::avx2})
         if (supported(p)) return p;

@@ -1,9 +1,7 @@
 #include "core/scene/import_document.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cctype>
-#include <iterator>
 
 #include "core/doc/commands.hpp"
 #include "core/exchange/cad_reader.hpp"
@@ -23,24 +21,16 @@ std::string lower_extension(const std::string& path) {
     return ext;
 }
 
-// Each format's short name (a nameless object's is "<name> <k>"), its label in messages and
-// its file extensions, in the order of ImportFormat.
-struct ImportFormatFacts {
-    ImportFormat format;
-    const char* name;
-    const char* label;
-    std::array<const char*, 2> extensions;
-};
-constexpr ImportFormatFacts import_formats[] = {
-    {ImportFormat::iges, "iges", "IGES", {".igs", ".iges"}},
-    {ImportFormat::step, "step", "STEP", {".stp", ".step"}},
-    {ImportFormat::obj, "obj", "OBJ free-form", {".obj", nullptr}},
-};
-static_assert(std::size(import_formats) == static_cast<std::size_t>(ImportFormat::obj) + 1);
-
-const ImportFormatFacts& facts_of(ImportFormat f) {
-    const auto k = static_cast<std::size_t>(f);
-    return import_formats[k < std::size(import_formats) ? k : std::size(import_formats) - 1];
+const char* short_name(ImportFormat f) {
+    switch (f) {
+    case ImportFormat::iges:
+        return "iges";
+    case ImportFormat::step:
+        return "step";
+    case ImportFormat::obj:
+        return "obj";
+    }
+    return "obj";
 }
 
 std::string clean_name(const std::string& name) {
@@ -58,14 +48,22 @@ const char* const import_extensions = ".igs/.iges, .stp/.step, .obj";
 
 std::optional<ImportFormat> import_format_for(const std::string& path) {
     const std::string ext = lower_extension(path);
-    for (const ImportFormatFacts& f : import_formats)
-        for (const char* e : f.extensions)
-            if (e && ext == e) return f.format;
+    if (ext == ".igs" || ext == ".iges") return ImportFormat::iges;
+    if (ext == ".stp" || ext == ".step") return ImportFormat::step;
+    if (ext == ".obj") return ImportFormat::obj;
     return std::nullopt;
 }
 
 const char* import_format_label(ImportFormat f) {
-    return facts_of(f).label;
+    switch (f) {
+    case ImportFormat::iges:
+        return "IGES";
+    case ImportFormat::step:
+        return "STEP";
+    case ImportFormat::obj:
+        return "OBJ free-form";
+    }
+    return "OBJ free-form";
 }
 
 geom::Expected<ImportedObjects> import_text(std::string_view text, ImportFormat format) {
@@ -102,7 +100,7 @@ geom::Expected<ImportedObjects> import_text(std::string_view text, ImportFormat 
         ++k;
         doc::Object o;
         o.name = clean_name(shape.name);
-        if (o.name.empty()) o.name = std::string(facts_of(format).name) + " " + std::to_string(k);
+        if (o.name.empty()) o.name = std::string(short_name(format)) + " " + std::to_string(k);
         if (auto* c = std::get_if<geom::Curve>(&shape.shape)) {
             doc::CurveObject co;
             co.curve = std::move(*c);
