@@ -43,7 +43,7 @@ int run_unguarded(const ExportCommandOptions& o) {
             o.mesh ? "--mesh asks for a mesh: name the output .obj, .stl, .ply or .glb, not '" +
                          o.output + "'"
                    : "cannot tell the format of '" + o.output + "' from its extension (" +
-                         scene::export_extensions + "; .obj --mesh for an OBJ mesh)");
+                         scene::export_extensions() + "; .obj --mesh for an OBJ mesh)");
     if (geom::Status st = scene::check_output_path(o.output); !st) return fail(st.error().message);
     if (geom::Status st = scene::check_output_is_not_input(o.output, {o.scene}); !st)
         return fail(st.error().message);

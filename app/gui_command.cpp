@@ -10,8 +10,8 @@
 #include "ui/render/gl.hpp"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
 #include <imgui.h>
-#include <imgui_impl_glfw.h>
 
 #include "app/commands.hpp"
 #include "app/keep_libraries_loaded.hpp"

@@ -32,7 +32,7 @@ int run_unguarded(const ImportCommandOptions& o) {
     };
     if (!scene::import_format_for(o.input))
         return fail("cannot tell the format of '" + o.input + "' from its extension (" +
-                    scene::import_extensions + ")");
+                    scene::import_extensions() + ")");
     // The output is a scene: an exchange format's extension is a slip (it would hold JSON).
     if (o.output != "-" &&
         (scene::import_format_for(o.output) || scene::export_format_for(o.output, false)))

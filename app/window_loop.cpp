@@ -7,7 +7,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
-#include <imgui_impl_glfw.h>
+#include <backends/imgui_impl_glfw.h>
 #include <imgui_internal.h> // the active item and the popup stack: see settling()
 
 #include "app/window_input.hpp"

@@ -56,7 +56,7 @@ bool export_visible_objects(AppContext& ctx, const std::string& path, std::strin
     const auto format = scene::export_format_for(path, false);
     if (!format) {
         error = "Cannot tell the format of '" + fs::path(path).filename().string() +
-                "' from its extension (" + scene::export_extensions + ").";
+                "' from its extension (" + scene::export_extensions() + ").";
         return false;
     }
     std::vector<std::string> inputs;

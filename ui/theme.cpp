@@ -2,13 +2,13 @@
 #include "ui/theme.hpp"
 
 #include <algorithm>
+#include <backends/imgui_impl_opengl3.h>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <imgui.h>
-#include <imgui_impl_opengl3.h>
 
 #include "ui/view/text_wrap.hpp"
 

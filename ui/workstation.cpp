@@ -3,10 +3,10 @@
 #include "ui/workstation.hpp"
 
 #include <algorithm>
+#include <backends/imgui_impl_opengl3.h>
 #include <cmath>
 #include <cstdio>
 #include <imgui.h>
-#include <imgui_impl_opengl3.h>
 
 #include "ui/actions.hpp"
 #include "ui/animation_actions.hpp"

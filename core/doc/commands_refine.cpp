@@ -121,13 +121,13 @@ public:
         if (!found) return found.error();
         Object& obj = **found;
         Shape first, second;
-        if (auto* s = std::get_if<SurfaceObject>(&obj.shape)) {
-            auto r = geom::split(s->surface, dir_, t_);
+        if (const geom::Surface* s = obj.surface()) {
+            auto r = geom::split(*s, dir_, t_);
             if (!r) return r.error();
             first = SurfaceObject{std::move(r->first)};
             second = SurfaceObject{std::move(r->second)};
         } else {
-            const auto& c = std::get<CurveObject>(obj.shape);
+            const CurveObject& c = *obj.curve_object(); // refinable: a surface or a curve
             auto r = geom::split(c.curve, t_);
             if (!r) return r.error();
             first = CurveObject{std::move(r->first), c.plane};
@@ -330,7 +330,8 @@ std::unique_ptr<Command> elevate_degree(std::uint64_t id, geom::Dir dir, int tim
         return geom::elevate_triangle(t, times);
     };
     r.label = [=](const Shape& before, const Shape&) {
-        const bool one_degree = is_curve(before) || kind_of(before) == ObjectKind::triangle;
+        // A tensor-product surface has two degrees; curves and triangles one.
+        const bool one_degree = !surface_of(before);
         std::string s =
             one_degree ? "Elevate degree" : std::string("Elevate degree in ") + dir_name(dir);
         if (times > 1) s += " by " + std::to_string(times);

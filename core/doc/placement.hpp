@@ -11,10 +11,6 @@
 
 namespace isoparm::doc {
 
-struct Box {
-    glm::dvec3 lo{0}, hi{0};
-};
-
 // The box of an object's control points (an implicit surface: its polygonization bounds).
 std::optional<Box> bounds_of(const Shape& shape);
 // The box of every visible object; nothing when the scene shows nothing.
@@ -23,11 +19,8 @@ std::optional<Box> scene_bounds(const Document& doc);
 // Translates `shape` along +x so its box starts a gap (a quarter of its own width, at least
 // 0.5) past the visible objects' box, level with that box's centre in y; unchanged in an
 // empty scene. An implicit surface moves with its formula: x, y, z become (x - dx), ...
+// (translated, core/doc/kinds/implicit_kind.hpp).
 void place_beside_scene(const Document& doc, Shape& shape);
-
-// An implicit surface moved by d: its box moved and every x, y, z of its expression replaced
-// by (x - d.x), (y - d.y), (z - d.z) (a zero component leaves its coordinate as it is).
-ImplicitObject translated(const ImplicitObject& f, const glm::dvec3& d);
 
 // `wanted` when no object has that name, else the first of "wanted (2)", "wanted (3)", ...
 // that none has (the object `except` does not count: a renamed or rebuilt object).

@@ -7,6 +7,7 @@
 #include "core/geom/knots.hpp"
 #include "core/geom/rational_picture.hpp"
 #include "core/geom/refine.hpp"
+#include "core/geom/refine_within_limits.hpp"
 
 namespace isoparm::doc::detail {
 
@@ -27,8 +28,8 @@ geom::Expected<ConstructionResult> build_isocurve(const Document& doc,
     const geom::Surface* s = o->surface();
     if (!s)
         return make_error(ErrorCode::schema,
-                          "an isocurve is taken from a surface; '" + o->name + "' is a " +
-                              kind_name(o->shape),
+                          "an isocurve is taken from a surface; '" + o->name + "' is " +
+                              kind_noun(o->kind()),
                           "/curves/0");
     const double t = request.iso_t;
     if (!std::isfinite(t) || t < 0 || t > 1)
@@ -66,6 +67,7 @@ geom::Status apply_refinements(ConstructionResult& built,
                                : geom::elevate_degree(*s, r.dir, r.times);
             if (!next) return next.error().under(at);
             *s = std::move(next).value();
+            if (auto st = geom::check_net_size(*s, at); !st) return st;
         } else if (geom::Curve* c = built.object.curve()) {
             if (r.dir != geom::Dir::u)
                 return make_error(ErrorCode::schema, "a curve has only one direction (u)",
@@ -74,8 +76,8 @@ geom::Status apply_refinements(ConstructionResult& built,
                 insert ? geom::insert_knot(*c, r.t, r.times) : geom::elevate_degree(*c, r.times);
             if (!next) return next.error().under(at);
             *c = std::move(next).value();
+            if (auto st = geom::check_net_size(*c, at); !st) return st;
         }
-        if (auto st = check_size(built.object.shape, at); !st) return st;
     }
     return geom::Ok{};
 }

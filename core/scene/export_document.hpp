@@ -10,6 +10,7 @@
 
 #include "core/doc/document.hpp"
 #include "core/geom/status.hpp"
+#include "core/scene/format_extensions.hpp"
 
 namespace isoparm::scene {
 
@@ -22,15 +23,33 @@ enum class ExportFormat {
     ply,      // .ply: ASCII PLY with normals
     glb,      // .glb: glTF 2.0 binary
 };
+inline constexpr geom::EnumName<ExportFormat> export_format_names[] = {
+    {ExportFormat::iges, "iges", "IGES"},        {ExportFormat::step, "step", "STEP"},
+    {ExportFormat::obj, "obj", "OBJ free-form"}, {ExportFormat::obj_mesh, "obj_mesh", "OBJ mesh"},
+    {ExportFormat::stl, "stl", "binary STL"},    {ExportFormat::ply, "ply", "PLY"},
+    {ExportFormat::glb, "glb", "glTF binary"},
+};
+static_assert(geom::in_declaration_order(export_format_names));
+constexpr std::span<const geom::EnumName<ExportFormat>> enum_names(ExportFormat) {
+    return export_format_names;
+}
+// The extensions each format is written to (.obj: free-form; an OBJ mesh when asked).
+inline constexpr ExtensionOf<ExportFormat> export_extension_table[] = {
+    {".igs", ExportFormat::iges},  {".iges", ExportFormat::iges}, {".stp", ExportFormat::step},
+    {".step", ExportFormat::step}, {".obj", ExportFormat::obj},   {".stl", ExportFormat::stl},
+    {".ply", ExportFormat::ply},   {".glb", ExportFormat::glb},
+};
 
 // The format a file name asks for, from its extension (any case); `mesh` turns .obj into an
 // OBJ mesh and is refused with the exact-only extensions. nullopt for an unknown extension.
 std::optional<ExportFormat> export_format_for(const std::string& path, bool mesh);
 bool is_mesh_format(ExportFormat f);
 // "IGES", "STEP", "OBJ free-form", "OBJ mesh", "binary STL", "PLY", "glTF binary".
-const char* export_format_label(ExportFormat f);
+inline const char* export_format_label(ExportFormat f) {
+    return geom::label_of(f);
+}
 // The extensions, for messages: ".igs/.iges, .stp/.step, .obj, .stl, .ply, .glb".
-extern const char* const export_extensions;
+std::string export_extensions();
 
 // The objects to export: every visible object when `which` is empty, else the one object whose
 // id (decimal digits) or name is `which` (an id wins over a name; two objects of that name are

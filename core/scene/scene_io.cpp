@@ -90,18 +90,6 @@ json color_to_json(const Rgba& c) {
 // Reading helpers (the shared ones are in core/json/fields.hpp): every error carries the
 // absolute path into the scene.
 
-Expected<glm::dvec3> read_vec3(const json& v, const std::string& at, const char* what) {
-    if (!v.is_array() || v.size() != 3)
-        return schema_error(std::string(what) + " must be [x, y, z]", at);
-    glm::dvec3 p(0.0);
-    for (int a = 0; a < 3; ++a) {
-        auto x = read_finite(v[a], at + "/" + std::to_string(a), "a coordinate");
-        if (!x) return x.error();
-        p[a] = *x;
-    }
-    return p;
-}
-
 Expected<Rgba> read_color(const json& v, const std::string& at) {
     if (!v.is_array() || (v.size() != 3 && v.size() != 4))
         return schema_error("a colour is [r, g, b] or [r, g, b, a] with channels in [0, 1]", at);
@@ -121,129 +109,55 @@ Expected<Rgba> read_color(const json& v, const std::string& at) {
 // ---------------------------------------------------------------------------------------
 // Objects.
 
-Expected<ImplicitObject> implicit_from_json(const json& j, const std::string& at) {
-    if (auto st = expect_object(j, at, "an implicit surface"); !st) return st.error();
-    if (auto st = check_members(j, at, "an implicit surface",
-                                {"expression", "parameters", "bounds", "cell"});
-        !st)
-        return st.error();
-    ImplicitObject f;
-    const auto expr = j.find("expression");
-    if (expr == j.end()) return missing_member(at, "expression");
-    auto text = read_string(*expr, at + "/expression", "the expression");
-    if (!text) return text.error();
-    f.expression = *text;
-    if (const auto params = j.find("parameters"); params != j.end()) {
-        const std::string pat = at + "/parameters";
-        if (!params->is_array())
-            return schema_error("parameters is an array of {\"name\": ..., \"value\": ...}", pat);
-        for (std::size_t k = 0; k < params->size(); ++k) {
-            const json& p = (*params)[k];
-            const std::string kat = pat + "/" + std::to_string(k);
-            if (auto st = expect_object(p, kat, "a parameter"); !st) return st.error();
-            if (auto st = check_members(p, kat, "a parameter", {"name", "value"}); !st)
-                return st.error();
-            if (!p.contains("name")) return missing_member(kat, "name");
-            if (!p.contains("value")) return missing_member(kat, "value");
-            auto name = read_string(p["name"], kat + "/name", "a parameter name");
-            if (!name) return name.error();
-            auto value = read_finite(p["value"], kat + "/value", "a parameter value");
-            if (!value) return value.error();
-            f.parameter_names.push_back(*name);
-            f.parameter_values.push_back(*value);
-        }
-    }
-    if (const auto bounds = j.find("bounds"); bounds != j.end()) {
-        if (!bounds->is_array() || bounds->size() != 2)
-            return schema_error("bounds is [[xmin, ymin, zmin], [xmax, ymax, zmax]]",
-                                at + "/bounds");
-        auto lo = read_vec3((*bounds)[0], at + "/bounds/0", "the lower corner");
-        if (!lo) return lo.error();
-        auto hi = read_vec3((*bounds)[1], at + "/bounds/1", "the upper corner");
-        if (!hi) return hi.error();
-        f.lo = *lo;
-        f.hi = *hi;
-    }
-    if (const auto cell = j.find("cell"); cell != j.end()) {
-        auto c = read_finite(*cell, at + "/cell", "the cell size");
-        if (!c) return c.error();
-        f.cell = *c;
-    }
-    return f;
-}
-
 // The kind a scene object or a command's shape names ("/kind" under at).
-Expected<ObjectKind> read_kind(const json& j, const std::string& at) {
+Expected<ObjectKind> read_kind_name(const json& j, const std::string& at) {
     const auto kind_it = j.find("kind");
     if (kind_it == j.end()) return missing_member(at, "kind");
     auto kind = read_string(*kind_it, at + "/kind", "kind");
     if (!kind) return kind.error();
     const std::optional<ObjectKind> named = geom::parse_name<ObjectKind>(*kind);
     if (!named)
-        return schema_error(
-            "kind must be surface, curve, implicit or triangle, got '" + *kind + "'", at + "/kind");
+        return schema_error("kind must be " + geom::names_list<ObjectKind>() + ", got '" + *kind +
+                                "'",
+                            at + "/kind");
     return *named;
+}
+
+// The members a scene object (`object`) or a command's shape of this kind may have, and how
+// messages name it ("a surface object", "an implicit shape").
+struct KindMembers {
+    std::vector<std::string_view> allowed;
+    std::string what;
+};
+KindMembers kind_members(ObjectKind kind, bool object) {
+    return with_kind_type(kind, [&]<class K>(std::type_identity<K>) {
+        KindMembers m;
+        m.allowed = object ? std::vector<std::string_view>{"id", "name", "kind", "visible"}
+                           : std::vector<std::string_view>{"kind"};
+        if (object && K::in_patch_groups) m.allowed.push_back("patch_group");
+        m.allowed.insert(m.allowed.end(), K::shape_members.begin(), K::shape_members.end());
+        if (object && K::constructed) m.allowed.push_back("construction");
+        m.what = kind_file_noun(kind) + (object ? " object" : " shape");
+        return m;
+    });
 }
 
 // The geometry members of a shape of this kind, after the caller checked the members.
 Expected<Shape> read_shape(const json& j, const std::string& at, ObjectKind kind) {
-    const bool surface = kind == ObjectKind::surface, curve = kind == ObjectKind::curve;
     const char* member = geom::name_of(kind); // the geometry's member is named as the kind
     const std::string gat = at + "/" + member;
-    const auto geometry = j.find(member);
-    if (geometry == j.end())
+    if (j.find(member) == j.end())
         return schema_error(std::string("missing member '") + member + "' (the " +
                                 geom::name_of(kind) + " object's geometry)",
                             gat);
-    Shape shape;
-    if (surface) {
-        auto s = surface_from_json(*geometry);
-        if (!s) return s.error().under(gat);
-        shape = SurfaceObject{std::move(s).value()};
-    } else if (curve) {
-        CurveObject c;
-        if (const auto plane = j.find("plane"); plane != j.end()) {
-            auto p = read_string(*plane, at + "/plane", "plane");
-            if (!p) return p.error();
-            const std::optional<CurvePlane> plane_named = geom::parse_name<CurvePlane>(*p);
-            if (!plane_named)
-                return schema_error("plane must be xy, xz, yz or free3d, got '" + *p + "'",
-                                    at + "/plane");
-            c.plane = *plane_named;
-        }
-        if (const auto mode = j.find("knot_mode"); mode != j.end()) {
-            auto m = read_string(*mode, at + "/knot_mode", "knot_mode");
-            if (!m) return m.error();
-            const std::optional<CurveKnotMode> mode_named = geom::parse_name<CurveKnotMode>(*m);
-            if (!mode_named)
-                return schema_error("knot_mode must be clamped_uniform, chord, centripetal, "
-                                    "custom or closed, got '" +
-                                        *m + "'",
-                                    at + "/knot_mode");
-            c.knot_mode = *mode_named;
-        }
-        auto g = curve_from_json(*geometry);
-        if (!g) return g.error().under(gat);
-        c.curve = std::move(g).value();
-        // The designer edits a closed curve's polygon and closes it again: a curve that is not
-        // closed that way would lose its last p points at the first edit.
-        if (c.knot_mode == CurveKnotMode::closed && !geom::is_closed_periodic(c.curve))
-            return schema_error("knot_mode closed needs the curve closed as the curve designer "
-                                "closes it: knots (k - p) / n and the last p control points "
-                                "equal to the first p",
-                                at + "/knot_mode");
-        shape = std::move(c);
-    } else if (kind == ObjectKind::triangle) {
-        auto t = triangle_from_json(*geometry);
-        if (!t) return t.error().under(gat);
-        shape = TriangleObject{std::move(t).value()};
-    } else {
-        auto f = implicit_from_json(*geometry, gat);
-        if (!f) return f.error();
-        shape = std::move(f).value();
-    }
+    auto shape = with_kind_type(kind, [&]<class K>(std::type_identity<K> tag) -> Expected<Shape> {
+        auto k = read_kind(tag, j, at);
+        if (!k) return k.error();
+        return Shape{std::move(k).value()};
+    });
+    if (!shape) return shape.error();
     // The document's own rules (size caps, finite points, the implicit's box and parameters).
-    if (auto st = detail::validate_shape(shape); !st) return st.error().under(gat);
+    if (auto st = detail::validate_shape(*shape); !st) return st.error().under(gat);
     return shape;
 }
 
@@ -251,22 +165,10 @@ Expected<Shape> read_shape(const json& j, const std::string& at, ObjectKind kind
 
 Expected<Object> object_from_json(const json& j, const std::string& at) {
     if (auto st = expect_object(j, at, "an object"); !st) return st.error();
-    auto kind = read_kind(j, at);
+    auto kind = read_kind_name(j, at);
     if (!kind) return kind.error();
-    const bool surface = *kind == ObjectKind::surface, curve = *kind == ObjectKind::curve;
-    if (auto st = surface ? check_members(j, at, "a surface object",
-                                          {"id", "name", "kind", "visible", "patch_group",
-                                           "surface", "construction"})
-                  : curve ? check_members(j, at, "a curve object",
-                                          {"id", "name", "kind", "visible", "plane", "knot_mode",
-                                           "curve", "construction"})
-                  : *kind == ObjectKind::triangle
-                      ? check_members(j, at, "a triangle object",
-                                      {"id", "name", "kind", "visible", "triangle"})
-                      : check_members(j, at, "an implicit object",
-                                      {"id", "name", "kind", "visible", "implicit"});
-        !st)
-        return st.error();
+    const KindMembers members = kind_members(*kind, true);
+    if (auto st = check_members(j, at, members.what, members.allowed); !st) return st.error();
 
     Object o;
     if (const auto id = j.find("id"); id != j.end()) {
@@ -306,44 +208,17 @@ Expected<Object> object_from_json(const json& j, const std::string& at) {
 
 Expected<Shape> shape_from_json(const json& j, const std::string& at) {
     if (auto st = expect_object(j, at, "a shape"); !st) return st.error();
-    auto kind = read_kind(j, at);
+    auto kind = read_kind_name(j, at);
     if (!kind) return kind.error();
-    const bool surface = *kind == ObjectKind::surface, curve = *kind == ObjectKind::curve;
-    if (auto st =
-            surface ? check_members(j, at, "a surface shape", {"kind", "surface"})
-            : curve ? check_members(j, at, "a curve shape", {"kind", "plane", "knot_mode", "curve"})
-            : *kind == ObjectKind::triangle
-                ? check_members(j, at, "a triangle shape", {"kind", "triangle"})
-                : check_members(j, at, "an implicit shape", {"kind", "implicit"});
-        !st)
-        return st.error();
+    const KindMembers members = kind_members(*kind, false);
+    if (auto st = check_members(j, at, members.what, members.allowed); !st) return st.error();
     return read_shape(j, at, *kind);
 }
 
 json shape_to_json(const Shape& shape) {
     json j = json::object();
     j["kind"] = geom::name_of(kind_of(shape));
-    if (const geom::Surface* s = surface_of(shape)) {
-        j["surface"] = surface_to_json(*s);
-    } else if (const CurveObject* c = curve_object_of(shape)) {
-        j["plane"] = geom::name_of(c->plane);
-        // Custom (the default) is omitted, so older scenes save back unchanged.
-        if (c->knot_mode != CurveKnotMode::custom) j["knot_mode"] = geom::name_of(c->knot_mode);
-        j["curve"] = curve_to_json(c->curve);
-    } else if (const geom::TrianglePatch* t = triangle_of(shape)) {
-        j["triangle"] = triangle_to_json(*t);
-    } else {
-        const ImplicitObject& f = *implicit_of(shape);
-        json params = json::array();
-        const std::size_t count = std::min(f.parameter_names.size(), f.parameter_values.size());
-        for (std::size_t k = 0; k < count; ++k)
-            params.push_back({{"name", f.parameter_names[k]}, {"value", f.parameter_values[k]}});
-        j["implicit"] = {{"expression", f.expression},
-                         {"parameters", std::move(params)},
-                         {"bounds", json::array({json::array({f.lo.x, f.lo.y, f.lo.z}),
-                                                 json::array({f.hi.x, f.hi.y, f.hi.z})})},
-                         {"cell", f.cell}};
-    }
+    std::visit([&](const auto& k) { kind_to_json(k, j); }, shape);
     return j;
 }
 
@@ -410,7 +285,8 @@ Expected<DisplaySettings> display_from_json(const json& j, const std::string& at
             if (!s) return s.error();
             const std::optional<DisplayStyle> style = geom::parse_name<DisplayStyle>(*s);
             if (!style)
-                return schema_error("style must be shaded, wireframe or both, got '" + *s + "'",
+                return schema_error("style must be " + geom::names_list<DisplayStyle>() +
+                                        ", got '" + *s + "'",
                                     mat);
             d.style = *style;
             continue;
@@ -426,9 +302,8 @@ Expected<DisplaySettings> display_from_json(const json& j, const std::string& at
             if (!a) return a.error();
             const std::optional<AnalysisMode> mode = geom::parse_name<AnalysisMode>(*a);
             if (!mode)
-                return schema_error("analysis must be off, gauss, mean, kmax, kmin, zebra or "
-                                    "isophote, got '" +
-                                        *a + "'",
+                return schema_error("analysis must be " + geom::names_list<AnalysisMode>() +
+                                        ", got '" + *a + "'",
                                     mat);
             d.analysis = *mode;
             continue;
@@ -495,42 +370,11 @@ Expected<Selection> selection_from_json(const json& j, const std::string& at, co
     sel.object = o->id;
     const auto point = j.find("point");
     if (point == j.end()) return sel;
-    if (o->implicit())
-        return schema_error("an implicit surface has no control points to select", at + "/point");
-    const geom::Surface* surface = o->surface();
-    const geom::TrianglePatch* triangle = o->triangle();
-    const std::size_t arity = surface || triangle ? 2 : 1;
-    if (!point->is_array() || point->size() != arity)
-        return schema_error(surface ? "a surface's selected point is [i, j]"
-                            : triangle
-                                ? "a triangle's selected point is [i, j] (b_ijk, k = n - i - j)"
-                                : "a curve's selected point is [i]",
-                            at + "/point");
-    int counts[2];
-    if (triangle) {
-        counts[0] = counts[1] = triangle->degree + 1;
-    } else if (surface) {
-        counts[0] = surface->n_u;
-        counts[1] = surface->n_v;
-    } else {
-        counts[0] = o->curve()->count();
-        counts[1] = 0;
-    }
-    int idx[2] = {-1, -1};
-    for (std::size_t k = 0; k < arity; ++k) {
-        auto v = read_integer((*point)[k], at + "/point/" + std::to_string(k),
-                              "a control point index", 0, counts[k] - 1);
-        if (!v) return v.error();
-        idx[k] = static_cast<int>(*v);
-    }
-    if (triangle && idx[0] + idx[1] > triangle->degree)
-        return schema_error(
-            "a degree " + std::to_string(triangle->degree) +
-                " triangle's point [i, j] needs i + j <= " + std::to_string(triangle->degree) +
-                ", got [" + std::to_string(idx[0]) + ", " + std::to_string(idx[1]) + "]",
-            at + "/point/1");
-    sel.i = idx[0];
-    sel.j = idx[1];
+    auto idx = std::visit(
+        [&](const auto& k) { return selected_point_from_json(k, *point, at + "/point"); },
+        o->shape);
+    if (!idx) return idx.error();
+    std::tie(sel.i, sel.j) = *idx;
     return sel;
 }
 
@@ -572,7 +416,8 @@ Expected<Continuity> continuity_from_json(const json& j, const std::string& at) 
     if (!name) return name.error();
     const std::optional<Continuity> continuity = geom::parse_name<Continuity>(*name);
     if (!continuity)
-        return schema_error("continuity must be off, C0 or C1, got '" + *name + "'", at);
+        return schema_error(
+            "continuity must be " + geom::names_list<Continuity>() + ", got '" + *name + "'", at);
     return *continuity;
 }
 

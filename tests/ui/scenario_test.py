@@ -935,6 +935,40 @@ def triangle_patch_new_split_elevate(s, ctx):
           f"elevation gave degree {elevated['degree']}, {len(elevated['points'])} points")
 
 
+def triangle_moves_and_rotates(s, ctx):
+    """triangle-cubic.json (its rational cubic triangle selected): the 3D view's Move x slider
+    moves every control point b_ijk by the same offset along x, Rotate z turns the patch rigidly
+    about z (its points keep their distances), each drag one undo step."""
+    tri = objects_of(s.save(), "triangle")[0]
+    start = tri["triangle"]["points"]
+    x, y, w, h = s.rect("view3d/move_x")
+    s.drag(x + w / 2, y + h / 2, 60, 0)
+    moved = by_name(s.save(), tri["name"])["triangle"]["points"]
+    dx = moved[0][0] - start[0][0]
+    check(dx > 0, f"Move x left b_300 at {moved[0]} (was {start[0]})")
+    check(all(near(m, [p[0] + dx, p[1], p[2]], 1e-9) for m, p in zip(moved, start)),
+          f"Move x did not move every control point by {dx} along x: {moved}")
+    ctx.shot(s, "triangle-moved")
+    x, y, w, h = s.rect("view3d/rotate_z")
+    s.drag(x + w / 2, y + h / 2, 40, 0)
+    turned = by_name(s.save(), tri["name"])["triangle"]["points"]
+
+    def dist(a, b):
+        return sum((p - q) ** 2 for p, q in zip(a, b)) ** 0.5
+    check(turned != moved, "Rotate z left the triangle where it was")
+    check(all(abs(dist(turned[i], turned[j]) - dist(moved[i], moved[j])) < 1e-9
+              for i in range(len(moved)) for j in range(i)),
+          "Rotate z changed the distances between control points")
+    check(all(abs(t[2] - m[2]) < 1e-9 for t, m in zip(turned, moved)), "Rotate z moved z")
+    ctx.shot(s, "triangle-rotated")
+    s.key("ctrl+z")
+    check(by_name(s.save(), tri["name"])["triangle"]["points"] == moved,
+          "Ctrl+Z did not take the rotation back in one step")
+    s.key("ctrl+z")
+    check(by_name(s.save(), tri["name"])["triangle"]["points"] == start,
+          "Ctrl+Z did not take the move back in one step")
+
+
 def png_size(path):
     """Width and height from a PNG's IHDR chunk."""
     with open(path, "rb") as f:
@@ -1314,6 +1348,7 @@ SCENARIOS = [
     ("toolbox", "fig8-revolution.json", toolbox_split_knot_then_convert),
     ("fit_panel", "fig3b-weight-5.json", fit_panel_least_squares),
     ("triangle_panels", "triangle-cubic.json", triangle_panels_trace_step_basis),
+    ("triangle_move_rotate", "triangle-cubic.json", triangle_moves_and_rotates),
     ("export_import", "fig8-revolution.json", file_export_then_import),
     ("import_crash", "fig8-revolution.json", import_survives_files_that_crash_the_reader),
     ("continuity_tab", "fig6c-split-left-v05.json", continuity_tab_measures_the_borders),

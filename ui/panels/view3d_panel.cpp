@@ -250,9 +250,10 @@ void transform_slider(AppContext& ctx, int k, float width) {
                          held ? "%+.3f" : axis_names[a]);
     else
         ImGui::DragFloat(ids[k], value, 0.5f, 0.f, 0.f, held ? "%+.1f deg" : axis_names[a]);
+    report_item(std::string(k < 3 ? "view3d/move_" : "view3d/rotate_") + axis_names[a]);
     if (ImGui::IsItemHovered() && !held)
-        ImGui::SetTooltip(k < 3 ? "Drag left or right to move the selected surface along %s"
-                                : "Drag left or right to rotate the selected surface about %s",
+        ImGui::SetTooltip(k < 3 ? "Drag left or right to move the selected object along %s"
+                                : "Drag left or right to rotate the selected object about %s",
                           axis_names[a]);
     // A constructed object follows its curves: the slider asks to detach it first.
     if (ImGui::IsItemActivated() && id != 0 && may_edit_points(ctx, id)) {
