@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 
+#include "app/command_run.hpp"
 #include "app/commands.hpp"
 #include "core/json/out_of_memory.hpp"
 #include "core/scene/atomic_file.hpp"
@@ -61,26 +62,8 @@ int run_unguarded(const ExportCommandOptions& o) {
     options.name = stem(o.scene);
     const auto result = scene::export_document(*objects, options);
     if (!result) return fail(result.error().message);
-    for (const std::string& s : result->skipped)
-        std::cerr << "isoparm export: skipped " << s << "\n";
-    if (geom::Status st = scene::write_file_atomically(o.output, result->bytes); !st) {
-        std::cerr << "isoparm export: " << st.error().message << "\n";
-        return 1;
-    }
-    return 0;
-}
-
-// Out of memory is an error, never an abort: a reserve of address space is released on the
-// first failed allocation so the unwinding finds memory (core/json/out_of_memory.hpp).
-int run(const ExportCommandOptions& o) {
-    json_io::arm_memory_reserve();
-    try {
-        return run_unguarded(o);
-    } catch (const std::bad_alloc&) {
-        std::cerr << "isoparm export: " << json_io::out_of_memory_message << " (exporting '"
-                  << o.scene << "'); nothing written\n";
-        return 1;
-    }
+    return report_written("isoparm export: ", result->skipped,
+                          scene::write_file_atomically(o.output, result->bytes));
 }
 
 } // namespace
@@ -101,7 +84,10 @@ Action register_export_command(CLI::App& app) {
                     "mesh formats: points per direction of each surface's tessellation, 2..1000 "
                     "(default 32; implicit surfaces use their own cell)");
     sub->add_flag("--mesh", o->mesh, "with .obj: write a triangle mesh instead of exact geometry");
-    return [o]() -> int { return run(*o); };
+    return [o]() -> int {
+        return run_memory_guarded([&o] { return run_unguarded(*o); }, "isoparm export: ",
+                                  " (exporting '" + o->scene + "'); nothing written");
+    };
 }
 
 } // namespace isoparm::app

@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 
+#include "app/command_run.hpp"
 #include "app/commands.hpp"
 #include "core/doc/commands.hpp"
 #include "core/json/out_of_memory.hpp"
@@ -59,26 +60,8 @@ int run_unguarded(const ImportCommandOptions& o) {
                   << " objects can be shown\n";
         document.view.display.density = density;
     }
-    for (const std::string& s : imported->skipped)
-        std::cerr << "isoparm import: skipped " << s << "\n";
-    if (geom::Status st = scene::save_scene(document, o.output); !st) {
-        std::cerr << "isoparm import: " << st.error().message << "\n";
-        return 1;
-    }
-    return 0;
-}
-
-// Out of memory is an error, never an abort: a reserve of address space is released on the
-// first failed allocation so the unwinding finds memory (core/json/out_of_memory.hpp).
-int run(const ImportCommandOptions& o) {
-    json_io::arm_memory_reserve();
-    try {
-        return run_unguarded(o);
-    } catch (const std::bad_alloc&) {
-        std::cerr << "isoparm import: " << json_io::out_of_memory_message << " (importing '"
-                  << o.input << "'); nothing written\n";
-        return 1;
-    }
+    return report_written("isoparm import: ", imported->skipped,
+                          scene::save_scene(document, o.output));
 }
 
 } // namespace
@@ -91,7 +74,10 @@ Action register_import_command(CLI::App& app) {
     sub->add_option("FILE", o->input, "the file to read: .igs/.iges, .stp/.step, .obj")->required();
     sub->add_option("-o,--output", o->output, "the scene to write (.json; - for standard output)")
         ->required();
-    return [o]() -> int { return run(*o); };
+    return [o]() -> int {
+        return run_memory_guarded([&o] { return run_unguarded(*o); }, "isoparm import: ",
+                                  " (importing '" + o->input + "'); nothing written");
+    };
 }
 
 } // namespace isoparm::app

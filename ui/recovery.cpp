@@ -70,10 +70,7 @@ void draw_recovery_dialog(AppContext& ctx) {
         if (r.offers.empty() || ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId)) return;
         ImGui::OpenPopup(title);
     }
-    const ImGuiViewport* vp = ImGui::GetMainViewport();
-    ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x * 0.5f, vp->Pos.y + vp->Size.y * 0.5f),
-                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowSize(ImVec2(480 * ctx.ui.scale(), 0));
+    center_next_window(480 * ctx.ui.scale());
     if (!ImGui::BeginPopupModal(title, nullptr, 0)) return;
     if (r.offers.empty()) { // answered elsewhere (cannot happen today; keeps the popup honest)
         ImGui::CloseCurrentPopup();

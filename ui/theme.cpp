@@ -123,6 +123,22 @@ void wrapped_lines(const char* text, float width) {
 
 } // namespace
 
+void center_next_window(float width) {
+    const ImGuiViewport* vp = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x * 0.5f, vp->Pos.y + vp->Size.y * 0.5f),
+                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    if (width > 0) ImGui::SetNextWindowSize(ImVec2(width, 0));
+}
+
+bool begin_centered_modal(const char* id, bool& requested, float width, ImGuiWindowFlags flags) {
+    if (requested) {
+        ImGui::OpenPopup(id);
+        requested = false;
+    }
+    center_next_window(width);
+    return ImGui::BeginPopupModal(id, nullptr, flags);
+}
+
 void wrapped_tooltip(const std::string& text) {
     ImGui::BeginTooltip();
     wrapped_lines(text.c_str(), ImGui::GetFontSize() * 28.0f);

@@ -2,6 +2,7 @@
 // data. None of it is document data and none of it is undoable.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -15,6 +16,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/doc/fit.hpp"
+#include "core/geom/knots.hpp"
 #include "core/geom/types.hpp"
 #include "core/scene/autosave.hpp"
 #include "core/scene/recorder.hpp"
@@ -174,6 +176,11 @@ struct CurveDesignerState {
     std::uint64_t editing = 0; // Edit construction: the object whose recipe the dialog changes
     std::string note;  // the last construction's report (deviation, parameters, compatibility)
     std::string error; // why the last Build was refused, shown in the dialog until the next
+
+    // The curve's parameter at the normalised trace position.
+    double trace_param(const geom::Curve& c) const {
+        return denormalize_param(geom::domain(c), std::clamp(trace_t, 0.0, 1.0));
+    }
 };
 
 // De Boor's construction shown one level at a time: the u-stage's levels over all

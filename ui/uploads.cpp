@@ -4,7 +4,7 @@
 #include "ui/actions.hpp"
 #include "ui/course_actions.hpp"
 #include "ui/exchange_actions.hpp"
-#include "ui/panels/fit_panel.hpp"
+#include "ui/fit_actions.hpp"
 #include "ui/platform/files.hpp"
 
 namespace isoparm::ui {

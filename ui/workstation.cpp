@@ -47,6 +47,110 @@ bool begin_panel(const char* name, const Rect& r, ImGuiWindowFlags extra = 0) {
     return ImGui::Begin(name, nullptr, panel_flags | extra);
 }
 
+// The layout of this frame's window size, scale and mode.
+void compute_frame_layout(AppContext& ctx) {
+    UiState& ui = ctx.ui;
+    const ImGuiViewport* vp = ImGui::GetMainViewport();
+    ui.layout_input.width = vp->Size.x;
+    ui.layout_input.height = vp->Size.y;
+    ui.layout_input.top = ImGui::GetFrameHeight(); // the main menu bar
+    ui.layout_input.bottom = status_bar_height();
+    ui.layout_input.scale = ui.scale();
+    ui.layout_input.splitter = 5 * ui.scale();
+    // The 3D view is what the class looks at: on a small screen the side columns give way
+    // (their text wraps) before it shrinks below this share of the width.
+    ui.layout_input.min_center_fraction = ui.presentation ? 0.5f : 0.4f;
+    ui.layout_input.presentation = ui.presentation; // its columns are dragged apart
+    ui.layout = compute_layout(ctx.settings.layout, ui.layout_input);
+}
+
+// The teaching tabs that share the left column's lower slot.
+void teaching_tabs(AppContext& ctx) {
+    UiState& ui = ctx.ui;
+    struct Tab {
+        const char* name;
+        const char* what;
+        void (*draw)(AppContext&);
+        StageView stage;
+        const char* what_on_a_triangle = nullptr; // when it says something else there
+    };
+    static constexpr Tab tabs[] = {
+        {"Basis", "R_ij of the selected point at (u, v), N_i and N_j", draw_basis_plot_panel,
+         StageView::basis,
+         "B_ijk (rational: R_ijk) of the selected point over the domain triangle"},
+        {"de Boor", "de Boor's construction at (u, v), step by step", draw_deboor_panel,
+         StageView::deboor, "de Casteljau's construction at (r, s, t), level by level"},
+        {"Blossom", "every de Boor point as its polar form f(a_1, .., a_p)", draw_blossom_panel,
+         StageView::blossom},
+        {"Continuity", "every border of the patch group, measured", draw_continuity_panel,
+         StageView::continuity},
+        {"Homogeneous", "a curve lifted to (w x, w y, w) and projected to w = 1",
+         draw_homogeneous_panel, StageView::homogeneous},
+        {"Multires", "a coarse polygon plus detail at every level (wavelets)", draw_multires_panel,
+         StageView::multires},
+    };
+    if (ui.deboor.show_tab) ui.left_tab = 1;
+    if (ui.multires.show_tab) ui.left_tab = 5;
+    ui.deboor.show_tab = ui.multires.show_tab = false;
+    const bool triangle = selected_triangle(ctx.doc) != nullptr;
+    std::vector<TabLabel> labels;
+    for (const Tab& t : tabs)
+        labels.push_back(
+            {t.name, triangle && t.what_on_a_triangle ? t.what_on_a_triangle : t.what});
+    // The stage button at the right end of the strip's first row.
+    const ImVec2 start = ImGui::GetCursorScreenPos();
+    ImGui::SetCursorScreenPos(ImVec2(
+        ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x - ImGui::GetFrameHeight(),
+        start.y));
+    stage_button(ctx, tabs[ui.left_tab].stage, false);
+    ImGui::SetCursorScreenPos(start);
+    ui.left_tab = tab_strip(labels, ui.left_tab, ImGui::GetFrameHeight() + 4 * ui.scale());
+    note_hovered_view(ctx, tabs[ui.left_tab].stage);
+    tabs[ui.left_tab].draw(ctx);
+}
+
+// The right column: the selected object's editor above (the Fit panel alone while it is
+// open), the scene's objects and the display settings below.
+void right_column(AppContext& ctx, const Layout& l) {
+    UiState& ui = ctx.ui;
+    // An implicit surface has no control points: its editor takes their place.
+    const doc::Object* sel = ctx.doc.selected();
+    // The Fit panel takes the whole right column while it is open (a canvas, its settings and
+    // its buttons need the height on a projector); Objects and display come back on Close.
+    const bool fitting = ui.fit.open;
+    if (fitting) {
+        const Rect column{l.right[0].x, l.right[0].y, l.right[0].w,
+                          l.right[1].y + l.right[1].h - l.right[0].y};
+        if (begin_panel("Fit", column)) draw_fit_panel(ctx);
+    } else if (sel && sel->kind() == doc::ObjectKind::implicit) {
+        if (begin_panel("Implicit surface", l.right[0])) draw_implicit_panel(ctx);
+    } else if (sel && sel->kind() == doc::ObjectKind::curve) {
+        if (begin_panel("Curve designer", l.right[0])) draw_curve_designer_panel(ctx);
+    } else {
+        if (begin_panel("Control point", l.right[0])) draw_control_point_panel(ctx);
+    }
+    ImGui::End();
+    // The scene's objects and the display settings share the slot as tabs.
+    if (!fitting) {
+        if (begin_panel("Objects and display", l.right[1], ImGuiWindowFlags_NoTitleBar) &&
+            ImGui::BeginTabBar("##right_tabs")) {
+            const ImGuiTabItemFlags bring =
+                ui.object_list.show_tab ? ImGuiTabItemFlags_SetSelected : 0;
+            ui.object_list.show_tab = false;
+            if (ImGui::BeginTabItem("Objects", nullptr, bring)) {
+                draw_object_list_panel(ctx);
+                ImGui::EndTabItem();
+            }
+            if (ImGui::BeginTabItem("Display")) {
+                draw_control_panel(ctx);
+                ImGui::EndTabItem();
+            }
+            ImGui::EndTabBar();
+        }
+        ImGui::End();
+    }
+}
+
 } // namespace
 
 Workstation::Workstation(const WorkstationOptions& options) {
@@ -159,18 +263,7 @@ void Workstation::splitters() {
 
 void Workstation::layout_panels() {
     UiState& ui = ctx_.ui;
-    const ImGuiViewport* vp = ImGui::GetMainViewport();
-    ui.layout_input.width = vp->Size.x;
-    ui.layout_input.height = vp->Size.y;
-    ui.layout_input.top = ImGui::GetFrameHeight(); // the main menu bar
-    ui.layout_input.bottom = status_bar_height();
-    ui.layout_input.scale = ui.scale();
-    ui.layout_input.splitter = 5 * ui.scale();
-    // The 3D view is what the class looks at: on a small screen the side columns give way
-    // (their text wraps) before it shrinks below this share of the width.
-    ui.layout_input.min_center_fraction = ui.presentation ? 0.5f : 0.4f;
-    ui.layout_input.presentation = ui.presentation; // its columns are dragged apart
-    ui.layout = compute_layout(ctx_.settings.layout, ui.layout_input);
+    compute_frame_layout(ctx_);
     const Layout& l = ui.layout;
     // The stage and the four-view layout take the whole area between the menu and status bars.
     if (ui.stage.active()) {
@@ -189,49 +282,8 @@ void Workstation::layout_panels() {
     // The teaching tabs share the slot. D (de Boor on) and Curve > Multiresolution bring their
     // tab forward. Six names do not fit a projector's column as ImGui tabs (they shrink to
     // "Hom..."): the strip wraps onto a second row instead, whole names always readable.
-    if (begin_panel("Basis and de Boor", l.left[1], ImGuiWindowFlags_NoTitleBar)) {
-        struct Tab {
-            const char* name;
-            const char* what;
-            void (*draw)(AppContext&);
-            StageView stage;
-            const char* what_on_a_triangle = nullptr; // when it says something else there
-        };
-        static constexpr Tab tabs[] = {
-            {"Basis", "R_ij of the selected point at (u, v), N_i and N_j", draw_basis_plot_panel,
-             StageView::basis,
-             "B_ijk (rational: R_ijk) of the selected point over the domain triangle"},
-            {"de Boor", "de Boor's construction at (u, v), step by step", draw_deboor_panel,
-             StageView::deboor, "de Casteljau's construction at (r, s, t), level by level"},
-            {"Blossom", "every de Boor point as its polar form f(a_1, .., a_p)", draw_blossom_panel,
-             StageView::blossom},
-            {"Continuity", "every border of the patch group, measured", draw_continuity_panel,
-             StageView::continuity},
-            {"Homogeneous", "a curve lifted to (w x, w y, w) and projected to w = 1",
-             draw_homogeneous_panel, StageView::homogeneous},
-            {"Multires", "a coarse polygon plus detail at every level (wavelets)",
-             draw_multires_panel, StageView::multires},
-        };
-        if (ui.deboor.show_tab) ui.left_tab = 1;
-        if (ui.multires.show_tab) ui.left_tab = 5;
-        ui.deboor.show_tab = ui.multires.show_tab = false;
-        const bool triangle = selected_triangle(ctx_.doc) != nullptr;
-        std::vector<TabLabel> labels;
-        for (const Tab& t : tabs)
-            labels.push_back(
-                {t.name, triangle && t.what_on_a_triangle ? t.what_on_a_triangle : t.what});
-        // The stage button at the right end of the strip's first row.
-        const ImVec2 start = ImGui::GetCursorScreenPos();
-        ImGui::SetCursorScreenPos(ImVec2(ImGui::GetWindowPos().x +
-                                             ImGui::GetWindowContentRegionMax().x -
-                                             ImGui::GetFrameHeight(),
-                                         start.y));
-        stage_button(ctx_, tabs[ui.left_tab].stage, false);
-        ImGui::SetCursorScreenPos(start);
-        ui.left_tab = tab_strip(labels, ui.left_tab, ImGui::GetFrameHeight() + 4 * ui.scale());
-        note_hovered_view(ctx_, tabs[ui.left_tab].stage);
-        tabs[ui.left_tab].draw(ctx_);
-    }
+    if (begin_panel("Basis and de Boor", l.left[1], ImGuiWindowFlags_NoTitleBar))
+        teaching_tabs(ctx_);
     ImGui::End();
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2, 2));
     // The 3D image covers the panel: its window background would only be overdrawn.
@@ -242,42 +294,7 @@ void Workstation::layout_panels() {
         draw_view3d_panel(ctx_);
     ImGui::End();
     ImGui::PopStyleVar();
-    // An implicit surface has no control points: its editor takes their place.
-    const doc::Object* sel = ctx_.doc.selected();
-    // The Fit panel takes the whole right column while it is open (a canvas, its settings and
-    // its buttons need the height on a projector); Objects and display come back on Close.
-    const bool fitting = ui.fit.open;
-    if (fitting) {
-        const Rect column{l.right[0].x, l.right[0].y, l.right[0].w,
-                          l.right[1].y + l.right[1].h - l.right[0].y};
-        if (begin_panel("Fit", column)) draw_fit_panel(ctx_);
-    } else if (sel && sel->kind() == doc::ObjectKind::implicit) {
-        if (begin_panel("Implicit surface", l.right[0])) draw_implicit_panel(ctx_);
-    } else if (sel && sel->kind() == doc::ObjectKind::curve) {
-        if (begin_panel("Curve designer", l.right[0])) draw_curve_designer_panel(ctx_);
-    } else {
-        if (begin_panel("Control point", l.right[0])) draw_control_point_panel(ctx_);
-    }
-    ImGui::End();
-    // The scene's objects and the display settings share the slot as tabs.
-    if (!fitting) {
-        if (begin_panel("Objects and display", l.right[1], ImGuiWindowFlags_NoTitleBar) &&
-            ImGui::BeginTabBar("##right_tabs")) {
-            const ImGuiTabItemFlags bring =
-                ui.object_list.show_tab ? ImGuiTabItemFlags_SetSelected : 0;
-            ui.object_list.show_tab = false;
-            if (ImGui::BeginTabItem("Objects", nullptr, bring)) {
-                draw_object_list_panel(ctx_);
-                ImGui::EndTabItem();
-            }
-            if (ImGui::BeginTabItem("Display")) {
-                draw_control_panel(ctx_);
-                ImGui::EndTabItem();
-            }
-            ImGui::EndTabBar();
-        }
-        ImGui::End();
-    }
+    right_column(ctx_, l);
     // A splitter drag shows from the next frame.
     splitters();
 }

@@ -21,33 +21,35 @@ std::vector<PointIndex> all_points(const Shape& shape) {
     return out;
 }
 
-std::vector<PointIndex> row_points(const Shape& shape, int i) {
+namespace {
+
+// The points whose first index (`row`) or second is `k`, in the order the other index runs:
+// a surface's row or column, a triangle's line of constant i or j (b_i,j,k for j = n - i .. 0),
+// a curve's every point.
+std::vector<PointIndex> line_points(const Shape& shape, bool row, int k) {
     std::vector<PointIndex> out;
+    auto at = [row, k](int other) { return row ? PointIndex{k, other} : PointIndex{other, k}; };
     if (const geom::Surface* s = surface_of(shape)) {
-        if (i >= 0 && i < s->n_u)
-            for (int j = 0; j < s->n_v; ++j) out.push_back({i, j});
+        const int fixed_count = row ? s->n_u : s->n_v, other_count = row ? s->n_v : s->n_u;
+        if (k >= 0 && k < fixed_count)
+            for (int o = 0; o < other_count; ++o) out.push_back(at(o));
     } else if (curve_of(shape)) {
         out = all_points(shape);
     } else if (const geom::TrianglePatch* t = triangle_of(shape)) {
-        // The row of constant i: b_i,j,k for j = n - i .. 0.
-        if (i >= 0 && i <= t->degree)
-            for (int j = t->degree - i; j >= 0; --j) out.push_back({i, j});
+        if (k >= 0 && k <= t->degree)
+            for (int o = t->degree - k; o >= 0; --o) out.push_back(at(o));
     }
     return out;
 }
 
+} // namespace
+
+std::vector<PointIndex> row_points(const Shape& shape, int i) {
+    return line_points(shape, true, i);
+}
+
 std::vector<PointIndex> column_points(const Shape& shape, int j) {
-    std::vector<PointIndex> out;
-    if (const geom::Surface* s = surface_of(shape)) {
-        if (j >= 0 && j < s->n_v)
-            for (int i = 0; i < s->n_u; ++i) out.push_back({i, j});
-    } else if (curve_of(shape)) {
-        out = all_points(shape);
-    } else if (const geom::TrianglePatch* t = triangle_of(shape)) {
-        if (j >= 0 && j <= t->degree)
-            for (int i = t->degree - j; i >= 0; --i) out.push_back({i, j});
-    }
-    return out;
+    return line_points(shape, false, j);
 }
 
 glm::dvec3 position_of(const Shape& shape, PointIndex p) {

@@ -119,6 +119,42 @@ geom::SplineType type_from(std::uint8_t t, Cursor& in) {
     return static_cast<geom::SplineType>(t);
 }
 
+// The records' geometry, in the order ImportWireWriter writes it.
+geom::Curve read_curve(Cursor& in) {
+    geom::Curve c;
+    c.type = type_from(in.get<std::uint8_t>(), in);
+    c.degree = in.get<std::int32_t>();
+    c.knots = in.reals();
+    c.points = in.points();
+    c.weights = in.reals();
+    return c;
+}
+
+geom::Surface read_surface(Cursor& in) {
+    geom::Surface s;
+    s.type = type_from(in.get<std::uint8_t>(), in);
+    s.degree_u = in.get<std::int32_t>();
+    s.degree_v = in.get<std::int32_t>();
+    s.n_u = in.get<std::int32_t>();
+    s.n_v = in.get<std::int32_t>();
+    s.knots_u = in.reals();
+    s.knots_v = in.reals();
+    s.points = in.points();
+    s.weights = in.reals();
+    return s;
+}
+
+// A shape record: its name, then its geometry; kept only when the record is whole.
+template <class ReadGeometry>
+void read_shape(Cursor& in, ImportWireReading& r, ReadGeometry read_geometry) {
+    ImportedShape shape;
+    shape.name = in.text();
+    auto geometry = read_geometry(in);
+    if (!in.ok()) return;
+    shape.shape = std::move(geometry);
+    r.result.objects.push_back(std::move(shape));
+}
+
 } // namespace
 
 ImportWireWriter::ImportWireWriter() : buffer_(magic) {}
@@ -190,38 +226,12 @@ ImportWireReading read_import_wire(std::string_view bytes) {
             r.items = in.get<std::uint64_t>();
             r.transferred = in.ok();
             break;
-        case tag_curve: {
-            ImportedShape shape;
-            shape.name = in.text();
-            geom::Curve c;
-            c.type = type_from(in.get<std::uint8_t>(), in);
-            c.degree = in.get<std::int32_t>();
-            c.knots = in.reals();
-            c.points = in.points();
-            c.weights = in.reals();
-            if (!in.ok()) break;
-            shape.shape = std::move(c);
-            r.result.objects.push_back(std::move(shape));
+        case tag_curve:
+            read_shape(in, r, read_curve);
             break;
-        }
-        case tag_surface: {
-            ImportedShape shape;
-            shape.name = in.text();
-            geom::Surface s;
-            s.type = type_from(in.get<std::uint8_t>(), in);
-            s.degree_u = in.get<std::int32_t>();
-            s.degree_v = in.get<std::int32_t>();
-            s.n_u = in.get<std::int32_t>();
-            s.n_v = in.get<std::int32_t>();
-            s.knots_u = in.reals();
-            s.knots_v = in.reals();
-            s.points = in.points();
-            s.weights = in.reals();
-            if (!in.ok()) break;
-            shape.shape = std::move(s);
-            r.result.objects.push_back(std::move(shape));
+        case tag_surface:
+            read_shape(in, r, read_surface);
             break;
-        }
         case tag_skipped: {
             SkippedEntity e;
             e.entity = in.text();

@@ -164,37 +164,9 @@ Expected<doc::Object> read_target(const json& v, const std::string& at, const Ex
     return schema_error("no object named '" + name + "' in " + where, at);
 }
 
-Expected<Check> read_check(const json& j, const std::string& at, const Exercise& ex,
-                           const std::string& dir) {
-    if (auto st = expect_object(j, at, "a check"); !st) return st.error();
-    const json* kind = find_member(j, "check");
-    if (!kind) return missing_member(at, "check");
-    Check c;
-    c.path = at;
-    const auto k = enum_value<CheckKind>(*kind);
-    if (!k) {
-        std::string names;
-        for (const auto& e : check_kind_names)
-            names += std::string(names.empty() ? "" : ", ") + e.name;
-        return schema_error("check is one of " + names + ", got " +
-                                (kind->is_string() ? "'" + kind->get<std::string>() + "'"
-                                                   : std::string(type_name(*kind))),
-                            member_path(at, "check"));
-    }
-    c.kind = *k;
-    std::vector<std::string_view> allowed{"check", "object", "label", "hint"};
-    for (std::string_view m : members_of(c.kind)) allowed.push_back(m);
-    if (auto st = check_members(j, at, std::string("check '") + geom::name_of(c.kind) + "'",
-                                std::span<const std::string_view>(allowed));
-        !st)
-        return st.error();
-    CheckReader r(j, at);
-    for (auto [name, into] :
-         {std::pair{"object", &c.object}, std::pair{"label", &c.label}, std::pair{"hint", &c.hint}})
-        if (auto st = r.text(name, *into); !st) return st.error();
-    if (c.kind == CheckKind::objects && r.find("object"))
-        return schema_error("check 'objects' counts objects: it names a kind, not an object",
-                            r.path("object"));
+// The values compared (min, max, the exact value) and what is looked at: the kind of object,
+// the type, the direction, the control point.
+geom::Status read_check_selectors(CheckReader& r, const std::string& at, Check& c) {
     if (auto st = r.number("min", c.min); !st) return st.error();
     if (auto st = r.number("max", c.max); !st) return st.error();
     for (const char* exact : {"count", "degree", "value"})
@@ -236,6 +208,12 @@ Expected<Check> read_check(const json& j, const std::string& at, const Exercise&
     } else if (c.kind == CheckKind::weight || c.kind == CheckKind::position) {
         return missing_member(at, "point");
     }
+    return geom::Ok{};
+}
+
+// The geometry the check compares with: a position, points, a knot, tolerances, a border's
+// continuity and its patch group.
+geom::Status read_check_geometry(CheckReader& r, const std::string& at, Check& c) {
     if (const json* v = r.find("position")) {
         auto p = read_point(*v, r.path("position"), "a position");
         if (!p) return p.error();
@@ -282,20 +260,62 @@ Expected<Check> read_check(const json& j, const std::string& at, const Exercise&
         c.group = static_cast<std::uint64_t>(*g);
     }
     if (auto st = r.integer("borders", c.min_borders, 0, 1 << 20); !st) return st.error();
-    if (c.kind == CheckKind::near_shape) {
-        const json* t = r.find("target");
-        if (!t) return missing_member(at, "target");
-        auto target = read_target(*t, r.path("target"), ex, dir);
-        if (!target) return target.error();
-        c.target = std::move(target).value();
-        const json* d = r.find("distance");
-        if (!d) return missing_member(at, "distance");
-        std::optional<double> dist;
-        if (auto st = r.number("distance", dist); !st) return st.error();
-        if (*dist < 0) return schema_error("distance is 0 or more", r.path("distance"));
-        c.distance = *dist;
-        if (auto st = r.integer("samples", c.samples, 2, 256); !st) return st.error();
+    return geom::Ok{};
+}
+
+// near_shape's target (an object of the starting scene or of another scene) and distance.
+geom::Status read_near_shape(CheckReader& r, const std::string& at, const Exercise& ex,
+                             const std::string& dir, Check& c) {
+    const json* t = r.find("target");
+    if (!t) return missing_member(at, "target");
+    auto target = read_target(*t, r.path("target"), ex, dir);
+    if (!target) return target.error();
+    c.target = std::move(target).value();
+    const json* d = r.find("distance");
+    if (!d) return missing_member(at, "distance");
+    std::optional<double> dist;
+    if (auto st = r.number("distance", dist); !st) return st.error();
+    if (*dist < 0) return schema_error("distance is 0 or more", r.path("distance"));
+    c.distance = *dist;
+    if (auto st = r.integer("samples", c.samples, 2, 256); !st) return st.error();
+    return geom::Ok{};
+}
+
+Expected<Check> read_check(const json& j, const std::string& at, const Exercise& ex,
+                           const std::string& dir) {
+    if (auto st = expect_object(j, at, "a check"); !st) return st.error();
+    const json* kind = find_member(j, "check");
+    if (!kind) return missing_member(at, "check");
+    Check c;
+    c.path = at;
+    const auto k = enum_value<CheckKind>(*kind);
+    if (!k) {
+        std::string names;
+        for (const auto& e : check_kind_names)
+            names += std::string(names.empty() ? "" : ", ") + e.name;
+        return schema_error("check is one of " + names + ", got " +
+                                (kind->is_string() ? "'" + kind->get<std::string>() + "'"
+                                                   : std::string(type_name(*kind))),
+                            member_path(at, "check"));
     }
+    c.kind = *k;
+    std::vector<std::string_view> allowed{"check", "object", "label", "hint"};
+    for (std::string_view m : members_of(c.kind)) allowed.push_back(m);
+    if (auto st = check_members(j, at, std::string("check '") + geom::name_of(c.kind) + "'",
+                                std::span<const std::string_view>(allowed));
+        !st)
+        return st.error();
+    CheckReader r(j, at);
+    for (auto [name, into] :
+         {std::pair{"object", &c.object}, std::pair{"label", &c.label}, std::pair{"hint", &c.hint}})
+        if (auto st = r.text(name, *into); !st) return st.error();
+    if (c.kind == CheckKind::objects && r.find("object"))
+        return schema_error("check 'objects' counts objects: it names a kind, not an object",
+                            r.path("object"));
+    if (auto st = read_check_selectors(r, at, c); !st) return st.error();
+    if (auto st = read_check_geometry(r, at, c); !st) return st.error();
+    if (c.kind == CheckKind::near_shape)
+        if (auto st = read_near_shape(r, at, ex, dir, c); !st) return st.error();
     const bool counted = c.kind == CheckKind::objects || c.kind == CheckKind::degree ||
                          c.kind == CheckKind::control_points || c.kind == CheckKind::weight ||
                          c.kind == CheckKind::weights;

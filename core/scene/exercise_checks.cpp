@@ -254,21 +254,101 @@ CheckResult check_border(const Check& c, const doc::Document& d) {
     return r;
 }
 
+// How many objects (of a kind) the scene holds.
+CheckResult check_objects(const Check& c, const doc::Document& d) {
+    std::size_t n = 0;
+    for (const doc::Object& o : d.objects) n += !c.object_kind || o.kind() == *c.object_kind;
+    CheckResult r{c.label, in_range(static_cast<double>(n), c.equals, c.min, c.max), {}, c.hint};
+    if (!r.passed)
+        r.message = "the scene holds " + std::to_string(n) + " " +
+                    (c.object_kind ? doc::kind_name(*c.object_kind) + std::string("s")
+                                   : std::string("objects")) +
+                    "; the task asks for " + range_text(c.equals, c.min, c.max);
+    return r;
+}
+
+// A degree or a control point count, in each direction the check names.
+CheckResult check_degree_or_count(const Check& c, const doc::Document& d) {
+    using K = CheckKind;
+    return any_of(c, candidates(c, d, true, true), [&](const doc::Object& o) -> std::string {
+        for (geom::Dir dir : directions(c, o)) {
+            const int x = c.kind == K::degree ? degree_of(o, dir) : count_of(o, dir);
+            if (in_range(x, c.equals, c.min, c.max)) continue;
+            const std::string in = o.surface() ? std::string(" in ") + geom::name_of(dir) : "";
+            return c.kind == K::degree
+                       ? quoted(o) + " has degree " + std::to_string(x) + in +
+                             "; the task asks for " + range_text(c.equals, c.min, c.max)
+                       : quoted(o) + " has " + std::to_string(x) + " control points" + in +
+                             "; the task asks for " + range_text(c.equals, c.min, c.max);
+        }
+        return {};
+    });
+}
+
+// A knot value at least `multiplicity` times.
+CheckResult check_knot(const Check& c, const doc::Document& d) {
+    return any_of(c, candidates(c, d, true, true), [&](const doc::Object& o) -> std::string {
+        const geom::Dir dir = o.curve() ? geom::Dir::u : c.direction.value_or(geom::Dir::u);
+        const geom::Knots& U = knots_of(o, dir);
+        const auto m = std::count_if(
+            U.begin(), U.end(), [&](double t) { return std::abs(t - c.value) <= c.tolerance; });
+        if (m >= c.multiplicity) return {};
+        const std::string in = o.surface() ? std::string(" in ") + geom::name_of(dir) : "";
+        return m == 0 ? quoted(o) + " has no knot " + num(c.value) + in
+                      : quoted(o) + " has the knot " + num(c.value) + in + " " + std::to_string(m) +
+                            (m == 1 ? " time" : " times") + "; the task asks for " +
+                            std::to_string(c.multiplicity);
+    });
+}
+
+// Each point on some surface (a split surface's patches together): the union.
+CheckResult check_points_on_surface(const Check& c, const doc::Document& d) {
+    const Candidates cands = candidates(c, d, true, false);
+    CheckResult r{c.label, false, {}, c.hint};
+    if (cands.objects.empty()) {
+        r.message = cands.missing;
+        return r;
+    }
+    for (const glm::dvec3& p : c.points) {
+        double best = INFINITY;
+        const doc::Object* nearest = nullptr;
+        for (const doc::Object* o : cands.objects) {
+            const double dist = distance_to(*o, p);
+            if (dist < best) {
+                best = dist;
+                nearest = o;
+            }
+        }
+        if (best > c.tolerance) {
+            r.message = point_text(p) + " is " + num(best) + " from " +
+                        (nearest ? quoted(*nearest) : std::string("the surface")) + " (at most " +
+                        num(c.tolerance) + ")";
+            return r;
+        }
+    }
+    r.passed = true;
+    return r;
+}
+
+// Near the target shape both ways (a one-sided Hausdorff distance each way).
+CheckResult check_near_shape(const Check& c, const doc::Document& d) {
+    const bool curve = c.target->curve() != nullptr;
+    return any_of(c, candidates(c, d, !curve, curve), [&](const doc::Object& o) -> std::string {
+        const double there = one_sided(o, *c.target, c.samples);
+        const double back = there > c.distance ? there : one_sided(*c.target, o, c.samples);
+        const double worst = std::max(there, back);
+        if (worst <= c.distance) return {};
+        if (!std::isfinite(worst)) return quoted(o) + " could not be measured (no point)";
+        return quoted(o) + " is " + num(worst) + " away from the shape '" + c.target->name +
+               "' at its farthest (at most " + num(c.distance) + ")";
+    });
+}
+
 CheckResult run_check(const Check& c, const doc::Document& d) {
     using K = CheckKind;
     switch (c.kind) {
-    case K::objects: {
-        std::size_t n = 0;
-        for (const doc::Object& o : d.objects) n += !c.object_kind || o.kind() == *c.object_kind;
-        CheckResult r{
-            c.label, in_range(static_cast<double>(n), c.equals, c.min, c.max), {}, c.hint};
-        if (!r.passed)
-            r.message = "the scene holds " + std::to_string(n) + " " +
-                        (c.object_kind ? doc::kind_name(*c.object_kind) + std::string("s")
-                                       : std::string("objects")) +
-                        "; the task asks for " + range_text(c.equals, c.min, c.max);
-        return r;
-    }
+    case K::objects:
+        return check_objects(c, d);
     case K::type:
         return any_of(c, candidates(c, d, true, true), [&](const doc::Object& o) -> std::string {
             const geom::SplineType t = o.surface() ? o.surface()->type : o.curve()->type;
@@ -277,32 +357,9 @@ CheckResult run_check(const Check& c, const doc::Document& d) {
         });
     case K::degree:
     case K::control_points:
-        return any_of(c, candidates(c, d, true, true), [&](const doc::Object& o) -> std::string {
-            for (geom::Dir dir : directions(c, o)) {
-                const int x = c.kind == K::degree ? degree_of(o, dir) : count_of(o, dir);
-                if (in_range(x, c.equals, c.min, c.max)) continue;
-                const std::string in = o.surface() ? std::string(" in ") + geom::name_of(dir) : "";
-                return c.kind == K::degree
-                           ? quoted(o) + " has degree " + std::to_string(x) + in +
-                                 "; the task asks for " + range_text(c.equals, c.min, c.max)
-                           : quoted(o) + " has " + std::to_string(x) + " control points" + in +
-                                 "; the task asks for " + range_text(c.equals, c.min, c.max);
-            }
-            return {};
-        });
+        return check_degree_or_count(c, d);
     case K::knot:
-        return any_of(c, candidates(c, d, true, true), [&](const doc::Object& o) -> std::string {
-            const geom::Dir dir = o.curve() ? geom::Dir::u : c.direction.value_or(geom::Dir::u);
-            const geom::Knots& U = knots_of(o, dir);
-            const auto m = std::count_if(
-                U.begin(), U.end(), [&](double t) { return std::abs(t - c.value) <= c.tolerance; });
-            if (m >= c.multiplicity) return {};
-            const std::string in = o.surface() ? std::string(" in ") + geom::name_of(dir) : "";
-            return m == 0 ? quoted(o) + " has no knot " + num(c.value) + in
-                          : quoted(o) + " has the knot " + num(c.value) + in + " " +
-                                std::to_string(m) + (m == 1 ? " time" : " times") +
-                                "; the task asks for " + std::to_string(c.multiplicity);
-        });
+        return check_knot(c, d);
     case K::weight:
         return any_of(c, candidates(c, d, true, true), [&](const doc::Object& o) -> std::string {
             const long k = point_index(o, c.i, c.j);
@@ -329,34 +386,8 @@ CheckResult run_check(const Check& c, const doc::Document& d) {
             return point_label(o, c.i, c.j) + " of " + quoted(o) + " is at " + point_text(p) +
                    ", " + num(gap) + " from " + point_text(c.points.front());
         });
-    case K::point_on_surface: {
-        // Each point on some surface (a split surface's patches together): the union.
-        const Candidates cands = candidates(c, d, true, false);
-        CheckResult r{c.label, false, {}, c.hint};
-        if (cands.objects.empty()) {
-            r.message = cands.missing;
-            return r;
-        }
-        for (const glm::dvec3& p : c.points) {
-            double best = INFINITY;
-            const doc::Object* nearest = nullptr;
-            for (const doc::Object* o : cands.objects) {
-                const double dist = distance_to(*o, p);
-                if (dist < best) {
-                    best = dist;
-                    nearest = o;
-                }
-            }
-            if (best > c.tolerance) {
-                r.message = point_text(p) + " is " + num(best) + " from " +
-                            (nearest ? quoted(*nearest) : std::string("the surface")) +
-                            " (at most " + num(c.tolerance) + ")";
-                return r;
-            }
-        }
-        r.passed = true;
-        return r;
-    }
+    case K::point_on_surface:
+        return check_points_on_surface(c, d);
     case K::interpolates:
         return any_of(c, candidates(c, d, false, true), [&](const doc::Object& o) -> std::string {
             for (const glm::dvec3& p : c.points) {
@@ -369,18 +400,8 @@ CheckResult run_check(const Check& c, const doc::Document& d) {
         });
     case K::border:
         return check_border(c, d);
-    case K::near_shape: {
-        const bool curve = c.target->curve() != nullptr;
-        return any_of(c, candidates(c, d, !curve, curve), [&](const doc::Object& o) -> std::string {
-            const double there = one_sided(o, *c.target, c.samples);
-            const double back = there > c.distance ? there : one_sided(*c.target, o, c.samples);
-            const double worst = std::max(there, back);
-            if (worst <= c.distance) return {};
-            if (!std::isfinite(worst)) return quoted(o) + " could not be measured (no point)";
-            return quoted(o) + " is " + num(worst) + " away from the shape '" + c.target->name +
-                   "' at its farthest (at most " + num(c.distance) + ")";
-        });
-    }
+    case K::near_shape:
+        return check_near_shape(c, d);
     }
     return {c.label, false, "unknown check", c.hint};
 }

@@ -156,27 +156,28 @@ void unmet_at_parameter(const ExpectStep& e, const std::string& name, const geom
     }
 }
 
-} // namespace
+// An expect object's members, read one by one with the paths their errors name.
+struct MemberReader {
+    const json& v;
+    const std::string& at;
 
-Expected<ExpectStep> expect_from_json(const json& v, const std::string& at) {
-    if (auto st = expect_object(v, at, "expect"); !st) return st.error();
-    if (auto st = check_members(v, at, "expect",
-                                {"objects", "id", "kind", "point", "position", "weight",
-                                 "direction", "knots", "degree", "type", "group", "borders", "at",
-                                 "basis", "basis_sum", "gaussian", "mean", "tolerance"});
-        !st)
-        return st.error();
-    ExpectStep e;
-    auto member = [&](std::string_view name) { return find_member(v, name); };
-    auto path = [&](std::string_view name) { return member_path(at, name); };
-    auto number = [&](std::string_view name, std::optional<double>& into) -> geom::Status {
+    const json* member(std::string_view name) const { return find_member(v, name); }
+    std::string path(std::string_view name) const { return member_path(at, name); }
+    geom::Status number(std::string_view name, std::optional<double>& into) const {
         if (const json* m = member(name)) {
             auto x = read_finite(*m, path(name), name);
             if (!x) return x.error();
             into = *x;
         }
         return geom::Ok{};
-    };
+    }
+};
+
+// What the expect names: the object count, the object, its kind, point, position, weight and
+// knots.
+geom::Status read_object_members(const MemberReader& r, ExpectStep& e) {
+    auto member = [&](std::string_view name) { return r.member(name); };
+    auto path = [&](std::string_view name) { return r.path(name); };
     if (const json* m = member("objects")) {
         auto n = read_integer(*m, path("objects"), "objects", 0, 1 << 30);
         if (!n) return n.error();
@@ -208,7 +209,7 @@ Expected<ExpectStep> expect_from_json(const json& v, const std::string& at) {
         if (!p) return p.error();
         e.position = *p;
     }
-    if (auto st = number("weight", e.weight); !st) return st.error();
+    if (auto st = r.number("weight", e.weight); !st) return st.error();
     if (const json* m = member("direction")) {
         const auto d = enum_value<geom::Dir>(*m);
         if (!d) return schema_error("direction is \"u\" or \"v\"", path("direction"));
@@ -219,6 +220,13 @@ Expected<ExpectStep> expect_from_json(const json& v, const std::string& at) {
         if (!k) return k.error();
         e.knots = *k;
     }
+    return geom::Ok{};
+}
+
+// The degree, type, patch group, borders, the parameter and the values expected there.
+geom::Status read_value_members(const MemberReader& r, ExpectStep& e) {
+    auto member = [&](std::string_view name) { return r.member(name); };
+    auto path = [&](std::string_view name) { return r.path(name); };
     if (const json* m = member("degree")) {
         auto n = read_integer(*m, path("degree"), "degree", 1, 1 << 20);
         if (!n) return n.error();
@@ -251,13 +259,18 @@ Expected<ExpectStep> expect_from_json(const json& v, const std::string& at) {
     }
     for (auto [name, into] : {std::pair{"basis", &e.basis}, std::pair{"basis_sum", &e.basis_sum},
                               std::pair{"gaussian", &e.gaussian}, std::pair{"mean", &e.mean}})
-        if (auto st = number(name, *into); !st) return st.error();
+        if (auto st = r.number(name, *into); !st) return st.error();
     if (const json* m = member("tolerance")) {
         auto t = read_finite(*m, path("tolerance"), "tolerance");
         if (!t) return t.error();
         if (*t < 0) return schema_error("tolerance is 0 or more", path("tolerance"));
         e.tolerance = *t;
     }
+    return geom::Ok{};
+}
+
+// The members that only make sense together.
+geom::Status check_expect_members(const ExpectStep& e, const std::string& at) {
     const bool about_object = e.i || e.position || e.weight || e.knots || e.degree || e.type ||
                               e.kind || e.at || e.basis || e.basis_sum || e.gaussian || e.mean;
     if (about_object && !e.id)
@@ -279,6 +292,24 @@ Expected<ExpectStep> expect_from_json(const json& v, const std::string& at) {
                             at);
     if (e.borders && !e.group)
         return schema_error("an expect about borders names the patch group: add \"group\"", at);
+    return geom::Ok{};
+}
+
+} // namespace
+
+Expected<ExpectStep> expect_from_json(const json& v, const std::string& at) {
+    if (auto st = expect_object(v, at, "expect"); !st) return st.error();
+    if (auto st = check_members(v, at, "expect",
+                                {"objects", "id", "kind", "point", "position", "weight",
+                                 "direction", "knots", "degree", "type", "group", "borders", "at",
+                                 "basis", "basis_sum", "gaussian", "mean", "tolerance"});
+        !st)
+        return st.error();
+    ExpectStep e;
+    const MemberReader r{v, at};
+    if (auto st = read_object_members(r, e); !st) return st.error();
+    if (auto st = read_value_members(r, e); !st) return st.error();
+    if (auto st = check_expect_members(e, at); !st) return st.error();
     return e;
 }
 

@@ -232,16 +232,7 @@ void draw_animate_panel(AppContext& ctx) {
 
 void draw_detach_question(AppContext& ctx) {
     DetachQuestion& q = ctx.ui.modeler.detach;
-    const char* id = "Detach?##question";
-    if (q.open) {
-        ImGui::OpenPopup(id);
-        q.open = false;
-    }
-    const ImGuiViewport* vp = ImGui::GetMainViewport();
-    ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x * 0.5f, vp->Pos.y + vp->Size.y * 0.5f),
-                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowSize(ImVec2(460 * ctx.ui.scale(), 0));
-    if (!ImGui::BeginPopupModal(id, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    if (!begin_centered_modal("Detach?##question", q.open, 460 * ctx.ui.scale())) return;
     ImGui::TextWrapped("%s", q.text.c_str());
     ImGui::Spacing();
     if (ImGui::Button("Detach")) {

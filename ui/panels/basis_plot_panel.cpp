@@ -125,20 +125,10 @@ void basis_curves(AppContext& ctx, const geom::Knots& U, int p, int n, int index
 } // namespace
 
 void draw_basis_plot_panel(AppContext& ctx) {
-    note_hovered_view(ctx, StageView::basis);
-    // A selected triangular patch has its own version of the panel (Farin ch. 17).
-    const doc::Object* triangle = nullptr;
-    if (const geom::TrianglePatch* t = selected_triangle(ctx.doc, &triangle)) {
-        draw_triangle_basis(ctx, *triangle, *t);
-        return;
-    }
     const doc::Object* obj = nullptr;
     const geom::Surface* s =
-        selected_non_surface(ctx.doc) ? nullptr : current_surface(ctx.doc, &obj);
-    if (!s) {
-        no_surface_text(ctx);
-        return;
-    }
+        teaching_panel_surface(ctx, StageView::basis, draw_triangle_basis, &obj);
+    if (!s) return;
     const glm::dvec2 uv = indicator_params(ctx.doc, *obj);
     const bool point = has_valid_point(ctx.doc) && ctx.doc.view.selection.object == obj->id;
     const int i = point ? ctx.doc.view.selection.i : -1, j = point ? ctx.doc.view.selection.j : -1;

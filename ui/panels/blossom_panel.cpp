@@ -194,13 +194,13 @@ void curve_view(AppContext& ctx, const doc::Object& obj, const doc::CurveObject&
     const geom::Curve& g = c.curve;
     const int p = g.degree, n = g.count();
     const float k = ctx.ui.scale();
-    double t = curve_designer::trace_param(ctx, g);
+    double t = ctx.ui.curve.trace_param(g);
     const geom::Interval dom = geom::domain(g);
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
     if (ImGui::SliderScalar("t (the designer's)", ImGuiDataType_Double, &t, &dom.lo, &dom.hi,
                             "%.4f")) {
         ctx.ui.curve.trace_t = normalize_param(dom, t);
-        t = curve_designer::trace_param(ctx, g);
+        t = ctx.ui.curve.trace_param(g);
     }
     const int span = geom::default_blossom_span(g.knots, p, n, t);
     keep_arguments(bs.args, bs.object, bs.span, obj.id, span, p, t);

@@ -12,8 +12,8 @@
 #include "core/doc/curve_constructions.hpp"
 #include "core/doc/placement.hpp"
 #include "ui/actions.hpp"
+#include "ui/fit_actions.hpp"
 #include "ui/modeler_actions.hpp"
-#include "ui/panels/fit_panel.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/theme.hpp"
 #include "ui/ui_report.hpp"
@@ -448,17 +448,9 @@ void draw_construct_menus(AppContext& ctx) {
 void draw_construct_dialog(AppContext& ctx) {
     CurveDesignerState& cd = ctx.ui.curve;
     const char* id = "Construct##dialog";
-    if (cd.construct_open) {
-        ImGui::OpenPopup(id);
-        cd.construct_open = false;
-        cd.error.clear();
-    }
-    const ImGuiViewport* vp = ImGui::GetMainViewport();
-    ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x * 0.5f, vp->Pos.y + vp->Size.y * 0.5f),
-                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowSize(ImVec2(520 * ctx.ui.scale(), 0));
-    if (!ImGui::BeginPopupModal(id, nullptr,
-                                ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoTitleBar))
+    if (cd.construct_open) cd.error.clear();
+    if (!begin_centered_modal(id, cd.construct_open, 520 * ctx.ui.scale(),
+                              ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoTitleBar))
         return;
     const int kind = cd.construct_kind;
     const char* title = kind == make_compatible_kind

@@ -113,85 +113,98 @@ void drag_plane_handle(AppContext& ctx, const PlaneMap& map, const PlaneAxes& ax
                                     "Move " + std::to_string(g.points.size()) + " points"));
 }
 
-// The selected point's disk is dragged (one undo step a drag), a press on another dot selects
-// that point (Shift: adds it or takes it out), a drag on empty space draws a box that selects
-// the points inside, and with many points selected their handle moves, turns and scales them.
-// Returns whether it moved a point (the document changed).
-bool plane_canvas(AppContext& ctx, const doc::Object& obj, const ControlNet& net, int plane,
-                  const Rect& canvas) {
-    const PlaneAxes ax = plane_axes[plane];
-    const float k = ctx.ui.scale();
+// One control point plane as it is this frame: its axes, its map to pixels, the selected point
+// and its disk, and the selection's handle.
+struct CpPlane {
+    const doc::Object& obj;
+    const ControlNet& net;
+    int plane;
+    PlaneAxes ax;
+    PlaneMap map;
+    float k;
+    int si, sj;
+    glm::dvec3 sel;
+    glm::dvec2 disk;
+    float disk_r;
+    std::optional<HandleLayout> handle;
+
+    glm::dvec2 dot_px(std::size_t q) const {
+        return plane_to_pixel(map, {net.points[q][ax.a], net.points[q][ax.b]});
+    }
+};
+
+// A press: on the handle (many points), on the selected point's disk, on another dot, or on
+// empty space (a box).
+void cp_plane_press(AppContext& ctx, const CpPlane& c, const glm::dvec2& mouse) {
+    const doc::Object& obj = c.obj;
+    const ControlNet& net = c.net;
+    const int plane = c.plane;
+    const PlaneMap& map = c.map;
+    const float k = c.k;
+    const glm::dvec2& disk = c.disk;
+    const float disk_r = c.disk_r;
+    const std::optional<HandleLayout>& handle = c.handle;
     PlaneDrag& pd = ctx.ui.plane_drag;
     SelectionState& st = ctx.ui.modeler.selection;
     SelectionGesture& g = st.gesture;
-    const PlaneMap map =
-        pd.plane == plane || (g.view == plane && g.kind != SelectionGesture::Kind::none)
-            ? pd.frozen
-            : frame_plane(net, canvas, ax.a, ax.b, 8 * k);
-    const int si = ctx.doc.view.selection.i, sj = ctx.doc.view.selection.j;
-    const glm::dvec3 sel = net.points[static_cast<std::size_t>(net.find(si, sj))];
-    const glm::dvec2 disk = plane_to_pixel(map, {sel[ax.a], sel[ax.b]});
-    const float disk_r = 7 * k;
-    bool moved = false;
-    const std::optional<HandleLayout> handle = plane_handle(ctx, obj, map, ax);
-
-    ImGui::SetCursorScreenPos(ImVec2(canvas.x, canvas.y));
-    ImGui::PushID(plane);
-    ImGui::InvisibleButton("##plane", ImVec2(canvas.w, canvas.h));
-    report_item("cp/plane" + std::to_string(plane));
-    report_point("cp/disk" + std::to_string(plane), static_cast<float>(disk.x),
-                 static_cast<float>(disk.y));
     const ImGuiIO& io = ImGui::GetIO();
-    const ImVec2 m = io.MousePos;
-    const glm::dvec2 mouse(m.x, m.y);
-    auto dot_px = [&](std::size_t q) {
-        return plane_to_pixel(map, {net.points[q][ax.a], net.points[q][ax.b]});
-    };
-    if (ImGui::IsItemActivated()) {
-        const HandlePart part = handle ? hit_handle(*handle, mouse, 6.0 * k) : HandlePart::none;
-        std::optional<std::size_t> dot;
-        for (std::size_t q = 0; q < net.points.size(); ++q)
-            if (glm::length(dot_px(q) - mouse) <= 5 * k) dot = q;
-        if (part != HandlePart::none && !io.KeyShift) {
-            if (may_edit_points(ctx, obj.id)) {
-                g = {};
-                g.kind = SelectionGesture::Kind::handle;
-                g.view = plane;
-                g.part = part;
-                g.press = g.now = mouse;
-                g.points = st.points.points;
-                for (const PointIndex& p : g.points)
-                    g.start.push_back(doc::position_of(obj.shape, p));
-                g.pivot = selection_pivot(ctx);
-                g.pivot_px = handle->centre;
-                pd.frozen = map;
-                ctx.seal();
-            }
-        } else if (glm::length(mouse - disk) <= disk_r * 1.6 && !io.KeyShift) {
-            if (may_edit_points(ctx, obj.id)) {
-                pd.plane = plane;
-                pd.frozen = map;
-                pd.grab = mouse - disk;
-                ctx.seal();
-            }
-        } else if (dot) {
-            const auto [i, j] = net.ids[*dot];
-            if (io.KeyShift) {
-                toggle_point(ctx, obj.id, {i, j});
-            } else {
-                ctx.doc.view.selection = {obj.id, i, j};
-                st.points.set(obj.id, {{i, j}});
-            }
-        } else {
-            // Empty space: a box selects the points inside it (Shift adds to the selection).
+    auto dot_px = [&](std::size_t q) { return c.dot_px(q); };
+    const HandlePart part = handle ? hit_handle(*handle, mouse, 6.0 * k) : HandlePart::none;
+    std::optional<std::size_t> dot;
+    for (std::size_t q = 0; q < net.points.size(); ++q)
+        if (glm::length(dot_px(q) - mouse) <= 5 * k) dot = q;
+    if (part != HandlePart::none && !io.KeyShift) {
+        if (may_edit_points(ctx, obj.id)) {
             g = {};
-            g.kind = SelectionGesture::Kind::box;
+            g.kind = SelectionGesture::Kind::handle;
             g.view = plane;
+            g.part = part;
             g.press = g.now = mouse;
-            g.add = io.KeyShift;
+            g.points = st.points.points;
+            for (const PointIndex& p : g.points) g.start.push_back(doc::position_of(obj.shape, p));
+            g.pivot = selection_pivot(ctx);
+            g.pivot_px = handle->centre;
             pd.frozen = map;
+            ctx.seal();
         }
+    } else if (glm::length(mouse - disk) <= disk_r * 1.6 && !io.KeyShift) {
+        if (may_edit_points(ctx, obj.id)) {
+            pd.plane = plane;
+            pd.frozen = map;
+            pd.grab = mouse - disk;
+            ctx.seal();
+        }
+    } else if (dot) {
+        const auto [i, j] = net.ids[*dot];
+        if (io.KeyShift) {
+            toggle_point(ctx, obj.id, {i, j});
+        } else {
+            ctx.doc.view.selection = {obj.id, i, j};
+            st.points.set(obj.id, {{i, j}});
+        }
+    } else {
+        // Empty space: a box selects the points inside it (Shift adds to the selection).
+        g = {};
+        g.kind = SelectionGesture::Kind::box;
+        g.view = plane;
+        g.press = g.now = mouse;
+        g.add = io.KeyShift;
+        pd.frozen = map;
     }
+}
+
+// While held: the box follows, the handle moves, turns or scales, the disk moves its point.
+// Returns whether a point moved.
+bool cp_plane_hold(AppContext& ctx, const CpPlane& c, const glm::dvec2& mouse) {
+    const doc::Object& obj = c.obj;
+    const ControlNet& net = c.net;
+    const int plane = c.plane;
+    const PlaneAxes& ax = c.ax;
+    const int si = c.si, sj = c.sj;
+    const glm::dvec3& sel = c.sel;
+    PlaneDrag& pd = ctx.ui.plane_drag;
+    SelectionGesture& g = ctx.ui.modeler.selection.gesture;
+    bool moved = false;
     if (ImGui::IsItemActive() && g.view == plane) {
         if (g.kind == SelectionGesture::Kind::box)
             g.now = mouse;
@@ -215,38 +228,99 @@ bool plane_canvas(AppContext& ctx, const doc::Object& obj, const ControlNet& net
             moved = true;
         }
     }
-    if (ImGui::IsItemDeactivated()) {
-        if (g.view == plane && g.kind == SelectionGesture::Kind::box) {
-            std::vector<glm::dvec2> px;
-            for (std::size_t q = 0; q < net.points.size(); ++q) px.push_back(dot_px(q));
-            std::vector<PointIndex> inside;
-            for (std::size_t q : inside_box(px, g.press, g.now))
-                inside.push_back({net.ids[q].first, net.ids[q].second});
-            select_points(ctx, obj.id, inside, g.add);
-        }
-        if (g.view == plane) g = {};
-        if (pd.plane == plane) pd.plane = -1;
-        ctx.seal();
+    return moved;
+}
+
+// The release: a box selects the points inside it; the gesture ends (one undo step).
+void cp_plane_release(AppContext& ctx, const CpPlane& c) {
+    const doc::Object& obj = c.obj;
+    const ControlNet& net = c.net;
+    const int plane = c.plane;
+    PlaneDrag& pd = ctx.ui.plane_drag;
+    SelectionGesture& g = ctx.ui.modeler.selection.gesture;
+    auto dot_px = [&](std::size_t q) { return c.dot_px(q); };
+    if (g.view == plane && g.kind == SelectionGesture::Kind::box) {
+        std::vector<glm::dvec2> px;
+        for (std::size_t q = 0; q < net.points.size(); ++q) px.push_back(dot_px(q));
+        std::vector<PointIndex> inside;
+        for (std::size_t q : inside_box(px, g.press, g.now))
+            inside.push_back({net.ids[q].first, net.ids[q].second});
+        select_points(ctx, obj.id, inside, g.add);
     }
+    if (g.view == plane) g = {};
+    if (pd.plane == plane) pd.plane = -1;
+    ctx.seal();
+}
+
+// The selection's handle: the ring about the plane's normal, the two axes' arrows, the centre
+// and the scale box.
+void draw_cp_handle(Picture& pic, const HandleLayout& h, const PlaneAxes& ax, int plane, float k) {
+    const HandleLayout* handle = &h;
+    const Rgba8 colors[3] = {rgba8(240, 80, 80), rgba8(90, 215, 90), rgba8(90, 140, 255)};
+    const int normal = 3 - ax.a - ax.b;
+    std::vector<glm::vec2> ring;
+    for (const glm::dvec2& p : handle->ring[normal]) ring.push_back(glm::vec2(p));
+    pic.polyline(std::move(ring), (colors[normal] & 0x00FFFFFF) | 0xB0000000, 1.5f * k, true);
+    for (int c : {ax.a, ax.b}) {
+        pic.line(glm::vec2(handle->centre), glm::vec2(handle->tip[c]), colors[c], 2.5f * k);
+        pic.disk(glm::vec2(handle->tip[c]), 4 * k, colors[c]);
+        const char* axis_names[3] = {"x", "y", "z"};
+        report_point("cp/handle" + std::to_string(plane) + "/" + axis_names[c],
+                     static_cast<float>(handle->tip[c].x), static_cast<float>(handle->tip[c].y));
+    }
+    pic.disk(glm::vec2(handle->centre), static_cast<float>(handle->centre_radius),
+             rgba8(255, 255, 255, 210), rgba8(0, 0, 0), 1.5f * k);
+    const float hb = static_cast<float>(handle->box_half);
+    const glm::vec2 sb(handle->scale_box);
+    pic.box(sb - glm::vec2(hb), sb + glm::vec2(hb), rgba8(250, 210, 80, 230));
+    report_point("cp/handle" + std::to_string(plane), static_cast<float>(handle->centre.x),
+                 static_cast<float>(handle->centre.y));
+    report_point("cp/handle" + std::to_string(plane) + "/scale", sb.x, sb.y);
+}
+
+// The selected point's disk is dragged (one undo step a drag), a press on another dot selects
+// that point (Shift: adds it or takes it out), a drag on empty space draws a box that selects
+// the points inside, and with many points selected their handle moves, turns and scales them.
+// Returns whether it moved a point (the document changed).
+bool plane_canvas(AppContext& ctx, const doc::Object& obj, const ControlNet& net, int plane,
+                  const Rect& canvas) {
+    const PlaneAxes ax = plane_axes[plane];
+    const float k = ctx.ui.scale();
+    PlaneDrag& pd = ctx.ui.plane_drag;
+    SelectionState& st = ctx.ui.modeler.selection;
+    SelectionGesture& g = st.gesture;
+    const PlaneMap map =
+        pd.plane == plane || (g.view == plane && g.kind != SelectionGesture::Kind::none)
+            ? pd.frozen
+            : frame_plane(net, canvas, ax.a, ax.b, 8 * k);
+    const int si = ctx.doc.view.selection.i, sj = ctx.doc.view.selection.j;
+    const glm::dvec3 sel = net.points[static_cast<std::size_t>(net.find(si, sj))];
+    const glm::dvec2 disk = plane_to_pixel(map, {sel[ax.a], sel[ax.b]});
+    const float disk_r = 7 * k;
+    const std::optional<HandleLayout> handle = plane_handle(ctx, obj, map, ax);
+
+    ImGui::SetCursorScreenPos(ImVec2(canvas.x, canvas.y));
+    ImGui::PushID(plane);
+    ImGui::InvisibleButton("##plane", ImVec2(canvas.w, canvas.h));
+    report_item("cp/plane" + std::to_string(plane));
+    report_point("cp/disk" + std::to_string(plane), static_cast<float>(disk.x),
+                 static_cast<float>(disk.y));
+    const ImGuiIO& io = ImGui::GetIO();
+    const ImVec2 m = io.MousePos;
+    const glm::dvec2 mouse(m.x, m.y);
+    const CpPlane c{obj, net, plane, ax, map, k, si, sj, sel, disk, disk_r, handle};
+    if (ImGui::IsItemActivated()) cp_plane_press(ctx, c, mouse);
+    const bool moved = ImGui::IsItemActive() && cp_plane_hold(ctx, c, mouse);
+    if (ImGui::IsItemDeactivated()) cp_plane_release(ctx, c);
     const bool hovered = ImGui::IsItemHovered();
     ImGui::PopID();
 
     if (hovered) ctx.ui.stage.hovered_next = stage_plane_view(plane);
     const bool light = ctx.ui.presentation;
-    Picture pic;
-    pic.view = std::string("cp/") + ax.name;
-    pic.frame = canvas;
-    pic.background = light ? rgba8(250, 250, 250) : rgba8(26, 28, 34);
-    pic.border = light ? rgba8(0, 0, 0) : rgba8(110, 115, 130);
-    pic.border_width = 1 * k;
+    Picture pic = plane_picture(std::string("cp/") + ax.name, canvas, light, k);
     if (ctx.ui.modeler.snap.grid_shown)
         plane_grid(pic, map, canvas, light, plane_grid_step(ctx.ui, map));
-    const glm::dvec2 o = plane_to_pixel(map, {0, 0});
-    const Rgba8 axis_col = light ? rgba8(150, 150, 150) : rgba8(80, 84, 96);
-    pic.line({canvas.x, static_cast<float>(o.y)}, {canvas.x + canvas.w, static_cast<float>(o.y)},
-             axis_col);
-    pic.line({static_cast<float>(o.x), canvas.y}, {static_cast<float>(o.x), canvas.y + canvas.h},
-             axis_col);
+    plane_origin_axes(pic, map, canvas, light);
     // The net, projected.
     const doc::Colors& col = ctx.doc.colors;
     auto px = [&](int q) {
@@ -285,29 +359,7 @@ bool plane_canvas(AppContext& ctx, const doc::Object& obj, const ControlNet& net
         pic.box(glm::min(glm::vec2(g.press), glm::vec2(g.now)),
                 glm::max(glm::vec2(g.press), glm::vec2(g.now)), rgba8(120, 170, 255, 40),
                 rgba8(140, 190, 255, 220), 1.5f * k);
-    if (handle) {
-        const Rgba8 colors[3] = {rgba8(240, 80, 80), rgba8(90, 215, 90), rgba8(90, 140, 255)};
-        const int normal = 3 - ax.a - ax.b;
-        std::vector<glm::vec2> ring;
-        for (const glm::dvec2& p : handle->ring[normal]) ring.push_back(glm::vec2(p));
-        pic.polyline(std::move(ring), (colors[normal] & 0x00FFFFFF) | 0xB0000000, 1.5f * k, true);
-        for (int c : {ax.a, ax.b}) {
-            pic.line(glm::vec2(handle->centre), glm::vec2(handle->tip[c]), colors[c], 2.5f * k);
-            pic.disk(glm::vec2(handle->tip[c]), 4 * k, colors[c]);
-            const char* axis_names[3] = {"x", "y", "z"};
-            report_point("cp/handle" + std::to_string(plane) + "/" + axis_names[c],
-                         static_cast<float>(handle->tip[c].x),
-                         static_cast<float>(handle->tip[c].y));
-        }
-        pic.disk(glm::vec2(handle->centre), static_cast<float>(handle->centre_radius),
-                 rgba8(255, 255, 255, 210), rgba8(0, 0, 0), 1.5f * k);
-        const float hb = static_cast<float>(handle->box_half);
-        const glm::vec2 sb(handle->scale_box);
-        pic.box(sb - glm::vec2(hb), sb + glm::vec2(hb), rgba8(250, 210, 80, 230));
-        report_point("cp/handle" + std::to_string(plane), static_cast<float>(handle->centre.x),
-                     static_cast<float>(handle->centre.y));
-        report_point("cp/handle" + std::to_string(plane) + "/scale", sb.x, sb.y);
-    }
+    if (handle) draw_cp_handle(pic, *handle, ax, plane, k);
     // Axis names: horizontal bottom-right, vertical top-left, the plane's name on top.
     const char names[3] = {'x', 'y', 'z'};
     const Rgba8 tc = ImGui::GetColorU32(ImGuiCol_Text);

@@ -112,7 +112,7 @@ void curvature_plot(AppContext& ctx, const geom::Curve& c, const Rect& box) {
         if (run.value > d.lo && run.value < d.hi)
             pic.line({x_of(run.value), box.y}, {x_of(run.value), box.y + box.h},
                      rgba8(150, 150, 160, 90), 1 * k);
-    const double t = trace_param(ctx, c);
+    const double t = ctx.ui.curve.trace_param(c);
     pic.line({x_of(t), box.y}, {x_of(t), box.y + box.h}, rgba8(235, 60, 60), 1.2f * k);
     const auto f = geom::curve_curvature(c, t);
     const std::string kappa_text =

@@ -157,94 +157,48 @@ int canvas_plane(const AppContext& ctx, const doc::CurveObject& c) {
     return std::clamp(ctx.ui.curve.view_plane, 0, 2);
 }
 
-double trace_param(const AppContext& ctx, const geom::Curve& c) {
-    const geom::Interval d = geom::domain(c);
-    return denormalize_param(d, std::clamp(ctx.ui.curve.trace_t, 0.0, 1.0));
+namespace {
+
+// Zoom about the pointer (wheel), pan (right or middle drag); the panel's Fit frames again.
+void zoom_and_pan(CurveDesignerState& cd, const PlaneMap& map, const glm::dvec2& mouse) {
+    ImGuiIO& io = ImGui::GetIO();
+    if (io.MouseWheel != 0) {
+        const glm::dvec2 before = pixel_to_plane(map, mouse);
+        cd.view_zoom = std::clamp(cd.view_zoom * std::pow(1.15, io.MouseWheel), 0.05, 200.0);
+        PlaneMap zoomed = map;
+        zoomed.units_per_px = map.units_per_px * std::pow(1.15, -io.MouseWheel);
+        cd.view_pan += before - pixel_to_plane(zoomed, mouse);
+    }
+    if (ImGui::IsMouseDragging(ImGuiMouseButton_Right, 0) ||
+        ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 0))
+        cd.view_pan += glm::dvec2(-io.MouseDelta.x, io.MouseDelta.y) * map.units_per_px;
 }
 
-void plane_canvas(AppContext& ctx, const doc::Object& obj, const doc::CurveObject& c,
-                  const Rect& canvas) {
+// The held point follows the pointer in the plane, snapped (a refusal is the panel's message).
+void drag_held_point(AppContext& ctx, std::uint64_t id, const PlaneAxes& ax,
+                     const glm::dvec2& mouse) {
     CurveDesignerState& cd = ctx.ui.curve;
-    const std::uint64_t id = obj.id;
-    const int plane = canvas_plane(ctx, c);
-    const PlaneAxes ax = plane_axes[plane];
-    const float k = ctx.ui.scale();
-    ImGui::SetCursorScreenPos(ImVec2(canvas.x, canvas.y));
-    ImGui::InvisibleButton("##curve_canvas", ImVec2(canvas.w, canvas.h),
-                           ImGuiButtonFlags_MouseButtonLeft);
-    report_item("curve/canvas");
-    // On the stage the wheel zooms and a right-drag pans (the kept framing, seen through it).
-    const CanvasView cv = canvas_view(ctx, "curve", canvas);
-    const PlaneMap map =
-        cd.drag_point >= 0
-            ? cd.frozen
-            : view_map(cv, frame(cd, id, plane, c.curve, canvas, ax.a, ax.b, 14 * k));
-    const ImVec2 m = ImGui::GetIO().MousePos;
-    const glm::dvec2 mouse(m.x, m.y);
-    // Zoom about the pointer (wheel), pan (right or middle drag); the panel's Fit frames again.
-    if (ImGui::IsItemHovered() && cd.drag_point < 0) {
-        ImGuiIO& io = ImGui::GetIO();
-        if (io.MouseWheel != 0) {
-            const glm::dvec2 before = pixel_to_plane(map, mouse);
-            cd.view_zoom = std::clamp(cd.view_zoom * std::pow(1.15, io.MouseWheel), 0.05, 200.0);
-            PlaneMap zoomed = map;
-            zoomed.units_per_px = map.units_per_px * std::pow(1.15, -io.MouseWheel);
-            cd.view_pan += before - pixel_to_plane(zoomed, mouse);
-        }
-        if (ImGui::IsMouseDragging(ImGuiMouseButton_Right, 0) ||
-            ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 0))
-            cd.view_pan += glm::dvec2(-io.MouseDelta.x, io.MouseDelta.y) * map.units_per_px;
-    }
-    if (ImGui::IsItemActivated() && ImGui::IsMouseDown(ImGuiMouseButton_Left))
-        handle_press(ctx, id, c.curve, ax, map, mouse);
-    // A press that has not moved yet moves nothing (rounding would nudge the point).
-    if (ImGui::IsItemActive() && cd.drag_point >= 0 && mouse != cd.press) {
-        const doc::CurveObject* cur = curve_in(ctx, id);
-        if (cur && cd.drag_point < cur->curve.count()) {
-            const glm::dvec3 old = cur->curve.points[static_cast<std::size_t>(cd.drag_point)];
-            const glm::dvec2 ab =
-                snap_in_plane(ctx, cd.frozen, pixel_to_plane(cd.frozen, mouse - cd.grab),
-                              other_points(cur->curve, ax, cd.drag_point));
-            glm::dvec3 p = old;
-            p[ax.a] = ab.x;
-            p[ax.b] = ab.y;
-            if (p != old && !ctx.execute(point_move_command(ctx, id, cd.drag_point, -1, p)))
-                cd.message = ctx.ui.status;
-        }
-    }
-    if (ImGui::IsItemDeactivated() && cd.drag_point >= 0) {
-        cd.drag_point = -1;
-        ctx.seal();
-    }
-    const bool hovered = ImGui::IsItemHovered();
-
-    // Draw what the document holds now (the gesture may have changed it).
     const doc::CurveObject* cur = curve_in(ctx, id);
-    if (!cur) return;
-    const geom::Curve& g = cur->curve;
-    auto gx = [&](const glm::dvec3& p) {
-        return glm::vec2(plane_to_pixel(map, {p[ax.a], p[ax.b]}));
-    };
-
-    const bool light = ctx.ui.presentation;
-    Picture pic;
-    pic.view = "curve";
-    pic.frame = canvas;
-    pic.background = light ? rgba8(250, 250, 250) : rgba8(26, 28, 34);
-    pic.border = light ? rgba8(0, 0, 0) : rgba8(110, 115, 130);
-    pic.border_width = 1 * k;
-    pic.style.offset = 5 * k;
-    if (ctx.ui.modeler.snap.grid_shown)
-        plane_grid(pic, map, canvas, light, plane_grid_step(ctx.ui, map));
-    {
-        const glm::dvec2 o = plane_to_pixel(map, {0, 0});
-        const Rgba8 axis_col = light ? rgba8(150, 150, 150) : rgba8(80, 84, 96);
-        pic.line({canvas.x, static_cast<float>(o.y)},
-                 {canvas.x + canvas.w, static_cast<float>(o.y)}, axis_col);
-        pic.line({static_cast<float>(o.x), canvas.y},
-                 {static_cast<float>(o.x), canvas.y + canvas.h}, axis_col);
+    if (cur && cd.drag_point < cur->curve.count()) {
+        const glm::dvec3 old = cur->curve.points[static_cast<std::size_t>(cd.drag_point)];
+        const glm::dvec2 ab =
+            snap_in_plane(ctx, cd.frozen, pixel_to_plane(cd.frozen, mouse - cd.grab),
+                          other_points(cur->curve, ax, cd.drag_point));
+        glm::dvec3 p = old;
+        p[ax.a] = ab.x;
+        p[ax.b] = ab.y;
+        if (p != old && !ctx.execute(point_move_command(ctx, id, cd.drag_point, -1, p)))
+            cd.message = ctx.ui.status;
     }
+}
 
+using CanvasPixel = std::function<glm::vec2(const glm::dvec3&)>;
+
+// The control polygon, the curve (uniform samples plus the knots, so corners at multiple knots
+// stay sharp) and its knot points.
+void draw_curve_and_polygon(const AppContext& ctx, Picture& pic, const geom::Curve& g,
+                            const CanvasPixel& gx) {
+    const float k = ctx.ui.scale();
     const doc::Colors& col = ctx.doc.colors;
     // The control polygon.
     std::vector<glm::vec2> line;
@@ -277,14 +231,19 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const doc::CurveObjec
             pic.box({q.x - r, q.y - r}, {q.x + r, q.y + r}, rgba(col.knot_curves));
         }
     }
-    draw_curve_analysis(ctx, g, trace_param(ctx, g), pic, gx);
-    // Over them: the points, de Boor's construction; every text is placed with the others.
-    Picture& top = pic;
-    // Control points, labelled P0..Pn while the labels stay readable.
+}
+
+// The control points, labelled P0..Pn while the labels stay readable; the selected one larger
+// (white-ringed while held or hovered).
+void draw_curve_points(const AppContext& ctx, Picture& top, const doc::CurveObject& cur,
+                       std::uint64_t id, const CanvasPixel& gx, bool hot) {
+    const float k = ctx.ui.scale();
+    const doc::Colors& col = ctx.doc.colors;
+    const geom::Curve& g = cur.curve;
     const int sel = ctx.doc.view.selection.object == id ? ctx.doc.view.selection.i : -1;
     const Rgba8 text_col = ImGui::GetColorU32(ImGuiCol_Text);
     // A closed curve repeats its first p points at its end: one label says both names.
-    const bool closed = cur->knot_mode == doc::CurveKnotMode::closed;
+    const bool closed = cur.knot_mode == doc::CurveKnotMode::closed;
     const int own = closed ? g.count() - g.degree : g.count();
     auto name = [&](int i) {
         const int first = closed ? i % own : i;
@@ -301,28 +260,88 @@ void plane_canvas(AppContext& ctx, const doc::Object& obj, const doc::CurveObjec
     }
     if (sel >= 0 && sel < g.count()) {
         const glm::vec2 q = gx(g.points[static_cast<std::size_t>(sel)]);
-        top.disk(q, 6.5f * k, rgba(col.selected_point),
-                 cd.drag_point >= 0 || hovered ? rgba8(255, 255, 255) : rgba8(0, 0, 0), 1.5f * k);
+        top.disk(q, 6.5f * k, rgba(col.selected_point), hot ? rgba8(255, 255, 255) : rgba8(0, 0, 0),
+                 1.5f * k);
         top.keep_clear.push_back({q.x - 6.5f * k, q.y - 6.5f * k, 13 * k, 13 * k});
         top.label(q, name(sel), text_col, 30);
     }
-    // De Boor's construction at the trace parameter, on top: every level's polygon.
-    if (cd.trace) {
-        const double t = trace_param(ctx, g);
-        const geom::DeBoorTriangle tri = geom::deboor_curve(g, t);
-        const int levels = static_cast<int>(tri.levels.size()) - 1;
-        for (int lv = 1; lv <= levels; ++lv) {
-            std::vector<glm::vec2> pts;
-            for (const geom::HPoint& h : tri.levels[static_cast<std::size_t>(lv)])
-                if (const auto p = geom::DeBoorTriangle::cartesian(h)) pts.push_back(gx(*p));
-            const ImU32 lc = level_color(lv, levels);
-            top.polyline(pts, lc, 1.6f * k);
-            for (const glm::vec2& q : pts) top.disk(q, (lv == levels ? 5.f : 3.f) * k, lc);
-        }
-        if (const auto p = geom::DeBoorTriangle::cartesian(tri.levels.back().front()))
-            top.label(gx(*p), "C(" + geom::format_short(t, 3) + ")", rgba8(235, 60, 60), 40)
-                .tooltip = "C(" + geom::format_number(t) + ")";
+}
+
+// De Boor's construction at the trace parameter, on top: every level's polygon.
+void draw_curve_deboor(const AppContext& ctx, Picture& top, const geom::Curve& g,
+                       const CanvasPixel& gx) {
+    const float k = ctx.ui.scale();
+    const double t = ctx.ui.curve.trace_param(g);
+    const geom::DeBoorTriangle tri = geom::deboor_curve(g, t);
+    const int levels = static_cast<int>(tri.levels.size()) - 1;
+    for (int lv = 1; lv <= levels; ++lv) {
+        std::vector<glm::vec2> pts;
+        for (const geom::HPoint& h : tri.levels[static_cast<std::size_t>(lv)])
+            if (const auto p = geom::DeBoorTriangle::cartesian(h)) pts.push_back(gx(*p));
+        const ImU32 lc = level_color(lv, levels);
+        top.polyline(pts, lc, 1.6f * k);
+        for (const glm::vec2& q : pts) top.disk(q, (lv == levels ? 5.f : 3.f) * k, lc);
     }
+    if (const auto p = geom::DeBoorTriangle::cartesian(tri.levels.back().front()))
+        top.label(gx(*p), "C(" + geom::format_short(t, 3) + ")", rgba8(235, 60, 60), 40).tooltip =
+            "C(" + geom::format_number(t) + ")";
+}
+
+} // namespace
+
+void plane_canvas(AppContext& ctx, const doc::Object& obj, const doc::CurveObject& c,
+                  const Rect& canvas) {
+    CurveDesignerState& cd = ctx.ui.curve;
+    const std::uint64_t id = obj.id;
+    const int plane = canvas_plane(ctx, c);
+    const PlaneAxes ax = plane_axes[plane];
+    const float k = ctx.ui.scale();
+    ImGui::SetCursorScreenPos(ImVec2(canvas.x, canvas.y));
+    ImGui::InvisibleButton("##curve_canvas", ImVec2(canvas.w, canvas.h),
+                           ImGuiButtonFlags_MouseButtonLeft);
+    report_item("curve/canvas");
+    // On the stage the wheel zooms and a right-drag pans (the kept framing, seen through it).
+    const CanvasView cv = canvas_view(ctx, "curve", canvas);
+    const PlaneMap map =
+        cd.drag_point >= 0
+            ? cd.frozen
+            : view_map(cv, frame(cd, id, plane, c.curve, canvas, ax.a, ax.b, 14 * k));
+    const ImVec2 m = ImGui::GetIO().MousePos;
+    const glm::dvec2 mouse(m.x, m.y);
+    if (ImGui::IsItemHovered() && cd.drag_point < 0) zoom_and_pan(cd, map, mouse);
+    if (ImGui::IsItemActivated() && ImGui::IsMouseDown(ImGuiMouseButton_Left))
+        handle_press(ctx, id, c.curve, ax, map, mouse);
+    // A press that has not moved yet moves nothing (rounding would nudge the point).
+    if (ImGui::IsItemActive() && cd.drag_point >= 0 && mouse != cd.press)
+        drag_held_point(ctx, id, ax, mouse);
+    if (ImGui::IsItemDeactivated() && cd.drag_point >= 0) {
+        cd.drag_point = -1;
+        ctx.seal();
+    }
+    const bool hovered = ImGui::IsItemHovered();
+
+    // Draw what the document holds now (the gesture may have changed it).
+    const doc::CurveObject* cur = curve_in(ctx, id);
+    if (!cur) return;
+    const geom::Curve& g = cur->curve;
+    auto gx = [&](const glm::dvec3& p) {
+        return glm::vec2(plane_to_pixel(map, {p[ax.a], p[ax.b]}));
+    };
+
+    const bool light = ctx.ui.presentation;
+    Picture pic = plane_picture("curve", canvas, light, k);
+    pic.style.offset = 5 * k;
+    if (ctx.ui.modeler.snap.grid_shown)
+        plane_grid(pic, map, canvas, light, plane_grid_step(ctx.ui, map));
+    plane_origin_axes(pic, map, canvas, light);
+
+    draw_curve_and_polygon(ctx, pic, g, gx);
+    draw_curve_analysis(ctx, g, ctx.ui.curve.trace_param(g), pic, gx);
+    // Over them: the points, de Boor's construction; every text is placed with the others.
+    Picture& top = pic;
+    const Rgba8 text_col = ImGui::GetColorU32(ImGuiCol_Text);
+    draw_curve_points(ctx, top, *cur, id, gx, cd.drag_point >= 0 || hovered);
+    if (cd.trace) draw_curve_deboor(ctx, top, g, gx);
     const char names[3] = {'x', 'y', 'z'};
     const float in = 4 * k;
     top.fixed_label({canvas.x + canvas.w - in, canvas.y + canvas.h - 2 * k},

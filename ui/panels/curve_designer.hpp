@@ -18,9 +18,6 @@ int canvas_plane(const AppContext& ctx, const doc::CurveObject& c);
 // The canvas framed afresh around the curve: its zoom and pan undone (the Fit button).
 void fit_curve_canvas(CurveDesignerState& cd);
 
-// The curve's parameter at the designer's normalised trace position.
-double trace_param(const AppContext& ctx, const geom::Curve& c);
-
 // The plane canvas: control polygon with labels P0..Pn, the curve, its knot points, de Boor's
 // construction at the trace parameter; click to append, Ctrl+click a leg to insert, drag to
 // move (one undo step), click a point to select it.

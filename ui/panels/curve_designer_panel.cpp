@@ -206,7 +206,7 @@ void degree_and_knots(AppContext& ctx, const doc::Object& obj, const doc::CurveO
 void refine_controls(AppContext& ctx, const doc::Object& obj, const doc::CurveObject& c) {
     CurveDesignerState& cd = ctx.ui.curve;
     const geom::Curve& g = c.curve;
-    const double t = trace_param(ctx, g);
+    const double t = ctx.ui.curve.trace_param(g);
     const std::string label = "t = " + geom::format_short(t);
     // The slider no narrower than its value; the check box and the button wrap onto the next
     // line where the column is narrow ("Insert knot" was cut on a projector).
@@ -394,7 +394,7 @@ void curve_controls(AppContext& ctx, std::uint64_t id) {
         basis_plot(ctx, *c, sel, {p.x, p.y, ImGui::GetContentRegionAvail().x, 90 * k});
         // Partition of unity at t: the functions sum to 1 wherever the curve exists.
         const auto& g = c->curve;
-        const double t = trace_param(ctx, g);
+        const double t = ctx.ui.curve.trace_param(g);
         if (const auto r = geom::rational_basis(g.knots, g.degree, g.weights, t)) {
             double sum = 0;
             for (double v : (*r)[0]) sum += v;

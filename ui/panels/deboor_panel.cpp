@@ -62,20 +62,10 @@ void triangle_lines(const geom::DeBoorTriangle& t, bool u_stage, int row, int up
 } // namespace
 
 void draw_deboor_panel(AppContext& ctx) {
-    note_hovered_view(ctx, StageView::deboor);
-    // A selected triangular patch has its own version of the panel (Farin ch. 17).
-    const doc::Object* triangle = nullptr;
-    if (const geom::TrianglePatch* t = selected_triangle(ctx.doc, &triangle)) {
-        draw_triangle_casteljau(ctx, *triangle, *t);
-        return;
-    }
     const doc::Object* obj = nullptr;
     const geom::Surface* s =
-        selected_non_surface(ctx.doc) ? nullptr : current_surface(ctx.doc, &obj);
-    if (!s) {
-        no_surface_text(ctx);
-        return;
-    }
+        teaching_panel_surface(ctx, StageView::deboor, draw_triangle_casteljau, &obj);
+    if (!s) return;
     const glm::dvec2 uv = indicator_params(ctx.doc, *obj);
     const geom::DeBoorSurfaceTrace trace = geom::deboor_surface(*s, uv.x, uv.y);
     const int p_u = s->degree_u, p_v = s->degree_v;

@@ -16,6 +16,7 @@
 #include "core/geom/tessellate.hpp"
 #include "core/scene/point_file.hpp"
 #include "ui/actions.hpp"
+#include "ui/fit_actions.hpp"
 #include "ui/panels/curve_designer.hpp"
 #include "ui/panels/enum_combo.hpp"
 #include "ui/panels/fit_panel.hpp"
@@ -281,29 +282,6 @@ void add_to_scene(AppContext& ctx) {
 }
 
 } // namespace
-
-bool load_fit_points(AppContext& ctx, const std::string& path, std::string& error) {
-    auto data = scene::load_points(path);
-    if (!data) {
-        error = data.error().message;
-        return false;
-    }
-    FitState& f = ctx.ui.fit;
-    f.points = std::move(data->points);
-    f.rows = data->rows;
-    f.columns = data->columns;
-    f.source = std::filesystem::path(path).filename().string();
-    f.stale = true;
-    f.open = true;
-    f.drag = -1;
-    f.frame_plane = -1; // frame the new data
-    // Counts that no longer fit the data are the fit's refusal, shown; nothing is clamped.
-    return true;
-}
-
-void open_fit_panel(AppContext& ctx) {
-    ctx.ui.fit.open = true;
-}
 
 void draw_fit_panel(AppContext& ctx) {
     FitState& f = ctx.ui.fit;

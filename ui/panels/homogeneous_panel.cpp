@@ -60,7 +60,7 @@ std::optional<Lifted> chosen_curve(AppContext& ctx, std::string& why_not) {
         l.own_plane = co.plane != doc::CurvePlane::free3d;
         l.axes =
             l.own_plane ? plane_axes[static_cast<std::size_t>(co.plane)] : seen_in(hs, l.curve);
-        l.t = curve_designer::trace_param(ctx, l.curve);
+        l.t = ctx.ui.curve.trace_param(l.curve);
         l.caption = sel->name + " in the " + axes_name(l.axes) + " plane";
         return l;
     }

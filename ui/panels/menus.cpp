@@ -15,8 +15,8 @@
 #include "ui/actions.hpp"
 #include "ui/animation_actions.hpp"
 #include "ui/exchange_actions.hpp"
+#include "ui/fit_actions.hpp"
 #include "ui/modeler_actions.hpp"
-#include "ui/panels/fit_panel.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/panels/stage_controls.hpp"
 #include "ui/platform/files.hpp"
@@ -427,6 +427,135 @@ void help_menu(AppContext& ctx) {
     ImGui::EndMenu();
 }
 
+// Ctrl and a key: the file and history commands.
+void ctrl_shortcut(AppContext& ctx, const KeyPress& k) {
+    switch (k.key) {
+    case GLFW_KEY_N:
+        if (k.shift)
+            ctx.ui.new_surface.open = true;
+        else
+            request_new_document(ctx);
+        break;
+    case GLFW_KEY_O:
+        request_open_dialog(ctx);
+        break;
+    case GLFW_KEY_S:
+        if (k.shift)
+            request_save_as(ctx);
+        else
+            save(ctx);
+        break;
+    case GLFW_KEY_Z:
+        if (k.shift)
+            redo(ctx);
+        else
+            undo(ctx);
+        break;
+    case GLFW_KEY_Y:
+        redo(ctx);
+        break;
+    case GLFW_KEY_C:
+        if (k.shift) ctx.ui.media_export.clipboard_pending = true; // the 3D view
+        break;
+    case GLFW_KEY_Q:
+        request_quit(ctx);
+        break;
+    case GLFW_KEY_A:
+        select_all_points(ctx);
+        break;
+    default:
+        break;
+    }
+}
+
+// A key alone (Shift aside): views, display toggles, de Boor's steps and surface edits.
+void plain_shortcut(AppContext& ctx, const KeyPress& k) {
+    doc::DisplaySettings& d = ctx.doc.view.display;
+    switch (k.key) {
+    case GLFW_KEY_F:
+        fit_or_reset(ctx);
+        break;
+    case GLFW_KEY_T:
+        // The teaching view under the pointer takes the stage; on the stage, T gives it back.
+        if (ctx.ui.stage.view != StageView::none)
+            set_stage(ctx, StageView::none);
+        else if (ctx.ui.stage.hovered != StageView::none)
+            set_stage(ctx, ctx.ui.stage.hovered);
+        break;
+    case GLFW_KEY_4:
+        set_four_views(ctx, !ctx.ui.stage.four_views);
+        break;
+    case GLFW_KEY_R:
+        (k.shift ? select_column : select_row)(ctx);
+        break;
+    case GLFW_KEY_G:
+        ctx.ui.modeler.snap.grid_shown = !ctx.ui.modeler.snap.grid_shown;
+        break;
+    case GLFW_KEY_F11:
+        ctx.ui.fullscreen_request = true;
+        break;
+    case GLFW_KEY_P:
+        if (k.shift)
+            toggle_view_only(ctx);
+        else
+            toggle_presentation(ctx);
+        break;
+    case GLFW_KEY_1:
+        d.style = doc::DisplayStyle::shaded;
+        break;
+    case GLFW_KEY_2:
+        d.style = doc::DisplayStyle::wireframe;
+        break;
+    case GLFW_KEY_3:
+        d.style = doc::DisplayStyle::both;
+        break;
+    case GLFW_KEY_C:
+        toggle_object_display(ctx, &doc::ObjectDisplay::control_points);
+        break;
+    case GLFW_KEY_N:
+        toggle_object_display(ctx, &doc::ObjectDisplay::control_net);
+        break;
+    case GLFW_KEY_I:
+        toggle_object_display(ctx, &doc::ObjectDisplay::point_ids);
+        break;
+    case GLFW_KEY_K:
+        toggle_object_display(ctx, &doc::ObjectDisplay::knot_curves);
+        break;
+    case GLFW_KEY_D:
+        d.deboor = !d.deboor;
+        ctx.ui.deboor.show_tab = d.deboor;
+        break;
+    case GLFW_KEY_LEFT_BRACKET:
+        deboor_step(ctx, -1);
+        break;
+    case GLFW_KEY_RIGHT_BRACKET:
+        deboor_step(ctx, +1);
+        break;
+    case GLFW_KEY_SPACE:
+        deboor_toggle_play(ctx, ImGui::GetTime());
+        break;
+    case GLFW_KEY_U:
+        (k.shift ? elevate_current : insert_knot_at_indicator)(ctx, geom::Dir::u);
+        break;
+    case GLFW_KEY_V:
+        (k.shift ? elevate_current : insert_knot_at_indicator)(ctx, geom::Dir::v);
+        break;
+    case GLFW_KEY_S:
+        split_at_indicator(ctx, k.shift ? geom::Dir::v : geom::Dir::u);
+        break;
+    case GLFW_KEY_ESCAPE:
+        if (ctx.ui.stage.active())
+            set_stage(ctx, StageView::none);
+        else if (ctx.ui.view_mode == ViewMode::view3d_only && !ctx.ui.headless)
+            toggle_view_only(ctx);
+        else
+            ctx.doc.view.selection.i = ctx.doc.view.selection.j = -1; // and the many points
+        break;
+    default:
+        break;
+    }
+}
+
 } // namespace
 
 void draw_menus(AppContext& ctx) {
@@ -452,136 +581,16 @@ void handle_shortcuts(AppContext& ctx) {
     // A dialog (a modal popup) or a combo's list keeps them.
     const bool menus = only_menus_open();
     if (!menus && ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId)) return;
-    doc::DisplaySettings& d = ctx.doc.view.display;
     for (const KeyPress& k : keys) {
         if (k.alt) continue;
         if (menus && only_menus_open()) {
             close_menus();
             if (k.key == GLFW_KEY_ESCAPE) continue;
         }
-        if (k.ctrl) {
-            switch (k.key) {
-            case GLFW_KEY_N:
-                if (k.shift)
-                    ctx.ui.new_surface.open = true;
-                else
-                    request_new_document(ctx);
-                break;
-            case GLFW_KEY_O:
-                request_open_dialog(ctx);
-                break;
-            case GLFW_KEY_S:
-                if (k.shift)
-                    request_save_as(ctx);
-                else
-                    save(ctx);
-                break;
-            case GLFW_KEY_Z:
-                if (k.shift)
-                    redo(ctx);
-                else
-                    undo(ctx);
-                break;
-            case GLFW_KEY_Y:
-                redo(ctx);
-                break;
-            case GLFW_KEY_C:
-                if (k.shift) ctx.ui.media_export.clipboard_pending = true; // the 3D view
-                break;
-            case GLFW_KEY_Q:
-                request_quit(ctx);
-                break;
-            case GLFW_KEY_A:
-                select_all_points(ctx);
-                break;
-            default:
-                break;
-            }
-            continue;
-        }
-        switch (k.key) {
-        case GLFW_KEY_F:
-            fit_or_reset(ctx);
-            break;
-        case GLFW_KEY_T:
-            // The teaching view under the pointer takes the stage; on the stage, T gives it back.
-            if (ctx.ui.stage.view != StageView::none)
-                set_stage(ctx, StageView::none);
-            else if (ctx.ui.stage.hovered != StageView::none)
-                set_stage(ctx, ctx.ui.stage.hovered);
-            break;
-        case GLFW_KEY_4:
-            set_four_views(ctx, !ctx.ui.stage.four_views);
-            break;
-        case GLFW_KEY_R:
-            (k.shift ? select_column : select_row)(ctx);
-            break;
-        case GLFW_KEY_G:
-            ctx.ui.modeler.snap.grid_shown = !ctx.ui.modeler.snap.grid_shown;
-            break;
-        case GLFW_KEY_F11:
-            ctx.ui.fullscreen_request = true;
-            break;
-        case GLFW_KEY_P:
-            if (k.shift)
-                toggle_view_only(ctx);
-            else
-                toggle_presentation(ctx);
-            break;
-        case GLFW_KEY_1:
-            d.style = doc::DisplayStyle::shaded;
-            break;
-        case GLFW_KEY_2:
-            d.style = doc::DisplayStyle::wireframe;
-            break;
-        case GLFW_KEY_3:
-            d.style = doc::DisplayStyle::both;
-            break;
-        case GLFW_KEY_C:
-            toggle_object_display(ctx, &doc::ObjectDisplay::control_points);
-            break;
-        case GLFW_KEY_N:
-            toggle_object_display(ctx, &doc::ObjectDisplay::control_net);
-            break;
-        case GLFW_KEY_I:
-            toggle_object_display(ctx, &doc::ObjectDisplay::point_ids);
-            break;
-        case GLFW_KEY_K:
-            toggle_object_display(ctx, &doc::ObjectDisplay::knot_curves);
-            break;
-        case GLFW_KEY_D:
-            d.deboor = !d.deboor;
-            ctx.ui.deboor.show_tab = d.deboor;
-            break;
-        case GLFW_KEY_LEFT_BRACKET:
-            deboor_step(ctx, -1);
-            break;
-        case GLFW_KEY_RIGHT_BRACKET:
-            deboor_step(ctx, +1);
-            break;
-        case GLFW_KEY_SPACE:
-            deboor_toggle_play(ctx, ImGui::GetTime());
-            break;
-        case GLFW_KEY_U:
-            (k.shift ? elevate_current : insert_knot_at_indicator)(ctx, geom::Dir::u);
-            break;
-        case GLFW_KEY_V:
-            (k.shift ? elevate_current : insert_knot_at_indicator)(ctx, geom::Dir::v);
-            break;
-        case GLFW_KEY_S:
-            split_at_indicator(ctx, k.shift ? geom::Dir::v : geom::Dir::u);
-            break;
-        case GLFW_KEY_ESCAPE:
-            if (ctx.ui.stage.active())
-                set_stage(ctx, StageView::none);
-            else if (ctx.ui.view_mode == ViewMode::view3d_only && !ctx.ui.headless)
-                toggle_view_only(ctx);
-            else
-                ctx.doc.view.selection.i = ctx.doc.view.selection.j = -1; // and the many points
-            break;
-        default:
-            break;
-        }
+        if (k.ctrl)
+            ctrl_shortcut(ctx, k);
+        else
+            plain_shortcut(ctx, k);
     }
 }
 

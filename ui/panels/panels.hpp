@@ -57,6 +57,13 @@ std::string selection_summary(const AppContext& ctx);
 // The left column's text where a surface is expected but the selection is something else (a
 // curve, an implicit surface) or there is none: what is selected, and where its panel is.
 void no_surface_text(AppContext& ctx);
+// The start of the three teaching panels (tracing, basis, de Boor) shown as `view`: a selected
+// triangular patch gets the panel's triangle version `triangle_panel`, a selection that is no
+// surface gets no_surface_text; both return null. Otherwise the surface to show, its object in
+// `obj`.
+using TrianglePanel = void (*)(AppContext&, const doc::Object&, const geom::TrianglePatch&);
+const geom::Surface* teaching_panel_surface(AppContext& ctx, StageView view,
+                                            TrianglePanel triangle_panel, const doc::Object** obj);
 
 // Height the status bar takes (for the layout).
 float status_bar_height();

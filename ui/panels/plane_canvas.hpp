@@ -27,6 +27,28 @@ inline void begin_plane_canvas(ImDrawList* dl, const PlaneMap& map, const Rect& 
                 axis_col);
 }
 
+// A plane canvas's Picture: the panel colour, framed.
+inline Picture plane_picture(std::string view, const Rect& canvas, bool light, float scale) {
+    Picture pic;
+    pic.view = std::move(view);
+    pic.frame = canvas;
+    pic.background = light ? rgba8(250, 250, 250) : rgba8(26, 28, 34);
+    pic.border = light ? rgba8(0, 0, 0) : rgba8(110, 115, 130);
+    pic.border_width = 1 * scale;
+    return pic;
+}
+
+// The world axes through the origin, across the canvas.
+inline void plane_origin_axes(Picture& pic, const PlaneMap& map, const Rect& canvas, bool light,
+                              float width = 1) {
+    const glm::dvec2 o = plane_to_pixel(map, {0, 0});
+    const Rgba8 axis = light ? rgba8(150, 150, 150) : rgba8(80, 84, 96);
+    pic.line({canvas.x, static_cast<float>(o.y)}, {canvas.x + canvas.w, static_cast<float>(o.y)},
+             axis, width);
+    pic.line({static_cast<float>(o.x), canvas.y}, {static_cast<float>(o.x), canvas.y + canvas.h},
+             axis, width);
+}
+
 // The grid of a plane canvas at `grid`: lines every step, every fifth stronger, the step
 // written in the bottom-left corner. Nothing when it would take more than 400 lines a side.
 inline void plane_grid(Picture& pic, const PlaneMap& map, const Rect& canvas, bool light,

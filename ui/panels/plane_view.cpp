@@ -15,6 +15,7 @@
 #include "core/doc/placement.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/panels/picture_draw.hpp"
+#include "ui/panels/plane_canvas.hpp"
 #include "ui/panels/stage_controls.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/canvas_map.hpp"
@@ -69,6 +70,137 @@ std::unique_ptr<doc::Command> move_command(const doc::Object& o, int i, int j,
     return doc::move_control_point(o.id, i, j, p);
 }
 
+// How one plane view maps the document: its axes, its map to pixels and its sizes.
+struct PlaneFrame {
+    PlaneAxes ax;
+    PlaneMap map;
+    float k;
+    bool light;
+    float disk_r;
+
+    glm::dvec2 px(const glm::dvec3& p) const { return plane_to_pixel(map, {p[ax.a], p[ax.b]}); }
+    glm::vec2 fpx(const glm::dvec3& p) const { return glm::vec2(px(p)); }
+};
+
+// A press on a dot selects it and holds it; dragging moves it in the plane (one undo step).
+void plane_drag(AppContext& ctx, const PlaneFrame& f, int drag_id, const glm::dvec2& mouse) {
+    PlaneDrag& pd = ctx.ui.plane_drag;
+    const bool left = ImGui::IsMouseDown(ImGuiMouseButton_Left);
+    if (ImGui::IsItemActivated() && left) {
+        // The dot under the pointer (the selected point first) is selected and held.
+        const std::vector<Dot> dots = dots_of(ctx.doc);
+        const doc::Selection& sel = ctx.doc.view.selection;
+        std::optional<Dot> hit;
+        double best = f.disk_r * 1.6;
+        for (const Dot& d : dots) {
+            const bool selected = d.object == sel.object && d.i == sel.i && d.j == sel.j;
+            const double dist = glm::length(f.px(d.position) - mouse) - (selected ? f.disk_r : 0);
+            if (dist <= best) {
+                best = dist;
+                hit = d;
+            }
+        }
+        if (hit) {
+            ctx.doc.view.selection = {hit->object, hit->i, hit->j};
+            pd.plane = drag_id;
+            pd.frozen = f.map;
+            pd.grab = mouse - f.px(hit->position);
+            ctx.seal();
+        }
+    }
+    if (ImGui::IsItemActive() && pd.plane == drag_id && left) {
+        const doc::Selection sel = ctx.doc.view.selection;
+        if (const doc::Object* o = ctx.doc.find(sel.object)) {
+            const ControlNet net = control_net_of(*o);
+            const int q = net.find(sel.i, sel.j);
+            if (q >= 0) {
+                const glm::dvec3 old = net.points[static_cast<std::size_t>(q)];
+                const glm::dvec2 ab = pixel_to_plane(pd.frozen, mouse - pd.grab);
+                glm::dvec3 p = old;
+                p[f.ax.a] = ab.x;
+                p[f.ax.b] = ab.y;
+                if (p != old) ctx.execute(move_command(*o, sel.i, sel.j, p));
+            }
+        }
+    }
+    if (pd.plane == drag_id && (!ImGui::IsItemActive() || !left)) {
+        pd.plane = -1;
+        ctx.seal();
+    }
+    if (ImGui::IsItemHovered() && pd.plane != drag_id)
+        ImGui::SetTooltip("Drag a point to move it in %s; wheel: zoom, right-drag: pan, F: fit",
+                          f.ax.name);
+}
+
+// Every visible object's wire and (where shown) control net.
+void draw_plane_wires(Picture& pic, const doc::Document& d, const PlaneFrame& f) {
+    const doc::Colors& col = d.colors;
+    const doc::Selection& sel = d.view.selection;
+    for (const doc::Object& obj : d.objects) {
+        if (!obj.visible) continue;
+        const bool chosen = obj.id == sel.object;
+        const Rgba8 wire = rgba(chosen ? col.selected_surface : col.surface, chosen ? 1.f : 0.75f);
+        for (const Polyline3& line : object_wire(obj, 40)) {
+            std::vector<glm::vec2> pts;
+            for (const glm::dvec3& p : line) pts.push_back(f.fpx(p));
+            pic.polyline(std::move(pts), wire, (chosen ? 1.6f : 1.1f) * f.k);
+        }
+        if (!doc::display_of(d.view, obj.id).control_net) continue;
+        const ControlNet net = control_net_of(obj);
+        for (const std::vector<int>& l : net.lines) {
+            std::vector<glm::vec2> pts;
+            for (int q : l) pts.push_back(f.fpx(net.points[static_cast<std::size_t>(q)]));
+            pic.polyline(std::move(pts), rgba(col.control_net, chosen ? 0.8f : 0.4f), 1 * f.k);
+        }
+    }
+}
+
+// The control points' dots, and the selected point's disk to drag (`hot` when held or hovered).
+void draw_plane_dots(Picture& pic, const doc::Document& d, const PlaneFrame& f, bool hot,
+                     const std::string& name) {
+    const doc::Colors& col = d.colors;
+    const doc::Selection& sel = d.view.selection;
+    for (const Dot& dot : dots_of(d)) {
+        const bool selected = dot.object == sel.object && dot.i == sel.i && dot.j == sel.j;
+        if (selected) continue;
+        const glm::vec2 c = f.fpx(dot.position);
+        pic.disk(c, 3.5f * f.k, rgba(col.control_points, 0.9f),
+                 f.light ? rgba8(0, 0, 0, 160) : rgba8(0, 0, 0, 0), 1);
+        if (dot.object == sel.object && doc::display_of(d.view, dot.object).point_ids)
+            pic.label(c, point_name('P', dot.i, dot.j, d.find(dot.object)),
+                      f.light ? rgba8(40, 40, 40) : rgba8(220, 220, 220), 0);
+    }
+    const doc::Object* so = d.find(sel.object);
+    if (!so || !so->visible || !sel.has_point() || !doc::display_of(d.view, so->id).control_points)
+        return;
+    const ControlNet net = control_net_of(*so);
+    const int q = net.find(sel.i, sel.j);
+    if (q < 0) return;
+    const glm::vec2 c = f.fpx(net.points[static_cast<std::size_t>(q)]);
+    const float r = f.disk_r;
+    pic.disk(c, r, rgba(col.selected_point), hot ? rgba8(255, 255, 255) : rgba8(0, 0, 0),
+             1.5f * f.k);
+    pic.keep_clear.push_back({c.x - r, c.y - r, 2 * r, 2 * r});
+    pic.label(c, point_name('P', sel.i, sel.j, so), f.light ? rgba8(0, 0, 0) : rgba8(255, 255, 255),
+              10)
+        .plate = f.light ? rgba8(255, 255, 255, 210) : rgba8(20, 22, 28, 200);
+    report_point(name + "/disk", c.x, c.y);
+}
+
+// The axes' names and the view's name, inside the frame.
+void draw_plane_names(Picture& pic, const Rect& canvas, const PlaneFrame& f, int plane) {
+    const char letters[3] = {'x', 'y', 'z'};
+    const Rgba8 text = f.light ? rgba8(0, 0, 0) : rgba8(230, 230, 230);
+    const float pad_px = 4 * f.k;
+    pic.fixed_label({canvas.x + canvas.w - pad_px, canvas.y + canvas.h - pad_px},
+                    std::string(1, letters[f.ax.a]), text, LabelAlign::bottom_right);
+    pic.fixed_label({canvas.x + pad_px, canvas.y + pad_px}, std::string(1, letters[f.ax.b]), text,
+                    LabelAlign::top_left);
+    static const char* const titles[3] = {"xy (top)", "xz (front)", "yz (side)"};
+    pic.fixed_label({canvas.x + canvas.w / 2, canvas.y + pad_px}, titles[plane],
+                    f.light ? rgba8(90, 90, 90) : rgba8(150, 150, 160), LabelAlign::top_center, 90);
+}
+
 } // namespace
 
 void draw_plane_view(AppContext& ctx, int plane, const Rect& canvas) {
@@ -76,7 +208,7 @@ void draw_plane_view(AppContext& ctx, int plane, const Rect& canvas) {
     const float k = ctx.ui.scale();
     const bool light = ctx.ui.presentation;
     const std::string name = std::string("plane/") + ax.name;
-    PlaneDrag& pd = ctx.ui.plane_drag;
+    const PlaneDrag& pd = ctx.ui.plane_drag;
     const int drag_id = 10 + plane; // the Control point panel's canvases use 0..2
 
     ImGui::SetCursorScreenPos(ImVec2(canvas.x, canvas.y));
@@ -91,133 +223,19 @@ void draw_plane_view(AppContext& ctx, int plane, const Rect& canvas) {
     const double span = std::max(hi.x - lo.x, hi.y - lo.y);
     const glm::dvec2 pad(std::max(span * 0.15, 0.5));
     const PlaneMap fitted = fit_plane(canvas, lo - pad, hi + pad, 10 * k);
-    const PlaneMap map = pd.plane == drag_id ? pd.frozen : view_map(cv, fitted);
-    report_fact(name + "/units_per_px", map.units_per_px);
+    const PlaneFrame f{ax, pd.plane == drag_id ? pd.frozen : view_map(cv, fitted), k, light, 7 * k};
+    report_fact(name + "/units_per_px", f.map.units_per_px);
 
     const ImVec2 m = ImGui::GetIO().MousePos;
-    const glm::dvec2 mouse(m.x, m.y);
-    const float disk_r = 7 * k;
-    auto px = [&](const glm::dvec3& p) { return plane_to_pixel(map, {p[ax.a], p[ax.b]}); };
-    const bool left = ImGui::IsMouseDown(ImGuiMouseButton_Left);
-    if (ImGui::IsItemActivated() && left) {
-        // The dot under the pointer (the selected point first) is selected and held.
-        const std::vector<Dot> dots = dots_of(ctx.doc);
-        const doc::Selection& sel = ctx.doc.view.selection;
-        std::optional<Dot> hit;
-        double best = disk_r * 1.6;
-        for (const Dot& d : dots) {
-            const bool selected = d.object == sel.object && d.i == sel.i && d.j == sel.j;
-            const double dist = glm::length(px(d.position) - mouse) - (selected ? disk_r : 0);
-            if (dist <= best) {
-                best = dist;
-                hit = d;
-            }
-        }
-        if (hit) {
-            ctx.doc.view.selection = {hit->object, hit->i, hit->j};
-            pd.plane = drag_id;
-            pd.frozen = map;
-            pd.grab = mouse - px(hit->position);
-            ctx.seal();
-        }
-    }
-    if (ImGui::IsItemActive() && pd.plane == drag_id && left) {
-        const doc::Selection sel = ctx.doc.view.selection;
-        if (const doc::Object* o = ctx.doc.find(sel.object)) {
-            const ControlNet net = control_net_of(*o);
-            const int q = net.find(sel.i, sel.j);
-            if (q >= 0) {
-                const glm::dvec3 old = net.points[static_cast<std::size_t>(q)];
-                const glm::dvec2 ab = pixel_to_plane(pd.frozen, mouse - pd.grab);
-                glm::dvec3 p = old;
-                p[ax.a] = ab.x;
-                p[ax.b] = ab.y;
-                if (p != old) ctx.execute(move_command(*o, sel.i, sel.j, p));
-            }
-        }
-    }
-    if (pd.plane == drag_id && (!ImGui::IsItemActive() || !left)) {
-        pd.plane = -1;
-        ctx.seal();
-    }
-    if (ImGui::IsItemHovered() && pd.plane != drag_id)
-        ImGui::SetTooltip("Drag a point to move it in %s; wheel: zoom, right-drag: pan, F: fit",
-                          ax.name);
+    plane_drag(ctx, f, drag_id, glm::dvec2(m.x, m.y));
 
     // The drawing, of the document as it is now.
-    const doc::Colors& col = ctx.doc.colors;
-    Picture pic;
-    pic.view = name;
-    pic.frame = canvas;
-    pic.background = light ? rgba8(250, 250, 250) : rgba8(26, 28, 34);
-    pic.border = light ? rgba8(0, 0, 0) : rgba8(110, 115, 130);
-    pic.border_width = 1 * k;
+    Picture pic = plane_picture(name, canvas, light, k);
     pic.style.offset = 7 * k;
-    auto fv = [](const glm::dvec2& p) { return glm::vec2(p); };
-    // The axes through the origin.
-    const glm::dvec2 o = plane_to_pixel(map, {0, 0});
-    const Rgba8 axis = light ? rgba8(150, 150, 150) : rgba8(80, 84, 96);
-    pic.line({canvas.x, static_cast<float>(o.y)}, {canvas.x + canvas.w, static_cast<float>(o.y)},
-             axis, 1 * k);
-    pic.line({static_cast<float>(o.x), canvas.y}, {static_cast<float>(o.x), canvas.y + canvas.h},
-             axis, 1 * k);
-    const doc::Selection& sel = ctx.doc.view.selection;
-    for (const doc::Object& obj : ctx.doc.objects) {
-        if (!obj.visible) continue;
-        const bool chosen = obj.id == sel.object;
-        const Rgba8 wire = rgba(chosen ? col.selected_surface : col.surface, chosen ? 1.f : 0.75f);
-        for (const Polyline3& line : object_wire(obj, 40)) {
-            std::vector<glm::vec2> pts;
-            for (const glm::dvec3& p : line) pts.push_back(fv(px(p)));
-            pic.polyline(std::move(pts), wire, (chosen ? 1.6f : 1.1f) * k);
-        }
-        if (!doc::display_of(ctx.doc.view, obj.id).control_net) continue;
-        const ControlNet net = control_net_of(obj);
-        for (const std::vector<int>& l : net.lines) {
-            std::vector<glm::vec2> pts;
-            for (int q : l) pts.push_back(fv(px(net.points[static_cast<std::size_t>(q)])));
-            pic.polyline(std::move(pts), rgba(col.control_net, chosen ? 0.8f : 0.4f), 1 * k);
-        }
-    }
-    const std::vector<Dot> dots = dots_of(ctx.doc);
-    for (const Dot& d : dots) {
-        const bool selected = d.object == sel.object && d.i == sel.i && d.j == sel.j;
-        if (selected) continue;
-        const glm::vec2 c = fv(px(d.position));
-        pic.disk(c, 3.5f * k, rgba(col.control_points, 0.9f),
-                 light ? rgba8(0, 0, 0, 160) : rgba8(0, 0, 0, 0), 1);
-        if (d.object == sel.object && doc::display_of(ctx.doc.view, d.object).point_ids)
-            pic.label(c, point_name('P', d.i, d.j, ctx.doc.find(d.object)),
-                      light ? rgba8(40, 40, 40) : rgba8(220, 220, 220), 0);
-    }
-    if (const doc::Object* so = ctx.doc.find(sel.object);
-        so && so->visible && sel.has_point() &&
-        doc::display_of(ctx.doc.view, so->id).control_points) {
-        const ControlNet net = control_net_of(*so);
-        if (const int q = net.find(sel.i, sel.j); q >= 0) {
-            const glm::dvec3 p = net.points[static_cast<std::size_t>(q)];
-            const glm::vec2 c = fv(px(p));
-            const bool hot = pd.plane == drag_id || ImGui::IsItemHovered();
-            pic.disk(c, disk_r, rgba(col.selected_point),
-                     hot ? rgba8(255, 255, 255) : rgba8(0, 0, 0), 1.5f * k);
-            pic.keep_clear.push_back({c.x - disk_r, c.y - disk_r, 2 * disk_r, 2 * disk_r});
-            pic.label(c, point_name('P', sel.i, sel.j, so),
-                      light ? rgba8(0, 0, 0) : rgba8(255, 255, 255), 10)
-                .plate = light ? rgba8(255, 255, 255, 210) : rgba8(20, 22, 28, 200);
-            report_point(name + "/disk", c.x, c.y);
-        }
-    }
-    // Axis names and the view's name, inside the frame.
-    const char letters[3] = {'x', 'y', 'z'};
-    const Rgba8 text = light ? rgba8(0, 0, 0) : rgba8(230, 230, 230);
-    const float pad_px = 4 * k;
-    pic.fixed_label({canvas.x + canvas.w - pad_px, canvas.y + canvas.h - pad_px},
-                    std::string(1, letters[ax.a]), text, LabelAlign::bottom_right);
-    pic.fixed_label({canvas.x + pad_px, canvas.y + pad_px}, std::string(1, letters[ax.b]), text,
-                    LabelAlign::top_left);
-    static const char* const titles[3] = {"xy (top)", "xz (front)", "yz (side)"};
-    pic.fixed_label({canvas.x + canvas.w / 2, canvas.y + pad_px}, titles[plane],
-                    light ? rgba8(90, 90, 90) : rgba8(150, 150, 160), LabelAlign::top_center, 90);
+    plane_origin_axes(pic, f.map, canvas, light, 1 * k);
+    draw_plane_wires(pic, ctx.doc, f);
+    draw_plane_dots(pic, ctx.doc, f, pd.plane == drag_id || ImGui::IsItemHovered(), name);
+    draw_plane_names(pic, canvas, f, plane);
     draw_picture(pic);
 }
 

@@ -6,8 +6,10 @@
 #include "core/geom/knots.hpp"
 #include "core/geom/status.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/panels/stage_controls.hpp"
 #include "ui/theme.hpp"
 #include "ui/view/doc_access.hpp"
+#include "ui/view/triangle_domain.hpp"
 
 namespace isoparm::ui {
 
@@ -76,6 +78,21 @@ void no_surface_text(AppContext& ctx) {
     text_wrapped(ctx.doc.objects.empty() ? "No surface. Use Surface > New Surface... to create one."
                                          : "No surface selected. Select one in the Objects tab, "
                                            "or use Surface > New Surface... to create one.");
+}
+
+const geom::Surface* teaching_panel_surface(AppContext& ctx, StageView view,
+                                            TrianglePanel triangle_panel, const doc::Object** obj) {
+    note_hovered_view(ctx, view);
+    // A selected triangular patch has its own version of the panel (Farin ch. 17).
+    const doc::Object* triangle = nullptr;
+    if (const geom::TrianglePatch* t = selected_triangle(ctx.doc, &triangle)) {
+        triangle_panel(ctx, *triangle, *t);
+        return nullptr;
+    }
+    const geom::Surface* s =
+        selected_non_surface(ctx.doc) ? nullptr : current_surface(ctx.doc, obj);
+    if (!s) no_surface_text(ctx);
+    return s;
 }
 
 } // namespace isoparm::ui

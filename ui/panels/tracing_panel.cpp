@@ -255,23 +255,86 @@ void tracing_fields(AppContext& ctx, const doc::Object& obj, const geom::Surface
     if (!patches.empty()) continuity_controls(ctx, obj);
 }
 
+std::string tracing_title(const doc::Object& obj, const geom::Surface& s,
+                          const std::vector<const doc::Object*>& patches) {
+    std::string title = obj.name + "  (" + geom::name_of(s.type) + ", degree " +
+                        std::to_string(s.degree_u) + " x " + std::to_string(s.degree_v) + ")";
+    if (!patches.empty())
+        title +=
+            " - patch " +
+            std::to_string(std::find(patches.begin(), patches.end(), &obj) - patches.begin() + 1) +
+            " of " + std::to_string(patches.size());
+    return title;
+}
+
+void title_line(AppContext& ctx, const std::string& title) {
+    const float room = ImGui::GetContentRegionAvail().x - ImGui::GetFrameHeight() -
+                       ImGui::GetStyle().ItemSpacing.x;
+    const std::string shown = shortened(title, room, imgui_measure());
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted(shown.c_str());
+    if (shown != title && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", title.c_str());
+    stage_button(ctx, StageView::tracing);
+}
+
+// The square's side in the room left: beside the fields on the stage, above them elsewhere.
+float square_side(const AppContext& ctx, bool staged, const ImVec2& avail, float label_w,
+                  float label_h, const ActionNote* note, bool rational) {
+    const float k = ctx.ui.scale();
+    // On the stage the fields stand beside the square, which takes the height.
+    if (staged)
+        return std::max(std::min(avail.y - label_h - 8 * k, (avail.x - label_w) * 0.68f), 60.f * k);
+    // The note's wrapped height is kept free below the square so it is seen without
+    // scrolling.
+    const float note_h = note ? ImGui::CalcTextSize(note->text.c_str(), nullptr, false, avail.x).y +
+                                    ImGui::GetStyle().ItemSpacing.y
+                              : 0.f;
+    const float fields_h = ImGui::GetFrameHeightWithSpacing() * (rational ? 3 : 2) +
+                           ImGui::GetTextLineHeightWithSpacing() * 3 + note_h;
+    return std::max(std::min(avail.x - label_w - 12 * k, avail.y - label_h - fields_h), 60.f * k);
+}
+
+// The square's picture (knot lines and ticks, the indicator, weights and the denominator),
+// drawn; returns it for the knot handles.
+TracingPicture draw_square(AppContext& ctx, const doc::Object& obj, const geom::Surface& s,
+                           const Rect& canvas, const Rect& sq, float label_w, float label_h) {
+    const float k = ctx.ui.scale();
+    const bool rational = geom::is_rational(s.type);
+    TracingInput in;
+    in.canvas = canvas;
+    in.square = sq;
+    in.label_w = label_w;
+    in.label_h = label_h;
+    in.scale = k;
+    in.line_height = ImGui::GetTextLineHeight();
+    in.colors = tracing_colors(ctx);
+    in.weights = rational && ctx.ui.show_weights;
+    if (rational && ctx.ui.show_denominator) {
+        ctx.ui.denominator.update(s);
+        in.denominator = &ctx.ui.denominator;
+        report_fact("tracing/zero_set_segments",
+                    static_cast<double>(ctx.ui.denominator.zero_set().size()));
+    }
+    const KnotDrag& kd = ctx.ui.knot_drag;
+    if (kd.active && kd.object == obj.id) in.held = std::pair{kd.dir, kd.first};
+    const TracingPicture drawn = tracing_picture(ctx.doc, obj, in);
+    if (in.weights) {
+        int weights = 0;
+        for (const LabelRequest& r : drawn.picture.labels)
+            weights += r.priority == 20 || r.priority == 5;
+        report_fact("tracing/weight_labels", weights);
+    }
+    draw_picture(drawn.picture);
+    return drawn;
+}
+
 } // namespace
 
 void draw_tracing_panel(AppContext& ctx) {
-    note_hovered_view(ctx, StageView::tracing);
-    // A selected triangular patch has its own version of the panel (Farin ch. 17).
-    const doc::Object* triangle = nullptr;
-    if (const geom::TrianglePatch* t = selected_triangle(ctx.doc, &triangle)) {
-        draw_triangle_tracing(ctx, *triangle, *t);
-        return;
-    }
     const doc::Object* obj = nullptr;
     const geom::Surface* s =
-        selected_non_surface(ctx.doc) ? nullptr : current_surface(ctx.doc, &obj);
-    if (!s) {
-        no_surface_text(ctx);
-        return;
-    }
+        teaching_panel_surface(ctx, StageView::tracing, draw_triangle_tracing, &obj);
+    if (!s) return;
     const float k = ctx.ui.scale();
     const bool staged = on_stage(ctx, StageView::tracing);
     // Subpatches share the original domain: the square shows all of it.
@@ -280,22 +343,8 @@ void draw_tracing_panel(AppContext& ctx) {
     const glm::dvec2 uv = indicator_params(ctx.doc, *obj);
     // The name line, cut with its whole text in a tooltip where the column is narrow; on the
     // stage it heads the column beside the square, which then takes the whole height.
-    std::string title = obj->name + "  (" + geom::name_of(s->type) + ", degree " +
-                        std::to_string(s->degree_u) + " x " + std::to_string(s->degree_v) + ")";
-    if (!patches.empty())
-        title +=
-            " - patch " +
-            std::to_string(std::find(patches.begin(), patches.end(), obj) - patches.begin() + 1) +
-            " of " + std::to_string(patches.size());
-    if (!staged) {
-        const float room = ImGui::GetContentRegionAvail().x - ImGui::GetFrameHeight() -
-                           ImGui::GetStyle().ItemSpacing.x;
-        const std::string shown = shortened(title, room, imgui_measure());
-        ImGui::AlignTextToFramePadding();
-        ImGui::TextUnformatted(shown.c_str());
-        if (shown != title && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", title.c_str());
-        stage_button(ctx, StageView::tracing);
-    }
+    const std::string title = tracing_title(*obj, *s, patches);
+    if (!staged) title_line(ctx, title);
 
     // Room for the v labels on the left and the u labels below the square.
     // (Two lines of labels below: a knot's value and its multiplicity, each with the label
@@ -305,22 +354,7 @@ void draw_tracing_panel(AppContext& ctx) {
     const ActionNote* note = current_action_note(ctx);
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     const bool rational = geom::is_rational(s->type);
-    float side = 0;
-    if (staged) {
-        // On the stage the fields stand beside the square, which takes the height.
-        side = std::max(std::min(avail.y - label_h - 8 * k, (avail.x - label_w) * 0.68f), 60.f * k);
-    } else {
-        // The note's wrapped height is kept free below the square so it is seen without
-        // scrolling.
-        const float note_h =
-            note ? ImGui::CalcTextSize(note->text.c_str(), nullptr, false, avail.x).y +
-                       ImGui::GetStyle().ItemSpacing.y
-                 : 0.f;
-        const float fields_h = ImGui::GetFrameHeightWithSpacing() * (rational ? 3 : 2) +
-                               ImGui::GetTextLineHeightWithSpacing() * 3 + note_h;
-        side =
-            std::max(std::min(avail.x - label_w - 12 * k, avail.y - label_h - fields_h), 60.f * k);
-    }
+    const float side = square_side(ctx, staged, avail, label_w, label_h, note, rational);
     const ImVec2 cur = ImGui::GetCursorScreenPos();
     const Rect canvas{cur.x + label_w, cur.y + 6 * k, side, side};
     // The square is one canvas: press anywhere to move the indicator there, then drag. On the
@@ -337,31 +371,7 @@ void draw_tracing_panel(AppContext& ctx) {
     ctx.ui.indicator_drag = ImGui::IsItemActive();
 
     // The drawing (ui/view/tracing_picture: the same Picture a figure of the view draws).
-    TracingInput in;
-    in.canvas = canvas;
-    in.square = sq;
-    in.label_w = label_w;
-    in.label_h = label_h;
-    in.scale = k;
-    in.line_height = ImGui::GetTextLineHeight();
-    in.colors = tracing_colors(ctx);
-    in.weights = rational && ctx.ui.show_weights;
-    if (rational && ctx.ui.show_denominator) {
-        ctx.ui.denominator.update(*s);
-        in.denominator = &ctx.ui.denominator;
-        report_fact("tracing/zero_set_segments",
-                    static_cast<double>(ctx.ui.denominator.zero_set().size()));
-    }
-    const KnotDrag& kd = ctx.ui.knot_drag;
-    if (kd.active && kd.object == obj->id) in.held = std::pair{kd.dir, kd.first};
-    const TracingPicture drawn = tracing_picture(ctx.doc, *obj, in);
-    if (in.weights) {
-        int weights = 0;
-        for (const LabelRequest& r : drawn.picture.labels)
-            weights += r.priority == 20 || r.priority == 5;
-        report_fact("tracing/weight_labels", weights);
-    }
-    draw_picture(drawn.picture);
+    const TracingPicture drawn = draw_square(ctx, *obj, *s, canvas, sq, label_w, label_h);
     const std::vector<KnotTick>& tu = drawn.ticks_u;
     const std::vector<KnotTick>& tv = drawn.ticks_v;
     const std::vector<double>& px_u = drawn.px_u;

@@ -257,6 +257,16 @@ struct Renderer::Impl {
         return m;
     }
 
+    void draw_shaded(const SceneView& view, const std::vector<SurfaceDraw>& surfaces,
+                     const std::vector<MeshEntry*>& entries, const glm::mat4& vp,
+                     const glm::mat4& vmat, double aspect);
+    void draw_wires(const std::vector<SurfaceDraw>& surfaces,
+                    const std::vector<MeshEntry*>& entries, const glm::mat4& vp,
+                    const float (&viewport)[2]);
+    GLint draw_overlay_lines(const Overlay& overlay);
+    void draw_points(const Overlay& overlay, GLint point_base, const glm::mat4& vp,
+                     const float (&viewport)[2]);
+
     void prune() {
         for (auto it = meshes.begin(); it != meshes.end();) {
             if (!it->second.used) {
@@ -291,6 +301,125 @@ void Renderer::copy_to(unsigned fbo, int x, int y) const {
 
 unsigned Renderer::texture() const {
     return impl_->target.texture();
+}
+
+// Pass 1: shaded surfaces, pushed back a little so lines on them stay visible.
+void Renderer::Impl::draw_shaded(const SceneView& view, const std::vector<SurfaceDraw>& surfaces,
+                                 const std::vector<MeshEntry*>& entries, const glm::mat4& vp,
+                                 const glm::mat4& vmat, double aspect) {
+    glUseProgram(mesh.id());
+    glUniformMatrix4fv(mesh.uniform("u_view_proj"), 1, GL_FALSE, glm::value_ptr(vp));
+    glUniformMatrix4fv(mesh.uniform("u_view"), 1, GL_FALSE, glm::value_ptr(vmat));
+    set_analysis_uniforms(mesh, view.analysis);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.0f, 1.0f);
+    const glm::dvec3 eye = camera_eye(view.camera);
+    const double near_reach = near_plane_reach(view.camera, aspect);
+    for (std::size_t k = 0; k < surfaces.size(); ++k) {
+        if (!surfaces[k].shaded) continue;
+        const glm::vec4& c = surfaces[k].fill;
+        glUniform4f(mesh.uniform("u_color"), c.r, c.g, c.b, c.a);
+        // Counter-clockwise is OpenGL's front face (never changed here).
+        const HiddenFaces hidden = hidden_faces(surfaces[k], eye, near_reach);
+        if (hidden == HiddenFaces::none) {
+            glDisable(GL_CULL_FACE);
+        } else {
+            glEnable(GL_CULL_FACE);
+            glCullFace(hidden == HiddenFaces::clockwise ? GL_BACK : GL_FRONT);
+        }
+        glBindVertexArray(entries[k]->tri_vao);
+        glDrawElements(GL_TRIANGLES, entries[k]->tri_count, GL_UNSIGNED_INT, nullptr);
+    }
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+}
+
+// Pass 2: wireframes.
+void Renderer::Impl::draw_wires(const std::vector<SurfaceDraw>& surfaces,
+                                const std::vector<MeshEntry*>& entries, const glm::mat4& vp,
+                                const float (&viewport)[2]) {
+    glUseProgram(line.id());
+    glUniformMatrix4fv(line.uniform("u_view_proj"), 1, GL_FALSE, glm::value_ptr(vp));
+    glUniform2fv(line.uniform("u_viewport"), 1, viewport);
+    glUniform1f(line.uniform("u_depth_bias"), 0.0f);
+    glUniform1f(line.uniform("u_alpha"), 1.0f);
+    for (std::size_t k = 0; k < surfaces.size(); ++k) {
+        if (!surfaces[k].wireframe) continue;
+        MeshEntry& m = *entries[k];
+        if (m.wire_stale && m.source) {
+            m.wire.fill(*m.source, m.wire_pairs);
+            m.wire_stale = false;
+        }
+        const glm::vec4& c = surfaces[k].wire;
+        glUniform1f(line.uniform("u_width"), surfaces[k].wire_width);
+        glVertexAttrib4f(attrib_second, c.r, c.g, c.b, c.a); // both ends' constant colour
+        glVertexAttrib4f(attrib_end_color, c.r, c.g, c.b, c.a);
+        m.wire.draw();
+    }
+}
+
+// Pass 3: overlay lines; hidden parts first (faint), then the visible parts. Uploads the
+// points too; returns where they start in the stream.
+GLint Renderer::Impl::draw_overlay_lines(const Overlay& overlay) {
+    std::vector<OverlayVertex> all;
+    std::vector<std::pair<GLint, GLsizei>> ranges;
+    for (const LineBatch& b : overlay.lines) {
+        ranges.emplace_back(static_cast<GLint>(all.size()),
+                            static_cast<GLsizei>(b.vertices.size()));
+        all.insert(all.end(), b.vertices.begin(), b.vertices.end());
+    }
+    const GLint point_base = static_cast<GLint>(all.size());
+    for (const PointBatch& b : overlay.points)
+        all.insert(all.end(), b.points.begin(), b.points.end());
+    stream.upload(all);
+    glBindVertexArray(stream.vao);
+    glDepthMask(GL_FALSE);
+    glUniform1f(line.uniform("u_depth_bias"), 0.0005f);
+    for (std::size_t k = 0; k < overlay.lines.size(); ++k) {
+        const LineBatch& b = overlay.lines[k];
+        if (b.vertices.empty()) continue;
+        glUniform1f(line.uniform("u_width"), b.width_px);
+        stream.segments_from(ranges[k].first);
+        if (b.faint_when_hidden) {
+            glDepthFunc(GL_GREATER);
+            glUniform1f(line.uniform("u_alpha"), 0.28f);
+            draw_quads(ranges[k].second / 2);
+        }
+        glDepthFunc(GL_LEQUAL);
+        glUniform1f(line.uniform("u_alpha"), 1.0f);
+        draw_quads(ranges[k].second / 2);
+    }
+    return point_base;
+}
+
+// Pass 4: points, the same way (or on top of everything).
+void Renderer::Impl::draw_points(const Overlay& overlay, GLint point_base, const glm::mat4& vp,
+                                 const float (&viewport)[2]) {
+    glUseProgram(point.id());
+    glUniformMatrix4fv(point.uniform("u_view_proj"), 1, GL_FALSE, glm::value_ptr(vp));
+    glUniform2fv(point.uniform("u_viewport"), 1, viewport);
+    GLint first = point_base;
+    for (const PointBatch& b : overlay.points) {
+        const GLsizei count = static_cast<GLsizei>(b.points.size());
+        if (count == 0) continue;
+        glUniform1f(point.uniform("u_size"), b.size_px);
+        glUniform1i(point.uniform("u_sphere"), b.sphere ? 1 : 0);
+        stream.points_from(first);
+        if (b.on_top) {
+            glDisable(GL_DEPTH_TEST);
+            glUniform1f(point.uniform("u_alpha"), 1.0f);
+            draw_quads(count);
+            glEnable(GL_DEPTH_TEST);
+        } else {
+            glDepthFunc(GL_GREATER);
+            glUniform1f(point.uniform("u_alpha"), 0.35f);
+            draw_quads(count);
+            glDepthFunc(GL_LEQUAL);
+            glUniform1f(point.uniform("u_alpha"), 1.0f);
+            draw_quads(count);
+        }
+        first += count;
+    }
 }
 
 void Renderer::render(const SceneView& view, const std::vector<SurfaceDraw>& surfaces,
@@ -336,109 +465,10 @@ void Renderer::render(const SceneView& view, const std::vector<SurfaceDraw>& sur
     // Keep destination alpha at 1 so the texture stays opaque inside ImGui.
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
 
-    // Pass 1: shaded surfaces, pushed back a little so lines on them stay visible.
-    glUseProgram(im.mesh.id());
-    glUniformMatrix4fv(im.mesh.uniform("u_view_proj"), 1, GL_FALSE, glm::value_ptr(vp));
-    glUniformMatrix4fv(im.mesh.uniform("u_view"), 1, GL_FALSE, glm::value_ptr(vmat));
-    set_analysis_uniforms(im.mesh, view.analysis);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(1.0f, 1.0f);
-    const glm::dvec3 eye = camera_eye(view.camera);
-    const double near_reach = near_plane_reach(view.camera, aspect);
-    for (std::size_t k = 0; k < surfaces.size(); ++k) {
-        if (!surfaces[k].shaded) continue;
-        const glm::vec4& c = surfaces[k].fill;
-        glUniform4f(im.mesh.uniform("u_color"), c.r, c.g, c.b, c.a);
-        // Counter-clockwise is OpenGL's front face (never changed here).
-        const HiddenFaces hidden = hidden_faces(surfaces[k], eye, near_reach);
-        if (hidden == HiddenFaces::none) {
-            glDisable(GL_CULL_FACE);
-        } else {
-            glEnable(GL_CULL_FACE);
-            glCullFace(hidden == HiddenFaces::clockwise ? GL_BACK : GL_FRONT);
-        }
-        glBindVertexArray(entries[k]->tri_vao);
-        glDrawElements(GL_TRIANGLES, entries[k]->tri_count, GL_UNSIGNED_INT, nullptr);
-    }
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_POLYGON_OFFSET_FILL);
-
-    // Pass 2: wireframes.
-    glUseProgram(im.line.id());
-    glUniformMatrix4fv(im.line.uniform("u_view_proj"), 1, GL_FALSE, glm::value_ptr(vp));
-    glUniform2fv(im.line.uniform("u_viewport"), 1, viewport);
-    glUniform1f(im.line.uniform("u_depth_bias"), 0.0f);
-    glUniform1f(im.line.uniform("u_alpha"), 1.0f);
-    for (std::size_t k = 0; k < surfaces.size(); ++k) {
-        if (!surfaces[k].wireframe) continue;
-        MeshEntry& m = *entries[k];
-        if (m.wire_stale && m.source) {
-            m.wire.fill(*m.source, m.wire_pairs);
-            m.wire_stale = false;
-        }
-        const glm::vec4& c = surfaces[k].wire;
-        glUniform1f(im.line.uniform("u_width"), surfaces[k].wire_width);
-        glVertexAttrib4f(attrib_second, c.r, c.g, c.b, c.a); // both ends' constant colour
-        glVertexAttrib4f(attrib_end_color, c.r, c.g, c.b, c.a);
-        m.wire.draw();
-    }
-
-    // Pass 3: overlay lines; hidden parts first (faint), then the visible parts.
-    std::vector<OverlayVertex> all;
-    std::vector<std::pair<GLint, GLsizei>> ranges;
-    for (const LineBatch& b : overlay.lines) {
-        ranges.emplace_back(static_cast<GLint>(all.size()),
-                            static_cast<GLsizei>(b.vertices.size()));
-        all.insert(all.end(), b.vertices.begin(), b.vertices.end());
-    }
-    const GLint point_base = static_cast<GLint>(all.size());
-    for (const PointBatch& b : overlay.points)
-        all.insert(all.end(), b.points.begin(), b.points.end());
-    im.stream.upload(all);
-    glBindVertexArray(im.stream.vao);
-    glDepthMask(GL_FALSE);
-    glUniform1f(im.line.uniform("u_depth_bias"), 0.0005f);
-    for (std::size_t k = 0; k < overlay.lines.size(); ++k) {
-        const LineBatch& b = overlay.lines[k];
-        if (b.vertices.empty()) continue;
-        glUniform1f(im.line.uniform("u_width"), b.width_px);
-        im.stream.segments_from(ranges[k].first);
-        if (b.faint_when_hidden) {
-            glDepthFunc(GL_GREATER);
-            glUniform1f(im.line.uniform("u_alpha"), 0.28f);
-            draw_quads(ranges[k].second / 2);
-        }
-        glDepthFunc(GL_LEQUAL);
-        glUniform1f(im.line.uniform("u_alpha"), 1.0f);
-        draw_quads(ranges[k].second / 2);
-    }
-
-    // Pass 4: points, the same way (or on top of everything).
-    glUseProgram(im.point.id());
-    glUniformMatrix4fv(im.point.uniform("u_view_proj"), 1, GL_FALSE, glm::value_ptr(vp));
-    glUniform2fv(im.point.uniform("u_viewport"), 1, viewport);
-    GLint first = point_base;
-    for (const PointBatch& b : overlay.points) {
-        const GLsizei count = static_cast<GLsizei>(b.points.size());
-        if (count == 0) continue;
-        glUniform1f(im.point.uniform("u_size"), b.size_px);
-        glUniform1i(im.point.uniform("u_sphere"), b.sphere ? 1 : 0);
-        im.stream.points_from(first);
-        if (b.on_top) {
-            glDisable(GL_DEPTH_TEST);
-            glUniform1f(im.point.uniform("u_alpha"), 1.0f);
-            draw_quads(count);
-            glEnable(GL_DEPTH_TEST);
-        } else {
-            glDepthFunc(GL_GREATER);
-            glUniform1f(im.point.uniform("u_alpha"), 0.35f);
-            draw_quads(count);
-            glDepthFunc(GL_LEQUAL);
-            glUniform1f(im.point.uniform("u_alpha"), 1.0f);
-            draw_quads(count);
-        }
-        first += count;
-    }
+    im.draw_shaded(view, surfaces, entries, vp, vmat, aspect);
+    im.draw_wires(surfaces, entries, vp, viewport);
+    const GLint point_base = im.draw_overlay_lines(overlay);
+    im.draw_points(overlay, point_base, vp, viewport);
 
     glBindVertexArray(0);
     glUseProgram(0);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/common.hpp>
+#include <iterator>
 #include <limits>
 #include <vector>
 
@@ -148,24 +149,25 @@ glm::vec3 analysis_colour(const AnalysisView& view, double value) {
     return t < 0.5f ? glm::mix(a, b, t * 2) : glm::mix(b, c, t * 2 - 1);
 }
 
+namespace {
+
+// The colour bar's title of each kind ("" when off), in declaration order.
+constexpr const char* analysis_titles[] = {
+    "",
+    "K (Gaussian curvature)",
+    "H (mean curvature)",
+    "k1 (largest principal curvature)",
+    "k2 (smallest principal curvature)",
+    "zebra stripes",
+    "isophotes",
+};
+static_assert(std::size(analysis_titles) == static_cast<std::size_t>(AnalysisKind::isophote) + 1);
+
+} // namespace
+
 std::string analysis_title(AnalysisKind kind) {
-    switch (kind) {
-    case AnalysisKind::gaussian:
-        return "K (Gaussian curvature)";
-    case AnalysisKind::mean:
-        return "H (mean curvature)";
-    case AnalysisKind::kmax:
-        return "k1 (largest principal curvature)";
-    case AnalysisKind::kmin:
-        return "k2 (smallest principal curvature)";
-    case AnalysisKind::zebra:
-        return "zebra stripes";
-    case AnalysisKind::isophote:
-        return "isophotes";
-    case AnalysisKind::off:
-        break;
-    }
-    return "";
+    const auto k = static_cast<std::size_t>(kind);
+    return k < std::size(analysis_titles) ? analysis_titles[k] : "";
 }
 
 } // namespace isoparm::ui

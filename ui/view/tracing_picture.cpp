@@ -53,6 +53,81 @@ void weight_labels(Picture& pic, const geom::Surface& s, const geom::ParamRect& 
     }
 }
 
+// The knot ticks beside the square (a held knot's highlighted) with their values and, where
+// they say something, their multiplicities.
+void knot_tick_labels(Picture& pic, const TracingPicture& out, const geom::Surface& s,
+                      const TracingInput& in) {
+    const float k = in.scale;
+    const TracingColors& c = in.colors;
+    const Rect& canvas = in.canvas;
+    const glm::vec2 a(canvas.x, canvas.y), b(canvas.x + canvas.w, canvas.y + canvas.h);
+    const float tick = 7 * k;
+    const std::vector<KnotTick>& tu = out.ticks_u;
+    const std::vector<KnotTick>& tv = out.ticks_v;
+    auto held = [&](geom::Dir dir, const KnotTick& t) {
+        return in.held && in.held->first == dir && in.held->second == t.first_index;
+    };
+    // The domain's ends and a held knot matter most: the placer drops an interior value that
+    // would merge with them ("0.75" and "1" read as "0.751").
+    auto tick_priority = [](const std::vector<KnotTick>& ts, std::size_t n, bool h) {
+        return h ? 200 : (n == 0 || n + 1 == ts.size()) ? 150 : 100;
+    };
+    const float lh = in.line_height;
+    for (std::size_t n = 0; n < tu.size(); ++n) {
+        const float x = static_cast<float>(out.px_u[n]);
+        if (x < canvas.x - 0.5f || x > canvas.x + canvas.w + 0.5f) continue;
+        const bool h = held(geom::Dir::u, tu[n]);
+        pic.line({x, b.y}, {x, b.y + tick}, h ? c.indicator : c.tick, (h ? 4 : 2) * k);
+        const int pr = tick_priority(tu, n, h);
+        pic.fixed_label({x, b.y + tick + 1}, geom::format_short(tu[n].value), c.text,
+                        LabelAlign::top_center, pr)
+            .tooltip = "u knot " + geom::format_number(tu[n].value);
+        // Interior multiplicities (a clamped end's p + 1 says nothing new; the knot vector
+        // under the square lists it).
+        if (tu[n].multiplicity > 1 && (tu[n].interior || tu[n].multiplicity != s.degree_u + 1))
+            pic.fixed_label({x, b.y + tick + 5 + lh}, "x" + std::to_string(tu[n].multiplicity),
+                            c.multiplicity, LabelAlign::top_center, pr - 1);
+    }
+    for (std::size_t n = 0; n < tv.size(); ++n) {
+        const float y = static_cast<float>(out.px_v[n]);
+        if (y < canvas.y - 0.5f || y > canvas.y + canvas.h + 0.5f) continue;
+        const bool h = held(geom::Dir::v, tv[n]);
+        pic.line({a.x - tick, y}, {a.x, y}, h ? c.indicator : c.tick, (h ? 4 : 2) * k);
+        const bool mult =
+            tv[n].multiplicity > 1 && (tv[n].interior || tv[n].multiplicity != s.degree_v + 1);
+        const int pr = tick_priority(tv, n, h);
+        pic.fixed_label({a.x - tick - 3 * k, y}, geom::format_short(tv[n].value), c.text,
+                        mult ? LabelAlign::bottom_right : LabelAlign::center_right, pr)
+            .tooltip = "v knot " + geom::format_number(tv[n].value);
+        if (mult)
+            pic.fixed_label({a.x - tick - 3 * k, y}, "x" + std::to_string(tv[n].multiplicity),
+                            c.multiplicity, LabelAlign::top_right, pr - 1);
+    }
+}
+
+// The ends of the shared domain where the current patch does not reach them.
+void shared_domain_ends(Picture& pic, const geom::ParamRect& own, const geom::ParamRect& dom,
+                        const TracingInput& in) {
+    const float k = in.scale;
+    const TracingColors& c = in.colors;
+    const Rect& sq = in.square;
+    const glm::vec2 a(in.canvas.x, in.canvas.y),
+        b(in.canvas.x + in.canvas.w, in.canvas.y + in.canvas.h);
+    const float tick = 7 * k;
+    if (own.u.lo > dom.u.lo)
+        pic.fixed_label({sq.x, b.y + tick + 1}, geom::format_short(dom.u.lo), c.faint,
+                        LabelAlign::top_center, 90);
+    if (own.u.hi < dom.u.hi)
+        pic.fixed_label({sq.x + sq.w, b.y + tick + 1}, geom::format_short(dom.u.hi), c.faint,
+                        LabelAlign::top_center, 90);
+    if (own.v.lo > dom.v.lo)
+        pic.fixed_label({a.x - tick - 3 * k, sq.y + sq.h}, geom::format_short(dom.v.lo), c.faint,
+                        LabelAlign::center_right, 90);
+    if (own.v.hi < dom.v.hi)
+        pic.fixed_label({a.x - tick - 3 * k, sq.y}, geom::format_short(dom.v.hi), c.faint,
+                        LabelAlign::center_right, 90);
+}
+
 } // namespace
 
 TracingPicture tracing_picture(const doc::Document& d, const doc::Object& obj,
@@ -96,20 +171,11 @@ TracingPicture tracing_picture(const doc::Document& d, const doc::Object& obj,
     out.ticks_v = knot_ticks(s.knots_v, s.degree_v, s.n_v);
     const std::vector<KnotTick>& tu = out.ticks_u;
     const std::vector<KnotTick>& tv = out.ticks_v;
-    const float tick = 7 * k;
     for (const KnotTick& t : tu) out.px_u.push_back(sq.x + normalize_param(dom.u, t.value) * sq.w);
     for (const KnotTick& t : tv)
         out.px_v.push_back(sq.y + (1.0 - normalize_param(dom.v, t.value)) * sq.h);
     const glm::dvec2 own_lo = domain_to_pixel(sq, to_square(own.u.lo, own.v.lo));
     const glm::dvec2 own_hi = domain_to_pixel(sq, to_square(own.u.hi, own.v.hi));
-    auto held = [&](geom::Dir dir, const KnotTick& t) {
-        return in.held && in.held->first == dir && in.held->second == t.first_index;
-    };
-    // The domain's ends and a held knot matter most: the placer drops an interior value that
-    // would merge with them ("0.75" and "1" read as "0.751").
-    auto tick_priority = [](const std::vector<KnotTick>& ts, std::size_t n, bool h) {
-        return h ? 200 : (n == 0 || n + 1 == ts.size()) ? 150 : 100;
-    };
     for (std::size_t n = 0; n < tu.size(); ++n) {
         const float x = static_cast<float>(out.px_u[n]);
         const float w = (1.0f + static_cast<float>(tu[n].multiplicity - 1) * 1.2f) * k;
@@ -125,51 +191,9 @@ TracingPicture tracing_picture(const doc::Document& d, const doc::Object& obj,
                      w);
     }
     pic.end_clip();
-    const float lh = in.line_height;
-    for (std::size_t n = 0; n < tu.size(); ++n) {
-        const float x = static_cast<float>(out.px_u[n]);
-        if (x < canvas.x - 0.5f || x > canvas.x + canvas.w + 0.5f) continue;
-        const bool h = held(geom::Dir::u, tu[n]);
-        pic.line({x, b.y}, {x, b.y + tick}, h ? c.indicator : c.tick, (h ? 4 : 2) * k);
-        const int pr = tick_priority(tu, n, h);
-        pic.fixed_label({x, b.y + tick + 1}, geom::format_short(tu[n].value), c.text,
-                        LabelAlign::top_center, pr)
-            .tooltip = "u knot " + geom::format_number(tu[n].value);
-        // Interior multiplicities (a clamped end's p + 1 says nothing new; the knot vector
-        // under the square lists it).
-        if (tu[n].multiplicity > 1 && (tu[n].interior || tu[n].multiplicity != s.degree_u + 1))
-            pic.fixed_label({x, b.y + tick + 5 + lh}, "x" + std::to_string(tu[n].multiplicity),
-                            c.multiplicity, LabelAlign::top_center, pr - 1);
-    }
-    for (std::size_t n = 0; n < tv.size(); ++n) {
-        const float y = static_cast<float>(out.px_v[n]);
-        if (y < canvas.y - 0.5f || y > canvas.y + canvas.h + 0.5f) continue;
-        const bool h = held(geom::Dir::v, tv[n]);
-        pic.line({a.x - tick, y}, {a.x, y}, h ? c.indicator : c.tick, (h ? 4 : 2) * k);
-        const bool mult =
-            tv[n].multiplicity > 1 && (tv[n].interior || tv[n].multiplicity != s.degree_v + 1);
-        const int pr = tick_priority(tv, n, h);
-        pic.fixed_label({a.x - tick - 3 * k, y}, geom::format_short(tv[n].value), c.text,
-                        mult ? LabelAlign::bottom_right : LabelAlign::center_right, pr)
-            .tooltip = "v knot " + geom::format_number(tv[n].value);
-        if (mult)
-            pic.fixed_label({a.x - tick - 3 * k, y}, "x" + std::to_string(tv[n].multiplicity),
-                            c.multiplicity, LabelAlign::top_right, pr - 1);
-    }
+    knot_tick_labels(pic, out, s, in);
     pic.box(a, b, 0, c.border, 1.5f * k);
-    // The ends of the shared domain where the current patch does not reach them.
-    if (own.u.lo > dom.u.lo)
-        pic.fixed_label({sq.x, b.y + tick + 1}, geom::format_short(dom.u.lo), c.faint,
-                        LabelAlign::top_center, 90);
-    if (own.u.hi < dom.u.hi)
-        pic.fixed_label({sq.x + sq.w, b.y + tick + 1}, geom::format_short(dom.u.hi), c.faint,
-                        LabelAlign::top_center, 90);
-    if (own.v.lo > dom.v.lo)
-        pic.fixed_label({a.x - tick - 3 * k, sq.y + sq.h}, geom::format_short(dom.v.lo), c.faint,
-                        LabelAlign::center_right, 90);
-    if (own.v.hi < dom.v.hi)
-        pic.fixed_label({a.x - tick - 3 * k, sq.y}, geom::format_short(dom.v.hi), c.faint,
-                        LabelAlign::center_right, 90);
+    shared_domain_ends(pic, own, dom, in);
     pic.fixed_label({b.x - 4 * k, b.y - 2 * k}, "u", c.text, LabelAlign::bottom_right, 120);
     pic.fixed_label({a.x + 4 * k, a.y + 2 * k}, "v", c.text, LabelAlign::top_left, 120);
 

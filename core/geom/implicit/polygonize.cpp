@@ -483,10 +483,10 @@ std::size_t drop_degenerate_triangles(Mesh& mesh) {
     return removed;
 }
 
-Expected<Mesh> polygonize(const Program& f, const PolygonizeOptions& options) {
-    if (Status s = check_options(f, options); !s) return s.error();
+namespace {
 
-    // The grid: ceil(extent / cell) cells per axis, the cell shrunk to fit (convention 18).
+// The grid: ceil(extent / cell) cells per axis, the cell shrunk to fit (convention 18).
+Expected<Grid> make_grid(const PolygonizeOptions& options) {
     // Counted in double first so a tiny cell cannot overflow an int before the check.
     double n[3], points = 1.0;
     for (int a = 0; a < 3; ++a) {
@@ -510,30 +510,11 @@ Expected<Mesh> polygonize(const Program& f, const PolygonizeOptions& options) {
     grid.ys = grid_coordinates(options.lo.y, options.hi.y, grid.ny);
     grid.zs = grid_coordinates(options.lo.z, options.hi.z, grid.nz);
 
-    Polygonizer pz(Context{f, options.parameters.data(), grid});
-    pz.progress = &options.progress;
-    pz.max_vertices = options.max_vertices;
-    pz.max_triangles = options.max_triangles;
-    // About eight slabs per chunk, at most 32 chunks: enough to balance two to eight threads.
-    const int chunk_count = std::clamp(grid.nz / 8, 1, 32);
-    pz.planes.resize(chunk_count + 1);
-    pz.chunks.resize(chunk_count);
-    for (int c = 0; c <= chunk_count; ++c)
-        pz.planes[c].layer = static_cast<int>(static_cast<long>(grid.nz) * c / chunk_count);
-    for (int c = 0; c < chunk_count; ++c) {
-        pz.chunks[c].first_slab = pz.planes[c].layer;
-        pz.chunks[c].end_slab = pz.planes[c + 1].layer;
-    }
-    pz.units_total = static_cast<long>(pz.planes.size()) + grid.nz;
+    return grid;
+}
 
-    int threads = options.threads > 0 ? options.threads
-                                      : static_cast<int>(std::thread::hardware_concurrency());
-    threads = std::clamp(threads, 1, chunk_count);
-    {
-        std::vector<std::jthread> helpers;
-        for (int w = 1; w < threads; ++w) helpers.emplace_back([&pz, w] { pz.work(w); });
-        pz.work(0);
-    }
+// Why the threads' work gave no mesh: an exception, a cap passed, a cancel; or nothing.
+Status polygonizer_failure(const Polygonizer& pz, const PolygonizeOptions& options) {
     if (pz.failure) {
         try {
             std::rethrow_exception(pz.failure);
@@ -556,11 +537,14 @@ Expected<Mesh> polygonize(const Program& f, const PolygonizeOptions& options) {
             "/cell");
     }
     if (pz.cancelled) return make_error_nopath(ErrorCode::limit, "polygonization was cancelled");
+    return Ok{};
+}
 
-    // Merge in a fixed order: plane 0, chunk 0, plane 1, chunk 1, ..., the last plane.
+// Merge in a fixed order: plane 0, chunk 0, plane 1, chunk 1, ..., the last plane. The
+// vertices that sit on a zero grid point are listed in `pinned` (point, vertex).
+Expected<Mesh> merge_chunks(Polygonizer& pz, std::vector<std::pair<std::uint64_t, Index>>& pinned) {
     Mesh mesh;
     std::vector<std::size_t> plane_offset(pz.planes.size()), chunk_offset(pz.chunks.size());
-    std::vector<std::pair<std::uint64_t, Index>> pinned;
     auto append = [&](const VertexGroup& g) {
         const std::size_t offset = mesh.positions.size();
         mesh.positions.insert(mesh.positions.end(), g.positions.begin(), g.positions.end());
@@ -598,27 +582,71 @@ Expected<Mesh> polygonize(const Program& f, const PolygonizeOptions& options) {
     pz.chunks.clear();
     pz.planes.clear();
 
-    // Weld the vertices that sit on the same zero grid point, then drop the triangles that
-    // collapsed (they repeat a vertex).
-    if (!pinned.empty()) {
-        std::sort(pinned.begin(), pinned.end());
-        std::vector<Index> remap(mesh.positions.size());
-        for (std::size_t v = 0; v < remap.size(); ++v) remap[v] = static_cast<Index>(v);
-        for (std::size_t s = 0; s < pinned.size();) {
-            std::size_t e = s;
-            while (e < pinned.size() && pinned[e].first == pinned[s].first) ++e;
-            for (std::size_t k = s + 1; k < e; ++k) remap[pinned[k].second] = pinned[s].second;
-            s = e;
-        }
-        for (auto& t : mesh.triangles)
-            for (Index& v : t) v = remap[v];
-        drop_degenerate_triangles(mesh);
+    return mesh;
+}
+
+// Weld the vertices that sit on the same zero grid point, then drop the triangles that
+// collapsed (they repeat a vertex).
+void weld_pinned(Mesh& mesh, std::vector<std::pair<std::uint64_t, Index>>& pinned) {
+    if (pinned.empty()) return;
+    std::sort(pinned.begin(), pinned.end());
+    std::vector<Index> remap(mesh.positions.size());
+    for (std::size_t v = 0; v < remap.size(); ++v) remap[v] = static_cast<Index>(v);
+    for (std::size_t s = 0; s < pinned.size();) {
+        std::size_t e = s;
+        while (e < pinned.size() && pinned[e].first == pinned[s].first) ++e;
+        for (std::size_t k = s + 1; k < e; ++k) remap[pinned[k].second] = pinned[s].second;
+        s = e;
     }
+    for (auto& t : mesh.triangles)
+        for (Index& v : t) v = remap[v];
+    drop_degenerate_triangles(mesh);
+}
+
+} // namespace
+
+Expected<Mesh> polygonize(const Program& f, const PolygonizeOptions& options) {
+    if (Status s = check_options(f, options); !s) return s.error();
+
+    Expected<Grid> made = make_grid(options);
+    if (!made) return made.error();
+    const Grid& grid = *made;
+    Polygonizer pz(Context{f, options.parameters.data(), grid});
+    pz.progress = &options.progress;
+    pz.max_vertices = options.max_vertices;
+    pz.max_triangles = options.max_triangles;
+    // About eight slabs per chunk, at most 32 chunks: enough to balance two to eight threads.
+    const int chunk_count = std::clamp(grid.nz / 8, 1, 32);
+    pz.planes.resize(chunk_count + 1);
+    pz.chunks.resize(chunk_count);
+    for (int c = 0; c <= chunk_count; ++c)
+        pz.planes[c].layer = static_cast<int>(static_cast<long>(grid.nz) * c / chunk_count);
+    for (int c = 0; c < chunk_count; ++c) {
+        pz.chunks[c].first_slab = pz.planes[c].layer;
+        pz.chunks[c].end_slab = pz.planes[c + 1].layer;
+    }
+    pz.units_total = static_cast<long>(pz.planes.size()) + grid.nz;
+
+    int threads = options.threads > 0 ? options.threads
+                                      : static_cast<int>(std::thread::hardware_concurrency());
+    threads = std::clamp(threads, 1, chunk_count);
+    {
+        std::vector<std::jthread> helpers;
+        for (int w = 1; w < threads; ++w) helpers.emplace_back([&pz, w] { pz.work(w); });
+        pz.work(0);
+    }
+    if (Status failed = polygonizer_failure(pz, options); !failed) return failed.error();
+
+    std::vector<std::pair<std::uint64_t, Index>> pinned;
+    Expected<Mesh> merged = merge_chunks(pz, pinned);
+    if (!merged) return merged.error();
+    Mesh& mesh = *merged;
+    weld_pinned(mesh, pinned);
     repair_normals(mesh);
     mesh.exists.assign(mesh.positions.size(), 1);
     if (options.progress && !options.progress(1.0))
         return make_error_nopath(ErrorCode::limit, "polygonization was cancelled");
-    return mesh;
+    return std::move(mesh);
 }
 
 } // namespace isoparm::geom::implicit
