@@ -217,6 +217,14 @@ Expected<std::vector<glm::dvec3>> positions_from_json(const json& v, const std::
 // form does not build.
 template <class Spec> struct Form;
 
+// The object and the direction a command acts along ("id", "direction"), read first.
+template <class Spec> Spec on_direction(Members& m) {
+    Spec s;
+    s.id = m.id("id");
+    s.dir = m.named<geom::Dir>("direction", "direction");
+    return s;
+}
+
 template <> struct Form<AddObjectSpec> {
     static constexpr std::string_view members[]{"object"};
     static AddObjectSpec read(Members& m) {
@@ -291,9 +299,7 @@ template <> struct Form<EditPointSpec> {
 template <> struct Form<MoveKnotSpec> {
     static constexpr std::string_view members[]{"id", "direction", "k", "count", "value"};
     static MoveKnotSpec read(Members& m) {
-        MoveKnotSpec s;
-        s.id = m.id("id");
-        s.dir = m.named<geom::Dir>("direction", "direction");
+        MoveKnotSpec s = on_direction<MoveKnotSpec>(m);
         s.k = m.integer("k");
         s.count = m.integer("count", 1);
         s.value = m.number("value");
@@ -320,9 +326,7 @@ template <> struct Form<TransformSpec> {
 template <> struct Form<InsertKnotSpec> {
     static constexpr std::string_view members[]{"id", "direction", "knot", "times"};
     static InsertKnotSpec read(Members& m) {
-        InsertKnotSpec s;
-        s.id = m.id("id");
-        s.dir = m.named<geom::Dir>("direction", "direction");
+        InsertKnotSpec s = on_direction<InsertKnotSpec>(m);
         s.t = m.number("knot");
         s.times = m.integer("times", 1);
         return s;
@@ -335,9 +339,7 @@ template <> struct Form<InsertKnotSpec> {
 template <> struct Form<ElevateDegreeSpec> {
     static constexpr std::string_view members[]{"id", "direction", "times"};
     static ElevateDegreeSpec read(Members& m) {
-        ElevateDegreeSpec s;
-        s.id = m.id("id");
-        s.dir = m.named<geom::Dir>("direction", "direction");
+        ElevateDegreeSpec s = on_direction<ElevateDegreeSpec>(m);
         s.times = m.integer("times", 1);
         return s;
     }
@@ -345,19 +347,22 @@ template <> struct Form<ElevateDegreeSpec> {
         return {{"id", s.id}, {"direction", geom::name_of(s.dir)}, {"times", s.times}};
     }
 };
-template <> struct Form<SplitSpec> {
-    static constexpr std::string_view members[]{"id", "direction", "param"};
-    static SplitSpec read(Members& m) {
-        SplitSpec s;
-        s.id = m.id("id");
-        s.dir = m.named<geom::Dir>("direction", "direction");
-        s.t = m.number("param");
+// Commands on one object along a direction with one number: split ("param") and
+// reduce_degree ("tolerance").
+template <class Spec, double Spec::*number, const std::string_view& name>
+struct DirectionNumberForm {
+    static constexpr std::string_view members[]{"id", "direction", name};
+    static Spec read(Members& m) {
+        Spec s = on_direction<Spec>(m);
+        s.*number = m.number(name);
         return s;
     }
-    static json write(const SplitSpec& s) {
-        return {{"id", s.id}, {"direction", geom::name_of(s.dir)}, {"param", s.t}};
+    static json write(const Spec& s) {
+        return {{"id", s.id}, {"direction", geom::name_of(s.dir)}, {std::string(name), s.*number}};
     }
 };
+constexpr std::string_view param_member = "param", tolerance_member = "tolerance";
+template <> struct Form<SplitSpec> : DirectionNumberForm<SplitSpec, &SplitSpec::t, param_member> {};
 template <> struct Form<SplitTriangleSpec> {
     static constexpr std::string_view members[]{"id", "param"};
     static SplitTriangleSpec read(Members& m) {
@@ -433,9 +438,7 @@ template <> struct Form<MakeCompatibleSpec> {
 template <> struct Form<RemoveKnotSpec> {
     static constexpr std::string_view members[]{"id", "direction", "knot", "times", "tolerance"};
     static RemoveKnotSpec read(Members& m) {
-        RemoveKnotSpec s;
-        s.id = m.id("id");
-        s.dir = m.named<geom::Dir>("direction", "direction");
+        RemoveKnotSpec s = on_direction<RemoveKnotSpec>(m);
         s.t = m.number("knot");
         s.times = m.integer("times", 1);
         s.tolerance = m.number("tolerance");
@@ -449,25 +452,13 @@ template <> struct Form<RemoveKnotSpec> {
                 {"tolerance", s.tolerance}};
     }
 };
-template <> struct Form<ReduceDegreeSpec> {
-    static constexpr std::string_view members[]{"id", "direction", "tolerance"};
-    static ReduceDegreeSpec read(Members& m) {
-        ReduceDegreeSpec s;
-        s.id = m.id("id");
-        s.dir = m.named<geom::Dir>("direction", "direction");
-        s.tolerance = m.number("tolerance");
-        return s;
-    }
-    static json write(const ReduceDegreeSpec& s) {
-        return {{"id", s.id}, {"direction", geom::name_of(s.dir)}, {"tolerance", s.tolerance}};
-    }
-};
+template <>
+struct Form<ReduceDegreeSpec>
+    : DirectionNumberForm<ReduceDegreeSpec, &ReduceDegreeSpec::tolerance, tolerance_member> {};
 template <> struct Form<SplitKnotSpec> {
     static constexpr std::string_view members[]{"id", "direction", "knot", "delta"};
     static SplitKnotSpec read(Members& m) {
-        SplitKnotSpec s;
-        s.id = m.id("id");
-        s.dir = m.named<geom::Dir>("direction", "direction");
+        SplitKnotSpec s = on_direction<SplitKnotSpec>(m);
         s.t = m.number("knot");
         s.delta = m.optional_number("delta");
         return s;

@@ -90,18 +90,7 @@ geom::Status validate(const CurveObject& c) {
     return geom::validate_curve(g);
 }
 
-std::span<glm::dvec3> control_points(CurveObject& c) {
-    return c.curve.points;
-}
-std::span<const glm::dvec3> control_points(const CurveObject& c) {
-    return c.curve.points;
-}
-std::span<double> control_weights(CurveObject& c) {
-    return c.curve.weights;
-}
-std::span<const double> control_weights(const CurveObject& c) {
-    return c.curve.weights;
-}
+ISOPARM_NET_FACTS(CurveObject, curve)
 bool is_rational(const CurveObject& c) {
     return geom::is_rational(c.curve.type);
 }

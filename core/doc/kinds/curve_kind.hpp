@@ -53,29 +53,6 @@ struct CurveObject {
     static constexpr bool constructed = true; // a recipe builds curves (isocurves)
 };
 
-geom::Expected<CurveObject> read_kind(std::type_identity<CurveObject>, const nlohmann::json& j,
-                                      const std::string& at);
-void kind_to_json(const CurveObject& c, nlohmann::json& out);
-geom::Expected<std::pair<int, int>>
-selected_point_from_json(const CurveObject& c, const nlohmann::json& point, const std::string& at);
-geom::Status validate(const CurveObject& c);
-std::span<glm::dvec3> control_points(CurveObject& c);
-std::span<const glm::dvec3> control_points(const CurveObject& c);
-std::span<double> control_weights(CurveObject& c);
-std::span<const double> control_weights(const CurveObject& c);
-bool is_rational(const CurveObject& c);
-bool has_control_point(const CurveObject& c, int i, int j);
-geom::Expected<std::size_t> point_index(const CurveObject& c, int i, int j);
-std::string point_label(const CurveObject& c, PointName name, int i, int j);
-std::string unit_weights_rule(const CurveObject& c);
-std::optional<Box> bounds(const CurveObject& c);
-void translate(CurveObject& c, const glm::dvec3& d);
-ExactForm exact_form(const CurveObject& c);
-geom::Expected<MeshForm> mesh_form(const CurveObject& c, int samples);
-double mesh_vertices(const CurveObject& c, int samples);
-std::size_t heap_bytes(const CurveObject& c);
-bool same_bits(const CurveObject& a, const CurveObject& b);
-
-static_assert(KindFacts<CurveObject>);
+ISOPARM_KIND_FACTS(CurveObject);
 
 } // namespace isoparm::doc

@@ -22,33 +22,9 @@ struct ImplicitObject {
     static constexpr bool constructed = false;
 };
 
-geom::Expected<ImplicitObject> read_kind(std::type_identity<ImplicitObject>,
-                                         const nlohmann::json& j, const std::string& at);
-void kind_to_json(const ImplicitObject& f, nlohmann::json& out);
-geom::Expected<std::pair<int, int>> selected_point_from_json(const ImplicitObject& f,
-                                                             const nlohmann::json& point,
-                                                             const std::string& at);
-geom::Status validate(const ImplicitObject& f);
-std::span<glm::dvec3> control_points(ImplicitObject& f);
-std::span<const glm::dvec3> control_points(const ImplicitObject& f);
-std::span<double> control_weights(ImplicitObject& f);
-std::span<const double> control_weights(const ImplicitObject& f);
-bool is_rational(const ImplicitObject& f);
-bool has_control_point(const ImplicitObject& f, int i, int j);
-geom::Expected<std::size_t> point_index(const ImplicitObject& f, int i, int j);
-std::string point_label(const ImplicitObject& f, PointName name, int i, int j);
-std::string unit_weights_rule(const ImplicitObject& f);
-std::optional<Box> bounds(const ImplicitObject& f);
-// Moved with its formula (in absolute coordinates: moving its box alone would cut the field):
-// its box moves by d and x, y, z become (x - d.x), ... (translated).
-void translate(ImplicitObject& f, const glm::dvec3& d);
-ExactForm exact_form(const ImplicitObject& f);
-geom::Expected<MeshForm> mesh_form(const ImplicitObject& f, int samples);
-double mesh_vertices(const ImplicitObject& f, int samples);
-std::size_t heap_bytes(const ImplicitObject& f);
-bool same_bits(const ImplicitObject& a, const ImplicitObject& b);
-
-static_assert(KindFacts<ImplicitObject>);
+// translate: moved with its formula (in absolute coordinates: moving its box alone would cut
+// the field): its box moves by d and x, y, z become (x - d.x), ... (translated).
+ISOPARM_KIND_FACTS(ImplicitObject);
 
 // An implicit surface moved by d: its box moved and every x, y, z of its expression replaced
 // by (x - d.x), (y - d.y), (z - d.z) (a zero component leaves its coordinate as it is).

@@ -3,6 +3,8 @@
 
 #include <glm/common.hpp>
 
+#include "core/json/fields.hpp"
+
 namespace isoparm::doc {
 
 namespace {
@@ -59,6 +61,21 @@ std::string triangle_point_label(char letter, int n, int i, int j) {
     std::string s(1, letter);
     if (n < 10) return s + std::to_string(i) + std::to_string(j) + std::to_string(k);
     return s + std::to_string(i) + "," + std::to_string(j) + "," + std::to_string(k);
+}
+
+geom::Expected<std::pair<int, int>> point_pair_from_json(const nlohmann::json& point,
+                                                         const std::string& at, const char* what,
+                                                         int max_i, int max_j) {
+    if (!point.is_array() || point.size() != 2) return json_io::schema_error(what, at);
+    const int most[2] = {max_i, max_j};
+    int idx[2] = {-1, -1};
+    for (std::size_t k = 0; k < 2; ++k) {
+        auto v = json_io::read_integer(point[k], at + "/" + std::to_string(k),
+                                       "a control point index", 0, most[k]);
+        if (!v) return v.error();
+        idx[k] = static_cast<int>(*v);
+    }
+    return std::pair{idx[0], idx[1]};
 }
 
 } // namespace detail

@@ -7,7 +7,10 @@
 #include <cstdint>
 #include <cstring>
 #include <glm/vec3.hpp>
+#include <nlohmann/json.hpp>
+#include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/doc/kinds/kind_facts.hpp"
@@ -50,6 +53,38 @@ geom::Status finite_points(const std::vector<glm::dvec3>& points, PointPath poin
                                         point_path(k) + "/" + std::to_string(a));
     return geom::Ok{};
 }
+
+// The kind K's geometry, member `name` of the object or shape j, read by `read` (its errors
+// under at/name).
+template <class K, class Read>
+geom::Expected<K> read_geometry(const nlohmann::json& j, const std::string& at, const char* name,
+                                Read read) {
+    auto g = read(j.at(name));
+    if (!g) return g.error().under(at + "/" + name);
+    return K{std::move(g).value()};
+}
+
+// The control points and weights of a kind whose geometry (member `net`) keeps them as
+// `points` and `weights`: the four control_points / control_weights facts, defined.
+#define ISOPARM_NET_FACTS(K, net)                                                                  \
+    std::span<glm::dvec3> control_points(K& k) {                                                   \
+        return k.net.points;                                                                       \
+    }                                                                                              \
+    std::span<const glm::dvec3> control_points(const K& k) {                                       \
+        return k.net.points;                                                                       \
+    }                                                                                              \
+    std::span<double> control_weights(K& k) {                                                      \
+        return k.net.weights;                                                                      \
+    }                                                                                              \
+    std::span<const double> control_weights(const K& k) {                                          \
+        return k.net.weights;                                                                      \
+    }
+
+// A selected point [i, j] (`what` names the form in the refusal), i in 0..max_i and j in
+// 0..max_j.
+geom::Expected<std::pair<int, int>> point_pair_from_json(const nlohmann::json& point,
+                                                         const std::string& at, const char* what,
+                                                         int max_i, int max_j);
 
 // The box of some points; nothing when there are none.
 std::optional<Box> box_of(std::span<const glm::dvec3> points);

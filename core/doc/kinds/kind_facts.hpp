@@ -81,8 +81,8 @@ template <class... F> overloaded(F...) -> overloaded<F...>;
 // `K::constructed` whether a recipe builds objects of the kind (they may carry "construction").
 template <class K>
 concept KindFacts = requires(K& k, const K& c, int i, int j, PointName name, int samples,
-                             const nlohmann::json& json, nlohmann::json& out,
-                             const std::string& at, const glm::dvec3& d) {
+                             const nlohmann::json& json, nlohmann::json& out, const std::string& at,
+                             const glm::dvec3& d) {
     { K::kind } -> std::convertible_to<ObjectKind>;
     { K::shape_members } -> std::convertible_to<std::span<const std::string_view>>;
     { K::in_patch_groups } -> std::convertible_to<bool>;
@@ -122,5 +122,33 @@ concept KindFacts = requires(K& k, const K& c, int i, int j, PointName name, int
     { heap_bytes(c) } -> std::same_as<std::size_t>;
     { same_bits(c, c) } -> std::same_as<bool>;
 };
+
+// Declares the facts KindFacts asks of kind K, each defined in K's own file
+// (kinds/<kind>_kind.cpp): a kind's header says ISOPARM_KIND_FACTS(K); after its struct, and a
+// fact left undefined there fails the link, one left out of the concept fails the build.
+#define ISOPARM_KIND_FACTS(K)                                                                      \
+    geom::Expected<K> read_kind(std::type_identity<K>, const nlohmann::json& j,                    \
+                                const std::string& at);                                            \
+    void kind_to_json(const K& k, nlohmann::json& out);                                            \
+    geom::Expected<std::pair<int, int>> selected_point_from_json(                                  \
+        const K& k, const nlohmann::json& point, const std::string& at);                           \
+    geom::Status validate(const K& k);                                                             \
+    std::span<glm::dvec3> control_points(K& k);                                                    \
+    std::span<const glm::dvec3> control_points(const K& k);                                        \
+    std::span<double> control_weights(K& k);                                                       \
+    std::span<const double> control_weights(const K& k);                                           \
+    bool is_rational(const K& k);                                                                  \
+    bool has_control_point(const K& k, int i, int j);                                              \
+    geom::Expected<std::size_t> point_index(const K& k, int i, int j);                             \
+    std::string point_label(const K& k, PointName name, int i, int j);                             \
+    std::string unit_weights_rule(const K& k);                                                     \
+    std::optional<Box> bounds(const K& k);                                                         \
+    void translate(K& k, const glm::dvec3& d);                                                     \
+    ExactForm exact_form(const K& k);                                                              \
+    geom::Expected<MeshForm> mesh_form(const K& k, int samples);                                   \
+    double mesh_vertices(const K& k, int samples);                                                 \
+    std::size_t heap_bytes(const K& k);                                                            \
+    bool same_bits(const K& a, const K& b);                                                        \
+    static_assert(KindFacts<K>)
 
 } // namespace isoparm::doc

@@ -17,9 +17,8 @@ using nlohmann::json;
 
 geom::Expected<SurfaceObject> read_kind(std::type_identity<SurfaceObject>, const json& j,
                                         const std::string& at) {
-    auto s = json_io::surface_from_json(j.at("surface"));
-    if (!s) return s.error().under(at + "/surface");
-    return SurfaceObject{std::move(s).value()};
+    return detail::read_geometry<SurfaceObject>(
+        j, at, "surface", [](const json& v) { return json_io::surface_from_json(v); });
 }
 
 void kind_to_json(const SurfaceObject& s, json& out) {
@@ -28,17 +27,8 @@ void kind_to_json(const SurfaceObject& s, json& out) {
 
 geom::Expected<std::pair<int, int>>
 selected_point_from_json(const SurfaceObject& s, const json& point, const std::string& at) {
-    if (!point.is_array() || point.size() != 2)
-        return json_io::schema_error("a surface's selected point is [i, j]", at);
-    const int counts[2] = {s.surface.n_u, s.surface.n_v};
-    int idx[2] = {-1, -1};
-    for (std::size_t k = 0; k < 2; ++k) {
-        auto v = json_io::read_integer(point[k], at + "/" + std::to_string(k),
-                                       "a control point index", 0, counts[k] - 1);
-        if (!v) return v.error();
-        idx[k] = static_cast<int>(*v);
-    }
-    return std::pair{idx[0], idx[1]};
+    return detail::point_pair_from_json(point, at, "a surface's selected point is [i, j]",
+                                        s.surface.n_u - 1, s.surface.n_v - 1);
 }
 
 geom::Status validate(const SurfaceObject& s) {
@@ -67,18 +57,7 @@ geom::Status validate(const SurfaceObject& s) {
     return geom::validate_surface(g);
 }
 
-std::span<glm::dvec3> control_points(SurfaceObject& s) {
-    return s.surface.points;
-}
-std::span<const glm::dvec3> control_points(const SurfaceObject& s) {
-    return s.surface.points;
-}
-std::span<double> control_weights(SurfaceObject& s) {
-    return s.surface.weights;
-}
-std::span<const double> control_weights(const SurfaceObject& s) {
-    return s.surface.weights;
-}
+ISOPARM_NET_FACTS(SurfaceObject, surface)
 bool is_rational(const SurfaceObject& s) {
     return geom::is_rational(s.surface.type);
 }

@@ -15,9 +15,8 @@ using nlohmann::json;
 
 geom::Expected<TriangleObject> read_kind(std::type_identity<TriangleObject>, const json& j,
                                          const std::string& at) {
-    auto t = json_io::triangle_from_json(j.at("triangle"));
-    if (!t) return t.error().under(at + "/triangle");
-    return TriangleObject{std::move(t).value()};
+    return detail::read_geometry<TriangleObject>(
+        j, at, "triangle", [](const json& v) { return json_io::triangle_from_json(v); });
 }
 
 void kind_to_json(const TriangleObject& t, json& out) {
@@ -26,17 +25,11 @@ void kind_to_json(const TriangleObject& t, json& out) {
 
 geom::Expected<std::pair<int, int>>
 selected_point_from_json(const TriangleObject& t, const json& point, const std::string& at) {
-    if (!point.is_array() || point.size() != 2)
-        return json_io::schema_error("a triangle's selected point is [i, j] (b_ijk, k = n - i - j)",
-                                     at);
     const int n = t.patch.degree;
-    int idx[2] = {-1, -1};
-    for (std::size_t k = 0; k < 2; ++k) {
-        auto v = json_io::read_integer(point[k], at + "/" + std::to_string(k),
-                                       "a control point index", 0, n);
-        if (!v) return v.error();
-        idx[k] = static_cast<int>(*v);
-    }
+    auto ij = detail::point_pair_from_json(
+        point, at, "a triangle's selected point is [i, j] (b_ijk, k = n - i - j)", n, n);
+    if (!ij) return ij;
+    const int idx[2] = {ij->first, ij->second};
     if (idx[0] + idx[1] > n)
         return json_io::schema_error(
             "a degree " + std::to_string(n) +
@@ -59,18 +52,7 @@ geom::Status validate(const TriangleObject& t) {
     return geom::validate_triangle(t.patch);
 }
 
-std::span<glm::dvec3> control_points(TriangleObject& t) {
-    return t.patch.points;
-}
-std::span<const glm::dvec3> control_points(const TriangleObject& t) {
-    return t.patch.points;
-}
-std::span<double> control_weights(TriangleObject& t) {
-    return t.patch.weights;
-}
-std::span<const double> control_weights(const TriangleObject& t) {
-    return t.patch.weights;
-}
+ISOPARM_NET_FACTS(TriangleObject, patch)
 bool is_rational(const TriangleObject& t) {
     return t.patch.rational;
 }
