@@ -1,5 +1,7 @@
 #include "ui/view/control_net.hpp"
 
+#include <variant>
+
 namespace isoparm::ui {
 
 int ControlNet::find(int i, int j) const {
@@ -64,10 +66,13 @@ ControlNet curve_net(const geom::Curve& c) {
 } // namespace
 
 ControlNet control_net_of(const doc::Object& o) {
-    if (const geom::Surface* s = o.surface()) return surface_net(*s);
-    if (const geom::TrianglePatch* t = o.triangle()) return triangle_net(*t);
-    if (const geom::Curve* c = o.curve()) return curve_net(*c);
-    return {};
+    return std::visit(doc::overloaded{
+                          [](const doc::SurfaceObject& s) { return surface_net(s.surface); },
+                          [](const doc::CurveObject& c) { return curve_net(c.curve); },
+                          [](const doc::ImplicitObject&) { return ControlNet{}; },
+                          [](const doc::TriangleObject& t) { return triangle_net(t.patch); },
+                      },
+                      o.shape);
 }
 
 } // namespace isoparm::ui

@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <variant>
 
 #include "core/doc/placement.hpp"
+#include "core/doc/point_set.hpp"
 #include "core/geom/deboor.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
@@ -234,14 +236,17 @@ public:
             const bool is_selected = o.id == d.view.selection.object;
             // The object's own toggles (C, N, K with it selected), else the scene's defaults.
             const doc::ObjectDisplay own = doc::display_of(d.view, o.id);
-            if (const geom::Surface* s = o.surface())
-                add_surface(o, *s, is_selected, own);
-            else if (const doc::ImplicitObject* im = o.implicit())
-                add_implicit(o, *im, is_selected);
-            else if (const geom::TrianglePatch* t = o.triangle())
-                add_triangle(o, *t, is_selected, own);
-            else if (const geom::Curve* c = o.curve())
-                add_curve(*c, is_selected, own);
+            std::visit(doc::overloaded{
+                           [&](const doc::SurfaceObject& s) {
+                               add_surface(o, s.surface, is_selected, own);
+                           },
+                           [&](const doc::CurveObject& c) { add_curve(c.curve, is_selected, own); },
+                           [&](const doc::ImplicitObject& im) { add_implicit(o, im, is_selected); },
+                           [&](const doc::TriangleObject& t) {
+                               add_triangle(o, t.patch, is_selected, own);
+                           },
+                       },
+                       o.shape);
         }
     }
 
@@ -251,14 +256,8 @@ public:
         if (has_valid_point(d) && d.selected()->visible &&
             doc::display_of(d.view, d.view.selection.object).control_points) {
             const doc::Object* o = d.selected();
-            glm::dvec3 p{0};
-            if (const geom::Surface* s = o->surface())
-                p = s->point(d.view.selection.i, d.view.selection.j);
-            else if (const geom::Curve* c = o->curve())
-                p = c->points[d.view.selection.i];
-            else if (const geom::TrianglePatch* t = o->triangle())
-                p = t->points[geom::TrianglePatch::index(t->degree, d.view.selection.i,
-                                                         d.view.selection.j)];
+            const glm::dvec3 p =
+                doc::position_of(o->shape, {d.view.selection.i, d.view.selection.j});
             selected.points.push_back({glm::vec3(p), to_vec4(col.selected_point)});
         }
         if (disp.control_points)
@@ -357,9 +356,17 @@ private:
     // Many points (a 32x32 net) would bury the surface: they shrink with their number.
     static float point_size_for(const doc::Document& d) {
         std::size_t total_points = 0;
+        // A curve's few points, on its own line, do not count.
         for (const doc::Object& o : d.objects)
-            if (o.visible && o.kind() != doc::ObjectKind::curve)
-                total_points += doc::control_points_of(o.shape).size();
+            if (o.visible)
+                total_points += std::visit(
+                    doc::overloaded{
+                        [](const doc::SurfaceObject& s) { return s.surface.points.size(); },
+                        [](const doc::CurveObject&) { return std::size_t{0}; },
+                        [](const doc::ImplicitObject&) { return std::size_t{0}; },
+                        [](const doc::TriangleObject& t) { return t.patch.points.size(); },
+                    },
+                    o.shape);
         return total_points > 400 ? 6.f : total_points > 100 ? 7.5f : 9.f;
     }
 
@@ -515,13 +522,14 @@ std::vector<glm::dvec3> scene_points(const doc::Document& d) {
     std::vector<glm::dvec3> out;
     for (const doc::Object& o : d.objects) {
         if (!o.visible) continue;
+        // Its control points, or an implicit surface's box (doc::bounds answers by kind).
         const std::span<const glm::dvec3> points = doc::control_points_of(o.shape);
         out.insert(out.end(), points.begin(), points.end());
-        if (const doc::ImplicitObject* im = o.implicit()) {
-            for (int k = 0; k < 8; ++k)
-                out.push_back({k & 1 ? im->hi.x : im->lo.x, k & 2 ? im->hi.y : im->lo.y,
-                               k & 4 ? im->hi.z : im->lo.z});
-        }
+        if (points.empty())
+            if (const std::optional<doc::Box> box = doc::bounds_of(o.shape))
+                for (int k = 0; k < 8; ++k)
+                    out.push_back({k & 1 ? box->hi.x : box->lo.x, k & 2 ? box->hi.y : box->lo.y,
+                                   k & 4 ? box->hi.z : box->lo.z});
     }
     return out;
 }
