@@ -23,7 +23,7 @@
 #include "ui/headless/egl_context.hpp"
 #include "ui/view/camera.hpp"
 #include "ui/view/doc_access.hpp"
-#include "ui/view/kind_view.hpp"
+#include "ui/view/kinds/kind_view.hpp"
 #include "ui/view/triangle_domain.hpp"
 
 namespace isoparm::app {

@@ -3,7 +3,7 @@
 #include "ui/animation_actions.hpp"
 
 #include "ui/actions.hpp"
-#include "ui/view/kind_view.hpp"
+#include "ui/view/kinds/kind_view.hpp"
 
 namespace isoparm::ui {
 

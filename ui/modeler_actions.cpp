@@ -13,7 +13,7 @@
 #include "core/doc/commands_points.hpp"
 #include "core/doc/point_set.hpp"
 #include "ui/surface_actions.hpp"
-#include "ui/view/kind_view.hpp"
+#include "ui/view/kinds/kind_view.hpp"
 
 namespace isoparm::ui {
 

@@ -24,7 +24,7 @@
 #include "ui/view/current_patch.hpp"
 #include "ui/view/doc_access.hpp"
 #include "ui/view/implicit_meshes.hpp"
-#include "ui/view/kind_view.hpp"
+#include "ui/view/kinds/kind_view.hpp"
 #include "ui/view/scene_builder.hpp"
 #include "ui/view/triangle_domain.hpp"
 #include "ui/view/triangle_meshes.hpp"

@@ -10,7 +10,7 @@
 #include "ui/theme.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/doc_access.hpp"
-#include "ui/view/kind_view.hpp"
+#include "ui/view/kinds/kind_view.hpp"
 #include "ui/view/text_wrap.hpp"
 
 namespace isoparm::ui {

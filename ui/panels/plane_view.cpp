@@ -21,7 +21,7 @@
 #include "ui/view/canvas_map.hpp"
 #include "ui/view/control_net.hpp"
 #include "ui/view/doc_access.hpp"
-#include "ui/view/kind_view.hpp"
+#include "ui/view/kinds/kind_view.hpp"
 #include "ui/view/plane_wire.hpp"
 
 namespace isoparm::ui {

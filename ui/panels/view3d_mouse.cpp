@@ -30,7 +30,7 @@
 #include "ui/view/control_net.hpp"
 #include "ui/view/deboor_overlay.hpp"
 #include "ui/view/doc_access.hpp"
-#include "ui/view/kind_view.hpp"
+#include "ui/view/kinds/kind_view.hpp"
 #include "ui/view/picking.hpp"
 #include "ui/view/scene_builder.hpp"
 

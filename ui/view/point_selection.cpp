@@ -1,6 +1,6 @@
 // The selection of many points, box selection, and the handle's layout, hits and maps.
 #include "ui/view/point_selection.hpp"
-#include "ui/view/kind_view.hpp"
+#include "ui/view/kinds/kind_view.hpp"
 
 #include <algorithm>
 #include <cmath>
