@@ -57,16 +57,8 @@ ControlNet kind_net(const doc::CurveObject& object) {
     return net;
 }
 
-ObjectEditor kind_editor(const doc::CurveObject&) {
-    return ObjectEditor::curve_designer;
-}
-
-bool kind_two_index(const doc::CurveObject&) {
-    return false;
-}
-
-const char* kind_type_label(const doc::CurveObject&) {
-    return geom::name_of(doc::ObjectKind::curve);
+KindTraits kind_traits(const doc::CurveObject&) {
+    return {ObjectEditor::curve_designer, false, geom::name_of(doc::ObjectKind::curve)};
 }
 
 } // namespace isoparm::ui

@@ -50,16 +50,8 @@ ControlNet kind_net(const doc::ImplicitObject&) {
     return {};
 }
 
-ObjectEditor kind_editor(const doc::ImplicitObject&) {
-    return ObjectEditor::implicit_surface;
-}
-
-bool kind_two_index(const doc::ImplicitObject&) {
-    return false;
-}
-
-const char* kind_type_label(const doc::ImplicitObject&) {
-    return geom::name_of(doc::ObjectKind::implicit);
+KindTraits kind_traits(const doc::ImplicitObject&) {
+    return {ObjectEditor::implicit_surface, false, geom::name_of(doc::ObjectKind::implicit)};
 }
 
 } // namespace isoparm::ui

@@ -17,16 +17,20 @@ ControlNet control_net_of(const doc::Object& o) {
     return std::visit([](const auto& k) { return kind_net(k); }, o.shape);
 }
 
+KindTraits traits_of(const doc::Shape& shape) {
+    return std::visit([](const auto& k) { return kind_traits(k); }, shape);
+}
+
 ObjectEditor editor_of(const doc::Object& o) {
-    return std::visit([](const auto& k) { return kind_editor(k); }, o.shape);
+    return traits_of(o.shape).editor;
 }
 
 bool two_index_points(const doc::Shape& shape) {
-    return std::visit([](const auto& k) { return kind_two_index(k); }, shape);
+    return traits_of(shape).two_index;
 }
 
 const char* kind_label(const doc::Object& o) {
-    return std::visit([](const auto& k) { return kind_type_label(k); }, o.shape);
+    return traits_of(o.shape).label;
 }
 
 std::unique_ptr<doc::Command> move_point_command(const doc::Object& o, int i, int j,

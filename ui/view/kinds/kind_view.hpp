@@ -51,6 +51,15 @@ struct ObjectLook {
     const TriangleMeshes* triangle_meshes = nullptr; // null: triangles draw no mesh
 };
 
+// What the panels ask of a kind: the editor it opens in the right column, whether its control
+// points are named (i, j) (true) or i alone, j = -1, or not at all (false), and the Objects
+// tab's Kind column.
+struct KindTraits {
+    ObjectEditor editor = ObjectEditor::control_points;
+    bool two_index = false;
+    const char* label = "";
+};
+
 // The batches every object adds to (build_scene draws them in its order).
 struct SceneBatches {
     std::vector<SurfaceDraw>& surfaces;
@@ -62,9 +71,7 @@ struct SceneBatches {
 #define ISOPARM_KIND_VIEW(K)                                                                       \
     void draw_kind(const K& k, const ObjectLook& look, SceneBatches& out);                         \
     ControlNet kind_net(const K& k);                                                               \
-    ObjectEditor kind_editor(const K& k);                                                          \
-    bool kind_two_index(const K& k);                                                               \
-    const char* kind_type_label(const K& k)
+    KindTraits kind_traits(const K& k)
 
 ISOPARM_KIND_VIEW(doc::SurfaceObject);
 ISOPARM_KIND_VIEW(doc::CurveObject);
@@ -78,11 +85,7 @@ concept KindView = requires(const K& k, const ObjectLook& look, SceneBatches& ou
     { draw_kind(k, look, out) } -> std::same_as<void>;
     // Its control net (empty: none).
     { kind_net(k) } -> std::same_as<ControlNet>;
-    { kind_editor(k) } -> std::same_as<ObjectEditor>;
-    // Whether its control points are named (i, j) (true) or i alone, j = -1, or not at all.
-    { kind_two_index(k) } -> std::same_as<bool>;
-    // The Objects tab's Kind column.
-    { kind_type_label(k) } -> std::same_as<const char*>;
+    { kind_traits(k) } -> std::same_as<KindTraits>;
 };
 
 // Every kind of doc::Shape has its view: a kind without its ISOPARM_KIND_VIEW line stops here.
@@ -94,6 +97,7 @@ static_assert(every_kind_viewed(std::make_index_sequence<std::variant_size_v<doc
 
 // The dispatchers: the object's kind answers.
 void draw_in_scene(const doc::Object& o, const ObjectLook& look, SceneBatches& out);
+KindTraits traits_of(const doc::Shape& shape);
 ObjectEditor editor_of(const doc::Object& o);
 // Whether a control point of the shape is named by two indices (a surface's (i, j), a
 // triangle's (i, j) of b_ijk) or by one (a curve's i, j = -1); a kind without control points

@@ -76,16 +76,8 @@ ControlNet kind_net(const doc::SurfaceObject& object) {
     return net;
 }
 
-ObjectEditor kind_editor(const doc::SurfaceObject&) {
-    return ObjectEditor::control_points;
-}
-
-bool kind_two_index(const doc::SurfaceObject&) {
-    return true;
-}
-
-const char* kind_type_label(const doc::SurfaceObject& s) {
-    return geom::name_of(s.surface.type);
+KindTraits kind_traits(const doc::SurfaceObject& s) {
+    return {ObjectEditor::control_points, true, geom::name_of(s.surface.type)};
 }
 
 } // namespace isoparm::ui

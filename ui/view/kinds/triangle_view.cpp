@@ -49,16 +49,8 @@ ControlNet kind_net(const doc::TriangleObject& object) {
     return net;
 }
 
-ObjectEditor kind_editor(const doc::TriangleObject&) {
-    return ObjectEditor::control_points;
-}
-
-bool kind_two_index(const doc::TriangleObject&) {
-    return true;
-}
-
-const char* kind_type_label(const doc::TriangleObject&) {
-    return geom::name_of(doc::ObjectKind::triangle);
+KindTraits kind_traits(const doc::TriangleObject&) {
+    return {ObjectEditor::control_points, true, geom::name_of(doc::ObjectKind::triangle)};
 }
 
 } // namespace isoparm::ui
