@@ -26,6 +26,7 @@
 #include "ui/view/implicit_meshes.hpp"
 #include "ui/view/kinds/kind_view.hpp"
 #include "ui/view/scene_builder.hpp"
+#include "ui/view/surface_meshes.hpp"
 #include "ui/view/triangle_domain.hpp"
 #include "ui/view/triangle_meshes.hpp"
 
@@ -185,6 +186,7 @@ Workstation::Workstation(const WorkstationOptions& options) {
     ctx_.renderer = renderer_.get();
     implicit_ = std::make_unique<ImplicitMeshes>();
     triangles_ = std::make_unique<TriangleMeshes>();
+    surfaces_ = std::make_unique<SurfaceMeshes>();
     ctx_.implicit_meshes = implicit_.get();
 }
 
@@ -459,7 +461,8 @@ void Workstation::render_view3d(float scale) {
     if (request_frame_) mode.wake = request_frame_;
     implicit_->update(ctx_.doc, mode);
     triangles_->update(ctx_.doc, ctx_.doc.view.display.density);
-    const BuiltScene scene = build_scene(ctx_.doc, style, implicit_.get(), triangles_.get());
+    BuiltScene scene = build_scene(ctx_.doc, style, implicit_.get(), triangles_.get());
+    surfaces_->update(scene.surfaces, ui.analysis.kind);
     SceneView view;
     view.camera = ui.camera;
     view.width = ui.view_fb_width;

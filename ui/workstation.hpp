@@ -18,6 +18,7 @@ namespace isoparm::ui {
 class Renderer;
 class ImplicitMeshes;
 class TriangleMeshes;
+class SurfaceMeshes;
 
 struct WorkstationOptions {
     bool headless = false;   // no timings, no settings file, deterministic
@@ -65,6 +66,8 @@ private:
     std::unique_ptr<Renderer> renderer_;
     std::unique_ptr<ImplicitMeshes> implicit_;
     std::unique_ptr<TriangleMeshes> triangles_;
+    std::unique_ptr<SurfaceMeshes>
+        surfaces_; // the surfaces' display meshes (the renderer uploads them)
     bool presentation_built_ = false;
     bool deboor_was_on_ = false; // to bring the de Boor tab forward when it is switched on
     // The indicator and current object of the last frame (subpatch activation); NaN at first,

@@ -1,9 +1,9 @@
-// The 3D view renderer: mesh cache, surface, line and point passes.
+// The 3D view renderer: the meshes' GPU buffers (their CPU side is surface_meshes.hpp's and the
+// kinds' caches'), surface, line and point passes.
 #include "ui/render/renderer.hpp"
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -14,9 +14,8 @@
 #include "ui/render/shaders.hpp"
 #include "ui/view/analysis.hpp"
 #include "ui/view/face_culling.hpp"
-#include "ui/view/incremental_mesh.hpp"
 #include "ui/view/mesh_data.hpp"
-#include "ui/view/tessellation_sampling.hpp"
+#include "ui/view/surface_meshes.hpp"
 
 namespace isoparm::ui {
 
@@ -32,13 +31,10 @@ void set_analysis_uniforms(const GlProgram& p, const AnalysisView& a) {
     glUniform2f(p.uniform("u_zebra_dir"), std::cos(angle), std::sin(angle));
 }
 
-// Wireframe lines per direction: enough to read the shape, few enough not to hide it.
-constexpr int wire_lines_per_direction = 24;
-
+// The GPU side of an object's mesh (surface_meshes.hpp and the kinds' caches own the CPU side).
 struct MeshEntry {
-    IncrementalMesh mesh; // CPU side: the tessellation, updated locally during drags
-    int density = 0;
-    std::uint64_t mesh_revision = 0; // of the ready-made mesh uploaded (0: none)
+    std::uint64_t mesh_revision = 0;    // of the ready-made mesh uploaded (0: none)
+    std::uint64_t surface_revision = 0; // of the surface mesh uploaded (0: none)
     GLuint vbo = 0, tri_ibo = 0, tri_vao = 0;
     GLsizei tri_count = 0;
     // The wireframe: index pairs into the mesh, as segments gathered from `source` (this
@@ -161,49 +157,39 @@ struct Renderer::Impl {
 
         if (d.mesh) {
             if (rescalar) m.mesh_revision = 0; // re-upload with the new scalar
+            m.surface_revision = 0;
             m.source = d.mesh;
             return upload_mesh(m, d, stats);
         }
         m.mesh_revision = 0;
-        m.source = &m.mesh.mesh();
-
-        const auto t0 = std::chrono::steady_clock::now();
-        const auto [su, sv] = display_samples(*d.surface, d.density);
-        const bool resampled = m.density != d.density;
-        m.density = d.density;
-        const MeshChange change = m.mesh.update(*d.surface, su, sv);
-        if (!change.any && !rescalar) return m;
-        m.wire_stale = true;
-        const geom::Mesh& mesh = m.mesh.mesh();
-        const bool full = rescalar || change.topology || resampled ||
-                          change.vertex_count == static_cast<int>(mesh.positions.size());
-        const std::size_t first = full ? 0 : static_cast<std::size_t>(change.first_vertex);
-        const std::size_t count =
-            full ? mesh.positions.size() : static_cast<std::size_t>(change.vertex_count);
-        // Curvature from exact derivatives at the vertices (never from the mesh).
-        const std::vector<double> scalars =
-            want == AnalysisKind::off
-                ? std::vector<double>{}
-                : geom::curvature_grid(*d.surface, su, sv, curvature_kind(want), first, count);
-        const std::vector<float> verts = interleave(mesh, first, count, scalars);
-        std::vector<std::uint32_t> wire;
-        if (full) wire = wire_indices(su, sv, mesh.exists, wire_lines_per_direction);
-        stats.tessellate_ms +=
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
-                .count();
-        ++stats.retessellated;
-
-        if (full) {
-            upload_all(m, verts, mesh.triangles, std::move(wire));
-        } else {
-            // Only the rows the moved points' basis functions reach.
-            glBindBuffer(GL_ARRAY_BUFFER, m.vbo);
-            glBufferSubData(GL_ARRAY_BUFFER,
-                            static_cast<GLintptr>(change.first_vertex) * floats_per_vertex *
-                                sizeof(float),
-                            static_cast<GLsizeiptr>(verts.size() * sizeof(float)), verts.data());
-            glBindBuffer(GL_ARRAY_BUFFER, 0);
+        if (!d.display) { // not brought up to date (surface_meshes.hpp): nothing to draw
+            m.source = nullptr;
+            m.tri_count = 0;
+            m.wire_pairs.clear();
+            m.surface_revision = 0;
+            m.vertices = 0;
+            return m;
         }
+        const SurfaceMesh& sm = *d.display;
+        const geom::Mesh& mesh = sm.mesh.mesh();
+        m.source = &mesh;
+        if (m.surface_revision == sm.revision) return m;
+        m.wire_stale = true;
+        if (sm.partial && m.surface_revision != 0 && m.surface_revision == sm.since) {
+            // Only the rows the moved points' basis functions reach.
+            const std::size_t at = sm.first * floats_per_vertex;
+            const std::size_t n = std::min(sm.count * floats_per_vertex,
+                                           sm.vertices.size() - std::min(at, sm.vertices.size()));
+            glBindBuffer(GL_ARRAY_BUFFER, m.vbo);
+            glBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(at * sizeof(float)),
+                            static_cast<GLsizeiptr>(n * sizeof(float)), sm.vertices.data() + at);
+            glBindBuffer(GL_ARRAY_BUFFER, 0);
+        } else {
+            upload_all(m, sm.vertices, mesh.triangles, sm.wire_pairs);
+        }
+        m.surface_revision = sm.revision;
+        stats.tessellate_ms += sm.milliseconds;
+        ++stats.retessellated;
         m.vertices = static_cast<long>(mesh.positions.size());
         return m;
     }
@@ -231,8 +217,6 @@ struct Renderer::Impl {
     MeshEntry& upload_mesh(MeshEntry& m, const SurfaceDraw& d, RenderStats& stats) {
         if (m.mesh_revision == d.mesh_revision) return m;
         m.mesh_revision = d.mesh_revision;
-        m.density = 0;
-        m.mesh = IncrementalMesh{}; // a later surface under this id starts afresh
         const geom::Mesh& mesh = *d.mesh;
         // An implicit surface's curvature at each vertex from f's gradient and Hessian; a mesh
         // of another kind (or an f that does not compile) is undefined under a curvature kind.

@@ -17,10 +17,15 @@ namespace isoparm::ui {
 
 // One surface to draw. The renderer never owns geometry: it keeps only derived GPU buffers,
 // keyed by object id, and re-tessellates when the surface or density differs from the cache.
+struct SurfaceMesh;
+
 struct SurfaceDraw {
     std::uint64_t id = 0;
     const geom::Surface* surface = nullptr;
     int density = 32;
+    // The surface's display mesh at `density` (surface_meshes.hpp fills it in before drawing;
+    // its revision goes in mesh_revision).
+    const SurfaceMesh* display = nullptr;
     bool shaded = true;
     bool wireframe = false;
     glm::vec4 fill{0.3f, 0.55f, 0.85f, 1};
