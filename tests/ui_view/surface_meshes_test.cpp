@@ -1,0 +1,91 @@
+// The surfaces' display meshes (ui/view/surface_meshes): made once, changed in place by a
+// drag (only the touched rows, the same vertices a full remake gives), remade whole when the
+// analysis kind changes, dropped when a surface is no longer drawn.
+#include <gtest/gtest.h>
+
+#include "core/geom/knots.hpp"
+#include "ui/view/mesh_data.hpp"
+#include "ui/view/surface_meshes.hpp"
+
+using namespace isoparm;
+using namespace isoparm::ui;
+
+namespace {
+
+geom::Surface bicubic(int n) {
+    geom::Surface s;
+    s.type = geom::SplineType::bspline;
+    s.degree_u = s.degree_v = 3;
+    s.n_u = s.n_v = n;
+    s.knots_u = s.knots_v = geom::clamped_uniform_knots(n, 3);
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) s.points.push_back({double(i), double(j), 0.1 * i * j});
+    s.weights.assign(s.points.size(), 1.0);
+    return s;
+}
+
+std::vector<SurfaceDraw> draw_of(const geom::Surface& s) {
+    SurfaceDraw d;
+    d.id = 7;
+    d.surface = &s;
+    d.density = 8;
+    return {d};
+}
+
+} // namespace
+
+TEST(SurfaceMeshes, ADragChangesOnlyTheTouchedRowsAndMatchesAFullRemake) {
+    geom::Surface s = bicubic(12);
+    SurfaceMeshes meshes;
+    std::vector<SurfaceDraw> draws = draw_of(s);
+    EXPECT_EQ(meshes.update(draws, AnalysisKind::off), 1);
+    const SurfaceMesh* m = draws[0].display;
+    ASSERT_NE(m, nullptr);
+    const std::uint64_t first = m->revision;
+    EXPECT_NE(first, 0u);
+    EXPECT_FALSE(m->partial);
+    EXPECT_EQ(draws[0].mesh_revision, first);
+    EXPECT_EQ(m->vertices.size(), m->mesh.mesh().positions.size() * floats_per_vertex);
+    EXPECT_FALSE(m->wire_pairs.empty());
+
+    draws = draw_of(s); // unchanged: nothing to do
+    EXPECT_EQ(meshes.update(draws, AnalysisKind::off), 0);
+    EXPECT_EQ(draws[0].display->revision, first);
+
+    s.points[static_cast<std::size_t>(5 * 12 + 6)].z += 0.5; // one point of a 12 x 12 net
+    draws = draw_of(s);
+    EXPECT_EQ(meshes.update(draws, AnalysisKind::off), 1);
+    m = draws[0].display;
+    EXPECT_TRUE(m->partial);
+    EXPECT_EQ(m->since, first);
+    EXPECT_GT(m->revision, first);
+    EXPECT_LT(m->count, m->mesh.mesh().positions.size());
+
+    SurfaceMeshes fresh;
+    std::vector<SurfaceDraw> again = draw_of(s);
+    fresh.update(again, AnalysisKind::off);
+    EXPECT_EQ(again[0].display->vertices, m->vertices);
+}
+
+TEST(SurfaceMeshes, AnAnalysisKindRemakesWholeAndAnUndrawnSurfaceIsDropped) {
+    const geom::Surface s = bicubic(6);
+    SurfaceMeshes meshes;
+    std::vector<SurfaceDraw> draws = draw_of(s);
+    meshes.update(draws, AnalysisKind::off);
+    const std::uint64_t before = draws[0].display->revision;
+    draws = draw_of(s);
+    EXPECT_EQ(meshes.update(draws, AnalysisKind::mean), 1);
+    EXPECT_FALSE(draws[0].display->partial);
+    EXPECT_EQ(draws[0].display->scalar_kind, AnalysisKind::mean);
+    EXPECT_NE(draws[0].display->revision, before);
+    // Zebra stripes come from the normals: remade without the scalar.
+    draws = draw_of(s);
+    EXPECT_EQ(meshes.update(draws, AnalysisKind::zebra), 1);
+    EXPECT_EQ(draws[0].display->scalar_kind, AnalysisKind::off);
+
+    std::vector<SurfaceDraw> none;
+    meshes.update(none, AnalysisKind::off); // not drawn this frame: dropped
+    draws = draw_of(s);
+    EXPECT_EQ(meshes.update(draws, AnalysisKind::off), 1);
+    EXPECT_FALSE(draws[0].display->partial);
+}
