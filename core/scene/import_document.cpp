@@ -98,7 +98,7 @@ geom::Expected<ImportedObjects> import_text(std::string_view text, ImportFormat 
             co.knot_mode = doc::CurveKnotMode::custom;
             o.shape = std::move(co);
         } else {
-            o.shape = doc::SurfaceObject{std::move(std::get<geom::Surface>(shape.shape))};
+            o.shape = doc::SurfaceObject{std::move(*exchange::surface_of(shape.shape))};
         }
         // The document's own rules (add_object's checks, on a scratch document), so a scene
         // written from these loads again; an object they refuse is left out, with the reason.
