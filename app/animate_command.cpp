@@ -11,6 +11,7 @@
 #include <string>
 #include <unistd.h>
 
+#include "app/command_run.hpp"
 #include "app/commands.hpp"
 #include "app/view_options.hpp"
 #include "core/json/out_of_memory.hpp"
@@ -266,15 +267,7 @@ Action register_animate_command(CLI::App& app) {
     sub->add_option("--sweep-knot", o->sweep_knot,
                     "DIR:K:FROM:TO: knot K of the u or v knots moved from FROM to TO");
     sub->add_flag("--quiet", o->quiet, "no progress bar and no summary");
-    return [o]() -> int {
-        json_io::arm_memory_reserve();
-        try {
-            return run(*o);
-        } catch (const std::bad_alloc&) {
-            std::cerr << name << json_io::out_of_memory_message << "\n";
-            return 1;
-        }
-    };
+    return [o]() -> int { return run_memory_guarded([&o] { return run(*o); }, name); };
 }
 
 } // namespace isoparm::app

@@ -7,7 +7,9 @@
 #include <memory>
 #include <string>
 
+#include "app/command_run.hpp"
 #include "app/commands.hpp"
+#include "core/json/out_of_memory.hpp"
 #include "core/scene/atomic_file.hpp"
 #include "core/scene/export_document.hpp"
 #include "core/scene/scene_io.hpp"
@@ -18,7 +20,7 @@ namespace {
 
 struct ExportCommandOptions {
     std::string scene, output, object;
-    int samples = 32;
+    long long samples = 32; // wide: any number typed meets the 2..1000 rule, not a conversion
     bool mesh = false;
 };
 
@@ -30,7 +32,7 @@ std::string stem(const std::string& path) {
     return dot == std::string::npos || dot == 0 ? name : name.substr(0, dot);
 }
 
-int run(const ExportCommandOptions& o) {
+int run_unguarded(const ExportCommandOptions& o) {
     auto fail = [](const std::string& message) {
         std::cerr << "isoparm export: " << message << "; nothing written\n";
         return 2;
@@ -41,7 +43,7 @@ int run(const ExportCommandOptions& o) {
             o.mesh ? "--mesh asks for a mesh: name the output .obj, .stl, .ply or .glb, not '" +
                          o.output + "'"
                    : "cannot tell the format of '" + o.output + "' from its extension (" +
-                         scene::export_extensions + "; .obj --mesh for an OBJ mesh)");
+                         scene::export_extensions() + "; .obj --mesh for an OBJ mesh)");
     if (geom::Status st = scene::check_output_path(o.output); !st) return fail(st.error().message);
     if (geom::Status st = scene::check_output_is_not_input(o.output, {o.scene}); !st)
         return fail(st.error().message);
@@ -53,17 +55,15 @@ int run(const ExportCommandOptions& o) {
     if (!objects) return fail(objects.error().message);
     scene::ExportOptions options;
     options.format = *format;
-    options.samples = o.samples;
+    if (o.samples < 2 || o.samples > 1000)
+        return fail("--samples " + std::to_string(o.samples) +
+                    " must be 2..1000 (points per direction of a surface's tessellation)");
+    options.samples = static_cast<int>(o.samples);
     options.name = stem(o.scene);
     const auto result = scene::export_document(*objects, options);
     if (!result) return fail(result.error().message);
-    for (const std::string& s : result->skipped)
-        std::cerr << "isoparm export: skipped " << s << "\n";
-    if (geom::Status st = scene::write_file_atomically(o.output, result->bytes); !st) {
-        std::cerr << "isoparm export: " << st.error().message << "\n";
-        return 1;
-    }
-    return 0;
+    return report_written("isoparm export: ", result->skipped,
+                          scene::write_file_atomically(o.output, result->bytes));
 }
 
 } // namespace
@@ -84,7 +84,10 @@ Action register_export_command(CLI::App& app) {
                     "mesh formats: points per direction of each surface's tessellation, 2..1000 "
                     "(default 32; implicit surfaces use their own cell)");
     sub->add_flag("--mesh", o->mesh, "with .obj: write a triangle mesh instead of exact geometry");
-    return [o]() -> int { return run(*o); };
+    return [o]() -> int {
+        return run_memory_guarded([&o] { return run_unguarded(*o); }, "isoparm export: ",
+                                  " (exporting '" + o->scene + "'); nothing written");
+    };
 }
 
 } // namespace isoparm::app

@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "app/command_run.hpp"
 #include "app/commands.hpp"
 #include "app/view_options.hpp"
 #include "core/json/out_of_memory.hpp"
@@ -165,15 +166,7 @@ Action register_figure_command(CLI::App& app) {
     sub->add_flag("--no-raster", o->no_raster,
                   "3d: the lines alone, without the shaded surfaces' raster under them");
     add_view_options(sub, o->view_options);
-    return [o]() -> int {
-        json_io::arm_memory_reserve();
-        try {
-            return run(*o);
-        } catch (const std::bad_alloc&) {
-            std::cerr << name << json_io::out_of_memory_message << "\n";
-            return 1;
-        }
-    };
+    return [o]() -> int { return run_memory_guarded([&o] { return run(*o); }, name); };
 }
 
 } // namespace isoparm::app

@@ -1,7 +1,5 @@
 // `isoparm [SCENE]`: the workstation window (GLFW, OpenGL 3.3 core, Dear ImGui).
 #include <algorithm>
-#include <atomic>
-#include <chrono>
 #include <cstdlib>
 #include <iostream>
 #include <memory>
@@ -12,16 +10,17 @@
 #include "ui/render/gl.hpp"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
 #include <imgui.h>
-#include <imgui_impl_glfw.h>
 
 #include "app/commands.hpp"
-#include "app/window_input.hpp"
+#include "app/keep_libraries_loaded.hpp"
+#include "app/window_loop.hpp"
 #include "core/scene/autosave.hpp"
-#include "core/scene/autosave_timer.hpp"
 #include "ui/actions.hpp"
 #include "ui/render/renderer.hpp"
 #include "ui/view/settings.hpp"
+#include "ui/view/stage.hpp"
 #include "ui/view/window_placement.hpp"
 #include "ui/workstation.hpp"
 
@@ -37,67 +36,8 @@ std::string& glfw_error() {
     return last;
 }
 
-// Frames are drawn while something happens; when idle the loop sleeps in glfwWaitEvents and
-// draws nothing (on a CPU rasteriser every frame costs tens of milliseconds).
-int& pending_frames() {
-    static int n = 3;
-    return n;
-}
-// Set from any thread (a background mesh is ready, an animation's next step) with an empty
-// event to end the wait; the loop turns it into frames.
-std::atomic<bool>& frame_requested() {
-    static std::atomic<bool> flag{false};
-    return flag;
-}
-void request_frame() {
-    frame_requested() = true;
-    glfwPostEmptyEvent();
-}
-void wake(GLFWwindow*) {
-    pending_frames() = 3;
-}
 void on_size(GLFWwindow* w, int, int) {
-    wake(w);
-}
-
-// The start-up's candidates for recovery files: the scene asked for, the untitled document
-// and the recent files (recovery file names hash the path, so only known paths can be found).
-std::vector<scene::RecoveryInfo> recovery_offers(const std::string& scene,
-                                                 const std::vector<std::string>& recent) {
-    std::vector<std::string> candidates;
-    if (!scene.empty()) candidates.push_back(scene);
-    candidates.push_back("");
-    candidates.insert(candidates.end(), recent.begin(), recent.end());
-    return scene::find_recoveries(candidates);
-}
-
-// One step of autosaving, after every frame: the dialog's answers first, then the timer.
-// A write is a few milliseconds for a scene (serialization, fsync, rename), so it runs on the
-// UI thread; it happens at most once a minute.
-void autosave(ui::AppContext& ctx, scene::AutosaveTimer& timer) {
-    ui::RecoveryPrompt& r = ctx.ui.recovery;
-    for (const std::string& p : r.held) timer.hold(scene::normalized_scene_path(p));
-    r.held.clear();
-    for (const std::string& p : r.restored)
-        timer.wrote(scene::normalized_scene_path(p), scene::document_fingerprint(ctx.doc));
-    r.restored.clear();
-    // Undone back to the saved state with work still on the redo stack: the recovery file
-    // keeps that work (it is not discarded) until a redo, a new edit or a save moves on.
-    if (!ctx.dirty() && ctx.history.can_redo()) return;
-    const std::string path = scene::normalized_scene_path(ctx.file_path);
-    const scene::AutosaveTimer::Step step =
-        timer.poll(scene::AutosaveTimer::Clock::now(), ctx.dirty(), path,
-                   [&ctx] { return scene::document_fingerprint(ctx.doc); });
-    using Kind = scene::AutosaveTimer::Step::Kind;
-    if (step.kind == Kind::write) {
-        if (const geom::Status st = scene::write_recovery(ctx.doc, step.path); st.ok())
-            timer.wrote(step.path, step.fingerprint);
-        else
-            ctx.ui.status = "Autosave failed: " + st.error().message;
-    } else if (step.kind == Kind::discard) {
-        if (const geom::Status st = scene::discard_recovery(step.path); !st.ok())
-            ctx.ui.status = st.error().message;
-    }
+    wake_window(w);
 }
 
 ui::ScreenRect work_area_of(GLFWmonitor* m) {
@@ -151,7 +91,14 @@ void toggle_fullscreen(GLFWwindow* window, ui::ScreenRect& windowed) {
     glfwSetWindowMonitor(window, m, 0, 0, mode->width, mode->height, mode->refreshRate);
 }
 
-int run_window(const std::string& scene, const std::string& lesson, int autosave_seconds) {
+// What the window shows first: the workstation, a teaching view on the stage, or four views.
+struct FirstView {
+    ui::StageView stage = ui::StageView::none;
+    bool four_views = false;
+};
+
+int run_window(const std::string& scene, const std::string& lesson, int autosave_seconds,
+               const FirstView& first) {
     const char* x11 = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     if ((!x11 || !*x11) && (!wayland || !*wayland)) {
@@ -187,6 +134,7 @@ int run_window(const std::string& scene, const std::string& lesson, int autosave
     glfwSetWindowPos(window, place.x, place.y);
     glfwShowWindow(window);
     glfwMakeContextCurrent(window);
+    keep_libraries_loaded_for_leak_reports(); // the driver is loaded once a context is current
     glfwSwapInterval(1);
     ui::ScreenRect windowed = place; // where F11 returns to
     float xs = 1, ys = 1;
@@ -209,71 +157,42 @@ int run_window(const std::string& scene, const std::string& lesson, int autosave
             glfwSetWindowContentScaleCallback(window, [](GLFWwindow* w, float sx, float sy) {
                 auto* c = static_cast<ui::AppContext*>(glfwGetWindowUserPointer(w));
                 c->ui.content_scale = std::max(sx, sy);
-                wake(w);
+                wake_window(w);
             });
             glfwSetWindowUserPointer(window, &ctx);
             // The backend without its callbacks: input goes through the queue (window_input).
             ImGui_ImplGlfw_InitForOpenGL(window, false);
-            install_input_queue(window, wake);
+            WindowLoop loop(window, ws, autosave_seconds, [window] { glfwSwapBuffers(window); });
 
             if (!scene.empty() && !ui::open_file(ctx, scene))
                 std::cerr << "isoparm: " << ctx.ui.error_message << "\n";
             if (!lesson.empty() && !ui::open_lesson(ctx, lesson))
                 std::cerr << "isoparm: " << ctx.ui.error_message << "\n";
-            const bool autosaving = autosave_seconds > 0;
-            if (autosaving) ctx.ui.recovery.offers = recovery_offers(scene, ctx.settings.recent);
-            scene::AutosaveTimer timer(scene::AutosaveTimer::Clock::now(),
-                                       std::chrono::seconds(std::max(autosave_seconds, 1)));
-
-            std::string title;
+            ctx.ui.stage.view = first.stage;
+            ctx.ui.stage.four_views = first.four_views;
+            if (autosave_seconds > 0)
+                ctx.ui.recovery.offers = recovery_offers(scene, ctx.settings.recent);
             while (!ctx.ui.quit_now) {
-                if (pending_frames() > 0)
+                if (loop.frame_due())
                     glfwPollEvents();
                 else
                     glfwWaitEventsTimeout(0.5); // wakes for the autosave timer too
-                if (frame_requested().exchange(false))
-                    pending_frames() = std::max(pending_frames(), 1);
-                if (pending_frames() == 0 && !glfwWindowShouldClose(window)) {
-                    if (autosaving) autosave(ctx, timer); // nothing happened: no frame
-                    continue;
-                }
-                --pending_frames();
                 if (glfwWindowShouldClose(window)) {
                     glfwSetWindowShouldClose(window, GLFW_FALSE);
                     ui::request_quit(ctx); // asks first when there are unsaved changes
-                    pending_frames() = 3;
+                    wake_window(window);
                 }
-                // Keep drawing while a mouse gesture is in progress (a focused text field alone
-                // draws on its keys, not continuously).
-                if (ImGui::IsAnyItemActive() && ImGui::IsAnyMouseDown())
-                    pending_frames() = std::max(pending_frames(), 1);
-                const auto t0 = std::chrono::steady_clock::now();
-                ImGui_ImplGlfw_NewFrame();
-                if (feed_input_frame(ctx.ui.key_presses)) // more events than one frame shows
-                    pending_frames() = std::max(pending_frames(), 1);
-                ws.frame(0);
-                glfwSwapBuffers(window);
-                // The work of a frame, not the time between frames (idle waits excluded).
-                const double ms =
-                    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
-                        .count();
-                double& shown = ctx.ui.frame_ms;
-                shown = shown <= 0 ? ms : shown * 0.8 + ms * 0.2;
+                if (!loop.turn()) continue;
                 if (ctx.ui.fullscreen_request) {
                     ctx.ui.fullscreen_request = false;
                     toggle_fullscreen(window, windowed);
                     ctx.ui.fullscreen = glfwGetWindowMonitor(window) != nullptr;
-                    wake(window);
+                    wake_window(window);
                 }
-                if (const std::string t = ctx.title(); t != title) {
-                    glfwSetWindowTitle(window, t.c_str());
-                    title = t;
-                }
-                if (autosaving) autosave(ctx, timer);
             }
             // A normal exit: the unsaved-changes question was answered, the work is safe or
             // deliberately dropped.
-            if (const std::optional<std::string> p = timer.on_exit()) scene::discard_recovery(*p);
+            loop.finish();
             // The size is kept for monitors of this work-area size (not a full-screen size).
             if (glfwGetWindowMonitor(window)) toggle_fullscreen(window, windowed);
             int w = 0, h = 0;
@@ -284,6 +203,7 @@ int run_window(const std::string& scene, const std::string& lesson, int autosave
             ImGui_ImplGlfw_Shutdown();
         }
     }
+    keep_libraries_loaded_for_leak_reports(); // and those loaded since (cursors, dialogs)
     glfwDestroyWindow(window);
     glfwTerminate();
     return status;
@@ -306,8 +226,24 @@ Action register_gui_command(CLI::App& app) {
                    "next start offers to restore after a crash (0: no autosave, no offer)")
         ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
-    return [scene, lesson, autosave_seconds]() -> int {
-        return run_window(*scene, *lesson, *autosave_seconds);
+    auto stage = std::make_shared<std::string>();
+    app.add_option("--stage", *stage,
+                   "open with this teaching view at full size (Esc returns to the workstation): " +
+                       ui::stage_view_names())
+        ->check([](const std::string& name) -> std::string {
+            if (ui::stage_view_named(name)) return {};
+            return "'" + name + "' is not a teaching view; one of " + ui::stage_view_names();
+        });
+    auto layout = std::make_shared<std::string>("workstation");
+    app.add_option("--layout", *layout,
+                   "open with this layout: workstation, or four (xy, 3D, xz, yz at equal size)")
+        ->check(CLI::IsMember({"workstation", "four"}))
+        ->capture_default_str();
+    return [scene, lesson, autosave_seconds, stage, layout]() -> int {
+        FirstView first;
+        if (!stage->empty()) first.stage = *ui::stage_view_named(*stage);
+        first.four_views = *layout == "four" && first.stage == ui::StageView::none;
+        return run_window(*scene, *lesson, *autosave_seconds, first);
     };
 }
 

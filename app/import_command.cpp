@@ -7,12 +7,15 @@
 #include <memory>
 #include <string>
 
+#include "app/command_run.hpp"
 #include "app/commands.hpp"
 #include "core/doc/commands.hpp"
+#include "core/json/out_of_memory.hpp"
 #include "core/scene/atomic_file.hpp"
 #include "core/scene/export_document.hpp"
 #include "core/scene/import_document.hpp"
 #include "core/scene/scene_io.hpp"
+#include "ui/view/scene_budget.hpp"
 
 namespace isoparm::app {
 
@@ -22,14 +25,14 @@ struct ImportCommandOptions {
     std::string input, output;
 };
 
-int run(const ImportCommandOptions& o) {
+int run_unguarded(const ImportCommandOptions& o) {
     auto fail = [](const std::string& message) {
         std::cerr << "isoparm import: " << message << "; nothing written\n";
         return 2;
     };
     if (!scene::import_format_for(o.input))
         return fail("cannot tell the format of '" + o.input + "' from its extension (" +
-                    scene::import_extensions + ")");
+                    scene::import_extensions() + ")");
     // The output is a scene: an exchange format's extension is a slip (it would hold JSON).
     if (o.output != "-" &&
         (scene::import_format_for(o.output) || scene::export_format_for(o.output, false)))
@@ -44,13 +47,21 @@ int run(const ImportCommandOptions& o) {
     for (doc::Object& object : imported->objects)
         if (geom::Status st = doc::add_object(std::move(object))->apply(document); !st)
             return fail(st.error().message); // import_file checked them: not expected
-    for (const std::string& s : imported->skipped)
-        std::cerr << "isoparm import: skipped " << s << "\n";
-    if (geom::Status st = scene::save_scene(document, o.output); !st) {
-        std::cerr << "isoparm import: " << st.error().message << "\n";
-        return 1;
+    // The scene written must be one the workstation and `isoparm render` can show: a part of
+    // a thousand faces at the default density would need gigabytes, so the density is lowered
+    // until it fits (or, where nothing fits, nothing is written).
+    const int density = ui::display_density_that_fits(document);
+    if (density == 0)
+        return fail("'" + o.input + "': " + ui::scene_over_budget(document, 2, {}) +
+                    " (at display density 2)");
+    if (density < document.view.display.density) {
+        std::cerr << "isoparm import: display density " << document.view.display.density
+                  << " lowered to " << density << " so that the " << document.objects.size()
+                  << " objects can be shown\n";
+        document.view.display.density = density;
     }
-    return 0;
+    return report_written("isoparm import: ", imported->skipped,
+                          scene::save_scene(document, o.output));
 }
 
 } // namespace
@@ -63,7 +74,10 @@ Action register_import_command(CLI::App& app) {
     sub->add_option("FILE", o->input, "the file to read: .igs/.iges, .stp/.step, .obj")->required();
     sub->add_option("-o,--output", o->output, "the scene to write (.json; - for standard output)")
         ->required();
-    return [o]() -> int { return run(*o); };
+    return [o]() -> int {
+        return run_memory_guarded([&o] { return run_unguarded(*o); }, "isoparm import: ",
+                                  " (importing '" + o->input + "'); nothing written");
+    };
 }
 
 } // namespace isoparm::app

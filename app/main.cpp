@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
     const isoparm::app::Action geom = isoparm::app::register_geom_command(app);
     const isoparm::app::Action export_scene = isoparm::app::register_export_command(app);
     const isoparm::app::Action import_file = isoparm::app::register_import_command(app);
+    const isoparm::app::Action check = isoparm::app::register_check_command(app);
 #ifdef ISOPARM_HAVE_GUI
     const isoparm::app::Action render = isoparm::app::register_render_command(app);
     const isoparm::app::Action gui = isoparm::app::register_gui_command(app);
@@ -33,12 +34,16 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        // --help and --version end here with 0; everything else is bad input: the message
+        // (which names the option and the value) and exit 2, as every subcommand's refusals.
+        const int status = app.exit(e);
+        return status == 0 ? 0 : 2;
     }
     for (CLI::App* sub : app.get_subcommands()) {
         if (sub->get_name() == "geom") return geom();
         if (sub->get_name() == "export") return export_scene();
         if (sub->get_name() == "import") return import_file();
+        if (sub->get_name() == "check") return check();
 #ifdef ISOPARM_HAVE_GUI
         if (sub->get_name() == "render") return render();
         if (sub->get_name() == "examples") return examples();

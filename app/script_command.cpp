@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "core/doc/animated.hpp"
 #include "core/json/out_of_memory.hpp"
 #include "core/scene/atomic_file.hpp"
 #include "core/scene/scene_io.hpp"
@@ -22,6 +23,7 @@
 #include "ui/view/camera.hpp"
 #include "ui/view/current_patch.hpp"
 #include "ui/view/doc_access.hpp"
+#include "ui/view/scene_budget.hpp"
 
 namespace isoparm::app {
 
@@ -72,32 +74,40 @@ std::string configure_shot(const scene::ScriptState& state, const std::tuple<int
         if (state.camera->zoom_percent) ctx.ui.zoom_after_fit = *state.camera->zoom_percent / 100.0;
     }
     ctx.ui.deboor.step = state.deboor_step;
+    if (state.animation && state.animation->target.kind == doc::AnimatedKind::deboor_step)
+        ctx.ui.deboor.step = doc::step_at(state.animation->target, state.animation->at);
     const doc::Object* current = nullptr;
     if (ui::current_surface(ctx.doc, &current)) ui::follow_indicator(ctx.doc, current->id);
     return "";
 }
 
-int run(const ScriptOptions& o) {
-    const std::string name = "isoparm script: ";
-    auto loaded = scene::load_script(o.file);
-    if (!loaded) {
-        std::cerr << name << o.file << ": " << loaded.error().message << where(loaded.error())
-                  << "\n";
-        return 2;
-    }
-    const scene::Script& script = *loaded;
+// --save and --out are checked before anything runs; returns why they are refused, or "".
+std::string refuse_output_paths(const ScriptOptions& o, const scene::Script& script) {
     if (!o.save.empty()) {
         geom::Status usable = scene::check_output_path(o.save);
         if (usable) usable = scene::check_output_is_not_input(o.save, {o.file, script.scene_name});
-        if (!usable) {
-            std::cerr << name << "--save: " << usable.error().message << "\n";
-            return 2;
-        }
+        if (!usable) return "--save: " + usable.error().message;
     }
+    // The pictures are written to --out and compared with --check: one folder for both would
+    // overwrite every golden image with the picture it is then compared with (a match, always).
+    if (!o.check.empty()) {
+        std::error_code same_ec;
+        const bool same = std::filesystem::equivalent(o.out, o.check, same_ec) ||
+                          std::filesystem::weakly_canonical(o.out, same_ec) ==
+                              std::filesystem::weakly_canonical(o.check, same_ec);
+        if (same)
+            return "--out '" + o.out + "' is the --check folder '" + o.check +
+                   "': the screenshots would replace the golden images they are compared "
+                   "with; give another --out; nothing was written";
+    }
+    return "";
+}
 
-    // Every step is tried first without writing anything: a step that cannot be carried out
-    // stops the script before its first screenshot.
-    {
+// Every step is tried first without writing anything: a step that cannot be carried out
+// stops the script before its first screenshot. Returns the exit code of a refusal, or 0.
+int dry_run(const ScriptOptions& o, const scene::Script& script, const std::string& name) {
+    json_io::arm_memory_reserve();
+    try {
         scene::ScriptState trial(script.start);
         const scene::ScriptResult dry = scene::run_script(script, trial, {}, /*dry_run=*/true);
         if (dry.stopped) {
@@ -105,18 +115,33 @@ int run(const ScriptOptions& o) {
                       << "; nothing was written\n";
             return 2;
         }
+    } catch (const std::bad_alloc&) {
+        std::cerr << name << json_io::out_of_memory_message << " (trying '" << o.file
+                  << "'); nothing was written\n";
+        return 1;
     }
+    return 0;
+}
 
+// The script's screenshot step: one headless session, made at the first picture.
+struct ShotTaker {
+    const ScriptOptions& o;
+    const scene::Script& script;
     std::unique_ptr<ui::HeadlessSession> session;
     CameraMemory cameras;
     std::string session_error;
     std::error_code ec;
-    scene::ScriptHooks hooks;
-    hooks.screenshot = [&](const scene::ScriptState& state,
-                           const scene::ScreenshotStep& shot) -> std::string {
+
+    std::string take(const scene::ScriptState& state, const scene::ScreenshotStep& shot) {
         if (!session) {
             std::filesystem::create_directories(o.out, ec);
             if (ec) return "cannot create the folder '" + o.out + "': " + ec.message();
+            // Under `ulimit -v` the driver crashes when its malloc fails: refused first, as
+            // `isoparm render` does.
+            if (std::string short_of =
+                    ui::memory_limit_problem(state.doc, ui::display_driver_bytes);
+                !short_of.empty())
+                return short_of;
             session = ui::HeadlessSession::create(session_error);
             if (!session) return session_error;
         }
@@ -128,13 +153,75 @@ int run(const ScriptOptions& o) {
         req.view = shot.view == scene::ShotView::view3d ? ui::ViewMode::view3d_only
                                                         : ui::ViewMode::workstation;
         const std::tuple<int, int, int> key{static_cast<int>(shot.view), shot.width, shot.height};
-        req.configure = [&state, &cameras, key](ui::AppContext& ctx) {
+        req.configure = [&state, this, key](ui::AppContext& ctx) {
             return configure_shot(state, key, cameras, ctx);
         };
-        req.rendered = [&cameras, key](const ui::AppContext& ctx) {
+        req.rendered = [this, key](const ui::AppContext& ctx) {
             cameras.fitted[key] = ctx.ui.camera;
         };
-        return session->render(state.doc, req);
+        if (!state.animation) return session->render(state.doc, req);
+        // An animation's frame: its value at the step's phase, shown on a copy (never an edit).
+        doc::Document shown = state.doc;
+        const doc::AnimationTarget& t = state.animation->target;
+        auto preview = doc::show_preview(shown, t, doc::value_at(t, state.animation->at),
+                                         doc::indicator_at(t, state.animation->at));
+        if (!preview) return preview.error().message;
+        return session->render(shown, req);
+    }
+};
+
+// --check: every screenshot against its golden image; returns the differing ones, each with
+// why (and a diff picture beside it where the sizes agree).
+std::vector<std::string> compare_with_golden(const ScriptOptions& o,
+                                             const std::vector<std::string>& screenshots) {
+    std::vector<std::string> mismatches;
+    for (const std::string& shot : screenshots) {
+        const std::string golden_path = (std::filesystem::path(o.check) / shot).string();
+        const std::string actual_path = (std::filesystem::path(o.out) / shot).string();
+        std::string error;
+        const auto golden = ui::read_image(golden_path, error);
+        const auto actual = golden ? ui::read_image(actual_path, error) : std::nullopt;
+        if (!golden || !actual) {
+            mismatches.push_back(shot + ": " + error);
+            continue;
+        }
+        const ui::ImageComparison c =
+            ui::compare_images(*golden, *actual, o.tolerance, o.max_fraction);
+        std::cout << shot << ": " << c.summary << "\n";
+        if (c.match) continue;
+        std::string line = shot + ": " + c.summary;
+        const std::string diff =
+            (std::filesystem::path(o.out) / std::filesystem::path(shot).stem()).string() +
+            ".diff.png";
+        if (c.same_size) {
+            if (const std::string problem = ui::write_diff_image(diff, *golden, c); problem.empty())
+                line += " (diff: " + diff + ")";
+        }
+        mismatches.push_back(line);
+    }
+    return mismatches;
+}
+
+int run(const ScriptOptions& o) {
+    const std::string name = "isoparm script: ";
+    auto loaded = scene::load_script(o.file);
+    if (!loaded) {
+        std::cerr << name << o.file << ": " << loaded.error().message << where(loaded.error())
+                  << "\n";
+        return 2;
+    }
+    const scene::Script& script = *loaded;
+    if (const std::string refused = refuse_output_paths(o, script); !refused.empty()) {
+        std::cerr << name << refused << "\n";
+        return 2;
+    }
+    if (const int refused = dry_run(o, script, name)) return refused;
+
+    ShotTaker shots{o, script, nullptr, {}, {}, {}};
+    scene::ScriptHooks hooks;
+    hooks.screenshot = [&shots](const scene::ScriptState& state,
+                                const scene::ScreenshotStep& shot) {
+        return shots.take(state, shot);
     };
     hooks.caption = [](const scene::ScriptState&, const scene::Step& step) {
         std::cout << step.path << ": " << std::get<scene::CaptionStep>(step.action).text << "\n";
@@ -162,34 +249,8 @@ int run(const ScriptOptions& o) {
         }
     }
 
-    std::vector<std::string> mismatches;
-    if (!o.check.empty()) {
-        for (const std::string& shot : result.screenshots) {
-            const std::string golden_path = (std::filesystem::path(o.check) / shot).string();
-            const std::string actual_path = (std::filesystem::path(o.out) / shot).string();
-            std::string error;
-            const auto golden = ui::read_image(golden_path, error);
-            const auto actual = golden ? ui::read_image(actual_path, error) : std::nullopt;
-            if (!golden || !actual) {
-                mismatches.push_back(shot + ": " + error);
-                continue;
-            }
-            const ui::ImageComparison c =
-                ui::compare_images(*golden, *actual, o.tolerance, o.max_fraction);
-            std::cout << shot << ": " << c.summary << "\n";
-            if (c.match) continue;
-            std::string line = shot + ": " + c.summary;
-            const std::string diff =
-                (std::filesystem::path(o.out) / std::filesystem::path(shot).stem()).string() +
-                ".diff.png";
-            if (c.same_size) {
-                if (const std::string problem = ui::write_diff_image(diff, *golden, c);
-                    problem.empty())
-                    line += " (diff: " + diff + ")";
-            }
-            mismatches.push_back(line);
-        }
-    }
+    const std::vector<std::string> mismatches =
+        o.check.empty() ? std::vector<std::string>{} : compare_with_golden(o, result.screenshots);
     for (const std::string& f : result.failed_expects) std::cerr << "expect failed: " << f << "\n";
     for (const std::string& m : mismatches) std::cerr << "screenshot differs: " << m << "\n";
     std::cout << script.steps.size() << " steps, " << result.screenshots.size() << " screenshots"

@@ -131,7 +131,7 @@ std::string apply_view_options(const ViewOptions& o, ui::AppContext& ctx) {
                    (t ? " (the levels of the selected triangle's de Casteljau construction)"
                       : " (p_u + p_v + 1 steps for the current surface)");
         d.view.display.deboor = true;
-        ctx.ui.deboor.step = o.deboor_step;
+        ctx.ui.deboor.step = static_cast<int>(o.deboor_step);
     }
     if (!o.camera.empty()) {
         const auto c = numbers(o.camera, 2, 3);

@@ -18,7 +18,9 @@ struct ViewOptions {
     std::string indicator, select, style, camera, analysis;
     // Display toggles: 0 = as the scene says, > 0 on, < 0 off (--x / --no-x).
     int points = 0, net = 0, ids = 0, knot_curves = 0, indicator_point = 0, deboor = 0;
-    int deboor_step = -1; // de Boor's construction up to this step (-1: all)
+    // De Boor's construction up to this step (-1: all); wide, so that any number typed is
+    // checked against the scene rather than failing to convert.
+    long long deboor_step = -1;
 };
 
 void add_view_options(CLI::App* sub, ViewOptions& o);

@@ -6,7 +6,11 @@
 #include "core/scene/atomic_file.hpp"
 #include "core/scene/scene_io.hpp"
 #include "core/scene/script.hpp"
+#include "ui/animation_actions.hpp"
+#include "ui/course_actions.hpp"
 #include "ui/lesson.hpp"
+#include "ui/platform/files.hpp"
+#include "ui/view/course_files.hpp"
 #include "ui/view/doc_access.hpp"
 #include "ui/view/scene_budget.hpp"
 #include "ui/view/scene_builder.hpp"
@@ -60,6 +64,10 @@ void adopt(AppContext& ctx, doc::Document d, const std::string& path) {
 
 } // namespace
 
+void adopt_document(AppContext& ctx, doc::Document d, const std::string& path) {
+    adopt(ctx, std::move(d), path);
+}
+
 void request_new_document(AppContext& ctx) {
     guard(ctx, {PendingAction::Kind::new_document, {}});
 }
@@ -97,6 +105,12 @@ void run_pending(AppContext& ctx) {
     }
     case PendingAction::Kind::open_lesson:
         open_lesson(ctx, a.path);
+        break;
+    case PendingAction::Kind::open_exercise:
+        open_exercise(ctx, a.path);
+        break;
+    case PendingAction::Kind::play_draft:
+        play_draft_from(ctx, a.stop);
         break;
     case PendingAction::Kind::quit:
         ctx.ui.quit_now = true;
@@ -162,6 +176,7 @@ void request_save_as(AppContext& ctx) {
 }
 
 bool save_as(AppContext& ctx, const std::string& path) {
+    suspend_animation(ctx); // the scene as it is, not an animation's frame
     const geom::Status st = scene::save_scene(ctx.doc, path);
     if (!st.ok()) {
         show_error(ctx, "Could not save scene",
@@ -174,6 +189,7 @@ bool save_as(AppContext& ctx, const std::string& path) {
     add_recent(ctx.settings.recent, std::filesystem::absolute(path).lexically_normal().string());
     store_settings(ctx);
     ctx.ui.status = "Saved " + path;
+    files::hand_over(path); // the browser downloads it
     return true;
 }
 
@@ -195,6 +211,9 @@ void redo(AppContext& ctx) {
 
 void request_open_lesson_dialog(AppContext& ctx) {
     FileDialog& fd = open_file_dialog(ctx, FileDialog::Mode::open_lesson);
+    // In the lessons: the user's own when there are any, else the shipped ones.
+    fd.directory = lesson_dialog_dir();
+    fd.name.clear();
     std::error_code ec;
     if (fd.directory.empty()) fd.directory = std::filesystem::current_path(ec).string();
 }
@@ -220,6 +239,10 @@ bool open_lesson(AppContext& ctx, const std::string& path) {
     auto lesson = std::make_unique<Lesson>();
     lesson->path = path;
     lesson->script = std::move(script).value();
+    prepare_lesson(*lesson);
+    // A lesson opened to be played, not edited: the editor (if open) gives it the view. Edit...
+    // in the caption box brings it back on this lesson.
+    ctx.ui.course.editor.open = false;
     // The lesson's scene is a copy, untitled: saving never writes over the lesson's files.
     adopt(ctx, lesson->script.start, "");
     ctx.ui.lesson = std::move(lesson);
@@ -231,6 +254,7 @@ void restart_lesson(AppContext& ctx) {
     if (!ctx.ui.lesson) return;
     std::unique_ptr<Lesson> lesson = std::move(ctx.ui.lesson);
     lesson->next = 0;
+    lesson->stop = 0;
     lesson->caption.clear();
     adopt(ctx, lesson->script.start, "");
     ctx.ui.lesson = std::move(lesson);
@@ -278,6 +302,7 @@ bool save_recording(AppContext& ctx, const std::string& path) {
     ctx.ui.finished_recording.reset();
     ctx.ui.status = "Recording saved: " + path + " (" + std::to_string(steps) +
                     " steps; isoparm script replays it)";
+    files::hand_over(path);
     return true;
 }
 
@@ -313,7 +338,8 @@ void show_error(AppContext& ctx, const std::string& title, const std::string& me
 }
 
 void store_settings(AppContext& ctx) {
-    if (ctx.remember_settings) save_settings(ctx.settings, settings_path());
+    if (ctx.remember_settings && save_settings(ctx.settings, settings_path()))
+        files::keep_settings(); // the browser's local storage
 }
 
 } // namespace isoparm::ui

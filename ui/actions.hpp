@@ -16,6 +16,9 @@ void request_quit(AppContext& ctx);
 // Runs a pending action without asking (the user chose to discard changes).
 void run_pending(AppContext& ctx);
 
+// The document becomes `d` with a fresh history (a lesson's or an exercise's untitled copy
+// when `path` is empty): a recording ends and is offered for saving, a playing lesson closes.
+void adopt_document(AppContext& ctx, doc::Document d, const std::string& path);
 // Loads a scene; on error shows the error dialog and keeps the current document.
 bool open_file(AppContext& ctx, const std::string& path);
 void new_document(AppContext& ctx);

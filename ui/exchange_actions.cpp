@@ -7,6 +7,8 @@
 #include "core/scene/export_document.hpp"
 #include "core/scene/import_document.hpp"
 #include "ui/actions.hpp"
+#include "ui/platform/files.hpp"
+#include "ui/view/scene_budget.hpp"
 
 namespace isoparm::ui {
 
@@ -54,7 +56,7 @@ bool export_visible_objects(AppContext& ctx, const std::string& path, std::strin
     const auto format = scene::export_format_for(path, false);
     if (!format) {
         error = "Cannot tell the format of '" + fs::path(path).filename().string() +
-                "' from its extension (" + scene::export_extensions + ").";
+                "' from its extension (" + scene::export_extensions() + ").";
         return false;
     }
     std::vector<std::string> inputs;
@@ -82,6 +84,7 @@ bool export_visible_objects(AppContext& ctx, const std::string& path, std::strin
     }
     ctx.ui.status = std::string("Exported ") + scene::export_format_label(*format) + " " + path +
                     skipped_summary(result->skipped);
+    files::hand_over(path); // the browser downloads it
     return true;
 }
 
@@ -89,6 +92,16 @@ bool import_objects(AppContext& ctx, const std::string& path, std::string& error
     auto imported = scene::import_file(path);
     if (!imported) {
         error = imported.error().message;
+        return false;
+    }
+    // The scene with the new objects must still be one the window can show: the density is
+    // lowered until it fits, checked before the import is carried out; where nothing fits the
+    // import is refused and the scene is left as it was.
+    const int density = display_density_that_fits(ctx.doc, imported->objects);
+    if (density == 0) {
+        error = "'" + path + "': with its objects " +
+                scene_over_budget(ctx.doc, 2, imported->objects) +
+                " (at display density 2); nothing imported";
         return false;
     }
     const std::size_t count = imported->objects.size();
@@ -99,10 +112,17 @@ bool import_objects(AppContext& ctx, const std::string& path, std::string& error
         return false;
     }
     ctx.seal();
+    std::string lowered;
+    if (density < ctx.doc.view.display.density) {
+        // Said before the path, which the status bar may cut.
+        lowered = " (display density lowered from " + std::to_string(ctx.doc.view.display.density) +
+                  " to " + std::to_string(density) + " to show them)";
+        ctx.doc.view.display.density = density;
+    }
     ctx.doc.view.selection = {ctx.doc.objects[ctx.doc.objects.size() - count].id, -1, -1};
     fit_view(ctx);
     ctx.ui.status = "Imported " + std::to_string(count) + (count == 1 ? " object" : " objects") +
-                    " from " + path + skipped_summary(imported->skipped);
+                    lowered + " from " + path + skipped_summary(imported->skipped);
     return true;
 }
 

@@ -4,11 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <filesystem>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include "core/scene/atomic_file.hpp"
 #include "core/scene/script.hpp"
@@ -20,9 +16,8 @@
 #include "ui/headless/view3d_figure_capture.hpp"
 #include "ui/image/png_writer.hpp"
 #include "ui/lesson.hpp"
+#include "ui/platform/files.hpp"
 #include "ui/view/figures.hpp"
-
-extern char** environ;
 
 namespace isoparm::ui {
 
@@ -86,67 +81,6 @@ std::optional<Pixels> take_picture(const AppContext& ctx, PictureTarget target, 
                     static_cast<int>(r.h));
     if (!cut) error = "that panel is not shown";
     return cut;
-}
-
-// The PNG on the clipboard through the desktop's own tool (GLFW's clipboard holds text only):
-// xclip on X11, wl-copy on Wayland. "" or why not.
-std::string copy_png_to_clipboard(const std::string& png) {
-    std::vector<std::vector<std::string>> tools;
-    if (std::getenv("WAYLAND_DISPLAY")) tools.push_back({"wl-copy", "--type", "image/png"});
-    if (std::getenv("DISPLAY"))
-        tools.push_back({"xclip", "-selection", "clipboard", "-t", "image/png", "-i"});
-    for (const auto& tool : tools) {
-        bool found = false;
-        if (const char* path = std::getenv("PATH")) {
-            std::string dirs = path;
-            std::size_t start = 0;
-            while (start <= dirs.size() && !found) {
-                const std::size_t end = dirs.find(':', start);
-                const std::string dir = dirs.substr(start, end - start);
-                found = ::access((fs::path(dir) / tool[0]).c_str(), X_OK) == 0;
-                if (end == std::string::npos) break;
-                start = end + 1;
-            }
-        }
-        if (!found) continue;
-        int fds[2];
-        if (::pipe(fds) != 0) return "cannot start " + tool[0];
-        posix_spawn_file_actions_t actions;
-        posix_spawn_file_actions_init(&actions);
-        posix_spawn_file_actions_adddup2(&actions, fds[0], STDIN_FILENO);
-        posix_spawn_file_actions_addclose(&actions, fds[1]);
-        std::vector<char*> argv;
-        for (const std::string& a : tool) argv.push_back(const_cast<char*>(a.c_str()));
-        argv.push_back(nullptr);
-        pid_t pid = 0;
-        const int spawned =
-            posix_spawnp(&pid, tool[0].c_str(), &actions, nullptr, argv.data(), environ);
-        posix_spawn_file_actions_destroy(&actions);
-        ::close(fds[0]);
-        if (spawned != 0) {
-            ::close(fds[1]);
-            return "cannot start " + tool[0];
-        }
-        // A tool that stops reading must not kill the workstation with SIGPIPE.
-        struct sigaction ignore {
-        }, old{};
-        ignore.sa_handler = SIG_IGN;
-        sigaction(SIGPIPE, &ignore, &old);
-        std::size_t written = 0;
-        while (written < png.size()) {
-            const ssize_t n = ::write(fds[1], png.data() + written, png.size() - written);
-            if (n <= 0) break;
-            written += static_cast<std::size_t>(n);
-        }
-        ::close(fds[1]);
-        sigaction(SIGPIPE, &old, nullptr);
-        int status = 0;
-        ::waitpid(pid, &status, 0); // xclip forks to serve the selection; the parent returns
-        if (written < png.size() || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
-            return tool[0] + " did not take the picture";
-        return "";
-    }
-    return "no clipboard for pictures here: install xclip (X11) or wl-clipboard (Wayland)";
 }
 
 FigureOptions figure_options(const AppContext& ctx) {
@@ -232,6 +166,7 @@ std::string export_now(AppContext& ctx) {
             return problem;
         ctx.ui.status = "Wrote " + path + " (" + std::to_string(p->width) + "x" +
                         std::to_string(p->height) + ")";
+        files::hand_over(path); // the browser downloads it
         return "";
     }
     case MediaExportState::Kind::figure: {
@@ -259,6 +194,7 @@ std::string export_now(AppContext& ctx) {
         if (!d) return d.error().message;
         if (std::string problem = write_drawing(*d, path); !problem.empty()) return problem;
         ctx.ui.status = "Wrote " + path;
+        files::hand_over(path);
         return "";
     }
     case MediaExportState::Kind::animation: {
@@ -323,7 +259,7 @@ void run_media_exports(AppContext& ctx) {
         const auto p = take_picture(ctx, PictureTarget::view3d, 0, 0, 1, false, error);
         const auto png = p ? encode_png(p->width, p->height, p->rgba) : std::nullopt;
         if (p && !png) error = "out of memory encoding the picture";
-        if (png) error = copy_png_to_clipboard(*png);
+        if (png) error = files::copy_picture(*png);
         ctx.ui.status = error.empty() ? "Copied the 3D view (" + std::to_string(p->width) + "x" +
                                             std::to_string(p->height) + ") to the clipboard"
                                       : "Copy picture: " + error;

@@ -10,6 +10,8 @@
 #include "core/doc/restore_command.hpp"
 #include "core/scene/scene_io.hpp"
 #include "ui/actions.hpp"
+#include "ui/theme.hpp"
+#include "ui/ui_report.hpp"
 #include "ui/view/doc_access.hpp"
 
 namespace isoparm::ui {
@@ -68,10 +70,7 @@ void draw_recovery_dialog(AppContext& ctx) {
         if (r.offers.empty() || ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId)) return;
         ImGui::OpenPopup(title);
     }
-    const ImGuiViewport* vp = ImGui::GetMainViewport();
-    ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x * 0.5f, vp->Pos.y + vp->Size.y * 0.5f),
-                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowSize(ImVec2(480 * ctx.ui.scale(), 0));
+    center_next_window(480 * ctx.ui.scale());
     if (!ImGui::BeginPopupModal(title, nullptr, 0)) return;
     if (r.offers.empty()) { // answered elsewhere (cannot happen today; keeps the popup honest)
         ImGui::CloseCurrentPopup();
@@ -82,9 +81,9 @@ void draw_recovery_dialog(AppContext& ctx) {
     const std::string name = offer.origin.empty()
                                  ? std::string("an untitled scene")
                                  : std::filesystem::path(offer.origin).filename().string();
-    ImGui::TextWrapped("isoparm did not close normally last time. Unsaved changes to %s were "
-                       "autosaved at %s.",
-                       name.c_str(), local_time(offer.written).c_str());
+    text_wrapped("isoparm did not close normally last time. Unsaved changes to %s were "
+                 "autosaved at %s.",
+                 name.c_str(), local_time(offer.written).c_str());
     if (!offer.origin.empty()) ImGui::TextDisabled("%s", offer.origin.c_str());
     if (offer.older_than_scene)
         ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1),
@@ -93,10 +92,12 @@ void draw_recovery_dialog(AppContext& ctx) {
     if (r.offers.size() > 1)
         ImGui::TextDisabled("%zu more autosaved scenes follow.", r.offers.size() - 1);
     ImGui::Spacing();
-    ImGui::TextWrapped("Restore opens them as unsaved changes (Undo returns to %s).",
-                       offer.origin.empty() ? "a new scene" : "the saved scene");
+    text_wrapped("Restore opens them as unsaved changes (Undo returns to %s).",
+                 offer.origin.empty() ? "a new scene" : "the saved scene");
     ImGui::Spacing();
-    if (ImGui::Button("Restore")) {
+    const bool restore = ImGui::Button("Restore");
+    report_item("recovery/restore");
+    if (restore) {
         ImGui::CloseCurrentPopup();
         r.offers.erase(r.offers.begin());
         hold_all(r); // one document at a time: the others are offered at the next start

@@ -67,7 +67,7 @@ ActionState insert_knot_state(const AppContext& ctx, geom::Dir dir) {
     const Current c = current(ctx, dir);
     if (!c.surface) return {std::string("Insert knot in ") + dir_name(dir), false, "no surface"};
     std::string label =
-        std::string("Insert knot ") + dir_name(dir) + " = " + geom::format_number(c.t);
+        std::string("Insert knot ") + dir_name(dir) + " = " + geom::format_short(c.t);
     const int m = geom::multiplicity(c.surface->knots(dir), c.t);
     if (m > 0) label += " (now x" + std::to_string(m) + ")";
     // A knot of multiplicity p already leaves only C0 there (Piegl & Tiller sec. 2.3): another
@@ -90,7 +90,7 @@ ActionState elevate_state(const AppContext& ctx, geom::Dir dir) {
 ActionState split_state(const AppContext& ctx, geom::Dir dir) {
     const Current c = current(ctx, dir);
     if (!c.surface) return {std::string("Split along ") + dir_name(dir), false, "no surface"};
-    return state_of(std::string("Split at ") + dir_name(dir) + " = " + geom::format_number(c.t),
+    return state_of(std::string("Split at ") + dir_name(dir) + " = " + geom::format_short(c.t),
                     *doc::split_object(c.object->id, dir, c.t), ctx.doc, geom::ErrorCode::domain,
                     "move the indicator inside the patch, not on its edge, to split there");
 }
@@ -111,8 +111,7 @@ const ActionNote* current_action_note(const AppContext& ctx) {
 void insert_knot_at_indicator(AppContext& ctx, geom::Dir dir) {
     const Current c = current(ctx, dir);
     if (!c.surface) return;
-    const std::string what =
-        std::string("knot ") + dir_name(dir) + " = " + geom::format_number(c.t);
+    const std::string what = std::string("knot ") + dir_name(dir) + " = " + geom::format_short(c.t);
     // Refused before the command runs, with the reason the menu gives.
     const int before = geom::multiplicity(c.surface->knots(dir), c.t);
     if (const ActionState state = insert_knot_state(ctx, dir); !state.enabled) {

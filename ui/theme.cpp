@@ -1,11 +1,16 @@
 // Themes and font sizes.
 #include "ui/theme.hpp"
 
+#include <algorithm>
+#include <backends/imgui_impl_opengl3.h>
 #include <cmath>
+#include <cstdarg>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <imgui.h>
-#include <imgui_impl_opengl3.h>
+
+#include "ui/view/text_wrap.hpp"
 
 namespace isoparm::ui {
 
@@ -50,6 +55,7 @@ void apply_theme(bool presentation, float scale) {
 namespace {
 
 ImFont* g_number_font = nullptr;
+ImFont* g_bold_font = nullptr;
 
 // Debian's fonts-dejavu-core; ISOPARM_FONT_DIR overrides the folder (tests, other systems).
 std::string font_dir() {
@@ -67,6 +73,7 @@ std::string rebuild_fonts(float scale) {
     ImGuiIO& io = ImGui::GetIO();
     io.Fonts->Clear();
     g_number_font = nullptr;
+    g_bold_font = nullptr;
     const float pixels = std::round(base_font_pixels * scale);
     const std::string sans = font_dir() + "/DejaVuSans.ttf";
     const std::string mono = font_dir() + "/DejaVuSansMono.ttf";
@@ -84,8 +91,12 @@ std::string rebuild_fonts(float scale) {
         io.Fonts->AddFontDefault(&fallback);
         note = "DejaVu Sans not found in " + font_dir() +
                " (install fonts-dejavu-core): using the built-in bitmap font";
-    } else if (readable(mono)) {
-        g_number_font = io.Fonts->AddFontFromFileTTF(mono.c_str(), pixels, &cfg, ranges);
+    } else {
+        if (readable(mono))
+            g_number_font = io.Fonts->AddFontFromFileTTF(mono.c_str(), pixels, &cfg, ranges);
+        // Lesson captions' **bold** (ui/panels/rich_text.cpp).
+        if (const std::string bold = font_dir() + "/DejaVuSans-Bold.ttf"; readable(bold))
+            g_bold_font = io.Fonts->AddFontFromFileTTF(bold.c_str(), pixels, &cfg, ranges);
     }
     io.Fonts->Build();
     ImGui_ImplOpenGL3_DestroyFontsTexture();
@@ -93,18 +104,68 @@ std::string rebuild_fonts(float scale) {
     return note;
 }
 
+namespace {
+
+void wrapped_lines(const char* text, float width) {
+    const MeasureText measure = [](std::string_view s) {
+        const ImVec2 v = ImGui::CalcTextSize(s.data(), s.data() + s.size());
+        return glm::vec2(v.x, v.y);
+    };
+    // One text item of several lines, as ImGui::TextWrapped lays it out (no item spacing
+    // between the lines).
+    std::string joined;
+    for (const std::string& line : wrap_at_spaces(text, std::max(width, 1.f), measure)) {
+        if (!joined.empty()) joined += '\n';
+        joined += line;
+    }
+    ImGui::TextUnformatted(joined.c_str());
+}
+
+} // namespace
+
+void center_next_window(float width) {
+    const ImGuiViewport* vp = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x * 0.5f, vp->Pos.y + vp->Size.y * 0.5f),
+                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    if (width > 0) ImGui::SetNextWindowSize(ImVec2(width, 0));
+}
+
+bool begin_centered_modal(const char* id, bool& requested, float width, ImGuiWindowFlags flags) {
+    if (requested) {
+        ImGui::OpenPopup(id);
+        requested = false;
+    }
+    center_next_window(width);
+    return ImGui::BeginPopupModal(id, nullptr, flags);
+}
+
 void wrapped_tooltip(const std::string& text) {
     ImGui::BeginTooltip();
-    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
-    ImGui::TextUnformatted(text.c_str());
-    ImGui::PopTextWrapPos();
+    wrapped_lines(text.c_str(), ImGui::GetFontSize() * 28.0f);
     ImGui::EndTooltip();
+}
+
+void text_wrapped(const char* fmt, ...) {
+    va_list args, again;
+    va_start(args, fmt);
+    va_copy(again, args);
+    const int n = std::vsnprintf(nullptr, 0, fmt, args);
+    va_end(args);
+    std::string text(static_cast<std::size_t>(std::max(n, 0)) + 1, '\0');
+    std::vsnprintf(text.data(), text.size(), fmt, again);
+    va_end(again);
+    text.pop_back();
+    wrapped_lines(text.c_str(), ImGui::GetContentRegionAvail().x);
 }
 
 ImVec4 error_text_color() {
     const ImVec4 bg = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg);
     const bool light = 0.2126f * bg.x + 0.7152f * bg.y + 0.0722f * bg.z > 0.5f;
     return light ? ImVec4(0.70f, 0.05f, 0.0f, 1) : ImVec4(1.0f, 0.62f, 0.35f, 1);
+}
+
+ImFont* bold_font() {
+    return g_bold_font;
 }
 
 ImFont* number_font() {

@@ -2,6 +2,7 @@
 // HiDPI, with DejaVu Sans (and DejaVu Sans Mono for numbers) rasterised at the size in use.
 #pragma once
 
+#include <imgui.h>
 #include <string>
 
 struct ImFont;
@@ -23,7 +24,18 @@ std::string rebuild_fonts(float scale);
 ImVec4 error_text_color();
 // A tooltip of text wrapped at about 40 characters, so a long refusal stays on screen.
 void wrapped_tooltip(const std::string& text);
+// ImGui::TextWrapped, but broken at spaces only (ui/view/text_wrap.hpp): ImGui 1.86 also breaks
+// after '.', which cut "0.41026" into "0." and "41026". One item, for hover checks.
+void text_wrapped(const char* fmt, ...) IM_FMTARGS(1);
+// The next window centred in the main viewport, `width` pixels wide (0: as wide as its content).
+void center_next_window(float width);
+// A centred modal popup `id`, `width` pixels wide (0: as its content): opened once when
+// `requested` (which is cleared), then begun; true while it is open (end it with EndPopup).
+bool begin_centered_modal(const char* id, bool& requested, float width,
+                          ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize);
 // DejaVu Sans Mono at the same size, for columns of numbers (the default font when missing).
 ImFont* number_font();
+// DejaVu Sans Bold at the same size, or null where it is missing (bold then shows in colour).
+ImFont* bold_font();
 
 } // namespace isoparm::ui

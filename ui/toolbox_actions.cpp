@@ -8,7 +8,7 @@
 
 #include "core/doc/commands.hpp"
 #include "core/geom/knots.hpp"
-#include "ui/panels/curve_designer.hpp"
+#include "ui/theme.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/doc_access.hpp"
 
@@ -30,7 +30,7 @@ Target target(const AppContext& ctx, geom::Dir dir, bool curve) {
         const doc::CurveObject* c = o ? o->curve_object() : nullptr;
         if (!c) return out;
         out = {o, &c->curve.knots, c->curve.degree, c->curve.count(),
-               curve_designer::trace_param(ctx, c->curve)};
+               ctx.ui.curve.trace_param(c->curve)};
         return out;
     }
     const geom::Surface* s = current_surface(ctx.doc, &out.object);
@@ -49,9 +49,7 @@ std::string param_name(geom::Dir dir, bool curve) {
 
 // Four significant digits in a menu; the command gets the knot's exact value.
 std::string where(geom::Dir dir, bool curve, double t) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.4g", t);
-    return param_name(dir, curve) + " = " + buf;
+    return param_name(dir, curve) + " = " + geom::format_short(t);
 }
 
 const char* direction_suffix(geom::Dir dir, bool curve) {
@@ -182,16 +180,7 @@ void request_convert(AppContext& ctx, geom::SplineType to, bool curve) {
 
 void draw_convert_dialog(AppContext& ctx) {
     ConvertQuestion& q = ctx.ui.toolbox.convert;
-    const char* id = "Convert?";
-    if (q.open) {
-        ImGui::OpenPopup(id);
-        q.open = false;
-    }
-    const ImGuiViewport* vp = ImGui::GetMainViewport();
-    ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x * 0.5f, vp->Pos.y + vp->Size.y * 0.5f),
-                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowSize(ImVec2(460 * ctx.ui.scale(), 0));
-    if (!ImGui::BeginPopupModal(id, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    if (!begin_centered_modal("Convert?", q.open, 460 * ctx.ui.scale())) return;
     const doc::Object* o = ctx.doc.find(q.object);
     if (!o) {
         ImGui::CloseCurrentPopup();
@@ -200,7 +189,7 @@ void draw_convert_dialog(AppContext& ctx) {
     }
     ImGui::Text("Convert '%s' to %s?", o->name.c_str(), geom::label_of(q.to));
     ImGui::Separator();
-    ImGui::TextWrapped("%s", q.text.c_str());
+    text_wrapped("%s", q.text.c_str());
     ImGui::TextDisabled("Edit > Undo takes it back.");
     ImGui::Spacing();
     const bool convert = ImGui::Button("Convert");

@@ -4,6 +4,8 @@
 #include "core/doc/commands.hpp"
 #include "core/doc/commands_triangle.hpp"
 #include "core/doc/placement.hpp"
+#include "ui/actions.hpp"
+#include "ui/view/doc_access.hpp"
 
 namespace isoparm::ui {
 
@@ -47,7 +49,7 @@ void new_triangle(AppContext& ctx, int degree, bool rational) {
         return;
     }
     doc::Object o;
-    o.name = "triangle";
+    o.name = fresh_name(ctx.doc, "triangle");
     o.shape = doc::TriangleObject{std::move(patch).value()};
     doc::place_beside_scene(ctx.doc, o.shape);
     ctx.seal();
@@ -56,6 +58,7 @@ void new_triangle(AppContext& ctx, int degree, bool rational) {
         const int i = degree / 3, j = degree / 3;
         ctx.doc.view.selection = {ctx.doc.objects.back().id, i, j};
         ctx.doc.view.barycentric = {1.0 / 3, 1.0 / 3, 1.0 / 3};
+        fit_view(ctx); // beside the scene: the camera takes it in
         note_action(ctx, "Added a degree-" + std::to_string(degree) + " triangular patch", false);
     }
     ctx.seal();

@@ -2,9 +2,11 @@
 // data. None of it is document data and none of it is undoable.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -14,17 +16,21 @@
 #include <glm/vec3.hpp>
 
 #include "core/doc/fit.hpp"
+#include "core/geom/knots.hpp"
 #include "core/geom/types.hpp"
 #include "core/scene/autosave.hpp"
 #include "core/scene/recorder.hpp"
+#include "ui/course_state.hpp"
 #include "ui/lesson.hpp"
 #include "ui/media_export.hpp"
+#include "ui/modeler_state.hpp"
 #include "ui/view/camera.hpp"
 #include "ui/view/canvas_map.hpp"
 #include "ui/view/denominator_view.hpp"
 #include "ui/view/layout.hpp"
 #include "ui/view/picking.hpp"
 #include "ui/view/scene_draw.hpp"
+#include "ui/view/stage.hpp"
 #include "ui/view/triangle_denominator.hpp"
 #include "ui/view/triangle_domain.hpp"
 
@@ -62,6 +68,9 @@ struct PlaneDrag {
 
 struct NewSurfaceForm {
     int rows = 5, cols = 5, degree_u = 3, degree_v = 3;
+    // The degrees chosen for B-spline and NURBS types: a Bezier type shows rows - 1 and
+    // cols - 1 without forgetting them, so switching back restores them.
+    int spline_degree_u = 3, spline_degree_v = 3;
     int type = 3; // geom::SplineType: 0 bezier, 1 rational bezier, 2 bspline, 3 nurbs
     bool open = false;
     std::string error;
@@ -75,8 +84,10 @@ struct FileDialog {
         save_recording,
         open_lesson,
         load_points,
-        export_file, // File > Export... (ui/exchange_actions.hpp)
-        import_file  // File > Import...
+        export_file,   // File > Export... (ui/exchange_actions.hpp)
+        import_file,   // File > Import...
+        save_lesson,   // the lesson editor's Save as (ui/course_actions.hpp)
+        open_exercise, // Lessons > Exercises > Open exercise...
     } mode = Mode::closed;
     bool just_opened = false;
     std::string directory;
@@ -92,9 +103,12 @@ struct PendingAction {
         open_file,
         open_dialog,
         open_lesson,
+        open_exercise,
+        play_draft, // the lesson editor's Play from here, from stop `stop`
         quit
     } kind = Kind::none;
     std::string path;
+    std::size_t stop = 0;
 };
 
 // R_ij heat map samples, recomputed only when the surface or the point changes.
@@ -138,7 +152,11 @@ struct CurveDesignerState {
     int frame_plane = -1;
     glm::dvec2 frame_lo{0}, frame_hi{0};
     int drag_knot = -1; // knot being dragged on the knot strip, -1 none
-    bool trace = true;  // show de Boor's construction at trace_t
+    // The canvas's own zoom and pan over the kept framing (wheel, right or middle drag); Fit
+    // (the button, or F over the canvas) goes back to the framing.
+    double view_zoom = 1;
+    glm::dvec2 view_pan{0};
+    bool trace = true;                                     // show de Boor's construction at trace_t
     bool comb = false, osculating = false, frenet = false; // curvature at a glance
     double trace_t = 0.4;                                  // normalised to [0, 1] over the domain
     double insert_t = 0.5;                                 // knot insertion parameter (normalised)
@@ -153,8 +171,16 @@ struct CurveDesignerState {
     double angle = 360, swing_scale = 1;
     int skin_degree = 0, parametrization = 0, sections = 16;
     int gordon_u_count = 2;
+    int iso_dir = 0;           // isocurve: 0 u, 1 v
+    double iso_t = 0.5;        // isocurve: where, in [0, 1] over the domain
+    std::uint64_t editing = 0; // Edit construction: the object whose recipe the dialog changes
     std::string note;  // the last construction's report (deviation, parameters, compatibility)
     std::string error; // why the last Build was refused, shown in the dialog until the next
+
+    // The curve's parameter at the normalised trace position.
+    double trace_param(const geom::Curve& c) const {
+        return denormalize_param(geom::domain(c), std::clamp(trace_t, 0.0, 1.0));
+    }
 };
 
 // De Boor's construction shown one level at a time: the u-stage's levels over all
@@ -270,6 +296,19 @@ struct BlossomState {
     int span = -1, v_span = -1;
 };
 
+// The stage (ui/workstation.cpp): one teaching view at full size in the main area, or the
+// four-view layout (3D + xy + xz + yz); the zoom and pan of the canvases shown there.
+struct StageState {
+    StageView view = StageView::none;
+    bool four_views = false;
+    std::map<std::string, CanvasView> canvases; // by canvas name (tracing, plane/xy, ...)
+    std::string panning;                        // the canvas a right-drag pans, "" none
+    StageView hovered = StageView::none;        // the teaching view under the pointer (T stages it)
+    StageView hovered_next = StageView::none;   // ... as this frame's panels report it
+    bool fit = false;                           // F: the staged canvases return to their fit
+    bool active() const { return view != StageView::none || four_views; }
+};
+
 // When the status bar's message appeared (it fades, then goes, after status_seconds).
 struct StatusAge {
     std::string text;
@@ -312,6 +351,7 @@ struct UiState {
     Rect drawing_rect;
     // The lesson being played (File > Open lesson), or null.
     std::unique_ptr<Lesson> lesson;
+    CourseState course; // lesson editor, exercise, authoring dialogs (ui/course_state.hpp)
     PendingAction pending;
     bool confirm_unsaved = false;
     bool confirm_overwrite_changed = false; // Save found the file changed on disk: ask
@@ -349,7 +389,11 @@ struct UiState {
     DenominatorView denominator;
     TriangleDenominatorView triangle_denominator; // the same picture on a domain triangle
     HomogeneousState homogeneous;
+    StageState stage;
     int left_tab = 0; // the teaching tab shown below the tracing square (ui/workstation.cpp)
+    // Many selected points and their handle, grid and snap, the animated parameter, the detach
+    // question (ui/modeler_state.hpp).
+    ModelerState modeler;
     // File > Export picture / figure / animation and Ctrl+Shift+C (ui/media_export.hpp).
     MediaExportState media_export;
 

@@ -3,15 +3,18 @@
 #include "ui/workstation.hpp"
 
 #include <algorithm>
+#include <backends/imgui_impl_opengl3.h>
 #include <cmath>
 #include <cstdio>
 #include <imgui.h>
-#include <imgui_impl_opengl3.h>
 
 #include "ui/actions.hpp"
+#include "ui/animation_actions.hpp"
 #include "ui/media_export.hpp"
+#include "ui/modeler_actions.hpp"
 #include "ui/panels/fit_panel.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/panels/stage_controls.hpp"
 #include "ui/panels/tab_strip.hpp"
 #include "ui/render/gl.hpp"
 #include "ui/render/renderer.hpp"
@@ -44,6 +47,110 @@ bool begin_panel(const char* name, const Rect& r, ImGuiWindowFlags extra = 0) {
     return ImGui::Begin(name, nullptr, panel_flags | extra);
 }
 
+// The layout of this frame's window size, scale and mode.
+void compute_frame_layout(AppContext& ctx) {
+    UiState& ui = ctx.ui;
+    const ImGuiViewport* vp = ImGui::GetMainViewport();
+    ui.layout_input.width = vp->Size.x;
+    ui.layout_input.height = vp->Size.y;
+    ui.layout_input.top = ImGui::GetFrameHeight(); // the main menu bar
+    ui.layout_input.bottom = status_bar_height();
+    ui.layout_input.scale = ui.scale();
+    ui.layout_input.splitter = 5 * ui.scale();
+    // The 3D view is what the class looks at: on a small screen the side columns give way
+    // (their text wraps) before it shrinks below this share of the width.
+    ui.layout_input.min_center_fraction = ui.presentation ? 0.5f : 0.4f;
+    ui.layout_input.presentation = ui.presentation; // its columns are dragged apart
+    ui.layout = compute_layout(ctx.settings.layout, ui.layout_input);
+}
+
+// The teaching tabs that share the left column's lower slot.
+void teaching_tabs(AppContext& ctx) {
+    UiState& ui = ctx.ui;
+    struct Tab {
+        const char* name;
+        const char* what;
+        void (*draw)(AppContext&);
+        StageView stage;
+        const char* what_on_a_triangle = nullptr; // when it says something else there
+    };
+    static constexpr Tab tabs[] = {
+        {"Basis", "R_ij of the selected point at (u, v), N_i and N_j", draw_basis_plot_panel,
+         StageView::basis,
+         "B_ijk (rational: R_ijk) of the selected point over the domain triangle"},
+        {"de Boor", "de Boor's construction at (u, v), step by step", draw_deboor_panel,
+         StageView::deboor, "de Casteljau's construction at (r, s, t), level by level"},
+        {"Blossom", "every de Boor point as its polar form f(a_1, .., a_p)", draw_blossom_panel,
+         StageView::blossom},
+        {"Continuity", "every border of the patch group, measured", draw_continuity_panel,
+         StageView::continuity},
+        {"Homogeneous", "a curve lifted to (w x, w y, w) and projected to w = 1",
+         draw_homogeneous_panel, StageView::homogeneous},
+        {"Multires", "a coarse polygon plus detail at every level (wavelets)", draw_multires_panel,
+         StageView::multires},
+    };
+    if (ui.deboor.show_tab) ui.left_tab = 1;
+    if (ui.multires.show_tab) ui.left_tab = 5;
+    ui.deboor.show_tab = ui.multires.show_tab = false;
+    const bool triangle = selected_triangle(ctx.doc) != nullptr;
+    std::vector<TabLabel> labels;
+    for (const Tab& t : tabs)
+        labels.push_back(
+            {t.name, triangle && t.what_on_a_triangle ? t.what_on_a_triangle : t.what});
+    // The stage button at the right end of the strip's first row.
+    const ImVec2 start = ImGui::GetCursorScreenPos();
+    ImGui::SetCursorScreenPos(ImVec2(
+        ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x - ImGui::GetFrameHeight(),
+        start.y));
+    stage_button(ctx, tabs[ui.left_tab].stage, false);
+    ImGui::SetCursorScreenPos(start);
+    ui.left_tab = tab_strip(labels, ui.left_tab, ImGui::GetFrameHeight() + 4 * ui.scale());
+    note_hovered_view(ctx, tabs[ui.left_tab].stage);
+    tabs[ui.left_tab].draw(ctx);
+}
+
+// The right column: the selected object's editor above (the Fit panel alone while it is
+// open), the scene's objects and the display settings below.
+void right_column(AppContext& ctx, const Layout& l) {
+    UiState& ui = ctx.ui;
+    // An implicit surface has no control points: its editor takes their place.
+    const doc::Object* sel = ctx.doc.selected();
+    // The Fit panel takes the whole right column while it is open (a canvas, its settings and
+    // its buttons need the height on a projector); Objects and display come back on Close.
+    const bool fitting = ui.fit.open;
+    if (fitting) {
+        const Rect column{l.right[0].x, l.right[0].y, l.right[0].w,
+                          l.right[1].y + l.right[1].h - l.right[0].y};
+        if (begin_panel("Fit", column)) draw_fit_panel(ctx);
+    } else if (sel && sel->kind() == doc::ObjectKind::implicit) {
+        if (begin_panel("Implicit surface", l.right[0])) draw_implicit_panel(ctx);
+    } else if (sel && sel->kind() == doc::ObjectKind::curve) {
+        if (begin_panel("Curve designer", l.right[0])) draw_curve_designer_panel(ctx);
+    } else {
+        if (begin_panel("Control point", l.right[0])) draw_control_point_panel(ctx);
+    }
+    ImGui::End();
+    // The scene's objects and the display settings share the slot as tabs.
+    if (!fitting) {
+        if (begin_panel("Objects and display", l.right[1], ImGuiWindowFlags_NoTitleBar) &&
+            ImGui::BeginTabBar("##right_tabs")) {
+            const ImGuiTabItemFlags bring =
+                ui.object_list.show_tab ? ImGuiTabItemFlags_SetSelected : 0;
+            ui.object_list.show_tab = false;
+            if (ImGui::BeginTabItem("Objects", nullptr, bring)) {
+                draw_object_list_panel(ctx);
+                ImGui::EndTabItem();
+            }
+            if (ImGui::BeginTabItem("Display")) {
+                draw_control_panel(ctx);
+                ImGui::EndTabItem();
+            }
+            ImGui::EndTabBar();
+        }
+        ImGui::End();
+    }
+}
+
 } // namespace
 
 Workstation::Workstation(const WorkstationOptions& options) {
@@ -56,7 +163,7 @@ Workstation::Workstation(const WorkstationOptions& options) {
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr; // the layout is ours (settings.json), not imgui.ini
     io.LogFilename = nullptr;
-    ImGui_ImplOpenGL3_Init("#version 330 core");
+    ImGui_ImplOpenGL3_Init(glsl_version);
     ImGui_ImplOpenGL3_CreateDeviceObjects();
 
     ctx_.ui.headless = options.headless;
@@ -156,55 +263,27 @@ void Workstation::splitters() {
 
 void Workstation::layout_panels() {
     UiState& ui = ctx_.ui;
-    const ImGuiViewport* vp = ImGui::GetMainViewport();
-    ui.layout_input.width = vp->Size.x;
-    ui.layout_input.height = vp->Size.y;
-    ui.layout_input.top = ImGui::GetFrameHeight(); // the main menu bar
-    ui.layout_input.bottom = status_bar_height();
-    ui.layout_input.scale = ui.scale();
-    ui.layout_input.splitter = 5 * ui.scale();
-    // The 3D view is what the class looks at: on a small screen the side columns give way
-    // (their text wraps) before it shrinks below this share of the width.
-    ui.layout_input.min_center_fraction = ui.presentation ? 0.5f : 0.4f;
-    ui.layout = compute_layout(ctx_.settings.layout, ui.layout_input);
+    compute_frame_layout(ctx_);
     const Layout& l = ui.layout;
+    // The stage and the four-view layout take the whole area between the menu and status bars.
+    if (ui.stage.active()) {
+        const LayoutInput& in = ui.layout_input;
+        const Rect area{0, in.top, in.width, std::max(in.height - in.top - in.bottom, 1.f)};
+        ui.drawing_rect = area;
+        if (ui.stage.four_views)
+            draw_four_views(ctx_, area);
+        else
+            draw_stage(ctx_, area);
+        return;
+    }
 
     if (begin_panel("Domain and knots", l.left[0])) draw_tracing_panel(ctx_);
     ImGui::End();
     // The teaching tabs share the slot. D (de Boor on) and Curve > Multiresolution bring their
     // tab forward. Six names do not fit a projector's column as ImGui tabs (they shrink to
     // "Hom..."): the strip wraps onto a second row instead, whole names always readable.
-    if (begin_panel("Basis and de Boor", l.left[1], ImGuiWindowFlags_NoTitleBar)) {
-        struct Tab {
-            const char* name;
-            const char* what;
-            void (*draw)(AppContext&);
-            const char* what_on_a_triangle = nullptr; // when it says something else there
-        };
-        static constexpr Tab tabs[] = {
-            {"Basis", "R_ij of the selected point at (u, v), N_i and N_j", draw_basis_plot_panel,
-             "B_ijk (rational: R_ijk) of the selected point over the domain triangle"},
-            {"de Boor", "de Boor's construction at (u, v), step by step", draw_deboor_panel,
-             "de Casteljau's construction at (r, s, t), level by level"},
-            {"Blossom", "every de Boor point as its polar form f(a_1, .., a_p)",
-             draw_blossom_panel},
-            {"Continuity", "every border of the patch group, measured", draw_continuity_panel},
-            {"Homogeneous", "a curve lifted to (w x, w y, w) and projected to w = 1",
-             draw_homogeneous_panel},
-            {"Multires", "a coarse polygon plus detail at every level (wavelets)",
-             draw_multires_panel},
-        };
-        if (ui.deboor.show_tab) ui.left_tab = 1;
-        if (ui.multires.show_tab) ui.left_tab = 5;
-        ui.deboor.show_tab = ui.multires.show_tab = false;
-        const bool triangle = selected_triangle(ctx_.doc) != nullptr;
-        std::vector<TabLabel> labels;
-        for (const Tab& t : tabs)
-            labels.push_back(
-                {t.name, triangle && t.what_on_a_triangle ? t.what_on_a_triangle : t.what});
-        ui.left_tab = tab_strip(labels, ui.left_tab);
-        tabs[ui.left_tab].draw(ctx_);
-    }
+    if (begin_panel("Basis and de Boor", l.left[1], ImGuiWindowFlags_NoTitleBar))
+        teaching_tabs(ctx_);
     ImGui::End();
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2, 2));
     // The 3D image covers the panel: its window background would only be overdrawn.
@@ -215,42 +294,7 @@ void Workstation::layout_panels() {
         draw_view3d_panel(ctx_);
     ImGui::End();
     ImGui::PopStyleVar();
-    // An implicit surface has no control points: its editor takes their place.
-    const doc::Object* sel = ctx_.doc.selected();
-    // The Fit panel takes the whole right column while it is open (a canvas, its settings and
-    // its buttons need the height on a projector); Objects and display come back on Close.
-    const bool fitting = ui.fit.open;
-    if (fitting) {
-        const Rect column{l.right[0].x, l.right[0].y, l.right[0].w,
-                          l.right[1].y + l.right[1].h - l.right[0].y};
-        if (begin_panel("Fit", column)) draw_fit_panel(ctx_);
-    } else if (sel && sel->kind() == doc::ObjectKind::implicit) {
-        if (begin_panel("Implicit surface", l.right[0])) draw_implicit_panel(ctx_);
-    } else if (sel && sel->kind() == doc::ObjectKind::curve) {
-        if (begin_panel("Curve designer", l.right[0])) draw_curve_designer_panel(ctx_);
-    } else {
-        if (begin_panel("Control point", l.right[0])) draw_control_point_panel(ctx_);
-    }
-    ImGui::End();
-    // The scene's objects and the display settings share the slot as tabs.
-    if (!fitting) {
-        if (begin_panel("Objects and display", l.right[1], ImGuiWindowFlags_NoTitleBar) &&
-            ImGui::BeginTabBar("##right_tabs")) {
-            const ImGuiTabItemFlags bring =
-                ui.object_list.show_tab ? ImGuiTabItemFlags_SetSelected : 0;
-            ui.object_list.show_tab = false;
-            if (ImGui::BeginTabItem("Objects", nullptr, bring)) {
-                draw_object_list_panel(ctx_);
-                ImGui::EndTabItem();
-            }
-            if (ImGui::BeginTabItem("Display")) {
-                draw_control_panel(ctx_);
-                ImGui::EndTabItem();
-            }
-            ImGui::EndTabBar();
-        }
-        ImGui::End();
-    }
+    right_column(ctx_, l);
     // A splitter drag shows from the next frame.
     splitters();
 }
@@ -283,6 +327,10 @@ void Workstation::frame(unsigned target_framebuffer) {
     // Between gestures (nothing held, no field being edited) the next edit is a new undo step.
     if (!ImGui::IsAnyItemActive() && !ImGui::IsAnyMouseDown()) ctx_.seal();
     normalize_selection(ctx_.doc);
+    sync_selection(ui.modeler.selection.points, ctx_.doc);
+    // An animated parameter shows its value from here to the end of the frame (never an edit);
+    // frames keep coming while it plays.
+    if (animation_begin_frame(ctx_, ImGui::GetTime()) && request_frame_) request_frame_();
     // Whenever de Boor's construction is switched on (menu, key, a loaded scene), its tab
     // comes forward.
     if (ctx_.doc.view.display.deboor && !deboor_was_on_) ui.deboor.show_tab = true;
@@ -291,15 +339,29 @@ void Workstation::frame(unsigned target_framebuffer) {
     if (deboor_tick(ctx_, ImGui::GetTime()) && request_frame_) request_frame_();
     ui.implicit.dragging = false; // set again by the implicit panel while a slider is held
 
+    // The teaching view the pointer was over last frame (T stages it).
+    ui.stage.hovered = ui.stage.hovered_next;
+    ui.stage.hovered_next = StageView::none;
+    report_fact("stage/hovered", static_cast<double>(ui.stage.hovered));
     handle_shortcuts(ctx_); // Shift+P and Esc lead back from the 3D view alone
+    // The 3D view sets its rectangle when it is drawn this frame; a staged teaching view
+    // without it shows no 3D picture (nor is one rendered).
+    const Rect last_view = ui.view_rect;
+    ui.view_rect = Rect{};
     if (ui.view_mode == ViewMode::workstation) {
         draw_menus(ctx_);
         layout_panels();
         draw_status_bar(ctx_);
         draw_lesson_panel(ctx_);
+        // The caption box placed again this frame: the next frame shows whether it stays.
+        if (ui.course.caption_box.settling > 0 && ui.course.caption_box.settling < 6 &&
+            request_frame_)
+            request_frame_();
+        draw_course_panels(ctx_); // lesson editor, exercise, Add stop / expectation
         draw_dialogs(ctx_);
         draw_construct_dialog(ctx_);
         draw_media_export_dialog(ctx_);
+        draw_animate_panel(ctx_);
     } else {
         const ImGuiViewport* vp = ImGui::GetMainViewport();
         ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
@@ -310,7 +372,11 @@ void Workstation::frame(unsigned target_framebuffer) {
         ImGui::End();
         ImGui::PopStyleVar(2);
     }
+    draw_detach_question(ctx_); // a drag in the 3D view alone asks too
     ImGui::Render();
+    const bool view3d_drawn = ui.view_rect.w > 0;
+    if (!view3d_drawn) ui.view_rect = last_view; // its last size, for fit_view's aspect
+    ui.stage.fit = false;                        // F was seen by every staged canvas this frame
     flush_ui_report(ctx_);
     ctx_.observe_for_recording(); // this frame's view changes (selection, indicator, display)
     // Subpatches: the indicator moved into another patch's part makes it current; a patch
@@ -325,6 +391,33 @@ void Workstation::frame(unsigned target_framebuffer) {
     }
 
     // The 3D view into its texture, with the camera and document of this very frame.
+    if (view3d_drawn) render_view3d(scale);
+
+    glBindFramebuffer(GL_FRAMEBUFFER, target_framebuffer);
+    const int fb_w = static_cast<int>(io.DisplaySize.x * io.DisplayFramebufferScale.x);
+    const int fb_h = static_cast<int>(io.DisplaySize.y * io.DisplayFramebufferScale.y);
+    glViewport(0, 0, fb_w, fb_h);
+    const ImVec4 bg = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg); // the panels' background
+    if (transparent_)
+        glClearColor(0, 0, 0, 0);
+    else
+        glClearColor(bg.x, bg.y, bg.z, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    // The 3D picture by a framebuffer copy (OpenGL rows run bottom-up), then ImGui on top.
+    if (view3d_drawn) {
+        const ImVec2 fb_scale = io.DisplayFramebufferScale;
+        const int view_x = static_cast<int>(std::lround(ui.view_rect.x * fb_scale.x));
+        const int view_bottom =
+            static_cast<int>(std::lround((ui.view_rect.y + ui.view_rect.h) * fb_scale.y));
+        renderer_->copy_to(target_framebuffer, view_x, fb_h - view_bottom);
+    }
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    // The document as it is again: saving, autosave and the next frame's commands see it.
+    animation_end_frame(ctx_);
+}
+
+void Workstation::render_view3d(float scale) {
+    UiState& ui = ctx_.ui;
     SceneStyle style;
     style.scale = scale;
     style.deboor_step = ui.deboor.step;
@@ -336,6 +429,21 @@ void Workstation::frame(unsigned target_framebuffer) {
         style.guide_axis = ui.drag.axis;
         style.guide_point = ui.drag.start;
     }
+    // The working plane z = 0 and its grid, at the step the 3D view's zoom shows.
+    if (ui.modeler.snap.grid_shown) {
+        style.working_grid = true;
+        style.grid_step = working_grid_step(ui).value();
+        const double reach =
+            2.5 * ui.camera.distance * std::tan(ui.camera.fov_y / 2) *
+            std::max(1.0, static_cast<double>(ui.view_fb_width) / std::max(1, ui.view_fb_height));
+        style.grid_lines = std::clamp(static_cast<int>(std::ceil(reach / style.grid_step)), 4, 80);
+        style.grid_centre = {ui.camera.target.x, ui.camera.target.y};
+    }
+    if (const doc::Object* sel = ctx_.doc.selected(); sel && ui.modeler.selection.points.size() > 1)
+        for (const PointIndex& p : ui.modeler.selection.points.points)
+            if (!(p.i == ctx_.doc.view.selection.i &&
+                  (p.j == ctx_.doc.view.selection.j || sel->curve())))
+                style.also_selected.push_back(doc::position_of(sel->shape, p));
     // Implicit meshes: coarse while a parameter slider moves, synchronous when headless.
     ImplicitMeshes::Mode mode;
     mode.wait = ui.headless;
@@ -353,24 +461,6 @@ void Workstation::frame(unsigned target_framebuffer) {
     view.background = transparent_ ? glm::vec4(0) : glm::vec4(glm::vec3(view.background), 1);
     view.analysis = ui.analysis;
     renderer_->render(view, scene.surfaces, scene.overlay);
-
-    glBindFramebuffer(GL_FRAMEBUFFER, target_framebuffer);
-    const int fb_w = static_cast<int>(io.DisplaySize.x * io.DisplayFramebufferScale.x);
-    const int fb_h = static_cast<int>(io.DisplaySize.y * io.DisplayFramebufferScale.y);
-    glViewport(0, 0, fb_w, fb_h);
-    const ImVec4 bg = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg); // the panels' background
-    if (transparent_)
-        glClearColor(0, 0, 0, 0);
-    else
-        glClearColor(bg.x, bg.y, bg.z, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    // The 3D picture by a framebuffer copy (OpenGL rows run bottom-up), then ImGui on top.
-    const ImVec2 fb_scale = io.DisplayFramebufferScale;
-    const int view_x = static_cast<int>(std::lround(ui.view_rect.x * fb_scale.x));
-    const int view_bottom =
-        static_cast<int>(std::lround((ui.view_rect.y + ui.view_rect.h) * fb_scale.y));
-    renderer_->copy_to(target_framebuffer, view_x, fb_h - view_bottom);
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 
 } // namespace isoparm::ui

@@ -56,6 +56,7 @@ public:
 
 private:
     void layout_panels();
+    void render_view3d(float scale); // the scene into the renderer's texture
     void splitters();
     AppContext ctx_;
     ImGuiContext* imgui_ = nullptr;

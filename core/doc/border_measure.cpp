@@ -69,22 +69,6 @@ BorderLevel border_level(const BorderMeasure& m, double size) {
     return h.g2 ? BorderLevel::g2 : BorderLevel::c1;
 }
 
-const char* border_level_name(BorderLevel level) {
-    switch (level) {
-    case BorderLevel::broken:
-        return "broken";
-    case BorderLevel::c0:
-        return "C0";
-    case BorderLevel::g1:
-        return "G1";
-    case BorderLevel::c1:
-        return "C1";
-    case BorderLevel::g2:
-        return "C1 + G2";
-    }
-    return "?";
-}
-
 double group_size(const Document& doc, std::uint64_t group) {
     double size = 0;
     for (const Object* p : patch_members(doc, group))

@@ -32,8 +32,22 @@ BorderHolds border_holds(const BorderMeasure& m, double size);
 // The best level a border shows, each needing the ones before it: what the 3D view colours it.
 // `g2` means C1 with the mean curvature continuous as well.
 enum class BorderLevel { broken, c0, g1, c1, g2 };
+inline constexpr geom::EnumName<BorderLevel> border_level_names[] = {
+    {BorderLevel::broken, "broken"},
+    {BorderLevel::c0, "C0"},
+    {BorderLevel::g1, "G1"},
+    {BorderLevel::c1, "C1"},
+    {BorderLevel::g2, "G2", "C1 + G2"},
+};
+static_assert(geom::in_declaration_order(border_level_names));
+constexpr std::span<const geom::EnumName<BorderLevel>> enum_names(BorderLevel) {
+    return border_level_names;
+}
 BorderLevel border_level(const BorderMeasure& m, double size);
-const char* border_level_name(BorderLevel level);
+// "broken", "C0", "G1", "C1", "C1 + G2" (label_of).
+inline const char* border_level_name(BorderLevel level) {
+    return geom::label_of(level);
+}
 
 // The size figures are relative to: the largest coordinate of the group's control points.
 double group_size(const Document& doc, std::uint64_t group);

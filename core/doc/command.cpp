@@ -4,6 +4,8 @@
 
 #include <cassert>
 
+#include "core/doc/associative.hpp"
+
 namespace isoparm::doc {
 
 geom::Status Command::check(const Document& doc) const {
@@ -18,6 +20,8 @@ geom::Status Command::check(const Document& doc) const {
 
 geom::Status History::execute(Document& doc, std::unique_ptr<Command> cmd) {
     assert(cmd);
+    // Constructions follow their inputs inside the same command (associative.hpp).
+    cmd = associative(std::move(cmd));
     geom::Status st = cmd->apply(doc);
     if (!st) return st; // the command refused and left the document alone
 

@@ -2,8 +2,10 @@
 #include "core/doc/command_spec.hpp"
 
 #include "core/doc/commands.hpp"
+#include "core/doc/commands_construction.hpp"
 #include "core/doc/commands_curve.hpp"
 #include "core/doc/commands_multires.hpp"
+#include "core/doc/commands_points.hpp"
 #include "core/doc/commands_triangle.hpp"
 
 namespace isoparm::doc {
@@ -77,6 +79,17 @@ struct Build {
     }
     std::unique_ptr<Command> operator()(MultiresEditSpec& s) { return multires_edit(s); }
     std::unique_ptr<Command> operator()(SplitTriangleSpec& s) { return split_triangle(s.id, s.at); }
+    std::unique_ptr<Command> operator()(ConstructSpec& s) {
+        return construct(std::move(s.recipe), std::move(s.name));
+    }
+    std::unique_ptr<Command> operator()(EditConstructionSpec& s) {
+        return edit_construction(s.id, std::move(s.recipe));
+    }
+    std::unique_ptr<Command> operator()(DetachSpec& s) { return detach(s.id); }
+    std::unique_ptr<Command> operator()(MovePointsSpec& s) { return move_points(std::move(s)); }
+    std::unique_ptr<Command> operator()(TransformPointsSpec& s) {
+        return transform_points(std::move(s));
+    }
 };
 
 } // namespace

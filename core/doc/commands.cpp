@@ -41,63 +41,26 @@ void restore_selection(Document& doc, const Selection& before, const Selection& 
     }
 }
 
-// The control point (i, j) of a surface, curve or triangle (b_ijk, k = n - i - j), checked
-// (`schema`, "/i", "/j").
+// The control point (i, j) of an object of any kind that has them (surface: P_ij; curve: P_i,
+// j = -1 or 0; triangle: b_ijk, k = n - i - j), checked (`schema`, "/i", "/j").
 struct PointRef {
     std::span<glm::dvec3> points;
     std::span<double> weights;
     bool rational = false;
-    bool curve = false;
     std::size_t index = 0;
     glm::dvec3& position() { return points[index]; }
     double& weight() { return weights[index]; }
 };
 
 geom::Expected<PointRef> control_point(Object& obj, int i, int j) {
-    auto out_of_range = [](const char* name, int value, int count, const char* path) {
-        return make_error(ErrorCode::schema,
-                          std::string("control point index ") + name + " = " +
-                              std::to_string(value) + " is outside 0.." + std::to_string(count - 1),
-                          path);
-    };
-    if (auto* s = std::get_if<SurfaceObject>(&obj.shape)) {
-        geom::Surface& g = s->surface;
-        if (i < 0 || i >= g.n_u) return out_of_range("i", i, g.n_u, "/i");
-        if (j < 0 || j >= g.n_v) return out_of_range("j", j, g.n_v, "/j");
-        return PointRef{g.points, g.weights, geom::is_rational(g.type), false,
-                        static_cast<std::size_t>(g.index(i, j))};
-    }
-    if (auto* c = std::get_if<CurveObject>(&obj.shape)) {
-        geom::Curve& g = c->curve;
-        if (i < 0 || i >= g.count()) return out_of_range("i", i, g.count(), "/i");
-        if (j != -1 && j != 0)
-            return make_error(ErrorCode::schema,
-                              "a curve's control points have one index; j must be -1 (or 0), got " +
-                                  std::to_string(j),
-                              "/j");
-        return PointRef{g.points, g.weights, geom::is_rational(g.type), true,
-                        static_cast<std::size_t>(i)};
-    }
-    if (geom::TrianglePatch* t = obj.triangle()) {
-        const int n = t->degree;
-        if (i < 0 || i > n) return out_of_range("i", i, n + 1, "/i");
-        if (j < 0 || j > n - i)
-            return make_error(ErrorCode::schema,
-                              "control point b_ijk of a degree " + std::to_string(n) +
-                                  " triangle needs 0 <= j <= n - i = " + std::to_string(n - i) +
-                                  ", got j = " + std::to_string(j),
-                              "/j");
-        return PointRef{t->points, t->weights, t->rational, false,
-                        static_cast<std::size_t>(geom::TrianglePatch::index(n, i, j))};
-    }
-    return make_error(ErrorCode::schema,
-                      "object '" + obj.name + "' is an implicit surface; it has no control points",
-                      "/id");
-}
-
-geom::SplineType surface_or_curve_type(const Object& obj) {
-    if (const geom::Surface* s = obj.surface()) return s->type;
-    return obj.curve()->type;
+    if (control_points_of(obj.shape).empty()) return kind_refusal(obj, "it has no control points");
+    return std::visit(
+        [&](auto& k) -> geom::Expected<PointRef> {
+            auto index = point_index(k, i, j);
+            if (!index) return index.error();
+            return PointRef{control_points(k), control_weights(k), is_rational(k), *index};
+        },
+        obj.shape);
 }
 
 std::string vec_text(const glm::dvec3& p) {
@@ -281,14 +244,14 @@ public:
         if (!found) return found.error();
         auto ref = validate(**found);
         if (!ref) return ref.error();
-        curve_ = ref->curve;
-        triangle_degree_ = (**found).triangle() ? (**found).triangle()->degree : -1;
+        point_name_ = point_label_of((**found).shape, PointName::position, spec_.i, spec_.j);
+        weight_name_ = point_label_of((**found).shape, PointName::weight, spec_.i, spec_.j);
         old_position_ = ref->position();
         old_weight_ = ref->weight();
         if (spec_.position) ref->position() = *spec_.position;
         if (spec_.weight) ref->weight() = *spec_.weight;
         // A closed curve repeats its first p points at its end: the twin follows.
-        if (curve_) twin_ = closed_twin(**found);
+        twin_ = closed_twin(**found);
         if (twin_) {
             auto twin = control_point(**found, *twin_, -1);
             old_twin_ = {twin->position(), twin->weight()};
@@ -296,7 +259,7 @@ public:
             twin->weight() = ref->weight();
         }
         // Subpatches: the neighbours follow so the borders stay closed / smooth.
-        if (!curve_ && triangle_degree_ < 0) neighbours_.follow(doc, spec_.id, spec_.i, spec_.j);
+        if ((**found).surface()) neighbours_.follow(doc, spec_.id, spec_.i, spec_.j);
         return geom::Ok{};
     }
 
@@ -329,17 +292,14 @@ public:
     std::size_t memory_bytes() const override { return sizeof(*this) + neighbours_.bytes(); }
 
     std::string label() const override {
-        const int j = curve_ ? -1 : spec_.j;
-        const bool tri = triangle_degree_ >= 0;
+        // Named as the object's kind names its points ("P23", "P4", "b210"), once applied.
         const std::string point =
-            tri ? detail::triangle_point_label('b', triangle_degree_, spec_.i, spec_.j)
-                : detail::point_label('P', spec_.i, j);
+            point_name_.empty() ? detail::point_label('P', spec_.i, spec_.j) : point_name_;
+        const std::string weight =
+            weight_name_.empty() ? detail::point_label('w', spec_.i, spec_.j) : weight_name_;
         if (spec_.position && spec_.weight) return "Edit " + point;
         if (spec_.position) return "Move " + point;
-        const std::string weight =
-            tri ? detail::triangle_point_label('w', triangle_degree_, spec_.i, spec_.j)
-                : detail::point_label('w', spec_.i, j);
-        return "Set weight " + weight + " = " + geom::format_number(spec_.weight.value_or(1.0));
+        return "Set weight " + weight + " = " + geom::format_short(spec_.weight.value_or(1.0));
     }
 
 private:
@@ -360,11 +320,7 @@ private:
                                       "/position/" + std::to_string(a));
         if (spec_.weight) {
             const double w = *spec_.weight;
-            const bool curve = ref->curve;
-            const geom::TrianglePatch* tri = obj.triangle();
-            const std::string name =
-                tri ? detail::triangle_point_label('w', tri->degree, spec_.i, spec_.j)
-                    : detail::point_label('w', spec_.i, curve ? -1 : spec_.j);
+            const std::string name = point_label_of(obj.shape, PointName::weight, spec_.i, spec_.j);
             if (!std::isfinite(w))
                 return make_error(ErrorCode::weights,
                                   "weight " + name + " must be a finite number, got " +
@@ -373,11 +329,7 @@ private:
             // The type tag is enforced: a non-rational object keeps unit weights.
             if (!ref->rational && w != 1.0) {
                 const std::string what =
-                    tri ? std::string("triangle_bezier has unit weights; make it rational "
-                                      "(rational_triangle_bezier)")
-                        : std::string(geom::spline_type_name(surface_or_curve_type(obj))) + " " +
-                              (curve ? "curve" : "surface") +
-                              " has unit weights; make it rational (nurbs or rational_bezier)";
+                    std::visit([](const auto& k) { return unit_weights_rule(k); }, obj.shape);
                 return make_error(ErrorCode::weights,
                                   "a " + what + " to set " + name + " = " + geom::format_number(w),
                                   "/weight");
@@ -402,8 +354,7 @@ private:
     std::pair<glm::dvec3, double> old_twin_{glm::dvec3(0), 1.0};
     glm::dvec3 old_position_{0};
     double old_weight_ = 1;
-    bool curve_ = false;
-    int triangle_degree_ = -1; // the triangle's degree n, or -1 for a surface or curve
+    std::string point_name_, weight_name_;
     NeighbourEdits neighbours_;
 };
 
@@ -418,22 +369,21 @@ public:
         Object& obj = **found;
         geom::Knots* U = nullptr;
         int p = 0, n = 0;
-        if (auto* s = std::get_if<SurfaceObject>(&obj.shape)) {
-            U = dir_ == Dir::u ? &s->surface.knots_u : &s->surface.knots_v;
-            p = s->surface.degree(dir_);
-            n = s->surface.count(dir_);
-        } else if (auto* c = std::get_if<CurveObject>(&obj.shape)) {
+        // Surfaces and curves have knots (an allow-list).
+        if (geom::Surface* s = obj.surface()) {
+            U = dir_ == Dir::u ? &s->knots_u : &s->knots_v;
+            p = s->degree(dir_);
+            n = s->count(dir_);
+        } else if (geom::Curve* c = obj.curve()) {
             if (dir_ != Dir::u)
                 return make_error(ErrorCode::schema, "a curve has only one direction (u)",
                                   "/direction");
-            U = &c->curve.knots;
-            p = c->curve.degree;
-            n = c->curve.count();
+            U = &c->knots;
+            p = c->degree;
+            n = c->count();
             curve_ = true;
         } else {
-            return make_error(ErrorCode::schema,
-                              "object '" + obj.name + "' is an implicit surface; it has no knots",
-                              "/id");
+            return kind_refusal(obj, "it has no knots");
         }
         const int m = static_cast<int>(U->size());
         const std::string name = label_name();
@@ -492,9 +442,8 @@ public:
         Object* obj = doc.find(id_);
         assert(obj);
         geom::Knots& U = [&]() -> geom::Knots& {
-            if (auto* s = std::get_if<SurfaceObject>(&obj->shape))
-                return dir_ == Dir::u ? s->surface.knots_u : s->surface.knots_v;
-            return std::get<CurveObject>(obj->shape).curve.knots;
+            if (geom::Surface* s = obj->surface()) return dir_ == Dir::u ? s->knots_u : s->knots_v;
+            return obj->curve()->knots;
         }();
         std::fill(U.begin() + k_, U.begin() + k_ + count_, old_);
     }
@@ -512,7 +461,7 @@ public:
     }
 
     std::string label() const override {
-        std::string s = "Set knot " + label_name() + " = " + geom::format_number(value_);
+        std::string s = "Set knot " + label_name() + " = " + geom::format_short(value_);
         if (count_ > 1) s += " (" + std::to_string(count_) + " copies)";
         return s;
     }
@@ -538,16 +487,10 @@ public:
         auto found = detail::find_object(doc, id_);
         if (!found) return found.error();
         Object& obj = **found;
-        std::vector<glm::dvec3>* points = nullptr;
-        if (auto* s = std::get_if<SurfaceObject>(&obj.shape))
-            points = &s->surface.points;
-        else if (auto* c = std::get_if<CurveObject>(&obj.shape))
-            points = &c->curve.points;
-        else
-            return make_error(ErrorCode::schema,
-                              "object '" + obj.name +
-                                  "' is an implicit surface; it has no control points to transform",
-                              "/id");
+        // Every kind with control points moves with them (affine invariance holds for tensor
+        // products and triangles alike); a kind without them cannot be transformed.
+        const std::span<glm::dvec3> points = control_points_of(obj.shape);
+        if (points.empty()) return kind_refusal(obj, "it has no control points to transform");
         if (label_.empty()) label_ = "Transform " + obj.name;
         if (!redo_) {
             // glm is column-major: m_[c][r]. The bottom row is m_[0..3][3].
@@ -559,11 +502,11 @@ public:
             if (m_[0][3] != 0 || m_[1][3] != 0 || m_[2][3] != 0 || m_[3][3] != 1)
                 return make_error(ErrorCode::schema,
                                   "a transform must be affine (bottom row 0 0 0 1)", "/matrix");
-            after_.resize(points->size());
-            for (std::size_t k = 0; k < points->size(); ++k) {
+            after_.resize(points.size());
+            for (std::size_t k = 0; k < points.size(); ++k) {
                 // Affine maps commute with the rational combination (Piegl & Tiller 4.2.3:
                 // affine invariance), so mapping the Cartesian points maps the surface.
-                after_[k] = glm::dvec3(m_ * glm::dvec4((*points)[k], 1.0));
+                after_[k] = glm::dvec3(m_ * glm::dvec4(points[k], 1.0));
                 for (int a = 0; a < 3; ++a)
                     if (!std::isfinite(after_[k][a]))
                         return make_error(ErrorCode::schema,
@@ -572,9 +515,9 @@ public:
                                           "/matrix");
             }
         }
-        assert(after_.size() == points->size());
-        before_ = *points;
-        *points = after_;
+        assert(after_.size() == points.size());
+        before_.assign(points.begin(), points.end());
+        std::copy(after_.begin(), after_.end(), points.begin());
         redo_ = true; // a later apply is a redo: the exact points of the first time
         return geom::Ok{};
     }
@@ -582,10 +525,9 @@ public:
     void revert(Document& doc) override {
         Object* obj = doc.find(id_);
         assert(obj);
-        if (auto* s = std::get_if<SurfaceObject>(&obj->shape))
-            s->surface.points = before_;
-        else
-            std::get<CurveObject>(obj->shape).curve.points = before_;
+        const std::span<glm::dvec3> points = control_points_of(obj->shape);
+        assert(points.size() == before_.size());
+        std::copy(before_.begin(), before_.end(), points.begin());
     }
 
     bool merge_with(const Command& next) override {

@@ -7,6 +7,7 @@
 
 #include "core/doc/commands.hpp"
 #include "core/doc/commands_common.hpp"
+#include "core/doc/placement.hpp"
 #include "core/geom/convert.hpp"
 
 namespace isoparm::doc {
@@ -21,32 +22,30 @@ bool all_weights_equal(const std::vector<double>& w) {
     return std::adjacent_find(w.begin(), w.end(), std::not_equal_to<>()) == w.end();
 }
 
-template <class S> auto* weights_of(S& shape) {
-    if (auto* s = std::get_if<SurfaceObject>(&shape)) return &s->surface.weights;
-    auto* c = std::get_if<CurveObject>(&shape);
-    return c ? &c->curve.weights : nullptr;
+// Surfaces and curves have a spline type (an allow-list): every other kind is refused.
+bool has_spline_type(const Object& obj) {
+    return obj.surface() || obj.curve();
+}
+geom::Error no_spline_type(const Object& obj) {
+    return kind_refusal(obj, "only surfaces and curves have a spline type to convert");
 }
 
-// Why an object of this kind cannot be converted.
-std::string no_spline_type(ObjectKind kind) {
-    if (kind == ObjectKind::triangle)
-        return "a triangular Bezier patch: it has no tensor-product spline type (its weights are "
-               "edited as they are)";
-    return "an implicit surface: it has no spline type";
+template <class S> auto* weights_of(S& shape) {
+    if (auto* s = surface_of(shape)) return &s->weights;
+    auto* c = curve_of(shape);
+    return c ? &c->weights : nullptr;
 }
 
 std::optional<SplineType> type_of(const Shape& shape) {
-    if (auto* s = std::get_if<SurfaceObject>(&shape)) return s->surface.type;
-    if (auto* c = std::get_if<CurveObject>(&shape)) return c->curve.type;
+    if (const geom::Surface* s = surface_of(shape)) return s->type;
+    if (const geom::Curve* c = curve_of(shape)) return c->type;
     return std::nullopt;
 }
 
 // The pieces of the object's shape as `to` (one, or its Bezier pieces); weights set to 1
 // first when asked. Errors at the command's members.
 geom::Expected<std::vector<Shape>> converted(const Object& obj, SplineType to, bool reset) {
-    if (obj.kind() == ObjectKind::implicit || obj.kind() == ObjectKind::triangle)
-        return make_error(ErrorCode::schema,
-                          "object '" + obj.name + "' is " + no_spline_type(obj.kind()), "/id");
+    if (!has_spline_type(obj)) return no_spline_type(obj);
     Shape shape = obj.shape;
     if (auto* w = weights_of(shape); w && reset) std::fill(w->begin(), w->end(), 1.0);
     std::vector<Shape> out;
@@ -57,12 +56,12 @@ geom::Expected<std::vector<Shape>> converted(const Object& obj, SplineType to, b
         e.path = "/to";
         return e;
     };
-    if (auto* s = std::get_if<SurfaceObject>(&shape)) {
-        auto pieces = geom::convert(s->surface, to);
+    if (const geom::Surface* s = surface_of(shape)) {
+        auto pieces = geom::convert(*s, to);
         if (!pieces) return rehome(pieces.error());
         for (geom::Surface& p : *pieces) out.push_back(SurfaceObject{std::move(p)});
     } else {
-        const CurveObject& c = std::get<CurveObject>(shape);
+        const CurveObject& c = *curve_object_of(shape);
         auto pieces = geom::convert(c.curve, to);
         if (!pieces) return rehome(pieces.error());
         // The pieces' knots are their own (custom): no knot rule made them.
@@ -100,13 +99,13 @@ public:
             doc.next_id = std::max(doc.next_id, ids_.back() + 1);
         }
         std::vector<Object> made;
-        const bool surface = obj.kind() == ObjectKind::surface;
+        const bool surface = obj.surface() != nullptr;
         for (std::size_t k = 0; k < count_; ++k) {
             Object o = obj;
             o.id = ids_[k];
             o.shape = std::move((*pieces)[k]);
             if (count_ > 1) {
-                o.name = obj.name + "." + std::to_string(k + 1);
+                o.name = unique_name(doc, obj.name + "." + std::to_string(k + 1), obj.id);
                 // The pieces share the original domain, as the pieces of a split do.
                 if (surface && o.patch_group == 0) o.patch_group = obj.id;
             }
@@ -168,10 +167,7 @@ std::unique_ptr<Command> convert_object(std::uint64_t id, SplineType to, bool re
 geom::Expected<ConversionLosses> conversion_losses(const Object& object, SplineType to) {
     ConversionLosses out;
     const std::vector<double>* w = weights_of(object.shape);
-    if (!w)
-        return make_error(ErrorCode::schema,
-                          "object '" + object.name + "' is " + no_spline_type(object.kind()),
-                          "/id");
+    if (!w) return no_spline_type(object);
     out.weights_differ = !geom::is_rational(to) && !all_weights_equal(*w);
     auto pieces = converted(object, to, out.weights_differ);
     if (!pieces) return pieces.error();

@@ -130,11 +130,7 @@ std::unique_ptr<Command> curve_edit(std::uint64_t id, CommandSpec spec, std::str
     detail::ShapeEditRule rule;
     rule.make = [edit = std::move(edit)](const Object& obj) -> geom::Expected<Shape> {
         const CurveObject* c = obj.curve_object();
-        if (!c)
-            return make_error(ErrorCode::schema,
-                              "object '" + obj.name + "' is a " + kind_name(obj.kind()) +
-                                  "; the curve designer edits curves",
-                              "/id");
+        if (!c) return kind_refusal(obj, "the curve designer edits curves");
         auto r = edit(obj, *c);
         if (!r) return r.error();
         return Shape{std::move(r).value()};
@@ -490,9 +486,9 @@ public:
                 return make_error(ErrorCode::schema, "curve '" + o->name + "' is chosen twice", at);
             const auto* c = std::get_if<CurveObject>(&o->shape);
             if (!c)
-                return make_error(
-                    ErrorCode::schema,
-                    "'" + o->name + "' is a " + detail::kind_name(o->shape) + ", not a curve", at);
+                return make_error(ErrorCode::schema,
+                                  "'" + o->name + "' is " + kind_noun(o->kind()) + ", not a curve",
+                                  at);
             curves.push_back(c->curve);
             objects.push_back(o);
         }

@@ -44,7 +44,7 @@ geom::Status check_members(const MultiresEditSpec& s, const Object& obj) {
                 return make_error(ErrorCode::schema,
                                   "a coarse control point needs finite coordinates",
                                   "/position/" + std::to_string(a));
-    const bool surface = obj.kind() == ObjectKind::surface;
+    const bool surface = obj.surface() != nullptr;
     if (surface && !s.level_v)
         return make_error(ErrorCode::schema,
                           "object '" + obj.name + "' is a surface: give its v level (level_v)",
@@ -114,10 +114,8 @@ geom::Expected<std::pair<int, int>> multires_levels_of(const Object& object) {
     }
     const CurveObject* c = object.curve_object();
     if (!c)
-        return make_error(ErrorCode::schema,
-                          "object '" + object.name +
-                              "' is an implicit surface: it has no control points to decompose",
-                          "/id");
+        return kind_refusal(object,
+                            "multiresolution editing decomposes a cubic B-spline curve or surface");
     if (c->knot_mode == CurveKnotMode::chord || c->knot_mode == CurveKnotMode::centripetal ||
         c->knot_mode == CurveKnotMode::closed)
         return make_error(ErrorCode::knots,

@@ -11,6 +11,7 @@
 #include "core/doc/commands_common.hpp"
 #include "core/doc/commands_triangle.hpp"
 #include "core/doc/patches.hpp"
+#include "core/doc/placement.hpp"
 #include "core/doc/refinement_edit.hpp"
 #include "core/doc/shape_edit.hpp"
 #include "core/geom/knots.hpp"
@@ -75,7 +76,7 @@ geom::Status refine_until_conforming(Document& doc, std::uint64_t group,
             const Object* o = doc.find(k.object);
             if (!out.summary.empty()) out.summary += ", ";
             out.summary += (o ? o->name : std::string("?")) + ": " + dir_name(k.dir) + " = " +
-                           geom::format_number(k.t) +
+                           geom::format_short(k.t) +
                            (k.times > 1 ? " x" + std::to_string(k.times) : std::string());
             // A (rational) Bezier neighbour becomes a B-spline (NURBS): never silently.
             if (const std::string change = refinement_type_change(*out.applied.back());
@@ -120,13 +121,13 @@ public:
         if (!found) return found.error();
         Object& obj = **found;
         Shape first, second;
-        if (auto* s = std::get_if<SurfaceObject>(&obj.shape)) {
-            auto r = geom::split(s->surface, dir_, t_);
+        if (const geom::Surface* s = obj.surface()) {
+            auto r = geom::split(*s, dir_, t_);
             if (!r) return r.error();
             first = SurfaceObject{std::move(r->first)};
             second = SurfaceObject{std::move(r->second)};
         } else {
-            const auto& c = std::get<CurveObject>(obj.shape);
+            const CurveObject& c = *obj.curve_object(); // refinable: a surface or a curve
             auto r = geom::split(c.curve, t_);
             if (!r) return r.error();
             first = CurveObject{std::move(r->first), c.plane};
@@ -158,8 +159,11 @@ public:
         // Surface pieces stay one patch structure over the original domain; the
         // first split names the group after the surface it started from.
         const std::uint64_t group = curve_ ? 0 : obj.patch_group != 0 ? obj.patch_group : obj.id;
-        Object a{ids_.first, obj.name + ".1", std::move(first), obj.visible, group};
-        Object b{ids_.second, obj.name + ".2", std::move(second), obj.visible, group};
+        // Names no other object has (a scene may already hold a "hill.1").
+        Object a{ids_.first, unique_name(doc, obj.name + ".1", obj.id), std::move(first),
+                 obj.visible, group};
+        Object b{ids_.second, unique_name(doc, obj.name + ".2", obj.id), std::move(second),
+                 obj.visible, group};
         before_ = std::move(obj);
         doc.objects[index_] = std::move(a);
         doc.objects.insert(doc.objects.begin() + index_ + 1, std::move(b));
@@ -193,7 +197,7 @@ public:
 
     std::string label() const override {
         std::string s = std::string("Split at ") + (curve_ ? "t" : dir_name(dir_)) + " = " +
-                        geom::format_number(t_);
+                        geom::format_short(t_);
         if (conforming_.objects.empty()) return s;
         // Neighbours refined (the pieces may be refined too: they are not counted).
         const auto neighbours = static_cast<std::size_t>(
@@ -274,7 +278,7 @@ std::unique_ptr<Command> insert_knot(std::uint64_t id, geom::Dir dir, double t, 
     r.label = [=](const Shape& before, const Shape&) {
         const bool curve = is_curve(before);
         std::string s = std::string("Insert knot ") + (curve ? "t" : dir_name(dir)) + " = " +
-                        geom::format_number(t);
+                        geom::format_short(t);
         if (times > 1) s += " (" + std::to_string(times) + " times)";
         return s;
     };
@@ -326,7 +330,8 @@ std::unique_ptr<Command> elevate_degree(std::uint64_t id, geom::Dir dir, int tim
         return geom::elevate_triangle(t, times);
     };
     r.label = [=](const Shape& before, const Shape&) {
-        const bool one_degree = is_curve(before) || kind_of(before) == ObjectKind::triangle;
+        // A tensor-product surface has two degrees; curves and triangles one.
+        const bool one_degree = !surface_of(before);
         std::string s =
             one_degree ? "Elevate degree" : std::string("Elevate degree in ") + dir_name(dir);
         if (times > 1) s += " by " + std::to_string(times);

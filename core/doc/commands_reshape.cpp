@@ -32,16 +32,16 @@ struct Outcome {
     double moved = 0;
 };
 
-std::string where(bool curve, Dir dir, double t) {
-    return std::string(curve ? "t" : dir_name(dir)) + " = " + geom::format_number(t);
+// The knot named in a refusal (full precision) or in an undo label (geom::format_short).
+std::string where(bool curve, Dir dir, double t, bool label = false) {
+    return std::string(curve ? "t" : dir_name(dir)) + " = " +
+           (label ? geom::format_short(t) : geom::format_number(t));
 }
 
 // Three significant digits: a bound read by a person (the exact value is in no decision).
 std::string moved_text(double moved) {
     if (moved == 0) return "shape unchanged";
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", moved);
-    return std::string("moves at most ") + buf;
+    return "moves at most " + geom::format_short(moved, 3);
 }
 
 // A removal that removed nothing: the knot is essential within the tolerance. How far a single
@@ -93,7 +93,7 @@ std::unique_ptr<Command> remove_knot(std::uint64_t id, Dir dir, double t, int ti
         return std::move(done->curve);
     };
     r.label = [=](const Shape& before, const Shape&) {
-        std::string s = "Remove knot " + where(is_curve(before), dir, t);
+        std::string s = "Remove knot " + where(is_curve(before), dir, t, true);
         if (times > 1 || outcome->count > 1)
             s += " (" + std::to_string(outcome->count) + " of " + std::to_string(times) +
                  (times == 1 ? " time" : " times") + ")";
@@ -152,7 +152,7 @@ std::unique_ptr<Command> split_knot(std::uint64_t id, Dir dir, double t,
     r.label = [=](const Shape& before, const Shape&) {
         const Line old_line = line_of(before, dir);
         const int m = geom::multiplicity(*old_line.U, t);
-        return "Split knot " + where(is_curve(before), dir, t) + " (x" + std::to_string(m) +
+        return "Split knot " + where(is_curve(before), dir, t, true) + " (x" + std::to_string(m) +
                " becomes x" + std::to_string(m - 1) + " and a simple knot before it), " +
                moved_text(outcome->moved);
     };

@@ -152,11 +152,7 @@ public:
 private:
     geom::Expected<std::array<geom::TrianglePatch, 3>> pieces_of(const Object& obj) const {
         const geom::TrianglePatch* t = obj.triangle();
-        if (!t)
-            return make_error(ErrorCode::schema,
-                              "object '" + obj.name + "' is a " + kind_name(obj.kind()) +
-                                  "; split_triangle splits a triangular patch",
-                              "/id");
+        if (!t) return kind_refusal(obj, "split_triangle splits a triangular patch");
         for (int k = 0; k < 3; ++k)
             if (!std::isfinite(at_[k]))
                 return make_error(ErrorCode::schema, "a barycentric coordinate must be finite",

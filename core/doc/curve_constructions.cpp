@@ -6,6 +6,7 @@
 #include <charconv>
 
 #include "core/doc/commands_common.hpp"
+#include "core/doc/recipe_build.hpp"
 #include "core/geom/coons.hpp"
 #include "core/geom/gordon.hpp"
 #include "core/geom/validate.hpp"
@@ -98,6 +99,9 @@ geom::Error rehome(geom::Error e, const std::vector<const Object*>& objects,
     return e;
 }
 
+geom::Expected<ConstructionResult> build_from_curves(const Document& doc,
+                                                     const ConstructionRequest& request);
+
 std::string join_names(const std::vector<const Object*>& objects) {
     std::string s;
     for (std::size_t k = 0; k < objects.size(); ++k) s += (k ? "-" : "") + objects[k]->name;
@@ -108,6 +112,21 @@ std::string join_names(const std::vector<const Object*>& objects) {
 
 geom::Expected<ConstructionResult> build_construction(const Document& doc,
                                                       const ConstructionRequest& request) {
+    auto built = request.kind == Construction::isocurve ? detail::build_isocurve(doc, request)
+                                                        : build_from_curves(doc, request);
+    if (!built) return built;
+    if (auto st = detail::apply_refinements(*built, request.refinements); !st) return st.error();
+    return built;
+}
+
+namespace {
+
+// The request's curves, checked: as many as the construction takes, each a curve.
+struct Chosen {
+    std::vector<const Object*> objects;
+    std::vector<geom::Curve> curves;
+};
+geom::Expected<Chosen> chosen_curves(const Document& doc, const ConstructionRequest& request) {
     const Construction kind = request.kind;
     const auto [lo, hi] = curve_count(kind);
     const std::size_t n = request.curves.size();
@@ -121,8 +140,7 @@ geom::Expected<ConstructionResult> build_construction(const Document& doc,
                               (lo == 1 && hi == 1 ? "" : "s") + ", got " + std::to_string(n),
                           "/curves");
     }
-    std::vector<const Object*> objects;
-    std::vector<geom::Curve> curves;
+    Chosen out;
     for (std::size_t k = 0; k < n; ++k) {
         const std::string at = "/curves/" + std::to_string(k);
         const Object* o = doc.find(request.curves[k]);
@@ -130,17 +148,25 @@ geom::Expected<ConstructionResult> build_construction(const Document& doc,
             return make_error(ErrorCode::schema,
                               "there is no object with id " + std::to_string(request.curves[k]),
                               at);
-        const auto* c = std::get_if<CurveObject>(&o->shape);
+        const CurveObject* c = o->curve_object();
         if (!c)
             return make_error(ErrorCode::schema,
                               "the " + role(kind, k, request.gordon_u_count) + " '" + o->name +
-                                  "' is a " + detail::kind_name(o->shape) + ", not a curve",
+                                  "' is " + kind_noun(o->kind()) + ", not a curve",
                               at);
-        objects.push_back(o);
-        curves.push_back(c->curve);
+        out.objects.push_back(o);
+        out.curves.push_back(c->curve);
     }
+    return out;
+}
 
-    ConstructionResult out;
+// The surface the construction builds from the chosen curves, and the note it leaves.
+geom::Expected<geom::Surface> construct_surface(const ConstructionRequest& request,
+                                                const Chosen& chosen, std::string& note) {
+    const Construction kind = request.kind;
+    const std::vector<geom::Curve>& curves = chosen.curves;
+    const std::vector<const Object*>& objects = chosen.objects;
+    const std::size_t n = curves.size();
     geom::Surface surface;
     switch (kind) {
     case Construction::ruled: {
@@ -174,11 +200,11 @@ geom::Expected<ConstructionResult> build_construction(const Document& doc,
         auto r = geom::oriented_sweep(curves[0], curves[1], options);
         if (!r) return rehome(r.error(), objects);
         surface = std::move(r->skinned.surface);
-        out.note = "oriented sweep of " + std::to_string(r->sections + 1) +
-                   " profile copies: largest deviation from the ideal sweep " +
-                   geom::format_number(r->max_deviation) + " at (u, v) = (" +
-                   geom::format_number(r->deviation_u) + ", " +
-                   geom::format_number(r->deviation_v) + "); more sections make it smaller";
+        note = "oriented sweep of " + std::to_string(r->sections + 1) +
+               " profile copies: largest deviation from the ideal sweep " +
+               geom::format_short(r->max_deviation) + " at (u, v) = (" +
+               geom::format_short(r->deviation_u) + ", " + geom::format_short(r->deviation_v) +
+               "); more sections make it smaller";
         break;
     }
     case Construction::skin: {
@@ -194,20 +220,22 @@ geom::Expected<ConstructionResult> build_construction(const Document& doc,
         auto r = geom::skin(curves, degree, request.parametrization);
         if (!r) return rehome(r.error(), objects);
         surface = std::move(r->surface);
-        out.note = std::string("skin of ") + std::to_string(count) + " curves, v-degree " +
-                   std::to_string(degree) + ", " +
-                   geom::parametrization_name(request.parametrization) + " parameters v =";
-        for (double v : r->params) out.note += " " + geom::format_number(v);
+        note = std::string("skin of ") + std::to_string(count) + " curves, v-degree " +
+               std::to_string(degree) + ", " + geom::parametrization_name(request.parametrization) +
+               " parameters v =";
+        for (double v : r->params) note += " " + geom::format_short(v);
         break;
     }
     case Construction::coons: {
         auto r = geom::coons({curves[0], curves[1], curves[2], curves[3]});
         if (!r) return rehome(r.error(), objects);
         surface = std::move(r).value();
-        out.note = "Coons patch: the ruled surfaces between opposite boundaries, added, minus "
-                   "the bilinear patch of the corners; it keeps all four boundaries exactly";
+        note = "Coons patch: the ruled surfaces between opposite boundaries, added, minus "
+               "the bilinear patch of the corners; it keeps all four boundaries exactly";
         break;
     }
+    case Construction::isocurve: // built by build_isocurve
+        break;
     case Construction::gordon: {
         const int nu = request.gordon_u_count;
         if (nu < 2 || static_cast<int>(n) - nu < 2)
@@ -221,20 +249,32 @@ geom::Expected<ConstructionResult> build_construction(const Document& doc,
         auto r = geom::gordon(u_curves, v_curves);
         if (!r) return rehome(r.error(), objects, nu);
         surface = std::move(r->surface);
-        out.note = "Gordon surface through " + std::to_string(nu) + " u-curves (at v =";
-        for (double v : r->v_params) out.note += " " + geom::format_number(v);
-        out.note += ") and " + std::to_string(n - nu) + " v-curves (at u =";
-        for (double u : r->u_params) out.note += " " + geom::format_number(u);
-        out.note += ")";
+        note = "Gordon surface through " + std::to_string(nu) + " u-curves (at v =";
+        for (double v : r->v_params) note += " " + geom::format_short(v);
+        note += ") and " + std::to_string(n - nu) + " v-curves (at u =";
+        for (double u : r->u_params) note += " " + geom::format_short(u);
+        note += ")";
         break;
     }
     }
-    std::string name = construction_label(kind);
+    return surface;
+}
+
+geom::Expected<ConstructionResult> build_from_curves(const Document& doc,
+                                                     const ConstructionRequest& request) {
+    auto chosen = chosen_curves(doc, request);
+    if (!chosen) return chosen.error();
+    ConstructionResult out;
+    auto surface = construct_surface(request, *chosen, out.note);
+    if (!surface) return surface.error();
+    std::string name = construction_label(request.kind);
     std::transform(name.begin(), name.end(), name.begin(),
                    [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
-    out.object.name = name + " " + join_names(objects);
-    out.object.shape = SurfaceObject{std::move(surface)};
+    out.object.name = name + " " + join_names(chosen->objects);
+    out.object.shape = SurfaceObject{std::move(surface).value()};
     return out;
 }
+
+} // namespace
 
 } // namespace isoparm::doc

@@ -7,26 +7,31 @@
 #include <string>
 #include <type_traits>
 
+#include "core/doc/kinds/kind_common.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/validate.hpp"
 
 namespace isoparm::doc {
 
 ObjectKind kind_of(const Shape& shape) {
-    return static_cast<ObjectKind>(shape.index()); // Shape lists the kinds in ObjectKind's order
+    return std::visit([](const auto& k) { return std::decay_t<decltype(k)>::kind; }, shape);
 }
-static_assert(std::is_same_v<std::variant_alternative_t<0, Shape>, SurfaceObject> &&
-              std::is_same_v<std::variant_alternative_t<1, Shape>, CurveObject> &&
-              std::is_same_v<std::variant_alternative_t<2, Shape>, ImplicitObject> &&
-              std::is_same_v<std::variant_alternative_t<3, Shape>, TriangleObject>);
+
+namespace {
+
+// The kind K's part `member` of the shape, or nullptr when the shape is of another kind.
+template <class K, class Part, class S> auto* part_of(S& shape, Part K::*member) {
+    auto* k = std::get_if<K>(&shape);
+    return k ? &(k->*member) : nullptr;
+}
+
+} // namespace
 
 geom::Surface* surface_of(Shape& shape) {
-    auto* s = std::get_if<SurfaceObject>(&shape);
-    return s ? &s->surface : nullptr;
+    return part_of(shape, &SurfaceObject::surface);
 }
 const geom::Surface* surface_of(const Shape& shape) {
-    const auto* s = std::get_if<SurfaceObject>(&shape);
-    return s ? &s->surface : nullptr;
+    return part_of(shape, &SurfaceObject::surface);
 }
 CurveObject* curve_object_of(Shape& shape) {
     return std::get_if<CurveObject>(&shape);
@@ -35,12 +40,10 @@ const CurveObject* curve_object_of(const Shape& shape) {
     return std::get_if<CurveObject>(&shape);
 }
 geom::Curve* curve_of(Shape& shape) {
-    auto* c = std::get_if<CurveObject>(&shape);
-    return c ? &c->curve : nullptr;
+    return part_of(shape, &CurveObject::curve);
 }
 const geom::Curve* curve_of(const Shape& shape) {
-    const auto* c = std::get_if<CurveObject>(&shape);
-    return c ? &c->curve : nullptr;
+    return part_of(shape, &CurveObject::curve);
 }
 ImplicitObject* implicit_of(Shape& shape) {
     return std::get_if<ImplicitObject>(&shape);
@@ -49,32 +52,35 @@ const ImplicitObject* implicit_of(const Shape& shape) {
     return std::get_if<ImplicitObject>(&shape);
 }
 geom::TrianglePatch* triangle_of(Shape& shape) {
-    auto* t = std::get_if<TriangleObject>(&shape);
-    return t ? &t->patch : nullptr;
+    return part_of(shape, &TriangleObject::patch);
 }
 const geom::TrianglePatch* triangle_of(const Shape& shape) {
-    const auto* t = std::get_if<TriangleObject>(&shape);
-    return t ? &t->patch : nullptr;
-}
-std::span<glm::dvec3> control_points_of(Shape& shape) {
-    if (geom::Surface* s = surface_of(shape)) return s->points;
-    if (geom::Curve* c = curve_of(shape)) return c->points;
-    if (geom::TrianglePatch* t = triangle_of(shape)) return t->points;
-    return {};
-}
-std::span<const glm::dvec3> control_points_of(const Shape& shape) {
-    if (const geom::Surface* s = surface_of(shape)) return s->points;
-    if (const geom::Curve* c = curve_of(shape)) return c->points;
-    if (const geom::TrianglePatch* t = triangle_of(shape)) return t->points;
-    return {};
+    return part_of(shape, &TriangleObject::patch);
 }
 
+std::span<glm::dvec3> control_points_of(Shape& shape) {
+    return std::visit([](auto& k) { return control_points(k); }, shape);
+}
+std::span<const glm::dvec3> control_points_of(const Shape& shape) {
+    return std::visit([](const auto& k) { return control_points(k); }, shape);
+}
+std::span<double> control_weights_of(Shape& shape) {
+    return std::visit([](auto& k) { return control_weights(k); }, shape);
+}
+std::span<const double> control_weights_of(const Shape& shape) {
+    return std::visit([](const auto& k) { return control_weights(k); }, shape);
+}
 bool has_control_point(const Shape& shape, int i, int j) {
-    if (i < 0) return false;
-    if (const geom::Surface* s = surface_of(shape)) return i < s->n_u && j >= 0 && j < s->n_v;
-    if (const geom::Curve* c = curve_of(shape)) return i < c->count() && j < 0;
-    if (const geom::TrianglePatch* t = triangle_of(shape)) return j >= 0 && i + j <= t->degree;
-    return false;
+    return std::visit([&](const auto& k) { return has_control_point(k, i, j); }, shape);
+}
+std::string point_label_of(const Shape& shape, PointName name, int i, int j) {
+    return std::visit([&](const auto& k) { return point_label(k, name, i, j); }, shape);
+}
+
+geom::Error kind_refusal(const Object& o, const std::string& rest, const std::string& path) {
+    return geom::make_error(geom::ErrorCode::schema,
+                            "object '" + o.name + "' is " + kind_noun(o.kind()) + "; " + rest,
+                            path);
 }
 
 Object* Document::find(std::uint64_t id) {
@@ -100,70 +106,21 @@ int Document::index_of(std::uint64_t id) const {
 
 namespace {
 
-// Bit for bit: 0.0 and -0.0 differ, a NaN equals the same NaN. Undo must restore exactly the
-// numbers it found, so `==` on doubles (which merges the zeros) is not enough.
-bool same_bits(double a, double b) {
-    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
-}
-bool same_bits(float a, float b) {
-    return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b);
-}
-bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
-    return a.size() == b.size() &&
-           (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
-}
-bool same_bits(const glm::dvec3& a, const glm::dvec3& b) {
-    return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z);
-}
-bool same_bits(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b) {
-    if (a.size() != b.size()) return false;
-    for (std::size_t k = 0; k < a.size(); ++k)
-        if (!same_bits(a[k], b[k])) return false;
-    return true;
-}
+using detail::bit_equal;
+
 bool same_bits(const Rgba& a, const Rgba& b) {
-    return same_bits(a.r, b.r) && same_bits(a.g, b.g) && same_bits(a.b, b.b) && same_bits(a.a, b.a);
+    return bit_equal(a.r, b.r) && bit_equal(a.g, b.g) && bit_equal(a.b, b.b) && bit_equal(a.a, b.a);
 }
 
-bool same_curve(const geom::Curve& a, const geom::Curve& b) {
-    return a.type == b.type && a.degree == b.degree && same_bits(a.knots, b.knots) &&
-           same_bits(a.points, b.points) && same_bits(a.weights, b.weights);
-}
-
-bool same_surface(const geom::Surface& a, const geom::Surface& b) {
-    return a.type == b.type && a.degree_u == b.degree_u && a.degree_v == b.degree_v &&
-           a.n_u == b.n_u && a.n_v == b.n_v && same_bits(a.knots_u, b.knots_u) &&
-           same_bits(a.knots_v, b.knots_v) && same_bits(a.points, b.points) &&
-           same_bits(a.weights, b.weights);
-}
-
-bool same_implicit(const ImplicitObject& a, const ImplicitObject& b) {
-    return a.expression == b.expression && a.parameter_names == b.parameter_names &&
-           same_bits(a.parameter_values, b.parameter_values) && same_bits(a.lo, b.lo) &&
-           same_bits(a.hi, b.hi) && same_bits(a.cell, b.cell);
-}
+} // namespace
 
 bool same_shape(const Shape& a, const Shape& b) {
-    if (kind_of(a) != kind_of(b)) return false;
-    switch (kind_of(a)) {
-    case ObjectKind::surface:
-        return same_surface(*surface_of(a), *surface_of(b));
-    case ObjectKind::curve: {
-        const CurveObject& c = *curve_object_of(a);
-        const CurveObject& d = *curve_object_of(b);
-        return c.plane == d.plane && c.knot_mode == d.knot_mode && same_curve(c.curve, d.curve);
-    }
-    case ObjectKind::implicit:
-        return same_implicit(*implicit_of(a), *implicit_of(b));
-    case ObjectKind::triangle: {
-        const geom::TrianglePatch& t = *triangle_of(a);
-        const geom::TrianglePatch& u = *triangle_of(b);
-        return t.rational == u.rational && t.degree == u.degree && same_bits(t.points, u.points) &&
-               same_bits(t.weights, u.weights);
-    }
-    }
-    return false;
+    if (a.index() != b.index()) return false;
+    return std::visit(
+        [&](const auto& k) { return same_bits(k, std::get<std::decay_t<decltype(k)>>(b)); }, a);
 }
+
+namespace {
 
 bool same_colors(const Colors& a, const Colors& b) {
     return same_bits(a.background, b.background) && same_bits(a.surface, b.surface) &&
@@ -178,7 +135,9 @@ bool same_colors(const Colors& a, const Colors& b) {
 
 bool same_object(const Object& a, const Object& b) {
     return a.id == b.id && a.name == b.name && a.visible == b.visible &&
-           a.patch_group == b.patch_group && same_shape(a.shape, b.shape);
+           a.patch_group == b.patch_group && same_shape(a.shape, b.shape) &&
+           a.construction.has_value() == b.construction.has_value() &&
+           (!a.construction || same_recipe(*a.construction, *b.construction));
 }
 
 bool same_geometry(const Document& a, const Document& b) {
@@ -189,11 +148,21 @@ bool same_geometry(const Document& a, const Document& b) {
 }
 
 bool same_view(const ViewState& a, const ViewState& b) {
-    return a.selection == b.selection && same_bits(a.indicator.x, b.indicator.x) &&
-           same_bits(a.indicator.y, b.indicator.y) &&
-           same_bits(a.barycentric[0], b.barycentric[0]) &&
-           same_bits(a.barycentric[1], b.barycentric[1]) &&
-           same_bits(a.barycentric[2], b.barycentric[2]) && a.display == b.display;
+    return a.selection == b.selection && bit_equal(a.indicator.x, b.indicator.x) &&
+           bit_equal(a.indicator.y, b.indicator.y) &&
+           bit_equal(a.barycentric[0], b.barycentric[0]) &&
+           bit_equal(a.barycentric[1], b.barycentric[1]) &&
+           bit_equal(a.barycentric[2], b.barycentric[2]) && a.display == b.display &&
+           a.object_display == b.object_display;
+}
+
+ObjectDisplay defaults_of(const DisplaySettings& d) {
+    return {d.control_points, d.control_net, d.point_ids, d.knot_curves};
+}
+
+ObjectDisplay display_of(const ViewState& view, std::uint64_t id) {
+    const auto it = view.object_display.find(id);
+    return it != view.object_display.end() ? it->second : defaults_of(view.display);
 }
 
 bool same_document(const Document& a, const Document& b) {

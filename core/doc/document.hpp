@@ -4,96 +4,52 @@
 #include <array>
 #include <cstdint>
 #include <glm/vec2.hpp>
+#include <map>
+#include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
+#include "core/doc/kinds/curve_kind.hpp"
+#include "core/doc/kinds/implicit_kind.hpp"
+#include "core/doc/kinds/surface_kind.hpp"
+#include "core/doc/kinds/triangle_kind.hpp"
+#include "core/doc/recipe.hpp"
 #include "core/geom/status.hpp"
 #include "core/geom/triangle.hpp"
 #include "core/geom/types.hpp"
 
 namespace isoparm::doc {
 
-// Which plane a designed curve lives in (the curve designer edits it there).
-enum class CurvePlane { xy, xz, yz, free3d };
-inline constexpr geom::EnumName<CurvePlane> curve_plane_names[] = {
-    {CurvePlane::xy, "xy"},
-    {CurvePlane::xz, "xz"},
-    {CurvePlane::yz, "yz"},
-    {CurvePlane::free3d, "free3d", "3D"},
-};
-static_assert(geom::in_declaration_order(curve_plane_names));
-constexpr std::span<const geom::EnumName<CurvePlane>> enum_names(CurvePlane) {
-    return curve_plane_names;
-}
-
-// How the curve designer chooses the knots when control points are inserted or deleted or
-// the degree changes (docs/constructions.md): clamped uniform, averaged from the chord /
-// centripetal parameters of the control polygon (Piegl & Tiller eq. 9.8), or custom: the
-// user's own knots, kept as they are and dragged with set_knot.
-// closed: DesignMentor's third mode, the periodic curve of the polygon (geom::close_periodic):
-// the stored curve holds the polygon's n points and then its first p again.
-enum class CurveKnotMode { clamped_uniform, chord, centripetal, custom, closed };
-inline constexpr geom::EnumName<CurveKnotMode> curve_knot_mode_names[] = {
-    {CurveKnotMode::clamped_uniform, "clamped_uniform", "clamped uniform"},
-    {CurveKnotMode::chord, "chord", "chord length"},
-    {CurveKnotMode::centripetal, "centripetal"},
-    {CurveKnotMode::custom, "custom"},
-    {CurveKnotMode::closed, "closed", "closed (periodic)"},
-};
-static_assert(geom::in_declaration_order(curve_knot_mode_names));
-constexpr std::span<const geom::EnumName<CurveKnotMode>> enum_names(CurveKnotMode) {
-    return curve_knot_mode_names;
-}
-
-struct CurveObject {
-    geom::Curve curve;
-    CurvePlane plane = CurvePlane::xy;
-    // Custom by default, so curves from old scenes and constructions keep their knots.
-    CurveKnotMode knot_mode = CurveKnotMode::custom;
-};
-
-struct SurfaceObject {
-    geom::Surface surface;
-};
-
-// An implicit surface f(x, y, z) = 0.
-struct ImplicitObject {
-    std::string expression;
-    std::vector<std::string> parameter_names;
-    std::vector<double> parameter_values;
-    glm::dvec3 lo{-1, -1, -1}, hi{1, 1, 1};
-    double cell = 0.05;
-};
-
-// A triangular Bezier patch (the paper's future work; Farin ch. 17). Its control point b_ijk is
-// addressed as (i, j), k = n - i - j; the selection uses the same pair.
-struct TriangleObject {
-    geom::TrianglePatch patch;
-};
-
+// The kinds of object, each with its facts in its own file (kinds/kind_facts.hpp says what a
+// kind answers and how the code asks).
 using Shape = std::variant<SurfaceObject, CurveObject, ImplicitObject, TriangleObject>;
 
-// What kind of object a shape is, and its parts: callers ask these instead of testing the
-// variant's alternatives themselves. The accessors return nullptr for another kind.
-enum class ObjectKind { surface, curve, implicit, triangle };
-// Scene files write "kind": "implicit"; messages and panels say "implicit surface".
-inline constexpr geom::EnumName<ObjectKind> object_kind_names[] = {
-    {ObjectKind::surface, "surface"},
-    {ObjectKind::curve, "curve"},
-    {ObjectKind::implicit, "implicit", "implicit surface"},
-    {ObjectKind::triangle, "triangle", "triangular patch"},
-};
-static_assert(geom::in_declaration_order(object_kind_names));
-constexpr std::span<const geom::EnumName<ObjectKind>> enum_names(ObjectKind) {
-    return object_kind_names;
+// Shape lists the kinds in ObjectKind's order, and every kind answers every fact.
+template <std::size_t... I> constexpr bool kinds_in_order(std::index_sequence<I...>) {
+    return ((std::variant_alternative_t<I, Shape>::kind == static_cast<ObjectKind>(I)) && ...);
 }
+static_assert(kinds_in_order(std::make_index_sequence<std::variant_size_v<Shape>>{}));
+static_assert(std::variant_size_v<Shape> == std::size(object_kind_names));
+
 ObjectKind kind_of(const Shape& shape);
-// "surface", "curve", "implicit surface": how messages and panels name the kind (label_of).
-inline const char* kind_name(ObjectKind kind) {
-    return geom::label_of(kind);
+
+// Calls f(std::type_identity<K>{}) for the kind K whose K::kind is `kind` (for code that knows a
+// kind by name before it has a shape: reading one).
+template <class F, std::size_t I = 0> decltype(auto) with_kind_type(ObjectKind kind, F&& f) {
+    using K = std::variant_alternative_t<I, Shape>;
+    if constexpr (I + 1 == std::variant_size_v<Shape>) {
+        return f(std::type_identity<K>{});
+    } else {
+        if (K::kind == kind) return f(std::type_identity<K>{});
+        return with_kind_type<F, I + 1>(kind, std::forward<F>(f));
+    }
 }
+
+// The parts a kind may have; the accessors return nullptr for another kind (an allow-list:
+// code for some kinds asks for those, and refuses the others with kind_refusal).
 geom::Surface* surface_of(Shape& shape);
 const geom::Surface* surface_of(const Shape& shape);
 CurveObject* curve_object_of(Shape& shape);
@@ -104,13 +60,17 @@ ImplicitObject* implicit_of(Shape& shape);
 const ImplicitObject* implicit_of(const Shape& shape);
 geom::TrianglePatch* triangle_of(Shape& shape);
 const geom::TrianglePatch* triangle_of(const Shape& shape);
-// The control points of a surface (row-major), a curve or a triangle (TrianglePatch's order);
-// none for an implicit surface.
+// The control points of any kind (a surface's row-major, a curve's, a triangle's in
+// TrianglePatch's order; none for an implicit surface), and their weights.
 std::span<glm::dvec3> control_points_of(Shape& shape);
 std::span<const glm::dvec3> control_points_of(const Shape& shape);
+std::span<double> control_weights_of(Shape& shape);
+std::span<const double> control_weights_of(const Shape& shape);
 // Whether the shape has control point (i, j) as a selection names it: a surface's P_ij, a
 // curve's P_i (j = -1), a triangle's b_ijk (i, j >= 0, i + j <= n).
 bool has_control_point(const Shape& shape, int i, int j);
+// "P23", "P4", "b210": control point (i, j) as messages and labels name it ("w23": its weight).
+std::string point_label_of(const Shape& shape, PointName name, int i, int j);
 
 struct Object {
     std::uint64_t id = 0; // stable across undo/redo; assigned by the document
@@ -121,6 +81,10 @@ struct Object {
     // original parameters, so together they tile the original domain and the tracing square
     // shows that whole domain (core/doc/patches.hpp).
     std::uint64_t patch_group = 0;
+    // What built the object, when it stays linked to its inputs (core/doc/associative.hpp): an
+    // edit of an input rebuilds it in the same command; its own points are not edited until it
+    // is detached.
+    std::optional<Recipe> construction = std::nullopt;
 
     ObjectKind kind() const { return kind_of(shape); }
     geom::Surface* surface() { return surface_of(shape); }
@@ -134,6 +98,10 @@ struct Object {
     geom::TrianglePatch* triangle() { return triangle_of(shape); }
     const geom::TrianglePatch* triangle() const { return triangle_of(shape); }
 };
+
+// "object 'T' is a triangular patch; <rest>" (`schema` at path): the refusal of code that serves
+// other kinds, naming the object's real kind.
+geom::Error kind_refusal(const Object& o, const std::string& rest, const std::string& path = "/id");
 
 // Whether moving a control point of a subpatch also moves its neighbours' so the border stays
 // closed (c0) and, where degrees and knots allow it, tangent-continuous (c1).
@@ -224,14 +192,31 @@ struct Selection {
 
 // What the user is looking at rather than what the scene is: saved with the scene, but not
 // part of undo (an undo restores geometry and leaves the view where it is).
+// One object's own display toggles (C, N, I, K with the object selected; Display > Selected
+// object): control points, net, point names and knot curves. An object without its own takes
+// the scene's DisplaySettings, which are the defaults for new objects, so hiding one object's
+// points never hides the next new surface's.
+struct ObjectDisplay {
+    bool control_points = true;
+    bool control_net = true;
+    bool point_ids = false;
+    bool knot_curves = false;
+    bool operator==(const ObjectDisplay&) const = default;
+};
+ObjectDisplay defaults_of(const DisplaySettings& d);
+
 struct ViewState {
     Selection selection;
     glm::dvec2 indicator{0.5, 0.5}; // (u, v) normalized to [0,1]^2 over the current domain
     // A triangle's indicator (r, s, t), barycentric: its own, since the square's (u, v) has
     // no meaning on a triangle and switching objects should keep both.
     geom::Barycentric barycentric{1.0 / 3, 1.0 / 3, 1.0 / 3};
-    DisplaySettings display;
+    DisplaySettings display;                               // the defaults for every object
+    std::map<std::uint64_t, ObjectDisplay> object_display; // objects with their own, by id
 };
+
+// What object `id` shows: its own toggles, else the scene's defaults.
+ObjectDisplay display_of(const ViewState& view, std::uint64_t id);
 
 struct Document {
     std::vector<Object> objects;
@@ -250,8 +235,10 @@ struct Document {
 // Geometry that is bit-identical (undo tests compare with this): every object (id, name,
 // visibility, shape with all its numbers compared bit for bit) in the same order, and colours.
 bool same_geometry(const Document& a, const Document& b);
-// One object, bit for bit (as same_geometry compares them).
+// One object, bit for bit (as same_geometry compares them), its recipe included.
 bool same_object(const Object& a, const Object& b);
+// Two shapes, bit for bit.
+bool same_shape(const Shape& a, const Shape& b);
 // The view state (selection, indicator, display settings), bit for bit.
 bool same_view(const ViewState& a, const ViewState& b);
 // same_geometry plus the view state and the continuity setting, bit for bit.

@@ -2,6 +2,9 @@
 #include "core/doc/placement.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <string>
 
 #include <glm/common.hpp>
 
@@ -18,21 +21,10 @@ void grow(std::optional<Box>& box, const glm::dvec3& p) {
     box->hi = glm::max(box->hi, p);
 }
 
-template <class Points> std::optional<Box> box_of_points(const Points& points) {
-    std::optional<Box> box;
-    for (const auto& p : points) grow(box, glm::dvec3(p));
-    return box;
-}
-
-void translate(Shape& shape, const glm::dvec3& d) {
-    for (glm::dvec3& p : control_points_of(shape)) p += d;
-}
-
 } // namespace
 
 std::optional<Box> bounds_of(const Shape& shape) {
-    if (const ImplicitObject* f = implicit_of(shape)) return Box{f->lo, f->hi};
-    return box_of_points(control_points_of(shape));
+    return std::visit([](const auto& k) { return bounds(k); }, shape);
 }
 
 std::optional<Box> scene_bounds(const Document& doc) {
@@ -47,10 +39,19 @@ std::optional<Box> scene_bounds(const Document& doc) {
     return box;
 }
 
+std::string unique_name(const Document& doc, const std::string& wanted, std::uint64_t except) {
+    auto taken = [&](const std::string& n) {
+        return std::any_of(doc.objects.begin(), doc.objects.end(),
+                           [&](const Object& o) { return o.id != except && o.name == n; });
+    };
+    if (!taken(wanted)) return wanted;
+    for (int n = 2;; ++n) {
+        const std::string name = wanted + " (" + std::to_string(n) + ")";
+        if (!taken(name)) return name;
+    }
+}
+
 void place_beside_scene(const Document& doc, Shape& shape) {
-    // An implicit surface's expression is in absolute coordinates: moving its box alone
-    // would cut the field, so it stays where its formula puts it.
-    if (kind_of(shape) == ObjectKind::implicit) return;
     const std::optional<Box> scene = scene_bounds(doc);
     const std::optional<Box> own = bounds_of(shape);
     if (!scene || !own) return;
@@ -58,7 +59,8 @@ void place_beside_scene(const Document& doc, Shape& shape) {
     const double gap = std::max(0.25 * width, 0.5);
     glm::dvec3 d{scene->hi.x + gap - own->lo.x, 0, 0};
     d.y = 0.5 * (scene->lo.y + scene->hi.y) - 0.5 * (own->lo.y + own->hi.y);
-    translate(shape, d);
+    // Each kind moves as it is drawn: control points, or an implicit surface's formula.
+    std::visit([&](auto& k) { translate(k, d); }, shape);
 }
 
 } // namespace isoparm::doc

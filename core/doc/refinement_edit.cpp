@@ -17,9 +17,9 @@ using geom::ErrorCode;
 using geom::make_error;
 
 Line line_of(const Shape& shape, Dir dir) {
-    if (auto* s = std::get_if<SurfaceObject>(&shape))
-        return {&s->surface.knots(dir), s->surface.degree(dir), s->surface.count(dir)};
-    const geom::Curve& c = std::get<CurveObject>(shape).curve;
+    if (const geom::Surface* s = surface_of(shape))
+        return {&s->knots(dir), s->degree(dir), s->count(dir)};
+    const geom::Curve& c = *curve_of(shape); // refinable: a surface or a curve
     return {&c.knots, c.degree, c.count()};
 }
 
@@ -54,23 +54,15 @@ int* selected_index(Selection& sel, std::uint64_t id, bool curve, Dir dir) {
 }
 
 bool is_curve(const Shape& shape) {
-    return std::holds_alternative<CurveObject>(shape);
+    return curve_of(shape) != nullptr;
 }
 
-// Shared checks of the refinement commands: the object has knots, and a curve is refined
-// along its only direction.
+// Shared checks of the refinement commands: the object is a surface or a curve (the kinds
+// with knots), and a curve is refined along its only direction.
 geom::Status check_refinable(const Object& obj, Dir dir, const char* what) {
-    if (obj.kind() == ObjectKind::implicit)
-        return make_error(ErrorCode::schema,
-                          "object '" + obj.name + "' is an implicit surface; " + what +
-                              " needs a curve or a surface",
-                          "/id");
-    if (obj.kind() == ObjectKind::triangle)
-        return make_error(ErrorCode::schema,
-                          "object '" + obj.name + "' is a triangular patch, which has no knots; " +
-                              what + " needs a curve or a surface",
-                          "/id");
-    if (obj.kind() == ObjectKind::curve && dir != Dir::u)
+    if (!obj.surface() && !obj.curve())
+        return kind_refusal(obj, std::string(what) + " needs a curve or a surface");
+    if (obj.curve() && dir != Dir::u)
         return make_error(ErrorCode::schema, "a curve has only one direction (u)", "/direction");
     return geom::Ok{};
 }
@@ -123,14 +115,14 @@ std::unique_ptr<Command> refinement_command(std::uint64_t id, CommandSpec spec, 
     };
     rule.forward = [id, r](const Selection& sel, const Shape& from, const Shape& to) {
         Selection out = sel;
-        if (kind_of(from) == ObjectKind::triangle) return same_triangle_point(out, id, from, to);
+        if (triangle_of(from)) return same_triangle_point(out, id, from, to);
         if (int* idx = selected_index(out, id, is_curve(from), r.dir))
             *idx = r.forward(line_of(from, r.dir), line_of(to, r.dir), *idx);
         return out;
     };
     rule.backward = [id, r](const Selection& sel, const Shape& from, const Shape& to) {
         Selection out = sel;
-        if (kind_of(from) == ObjectKind::triangle) return same_triangle_point(out, id, from, to);
+        if (triangle_of(from)) return same_triangle_point(out, id, from, to);
         if (int* idx = selected_index(out, id, is_curve(from), r.dir))
             *idx = r.backward(line_of(to, r.dir), line_of(from, r.dir), *idx);
         return out;

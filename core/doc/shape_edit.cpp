@@ -106,9 +106,9 @@ private:
         if (!made) return made.error();
         if (kind_of(*made) != obj.kind())
             return make_error(ErrorCode::schema,
-                              "object '" + obj.name + "' is a " + kind_name(obj.kind()) +
-                                  "; an edit keeps the kind of object (got a " +
-                                  kind_name(kind_of(*made)) + ")",
+                              "object '" + obj.name + "' is " + kind_noun(obj.kind()) +
+                                  "; an edit keeps the kind of object (got " +
+                                  kind_noun(kind_of(*made)) + ")",
                               rule_.shape_path);
         if (auto st = validate_shape(*made); !st) return st.error().under(rule_.shape_path);
         return made;

@@ -121,7 +121,8 @@ geom::SplineType type_from(std::uint8_t t, Cursor& in) {
     return static_cast<geom::SplineType>(t);
 }
 
-geom::Curve get_curve(Cursor& in) {
+// The records' geometry, in the order ImportWireWriter writes it.
+geom::Curve read_curve(Cursor& in) {
     geom::Curve c;
     c.type = type_from(in.get<std::uint8_t>(), in);
     c.degree = in.get<std::int32_t>();
@@ -131,7 +132,7 @@ geom::Curve get_curve(Cursor& in) {
     return c;
 }
 
-geom::Surface get_surface(Cursor& in) {
+geom::Surface read_surface(Cursor& in) {
     geom::Surface s;
     s.type = type_from(in.get<std::uint8_t>(), in);
     s.degree_u = in.get<std::int32_t>();
@@ -147,7 +148,7 @@ geom::Surface get_surface(Cursor& in) {
 
 // Counts are checked against the bytes left (every curve takes at least 25 bytes), so a garbled
 // count never reserves more than the stream holds.
-geom::Trim get_trim(Cursor& in) {
+geom::Trim read_trim(Cursor& in) {
     geom::Trim t;
     const auto has_outer = in.get<std::uint8_t>();
     if (has_outer > 1) return in.fail<geom::Trim>();
@@ -157,13 +158,31 @@ geom::Trim get_trim(Cursor& in) {
         const auto count = in.get<std::uint64_t>();
         if (!in.ok() || count > in.left() / 25) return in.cut<geom::Trim>();
         geom::TrimLoop loop;
-        for (std::uint64_t c = 0; c < count && in.ok(); ++c) loop.curves.push_back(get_curve(in));
+        for (std::uint64_t c = 0; c < count && in.ok(); ++c) loop.curves.push_back(read_curve(in));
         if (has_outer && k == 0)
             t.outer = std::move(loop);
         else
             t.holes.push_back(std::move(loop));
     }
     return t;
+}
+
+geom::TrimmedSurface read_trimmed_surface(Cursor& in) {
+    geom::TrimmedSurface t;
+    t.surface = read_surface(in);
+    t.trim = read_trim(in);
+    return t;
+}
+
+// A shape record: its name, then its geometry; kept only when the record is whole.
+template <class ReadGeometry>
+void read_shape(Cursor& in, ImportWireReading& r, ReadGeometry read_geometry) {
+    ImportedShape shape;
+    shape.name = in.text();
+    auto geometry = read_geometry(in);
+    if (!in.ok()) return;
+    shape.shape = std::move(geometry);
+    r.result.objects.push_back(std::move(shape));
 }
 
 } // namespace
@@ -264,35 +283,15 @@ ImportWireReading read_import_wire(std::string_view bytes) {
             r.items = in.get<std::uint64_t>();
             r.transferred = in.ok();
             break;
-        case tag_curve: {
-            ImportedShape shape;
-            shape.name = in.text();
-            geom::Curve c = get_curve(in);
-            if (!in.ok()) break;
-            shape.shape = std::move(c);
-            r.result.objects.push_back(std::move(shape));
+        case tag_curve:
+            read_shape(in, r, read_curve);
             break;
-        }
-        case tag_surface: {
-            ImportedShape shape;
-            shape.name = in.text();
-            geom::Surface s = get_surface(in);
-            if (!in.ok()) break;
-            shape.shape = std::move(s);
-            r.result.objects.push_back(std::move(shape));
+        case tag_surface:
+            read_shape(in, r, read_surface);
             break;
-        }
-        case tag_trimmed_surface: {
-            ImportedShape shape;
-            shape.name = in.text();
-            geom::TrimmedSurface t;
-            t.surface = get_surface(in);
-            t.trim = get_trim(in);
-            if (!in.ok()) break;
-            shape.shape = std::move(t);
-            r.result.objects.push_back(std::move(shape));
+        case tag_trimmed_surface:
+            read_shape(in, r, read_trimmed_surface);
             break;
-        }
         case tag_skipped: {
             SkippedEntity e;
             e.entity = in.text();

@@ -21,6 +21,9 @@ struct SandboxLimits {
     // copy-on-write); 0 sets no limit. Not set under AddressSanitizer, whose shadow memory
     // needs terabytes of address space.
     std::size_t memory_bytes = std::size_t{2} << 30;
+    // The most the child may write back; past it the parent stops it (kills it) and says so
+    // (0: no limit).
+    std::size_t output_bytes = 0;
 };
 
 // The limits for reading `input_bytes` of text: 10 s of CPU plus 2 s per MB (OpenCASCADE
@@ -36,6 +39,7 @@ struct SandboxRun {
         exited,      // the child ended by itself (exit_status says how)
         signaled,    // a signal ended it (signal)
         timed_out,   // the wall-time limit ran out and the parent killed it
+        too_much,    // it wrote more than output_bytes and the parent killed it
         not_started, // fork or pipe failed (why_not_started)
     };
     Ending ending = Ending::not_started;

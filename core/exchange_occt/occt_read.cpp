@@ -117,6 +117,11 @@ struct Item {
     // complex instance with RATIONAL_B_SPLINE_SURFACE / _CURVE, ISO 10303-42 4.4), even with
     // all weights 1, which OCCT reads as non-rational: the object stays NURBS, as it was.
     bool file_rational = false;
+    // STEP: what is wrong with the B-spline the file gives (occt_step_diagnosis.hpp) though
+    // OCCT transferred it: it mends some faults on its own (knots that decrease are merged into
+    // others), which would import a surface the file does not describe. Such an item is
+    // skipped with this reason.
+    std::string file_problem;
 };
 
 // The entity whose transfer gave each shape, found once for all shapes (asking the transfer
@@ -168,6 +173,7 @@ void describe(Item& item, CadFormat format, const Handle(Interface_InterfaceMode
     Handle(Standard_Transient) geometry = ent;
     if (auto face = Handle(StepShape_FaceSurface)::DownCast(ent); !face.IsNull())
         geometry = face->FaceGeometry();
+    if (!geometry.IsNull()) item.file_problem = diagnose_step_bspline(geometry);
     item.file_rational =
         !geometry.IsNull() &&
         (geometry->IsKind(
@@ -358,6 +364,8 @@ void read_and_send(const ReadPlan& plan, ReadProgress& progress, exchange::Impor
                              [&](const SkipItem& s) { return s.item == progress.item; });
             skip != plan.skip.end()) {
             out.skipped({item.entity, skip->reason});
+        } else if (!item.file_problem.empty()) {
+            out.skipped({item.entity, "not read: " + item.file_problem});
         } else {
             for (Converted& c : convert_item(item, *reader)) {
                 if (!c.shape) {

@@ -89,6 +89,11 @@ std::string how_it_ended(const exchange::SandboxRun& run, const exchange::Sandbo
     case Ending::timed_out:
         return "took longer than " + geom::format_number(limits.wall_seconds) +
                " s and was stopped";
+    case Ending::too_much:
+        return "answered with more than " + std::to_string(limits.output_bytes >> 20) +
+               " MiB of curves and surfaces (more than the " +
+               std::to_string(exchange::max_import_control_points) +
+               " control points one import takes) and was stopped";
     case Ending::signaled:
         if (run.signal == SIGXCPU || run.signal == SIGKILL)
             return "was stopped by " + exchange::describe_signal(run.signal) +
@@ -111,6 +116,85 @@ std::string how_it_ended(const exchange::SandboxRun& run, const exchange::Sandbo
 // Items a crash may leave out before the whole file is given up: a file whose faces crash the
 // reader one after another is not worth as many reads.
 constexpr int max_crashed_items = 8;
+
+// The child's limits for a file of `size` bytes.
+exchange::SandboxLimits reader_limits(std::size_t size) {
+    exchange::SandboxLimits limits = exchange::sandbox_limits_for(size);
+    // The import's budget in bytes on the wire: its control points and weights (32 bytes each)
+    // and twice that again for knots, names and records.
+    limits.output_bytes = 3 * 32 * exchange::max_import_control_points;
+    // ISOPARM_IMPORT_CPU_SECONDS: another CPU time limit (a slow machine, a huge file, a test).
+    if (const char* v = std::getenv("ISOPARM_IMPORT_CPU_SECONDS")) {
+        char* end = nullptr;
+        const double seconds = std::strtod(v, &end);
+        if (end != v && *end == '\0' && seconds > 0 && seconds < 1e6) {
+            limits.cpu_seconds = seconds;
+            limits.wall_seconds = exchange::wall_seconds_for(seconds);
+        }
+    }
+    return limits;
+}
+
+// The answer a child out of memory writes: one error record.
+std::string out_of_memory_wire() {
+    exchange::ImportWireWriter w;
+    w.take();
+    w.error(geom::make_error(ErrorCode::limit, std::string(json_io::out_of_memory_message) +
+                                                   " (OCCT's reader ran out of memory)"));
+    w.done();
+    return w.take();
+}
+
+// A child that finished its answer: the objects with every entity skipped, or its refusal.
+geom::Expected<exchange::ImportResult> finished_reading(exchange::ImportWireReading& reading,
+                                                        const exchange::CadTextCheck& check,
+                                                        bool careful,
+                                                        const std::string& whole_file_crash) {
+    if (reading.error && careful) {
+        // Not readable face by face either: the first crash is the answer.
+        return geom::make_error(ErrorCode::parse,
+                                "OpenCASCADE's STEP reader " + whole_file_crash +
+                                    " while building its shapes, and the file cannot be "
+                                    "read face by face instead (" +
+                                    reading.error->message +
+                                    "); nothing is imported (it ran in a process of "
+                                    "its own, so isoparm itself is unaffected)");
+    }
+    if (reading.error) {
+        // A cut file is the likelier reason for a reader's refusal: say it first.
+        geom::Error e = *reading.error;
+        for (const exchange::SkippedEntity& note : check.notes)
+            e.message = note.reason + "; " + e.message;
+        return e;
+    }
+    exchange::ImportResult out;
+    out.skipped = check.notes;
+    for (const exchange::BadEntity& bad : check.bad_entities)
+        out.skipped.push_back({"IGES entity D" + std::to_string(bad.directory_line),
+                               bad.reason + "; it is not read, and a face on it is lost"});
+    out.objects = std::move(reading.result.objects);
+    for (exchange::SkippedEntity& s : reading.result.skipped) out.skipped.push_back(std::move(s));
+    return out;
+}
+
+// A child that ended without an answer, and was not read again: how and where it ended.
+geom::Error reader_failure(const exchange::SandboxRun& run, CadFormat format,
+                           const std::string& how, const ReadProgress& progress) {
+    const int stage = progress.stage.load();
+    const bool limit = run.ending == exchange::SandboxRun::Ending::timed_out ||
+                       (run.ending == exchange::SandboxRun::Ending::signaled &&
+                        (run.signal == SIGXCPU || run.signal == SIGKILL)) ||
+                       (run.ending == exchange::SandboxRun::Ending::exited && run.exit_status == 4);
+    std::string where = stage_text(stage);
+    if (stage == ReadProgress::converting && progress.entity[0] != '\0')
+        where += std::string(" (at ") + progress.entity + ")";
+    return geom::make_error(limit ? ErrorCode::limit : ErrorCode::parse,
+                            std::string("OpenCASCADE's ") +
+                                (format == CadFormat::iges ? "IGES" : "STEP") + " reader " + how +
+                                " while " + where +
+                                "; nothing is imported (it ran in a process of its own, so "
+                                "isoparm itself is unaffected)");
+}
 
 } // namespace
 
@@ -142,27 +226,10 @@ geom::Expected<exchange::ImportResult> read(std::string_view text, CadFormat for
                                         ")");
         plan.path = file->path();
     }
-    exchange::SandboxLimits limits = exchange::sandbox_limits_for(text.size());
-    // ISOPARM_IMPORT_CPU_SECONDS: another CPU time limit (a slow machine, a huge file, a test).
-    if (const char* v = std::getenv("ISOPARM_IMPORT_CPU_SECONDS")) {
-        char* end = nullptr;
-        const double seconds = std::strtod(v, &end);
-        if (end != v && *end == '\0' && seconds > 0 && seconds < 1e6) {
-            limits.cpu_seconds = seconds;
-            limits.wall_seconds = exchange::wall_seconds_for(seconds);
-        }
-    }
+    const exchange::SandboxLimits limits = reader_limits(text.size());
     exchange::SharedWithChild<ReadProgress> progress;
     // Built here: a child out of memory may have none left to build it.
-    std::string out_of_memory_record;
-    {
-        exchange::ImportWireWriter w;
-        w.take();
-        w.error(geom::make_error(ErrorCode::limit, std::string(json_io::out_of_memory_message) +
-                                                       " (OCCT's reader ran out of memory)"));
-        w.done();
-        out_of_memory_record = w.take();
-    }
+    const std::string out_of_memory_record = out_of_memory_wire();
     std::string whole_file_crash; // how the reader ended when it read the file whole
     for (int attempt = 0;; ++attempt) {
         progress.reset();
@@ -180,34 +247,7 @@ geom::Expected<exchange::ImportResult> read(std::string_view text, CadFormat for
         exchange::ImportWireReading reading = exchange::read_import_wire(run.output);
         const bool finished = run.ending == exchange::SandboxRun::Ending::exited &&
                               run.exit_status == 0 && reading.done && !reading.garbled;
-        if (finished) {
-            if (reading.error && plan.careful) {
-                // Not readable face by face either: the first crash is the answer.
-                return geom::make_error(ErrorCode::parse,
-                                        "OpenCASCADE's STEP reader " + whole_file_crash +
-                                            " while building its shapes, and the file cannot be "
-                                            "read face by face instead (" +
-                                            reading.error->message +
-                                            "); nothing is imported (it ran in a process of "
-                                            "its own, so isoparm itself is unaffected)");
-            }
-            if (reading.error) {
-                // A cut file is the likelier reason for a reader's refusal: say it first.
-                geom::Error e = *reading.error;
-                for (const exchange::SkippedEntity& note : check.notes)
-                    e.message = note.reason + "; " + e.message;
-                return e;
-            }
-            exchange::ImportResult out;
-            out.skipped = check.notes;
-            for (const exchange::BadEntity& bad : check.bad_entities)
-                out.skipped.push_back({"IGES entity D" + std::to_string(bad.directory_line),
-                                       bad.reason + "; it is not read, and a face on it is lost"});
-            out.objects = std::move(reading.result.objects);
-            for (exchange::SkippedEntity& s : reading.result.skipped)
-                out.skipped.push_back(std::move(s));
-            return out;
-        }
+        if (finished) return finished_reading(reading, check, plan.careful, whole_file_crash);
         const std::string how = how_it_ended(run, limits);
         const int stage = progress->stage.load();
         const std::int64_t item = progress->item.load();
@@ -221,26 +261,14 @@ geom::Expected<exchange::ImportResult> read(std::string_view text, CadFormat for
             continue;
         }
         if (stage == ReadProgress::converting && item >= 0 && attempt < max_crashed_items &&
-            run.ending != exchange::SandboxRun::Ending::timed_out) {
+            run.ending != exchange::SandboxRun::Ending::timed_out &&
+            run.ending != exchange::SandboxRun::Ending::too_much) {
             // One face took the reader down: read again without it.
             plan.skip.push_back({item, "OCCT " + how + (plan.careful ? " reading" : " converting") +
                                            " it; it is left out"});
             continue;
         }
-        const bool limit =
-            run.ending == exchange::SandboxRun::Ending::timed_out ||
-            (run.ending == exchange::SandboxRun::Ending::signaled &&
-             (run.signal == SIGXCPU || run.signal == SIGKILL)) ||
-            (run.ending == exchange::SandboxRun::Ending::exited && run.exit_status == 4);
-        std::string where = stage_text(stage);
-        if (stage == ReadProgress::converting && progress->entity[0] != '\0')
-            where += std::string(" (at ") + progress->entity + ")";
-        return geom::make_error(limit ? ErrorCode::limit : ErrorCode::parse,
-                                std::string("OpenCASCADE's ") +
-                                    (format == CadFormat::iges ? "IGES" : "STEP") + " reader " +
-                                    how + " while " + where +
-                                    "; nothing is imported (it ran in a process of its own, so "
-                                    "isoparm itself is unaffected)");
+        return reader_failure(run, format, how, *progress);
     }
 }
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <limits>
 
 #include "core/geom/binomial.hpp"
 #include "core/geom/knots.hpp"
@@ -30,7 +31,16 @@ void basis_funs(int span, double t, int p, const Knots& U, double* N) {
         right[j] = U[span + j] - t;
         double saved = 0.0;
         for (int r = 0; r < j; ++r) {
-            const double temp = N[r] / (right[r + 1] + left[j - r]);
+            const double denom = right[r + 1] + left[j - r];
+            if (denom < std::numeric_limits<double>::min()) {
+                // Knots a subnormal apart (a domain [0, 5e-324]): 1 / denom overflows, so the
+                // ratios are formed first (each in [0, 1]).
+                const double temp = N[r];
+                N[r] = saved + right[r + 1] / denom * temp;
+                saved = left[j - r] / denom * temp;
+                continue;
+            }
+            const double temp = N[r] / denom;
             N[r] = saved + right[r + 1] * temp;
             saved = left[j - r] * temp;
         }
@@ -52,6 +62,12 @@ void ders_basis_funs(int span, double t, int p, int d, const Knots& U, double* d
         double saved = 0.0;
         for (int r = 0; r < j; ++r) {
             NDU(j, r) = right[r + 1] + left[j - r]; // lower triangle: knot differences
+            if (NDU(j, r) < std::numeric_limits<double>::min()) { // as in basis_funs
+                const double temp = NDU(r, j - 1);
+                NDU(r, j) = saved + right[r + 1] / NDU(j, r) * temp;
+                saved = left[j - r] / NDU(j, r) * temp;
+                continue;
+            }
             const double temp = NDU(r, j - 1) / NDU(j, r);
             NDU(r, j) = saved + right[r + 1] * temp;
             saved = left[j - r] * temp;

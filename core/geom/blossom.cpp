@@ -36,10 +36,21 @@ HPoint blossom_homogeneous(const Knots& U, int p, const std::vector<HPoint>& Pw,
 
 } // namespace
 
+// A polynomial's blossom is an affine combination of its control points, whatever the
+// arguments: its weight is exactly 1, but computed in homogeneous space it is a sum of large
+// terms that cancel (the line from (0,0) to (1,1) at 1e16: 1 - 1e16 + 1e16 = 0 in floating
+// point). So only a rational object divides by the computed weight.
+namespace {
+std::optional<glm::dvec3> cartesian_of(const HPoint& h, SplineType type) {
+    if (!is_rational(type)) return glm::dvec3(h);
+    return DeBoorTriangle::cartesian(h);
+}
+} // namespace
+
 std::optional<glm::dvec3> curve_blossom(const Curve& c, int span, const std::vector<double>& args) {
     std::vector<HPoint> Pw(c.count());
     for (int i = 0; i < c.count(); ++i) Pw[i] = c.hpoint(i);
-    return DeBoorTriangle::cartesian(blossom_homogeneous(c.knots, c.degree, Pw, span, args));
+    return cartesian_of(blossom_homogeneous(c.knots, c.degree, Pw, span, args), c.type);
 }
 
 std::optional<glm::dvec3> surface_blossom(const Surface& s, int span_u, int span_v,
@@ -51,8 +62,7 @@ std::optional<glm::dvec3> surface_blossom(const Surface& s, int span_u, int span
         for (int i = 0; i < s.n_u; ++i) column[i] = s.hpoint(i, j);
         row[j] = blossom_homogeneous(s.knots_u, s.degree_u, column, span_u, u_args);
     }
-    return DeBoorTriangle::cartesian(
-        blossom_homogeneous(s.knots_v, s.degree_v, row, span_v, v_args));
+    return cartesian_of(blossom_homogeneous(s.knots_v, s.degree_v, row, span_v, v_args), s.type);
 }
 
 std::vector<double> deboor_point_arguments(const Knots& U, int p, int level, int index, double t) {

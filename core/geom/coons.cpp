@@ -54,6 +54,13 @@ Expected<Surface> coons(const std::array<Curve, 4>& curves) {
         if (!p) return p.error();
         c[k] = std::move(p).value();
     }
+    // The result has at least as many points per direction as its longest boundary curve
+    // (making curves compatible only adds points): the caps are checked before the work (a
+    // degree-1500 boundary took 9 s to be refused at the end).
+    if (Status st = construct_detail::check_result_size(std::max(c[0].count(), c[1].count()),
+                                                        std::max(c[2].count(), c[3].count()));
+        !st)
+        return st.error();
     // Corners, each curve taken on its own domain's ends.
     auto end = [&](int k, bool last) {
         const Interval d = domain(c[k]);

@@ -20,7 +20,10 @@ DeBoorTriangle deboor_polar(const Knots& U, int p, const std::vector<HPoint>& Pw
     // Level k, entry r stands for P_i^k with i = s - p + k + r:
     // P_i^k = (1 - a) P_{i-1}^{k-1} + a P_i^{k-1},  a = (t_k - U_i) / (U_{i+p+1-k} - U_i).
     // On the span s the denominators are positive (U_{i+p+1-k} >= U_{s+1} > U_s >= U_i), so
-    // this is right at knots of any multiplicity.
+    // this is right at knots of any multiplicity. Outside [0, 1] (a blossom's arguments may be
+    // anywhere) (1 - a) and a are large and of opposite signs, and their terms would cancel
+    // what is equal in both points (the line from (0, 1) to (1, 1) at 1e16 would lose its
+    // y = 1, and every weight its exact 1): there it is the nearer point plus the difference.
     for (int k = 1; k <= p; ++k) {
         const double t = args[k - 1];
         const auto& prev = tri.levels[k - 1];
@@ -29,7 +32,12 @@ DeBoorTriangle deboor_polar(const Knots& U, int p, const std::vector<HPoint>& Pw
         for (int r = 0; r <= p - k; ++r) {
             const int i = span - p + k + r;
             const double a = (t - U[i]) / (U[i + p + 1 - k] - U[i]);
-            cur[r] = (1.0 - a) * prev[r] + a * prev[r + 1];
+            if (a >= 0.0 && a <= 1.0)
+                cur[r] = (1.0 - a) * prev[r] + a * prev[r + 1];
+            else if (a > 1.0)
+                cur[r] = prev[r + 1] + (a - 1.0) * (prev[r + 1] - prev[r]);
+            else
+                cur[r] = prev[r] + a * (prev[r + 1] - prev[r]);
         }
     }
     return tri;

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 
 namespace isoparm::geom {
@@ -51,6 +52,17 @@ template <class E> std::optional<E> parse_name(std::string_view name) {
     for (const EnumName<E>& entry : enum_names(E{}))
         if (name == entry.name) return entry.value;
     return std::nullopt;
+}
+
+// Every name of the table, for a refusal that lists them: "xy, xz, yz or free3d".
+template <class E> std::string names_list(std::string_view last_joint = " or ") {
+    const std::span<const EnumName<E>> table = enum_names(E{});
+    std::string out;
+    for (std::size_t k = 0; k < table.size(); ++k) {
+        if (k > 0) out += k + 1 == table.size() ? std::string(last_joint) : std::string(", ");
+        out += table[k].name;
+    }
+    return out;
 }
 
 } // namespace isoparm::geom

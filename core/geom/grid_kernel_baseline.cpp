@@ -4,8 +4,10 @@
 #include "core/geom/grid_kernel.hpp"
 
 #include <cstdlib>
-#include <cstring>
 #include <initializer_list>
+#include <optional>
+
+#include "core/geom/enum_names.hpp"
 
 #define ISOPARM_KERNEL_LANES 2
 #include "core/geom/grid_kernel.inl"
@@ -52,24 +54,23 @@ bool supported(Path path) {
     return false;
 }
 
+// The paths' names (ISOPARM_SIMD, benchmarks, tests). Here, not in the header: the ISA builds
+// include grid_kernel.hpp and must not see library templates.
+inline constexpr EnumName<Path> path_names[] = {
+    {Path::baseline, "baseline"}, {Path::avx2, "avx2"}, {Path::avx512, "avx512"}};
+static_assert(in_declaration_order(path_names));
+constexpr std::span<const EnumName<Path>> enum_names(Path) {
+    return path_names;
+}
+
 const char* name(Path path) {
-    switch (path) {
-    case Path::baseline:
-        return "baseline";
-    case Path::avx2:
-        return "avx2";
-    case Path::avx512:
-        return "avx512";
-    }
-    return "?";
+    return name_of(path);
 }
 
 namespace {
 Path choose() {
-    if (const char* forced = std::getenv("ISOPARM_SIMD"); forced && *forced) {
-        for (Path p : {Path::baseline, Path::avx2, Path::avx512})
-            if (std::strcmp(forced, name(p)) == 0 && supported(p)) return p;
-    }
+    if (const char* forced = std::getenv("ISOPARM_SIMD"); forced && *forced)
+        if (const std::optional<Path> p = parse_name<Path>(forced); p && supported(*p)) return *p;
     for (Path p : {Path::avx512, Path::avx2})
         if (supported(p)) return p;
     return Path::baseline;

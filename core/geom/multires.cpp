@@ -21,7 +21,8 @@ std::string number_text(double x) {
     return s;
 }
 
-std::vector<glm::dvec3> apply(const DenseMatrix& M, const std::vector<glm::dvec3>& x) {
+// Named so that no argument's namespace offers another (std::apply for a std::vector).
+std::vector<glm::dvec3> multiply(const DenseMatrix& M, const std::vector<glm::dvec3>& x) {
     assert(static_cast<int>(x.size()) == M.cols);
     std::vector<glm::dvec3> out(M.rows, glm::dvec3(0.0));
     for (int r = 0; r < M.rows; ++r)
@@ -111,8 +112,8 @@ CurveDecomposition decompose(const std::vector<glm::dvec3>& points, int from, in
     std::vector<glm::dvec3> c = points;
     for (int j = from; j > to; --j) {
         const WaveletFilters& f = cubic_wavelet_filters(j);
-        d.details[j - 1 - to] = apply(f.B, c);
-        c = apply(f.A, c);
+        d.details[j - 1 - to] = multiply(f.B, c);
+        c = multiply(f.A, c);
     }
     d.coarse = std::move(c);
     return d;
@@ -122,8 +123,8 @@ std::vector<glm::dvec3> reconstruct(const CurveDecomposition& d) {
     std::vector<glm::dvec3> c = d.coarse;
     for (std::size_t k = 0; k < d.details.size(); ++k) {
         const WaveletFilters& f = cubic_wavelet_filters(d.level + static_cast<int>(k) + 1);
-        std::vector<glm::dvec3> fine = apply(f.P, c);
-        const std::vector<glm::dvec3> detail = apply(f.Q, d.details[k]);
+        std::vector<glm::dvec3> fine = multiply(f.P, c);
+        const std::vector<glm::dvec3> detail = multiply(f.Q, d.details[k]);
         for (std::size_t r = 0; r < fine.size(); ++r) fine[r] += detail[r];
         c = std::move(fine);
     }

@@ -286,7 +286,7 @@ Expected<Curve> curve_from_homogeneous(const Curve& like, int degree, Knots knot
             return make_error_nopath(ErrorCode::weights,
                                      "the result needs control point " + std::to_string(i) +
                                          " at infinity (weight 0 with non-zero weighted "
-                                         "coordinates)");
+                                         "coordinates): the weights change sign there");
         }
         const glm::dvec3& p = c.points[i];
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) ||

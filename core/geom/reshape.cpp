@@ -4,8 +4,9 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
-#include "core/geom/evaluate.hpp"
+#include "core/geom/basis.hpp"
 #include "core/geom/knots.hpp"
+#include "core/geom/work_budget.hpp"
 
 namespace isoparm::geom {
 
@@ -15,23 +16,78 @@ SplineType without_bezier(SplineType t) {
     return is_rational(t) ? SplineType::nurbs : SplineType::bspline;
 }
 
-// Samples per knot span when measuring how far an edit moved the shape.
-constexpr int samples_per_span = 32;
-constexpr int max_samples_per_direction = 4096;
+// How far a split moved the shape: the largest distance between the old and new curve (or
+// surface) over their common domain. The difference is a polynomial (rational) on each piece
+// between consecutive breakpoints of either knot vector, so each piece is sampled on its own,
+// its ends included as that piece's own limits: at a knot of multiplicity p + 1 the curve
+// jumps, and the supremum is the limit from the side where the distance is largest (the
+// settled reading of geom-protocol-2.md). Samples: up to 32 a piece, at most 4096 along the
+// split direction (64 across it, for a surface).
+constexpr int samples_per_piece = 32;
+constexpr int max_samples_split = 4096;
+constexpr int max_samples_across = 64;
 
-// Parameters covering [lo, hi] with `per_span` samples in each span of either knot vector.
-std::vector<double> sample_params(double lo, double hi, int spans) {
-    const int count = std::clamp(spans * samples_per_span, 2, max_samples_per_direction);
-    std::vector<double> t(static_cast<std::size_t>(count) + 1);
-    for (int k = 0; k <= count; ++k) t[k] = lo + (hi - lo) * k / count;
-    t.back() = hi;
-    return t;
+// A piece [lo, hi] between consecutive distinct breakpoints and the span of each knot vector
+// it lies in.
+struct Piece {
+    double lo = 0, hi = 0;
+    int span_before = 0, span_after = 0;
+};
+
+std::vector<Piece> pieces_of(const Knots& before, const Knots& after, int p, int n, double lo,
+                             double hi) {
+    std::vector<double> cuts{lo, hi};
+    for (const Knots* U : {&before, &after})
+        for (double t : *U)
+            if (t > lo && t < hi) cuts.push_back(t);
+    std::sort(cuts.begin(), cuts.end());
+    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+    std::vector<Piece> out;
+    for (std::size_t k = 0; k + 1 < cuts.size(); ++k)
+        out.push_back({cuts[k], cuts[k + 1], find_span(before, p, n, cuts[k]),
+                       find_span(after, p, n, cuts[k])});
+    return out;
 }
 
-int spans_of(const Knots& U, int p, int n) {
-    int spans = 0;
-    for (int k = p; k < n; ++k) spans += U[k] < U[k + 1];
-    return spans;
+int samples_for(std::size_t pieces, int most) {
+    return std::clamp(most / static_cast<int>(std::max<std::size_t>(pieces, 1)), 1,
+                      samples_per_piece);
+}
+
+double sample(const Piece& piece, int k, int m) {
+    return k == m ? piece.hi : piece.lo + (piece.hi - piece.lo) * k / m;
+}
+
+// The point of the polynomial piece on knot span `span` at t, also at the span's ends (its
+// limits there): Piegl & Tiller A2.2 evaluates a span's basis polynomials at any t.
+std::optional<glm::dvec3> piece_point(const Curve& c, int span, double t) {
+    std::vector<double> N(static_cast<std::size_t>(c.degree) + 1);
+    basis_funs(span, t, c.degree, c.knots, N.data());
+    HPoint sum{0, 0, 0, 0};
+    for (int j = 0; j <= c.degree; ++j) sum += N[j] * c.hpoint(span - c.degree + j);
+    if (sum.w == 0) return std::nullopt;
+    return glm::dvec3(sum) / sum.w;
+}
+
+std::optional<glm::dvec3> piece_point(const Surface& s, int span_u, int span_v, double u,
+                                      double v) {
+    std::vector<double> Nu(static_cast<std::size_t>(s.degree_u) + 1),
+        Nv(static_cast<std::size_t>(s.degree_v) + 1);
+    basis_funs(span_u, u, s.degree_u, s.knots_u, Nu.data());
+    basis_funs(span_v, v, s.degree_v, s.knots_v, Nv.data());
+    HPoint sum{0, 0, 0, 0};
+    for (int a = 0; a <= s.degree_u; ++a)
+        for (int b = 0; b <= s.degree_v; ++b)
+            sum += Nu[a] * Nv[b] * s.hpoint(span_u - s.degree_u + a, span_v - s.degree_v + b);
+    if (sum.w == 0) return std::nullopt;
+    return glm::dvec3(sum) / sum.w;
+}
+
+double common_lo(const Interval& a, const Interval& b) {
+    return std::max(a.lo, b.lo);
+}
+double common_hi(const Interval& a, const Interval& b) {
+    return std::min(a.hi, b.hi);
 }
 
 // Where the split goes, checked: the index of the knot's first copy and the new value.
@@ -101,45 +157,72 @@ Surface close_periodic(const Surface& s, Dir dir) {
     return out;
 }
 
-Expected<KnotSplit<Curve>> split_knot(const Curve& c, double knot, std::optional<double> delta) {
+Expected<KnotSplit<Curve>> split_knot(const Curve& c, double knot, std::optional<double> delta,
+                                      const std::string& budget_path) {
     auto place = place_split(c.knots, knot, delta);
     if (!place) return place.error();
     KnotSplit<Curve> out{c, 0.0};
     out.result.knots[place->index] = place->value;
     if (is_bezier(c.type)) out.result.type = without_bezier(c.type);
-    const Interval a = domain(c);
-    const Interval b = domain(out.result);
-    for (double t : sample_params(std::max(a.lo, b.lo), std::min(a.hi, b.hi),
-                                  spans_of(out.result.knots, c.degree, c.count()))) {
-        const auto before = curve_point(c, t), after = curve_point(out.result, t);
-        if (before && after)
-            out.max_change = std::max(out.max_change, glm::length(*after - *before));
-    }
+    const Interval a = domain(c), b = domain(out.result);
+    const std::vector<Piece> pieces =
+        pieces_of(c.knots, out.result.knots, c.degree, c.count(), common_lo(a, b), common_hi(a, b));
+    const int m = samples_for(pieces.size(), max_samples_split);
+    const double count = static_cast<double>(pieces.size()) * (m + 1);
+    if (Status ok =
+            spend_work({2 * estimate_curve_evaluation(count, c.degree, 0).steps, 0}, budget_path,
+                       "measuring the change at " + with_thousands(count) + " points of a degree-" +
+                           std::to_string(c.degree) + " curve");
+        !ok)
+        return ok.error();
+    for (const Piece& piece : pieces)
+        for (int k = 0; k <= m; ++k) {
+            const double t = sample(piece, k, m);
+            const auto before = piece_point(c, piece.span_before, t);
+            const auto after = piece_point(out.result, piece.span_after, t);
+            if (before && after)
+                out.max_change = std::max(out.max_change, glm::length(*after - *before));
+        }
     return out;
 }
 
 Expected<KnotSplit<Surface>> split_knot(const Surface& s, Dir dir, double knot,
-                                        std::optional<double> delta) {
+                                        std::optional<double> delta,
+                                        const std::string& budget_path) {
     auto place = place_split(s.knots(dir), knot, delta);
     if (!place) return place.error();
     KnotSplit<Surface> out{s, 0.0};
     (dir == Dir::u ? out.result.knots_u : out.result.knots_v)[place->index] = place->value;
     if (is_bezier(s.type)) out.result.type = without_bezier(s.type);
-    std::vector<double> params[2];
+    std::vector<Piece> pieces[2];
+    int samples[2];
     for (Dir d : {Dir::u, Dir::v}) {
-        const Interval a = domain(s, d);
-        const Interval b = domain(out.result, d);
-        // Fewer samples across the split direction's partner keep the grid near 4096 x 64.
-        params[d == Dir::u ? 0 : 1] =
-            sample_params(std::max(a.lo, b.lo), std::min(a.hi, b.hi),
-                          d == dir ? spans_of(out.result.knots(d), s.degree(d), s.count(d)) : 2);
+        const int k = d == Dir::u ? 0 : 1;
+        const Interval a = domain(s, d), b = domain(out.result, d);
+        pieces[k] = pieces_of(s.knots(d), out.result.knots(d), s.degree(d), s.count(d),
+                              common_lo(a, b), common_hi(a, b));
+        samples[k] =
+            samples_for(pieces[k].size(), d == dir ? max_samples_split : max_samples_across);
     }
-    for (double u : params[0])
-        for (double v : params[1]) {
-            const auto before = surface_point(s, u, v), after = surface_point(out.result, u, v);
-            if (before && after)
-                out.max_change = std::max(out.max_change, glm::length(*after - *before));
-        }
+    const double count = static_cast<double>(pieces[0].size()) * (samples[0] + 1) *
+                         static_cast<double>(pieces[1].size()) * (samples[1] + 1);
+    if (Status ok = spend_work(
+            {2 * estimate_surface_evaluation(count, s.degree_u, s.degree_v, 0, false).steps, 0},
+            budget_path,
+            "measuring the change at " + with_thousands(count) + " points of a degree (" +
+                std::to_string(s.degree_u) + ", " + std::to_string(s.degree_v) + ") surface");
+        !ok)
+        return ok.error();
+    for (const Piece& pu : pieces[0])
+        for (int i = 0; i <= samples[0]; ++i)
+            for (const Piece& pv : pieces[1])
+                for (int j = 0; j <= samples[1]; ++j) {
+                    const double u = sample(pu, i, samples[0]), v = sample(pv, j, samples[1]);
+                    const auto before = piece_point(s, pu.span_before, pv.span_before, u, v);
+                    const auto after = piece_point(out.result, pu.span_after, pv.span_after, u, v);
+                    if (before && after)
+                        out.max_change = std::max(out.max_change, glm::length(*after - *before));
+                }
     return out;
 }
 

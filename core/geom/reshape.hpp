@@ -3,6 +3,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include "core/geom/status.hpp"
 #include "core/geom/types.hpp"
@@ -26,12 +27,18 @@ bool is_closed_periodic(const Curve& c);
 // appears just before it; the shape changes slightly. delta defaults to 1% of the span before
 // the knot. Errors (`schema`): a value that is not a knot, or is simple, or has no knot before
 // it ("/knot"); delta not > 0 or reaching the previous distinct knot ("/delta").
+// max_change is the supremum of the distance between old and new over their common domain
+// (at a knot of multiplicity p + 1, where the curve jumps, the limit from the side where it is
+// largest), measured piece by piece; its cost is charged to the work budget first (`limit` at
+// `budget_path` when a high degree makes it too costly).
 template <class Shape> struct KnotSplit {
     Shape result;
-    double max_change = 0; // largest distance between old and new over a dense sample
+    double max_change = 0;
 };
-Expected<KnotSplit<Curve>> split_knot(const Curve& c, double knot, std::optional<double> delta);
+Expected<KnotSplit<Curve>> split_knot(const Curve& c, double knot, std::optional<double> delta,
+                                      const std::string& budget_path = "");
 Expected<KnotSplit<Surface>> split_knot(const Surface& s, Dir dir, double knot,
-                                        std::optional<double> delta);
+                                        std::optional<double> delta,
+                                        const std::string& budget_path = "");
 
 } // namespace isoparm::geom

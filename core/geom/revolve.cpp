@@ -55,6 +55,9 @@ Expected<Surface> revolve(const Curve& profile, double degrees) {
         // A full turn closes exactly: the last column is the first, not a rounded copy.
         if (degrees == 360.0) s.point(i, n_v - 1) = P;
     }
+    // A point on the axis turned by 180 degrees is (-0, -0, z): zero has no sign here, as the
+    // protocol and the scene files write it (a rebuilt vase equals the one saved).
+    for (glm::dvec3& q : s.points) q += glm::dvec3(0.0);
     return s;
 }
 

@@ -42,7 +42,8 @@ Expected<geom::SplineType> read_type(const json& j) {
     }
     const std::optional<geom::SplineType> t = enum_value<geom::SplineType>(*it);
     if (!t)
-        return schema_error("type must be one of bezier, rational_bezier, bspline, nurbs", "/type");
+        return schema_error("type must be one of " + geom::names_list<geom::SplineType>(", "),
+                            "/type");
     return *t;
 }
 
@@ -184,32 +185,16 @@ Expected<geom::Curve> curve_from_json(const json& j) {
     return c;
 }
 
-Expected<geom::Surface> surface_from_json(const json& j) {
-    if (!j.is_object()) return schema_error("a surface is a JSON object", "");
-    if (auto st = check_geometry_members(j, "a surface"); !st) return st.error();
-    Expected<geom::SplineType> type = read_type(j);
-    if (!type) return type.error();
+namespace {
 
-    const auto degree_it = j.find("degree");
-    if (degree_it == j.end()) return missing_member("", "degree");
-    if (!degree_it->is_array() || degree_it->size() != 2)
-        return schema_error("a surface's degree is [degree_u, degree_v]", "/degree");
-    std::int64_t degree[2];
-    for (int d = 0; d < 2; ++d) {
-        Expected<std::int64_t> p = read_one_degree((*degree_it)[d], "/degree" + at(d));
-        if (!p) return p.error();
-        degree[d] = *p;
-    }
-
-    const auto points_it = j.find("points");
-    if (points_it == j.end()) return missing_member("", "points");
-    const json& P = *points_it;
+// A surface's control points: n_u rows of n_v points; the shape first (cheap), then the size
+// caps, then the coordinates.
+geom::Status read_surface_points(const json& P, geom::Surface& s) {
     if (!P.is_array())
         return schema_error("a surface's points are n_u rows of n_v points [x, y, z]", "/points");
     const long max_dir = geom::max_points_per_direction;
     if (static_cast<long>(P.size()) > max_dir)
         return make_error(ErrorCode::limit, "too many points along u", "/points");
-    // The shape first (cheap), then the size caps, then the coordinates.
     long n_v = -1;
     for (std::size_t i = 0; i < P.size(); ++i) {
         const std::string row = "/points" + at(static_cast<long>(i));
@@ -235,8 +220,6 @@ Expected<geom::Surface> surface_from_json(const json& j) {
                               std::to_string(geom::max_points_per_surface) + ")",
                           "/points");
     }
-    geom::Surface s;
-    s.type = *type;
     s.n_u = static_cast<int>(n_u);
     s.n_v = static_cast<int>(n_v);
     s.points.reserve(static_cast<std::size_t>(n_u * n_v));
@@ -249,6 +232,65 @@ Expected<geom::Surface> surface_from_json(const json& j) {
             s.points.push_back(*p);
         }
     }
+    return geom::Ok{};
+}
+
+// A surface's weights (rational types only): n_u rows of n_v numbers; unit weights when absent.
+geom::Status read_surface_weights(const json& j, geom::Surface& s) {
+    const long n_u = s.n_u, n_v = s.n_v;
+    const auto weights_it = j.find("weights");
+    if (weights_it == j.end()) {
+        s.weights.assign(s.points.size(), 1.0);
+        return geom::Ok{};
+    }
+    if (!geom::is_rational(s.type)) {
+        return schema_error(std::string("a ") + geom::name_of(s.type) +
+                                " surface takes no weights (use rational_bezier or nurbs)",
+                            "/weights");
+    }
+    const json& W = *weights_it;
+    if (!W.is_array()) return weights_error("weights are n_u rows of n_v numbers", "/weights");
+    if (static_cast<long>(W.size()) != n_u) {
+        return weights_error("expected " + std::to_string(n_u) + " rows of weights, got " +
+                                 std::to_string(W.size()),
+                             "/weights");
+    }
+    s.weights.reserve(s.points.size());
+    for (long i = 0; i < n_u; ++i) {
+        Expected<std::vector<double>> row =
+            read_weight_row(W[static_cast<std::size_t>(i)], static_cast<std::size_t>(n_v),
+                            "/weights" + at(i), "a row of weights");
+        if (!row) return row.error();
+        s.weights.insert(s.weights.end(), row->begin(), row->end());
+    }
+    return geom::Ok{};
+}
+
+} // namespace
+
+Expected<geom::Surface> surface_from_json(const json& j) {
+    if (!j.is_object()) return schema_error("a surface is a JSON object", "");
+    if (auto st = check_geometry_members(j, "a surface"); !st) return st.error();
+    Expected<geom::SplineType> type = read_type(j);
+    if (!type) return type.error();
+
+    const auto degree_it = j.find("degree");
+    if (degree_it == j.end()) return missing_member("", "degree");
+    if (!degree_it->is_array() || degree_it->size() != 2)
+        return schema_error("a surface's degree is [degree_u, degree_v]", "/degree");
+    std::int64_t degree[2];
+    for (int d = 0; d < 2; ++d) {
+        Expected<std::int64_t> p = read_one_degree((*degree_it)[d], "/degree" + at(d));
+        if (!p) return p.error();
+        degree[d] = *p;
+    }
+
+    const auto points_it = j.find("points");
+    if (points_it == j.end()) return missing_member("", "points");
+    geom::Surface s;
+    s.type = *type;
+    if (auto st = read_surface_points(*points_it, s); !st) return st.error();
+    const long n_u = s.n_u, n_v = s.n_v;
 
     const auto knots_it = j.find("knots");
     const bool default_knots = knots_it == j.end();
@@ -265,31 +307,7 @@ Expected<geom::Surface> surface_from_json(const json& j) {
         }
     }
 
-    const auto weights_it = j.find("weights");
-    if (weights_it != j.end()) {
-        if (!geom::is_rational(s.type)) {
-            return schema_error(std::string("a ") + geom::name_of(s.type) +
-                                    " surface takes no weights (use rational_bezier or nurbs)",
-                                "/weights");
-        }
-        const json& W = *weights_it;
-        if (!W.is_array()) return weights_error("weights are n_u rows of n_v numbers", "/weights");
-        if (static_cast<long>(W.size()) != n_u) {
-            return weights_error("expected " + std::to_string(n_u) + " rows of weights, got " +
-                                     std::to_string(W.size()),
-                                 "/weights");
-        }
-        s.weights.reserve(s.points.size());
-        for (long i = 0; i < n_u; ++i) {
-            Expected<std::vector<double>> row =
-                read_weight_row(W[static_cast<std::size_t>(i)], static_cast<std::size_t>(n_v),
-                                "/weights" + at(i), "a row of weights");
-            if (!row) return row.error();
-            s.weights.insert(s.weights.end(), row->begin(), row->end());
-        }
-    } else {
-        s.weights.assign(s.points.size(), 1.0);
-    }
+    if (auto st = read_surface_weights(j, s); !st) return st.error();
 
     const bool bezier_default = default_knots && geom::is_bezier(s.type);
     if (auto e = check_degree_fits(degree[0], n_u, bezier_default, "/degree/0", " in u", "surface"))

@@ -99,6 +99,16 @@ struct Subject {
     geom::Curve curve;
     geom::Surface surface;
 };
+// "/curve" or "/surface": where the subject is in the request.
+inline std::string subject_path(const Subject& s) {
+    return s.is_surface ? "/surface" : "/curve";
+}
+// A result the subject's weights make impossible (a control point at infinity or not finite)
+// comes from geom without a path: its cause is the subject's weights.
+inline geom::Error with_weights_path(const Subject& s, const geom::Error& e) {
+    if (e.code != geom::ErrorCode::weights || e.has_path) return e;
+    return geom::make_error(e.code, e.message, subject_path(s) + "/weights");
+}
 // Exactly one of "curve" / "surface" (`schema` at "/surface" when both are given), parsed
 // and validated, errors under "/curve" or "/surface".
 geom::Expected<Subject> read_subject(const json& request, bool allow_curve, bool allow_surface);

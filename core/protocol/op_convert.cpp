@@ -15,7 +15,7 @@ OpResult op_convert(const json& request) {
     if (!to) return missing_member("", "to");
     const std::optional<geom::SplineType> to_type = enum_value<geom::SplineType>(*to);
     if (!to_type)
-        return schema_error("to must be one of bezier, rational_bezier, bspline, nurbs", "/to");
+        return schema_error("to must be one of " + geom::names_list<geom::SplineType>(", "), "/to");
     const geom::SplineType type = *to_type;
     json pieces = json::array();
     if (subject->is_surface) {

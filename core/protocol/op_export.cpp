@@ -17,6 +17,13 @@ using geom::Expected;
 namespace {
 
 enum class Format { iges, step, obj, obj_mesh, stl_ascii, ply };
+constexpr geom::EnumName<Format> format_names[] = {
+    {Format::iges, "iges"},         {Format::step, "step"},           {Format::obj, "obj"},
+    {Format::obj_mesh, "obj_mesh"}, {Format::stl_ascii, "stl_ascii"}, {Format::ply, "ply"}};
+static_assert(geom::in_declaration_order(format_names));
+constexpr std::span<const geom::EnumName<Format>> enum_names(Format) {
+    return format_names;
+}
 
 bool is_mesh(Format f) {
     return f == Format::obj_mesh || f == Format::stl_ascii || f == Format::ply;
@@ -25,14 +32,8 @@ bool is_mesh(Format f) {
 Expected<Format> read_format(const json& request) {
     const json* f = find_member(request, "format");
     if (!f) return missing_member("", "format");
-    static const std::pair<const char*, Format> names[] = {
-        {"iges", Format::iges},         {"step", Format::step},           {"obj", Format::obj},
-        {"obj_mesh", Format::obj_mesh}, {"stl_ascii", Format::stl_ascii}, {"ply", Format::ply}};
-    if (f->is_string())
-        for (const auto& [name, format] : names)
-            if (*f == name) return format;
-    return schema_error("format must be one of iges, step, obj, obj_mesh, stl_ascii, ply",
-                        "/format");
+    if (const std::optional<Format> format = enum_value<Format>(*f)) return *format;
+    return schema_error("format must be one of " + geom::names_list<Format>(", "), "/format");
 }
 
 std::string mesh_text(Format f, const geom::Mesh& mesh) {

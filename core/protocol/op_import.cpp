@@ -10,6 +10,18 @@
 
 namespace isoparm::protocol {
 
+namespace {
+
+enum class Format { iges, step, obj };
+constexpr geom::EnumName<Format> format_names[] = {
+    {Format::iges, "iges"}, {Format::step, "step"}, {Format::obj, "obj"}};
+static_assert(geom::in_declaration_order(format_names));
+constexpr std::span<const geom::EnumName<Format>> enum_names(Format) {
+    return format_names;
+}
+
+} // namespace
+
 OpResult op_import(const json& request) {
     if (geom::Status s = check_fields(request, "import", {"text", "format"}); !s) return s.error();
     const json* text = find_member(request, "text");
@@ -17,17 +29,19 @@ OpResult op_import(const json& request) {
     if (!text->is_string()) return schema_error("text is the file's content, a string", "/text");
     const json* format = find_member(request, "format");
     if (!format) return missing_member("", "format");
-    if (!format->is_string() || (*format != "iges" && *format != "step" && *format != "obj"))
-        return schema_error("format must be one of iges, step, obj", "/format");
+    const std::optional<Format> named = enum_value<Format>(*format);
+    if (!named)
+        return schema_error("format must be one of " + geom::names_list<Format>(", "), "/format");
     const std::string& content = text->get_ref<const std::string&>();
     geom::Expected<exchange::ImportResult> read =
-        *format == "obj"
+        *named == Format::obj
             ? exchange::read_obj_freeform(content)
-            : exchange::read_cad(content, *format == "iges" ? exchange::CadFormat::iges
-                                                            : exchange::CadFormat::step);
+            : exchange::read_cad(content, *named == Format::iges ? exchange::CadFormat::iges
+                                                                 : exchange::CadFormat::step);
     if (!read) {
         // A reader that is not there is about the request's format; a bad file about its text.
-        if (!exchange::has_cad_reader() && *format != "obj") return read.error().under("/format");
+        if (!exchange::has_cad_reader() && *named != Format::obj)
+            return read.error().under("/format");
         return read.error().under("/text");
     }
     json objects = json::array();

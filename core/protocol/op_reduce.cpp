@@ -39,10 +39,6 @@ Expected<Parsed> parse_common(const json& request, std::string_view op,
     return Parsed{std::move(subject).value(), *tolerance};
 }
 
-std::string subject_path(const Subject& s) {
-    return s.is_surface ? "/surface" : "/curve";
-}
-
 } // namespace
 
 OpResult op_remove_knot(const json& request) {
@@ -90,11 +86,11 @@ OpResult op_reduce_degree(const json& request) {
         return ok.error();
     if (sub.is_surface) {
         auto r = geom::reduce_degree(sub.surface, parsed->subject.dir, parsed->tolerance);
-        if (!r) return r.error();
+        if (!r) return with_weights_path(sub, r.error());
         return json{{"surface", surface_to_json(r->surface)}, {"max_error", r->max_error}};
     }
     auto r = geom::reduce_degree(sub.curve, parsed->tolerance);
-    if (!r) return r.error();
+    if (!r) return with_weights_path(sub, r.error());
     return json{{"curve", curve_to_json(r->curve)}, {"max_error", r->max_error}};
 }
 

@@ -2,13 +2,13 @@
 // limits, as the workstation's commands (geom/refine_within_limits.hpp).
 #include <limits>
 
-#include "core/json/shapes.hpp"
-#include "core/json/fields.hpp"
-#include "core/protocol/detail.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/refine.hpp"
 #include "core/geom/refine_within_limits.hpp"
 #include "core/geom/validate.hpp"
+#include "core/json/fields.hpp"
+#include "core/json/shapes.hpp"
+#include "core/protocol/detail.hpp"
 
 namespace isoparm::protocol {
 
@@ -27,11 +27,11 @@ OpResult refined_answer(const Subject& sub, Curve refine_curve, Surface refine_s
     Subject result = sub;
     if (sub.is_surface) {
         geom::Expected<geom::Surface> s = refine_surface(sub.surface);
-        if (!s) return s.error();
+        if (!s) return with_weights_path(sub, s.error());
         result.surface = std::move(s).value();
     } else {
         geom::Expected<geom::Curve> c = refine_curve(sub.curve);
-        if (!c) return c.error();
+        if (!c) return with_weights_path(sub, c.error());
         result.curve = std::move(c).value();
     }
     return json{{sub.is_surface ? "surface" : "curve", shape_to_json(result)}};

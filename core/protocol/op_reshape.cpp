@@ -55,12 +55,12 @@ OpResult op_split_knot(const json& request) {
     }
     json answer;
     if (subject->is_surface) {
-        auto split = geom::split_knot(subject->surface, *dir, *knot, delta);
+        auto split = geom::split_knot(subject->surface, *dir, *knot, delta, "/surface");
         if (!split) return split.error();
         answer = shape_answer(*subject, {}, split->result);
         answer["max_change"] = split->max_change;
     } else {
-        auto split = geom::split_knot(subject->curve, *knot, delta);
+        auto split = geom::split_knot(subject->curve, *knot, delta, "/curve");
         if (!split) return split.error();
         answer = shape_answer(*subject, split->result, {});
         answer["max_change"] = split->max_change;

@@ -150,7 +150,9 @@ OpResult op_triangle_elevate(const json& request) {
         integer_option(request, "times", 1, 1, std::numeric_limits<std::int64_t>::max(),
                        "times is an integer >= 1");
     if (!times) return times.error();
-    if (t->degree + *times > geom::max_triangle_degree)
+    // Compared without adding: times may be near the largest integer (1e19 reads as that), and
+    // degree + times would wrap around to a negative degree.
+    if (*times > geom::max_triangle_degree - t->degree)
         return geom::make_error(geom::ErrorCode::limit,
                                 "elevating degree " + std::to_string(t->degree) + " " +
                                     std::to_string(*times) + " times passes the cap of " +

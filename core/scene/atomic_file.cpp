@@ -181,6 +181,47 @@ geom::Status write_standard_output(std::string_view bytes) {
     return geom::Ok{};
 }
 
+// "N" when `p` is "/dev/fd/N", "/proc/self/fd/N", "/proc/thread-self/fd/N" or
+// "/proc/<this pid>/fd/N".
+std::optional<int> descriptor_in(const std::string& p) {
+    const std::string pid = "/proc/" + std::to_string(::getpid()) + "/fd/";
+    for (const std::string& prefix : {std::string("/dev/fd/"), std::string("/proc/self/fd/"),
+                                      std::string("/proc/thread-self/fd/"), pid}) {
+        if (p.compare(0, prefix.size(), prefix) != 0) continue;
+        int n = -1;
+        const char* first = p.data() + prefix.size();
+        const char* last = p.data() + p.size();
+        const auto r = std::from_chars(first, last, n);
+        if (r.ec == std::errc() && r.ptr == last && first != last && n >= 0) return n;
+    }
+    return std::nullopt;
+}
+
+// The descriptor of this process that `path` names through /dev/stdout, /dev/fd/N or
+// /proc/self/fd/N (links followed one at a time, never through the descriptor's own link), or
+// -1. Such a path is the stream itself: `render -o /dev/stdout >> log` appends to log, where
+// renaming a new file over what the link points at would replace log.
+int own_descriptor_named(const std::string& path) {
+    std::string p = path;
+    for (int hop = 0; hop < 40 && !p.empty(); ++hop) {
+        if (const auto n = descriptor_in(p)) return ::fcntl(*n, F_GETFD) == -1 ? -1 : *n;
+        struct stat st {};
+        if (::lstat(p.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return -1;
+        std::string target(PATH_MAX, '\0');
+        const ssize_t len = ::readlink(p.c_str(), target.data(), target.size());
+        if (len <= 0 || static_cast<std::size_t>(len) >= target.size()) return -1;
+        target.resize(static_cast<std::size_t>(len));
+        if (target[0] != '/') target = (fs::path(p).parent_path() / target).string();
+        p = target;
+    }
+    return -1;
+}
+
+geom::Status write_descriptor(int fd, std::string_view bytes, const std::string& path) {
+    if (!write_all(fd, bytes)) return io_error("write", path, errno);
+    return geom::Ok{};
+}
+
 // Creates the temporary file exclusively (never through a link planted under its name). One
 // left by an earlier process with our pid (pids are reused) is ours to replace.
 int create_temporary(const std::string& tmp) {
@@ -212,7 +253,7 @@ void make_file_size_limit_an_error() {
 }
 
 geom::Status check_output_path(const std::string& path) {
-    if (path == "-") return geom::Ok{};
+    if (path == "-" || own_descriptor_named(path) >= 0) return geom::Ok{};
     auto target = resolve_target(path);
     if (!target) return target.error();
     return geom::Ok{};
@@ -238,6 +279,8 @@ geom::Status check_output_is_not_input(const std::string& output,
 geom::Status write_file_atomically(const std::string& path, std::string_view bytes) {
     make_file_size_limit_an_error();
     if (path == "-") return write_standard_output(bytes);
+    if (const int fd = own_descriptor_named(path); fd >= 0)
+        return write_descriptor(fd, bytes, path);
     auto resolved = resolve_target(path);
     if (!resolved) return resolved.error();
     const Target& target = *resolved;

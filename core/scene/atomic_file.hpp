@@ -11,7 +11,10 @@
 namespace isoparm::scene {
 
 // Writes `bytes` as the file `path`:
-// - "-" is standard output (every write checked).
+// - "-" is standard output (every write checked); so is a path that names one of this
+//   process's descriptors (/dev/stdout, /dev/fd/N, /proc/self/fd/N, through links): the
+//   stream is written as it was opened (`-o /dev/stdout >> log` appends to log; replacing the
+//   file behind it would lose log).
 // - Only regular files are written: a directory, FIFO, device or socket (also behind a symbolic
 //   link) is refused, so `-o /dev/null` as root never turns /dev/null into a regular file.
 // - A symbolic link is followed by the kernel, never by this code: the link is opened, so the

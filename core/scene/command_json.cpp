@@ -1,5 +1,5 @@
-// Commands <-> JSON. Each command lists its members once (kCommandMembers); reading refuses
-// any other member, and the first error found is the answer.
+// Commands <-> JSON. Each command's form (Form<Spec>) lists its members once, reads and writes
+// them; reading refuses any other member, and the first error found is the answer.
 #include "core/scene/command_json.hpp"
 
 #include <climits>
@@ -8,6 +8,7 @@
 
 #include "core/json/fields.hpp"
 #include "core/json/shapes.hpp"
+#include "core/scene/recipe_json.hpp"
 #include "core/scene/scene_io.hpp"
 
 namespace isoparm::scene {
@@ -59,6 +60,7 @@ public:
         auto r = read_point(*v, path(name), "a position");
         return r ? *r : fail(r.error(), glm::dvec3(0));
     }
+    bool has(std::string_view name) { return find(name) != nullptr; }
     std::optional<glm::dvec3> optional_point(std::string_view name) {
         if (!find(name)) return std::nullopt;
         return point(name);
@@ -165,163 +167,103 @@ Expected<std::vector<std::uint64_t>> ids_from_json(const json& v, const std::str
     return ids;
 }
 
-json to_json(const AddObjectSpec& s) {
-    return {{"object", object_to_json(s.object)}};
-}
-json to_json(const AddObjectsSpec& s) {
-    json objects = json::array();
-    for (const Object& o : s.objects) objects.push_back(object_to_json(o));
-    json j = {{"objects", std::move(objects)}};
-    if (!s.label.empty()) j["label"] = s.label;
-    return j;
-}
-json to_json(const RemoveObjectSpec& s) {
-    return {{"id", s.id}};
-}
-json to_json(const RenameObjectSpec& s) {
-    return {{"id", s.id}, {"name", s.name}};
-}
-json to_json(const SetVisibleSpec& s) {
-    return {{"id", s.id}, {"visible", s.visible}};
-}
-json to_json(const EditShapeSpec& s) {
-    json j = {{"id", s.id}, {"shape", shape_to_json(s.shape)}, {"label", s.label}};
-    if (!s.merge_key.empty()) j["merge_key"] = s.merge_key;
-    return j;
-}
-json to_json(const EditPointSpec& s) {
-    json j = {{"id", s.id}, {"i", s.i}};
-    if (s.j >= 0) j["j"] = s.j;
-    if (s.position) j["position"] = point_to_json(*s.position);
-    if (s.weight) j["weight"] = *s.weight;
-    return j;
-}
-json to_json(const MoveKnotSpec& s) {
-    json j = {{"id", s.id}, {"direction", geom::name_of(s.dir)}, {"k", s.k}, {"value", s.value}};
-    if (s.count != 1) j["count"] = s.count;
-    return j;
-}
-json to_json(const TransformSpec& s) {
-    json j = {{"id", s.id}, {"matrix", matrix_to_json(s.matrix)}};
-    if (!s.label.empty()) j["label"] = s.label;
-    return j;
-}
-json to_json(const InsertKnotSpec& s) {
-    return {{"id", s.id}, {"direction", geom::name_of(s.dir)}, {"knot", s.t}, {"times", s.times}};
-}
-json to_json(const ElevateDegreeSpec& s) {
-    return {{"id", s.id}, {"direction", geom::name_of(s.dir)}, {"times", s.times}};
-}
-json to_json(const SplitSpec& s) {
-    return {{"id", s.id}, {"direction", geom::name_of(s.dir)}, {"param", s.t}};
-}
-json to_json(const SplitTriangleSpec& s) {
-    return {{"id", s.id}, {"param", {s.at[0], s.at[1], s.at[2]}}};
-}
-json to_json(const ConformBordersSpec& s) {
-    return {{"group", s.group}};
-}
-json to_json(const SetColorsSpec& s) {
-    return {{"colors", colors_to_json(s.colors)}};
-}
-json to_json(const InsertCurvePointSpec& s) {
-    return {{"id", s.id}, {"i", s.i}, {"position", point_to_json(s.position)}};
-}
-json to_json(const DeleteCurvePointSpec& s) {
-    return {{"id", s.id}, {"i", s.i}};
-}
-json to_json(const MoveCurvePointSpec& s) {
-    return {{"id", s.id}, {"i", s.i}, {"position", point_to_json(s.position)}};
-}
-json to_json(const SetCurveDegreeSpec& s) {
-    return {{"id", s.id}, {"degree", s.degree}};
-}
-json to_json(const SetCurveKnotModeSpec& s) {
-    return {{"id", s.id}, {"knot_mode", geom::name_of(s.mode)}};
-}
-json to_json(const SetCurvePlaneSpec& s) {
-    return {{"id", s.id}, {"plane", geom::name_of(s.plane)}, {"carry_points", s.carry_points}};
-}
-json to_json(const MakeCompatibleSpec& s) {
-    return {{"ids", s.ids}};
-}
-json to_json(const RemoveKnotSpec& s) {
-    return {{"id", s.id},
-            {"direction", geom::name_of(s.dir)},
-            {"knot", s.t},
-            {"times", s.times},
-            {"tolerance", s.tolerance}};
-}
-json to_json(const ReduceDegreeSpec& s) {
-    return {{"id", s.id}, {"direction", geom::name_of(s.dir)}, {"tolerance", s.tolerance}};
-}
-json to_json(const SplitKnotSpec& s) {
-    json j = {{"id", s.id}, {"direction", geom::name_of(s.dir)}, {"knot", s.t}};
-    if (s.delta) j["delta"] = *s.delta;
-    return j;
-}
-json to_json(const CloseSpec& s) {
-    return {{"id", s.id}, {"direction", geom::name_of(s.dir)}};
-}
-json to_json(const ConvertSpec& s) {
-    json j = {{"id", s.id}, {"to", geom::name_of(s.to)}};
-    if (s.reset_weights) j["reset_weights"] = true;
-    return j;
-}
-json to_json(const MultiresEditSpec& s) {
-    json j = {{"id", s.id}, {"level", s.level}, {"i", s.i}};
-    if (s.level_v) j["level_v"] = *s.level_v;
-    if (s.j >= 0) j["j"] = s.j;
-    if (s.position) j["position"] = point_to_json(*s.position);
-    if (s.detail_scale) j["detail_scale"] = *s.detail_scale;
-    return j;
+json points_to_json(const std::vector<PointIndex>& points) {
+    json out = json::array();
+    for (PointIndex p : points)
+        out.push_back(p.j < 0 ? json::array({p.i}) : json::array({p.i, p.j}));
+    return out;
 }
 
-// The members each command takes besides "command", in CommandSpec's order.
-const std::initializer_list<std::string_view> command_members[] = {
-    {"object"},                                        // add_object
-    {"id"},                                            // remove_object
-    {"id", "name"},                                    // rename_object
-    {"id", "visible"},                                 // set_visible
-    {"id", "shape", "label", "merge_key"},             // edit_shape
-    {"id", "i", "j", "position", "weight"},            // edit_point
-    {"id", "direction", "k", "count", "value"},        // move_knot
-    {"id", "matrix", "label"},                         // transform
-    {"id", "direction", "knot", "times"},              // insert_knot
-    {"id", "direction", "times"},                      // elevate_degree
-    {"id", "direction", "param"},                      // split
-    {"group"},                                         // conform_borders
-    {"colors"},                                        // set_colors
-    {"id", "i", "position"},                           // insert_curve_point
-    {"id", "i"},                                       // delete_curve_point
-    {"id", "i", "position"},                           // move_curve_point
-    {"id", "degree"},                                  // set_curve_degree
-    {"id", "knot_mode"},                               // set_curve_knot_mode
-    {"id", "plane", "carry_points"},                   // set_curve_plane
-    {"ids"},                                           // make_compatible
-    {"id", "direction", "knot", "times", "tolerance"}, // remove_knot
-    {"id", "direction", "tolerance"},                  // reduce_degree
-    {"id", "direction", "knot", "delta"},              // split_knot
-    {"id", "direction"},                               // close
-    {"id", "to", "reset_weights"},                     // convert
-    {"objects", "label"},                              // add_objects
-    // multires_edit
-    {"id", "level", "level_v", "i", "j", "position", "detail_scale"},
-    {"id", "param"}, // split_triangle
-};
-static_assert(std::size(command_members) == std::size(command_names));
+// [[i, j], ...] (surfaces, triangles) or [[i], ...] (curves).
+Expected<std::vector<PointIndex>> points_from_json(const json& v, const std::string& at) {
+    if (!v.is_array())
+        return schema_error(std::string("points is an array of [i, j] or [i], got ") + type_name(v),
+                            at);
+    std::vector<PointIndex> out;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+        const std::string pat = at + "/" + std::to_string(k);
+        const json& p = v[k];
+        if (!p.is_array() || p.empty() || p.size() > 2)
+            return schema_error("a control point is [i, j] (a surface's or triangle's) or [i] (a "
+                                "curve's)",
+                                pat);
+        PointIndex q;
+        for (std::size_t c = 0; c < p.size(); ++c) {
+            auto x = read_integer(p[c], pat + "/" + std::to_string(c), "a control point index", 0,
+                                  INT_MAX);
+            if (!x) return x.error();
+            (c == 0 ? q.i : q.j) = static_cast<int>(*x);
+        }
+        out.push_back(q);
+    }
+    return out;
+}
 
-CommandSpec read_spec(std::size_t index, Members& m) {
-    switch (index) {
-    case 0:
+Expected<std::vector<glm::dvec3>> positions_from_json(const json& v, const std::string& at) {
+    if (!v.is_array())
+        return schema_error(std::string("positions is an array of [x, y, z], got ") + type_name(v),
+                            at);
+    std::vector<glm::dvec3> out;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+        auto p = read_point(v[k], at + "/" + std::to_string(k), "a position");
+        if (!p) return p.error();
+        out.push_back(*p);
+    }
+    return out;
+}
+
+// Each command's JSON form in one place: its members (besides "command"), its reader and its
+// writer. CommandSpec's alternatives are dispatched to these by type, so a command without its
+// form does not build.
+template <class Spec> struct Form;
+
+// The object and the direction a command acts along ("id", "direction"), read first.
+template <class Spec> Spec on_direction(Members& m) {
+    Spec s;
+    s.id = m.id("id");
+    s.dir = m.named<geom::Dir>("direction", "direction");
+    return s;
+}
+
+template <> struct Form<AddObjectSpec> {
+    static constexpr std::string_view members[]{"object"};
+    static AddObjectSpec read(Members& m) {
         return AddObjectSpec{m.read<Object>("object", object_from_json)};
-    case 1:
-        return RemoveObjectSpec{m.id("id")};
-    case 2:
-        return RenameObjectSpec{m.id("id"), m.text("name")};
-    case 3:
-        return SetVisibleSpec{m.id("id"), m.flag("visible")};
-    case 4: {
+    }
+    static json write(const AddObjectSpec& s) { return {{"object", object_to_json(s.object)}}; }
+};
+template <> struct Form<AddObjectsSpec> {
+    static constexpr std::string_view members[]{"objects", "label"};
+    static AddObjectsSpec read(Members& m) {
+        return AddObjectsSpec{m.read<std::vector<Object>>("objects", objects_from_json),
+                              m.text("label", "")};
+    }
+    static json write(const AddObjectsSpec& s) {
+        json objects = json::array();
+        for (const Object& o : s.objects) objects.push_back(object_to_json(o));
+        json j = {{"objects", std::move(objects)}};
+        if (!s.label.empty()) j["label"] = s.label;
+        return j;
+    }
+};
+template <> struct Form<RemoveObjectSpec> {
+    static constexpr std::string_view members[]{"id"};
+    static RemoveObjectSpec read(Members& m) { return RemoveObjectSpec{m.id("id")}; }
+    static json write(const RemoveObjectSpec& s) { return {{"id", s.id}}; }
+};
+template <> struct Form<RenameObjectSpec> {
+    static constexpr std::string_view members[]{"id", "name"};
+    static RenameObjectSpec read(Members& m) { return {m.id("id"), m.text("name")}; }
+    static json write(const RenameObjectSpec& s) { return {{"id", s.id}, {"name", s.name}}; }
+};
+template <> struct Form<SetVisibleSpec> {
+    static constexpr std::string_view members[]{"id", "visible"};
+    static SetVisibleSpec read(Members& m) { return {m.id("id"), m.flag("visible")}; }
+    static json write(const SetVisibleSpec& s) { return {{"id", s.id}, {"visible", s.visible}}; }
+};
+template <> struct Form<EditShapeSpec> {
+    static constexpr std::string_view members[]{"id", "shape", "label", "merge_key"};
+    static EditShapeSpec read(Members& m) {
         EditShapeSpec s;
         s.id = m.id("id");
         s.shape = m.read<Shape>("shape", shape_from_json);
@@ -329,7 +271,15 @@ CommandSpec read_spec(std::size_t index, Members& m) {
         s.merge_key = m.text("merge_key", "");
         return s;
     }
-    case 5: {
+    static json write(const EditShapeSpec& s) {
+        json j = {{"id", s.id}, {"shape", shape_to_json(s.shape)}, {"label", s.label}};
+        if (!s.merge_key.empty()) j["merge_key"] = s.merge_key;
+        return j;
+    }
+};
+template <> struct Form<EditPointSpec> {
+    static constexpr std::string_view members[]{"id", "i", "j", "position", "weight"};
+    static EditPointSpec read(Members& m) {
         EditPointSpec s;
         s.id = m.id("id");
         s.i = m.integer("i");
@@ -338,92 +288,215 @@ CommandSpec read_spec(std::size_t index, Members& m) {
         s.weight = m.optional_number("weight");
         return s;
     }
-    case 6: {
-        MoveKnotSpec s;
-        s.id = m.id("id");
-        s.dir = m.named<geom::Dir>("direction", "direction");
+    static json write(const EditPointSpec& s) {
+        json j = {{"id", s.id}, {"i", s.i}};
+        if (s.j >= 0) j["j"] = s.j;
+        if (s.position) j["position"] = point_to_json(*s.position);
+        if (s.weight) j["weight"] = *s.weight;
+        return j;
+    }
+};
+template <> struct Form<MoveKnotSpec> {
+    static constexpr std::string_view members[]{"id", "direction", "k", "count", "value"};
+    static MoveKnotSpec read(Members& m) {
+        MoveKnotSpec s = on_direction<MoveKnotSpec>(m);
         s.k = m.integer("k");
         s.count = m.integer("count", 1);
         s.value = m.number("value");
         return s;
     }
-    case 7:
-        return TransformSpec{m.id("id"), m.read<glm::dmat4>("matrix", matrix_from_json),
-                             m.text("label", "")};
-    case 8: {
-        InsertKnotSpec s;
-        s.id = m.id("id");
-        s.dir = m.named<geom::Dir>("direction", "direction");
+    static json write(const MoveKnotSpec& s) {
+        json j = {
+            {"id", s.id}, {"direction", geom::name_of(s.dir)}, {"k", s.k}, {"value", s.value}};
+        if (s.count != 1) j["count"] = s.count;
+        return j;
+    }
+};
+template <> struct Form<TransformSpec> {
+    static constexpr std::string_view members[]{"id", "matrix", "label"};
+    static TransformSpec read(Members& m) {
+        return {m.id("id"), m.read<glm::dmat4>("matrix", matrix_from_json), m.text("label", "")};
+    }
+    static json write(const TransformSpec& s) {
+        json j = {{"id", s.id}, {"matrix", matrix_to_json(s.matrix)}};
+        if (!s.label.empty()) j["label"] = s.label;
+        return j;
+    }
+};
+template <> struct Form<InsertKnotSpec> {
+    static constexpr std::string_view members[]{"id", "direction", "knot", "times"};
+    static InsertKnotSpec read(Members& m) {
+        InsertKnotSpec s = on_direction<InsertKnotSpec>(m);
         s.t = m.number("knot");
         s.times = m.integer("times", 1);
         return s;
     }
-    case 9: {
-        ElevateDegreeSpec s;
-        s.id = m.id("id");
-        s.dir = m.named<geom::Dir>("direction", "direction");
+    static json write(const InsertKnotSpec& s) {
+        return {
+            {"id", s.id}, {"direction", geom::name_of(s.dir)}, {"knot", s.t}, {"times", s.times}};
+    }
+};
+template <> struct Form<ElevateDegreeSpec> {
+    static constexpr std::string_view members[]{"id", "direction", "times"};
+    static ElevateDegreeSpec read(Members& m) {
+        ElevateDegreeSpec s = on_direction<ElevateDegreeSpec>(m);
         s.times = m.integer("times", 1);
         return s;
     }
-    case 10: {
-        SplitSpec s;
-        s.id = m.id("id");
-        s.dir = m.named<geom::Dir>("direction", "direction");
-        s.t = m.number("param");
+    static json write(const ElevateDegreeSpec& s) {
+        return {{"id", s.id}, {"direction", geom::name_of(s.dir)}, {"times", s.times}};
+    }
+};
+// Commands on one object along a direction with one number: split ("param") and
+// reduce_degree ("tolerance").
+template <class Spec, double Spec::*number, const std::string_view& name>
+struct DirectionNumberForm {
+    static constexpr std::string_view members[]{"id", "direction", name};
+    static Spec read(Members& m) {
+        Spec s = on_direction<Spec>(m);
+        s.*number = m.number(name);
         return s;
     }
-    case 11:
-        return ConformBordersSpec{m.id("group")};
-    case 12:
+    static json write(const Spec& s) {
+        return {{"id", s.id}, {"direction", geom::name_of(s.dir)}, {std::string(name), s.*number}};
+    }
+};
+constexpr std::string_view param_member = "param", tolerance_member = "tolerance";
+template <> struct Form<SplitSpec> : DirectionNumberForm<SplitSpec, &SplitSpec::t, param_member> {};
+template <> struct Form<SplitTriangleSpec> {
+    static constexpr std::string_view members[]{"id", "param"};
+    static SplitTriangleSpec read(Members& m) {
+        return {m.id("id"), m.read<geom::Barycentric>("param", triangle_param_from_json)};
+    }
+    static json write(const SplitTriangleSpec& s) {
+        return {{"id", s.id}, {"param", {s.at[0], s.at[1], s.at[2]}}};
+    }
+};
+template <> struct Form<ConformBordersSpec> {
+    static constexpr std::string_view members[]{"group"};
+    static ConformBordersSpec read(Members& m) { return ConformBordersSpec{m.id("group")}; }
+    static json write(const ConformBordersSpec& s) { return {{"group", s.group}}; }
+};
+template <> struct Form<SetColorsSpec> {
+    static constexpr std::string_view members[]{"colors"};
+    static SetColorsSpec read(Members& m) {
         return SetColorsSpec{m.read<Colors>("colors", [](const json& v, const std::string& at) {
             return colors_from_json(v, at, Colors{});
         })};
-    case 13:
-        return InsertCurvePointSpec{m.id("id"), m.integer("i"), m.point("position")};
-    case 14:
-        return DeleteCurvePointSpec{m.id("id"), m.integer("i")};
-    case 15:
-        return MoveCurvePointSpec{m.id("id"), m.integer("i"), m.point("position")};
-    case 16:
-        return SetCurveDegreeSpec{m.id("id"), m.integer("degree")};
-    case 17:
-        return SetCurveKnotModeSpec{m.id("id"), m.named<CurveKnotMode>("knot_mode", "knot_mode")};
-    case 18: {
+    }
+    static json write(const SetColorsSpec& s) { return {{"colors", colors_to_json(s.colors)}}; }
+};
+// insert_curve_point and move_curve_point: a curve's point i and a position.
+template <class Spec> struct CurvePointForm {
+    static constexpr std::string_view members[]{"id", "i", "position"};
+    static Spec read(Members& m) { return {m.id("id"), m.integer("i"), m.point("position")}; }
+    static json write(const Spec& s) {
+        return {{"id", s.id}, {"i", s.i}, {"position", point_to_json(s.position)}};
+    }
+};
+template <> struct Form<InsertCurvePointSpec> : CurvePointForm<InsertCurvePointSpec> {};
+template <> struct Form<DeleteCurvePointSpec> {
+    static constexpr std::string_view members[]{"id", "i"};
+    static DeleteCurvePointSpec read(Members& m) { return {m.id("id"), m.integer("i")}; }
+    static json write(const DeleteCurvePointSpec& s) { return {{"id", s.id}, {"i", s.i}}; }
+};
+template <> struct Form<MoveCurvePointSpec> : CurvePointForm<MoveCurvePointSpec> {};
+template <> struct Form<SetCurveDegreeSpec> {
+    static constexpr std::string_view members[]{"id", "degree"};
+    static SetCurveDegreeSpec read(Members& m) { return {m.id("id"), m.integer("degree")}; }
+    static json write(const SetCurveDegreeSpec& s) { return {{"id", s.id}, {"degree", s.degree}}; }
+};
+template <> struct Form<SetCurveKnotModeSpec> {
+    static constexpr std::string_view members[]{"id", "knot_mode"};
+    static SetCurveKnotModeSpec read(Members& m) {
+        return {m.id("id"), m.named<CurveKnotMode>("knot_mode", "knot_mode")};
+    }
+    static json write(const SetCurveKnotModeSpec& s) {
+        return {{"id", s.id}, {"knot_mode", geom::name_of(s.mode)}};
+    }
+};
+template <> struct Form<SetCurvePlaneSpec> {
+    static constexpr std::string_view members[]{"id", "plane", "carry_points"};
+    static SetCurvePlaneSpec read(Members& m) {
         SetCurvePlaneSpec s;
         s.id = m.id("id");
         s.plane = m.named<CurvePlane>("plane", "plane");
         s.carry_points = m.flag("carry_points", false);
         return s;
     }
-    case 19:
+    static json write(const SetCurvePlaneSpec& s) {
+        return {{"id", s.id}, {"plane", geom::name_of(s.plane)}, {"carry_points", s.carry_points}};
+    }
+};
+template <> struct Form<MakeCompatibleSpec> {
+    static constexpr std::string_view members[]{"ids"};
+    static MakeCompatibleSpec read(Members& m) {
         return MakeCompatibleSpec{m.read<std::vector<std::uint64_t>>("ids", ids_from_json)};
-    case 20: {
-        RemoveKnotSpec s;
-        s.id = m.id("id");
-        s.dir = m.named<geom::Dir>("direction", "direction");
+    }
+    static json write(const MakeCompatibleSpec& s) { return {{"ids", s.ids}}; }
+};
+template <> struct Form<RemoveKnotSpec> {
+    static constexpr std::string_view members[]{"id", "direction", "knot", "times", "tolerance"};
+    static RemoveKnotSpec read(Members& m) {
+        RemoveKnotSpec s = on_direction<RemoveKnotSpec>(m);
         s.t = m.number("knot");
         s.times = m.integer("times", 1);
         s.tolerance = m.number("tolerance");
         return s;
     }
-    case 21: {
-        ReduceDegreeSpec s;
-        s.id = m.id("id");
-        s.dir = m.named<geom::Dir>("direction", "direction");
-        s.tolerance = m.number("tolerance");
-        return s;
+    static json write(const RemoveKnotSpec& s) {
+        return {{"id", s.id},
+                {"direction", geom::name_of(s.dir)},
+                {"knot", s.t},
+                {"times", s.times},
+                {"tolerance", s.tolerance}};
     }
-    case 22: {
-        SplitKnotSpec s;
-        s.id = m.id("id");
-        s.dir = m.named<geom::Dir>("direction", "direction");
+};
+template <>
+struct Form<ReduceDegreeSpec>
+    : DirectionNumberForm<ReduceDegreeSpec, &ReduceDegreeSpec::tolerance, tolerance_member> {};
+template <> struct Form<SplitKnotSpec> {
+    static constexpr std::string_view members[]{"id", "direction", "knot", "delta"};
+    static SplitKnotSpec read(Members& m) {
+        SplitKnotSpec s = on_direction<SplitKnotSpec>(m);
         s.t = m.number("knot");
         s.delta = m.optional_number("delta");
         return s;
     }
-    case 23:
-        return CloseSpec{m.id("id"), m.named<geom::Dir>("direction", "direction")};
-    case 26: {
+    static json write(const SplitKnotSpec& s) {
+        json j = {{"id", s.id}, {"direction", geom::name_of(s.dir)}, {"knot", s.t}};
+        if (s.delta) j["delta"] = *s.delta;
+        return j;
+    }
+};
+template <> struct Form<CloseSpec> {
+    static constexpr std::string_view members[]{"id", "direction"};
+    static CloseSpec read(Members& m) {
+        return {m.id("id"), m.named<geom::Dir>("direction", "direction")};
+    }
+    static json write(const CloseSpec& s) {
+        return {{"id", s.id}, {"direction", geom::name_of(s.dir)}};
+    }
+};
+template <> struct Form<ConvertSpec> {
+    static constexpr std::string_view members[]{"id", "to", "reset_weights"};
+    static ConvertSpec read(Members& m) {
+        ConvertSpec s;
+        s.id = m.id("id");
+        s.to = m.named<geom::SplineType>("to", "to");
+        s.reset_weights = m.flag("reset_weights", false);
+        return s;
+    }
+    static json write(const ConvertSpec& s) {
+        json j = {{"id", s.id}, {"to", geom::name_of(s.to)}};
+        if (s.reset_weights) j["reset_weights"] = true;
+        return j;
+    }
+};
+template <> struct Form<MultiresEditSpec> {
+    static constexpr std::string_view members[]{"id", "level",    "level_v",     "i",
+                                                "j",  "position", "detail_scale"};
+    static MultiresEditSpec read(Members& m) {
         MultiresEditSpec s;
         s.id = m.id("id");
         s.level = m.integer("level");
@@ -434,26 +507,137 @@ CommandSpec read_spec(std::size_t index, Members& m) {
         s.detail_scale = m.optional_number("detail_scale");
         return s;
     }
-    case 27:
-        return SplitTriangleSpec{m.id("id"),
-                                 m.read<geom::Barycentric>("param", triangle_param_from_json)};
-    case 25:
-        return AddObjectsSpec{m.read<std::vector<Object>>("objects", objects_from_json),
-                              m.text("label", "")};
-    default: {
-        ConvertSpec s;
+    static json write(const MultiresEditSpec& s) {
+        json j = {{"id", s.id}, {"level", s.level}, {"i", s.i}};
+        if (s.level_v) j["level_v"] = *s.level_v;
+        if (s.j >= 0) j["j"] = s.j;
+        if (s.position) j["position"] = point_to_json(*s.position);
+        if (s.detail_scale) j["detail_scale"] = *s.detail_scale;
+        return j;
+    }
+};
+
+template <> struct Form<ConstructSpec> {
+    static constexpr std::string_view members[]{"construction", "name"};
+    static ConstructSpec read(Members& m) {
+        return ConstructSpec{m.read<Recipe>("construction", recipe_from_json), m.text("name", "")};
+    }
+    static json write(const ConstructSpec& s) {
+        json j = {{"construction", recipe_to_json(s.recipe)}};
+        if (!s.name.empty()) j["name"] = s.name;
+        return j;
+    }
+};
+template <> struct Form<EditConstructionSpec> {
+    static constexpr std::string_view members[]{"id", "construction"};
+    static EditConstructionSpec read(Members& m) {
+        EditConstructionSpec s;
         s.id = m.id("id");
-        s.to = m.named<geom::SplineType>("to", "to");
-        s.reset_weights = m.flag("reset_weights", false);
+        s.recipe = m.read<Recipe>("construction", recipe_from_json);
         return s;
     }
+    static json write(const EditConstructionSpec& s) {
+        return {{"id", s.id}, {"construction", recipe_to_json(s.recipe)}};
+    }
+};
+template <> struct Form<DetachSpec> {
+    static constexpr std::string_view members[]{"id"};
+    static DetachSpec read(Members& m) { return DetachSpec{m.id("id")}; }
+    static json write(const DetachSpec& s) { return {{"id", s.id}}; }
+};
+template <> struct Form<MovePointsSpec> {
+    static constexpr std::string_view members[]{"id", "points", "positions", "label"};
+    static MovePointsSpec read(Members& m) {
+        MovePointsSpec s;
+        s.id = m.id("id");
+        s.points = m.read<std::vector<PointIndex>>("points", points_from_json);
+        s.positions = m.read<std::vector<glm::dvec3>>("positions", positions_from_json);
+        s.label = m.text("label", "");
+        return s;
+    }
+    static json write(const MovePointsSpec& s) {
+        json positions = json::array();
+        for (const glm::dvec3& p : s.positions) positions.push_back({p.x, p.y, p.z});
+        json j = {{"id", s.id},
+                  {"points", points_to_json(s.points)},
+                  {"positions", std::move(positions)}};
+        if (!s.label.empty()) j["label"] = s.label;
+        return j;
+    }
+};
+// "about": "centroid" or a point [x, y, z]; absent: the origin.
+Expected<std::pair<Pivot, glm::dvec3>> pivot_from_json(const json& v, const std::string& at) {
+    if (v.is_string()) {
+        if (v.get<std::string>() == "centroid") return std::pair{Pivot::centroid, glm::dvec3(0)};
+        return schema_error(
+            "about is \"centroid\" or a point [x, y, z], got '" + v.get<std::string>() + "'", at);
+    }
+    auto p = read_point(v, at, "the pivot");
+    if (!p) return p.error();
+    return std::pair{Pivot::point, *p};
+}
+template <> struct Form<TransformPointsSpec> {
+    static constexpr std::string_view members[]{"id", "points", "matrix", "about", "label"};
+    static TransformPointsSpec read(Members& m) {
+        TransformPointsSpec s;
+        s.id = m.id("id");
+        s.points = m.read<std::vector<PointIndex>>("points", points_from_json);
+        s.matrix = m.read<glm::dmat4>("matrix", matrix_from_json);
+        s.label = m.text("label", "");
+        if (m.has("about")) {
+            const auto about = m.read<std::pair<Pivot, glm::dvec3>>("about", pivot_from_json);
+            s.about = about.first;
+            s.pivot = about.second;
+        }
+        return s;
+    }
+    static json write(const TransformPointsSpec& s) {
+        json j = {{"id", s.id},
+                  {"points", points_to_json(s.points)},
+                  {"matrix", matrix_to_json(s.matrix)}};
+        switch (s.about) {
+        case Pivot::origin:
+            break;
+        case Pivot::centroid:
+            j["about"] = "centroid";
+            break;
+        case Pivot::point:
+            j["about"] = {s.pivot.x, s.pivot.y, s.pivot.z};
+            break;
+        }
+        if (!s.label.empty()) j["label"] = s.label;
+        return j;
+    }
+};
+
+// The command named `name`, read through its form: members checked, then read.
+template <std::size_t I = 0>
+Expected<CommandSpec> read_command(std::string_view name, const json& j, const std::string& at) {
+    if constexpr (I == std::variant_size_v<CommandSpec>) {
+        std::string names;
+        for (const char* n : command_names) names += std::string(names.empty() ? "" : ", ") + n;
+        return schema_error("unknown command '" + std::string(name) + "' (commands: " + names + ")",
+                            member_path(at, "command"));
+    } else {
+        using Spec = std::variant_alternative_t<I, CommandSpec>;
+        if (name != Spec::script_name) return read_command<I + 1>(name, j, at);
+        std::vector<std::string_view> allowed{"command"};
+        allowed.insert(allowed.end(), std::begin(Form<Spec>::members),
+                       std::end(Form<Spec>::members));
+        const std::string what = "command '" + std::string(name) + "'";
+        if (auto st = check_members(j, at, what, allowed); !st) return st.error();
+        Members m(j, at);
+        CommandSpec spec = Form<Spec>::read(m);
+        if (m.error) return *m.error;
+        return spec;
     }
 }
 
 } // namespace
 
 json command_to_json(const CommandSpec& spec) {
-    json j = std::visit([](const auto& s) { return to_json(s); }, spec);
+    json j =
+        std::visit([](const auto& s) { return Form<std::decay_t<decltype(s)>>::write(s); }, spec);
     j["command"] = command_name(spec);
     return j;
 }
@@ -462,25 +646,9 @@ Expected<CommandSpec> command_from_json(const json& j, const std::string& at) {
     if (auto st = expect_object(j, at, "a command"); !st) return st.error();
     const json* name = find_member(j, "command");
     if (!name) return missing_member(at, "command");
-    const std::string name_at = member_path(at, "command");
-    auto text = read_string(*name, name_at, "command");
+    auto text = read_string(*name, member_path(at, "command"), "command");
     if (!text) return text.error();
-    std::size_t index = std::size(command_names);
-    for (std::size_t k = 0; k < std::size(command_names); ++k)
-        if (*text == command_names[k]) index = k;
-    if (index == std::size(command_names)) {
-        std::string names;
-        for (const char* n : command_names) names += std::string(names.empty() ? "" : ", ") + n;
-        return schema_error("unknown command '" + *text + "' (commands: " + names + ")", name_at);
-    }
-    std::vector<std::string_view> allowed{"command"};
-    allowed.insert(allowed.end(), command_members[index].begin(), command_members[index].end());
-    const std::string what = "command '" + *text + "'";
-    if (auto st = check_members(j, at, what, allowed); !st) return st.error();
-    Members m(j, at);
-    CommandSpec spec = read_spec(index, m);
-    if (m.error) return *m.error;
-    return spec;
+    return read_command(*text, j, at);
 }
 
 } // namespace isoparm::scene

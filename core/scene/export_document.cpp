@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cmath>
 
 #include "core/exchange/glb_writer.hpp"
 #include "core/exchange/iges_writer.hpp"
@@ -10,10 +11,7 @@
 #include "core/exchange/obj_writer.hpp"
 #include "core/exchange/step_writer.hpp"
 #include "core/exchange/stl_binary.hpp"
-#include "core/geom/implicit/expression.hpp"
-#include "core/geom/implicit/polygonize.hpp"
-#include "core/geom/tessellate.hpp"
-#include "core/geom/triangle.hpp"
+#include "core/geom/work_budget.hpp"
 
 namespace isoparm::scene {
 
@@ -35,21 +33,47 @@ geom::Error nothing_to_write(const ExportResult& r, ExportFormat f) {
     return geom::make_error_nopath(geom::ErrorCode::schema, message);
 }
 
-geom::Expected<geom::Mesh> implicit_mesh(const doc::Object& o) {
-    const doc::ImplicitObject& im = *o.implicit();
-    auto program = geom::implicit::compile(im.expression, im.parameter_names);
-    if (!program)
-        return geom::make_error_nopath(program.error().code,
-                                       label(o) + ": " + program.error().message);
-    geom::implicit::PolygonizeOptions options;
-    options.lo = im.lo;
-    options.hi = im.hi;
-    options.cell = im.cell;
-    options.parameters = im.parameter_values;
-    auto mesh = geom::implicit::polygonize(*program, options);
-    if (!mesh)
-        return geom::make_error_nopath(mesh.error().code, label(o) + ": " + mesh.error().message);
-    return mesh;
+// Memory a mesh export holds per vertex at its peak (the tessellation in doubles, the welded
+// copy, its hash cells and the file's bytes), measured with 1,000 x 1,000 samples of one
+// surface: binary STL 250 bytes, glTF 300, PLY 360, OBJ 570.
+double bytes_per_vertex(ExportFormat f) {
+    switch (f) {
+    case ExportFormat::stl:
+        return 250;
+    case ExportFormat::glb:
+        return 300;
+    case ExportFormat::ply:
+        return 360;
+    case ExportFormat::obj_mesh:
+    case ExportFormat::obj: // exact formats hold no mesh: the most a format costs
+    case ExportFormat::iges:
+    case ExportFormat::step:
+        return 570;
+    }
+    return 570;
+}
+
+// The budget of a mesh export, checked before anything is tessellated: its vertices at the
+// format's cost must fit in 1 GiB (25 surfaces at --samples 1000 took 4.3 GB).
+geom::Status check_mesh_budget(const std::vector<const doc::Object*>& objects,
+                               const ExportOptions& options) {
+    const double n = options.samples;
+    double vertices = 0;
+    for (const doc::Object* o : objects)
+        vertices +=
+            std::visit([&](const auto& k) { return mesh_vertices(k, options.samples); }, o->shape);
+    const double bytes = vertices * bytes_per_vertex(options.format);
+    if (bytes <= max_export_bytes) return geom::Ok{};
+    const double per_surface = std::floor(std::sqrt(max_export_bytes / bytes * n * n));
+    return geom::make_error_nopath(
+        geom::ErrorCode::limit,
+        geom::with_thousands(vertices) + " vertices (" + std::to_string(options.samples) + " x " +
+            std::to_string(options.samples) + " samples of each surface) would take about " +
+            geom::with_thousands(bytes / (1 << 20)) + " MiB as " +
+            export_format_label(options.format) + ", more than the " +
+            geom::with_thousands(max_export_bytes / (1 << 20)) +
+            " MiB an export may use; at most " + geom::with_thousands(per_surface) +
+            " samples per direction fit, or export fewer objects");
 }
 
 geom::Expected<ExportResult> exact(const std::vector<const doc::Object*>& objects,
@@ -57,20 +81,15 @@ geom::Expected<ExportResult> exact(const std::vector<const doc::Object*>& object
     ExportResult r;
     std::vector<exchange::ExactShape> shapes;
     for (const doc::Object* o : objects) {
-        if (o->implicit()) {
-            r.skipped.push_back(label(*o) +
-                                ": an implicit surface has no exact form (export a mesh: STL, "
-                                "PLY, glTF or OBJ mesh)");
+        // Each kind says what its exact form is, or why it has none.
+        doc::ExactForm form = std::visit([](const auto& k) { return exact_form(k); }, o->shape);
+        if (const auto* none = std::get_if<doc::NoForm>(&form)) {
+            r.skipped.push_back(label(*o) + ": " + none->why);
             continue;
         }
-        if (o->triangle()) {
-            r.skipped.push_back(label(*o) +
-                                ": IGES, STEP and OBJ free-form have no triangular Bezier patch "
-                                "(export a mesh: STL, PLY, glTF or OBJ mesh)");
-            continue;
-        }
-        exchange::ExactShape shape =
-            o->surface() ? exchange::ExactShape(*o->surface()) : exchange::ExactShape(*o->curve());
+        exchange::ExactShape shape = std::holds_alternative<geom::Surface>(form)
+                                         ? exchange::ExactShape(std::get<geom::Surface>(form))
+                                         : exchange::ExactShape(std::get<geom::Curve>(form));
         if (options.format != ExportFormat::obj)
             if (geom::Status st = exchange::check_positive_weights(shape); !st) {
                 // The shared message ends with the protocol's format names; say the mesh
@@ -97,47 +116,25 @@ geom::Expected<ExportResult> exact(const std::vector<const doc::Object*>& object
 
 } // namespace
 
-const char* const export_extensions = ".igs/.iges, .stp/.step, .obj, .stl, .ply, .glb";
+std::string export_extensions() {
+    return extensions_text(export_extension_table);
+}
 
 std::optional<ExportFormat> export_format_for(const std::string& path, bool mesh) {
     const auto dot = path.find_last_of('.');
     const auto slash = path.find_last_of('/');
     if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
         return std::nullopt;
-    const std::string ext = lower(path.substr(dot));
-    if (ext == ".obj") return mesh ? ExportFormat::obj_mesh : ExportFormat::obj;
-    if (ext == ".stl") return ExportFormat::stl;
-    if (ext == ".ply") return ExportFormat::ply;
-    if (ext == ".glb") return ExportFormat::glb;
-    if (mesh) return std::nullopt;
-    if (ext == ".igs" || ext == ".iges") return ExportFormat::iges;
-    if (ext == ".stp" || ext == ".step") return ExportFormat::step;
-    return std::nullopt;
+    const std::optional<ExportFormat> format =
+        format_by_extension(export_extension_table, lower(path.substr(dot)));
+    if (!format || !mesh) return format;
+    if (*format == ExportFormat::obj) return ExportFormat::obj_mesh;
+    return is_mesh_format(*format) ? format : std::nullopt; // no exact format as a mesh
 }
 
 bool is_mesh_format(ExportFormat f) {
     return f == ExportFormat::obj_mesh || f == ExportFormat::stl || f == ExportFormat::ply ||
            f == ExportFormat::glb;
-}
-
-const char* export_format_label(ExportFormat f) {
-    switch (f) {
-    case ExportFormat::iges:
-        return "IGES";
-    case ExportFormat::step:
-        return "STEP";
-    case ExportFormat::obj:
-        return "OBJ free-form";
-    case ExportFormat::obj_mesh:
-        return "OBJ mesh";
-    case ExportFormat::stl:
-        return "binary STL";
-    case ExportFormat::ply:
-        return "PLY";
-    case ExportFormat::glb:
-        return "glTF binary";
-    }
-    return "?";
 }
 
 geom::Expected<std::vector<const doc::Object*>> export_objects(const doc::Document& doc,
@@ -182,29 +179,21 @@ geom::Expected<ExportResult> export_document(const std::vector<const doc::Object
                                        "samples " + std::to_string(options.samples) +
                                            " must be 2..1000 (points per direction of a "
                                            "surface's tessellation)");
+    if (geom::Status st = check_mesh_budget(objects, options); !st) return st.error();
     ExportResult r;
     std::vector<geom::Mesh> meshes;
     for (const doc::Object* o : objects) {
-        if (o->curve()) {
-            r.skipped.push_back(label(*o) + ": a curve has no mesh (export IGES, STEP or OBJ "
-                                            "free-form)");
+        // Each kind says what its mesh is, or why it has none.
+        auto form =
+            std::visit([&](const auto& k) { return mesh_form(k, options.samples); }, o->shape);
+        if (!form)
+            return geom::make_error_nopath(form.error().code,
+                                           label(*o) + ": " + form.error().message);
+        if (const auto* none = std::get_if<doc::NoForm>(&*form)) {
+            r.skipped.push_back(label(*o) + ": " + none->why);
             continue;
         }
-        geom::Mesh mesh;
-        if (o->implicit()) {
-            auto m = implicit_mesh(*o);
-            if (!m) return m.error();
-            if (m->triangles.empty()) {
-                r.skipped.push_back(label(*o) + ": the implicit surface was not found in its box");
-                continue;
-            }
-            mesh = std::move(*m);
-        } else if (const geom::TrianglePatch* t = o->triangle()) {
-            // `samples` points along each edge: (samples - 1)^2 triangles.
-            mesh = geom::tessellate_triangle(*t, options.samples - 1);
-        } else {
-            mesh = geom::tessellate(*o->surface(), options.samples, options.samples);
-        }
+        geom::Mesh mesh = std::get<geom::Mesh>(std::move(*form));
         exchange::weld(mesh);
         meshes.push_back(std::move(mesh));
     }

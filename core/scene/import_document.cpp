@@ -21,18 +21,6 @@ std::string lower_extension(const std::string& path) {
     return ext;
 }
 
-const char* short_name(ImportFormat f) {
-    switch (f) {
-    case ImportFormat::iges:
-        return "iges";
-    case ImportFormat::step:
-        return "step";
-    case ImportFormat::obj:
-        return "obj";
-    }
-    return "obj";
-}
-
 std::string clean_name(const std::string& name) {
     std::string out = name;
     for (char& c : out)
@@ -44,26 +32,12 @@ std::string clean_name(const std::string& name) {
 
 } // namespace
 
-const char* const import_extensions = ".igs/.iges, .stp/.step, .obj";
-
-std::optional<ImportFormat> import_format_for(const std::string& path) {
-    const std::string ext = lower_extension(path);
-    if (ext == ".igs" || ext == ".iges") return ImportFormat::iges;
-    if (ext == ".stp" || ext == ".step") return ImportFormat::step;
-    if (ext == ".obj") return ImportFormat::obj;
-    return std::nullopt;
+std::string import_extensions() {
+    return extensions_text(import_extension_table);
 }
 
-const char* import_format_label(ImportFormat f) {
-    switch (f) {
-    case ImportFormat::iges:
-        return "IGES";
-    case ImportFormat::step:
-        return "STEP";
-    case ImportFormat::obj:
-        return "OBJ free-form";
-    }
-    return "OBJ free-form";
+std::optional<ImportFormat> import_format_for(const std::string& path) {
+    return format_by_extension(import_extension_table, lower_extension(path));
 }
 
 geom::Expected<ImportedObjects> import_text(std::string_view text, ImportFormat format) {
@@ -73,6 +47,16 @@ geom::Expected<ImportedObjects> import_text(std::string_view text, ImportFormat 
             : exchange::read_cad(text, format == ImportFormat::iges ? exchange::CadFormat::iges
                                                                     : exchange::CadFormat::step);
     if (!read) return read.error();
+    // The import's budget (the OBJ reader counts while it reads; a CAD reader's answer here).
+    std::size_t points = 0;
+    for (const exchange::ImportedShape& shape : read->objects)
+        points += std::visit([](const auto& g) { return g.points.size(); }, shape.shape);
+    if (points > exchange::max_import_control_points)
+        return geom::make_error(geom::ErrorCode::limit,
+                                "the file's curves and surfaces have " + std::to_string(points) +
+                                    " control points in all, more than the " +
+                                    std::to_string(exchange::max_import_control_points) +
+                                    " one import takes");
     ImportedObjects out;
     for (const exchange::SkippedEntity& s : read->skipped)
         out.skipped.push_back(s.entity + ": " + s.reason);
@@ -90,7 +74,7 @@ geom::Expected<ImportedObjects> import_text(std::string_view text, ImportFormat 
         ++k;
         doc::Object o;
         o.name = clean_name(shape.name);
-        if (o.name.empty()) o.name = std::string(short_name(format)) + " " + std::to_string(k);
+        if (o.name.empty()) o.name = std::string(geom::name_of(format)) + " " + std::to_string(k);
         if (auto* c = std::get_if<geom::Curve>(&shape.shape)) {
             doc::CurveObject co;
             co.curve = std::move(*c);
@@ -123,7 +107,7 @@ geom::Expected<ImportedObjects> import_file(const std::string& path) {
     if (!format)
         return geom::make_error(geom::ErrorCode::schema, "cannot tell the format of '" + path +
                                                              "' from its extension (" +
-                                                             import_extensions + ")");
+                                                             import_extensions() + ")");
     auto text = json_io::read_input_file(path);
     if (!text) return text.error();
     auto objects = import_text(*text, *format);

@@ -11,18 +11,35 @@
 #include "core/doc/document.hpp"
 #include "core/exchange/import_result.hpp"
 #include "core/geom/status.hpp"
+#include "core/scene/format_extensions.hpp"
 
 namespace isoparm::scene {
 
 enum class ImportFormat { iges, step, obj };
+inline constexpr geom::EnumName<ImportFormat> import_format_names[] = {
+    {ImportFormat::iges, "iges", "IGES"},
+    {ImportFormat::step, "step", "STEP"},
+    {ImportFormat::obj, "obj", "OBJ free-form"},
+};
+static_assert(geom::in_declaration_order(import_format_names));
+constexpr std::span<const geom::EnumName<ImportFormat>> enum_names(ImportFormat) {
+    return import_format_names;
+}
+// The extensions each format is read from.
+inline constexpr ExtensionOf<ImportFormat> import_extension_table[] = {
+    {".igs", ImportFormat::iges},  {".iges", ImportFormat::iges}, {".stp", ImportFormat::step},
+    {".step", ImportFormat::step}, {".obj", ImportFormat::obj},
+};
 
 // The format a file name asks for, from its extension (any case): .igs/.iges, .stp/.step,
 // .obj. nullopt for any other.
 std::optional<ImportFormat> import_format_for(const std::string& path);
 // "IGES", "STEP", "OBJ free-form".
-const char* import_format_label(ImportFormat f);
+inline const char* import_format_label(ImportFormat f) {
+    return geom::label_of(f);
+}
 // For messages: ".igs/.iges, .stp/.step, .obj".
-extern const char* const import_extensions;
+std::string import_extensions();
 
 struct ImportedObjects {
     std::vector<doc::Object> objects; // ids 0: the document assigns them

@@ -67,6 +67,15 @@ void Recorder::observe(const doc::Document& doc,
             "barycentric");
     if (doc.view.display != view_.display)
         append_or_replace({{"display", display_to_json(doc.view.display)}}, "display");
+    // An object's own toggles, one step per object changed.
+    for (const auto& [id, d] : doc.view.object_display) {
+        const auto was = view_.object_display.find(id);
+        if (was != view_.object_display.end() && was->second == d) continue;
+        json step = object_display_to_json(d);
+        step["object"] = id;
+        append_or_replace({{"object_display", std::move(step)}},
+                          ("object_display " + std::to_string(id)).c_str());
+    }
     if (doc.continuity != continuity_)
         append_or_replace({{"continuity", doc::continuity_name(doc.continuity)}}, "continuity");
     if (camera_degrees && camera_degrees != camera_) {
@@ -76,6 +85,17 @@ void Recorder::observe(const doc::Document& doc,
         camera_ = camera_degrees;
     }
     remember_view(doc);
+}
+
+void Recorder::add_steps(const json& steps) {
+    for (const json& step : steps) steps_.push_back(step);
+    last_kind_ = "authored"; // a later view change is a step of its own
+}
+
+std::size_t Recorder::stop_count() const {
+    std::size_t n = 0;
+    for (const json& step : steps_) n += step.contains("pause") ? 1 : 0;
+    return n;
 }
 
 json Recorder::script() const {

@@ -31,6 +31,13 @@ public:
     void observe(const doc::Document& doc,
                  std::optional<std::pair<double, double>> camera_degrees = std::nullopt);
 
+    // Steps the author adds while recording (Lessons > Add stop here: a caption and a pause;
+    // Add expectation: an expect): appended as they are. Call observe() first, so the view
+    // changes made before them come first.
+    void add_steps(const nlohmann::json& steps);
+    // The stops added so far (pauses).
+    std::size_t stop_count() const;
+
     std::size_t step_count() const { return steps_.size(); }
     // Commands that have no script form (restoring a recovery file) were left out.
     std::size_t left_out() const { return left_out_; }

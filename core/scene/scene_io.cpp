@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <set>
 
+#include "core/doc/associative.hpp"
 #include "core/doc/commands_common.hpp"
 #include "core/doc/patches.hpp"
 #include "core/geom/reshape.hpp"
@@ -16,6 +17,7 @@
 #include "core/json/out_of_memory.hpp"
 #include "core/json/reader.hpp"
 #include "core/json/shapes.hpp"
+#include "core/scene/recipe_json.hpp"
 
 namespace isoparm::scene {
 
@@ -57,6 +59,16 @@ template <class D> auto display_flags(D& d) {
     }};
 }
 
+template <class D> auto object_display_flags(D& d) {
+    using B = std::conditional_t<std::is_const_v<D>, const bool*, bool*>;
+    return std::array<std::pair<const char*, B>, 4>{{
+        {"control_points", &d.control_points},
+        {"control_net", &d.control_net},
+        {"point_ids", &d.point_ids},
+        {"knot_curves", &d.knot_curves},
+    }};
+}
+
 constexpr int max_density = 256;
 constexpr std::size_t max_objects = 100000;
 
@@ -78,18 +90,6 @@ json color_to_json(const Rgba& c) {
 // Reading helpers (the shared ones are in core/json/fields.hpp): every error carries the
 // absolute path into the scene.
 
-Expected<glm::dvec3> read_vec3(const json& v, const std::string& at, const char* what) {
-    if (!v.is_array() || v.size() != 3)
-        return schema_error(std::string(what) + " must be [x, y, z]", at);
-    glm::dvec3 p(0.0);
-    for (int a = 0; a < 3; ++a) {
-        auto x = read_finite(v[a], at + "/" + std::to_string(a), "a coordinate");
-        if (!x) return x.error();
-        p[a] = *x;
-    }
-    return p;
-}
-
 Expected<Rgba> read_color(const json& v, const std::string& at) {
     if (!v.is_array() || (v.size() != 3 && v.size() != 4))
         return schema_error("a colour is [r, g, b] or [r, g, b, a] with channels in [0, 1]", at);
@@ -109,129 +109,59 @@ Expected<Rgba> read_color(const json& v, const std::string& at) {
 // ---------------------------------------------------------------------------------------
 // Objects.
 
-Expected<ImplicitObject> implicit_from_json(const json& j, const std::string& at) {
-    if (auto st = expect_object(j, at, "an implicit surface"); !st) return st.error();
-    if (auto st = check_members(j, at, "an implicit surface",
-                                {"expression", "parameters", "bounds", "cell"});
-        !st)
-        return st.error();
-    ImplicitObject f;
-    const auto expr = j.find("expression");
-    if (expr == j.end()) return missing_member(at, "expression");
-    auto text = read_string(*expr, at + "/expression", "the expression");
-    if (!text) return text.error();
-    f.expression = *text;
-    if (const auto params = j.find("parameters"); params != j.end()) {
-        const std::string pat = at + "/parameters";
-        if (!params->is_array())
-            return schema_error("parameters is an array of {\"name\": ..., \"value\": ...}", pat);
-        for (std::size_t k = 0; k < params->size(); ++k) {
-            const json& p = (*params)[k];
-            const std::string kat = pat + "/" + std::to_string(k);
-            if (auto st = expect_object(p, kat, "a parameter"); !st) return st.error();
-            if (auto st = check_members(p, kat, "a parameter", {"name", "value"}); !st)
-                return st.error();
-            if (!p.contains("name")) return missing_member(kat, "name");
-            if (!p.contains("value")) return missing_member(kat, "value");
-            auto name = read_string(p["name"], kat + "/name", "a parameter name");
-            if (!name) return name.error();
-            auto value = read_finite(p["value"], kat + "/value", "a parameter value");
-            if (!value) return value.error();
-            f.parameter_names.push_back(*name);
-            f.parameter_values.push_back(*value);
-        }
-    }
-    if (const auto bounds = j.find("bounds"); bounds != j.end()) {
-        if (!bounds->is_array() || bounds->size() != 2)
-            return schema_error("bounds is [[xmin, ymin, zmin], [xmax, ymax, zmax]]",
-                                at + "/bounds");
-        auto lo = read_vec3((*bounds)[0], at + "/bounds/0", "the lower corner");
-        if (!lo) return lo.error();
-        auto hi = read_vec3((*bounds)[1], at + "/bounds/1", "the upper corner");
-        if (!hi) return hi.error();
-        f.lo = *lo;
-        f.hi = *hi;
-    }
-    if (const auto cell = j.find("cell"); cell != j.end()) {
-        auto c = read_finite(*cell, at + "/cell", "the cell size");
-        if (!c) return c.error();
-        f.cell = *c;
-    }
-    return f;
+// A name of E's table ("style": "shaded"); anything else is refused with the table's names.
+template <class E> Expected<E> read_named(const json& v, const std::string& at, const char* what) {
+    auto s = read_string(v, at, what);
+    if (!s) return s.error();
+    const std::optional<E> named = geom::parse_name<E>(*s);
+    if (!named)
+        return schema_error(
+            std::string(what) + " must be " + geom::names_list<E>() + ", got '" + *s + "'", at);
+    return *named;
 }
 
 // The kind a scene object or a command's shape names ("/kind" under at).
-Expected<ObjectKind> read_kind(const json& j, const std::string& at) {
+Expected<ObjectKind> read_kind_name(const json& j, const std::string& at) {
     const auto kind_it = j.find("kind");
     if (kind_it == j.end()) return missing_member(at, "kind");
-    auto kind = read_string(*kind_it, at + "/kind", "kind");
-    if (!kind) return kind.error();
-    const std::optional<ObjectKind> named = geom::parse_name<ObjectKind>(*kind);
-    if (!named)
-        return schema_error(
-            "kind must be surface, curve, implicit or triangle, got '" + *kind + "'", at + "/kind");
-    return *named;
+    return read_named<ObjectKind>(*kind_it, at + "/kind", "kind");
+}
+
+// The members a scene object (`object`) or a command's shape of this kind may have, and how
+// messages name it ("a surface object", "an implicit shape").
+struct KindMembers {
+    std::vector<std::string_view> allowed;
+    std::string what;
+};
+KindMembers kind_members(ObjectKind kind, bool object) {
+    return with_kind_type(kind, [&]<class K>(std::type_identity<K>) {
+        KindMembers m;
+        m.allowed = object ? std::vector<std::string_view>{"id", "name", "kind", "visible"}
+                           : std::vector<std::string_view>{"kind"};
+        if (object && K::in_patch_groups) m.allowed.push_back("patch_group");
+        m.allowed.insert(m.allowed.end(), K::shape_members.begin(), K::shape_members.end());
+        if (object && K::constructed) m.allowed.push_back("construction");
+        m.what = kind_file_noun(kind) + (object ? " object" : " shape");
+        return m;
+    });
 }
 
 // The geometry members of a shape of this kind, after the caller checked the members.
 Expected<Shape> read_shape(const json& j, const std::string& at, ObjectKind kind) {
-    const bool surface = kind == ObjectKind::surface, curve = kind == ObjectKind::curve;
     const char* member = geom::name_of(kind); // the geometry's member is named as the kind
     const std::string gat = at + "/" + member;
-    const auto geometry = j.find(member);
-    if (geometry == j.end())
+    if (j.find(member) == j.end())
         return schema_error(std::string("missing member '") + member + "' (the " +
                                 geom::name_of(kind) + " object's geometry)",
                             gat);
-    Shape shape;
-    if (surface) {
-        auto s = surface_from_json(*geometry);
-        if (!s) return s.error().under(gat);
-        shape = SurfaceObject{std::move(s).value()};
-    } else if (curve) {
-        CurveObject c;
-        if (const auto plane = j.find("plane"); plane != j.end()) {
-            auto p = read_string(*plane, at + "/plane", "plane");
-            if (!p) return p.error();
-            const std::optional<CurvePlane> plane_named = geom::parse_name<CurvePlane>(*p);
-            if (!plane_named)
-                return schema_error("plane must be xy, xz, yz or free3d, got '" + *p + "'",
-                                    at + "/plane");
-            c.plane = *plane_named;
-        }
-        if (const auto mode = j.find("knot_mode"); mode != j.end()) {
-            auto m = read_string(*mode, at + "/knot_mode", "knot_mode");
-            if (!m) return m.error();
-            const std::optional<CurveKnotMode> mode_named = geom::parse_name<CurveKnotMode>(*m);
-            if (!mode_named)
-                return schema_error("knot_mode must be clamped_uniform, chord, centripetal, "
-                                    "custom or closed, got '" +
-                                        *m + "'",
-                                    at + "/knot_mode");
-            c.knot_mode = *mode_named;
-        }
-        auto g = curve_from_json(*geometry);
-        if (!g) return g.error().under(gat);
-        c.curve = std::move(g).value();
-        // The designer edits a closed curve's polygon and closes it again: a curve that is not
-        // closed that way would lose its last p points at the first edit.
-        if (c.knot_mode == CurveKnotMode::closed && !geom::is_closed_periodic(c.curve))
-            return schema_error("knot_mode closed needs the curve closed as the curve designer "
-                                "closes it: knots (k - p) / n and the last p control points "
-                                "equal to the first p",
-                                at + "/knot_mode");
-        shape = std::move(c);
-    } else if (kind == ObjectKind::triangle) {
-        auto t = triangle_from_json(*geometry);
-        if (!t) return t.error().under(gat);
-        shape = TriangleObject{std::move(t).value()};
-    } else {
-        auto f = implicit_from_json(*geometry, gat);
-        if (!f) return f.error();
-        shape = std::move(f).value();
-    }
+    auto shape = with_kind_type(kind, [&]<class K>(std::type_identity<K> tag) -> Expected<Shape> {
+        auto k = read_kind(tag, j, at);
+        if (!k) return k.error();
+        return Shape{std::move(k).value()};
+    });
+    if (!shape) return shape.error();
     // The document's own rules (size caps, finite points, the implicit's box and parameters).
-    if (auto st = detail::validate_shape(shape); !st) return st.error().under(gat);
+    if (auto st = detail::validate_shape(*shape); !st) return st.error().under(gat);
     return shape;
 }
 
@@ -239,22 +169,10 @@ Expected<Shape> read_shape(const json& j, const std::string& at, ObjectKind kind
 
 Expected<Object> object_from_json(const json& j, const std::string& at) {
     if (auto st = expect_object(j, at, "an object"); !st) return st.error();
-    auto kind = read_kind(j, at);
+    auto kind = read_kind_name(j, at);
     if (!kind) return kind.error();
-    const bool surface = *kind == ObjectKind::surface, curve = *kind == ObjectKind::curve;
-    if (auto st =
-            surface ? check_members(j, at, "a surface object",
-                                    {"id", "name", "kind", "visible", "patch_group", "surface"})
-            : curve
-                ? check_members(j, at, "a curve object",
-                                {"id", "name", "kind", "visible", "plane", "knot_mode", "curve"})
-            : *kind == ObjectKind::triangle
-                ? check_members(j, at, "a triangle object",
-                                {"id", "name", "kind", "visible", "triangle"})
-                : check_members(j, at, "an implicit object",
-                                {"id", "name", "kind", "visible", "implicit"});
-        !st)
-        return st.error();
+    const KindMembers members = kind_members(*kind, true);
+    if (auto st = check_members(j, at, members.what, members.allowed); !st) return st.error();
 
     Object o;
     if (const auto id = j.find("id"); id != j.end()) {
@@ -283,49 +201,28 @@ Expected<Object> object_from_json(const json& j, const std::string& at) {
     auto shape = read_shape(j, at, *kind);
     if (!shape) return shape.error();
     o.shape = std::move(shape).value();
+    // Its links to the other objects are checked with the whole scene (check_constructions).
+    if (const auto recipe = j.find("construction"); recipe != j.end()) {
+        auto r = recipe_from_json(*recipe, at + "/construction");
+        if (!r) return r.error();
+        o.construction = std::move(r).value();
+    }
     return o;
 }
 
 Expected<Shape> shape_from_json(const json& j, const std::string& at) {
     if (auto st = expect_object(j, at, "a shape"); !st) return st.error();
-    auto kind = read_kind(j, at);
+    auto kind = read_kind_name(j, at);
     if (!kind) return kind.error();
-    const bool surface = *kind == ObjectKind::surface, curve = *kind == ObjectKind::curve;
-    if (auto st =
-            surface ? check_members(j, at, "a surface shape", {"kind", "surface"})
-            : curve ? check_members(j, at, "a curve shape", {"kind", "plane", "knot_mode", "curve"})
-            : *kind == ObjectKind::triangle
-                ? check_members(j, at, "a triangle shape", {"kind", "triangle"})
-                : check_members(j, at, "an implicit shape", {"kind", "implicit"});
-        !st)
-        return st.error();
+    const KindMembers members = kind_members(*kind, false);
+    if (auto st = check_members(j, at, members.what, members.allowed); !st) return st.error();
     return read_shape(j, at, *kind);
 }
 
 json shape_to_json(const Shape& shape) {
     json j = json::object();
     j["kind"] = geom::name_of(kind_of(shape));
-    if (const geom::Surface* s = surface_of(shape)) {
-        j["surface"] = surface_to_json(*s);
-    } else if (const CurveObject* c = curve_object_of(shape)) {
-        j["plane"] = geom::name_of(c->plane);
-        // Custom (the default) is omitted, so older scenes save back unchanged.
-        if (c->knot_mode != CurveKnotMode::custom) j["knot_mode"] = geom::name_of(c->knot_mode);
-        j["curve"] = curve_to_json(c->curve);
-    } else if (const geom::TrianglePatch* t = triangle_of(shape)) {
-        j["triangle"] = triangle_to_json(*t);
-    } else {
-        const ImplicitObject& f = *implicit_of(shape);
-        json params = json::array();
-        const std::size_t count = std::min(f.parameter_names.size(), f.parameter_values.size());
-        for (std::size_t k = 0; k < count; ++k)
-            params.push_back({{"name", f.parameter_names[k]}, {"value", f.parameter_values[k]}});
-        j["implicit"] = {{"expression", f.expression},
-                         {"parameters", std::move(params)},
-                         {"bounds", json::array({json::array({f.lo.x, f.lo.y, f.lo.z}),
-                                                 json::array({f.hi.x, f.hi.y, f.hi.z})})},
-                         {"cell", f.cell}};
-    }
+    std::visit([&](const auto& k) { kind_to_json(k, j); }, shape);
     return j;
 }
 
@@ -337,6 +234,7 @@ json object_to_json(const Object& o) {
     if (o.patch_group != 0) j["patch_group"] = o.patch_group;
     const json shape = shape_to_json(o.shape);
     for (const auto& [key, value] : shape.items()) j[key] = value;
+    if (o.construction) j["construction"] = recipe_to_json(*o.construction);
     return j;
 }
 
@@ -387,12 +285,8 @@ Expected<DisplaySettings> display_from_json(const json& j, const std::string& at
     for (const auto& item : j.items()) {
         const std::string mat = member_path(at, item.key());
         if (item.key() == "style") {
-            auto s = read_string(item.value(), mat, "style");
-            if (!s) return s.error();
-            const std::optional<DisplayStyle> style = geom::parse_name<DisplayStyle>(*s);
-            if (!style)
-                return schema_error("style must be shaded, wireframe or both, got '" + *s + "'",
-                                    mat);
+            auto style = read_named<DisplayStyle>(item.value(), mat, "style");
+            if (!style) return style.error();
             d.style = *style;
             continue;
         }
@@ -403,14 +297,8 @@ Expected<DisplaySettings> display_from_json(const json& j, const std::string& at
             continue;
         }
         if (item.key() == "analysis") {
-            auto a = read_string(item.value(), mat, "analysis");
-            if (!a) return a.error();
-            const std::optional<AnalysisMode> mode = geom::parse_name<AnalysisMode>(*a);
-            if (!mode)
-                return schema_error("analysis must be off, gauss, mean, kmax, kmin, zebra or "
-                                    "isophote, got '" +
-                                        *a + "'",
-                                    mat);
+            auto mode = read_named<AnalysisMode>(item.value(), mat, "analysis");
+            if (!mode) return mode.error();
             d.analysis = *mode;
             continue;
         }
@@ -476,42 +364,11 @@ Expected<Selection> selection_from_json(const json& j, const std::string& at, co
     sel.object = o->id;
     const auto point = j.find("point");
     if (point == j.end()) return sel;
-    if (o->implicit())
-        return schema_error("an implicit surface has no control points to select", at + "/point");
-    const geom::Surface* surface = o->surface();
-    const geom::TrianglePatch* triangle = o->triangle();
-    const std::size_t arity = surface || triangle ? 2 : 1;
-    if (!point->is_array() || point->size() != arity)
-        return schema_error(surface ? "a surface's selected point is [i, j]"
-                            : triangle
-                                ? "a triangle's selected point is [i, j] (b_ijk, k = n - i - j)"
-                                : "a curve's selected point is [i]",
-                            at + "/point");
-    int counts[2];
-    if (triangle) {
-        counts[0] = counts[1] = triangle->degree + 1;
-    } else if (surface) {
-        counts[0] = surface->n_u;
-        counts[1] = surface->n_v;
-    } else {
-        counts[0] = o->curve()->count();
-        counts[1] = 0;
-    }
-    int idx[2] = {-1, -1};
-    for (std::size_t k = 0; k < arity; ++k) {
-        auto v = read_integer((*point)[k], at + "/point/" + std::to_string(k),
-                              "a control point index", 0, counts[k] - 1);
-        if (!v) return v.error();
-        idx[k] = static_cast<int>(*v);
-    }
-    if (triangle && idx[0] + idx[1] > triangle->degree)
-        return schema_error(
-            "a degree " + std::to_string(triangle->degree) +
-                " triangle's point [i, j] needs i + j <= " + std::to_string(triangle->degree) +
-                ", got [" + std::to_string(idx[0]) + ", " + std::to_string(idx[1]) + "]",
-            at + "/point/1");
-    sel.i = idx[0];
-    sel.j = idx[1];
+    auto idx = std::visit(
+        [&](const auto& k) { return selected_point_from_json(k, *point, at + "/point"); },
+        o->shape);
+    if (!idx) return idx.error();
+    std::tie(sel.i, sel.j) = *idx;
     return sel;
 }
 
@@ -553,15 +410,52 @@ Expected<Continuity> continuity_from_json(const json& j, const std::string& at) 
     if (!name) return name.error();
     const std::optional<Continuity> continuity = geom::parse_name<Continuity>(*name);
     if (!continuity)
-        return schema_error("continuity must be off, C0 or C1, got '" + *name + "'", at);
+        return schema_error(
+            "continuity must be " + geom::names_list<Continuity>() + ", got '" + *name + "'", at);
     return *continuity;
 }
 
 namespace {} // namespace
 
+json without_display(const json& object) {
+    json rest = object;
+    rest.erase("display");
+    return rest;
+}
+
+json object_display_to_json(const ObjectDisplay& d) {
+    json j = json::object();
+    for (const auto& [name, flag] : object_display_flags(d)) j[name] = *flag;
+    return j;
+}
+
+Expected<ObjectDisplay> object_display_from_json(const json& j, const std::string& at,
+                                                 ObjectDisplay d) {
+    if (auto st = expect_object(j, at, "display"); !st) return st.error();
+    std::vector<std::string_view> allowed;
+    for (auto& [name, flag] : object_display_flags(d)) allowed.push_back(name);
+    if (auto st = check_members(j, at, "an object's display", allowed); !st) return st.error();
+    for (auto& [name, flag] : object_display_flags(d))
+        if (const auto it = j.find(name); it != j.end()) {
+            auto v = read_bool(*it, member_path(at, name));
+            if (!v) return v.error();
+            *flag = *v;
+        }
+    return d;
+}
+
 json scene_to_json(const Document& doc) {
     json objects = json::array();
-    for (const Object& o : doc.objects) objects.push_back(object_to_json(o));
+    bool own_display = false;
+    for (const Object& o : doc.objects) {
+        json oj = object_to_json(o);
+        // An object's own display toggles (format version 2); the others take the scene's.
+        if (const auto d = doc.view.object_display.find(o.id); d != doc.view.object_display.end()) {
+            oj["display"] = object_display_to_json(d->second);
+            own_display = true;
+        }
+        objects.push_back(std::move(oj));
+    }
     json colors = colors_to_json(doc.colors);
 
     json display = display_to_json(doc.view.display);
@@ -572,7 +466,12 @@ json scene_to_json(const Document& doc) {
 
     json scene = json::object();
     scene["format"] = scene_format_name;
-    scene["version"] = scene_format_version;
+    // Version 2 only where it is needed (an object's own display toggles or a construction), so
+    // other scenes save as version 1 and read in older builds as before.
+    const bool constructions =
+        std::any_of(doc.objects.begin(), doc.objects.end(),
+                    [](const Object& o) { return o.construction.has_value(); });
+    scene["version"] = own_display || constructions ? scene_format_version : 1;
     scene["objects"] = std::move(objects);
     scene["colors"] = std::move(colors);
     scene["display"] = std::move(display);
@@ -592,10 +491,11 @@ json scene_to_json(const Document& doc) {
     return scene;
 }
 
-Expected<Document> scene_from_json(const json& j) {
-    if (!j.is_object())
-        return schema_error(std::string("a scene is a JSON object, got ") + type_name(j), "");
-    // Format and version first: a newer file may well have members this version lacks.
+namespace {
+
+// The scene's format version, after its format: checked first, since a newer file may well have
+// members this version lacks.
+Expected<std::int64_t> scene_version(const json& j) {
     const auto format = j.find("format");
     if (format == j.end())
         return schema_error("missing member 'format' (an isoparm scene has \"format\": \"" +
@@ -619,13 +519,15 @@ Expected<Document> scene_from_json(const json& j) {
                             "/version");
     if (*v < 1)
         return schema_error("version must be at least 1, got " + std::to_string(*v), "/version");
-    if (auto st = check_members(j, "", "a scene",
-                                {"format", "version", "objects", "colors", "display", "selection",
-                                 "indicator", "barycentric", "continuity", "next_id"});
-        !st)
-        return st.error();
+    return *v;
+}
 
-    Document doc;
+// An object's own display toggles, read after the scene's (object index, its JSON).
+using OwnDisplays = std::vector<std::pair<std::size_t, const json*>>;
+
+// The objects, with fresh ids for those written without one, and next_id.
+geom::Status read_scene_objects(const json& j, std::int64_t version, Document& doc,
+                                OwnDisplays& own_displays) {
     const auto objects = j.find("objects");
     if (objects == j.end()) return missing_member("", "objects");
     if (!objects->is_array())
@@ -639,7 +541,16 @@ Expected<Document> scene_from_json(const json& j) {
     std::set<std::uint64_t> ids;
     for (std::size_t k = 0; k < objects->size(); ++k) {
         const std::string at = "/objects/" + std::to_string(k);
-        auto o = object_from_json((*objects)[k], at);
+        const json& oj = (*objects)[k];
+        // An object's own display is view state, not geometry: read apart (version 2).
+        const bool own = oj.is_object() && oj.contains("display");
+        if (own && version < 2)
+            return schema_error("an object's display needs format version 2, this scene says "
+                                "version " +
+                                    std::to_string(version),
+                                at + "/display");
+        if (own) own_displays.emplace_back(k, &oj.at("display"));
+        auto o = own ? object_from_json(without_display(oj), at) : object_from_json(oj, at);
         if (!o) return o.error();
         if (o->id != 0 && !ids.insert(o->id).second)
             return schema_error("object id " + std::to_string(o->id) + " is used twice",
@@ -657,7 +568,11 @@ Expected<Document> scene_from_json(const json& j) {
         if (!v) return v.error();
         doc.next_id = static_cast<std::uint64_t>(*v);
     }
+    return geom::Ok{};
+}
 
+// Colours, display settings (the scene's, then each object's own), selection and continuity.
+geom::Status read_scene_settings(const json& j, Document& doc, const OwnDisplays& own_displays) {
     if (const auto c = j.find("colors"); c != j.end()) {
         auto colors = colors_from_json(*c, "/colors", doc.colors);
         if (!colors) return colors.error();
@@ -667,6 +582,12 @@ Expected<Document> scene_from_json(const json& j) {
         auto display = display_from_json(*d, "/display", doc.view.display);
         if (!display) return display.error();
         doc.view.display = *display;
+    }
+    for (const auto& [k, dj] : own_displays) {
+        auto d = object_display_from_json(*dj, "/objects/" + std::to_string(k) + "/display",
+                                          defaults_of(doc.view.display));
+        if (!d) return d.error();
+        doc.view.object_display[doc.objects[k].id] = *d;
     }
     if (const auto s = j.find("selection"); s != j.end()) {
         auto selection = selection_from_json(*s, "/selection", doc);
@@ -678,7 +599,45 @@ Expected<Document> scene_from_json(const json& j) {
         if (!continuity) return continuity.error();
         doc.continuity = *continuity;
     }
+    return geom::Ok{};
+}
+
+// Each recipe's inputs exist, are of the kind it reads, and no recipe reads itself.
+geom::Status check_scene_constructions(const Document& doc, std::int64_t version) {
+    if (version < 2)
+        for (std::size_t k = 0; k < doc.objects.size(); ++k)
+            if (doc.objects[k].construction)
+                return schema_error("construction needs scene format version 2 (this scene says " +
+                                        std::to_string(version) + ")",
+                                    "/objects/" + std::to_string(k) + "/construction");
+    for (std::size_t k = 0; k < doc.objects.size(); ++k) {
+        const Object& o = doc.objects[k];
+        if (!o.construction) continue;
+        if (auto st = check_recipe_links(doc, o.id, o, *o.construction); !st)
+            return st.error().under("/objects/" + std::to_string(k));
+    }
+    return geom::Ok{};
+}
+
+} // namespace
+
+Expected<Document> scene_from_json(const json& j) {
+    if (!j.is_object())
+        return schema_error(std::string("a scene is a JSON object, got ") + type_name(j), "");
+    const auto v = scene_version(j);
+    if (!v) return v.error();
+    if (auto st = check_members(j, "", "a scene",
+                                {"format", "version", "objects", "colors", "display", "selection",
+                                 "indicator", "barycentric", "continuity", "next_id"});
+        !st)
+        return st.error();
+
+    Document doc;
+    OwnDisplays own_displays;
+    if (auto st = read_scene_objects(j, *v, doc, own_displays); !st) return st.error();
+    if (auto st = read_scene_settings(j, doc, own_displays); !st) return st.error();
     if (auto e = check_patch_groups(doc)) return *e;
+    if (auto st = check_scene_constructions(doc, *v); !st) return st.error();
     if (const auto ind = j.find("indicator"); ind != j.end()) {
         auto uv = indicator_from_json(*ind, "/indicator");
         if (!uv) return uv.error();

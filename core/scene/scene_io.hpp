@@ -11,9 +11,12 @@
 
 namespace isoparm::scene {
 
-// The scene format's name and the newest version this build reads and writes.
+// The scene format's name and the newest version this build reads and writes. Version 2 added
+// an object's own display toggles ("display" in the object) and its "construction" (a recipe
+// that keeps it linked to its inputs); a scene is written as version 1 while none of its
+// objects has either, so that it stays readable by older builds.
 inline constexpr const char* scene_format_name = "isoparm-scene";
-inline constexpr int scene_format_version = 1;
+inline constexpr int scene_format_version = 2;
 // The largest object (and patch group) id a file or command may name: 2^53, exact in every
 // JSON reader.
 inline constexpr std::uint64_t max_object_id = 9007199254740992ull;
@@ -38,6 +41,12 @@ geom::Expected<doc::Colors> colors_from_json(const nlohmann::json& j, const std:
 // settings (members missing keep their value in `current`), the selection ({"object": id,
 // "point": [i, j] or [i]} or null; the object and point must exist in `doc`), the indicator
 // ([u, v] in [0, 1]^2 over the current domain) and the continuity setting ("off", "C0", "C1").
+// An object's own display toggles (format version 2): control_points, control_net,
+// point_ids, knot_curves; members not named keep the value in `current`.
+nlohmann::json object_display_to_json(const doc::ObjectDisplay& display);
+geom::Expected<doc::ObjectDisplay> object_display_from_json(const nlohmann::json& j,
+                                                            const std::string& at,
+                                                            doc::ObjectDisplay current);
 nlohmann::json display_to_json(const doc::DisplaySettings& display);
 geom::Expected<doc::DisplaySettings>
 display_from_json(const nlohmann::json& j, const std::string& at, doc::DisplaySettings current);

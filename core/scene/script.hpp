@@ -12,15 +12,32 @@
 #include <variant>
 #include <vector>
 
+#include "core/doc/animated.hpp"
 #include "core/doc/command.hpp"
 #include "core/doc/command_spec.hpp"
 #include "core/doc/document.hpp"
 #include "core/geom/status.hpp"
+#include "core/scene/expect.hpp"
 
 namespace isoparm::scene {
 
 inline constexpr const char* script_format_name = "isoparm-script";
 inline constexpr int script_format_version = 1;
+
+// The screenshots' budget: one picture at most 4096 x 4096 pixels (about 0.7 GB to render with
+// its multisampled buffers), all of a script's together at most 3e8 (about 300 pictures of
+// 1280 x 800), checked when the script is read, before anything runs.
+inline constexpr double max_screenshot_pixels = 4096.0 * 4096.0;
+inline constexpr double max_script_pixels = 3e8;
+// The steps' budget: at most 100,000 steps (checked when the script is read), each command
+// within the protocol's work budget, and the trial run (run_script with dry_run), which does
+// every command's work, stops with `limit` at the step it reaches after this many seconds.
+inline constexpr double max_trial_seconds = 120;
+
+// Why `name` is not a screenshot's file name ("" when it is one): checked byte by byte (a NUL
+// would end the name the system sees early), no separators or control characters, no leading
+// dot, ending in .png.
+std::string screenshot_name_problem(const std::string& name);
 
 // View steps: they change what is looked at, not the scene's geometry (no undo step).
 struct UndoStep {};
@@ -36,6 +53,12 @@ struct BarycentricStep {
 };
 struct DisplayStep {
     nlohmann::json display; // as a scene file's "display"; members not named keep their value
+};
+// One object's own display toggles ({"object_display": {"object": id, "control_points": ...}});
+// members not named keep the object's value.
+struct ObjectDisplayStep {
+    std::uint64_t object = 0;
+    nlohmann::json display;
 };
 struct ContinuityStep {
     doc::Continuity mode = doc::Continuity::off;
@@ -60,35 +83,34 @@ struct CaptionStep {
     std::string text;
 };
 struct PauseStep {};
-// A check on the document (docs/script-format.md: "expect").
-struct ExpectStep {
-    std::optional<std::size_t> objects;
-    std::optional<std::uint64_t> id;
-    std::optional<int> i, j;
-    std::optional<glm::dvec3> position;
-    std::optional<double> weight;
-    geom::Dir direction = geom::Dir::u;
-    std::optional<std::vector<double>> knots;
-    std::optional<int> degree;
-    std::optional<geom::SplineType> type;
-    std::optional<std::uint64_t> group;
-    std::optional<doc::Continuity> borders;
-    double tolerance = 1e-9;
+// An animated parameter (docs/script-format.md, "animate"): a lesson played in the window runs
+// it on its slider; `isoparm script`'s screenshots after it show the value at phase `at` as a
+// preview. It never edits the document. `stop` ends the animation shown.
+struct AnimateStep {
+    doc::AnimationTarget target;
+    double seconds = 4, speed = 1;
+    doc::Repeat repeat = doc::Repeat::bounce;
+    double at = 0; // the phase in [0, 1] the screenshots show
+    bool play = true;
+    bool stop = false;
 };
-
-using StepAction = std::variant<doc::CommandSpec, UndoStep, RedoStep, SelectStep, IndicatorStep,
-                                DisplayStep, ContinuityStep, CameraStep, DeBoorStep, ScreenshotStep,
-                                CaptionStep, PauseStep, ExpectStep, BarycentricStep>;
+using StepAction =
+    std::variant<doc::CommandSpec, UndoStep, RedoStep, SelectStep, IndicatorStep, DisplayStep,
+                 ContinuityStep, CameraStep, DeBoorStep, ScreenshotStep, CaptionStep, PauseStep,
+                 ExpectStep, BarycentricStep, AnimateStep, ObjectDisplayStep>;
 
 struct Step {
     StepAction action;
-    std::string path; // "/steps/12", for every message about this step
+    std::string path;                // "/steps/12", for every message about this step
+    nlohmann::json source = nullptr; // the step as written (the lesson editor writes it back)
 };
 
 struct Script {
     doc::Document start;
     std::string scene_name; // the starting scene's file, "(inline)" or "(default)"
     std::vector<Step> steps;
+    // What the Lessons menu shows: a title and a one-line summary (both optional).
+    std::string title, summary;
 };
 
 // Reads a script: the format and version, the starting scene ("scene": a path relative to
@@ -120,6 +142,7 @@ public:
     std::optional<CameraStep> camera;
     int deboor_step = -1;
     std::string caption;
+    std::optional<AnimateStep> animation; // the last animate step, until a stop
 };
 
 struct ScriptHooks {
@@ -140,9 +163,10 @@ struct ScriptResult {
 };
 
 // Runs the steps in order on `state` (which starts as script.start). In a dry run no hook is
-// called: it finds every step that cannot be carried out before anything is written.
+// called: it finds every step that cannot be carried out before anything is written, and the
+// steps that would take more than `trial_seconds` (a dry run only).
 ScriptResult run_script(const Script& script, ScriptState& state, const ScriptHooks& hooks,
-                        bool dry_run = false);
+                        bool dry_run = false, double trial_seconds = max_trial_seconds);
 
 // One step (the runner's and a lesson player's unit). Returns the refusal, with the step's path.
 geom::Status run_step(const Step& step, ScriptState& state, const ScriptHooks& hooks, bool dry_run,

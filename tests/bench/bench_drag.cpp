@@ -98,3 +98,52 @@ BENCHMARK(BM_DragStepIncrementalByNet)
     ->Unit(benchmark::kMicrosecond);
 
 } // namespace
+
+#include "core/doc/commands_curve.hpp"
+#include "core/scene/scene_io.hpp"
+
+namespace {
+
+// The modeler's drag case without the frame (bench_frames' vase64_profile_drag): a point of
+// Fig. 8's 11-point profile moved while the vase, refined to 64x64 and still linked to it,
+// follows; the step is the command with the rebuild of its dependant (revolve, then the 108
+// recorded knot insertions), then the 3D view's mesh of the rebuilt surface (every row
+// changes, so the incremental mesh does all of it).
+void BM_ProfileDragVase64(benchmark::State& state) {
+    auto loaded = scene::load_scene(ISOPARM_SOURCE_DIR "/assets/scenes/fig8-revolution.json");
+    if (!loaded) {
+        state.SkipWithError(loaded.error().message.c_str());
+        return;
+    }
+    doc::Document d = std::move(loaded).value();
+    doc::History history;
+    const std::uint64_t vase = 1, profile = 2;
+    for (int k = 0; k < 53; ++k)
+        (void)history.execute(d, doc::insert_knot(vase, geom::Dir::u, (k + 0.37) / 53));
+    for (int k = 0; k < 55; ++k)
+        (void)history.execute(d, doc::insert_knot(vase, geom::Dir::v, (k + 0.37) / 55));
+    const geom::Surface* s0 = d.find(vase)->surface();
+    if (!s0 || s0->n_u != 64 || s0->n_v != 64 || !d.find(vase)->construction) {
+        state.SkipWithError("the 64x64 vase was not built");
+        return;
+    }
+    const glm::dvec3 p0 = d.find(profile)->curve()->points[5];
+    const auto [su, sv] = ui::display_samples(*s0, d.view.display.density);
+    ui::IncrementalMesh mesh;
+    mesh.update(*s0, su, sv);
+    const bool mesh_too = state.range(0) != 0;
+    long n = 0;
+    for (auto _ : state) {
+        const double t = 0.02 * static_cast<double>(n++ % 40);
+        (void)history.execute(d, doc::move_curve_point(profile, 5, p0 + glm::dvec3(t, 0, 0)));
+        if (mesh_too) {
+            const ui::MeshChange c = mesh.update(*d.find(vase)->surface(), su, sv);
+            benchmark::DoNotOptimize(c.vertex_count);
+        }
+    }
+    state.counters["vertices"] = static_cast<double>(su) * sv;
+}
+// 0: the command and its rebuild alone; 1: with the mesh.
+BENCHMARK(BM_ProfileDragVase64)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+} // namespace

@@ -3,7 +3,9 @@
 
 #include <vector>
 
+#include "core/doc/document.hpp"
 #include "core/geom/implicit/polygonize.hpp"
+#include "core/scene/scene_io.hpp"
 
 namespace {
 
@@ -157,5 +159,56 @@ void BM_TorusGradientBatch(benchmark::State& state) {
         static_cast<double>(r.points.size()), benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_TorusGradientBatch);
+
+// The implicit gallery (assets/scenes/implicit-gallery.json): its six surfaces polygonized at
+// their own cells, one after the other, as `isoparm render` does (threads: 0 = all, 1).
+void BM_PolygonizeGallery(benchmark::State& state) {
+    auto scene =
+        isoparm::scene::load_scene(ISOPARM_SOURCE_DIR "/assets/scenes/implicit-gallery.json");
+    if (!scene) {
+        state.SkipWithError(scene.error().message.c_str());
+        return;
+    }
+    struct Job {
+        Program f;
+        PolygonizeOptions o;
+    };
+    std::vector<Job> jobs;
+    for (const auto& obj : scene->objects) {
+        const isoparm::doc::ImplicitObject* im = obj.implicit();
+        if (!im) continue;
+        Job j;
+        j.f = std::move(compile(im->expression, im->parameter_names)).value();
+        j.o.parameters = im->parameter_values;
+        j.o.lo = im->lo;
+        j.o.hi = im->hi;
+        j.o.cell = im->cell;
+        j.o.threads = static_cast<int>(state.range(0));
+        jobs.push_back(std::move(j));
+    }
+    std::size_t triangles = 0, vertices = 0;
+    for (auto _ : state) {
+        triangles = vertices = 0;
+        for (const Job& j : jobs) {
+            auto mesh = polygonize(j.f, j.o);
+            if (!mesh) {
+                state.SkipWithError(mesh.error().message.c_str());
+                return;
+            }
+            triangles += mesh->triangles.size();
+            vertices += mesh->positions.size();
+            benchmark::DoNotOptimize(mesh->positions.data());
+        }
+    }
+    state.counters["triangles"] = static_cast<double>(triangles);
+    state.counters["vertices"] = static_cast<double>(vertices);
+}
+BENCHMARK(BM_PolygonizeGallery)
+    ->ArgName("threads")
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
 
 } // namespace

@@ -6,14 +6,12 @@
 
 #include "core/doc/commands_curve.hpp"
 #include "core/doc/curve_constructions.hpp"
-#include "core/scene/scene_io.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/interpolate.hpp"
 #include "tests/doc/doc_fixtures.hpp"
 
 using namespace isoparm;
 using namespace isoparm::doc;
-using namespace isoparm::scene;
 using namespace isoparm::doc::testing;
 using geom::ErrorCode;
 
@@ -296,28 +294,6 @@ TEST(MakeCurvesCompatible, RefusalsNameTheCurve) {
     const auto st = h.execute(doc, make_curves_compatible({curve_id, hill_id}));
     ASSERT_FALSE(st.ok());
     EXPECT_NE(st.error().message.find("'hill'"), std::string::npos) << st.error().message;
-}
-
-TEST(CurveScene, KnotModeRoundTripsAndOldScenesLoadAsCustom) {
-    Document doc = designer_document(CurveKnotMode::centripetal);
-    const std::string text = scene_to_text(doc);
-    EXPECT_NE(text.find("\"knot_mode\": \"centripetal\""), std::string::npos);
-    auto back = scene_from_text(text);
-    ASSERT_TRUE(back.ok()) << back.error().message;
-    EXPECT_TRUE(same_document(*back, doc));
-    // Custom is the default and not written: the sample curve's object has no knot_mode.
-    const std::string custom_text = scene_to_text(sample_document());
-    EXPECT_EQ(custom_text.find("knot_mode"), std::string::npos);
-    auto old = scene_from_text(custom_text);
-    ASSERT_TRUE(old.ok());
-    EXPECT_EQ(curve_object_of(*old, curve_id).knot_mode, CurveKnotMode::custom);
-    std::string bad = text;
-    bad.replace(bad.find("centripetal"), 11, "zigzag");
-    auto refused = scene_from_text(bad);
-    ASSERT_FALSE(refused.ok());
-    EXPECT_EQ(refused.error().code, ErrorCode::schema);
-    EXPECT_EQ(refused.error().path, "/objects/5/knot_mode");
-    EXPECT_NE(refused.error().message.find("zigzag"), std::string::npos);
 }
 
 // ---------------------------------------------------------------------------------------

@@ -6,11 +6,12 @@
 #include <memory>
 
 #include "core/doc/command.hpp"
+#include "core/doc/command_spec.hpp"
 #include "core/doc/commands.hpp"
 #include "core/doc/commands_triangle.hpp"
 #include "core/doc/document.hpp"
+#include "core/doc/patches.hpp"
 #include "core/geom/knots.hpp"
-#include "core/scene/command_json.hpp"
 
 namespace isoparm::doc::testing {
 
@@ -98,26 +99,22 @@ inline const geom::Curve& curve_of(const Document& doc, std::uint64_t id) {
     return std::get<CurveObject>(doc.find(id)->shape).curve;
 }
 
-// The command as data gives the same command: its spec, written as JSON and read back, built
-// and applied to `before`, gives `after` (a script replays exactly what was done).
+// The command as data gives the same command: its spec, built and applied to `before`, gives
+// `after` (a script replays exactly what was done; that the spec survives its JSON form is
+// tests/scene/command_json_test.cpp's, for every command).
 inline void expect_replays_as_data(const Command& applied, const Document& before,
                                    const Document& after) {
     const std::optional<CommandSpec> spec = applied.spec();
     ASSERT_TRUE(spec.has_value());
-    const nlohmann::json written = scene::command_to_json(*spec);
-    auto read = scene::command_from_json(written);
-    ASSERT_TRUE(read.ok()) << written.dump() << ": " << read.error().message << " at "
-                           << read.error().path;
-    EXPECT_EQ(scene::command_to_json(*read), written);
     Document replay = before;
-    const auto st = make_command(std::move(read).value())->apply(replay);
-    ASSERT_TRUE(st.ok()) << st.error().message;
-    EXPECT_TRUE(same_document(replay, after)) << written.dump();
+    const auto st = make_command(*spec)->apply(replay);
+    ASSERT_TRUE(st.ok()) << command_name(*spec) << ": " << st.error().message;
+    EXPECT_TRUE(same_document(replay, after)) << command_name(*spec);
 }
 
 // Executes cmd through a history and checks that check() agreed beforehand, that undo gives
 // the state before, bit for bit, redo the state after, and undo again the state before, and
-// that the command replays from its JSON form. Returns the state after.
+// that the command replays from its spec. Returns the state after.
 inline Document expect_undo_redo_exact(Document& doc, std::unique_ptr<Command> cmd) {
     History history;
     const Document before = doc;
@@ -163,5 +160,30 @@ inline void expect_refused(Document& doc, std::unique_ptr<Command> cmd, geom::Er
     EXPECT_EQ(doc.next_id, before.next_id);
     EXPECT_FALSE(history.can_undo());
 }
+
+// Splits through the history; the pieces' ids.
+inline std::pair<std::uint64_t, std::uint64_t> split(Document& doc, History& h, std::uint64_t id,
+                                                     geom::Dir dir, double t) {
+    auto cmd = split_object(id, dir, t);
+    const Command* raw = cmd.get();
+    EXPECT_TRUE(h.execute(doc, std::move(cmd)));
+    return split_piece_ids(*raw);
+}
+
+// The paper's example on the default hill: split at u = 0.75, then the left part at v = 0.5.
+struct PaperSplit {
+    Document doc = default_document();
+    History history;
+    std::uint64_t left = 0, right = 0, left_low = 0, left_high = 0;
+
+    PaperSplit() {
+        const std::uint64_t hill = doc.objects[0].id;
+        std::tie(left, right) = split(doc, history, hill, geom::Dir::u, 0.75);
+        std::tie(left_low, left_high) = split(doc, history, left, geom::Dir::v, 0.5);
+    }
+    const geom::Surface& surface(std::uint64_t id) const {
+        return std::get<SurfaceObject>(doc.find(id)->shape).surface;
+    }
+};
 
 } // namespace isoparm::doc::testing

@@ -1,44 +1,20 @@
 // Subpatches sharing the original domain: lookup by parameter, borders, continuity kept
-// by point and weight edits (C0, C1), undo, and the scene round trip.
+// by point and weight edits (C0, C1), undo (the scene round trip: tests/scene/kinds_io_test.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "core/doc/commands.hpp"
 #include "core/doc/patches.hpp"
-#include "core/scene/scene_io.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
+#include "tests/doc/doc_fixtures.hpp"
 
 namespace isoparm::doc {
 namespace {
 
 using geom::Dir;
-
-// Splits through the history; the pieces' ids.
-std::pair<std::uint64_t, std::uint64_t> split(Document& doc, History& h, std::uint64_t id, Dir dir,
-                                              double t) {
-    auto cmd = split_object(id, dir, t);
-    const Command* raw = cmd.get();
-    EXPECT_TRUE(h.execute(doc, std::move(cmd)));
-    return split_piece_ids(*raw);
-}
-
-// The paper's example on the default hill: split at u = 0.75, then the left part at v = 0.5.
-struct PaperSplit {
-    Document doc = default_document();
-    History history;
-    std::uint64_t left = 0, right = 0, left_low = 0, left_high = 0;
-
-    PaperSplit() {
-        const std::uint64_t hill = doc.objects[0].id;
-        std::tie(left, right) = split(doc, history, hill, Dir::u, 0.75);
-        std::tie(left_low, left_high) = split(doc, history, left, Dir::v, 0.5);
-    }
-    const geom::Surface& surface(std::uint64_t id) const {
-        return std::get<SurfaceObject>(doc.find(id)->shape).surface;
-    }
-};
+using namespace testing;
 
 TEST(Patches, SplitPiecesShareTheOriginalDomain) {
     PaperSplit p;
@@ -271,48 +247,6 @@ TEST(Patches, RedoReplaysTheContinuityTheEditWasMadeWith) {
     ASSERT_TRUE(h.redo(doc));
     EXPECT_TRUE(same_geometry(doc, split_twice));
     (void)right;
-}
-
-TEST(Patches, SceneKeepsGroupsAndContinuity) {
-    PaperSplit p;
-    p.doc.continuity = Continuity::c1;
-    auto text = scene::scene_to_text(p.doc);
-    auto back = scene::scene_from_text(text);
-    ASSERT_TRUE(back) << back.error().message;
-    EXPECT_TRUE(same_document(*back, p.doc));
-
-    // Overlapping patches load (a scene must always load back); the first one in the
-    // objects list holds the overlap.
-    Document overlapping = p.doc;
-    overlapping.objects.push_back(overlapping.objects[0]);
-    overlapping.objects.back().id = overlapping.allocate_id();
-    overlapping.objects.back().name = "copy";
-    auto loaded = scene::scene_from_text(scene::scene_to_text(overlapping));
-    ASSERT_TRUE(loaded) << loaded.error().message;
-    EXPECT_EQ(patch_at(*loaded, loaded->objects[0].patch_group, {0.1, 0.1}), loaded->objects[0].id);
-
-    // A curve cannot be a subpatch.
-    Document curve = p.doc;
-    Object c;
-    c.id = curve.allocate_id();
-    c.name = "profile";
-    c.patch_group = curve.objects[0].patch_group;
-    geom::Curve line;
-    line.type = geom::SplineType::bspline;
-    line.degree = 1;
-    line.knots = {0, 0, 1, 1};
-    line.points = {{0, 0, 0}, {1, 0, 0}};
-    line.weights = {1, 1};
-    c.shape = CurveObject{line, CurvePlane::xy};
-    curve.objects.push_back(c);
-    auto r = scene::scene_from_text(scene::scene_to_text(curve));
-    ASSERT_FALSE(r);
-    EXPECT_EQ(r.error().path, "/objects/3/patch_group");
-
-    auto unknown = scene::scene_from_text(
-        R"({"format": "isoparm-scene", "version": 1, "objects": [], "continuity": "C2"})");
-    ASSERT_FALSE(unknown);
-    EXPECT_EQ(unknown.error().path, "/continuity");
 }
 
 // How many of the group's borders pair up point for point (and allow C1).

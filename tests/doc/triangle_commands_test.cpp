@@ -6,8 +6,6 @@
 
 #include "core/doc/commands_triangle.hpp"
 #include "core/geom/triangle.hpp"
-#include "core/scene/export_document.hpp"
-#include "core/scene/scene_io.hpp"
 #include "tests/doc/doc_fixtures.hpp"
 
 namespace isoparm::doc {
@@ -149,57 +147,6 @@ TEST(TriangleObject, SplitRefusesAPointNotStrictlyInsideAndAnotherKind) {
     expect_refused(doc, split_triangle(tri_id, {NAN, 0.5, 0.5}), geom::ErrorCode::schema,
                    "/param/0");
     expect_refused(doc, split_triangle(hill_id, {0.2, 0.3, 0.5}), geom::ErrorCode::schema, "/id");
-}
-
-TEST(TriangleObject, SceneRoundTripKeepsTheTriangleTheSelectionAndTheIndicator) {
-    Document doc = sample_document_with_triangle();
-    doc.view.selection = Selection{tri_id, 0, 2};
-    doc.view.barycentric = {0.125, 0.625, 0.25};
-    auto back = scene::scene_from_text(scene::scene_to_text(doc));
-    ASSERT_TRUE(back.ok()) << back.error().message << " at " << back.error().path;
-    EXPECT_TRUE(same_document(doc, *back));
-    // A scene without a triangle does not write the triangle indicator.
-    EXPECT_EQ(scene::scene_to_json(sample_document()).count("barycentric"), 0u);
-}
-
-TEST(TriangleObject, SceneRefusalsNameTheValue) {
-    nlohmann::json j = scene::scene_to_json(sample_document_with_triangle());
-    nlohmann::json bad = j;
-    bad["selection"] = {{"object", tri_id}, {"point", {2, 2}}};
-    auto r = scene::scene_from_json(bad);
-    ASSERT_FALSE(r.ok());
-    EXPECT_EQ(r.error().path, "/selection/point/1");
-    bad = j;
-    bad["barycentric"] = {0.5, 0.5, 0.25};
-    r = scene::scene_from_json(bad);
-    ASSERT_FALSE(r.ok());
-    EXPECT_EQ(r.error().path, "/barycentric");
-    bad = j;
-    bad["objects"][5]["triangle"]["points"].erase(0);
-    r = scene::scene_from_json(bad);
-    ASSERT_FALSE(r.ok());
-    EXPECT_EQ(r.error().path, "/objects/5/triangle/points");
-}
-
-TEST(TriangleObject, MeshExportTessellatesTheTriangleAndExactFormatsSkipIt) {
-    const Document doc = sample_document_with_triangle();
-    const std::vector<const Object*> objects{doc.find(tri_id)};
-    scene::ExportOptions mesh;
-    mesh.format = scene::ExportFormat::obj_mesh;
-    mesh.samples = 5;
-    auto r = scene::export_document(objects, mesh);
-    ASSERT_TRUE(r.ok()) << r.error().message;
-    const std::string text(r->bytes.begin(), r->bytes.end());
-    int faces = 0;
-    for (std::size_t at = text.find("\nf "); at != std::string::npos;
-         at = text.find("\nf ", at + 1))
-        ++faces;
-    EXPECT_EQ(faces, 16); // (samples - 1)^2
-    scene::ExportOptions iges;
-    iges.format = scene::ExportFormat::iges;
-    auto refused = scene::export_document(objects, iges);
-    ASSERT_FALSE(refused.ok());
-    EXPECT_NE(refused.error().message.find("triangular Bezier patch"), std::string::npos);
 }
 
 } // namespace

@@ -100,6 +100,42 @@ run(curve_as_mesh 2 "a curve has no mesh"
 expect_missing(${OUT_DIR}/p.stl)
 run(samples 2 "samples 1 must be 2..1000" ${SCENES}/fig3c-weight-0.3.json -o ${OUT_DIR}/s.stl --samples 1)
 expect_missing(${OUT_DIR}/s.stl)
+# A number too large for an int is still that rule, not a conversion failure (it was exit 104).
+run(samples_huge 2 "samples 99999999999 must be 2..1000" ${SCENES}/fig3c-weight-0.3.json
+    -o ${OUT_DIR}/s.stl --samples 99999999999)
+expect_missing(${OUT_DIR}/s.stl)
+run(samples_not_a_number 2 "--samples" ${SCENES}/fig3c-weight-0.3.json -o ${OUT_DIR}/s.stl
+    --samples 1e999)
+expect_missing(${OUT_DIR}/s.stl)
+# The samples' budget, checked before anything is tessellated: 100 surfaces at 1000 x 1000
+# samples are 100 million vertices (about 36 GB as PLY; 25 surfaces took 4.3 GB), refused
+# naming the size, the budget and the samples that fit; at 60 x 60 they are written.
+set(many_obj "")
+foreach(j RANGE 0 8)
+  foreach(i RANGE 0 8)
+    string(APPEND many_obj "v ${i} ${j} 0\n")
+  endforeach()
+endforeach()
+string(APPEND many_obj "cstype bspline\ndeg 1 1\n")
+foreach(k RANGE 1 100)
+  string(APPEND many_obj "surf 0 8 0 8")
+  foreach(v RANGE 1 81)
+    string(APPEND many_obj " ${v}")
+  endforeach()
+  string(APPEND many_obj "\nparm u 0 0 1 2 3 4 5 6 7 8 8\nparm v 0 0 1 2 3 4 5 6 7 8 8\nend\n")
+endforeach()
+file(WRITE ${OUT_DIR}/many.obj "${many_obj}")
+execute_process(COMMAND ${ISOPARM} import ${OUT_DIR}/many.obj -o ${OUT_DIR}/many.json
+                RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "many.obj did not import: ${rc}\n${err}")
+endif()
+run(samples_budget 2 "100,000,000 vertices (1000 x 1000 samples of each surface) would take about"
+    ${OUT_DIR}/many.json -o ${OUT_DIR}/many.ply --samples 1000)
+run(samples_budget_said 2 "samples per direction fit" ${OUT_DIR}/many.json -o ${OUT_DIR}/many.ply
+    --samples 1000)
+expect_missing(${OUT_DIR}/many.ply)
+run(samples_within_budget 0 "" ${OUT_DIR}/many.json -o ${OUT_DIR}/many.ply --samples 60)
 run(missing_scene 2 "no-such.json" ${OUT_DIR}/no-such.json -o ${OUT_DIR}/n.stp)
 expect_missing(${OUT_DIR}/n.stp)
 

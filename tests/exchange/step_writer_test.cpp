@@ -13,7 +13,6 @@
 #include "core/exchange/step_writer.hpp"
 #include "core/geom/construct.hpp"
 #include "core/geom/primitives.hpp"
-#include "core/protocol/protocol.hpp"
 #include "tests/support/random_geometry.hpp"
 
 namespace {
@@ -224,25 +223,6 @@ TEST(StepWriter, NonPositiveWeightsAreRefusedNamingThePointAndTheMeshFormats) {
     const auto two = exchange::step_text({bilinear(), s}, "w");
     ASSERT_FALSE(two);
     EXPECT_EQ(two.error().path, "/objects/1/weights/1/0");
-}
-
-TEST(StepWriter, TheExportOpAnswersStep) {
-    const nlohmann::json surface = {{"type", "bspline"},
-                                    {"degree", {1, 1}},
-                                    {"knots", {{0, 0, 1, 1}, {0, 0, 1, 1}}},
-                                    {"points", {{{0, 0, 0}, {0, 1, 0}}, {{1, 0, 0}, {1, 1, 1}}}}};
-    const auto a =
-        protocol::handle_request({{"op", "export"}, {"surface", surface}, {"format", "step"}});
-    ASSERT_TRUE(a["ok"].get<bool>()) << a.dump();
-    expect_well_formed(a["text"].get<std::string>());
-    nlohmann::json bad = surface;
-    bad["type"] = "nurbs";
-    bad["weights"] = {{1, 1}, {-2, 1}};
-    const auto b =
-        protocol::handle_request({{"op", "export"}, {"surface", bad}, {"format", "step"}});
-    ASSERT_FALSE(b["ok"].get<bool>());
-    EXPECT_EQ(b["error"]["code"], "weights") << b.dump();
-    EXPECT_EQ(b["error"]["path"], "/surface/weights/1/0");
 }
 
 } // namespace

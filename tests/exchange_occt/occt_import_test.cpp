@@ -22,10 +22,11 @@
 #include <gp_Pln.hxx>
 #include <sstream>
 
+#include "core/exchange/step_writer.hpp"
 #include "core/exchange_occt/occt_reader.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
-#include "tests/exchange/import_round_trip.hpp"
+#include "tests/scene/import_round_trip.hpp"
 #include "tests/support/temp_dir.hpp"
 
 using namespace isoparm;
@@ -152,6 +153,58 @@ TEST(OcctImport, TextThatIsNotAFileOfTheFormatIsAParseError) {
                       std::string::npos)
                 << r.error().message;
         }
+}
+
+// A STEP B-spline surface that is wrong is skipped with what is wrong, never imported in part
+// or changed: OCCT refuses some (a 2-D control point, degree 30, a weight of -1: its transfer
+// says only "Surface has not been created") and mends others on its own (knots that decrease
+// are merged into the one before, which imported a different surface with no word).
+TEST(OcctImport, AWrongStepSurfaceIsSkippedWithWhatIsWrong) {
+    geom::Surface s;
+    s.type = geom::SplineType::nurbs;
+    s.degree_u = 2;
+    s.degree_v = 1;
+    s.n_u = 5;
+    s.n_v = 2;
+    s.knots_u = {0, 0, 0, 0.25, 0.5, 1, 1, 1};
+    s.knots_v = {0, 0, 1, 1};
+    for (int i = 0; i < 5; ++i)
+        for (int j = 0; j < 2; ++j) {
+            s.points.push_back({i, j, 0.25 * i * j});
+            s.weights.push_back(1);
+        }
+    const std::string text = *exchange::step_text({s}, "wrong");
+    ASSERT_TRUE(exchange_occt::read(text, exchange::CadFormat::step));
+    auto replaced = [&](const std::string& from, const std::string& to) {
+        std::string t = text;
+        const auto at = t.find(from);
+        EXPECT_NE(at, std::string::npos) << from;
+        if (at != std::string::npos) t.replace(at, from.size(), to);
+        return t;
+    };
+    const struct {
+        std::string text, says;
+    } cases[] = {
+        {replaced("(0.0,0.25,0.5,1.0)", "(0.0,0.3,0.25,1.0)"),
+         "its u knots do not increase (0.3 then 0.25)"},
+        {replaced("B_SPLINE_SURFACE(2,1,", "B_SPLINE_SURFACE(30,1,"),
+         "its u degree 30 is above 25"},
+        {replaced("CARTESIAN_POINT('',(1.0,1.0,0.25))", "CARTESIAN_POINT('',(1.0,1.0))"),
+         "has 2 coordinates, not 3"},
+    };
+    for (const auto& c : cases) {
+        const auto r = exchange_occt::read(c.text, exchange::CadFormat::step);
+        ASSERT_TRUE(r) << c.says << ": " << r.error().message;
+        int surfaces = 0;
+        for (const exchange::ImportedShape& shape : r->objects)
+            surfaces += std::holds_alternative<geom::Surface>(shape.shape);
+        EXPECT_EQ(surfaces, 0) << c.says;
+        bool said = false;
+        for (const exchange::SkippedEntity& k : r->skipped)
+            said = said ||
+                   (k.entity.rfind("STEP #", 0) == 0 && k.reason.find(c.says) != std::string::npos);
+        EXPECT_TRUE(said) << "no skipped entry says '" << c.says << "'";
+    }
 }
 
 } // namespace

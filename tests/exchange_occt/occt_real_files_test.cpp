@@ -25,6 +25,7 @@
 #include <filesystem>
 #include <fstream>
 #include <glm/geometric.hpp>
+#include <limits>
 #include <sstream>
 
 #include "core/exchange_occt/occt_convert.hpp"
@@ -71,12 +72,17 @@ TopoDS_Shape read_shape(const std::filesystem::path& file) {
     return reader->OneShape();
 }
 
-// t moved by whole periods into [lo, hi] (as far as rounding allows).
+// t moved by whole periods into [lo, hi], clamped where only rounding keeps it out (a box end
+// and the imported domain's end differ in the last bits); NaN where it is really outside, so
+// the face counts as failed instead of being evaluated outside its knots (find_span's
+// precondition).
 double into(double t, double lo, double hi, double period) {
-    if (period <= 0) return t;
-    const double tol = 1e-9 * std::max(1.0, period);
-    while (t < lo - tol) t += period;
-    while (t > hi + tol) t -= period;
+    const double tol = 1e-9 * std::max({1.0, period, hi - lo});
+    if (period > 0) {
+        while (t < lo - tol) t += period;
+        while (t > hi + tol) t -= period;
+    }
+    if (t < lo - tol || t > hi + tol) return std::numeric_limits<double>::quiet_NaN();
     return std::clamp(t, lo, hi);
 }
 
@@ -181,7 +187,11 @@ FaceReport check_faces(const std::filesystem::path& file) {
                 if (same_parameters) {
                     const double u = into(u0 + (u1 - u0) * i / n, du.lo, du.hi, pu);
                     const double v = into(v0 + (v1 - v0) * j / n, dv.lo, dv.hi, pv);
-                    if (const auto q = geom::surface_point(s, u, v))
+                    if (std::isnan(u) || std::isnan(v)) {
+                        if (r.first_failure.empty())
+                            r.first_failure = "face " + std::to_string(index) +
+                                              ": OCCT's box point is outside the imported domain";
+                    } else if (const auto q = geom::surface_point(s, u, v))
                         d = glm::distance(*q, glm::dvec3(p.X(), p.Y(), p.Z()));
                 } else {
                     project.Perform(p);

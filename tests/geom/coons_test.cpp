@@ -83,4 +83,24 @@ TEST(Coons, RationalBoundariesNeedEqualWeights) {
     EXPECT_EQ(s.error().path, "/curves/1");
 }
 
+// The size caps are checked before any of the work: boundaries of 1,501 points make a result of
+// at least 1,501 x 1,501, refused at once as `limit` (it took 9.8 s to be refused after the
+// work), even where a corner is also open (which was found first, then the work done).
+TEST(Coons, ACapThatTheBoundariesPassIsRefusedBeforeTheWork) {
+    std::vector<glm::dvec3> row, column;
+    for (int k = 0; k <= 1500; ++k) {
+        row.push_back({k / 750.0, 0, 0});
+        column.push_back({0, k / 750.0, 0});
+    }
+    std::vector<glm::dvec3> top = row, right = column;
+    for (auto& p : top) p.y = 2;
+    for (auto& p : right) p.x = 2;
+    right.back().z = 1; // the corner S(1, 1) is open
+    auto s = coons(
+        {bspline(1500, row), bspline(1500, top), bspline(1500, column), bspline(1500, right)});
+    ASSERT_FALSE(s.ok());
+    EXPECT_EQ(s.error().code, ErrorCode::limit) << s.error().message;
+    EXPECT_NE(s.error().message.find("1501 x 1501"), std::string::npos) << s.error().message;
+}
+
 } // namespace

@@ -86,4 +86,24 @@ TEST(Gordon, RefusesCurvesThatDoNotMeet) {
     EXPECT_EQ(gordon({u_curves[0]}, v_curves).error().path, "/u_curves");
 }
 
+// The size caps are checked before any of the work: curves of 1,501 points make a result of
+// at least 1,501 x 1,501, refused at once as `limit` (it took 17.8 s to be refused after the
+// crossings were searched and the surfaces built), even where the curves do not meet.
+TEST(Gordon, ACapThatTheCurvesPassIsRefusedBeforeTheWork) {
+    auto line = [](glm::dvec3 a, glm::dvec3 b) {
+        Curve c;
+        c.degree = 1500;
+        for (int k = 0; k <= 1500; ++k) c.points.push_back(a + (b - a) * (k / 1500.0));
+        c.weights.assign(c.points.size(), 1.0);
+        c.knots = clamped_uniform_knots(c.count(), c.degree, 0, 1);
+        return c;
+    };
+    const std::vector<Curve> u_curves = {line({0, 0, 0}, {2, 0, 0}), line({0, 2, 0}, {2, 2, 0})};
+    const std::vector<Curve> v_curves = {line({0, 0, 0}, {0, 2, 0}), line({2, 0, 1}, {2, 2, 1})};
+    auto g = gordon(u_curves, v_curves);
+    ASSERT_FALSE(g.ok());
+    EXPECT_EQ(g.error().code, ErrorCode::limit) << g.error().message;
+    EXPECT_NE(g.error().message.find("1501 x 1501"), std::string::npos) << g.error().message;
+}
+
 } // namespace

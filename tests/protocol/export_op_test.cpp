@@ -115,4 +115,27 @@ TEST(ExportOp, MeshFormatsHoldTheGrid) {
     EXPECT_EQ(curve_mesh["error"]["path"], "/format");
 }
 
+// STEP through the op: the writer's file (tests/exchange/step_writer_test.cpp checks its
+// records), and the positive-weight rule at the request's path.
+TEST(ExportOp, StepAnswersAFileAndRefusesANonPositiveWeight) {
+    const nlohmann::json surface = {{"type", "bspline"},
+                                    {"degree", {1, 1}},
+                                    {"knots", {{0, 0, 1, 1}, {0, 0, 1, 1}}},
+                                    {"points", {{{0, 0, 0}, {0, 1, 0}}, {{1, 0, 0}, {1, 1, 1}}}}};
+    const auto a =
+        protocol::handle_request({{"op", "export"}, {"surface", surface}, {"format", "step"}});
+    ASSERT_TRUE(a["ok"].get<bool>()) << a.dump();
+    const std::string text = a["text"].get<std::string>();
+    EXPECT_EQ(text.rfind("ISO-10303-21;\nHEADER;\n", 0), 0u);
+    EXPECT_EQ(text.substr(text.size() - 26), "ENDSEC;\nEND-ISO-10303-21;\n");
+    nlohmann::json bad = surface;
+    bad["type"] = "nurbs";
+    bad["weights"] = {{1, 1}, {-2, 1}};
+    const auto b =
+        protocol::handle_request({{"op", "export"}, {"surface", bad}, {"format", "step"}});
+    ASSERT_FALSE(b["ok"].get<bool>());
+    EXPECT_EQ(b["error"]["code"], "weights") << b.dump();
+    EXPECT_EQ(b["error"]["path"], "/surface/weights/1/0");
+}
+
 } // namespace

@@ -405,7 +405,7 @@ std::vector<Case> cases() {
         with_curve(
             "insert_knot", R"("knot": 0.5)",
             R"({"degree": 1, "knots": [0, 0, 1, 1], "points": [[0, 0], [1, 0]], "weights": [1, -1]})"),
-        "weights", nullptr);
+        "weights", "/curve/weights");
     // ---- elevate_degree
     add("elevate_times_zero", with_curve("elevate_degree", R"("times": 0)"), "schema", "/times");
     add("elevate_times_negative",

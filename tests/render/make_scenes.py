@@ -57,10 +57,12 @@ def nurbs_surface(points, weights=None, surface_type="nurbs"):
     return s
 
 
-def surface_object(oid, name, surface, patch_group=None):
+def surface_object(oid, name, surface, patch_group=None, construction=None):
     o = {"id": oid, "name": name, "kind": "surface", "surface": surface}
     if patch_group is not None:
         o["patch_group"] = patch_group
+    if construction is not None:
+        o["construction"] = construction
     return o
 
 
@@ -73,7 +75,9 @@ def scene(objects, display, selection=None, indicator=(0.5, 0.5)):
                     "point_ids": False, "knot_curves": False, "indicator_point": True,
                     "deboor": False, "density": 32}
     full_display.update(display)
-    return {"format": "isoparm-scene", "version": 1, "objects": objects,
+    # Version 2 where an object keeps its construction (docs/scene-format.md).
+    version = 2 if any("construction" in o for o in objects) else 1
+    return {"format": "isoparm-scene", "version": version, "objects": objects,
             "selection": selection, "indicator": list(indicator), "display": full_display}
 
 
@@ -186,18 +190,23 @@ def figure_scenes(isoparm):
     lower, upper = circle(-1.0, True), circle(1.0, False)
     ruled = geom(isoparm, {"op": "ruled", "curves": [lower, upper]})["surface"]
     scenes["fig7-hyperboloid"] = scene(
-        [surface_object(1, "hyperboloid", ruled), curve_object(2, "lower circle", lower, "free3d"),
+        [surface_object(1, "hyperboloid", ruled,
+                        construction={"operation": "ruled", "inputs": [2, 3]}),
+         curve_object(2, "lower circle", lower, "free3d"),
          curve_object(3, "upper circle", upper, "free3d")],
         {"control_points": False}, selection={"object": 1})
 
-    # Figure 8: an 11-point degree-3 profile in the xz-plane, revolved about z.
+    # Figure 8: an 11-point degree-3 profile in the xz-plane, revolved about z. The vase keeps
+    # its recipe: `move_curve_point` on the profile moves the vase's control points with it.
     profile_xz = [(0.0, 0.0), (0.9, 0.0), (1.1, 0.25), (0.7, 0.6), (0.4, 1.0), (0.35, 1.4),
                   (0.5, 1.8), (0.9, 2.1), (1.0, 2.5), (0.8, 2.8), (0.75, 3.0)]
     profile = {"type": "bspline", "degree": 3, "knots": KNOTS_11_3,
                "points": [[x, 0.0, z] for (x, z) in profile_xz]}
     revolved = geom(isoparm, {"op": "revolve", "curve": profile})["surface"]
     scenes["fig8-revolution"] = scene(
-        [surface_object(1, "vase", revolved), curve_object(2, "profile", profile, "xz")],
+        [surface_object(1, "vase", revolved,
+                        construction={"operation": "revolve", "inputs": [2], "angle": 360.0}),
+         curve_object(2, "profile", profile, "xz")],
         {"control_points": False, "control_net": False}, selection={"object": 2})
 
     # Figure 9: four degree-3 NURBS sections (y = -1.5 .. 1.5, different knots and counts, so
@@ -223,7 +232,10 @@ def figure_scenes(isoparm):
          "weights": [1.0, 1.0, 1.0, 1.0, 1.0]},
     ]
     skinned = geom(isoparm, {"op": "skin", "curves": sections, "degree": 3})["surface"]
-    objects = [surface_object(1, "skin", skinned)]
+    # The recipe keeps the skin linked to its sections: moving a section rebuilds it.
+    objects = [surface_object(1, "skin", skinned,
+                              construction={"operation": "skin", "inputs": [2, 3, 4, 5],
+                                            "degree": 3, "parametrization": "chord"})]
     objects += [curve_object(2 + k, f"section {k + 1}", c, "free3d")
                 for k, c in enumerate(sections)]
     scenes["fig9-skinned"] = scene(objects, {"control_points": False, "control_net": False},

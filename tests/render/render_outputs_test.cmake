@@ -130,4 +130,23 @@ foreach(kib ${limits})
   endif()
 endforeach()
 
+# 7. -o /dev/stdout is the stream as the shell opened it: `>> log` appends to log (it used to
+# replace log with the picture).
+file(WRITE ${dir}/log "the first line\n")
+execute_process(COMMAND sh -c "exec \"$0\" render \"$1\" -o /dev/stdout --view 3d --size 64x48 >> \"$2\""
+                        ${ISOPARM} ${scene} ${dir}/log
+                RESULT_VARIABLE rc ERROR_VARIABLE err TIMEOUT 60)
+file(READ ${dir}/log log HEX)
+if(NOT rc EQUAL 0 OR NOT log MATCHES "^746865206669727374206c696e650a89504e47")
+  message(FATAL_ERROR "render -o /dev/stdout >> log did not append the PNG to log (exit ${rc}, ${err})")
+endif()
+expect_no_temporaries(${dir})
+
+# 8. A --deboor-step too large for an int is checked against the scene like any other.
+expect_refused("--deboor-step 99999999999" ${ISOPARM} render ${scene} -o ${dir}/d.png ${small}
+               --deboor-step 99999999999)
+if(NOT last_error MATCHES "--deboor-step 99999999999 must be 0\\.\\." OR EXISTS ${dir}/d.png)
+  message(FATAL_ERROR "--deboor-step 99999999999: ${last_error}")
+endif()
+
 expect_scene_intact("the end")

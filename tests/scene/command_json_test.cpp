@@ -20,6 +20,16 @@ using nlohmann::json;
 namespace {
 
 // One spec of every command kind, each valid on sample_document_with_triangle() (in this order).
+// The sample curve revolved by 90 degrees, its u-knot 0.75 inserted after.
+Recipe revolve_profile() {
+    Recipe r;
+    r.kind = Construction::revolve;
+    r.curves = {curve_id};
+    r.angle = 90;
+    r.refinements.push_back({RecipeRefinement::Kind::insert_knot, Dir::u, 0.75, 1});
+    return r;
+}
+
 std::vector<CommandSpec> one_of_each() {
     Object added;
     added.name = "added";
@@ -58,6 +68,18 @@ std::vector<CommandSpec> one_of_each() {
         AddObjectsSpec{{added, added}, "Import two"},
         MultiresEditSpec{curve_id, 1, std::nullopt, 2, -1, glm::dvec3(1, 1, 0), std::nullopt},
         SplitTriangleSpec{tri_id, {0.25, 0.25, 0.5}},
+        ConstructSpec{revolve_profile(), "vase"},
+        EditConstructionSpec{grid_id, revolve_profile()},
+        DetachSpec{grid_id},
+        MovePointsSpec{grid_id, {{0, 0}, {1, 2}}, {{0, 0, 1}, {0.5, 0.5, -1}}, "Raise two"},
+        TransformPointsSpec{hill_id,
+                            {{2, 0}, {2, 1}, {2, 2}},
+                            scaling({2, 2, 2}),
+                            Pivot::centroid,
+                            glm::dvec3(0),
+                            ""},
+        TransformPointsSpec{
+            curve_id, {{1, -1}, {2, -1}}, mirror(0), Pivot::point, glm::dvec3(0.5, 0, 0), "Mirror"},
     };
 }
 

@@ -98,11 +98,17 @@ void monkey(Session& s, std::mt19937& rng, int actions) {
                 s.recorder.observe(s.doc);
             }
             break;
-        case 10:
+        case 10: {
             s.doc.view.display.knot_curves = !s.doc.view.display.knot_curves;
+            // An object's own toggle (C with it selected), recorded for that object alone.
+            ObjectDisplay& own =
+                s.doc.view.object_display.try_emplace(id, defaults_of(s.doc.view.display))
+                    .first->second;
+            own.control_points = !own.control_points;
             s.doc.continuity = static_cast<Continuity>(rng() % 3);
             s.recorder.observe(s.doc, std::pair{uniform(rng, -180, 180), uniform(rng, -80, 80)});
             break;
+        }
         case 11:
             if (j < 0)
                 s.run(insert_curve_point(id, i, {uniform(rng, -1, 1), uniform(rng, -1, 1), 0}));

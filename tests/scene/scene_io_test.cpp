@@ -213,10 +213,10 @@ TEST(SceneRead, TopLevelErrors) {
 
 TEST(SceneRead, NewerVersionIsRefusedBeforeItsNewMembers) {
     auto doc = scene_from_text(
-        R"({"format": "isoparm-scene", "version": 2, "objects": [], "patches": []})");
+        R"({"format": "isoparm-scene", "version": 3, "objects": [], "patches": []})");
     ASSERT_FALSE(doc.ok());
     EXPECT_EQ(doc.error().path, "/version");
-    EXPECT_NE(doc.error().message.find("version 2"), std::string::npos) << doc.error().message;
+    EXPECT_NE(doc.error().message.find("version 3"), std::string::npos) << doc.error().message;
 }
 
 TEST(SceneRead, ObjectErrors) {
@@ -524,3 +524,70 @@ TEST(SceneFormatDoc, ExamplesLoad) {
 }
 
 } // namespace
+
+TEST(SceneObjectDisplay, AnObjectsOwnTogglesRoundTripInVersionTwo) {
+    Document doc = sample_document();
+    // A scene without own displays stays version 1, as older builds wrote it.
+    EXPECT_NE(scene_to_text(doc).find("\"version\": 1"), std::string::npos);
+    doc.view.display.control_points = true;
+    doc.view.object_display[doc.objects[0].id] = ObjectDisplay{false, true, true, false};
+    const std::string text = scene_to_text(doc);
+    EXPECT_NE(text.find("\"version\": 2"), std::string::npos);
+    const Document back = round_trip(doc);
+    EXPECT_TRUE(same_document(doc, back));
+    EXPECT_FALSE(display_of(back.view, doc.objects[0].id).control_points);
+    EXPECT_TRUE(display_of(back.view, doc.objects[0].id).point_ids);
+    // The others take the scene's defaults.
+    EXPECT_TRUE(display_of(back.view, doc.objects[1].id).control_points);
+}
+
+TEST(SceneObjectDisplay, VersionOneOrBadMembersAreRefusedWithTheirPath) {
+    const std::string object = R"({"name": "s", "kind": "surface", "display": {"point_ids": true},
+        "surface": {"type": "nurbs", "degree": [1, 1], "knots": [[0, 0, 1, 1], [0, 0, 1, 1]],
+        "points": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]],
+        "weights": [[1, 1], [1, 2]]}})";
+    auto scene = [&](int version, const std::string& o) {
+        return R"({"format": "isoparm-scene", "version": )" + std::to_string(version) +
+               R"(, "objects": [)" + o + "]}";
+    };
+    const auto v1 = scene_from_text(scene(1, object));
+    ASSERT_FALSE(v1);
+    EXPECT_EQ(v1.error().path, "/objects/0/display");
+    const auto v2 = scene_from_text(scene(2, object));
+    ASSERT_TRUE(v2) << v2.error().message;
+    EXPECT_TRUE(display_of(v2->view, v2->objects[0].id).point_ids);
+    std::string bad = object;
+    bad.replace(bad.find("point_ids"), 9, "point_idz");
+    const auto wrong = scene_from_text(scene(2, bad));
+    ASSERT_FALSE(wrong);
+    EXPECT_EQ(wrong.error().path.rfind("/objects/0/display", 0), 0u) << wrong.error().path;
+    const auto newer = scene_from_text(scene(3, object));
+    ASSERT_FALSE(newer);
+    EXPECT_EQ(newer.error().path, "/version");
+}
+
+TEST(SceneObjectDisplay, OneObjectHoldsItsRecipeAndItsTogglesInVersionTwo) {
+    // fig8's vase is constructed (a revolve of the profile): both version 2 members together.
+    auto loaded =
+        load_scene(std::string(ISOPARM_SOURCE_DIR) + "/assets/scenes/fig8-revolution.json");
+    ASSERT_TRUE(loaded) << loaded.error().message;
+    Document doc = std::move(loaded).value();
+    const Object& vase = doc.objects.front();
+    ASSERT_TRUE(vase.construction.has_value());
+    doc.view.object_display[vase.id] = ObjectDisplay{false, false, true, true};
+    const nlohmann::json j = scene_to_json(doc);
+    EXPECT_EQ(j.at("version"), 2);
+    const nlohmann::json& oj = j.at("objects").at(0);
+    EXPECT_TRUE(oj.contains("construction"));
+    EXPECT_TRUE(oj.contains("display"));
+    auto back = scene_from_text(scene_to_text(doc));
+    ASSERT_TRUE(back) << back.error().path << ": " << back.error().message;
+    const Object& again = back->objects.front();
+    ASSERT_TRUE(again.construction.has_value());
+    EXPECT_TRUE(same_recipe(*again.construction, *vase.construction));
+    EXPECT_FALSE(display_of(back->view, again.id).control_points);
+    EXPECT_TRUE(display_of(back->view, again.id).point_ids);
+    // Without its own toggles the vase still needs version 2 for its recipe.
+    doc.view.object_display.clear();
+    EXPECT_EQ(scene_to_json(doc).at("version"), 2);
+}

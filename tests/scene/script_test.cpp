@@ -173,4 +173,23 @@ TEST(Script, ARefusedStepStopsTheRunWithTheStepsPathAndADryRunCallsNoHook) {
     EXPECT_EQ(nothing.stopped->path, "/steps/0");
 }
 
+// The trial run has a time budget: the step it reaches after that is a `limit` naming the step
+// and the seconds (a budget of 0 s stops at the first step; the real one is 120 s).
+TEST(Script, TheTrialRunStopsAtItsTimeBudget) {
+    const scene::Script s = parse(json::parse(R"([
+        {"screenshot": "a.png"},
+        {"screenshot": "b.png"}
+    ])"));
+    scene::ScriptState trial(s.start);
+    const scene::ScriptResult dry = scene::run_script(s, trial, {}, /*dry_run=*/true, 0.0);
+    ASSERT_TRUE(dry.stopped.has_value());
+    EXPECT_EQ(dry.stopped->code, geom::ErrorCode::limit);
+    EXPECT_EQ(dry.stopped->path, "/steps/0");
+    EXPECT_NE(dry.stopped->message.find("took more than 0 s to try"), std::string::npos)
+        << dry.stopped->message;
+    // With the default budget the same trial passes.
+    scene::ScriptState again(s.start);
+    EXPECT_FALSE(scene::run_script(s, again, {}, /*dry_run=*/true).stopped.has_value());
+}
+
 } // namespace

@@ -76,5 +76,49 @@ run(golden_differs 1 "screenshot differs: shot.png" "${moved}" --check ${OUT_DIR
 if(NOT EXISTS ${OUT_DIR}/golden_differs/shot.diff.png)
   message(FATAL_ERROR "golden_differs: no diff image shot.diff.png")
 endif()
-run(golden_missing 1 "shot.png: cannot read" "${shot_script}" --check ${OUT_DIR}/no-goldens)
+run(golden_missing 1 "shot.png: cannot open" "${shot_script}" --check ${OUT_DIR}/no-goldens)
+# --out and --check the same folder: refused before anything runs (the screenshots would
+# replace the golden images and then match them). Named differently, the same folder.
+run(golden_self 2 "is the --check folder" "${shot_script}" --check ${OUT_DIR}/golden_self)
+execute_process(COMMAND ${ISOPARM} script ${OUT_DIR}/golden_self.json --out ${OUT_DIR}/golden_source
+                        --check ${OUT_DIR}/./golden_source/../golden_source
+                RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "is the --check folder")
+  message(FATAL_ERROR "golden_self by another name: exit ${rc}\n${err}")
+endif()
+# A golden image that is a FIFO: named as not a regular file at once (it hung for ever).
+file(MAKE_DIRECTORY ${OUT_DIR}/fifo_goldens)
+execute_process(COMMAND mkfifo ${OUT_DIR}/fifo_goldens/shot.png)
+run(golden_fifo 1 "FIFO" "${shot_script}" --check ${OUT_DIR}/fifo_goldens)
+
+# A screenshot's name is checked byte by byte: a NUL (JSON \u0000) would have written
+# .bashrc; separators and hidden names are refused too; nothing is written.
+file(MAKE_DIRECTORY ${OUT_DIR}/names)
+file(WRITE ${OUT_DIR}/names/.bashrc "keep me\n")
+foreach(bad ".bashrc\\u0000.png" "../up.png" "sub\\\\x.png" ".hidden.png" "tab\\t.png" ".png")
+  set(text "${head}{\"screenshot\": \"${bad}\", \"size\": [64, 40]}]}")
+  file(WRITE ${OUT_DIR}/bad-name.json "${text}")
+  execute_process(COMMAND ${ISOPARM} script ${OUT_DIR}/bad-name.json --out ${OUT_DIR}/names
+                  RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if(NOT rc EQUAL 2 OR NOT err MATCHES "/steps/0/screenshot")
+    message(FATAL_ERROR "screenshot name ${bad}: exit ${rc}\n${err}")
+  endif()
+endforeach()
+file(READ ${OUT_DIR}/names/.bashrc kept)
+file(GLOB named ${OUT_DIR}/names/*)
+list(REMOVE_ITEM named ${OUT_DIR}/names/.bashrc)
+if(NOT kept STREQUAL "keep me\n" OR named)
+  message(FATAL_ERROR "a refused screenshot name wrote something: ${named}")
+endif()
+
+# The screenshots' budget, checked before anything runs: one 8192 x 8192 picture (2.9 GB to
+# render), or more pictures than the script's total.
+run(huge_shot 2 "/steps/0/size" "${head}{\"screenshot\": \"a.png\", \"size\": [8192, 8192]}]}")
+expect_nothing_written(huge_shot)
+set(many "")
+foreach(k RANGE 1 80)
+  string(APPEND many "{\"screenshot\": \"s${k}.png\", \"size\": [2048, 2048]}, ")
+endforeach()
+run(many_shots 2 "/steps/71/screenshot" "${head}${many}{\"pause\": true}]}")
+expect_nothing_written(many_shots)
 message(STATUS "isoparm script: refusals, expectations and --check behave")

@@ -108,7 +108,10 @@ class Session:
                 self.window = out[0]
                 self.update_geometry()
                 self.xdo("windowfocus", "--sync", self.window)
-                time.sleep(1)
+                time.sleep(0.2)
+                # The first frames lay the window out; input waits for a layout that holds.
+                with contextlib.suppress(Failure):
+                    self.settle(timeout=10)
                 return True
             time.sleep(0.3)
         return False
@@ -138,6 +141,32 @@ class Session:
         except (OSError, ValueError):
             return {}
 
+    def nudge(self):
+        """A frame is drawn on input only: a harmless motion inside the window asks for one
+        (one pixel there and back, so that the pointer ends where it was put: a drag or a
+        click after a wait starts on its pixel)."""
+        self.xdo("mousemove_relative", "--", 1, 0, "mousemove_relative", "--", -1, 0)
+
+    def frame(self):
+        return self.report().get("frame")
+
+    def frames_after(self, since, count=3, timeout=5):
+        """Waits until `count` frames have begun after the frame `since`, read after some input
+        was sent: the input queue gives ImGui a press, a release or a key per frame, so three
+        frames have seen a click. A slow frame (ASan, a loaded machine) makes this wait longer,
+        a fast one shorter, where a fixed pause was either too short or wasted. Never fails: a
+        later wait_for names what is missing."""
+        if since is None:
+            time.sleep(0.3)
+            return
+        deadline = time.time() + timeout
+        while time.time() < deadline and self.alive():
+            f = self.frame()
+            if f is not None and f >= since + count:
+                return
+            self.nudge()
+            time.sleep(0.03)
+
     def wait_for(self, what, predicate, timeout=20):
         """Waits until predicate(report) is true; returns the report."""
         deadline = time.time() + timeout
@@ -147,10 +176,29 @@ class Session:
             r = self.report()
             if r and predicate(r):
                 return r
-            # A frame is drawn on input only: a harmless motion inside the window asks for one.
-            self.xdo("mousemove_relative", "--", 1, 0)
-            time.sleep(0.25)
+            self.nudge()
+            time.sleep(0.1)
         raise Failure(f"timed out waiting for {what}; last report: {json.dumps(self.report())[:2000]}")
+
+    def settle(self, timeout=20):
+        """Waits until two reports at least two frames apart show the same rectangles and
+        font (a new font or mode lays the window out again over a frame or two, and a click
+        aimed at the layout before it misses); returns the later report."""
+        deadline = time.time() + timeout
+        first = None
+        while time.time() < deadline:
+            if not self.alive():
+                raise Failure("the window died while its layout settled")
+            r = self.report()
+            if r and "frame" in r:
+                layout = (r.get("rects"), r.get("font_pixels"), r.get("window"))
+                if first is None or layout != first[1]:
+                    first = (r["frame"], layout)
+                elif r["frame"] >= first[0] + 2:
+                    return r
+            self.nudge()
+            time.sleep(0.1)
+        raise Failure(f"the layout did not settle in {timeout} s")
 
     def rect(self, name, timeout=20):
         r = self.wait_for(f"'{name}' on screen", lambda r: name in r.get("rects", {}), timeout)
@@ -162,18 +210,24 @@ class Session:
     # --- input, in window pixels --------------------------------------------------------------
     def move(self, x, y):
         self.xdo("mousemove", int(self.x0 + x), int(self.y0 + y))
-        time.sleep(0.15)
+        self.frames_after(self.frame(), 2)
+
+    def after_last_press(self):
+        """Presses closer than ImGui's double-click time (0.30 s) would make a double click."""
+        time.sleep(max(0.0, getattr(self, "_pressed_at", 0) + 0.4 - time.time()))
 
     def click(self, x, y, button=1, modifiers=()):
         self.move(x, y)
+        self.after_last_press()
         for m in modifiers:
             self.xdo("keydown", m)
         self.xdo("mousedown", button)
+        self._pressed_at = time.time()
         time.sleep(0.12)
         self.xdo("mouseup", button)
         for m in modifiers:
             self.xdo("keyup", m)
-        time.sleep(0.3)
+        self.frames_after(self.frame())
 
     def click_rect(self, rect, fx=0.5, fy=0.5):
         x, y, w, h = rect
@@ -184,6 +238,7 @@ class Session:
 
     def drag(self, x, y, dx, dy, steps=8):
         self.move(x, y)
+        self.after_last_press()
         self.xdo("mousedown", 1)
         time.sleep(0.15)
         for k in range(1, steps + 1):
@@ -192,11 +247,12 @@ class Session:
             time.sleep(0.06)
         time.sleep(0.15)
         self.xdo("mouseup", 1)
-        time.sleep(0.3)
+        self._pressed_at = time.time()
+        self.frames_after(self.frame())
 
     def key(self, keys):
         self.xdo("key", "--clearmodifiers", keys)
-        time.sleep(0.3)
+        self.frames_after(self.frame())
 
     def menu(self, *path):
         """Opens the menu bar's path[0] and picks path[1] (and so on), as a person does."""
@@ -221,13 +277,18 @@ class Session:
         if not self.alive():
             return self.proc.returncode
         self.key("ctrl+q")
-        try:
-            return self.proc.wait(timeout=3)
-        except subprocess.TimeoutExpired:
-            pass
-        # Unsaved changes: the window asks first; a scenario's changes are not kept.
-        discard = self.report().get("rects", {}).get("unsaved/discard")
+        # The window closes, or (unsaved changes) asks first: a scenario's changes are not kept.
+        deadline = time.time() + 3
+        discard = None
+        while time.time() < deadline and self.alive():
+            discard = self.report().get("rects", {}).get("unsaved/discard")
+            if discard:
+                break
+            time.sleep(0.1)
         if discard:
+            # A new popup is sized over its first frames: click where it comes to rest.
+            with contextlib.suppress(Failure):
+                discard = self.settle(timeout=5)["rects"].get("unsaved/discard", discard)
             self.click_rect(discard)
         try:
             return self.proc.wait(timeout=15)

@@ -3,8 +3,9 @@
 # (xdotool, fixed seed) for a while; the window must survive, and the document must still save
 # and reload. `--xvfb` starts a private Xvfb (CTest does); without it the script uses $DISPLAY.
 #
-# The random input never asks to quit or to replace the document (no Ctrl+Q/N/O, no File menu,
-# no window close), so the scene opened at the start is the one saved at the end. The input
+# The random input never asks to quit or to replace the document (no Ctrl+Q/N/O, no File,
+# Lessons or Exercises menu, no window close), so the scene opened at the start is the one saved
+# at the end. The input
 # sequence depends on the seed only; what the window does with it depends on timing (frames
 # under a software rasteriser), so the run is reproducible in its input, not frame for frame.
 import argparse
@@ -23,16 +24,16 @@ PLAIN_KEYS = ["f", "p", "1", "2", "3", "c", "n", "i", "k", "Escape", "Escape", "
               "BackSpace", "Left", "Right", "Up", "Down", "space", "minus", "period", "0", "5",
               "9", "a", "x", "y", "z", "e", "F11", "Delete", "Home", "End"]
 CHORDS = ["ctrl+z", "ctrl+z", "ctrl+y", "ctrl+shift+z", "ctrl+a", "shift+Tab"]
-# Menu labels other than File (which holds New, Open and Quit), left to right; the menu bar's
-# x positions are found as fractions of the labels' extent, so clicks land on or near them.
+# Menu labels right of File (New, Open, Quit), Lessons and Exercises (which open another
+# document): the first of them, Edit, is found in the window's UI report.
 MENU_BAR_HEIGHT = 22
-FILE_LABEL_END = 40  # pixels: never click or move left of this inside the menu bar
 
 
 class Monkey(Session):
     def __init__(self, isoparm, scene, seconds, seed, workdir):
         # Autosave every 5 s so the run exercises it too.
-        super().__init__(isoparm, workdir, scene, ("--autosave-seconds", "5"), report=False)
+        super().__init__(isoparm, workdir, scene, ("--autosave-seconds", "5"))
+        self.menus_left = None  # window pixels: never click or move left of this in the bar
         self.rng = random.Random(seed)
         self.seconds = seconds
         self.events = 0
@@ -93,7 +94,9 @@ class Monkey(Session):
     def random_menu(self):
         # A label of the menu bar right of File, then a point of its drop-down, then Escape in
         # case the click landed on nothing (a menu left open would follow the mouse to File).
-        x = self.x0 + self.rng.randrange(FILE_LABEL_END + 6, min(self.w, 420))
+        if self.menus_left is None:
+            self.menus_left = int(self.rect("menu/Edit")[0])
+        x = self.x0 + self.rng.randrange(self.menus_left + 4, min(self.w, self.menus_left + 380))
         self.count("menu")
         return (["mousemove", x, self.y0 + MENU_BAR_HEIGHT // 2] + self.press(1) +
                 ["sleep", 0.15, "mousemove", x + self.rng.randrange(0, 160),

@@ -69,3 +69,31 @@ TEST(AnalysisView, ModesMapOneToOne) {
 }
 
 } // namespace
+
+TEST(AnalysisRange, OneOutlierDoesNotSetTheRange) {
+    // 99 values near 1 and one pole at 165: the bar spans the 99 (the washed-out view).
+    std::vector<double> v;
+    for (int k = 0; k < 99; ++k) v.push_back(0.5 + k * 0.01);
+    v.push_back(165);
+    const Range r = robust_range(v);
+    EXPECT_LT(r.hi, 2);
+    EXPECT_GE(r.hi, 1.4);
+    EXPECT_DOUBLE_EQ(r.all_hi, 165);
+    EXPECT_DOUBLE_EQ(r.lo, 0.52);
+    EXPECT_DOUBLE_EQ(r.all_lo, 0.5);
+    // Few values: the extremes themselves.
+    const Range few = robust_range({-1, 3});
+    EXPECT_DOUBLE_EQ(few.lo, -1);
+    EXPECT_DOUBLE_EQ(few.hi, 3);
+    EXPECT_DOUBLE_EQ(robust_range({}).hi, 0);
+}
+
+TEST(AnalysisRange, TheNoteSaysWhatLiesBeyondTheBar) {
+    AnalysisView v;
+    v.kind = AnalysisKind::gaussian;
+    EXPECT_EQ(analysis_range_note(v), "");
+    v.clipped = true;
+    v.data_lo = -165;
+    v.data_hi = 3.25f;
+    EXPECT_EQ(analysis_range_note(v), "all values -165 .. 3.25; the bar spans 96% of them");
+}

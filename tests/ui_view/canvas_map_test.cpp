@@ -1,4 +1,4 @@
-// Domain square and plane mappings, knot ticks, label thinning.
+// Domain square and plane mappings, knot ticks.
 #include <gtest/gtest.h>
 
 #include "ui/view/canvas_map.hpp"
@@ -88,23 +88,6 @@ TEST(HitTick, KnotHandlesAreGenerousAndIgnoreTheFixedEnds) {
     EXPECT_EQ(hit_movable_tick(px, movable, 10, r), 1u);
     EXPECT_FALSE(hit_movable_tick(px, movable, 100, r).has_value());
     EXPECT_FALSE(hit_movable_tick(px, movable, 80, r).has_value());
-}
-
-TEST(PlaceLabels, CrowdedPointsGetLabelsThatDoNotOverlap) {
-    // Four points 6 px apart, labels 40 x 14: beside each other they would all collide.
-    const std::vector<glm::dvec2> anchors{{100, 100}, {106, 100}, {112, 100}, {118, 100}};
-    const std::vector<glm::dvec2> sizes(4, glm::dvec2{40, 14});
-    const std::vector<glm::dvec2> at = place_labels(anchors, sizes, 8);
-    ASSERT_EQ(at.size(), 4u);
-    EXPECT_EQ(at[0], glm::dvec2(108, 93)); // the first goes right of its point
-    for (std::size_t a = 0; a < at.size(); ++a)
-        for (std::size_t b = a + 1; b < at.size(); ++b) {
-            const bool apart = at[a].x + 40 <= at[b].x || at[b].x + 40 <= at[a].x ||
-                               at[a].y + 14 <= at[b].y || at[b].y + 14 <= at[a].y;
-            EXPECT_TRUE(apart) << a << " " << b;
-        }
-    // A lone label never moves off the first place.
-    EXPECT_EQ(place_labels({{0, 0}}, {{10, 10}}, 5)[0], glm::dvec2(5, -5));
 }
 
 TEST(ThinLabels, KeepsEndsAndDropsCrowdedOnes) {

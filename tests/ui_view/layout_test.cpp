@@ -1,6 +1,8 @@
 // Layout maths: panels fill the window without gaps, adapt to its size, splitters move them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 
 #include "ui/view/layout.hpp"
@@ -153,4 +155,36 @@ TEST(Layout, SmallWindowKeepsTheCentreShareBeforeSideMinimums) {
     EXPECT_NEAR(l.center.w, 0.5f * (921 - 2 * in.splitter), 1e-2);
     EXPECT_GT(l.left[0].w, 0.f);
     EXPECT_GT(l.right[0].w, l.left[0].w); // the default proportions of the columns
+}
+
+TEST(Layout, PresentationColumnsMoveWithTheirSplitters) {
+    // A projector's 921 x 691 window at presentation scale: the 3D view starts at half the
+    // width; dragging the left splitter right widens the left column (it used to narrow it).
+    LayoutPrefs prefs;
+    LayoutInput in;
+    in.width = 921;
+    in.height = 691;
+    in.scale = 1.25f;
+    in.splitter = 6;
+    in.min_center_fraction = 0.5f;
+    in.presentation = true;
+    const Layout before = compute_layout(prefs, in);
+    EXPECT_GE(before.center.w, 0.5f * (921 - 12) - 1);
+    drag_column_splitter(prefs, before, in, Side::left, 80);
+    const Layout after = compute_layout(prefs, in);
+    EXPECT_NEAR(after.left[0].w, before.left[0].w + 80, 0.5);
+    EXPECT_NEAR(after.right[0].w, before.right[0].w, 0.5);
+    EXPECT_NEAR(after.center.w, before.center.w - 80, 0.5);
+    // Far right: the centre keeps its minimum (on a projector, 30% of the width).
+    drag_column_splitter(prefs, after, in, Side::left, 2000);
+    const Layout squeezed = compute_layout(prefs, in);
+    EXPECT_GE(squeezed.center.w, std::min(min_center_width * 1.25f, 0.3f * (921 - 12)) - 0.5f);
+    EXPECT_GT(squeezed.left[0].w, after.left[0].w);
+    // The normal mode's columns are not touched by presentation drags.
+    EXPECT_FLOAT_EQ(prefs.left_width, LayoutPrefs{}.left_width);
+    // Saved shares that make no sense are dropped.
+    LayoutPrefs bad;
+    bad.presentation_left = 0.7f;
+    bad.presentation_right = 0.5f;
+    EXPECT_FLOAT_EQ(sanitize(bad).presentation_left, 0);
 }

@@ -1,4 +1,5 @@
-// Picking on the curve designer's canvas: points on top win, legs by distance, where along.
+// Picking on the curve designer's canvas: the nearest point (then the one on top), legs by
+// distance, where along.
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -14,10 +15,12 @@ TEST(PolygonHits, DistanceToASegmentAndToADegenerateOne) {
     EXPECT_DOUBLE_EQ(distance_to_segment({3, 4}, {0, 0}, {0, 0}), 5.0);
 }
 
-TEST(PolygonHits, ThePointDrawnLastIsOnTop) {
+TEST(PolygonHits, TheNearestPointThenTheOneDrawnLast) {
     const std::vector<glm::dvec2> pts{{0, 0}, {4, 0}, {100, 0}};
-    EXPECT_EQ(point_under(pts, {2, 0}, 8.0), 1);  // both within reach: the later one
-    EXPECT_EQ(point_under(pts, {-8, 0}, 8.0), 0); // the radius counts
+    EXPECT_EQ(point_under(pts, {2, 0}, 8.0), 1);   // both equally near: the later one (on top)
+    EXPECT_EQ(point_under(pts, {0, 0}, 8.0), 0);   // on P0's centre under P1's disk: P0
+    EXPECT_EQ(point_under(pts, {1.9, 0}, 8.0), 0); // nearer to P0
+    EXPECT_EQ(point_under(pts, {-8, 0}, 8.0), 0);  // the radius counts
     EXPECT_FALSE(point_under(pts, {50, 0}, 8.0).has_value());
     EXPECT_FALSE(point_under({}, {0, 0}, 8.0).has_value());
 }

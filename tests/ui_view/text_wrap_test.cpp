@@ -40,3 +40,13 @@ TEST(TextWrap, ShortenedEndsInDotsOnlyWhenCut) {
     EXPECT_EQ(s, "Backgr..");
     EXPECT_LE(mono(s).x, 7 * 8);
 }
+
+TEST(TextWrap, ShortenedInTheMiddleKeepsTheDistinguishingEnd) {
+    const std::string a = shortened_middle("Surface 1.1.1", 7 * 11, mono);
+    const std::string b = shortened_middle("Surface 1.1.2", 7 * 11, mono);
+    EXPECT_NE(a, b);
+    EXPECT_LE(mono(a).x, 7 * 11);
+    EXPECT_EQ(a.back(), '1');
+    EXPECT_EQ(b.back(), '2');
+    EXPECT_EQ(shortened_middle("vase", 100, mono), "vase");
+}

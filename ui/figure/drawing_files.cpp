@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <span>
 
 #include "core/scene/atomic_file.hpp"
 #include "ui/image/png_writer.hpp"
@@ -35,30 +36,33 @@ std::string hex(const DrawColor& c) {
     return buf;
 }
 
-std::string xml_escape(const std::string& s) {
+// A character and what a format writes for it.
+struct Escape {
+    char c;
+    const char* as;
+};
+
+// `s` with each character of `table` replaced by its escape.
+std::string escaped(const std::string& s, std::span<const Escape> table) {
     std::string out;
+    out.reserve(s.size());
     for (char c : s) {
-        switch (c) {
-        case '&':
-            out += "&amp;";
-            break;
-        case '<':
-            out += "&lt;";
-            break;
-        case '>':
-            out += "&gt;";
-            break;
-        case '"':
-            out += "&quot;";
-            break;
-        case '\'':
-            out += "&apos;";
-            break;
-        default:
+        const auto e =
+            std::find_if(table.begin(), table.end(), [c](const Escape& x) { return x.c == c; });
+        if (e != table.end())
+            out += e->as;
+        else
             out += c;
-        }
     }
     return out;
+}
+
+constexpr Escape xml_escapes[] = {
+    {'&', "&amp;"}, {'<', "&lt;"}, {'>', "&gt;"}, {'"', "&quot;"}, {'\'', "&apos;"},
+};
+
+std::string xml_escape(const std::string& s) {
+    return escaped(s, xml_escapes);
 }
 
 std::string base64(const std::string& bytes) {
@@ -119,45 +123,21 @@ std::string svg_class(const std::string& role) {
 }
 
 // TeX's special characters in text mode.
+constexpr Escape tex_escapes[] = {
+    {'\\', "\\textbackslash{}"},
+    {'{', "\\{"},
+    {'}', "\\}"},
+    {'#', "\\#"},
+    {'$', "\\$"},
+    {'%', "\\%"},
+    {'&', "\\&"},
+    {'_', "\\_"},
+    {'^', "\\^{}"},
+    {'~', "\\~{}"},
+};
+
 std::string tex_escape(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-        case '\\':
-            out += "\\textbackslash{}";
-            break;
-        case '{':
-            out += "\\{";
-            break;
-        case '}':
-            out += "\\}";
-            break;
-        case '#':
-            out += "\\#";
-            break;
-        case '$':
-            out += "\\$";
-            break;
-        case '%':
-            out += "\\%";
-            break;
-        case '&':
-            out += "\\&";
-            break;
-        case '_':
-            out += "\\_";
-            break;
-        case '^':
-            out += "\\^{}";
-            break;
-        case '~':
-            out += "\\~{}";
-            break;
-        default:
-            out += c;
-        }
-    }
-    return out;
+    return escaped(s, tex_escapes);
 }
 
 std::string tex_label(const std::string& marked_up) {

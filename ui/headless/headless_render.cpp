@@ -107,6 +107,9 @@ std::string HeadlessSession::render(doc::Document document, const HeadlessReques
     if (const geom::Status usable = scene::check_output_path(req.output); !usable)
         return usable.error().message;
     if (std::string too_large = scene_over_budget(document); !too_large.empty()) return too_large;
+    // The driver is loaded: what is left to fit is the scene (see render_headless).
+    if (std::string short_of = memory_limit_problem(document, 0); !short_of.empty())
+        return short_of;
     return draw_to_png(std::move(document), req.scene_path, req, req.output);
 }
 

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <memory>
 
+#include "core/json/input_file.hpp"
 #include "ui/image/png_writer.hpp"
 
 #define STB_IMAGE_IMPLEMENTATION
@@ -15,10 +16,30 @@
 namespace isoparm::ui {
 
 std::optional<RgbImage> read_image(const std::string& path, std::string& error) {
+    // A regular file only (a FIFO named like a golden image would block forever; a device
+    // would never end), read whole within the input cap, its size checked before decoding.
+    auto bytes = json_io::read_input_file(path);
+    if (!bytes) {
+        error = bytes.error().message;
+        return std::nullopt;
+    }
+    const auto* first = reinterpret_cast<const unsigned char*>(bytes->data());
+    const int length = static_cast<int>(std::min<std::size_t>(bytes->size(), INT32_MAX));
     RgbImage out;
     int channels = 0;
+    if (!stbi_info_from_memory(first, length, &out.width, &out.height, &channels)) {
+        error = "cannot read '" + path + "': " + stbi_failure_reason();
+        return std::nullopt;
+    }
+    if (out.width > max_image_side || out.height > max_image_side) {
+        error = "cannot read '" + path + "': it is " + std::to_string(out.width) + "x" +
+                std::to_string(out.height) + ", more than " + std::to_string(max_image_side) +
+                " pixels on a side";
+        return std::nullopt;
+    }
     std::unique_ptr<unsigned char, void (*)(void*)> data(
-        stbi_load(path.c_str(), &out.width, &out.height, &channels, 3), stbi_image_free);
+        stbi_load_from_memory(first, length, &out.width, &out.height, &channels, 3),
+        stbi_image_free);
     if (!data) {
         error = "cannot read '" + path + "': " + stbi_failure_reason();
         return std::nullopt;

@@ -15,8 +15,12 @@ struct RgbImage {
     std::vector<unsigned char> rgb; // 3 bytes per pixel, rows top to bottom
 };
 
+// The largest side read_image takes (what isoparm writes: 8192).
+inline constexpr int max_image_side = 8192;
+
 // The picture in `path` (any format stb_image reads) as RGB; nothing, with `error` naming
-// the file and the reason, when it cannot be read.
+// the file and the reason, when it cannot be read. Only a regular file is read (a FIFO, a
+// device or a directory is refused without waiting), and not one larger than max_image_side.
 std::optional<RgbImage> read_image(const std::string& path, std::string& error);
 
 struct ImageComparison {

@@ -4,10 +4,13 @@
 
 #include <cstdlib>
 #include <string_view>
+#ifndef __EMSCRIPTEN__
 #include <zlib.h>
+#endif
 
 #include "core/scene/atomic_file.hpp"
 
+#ifndef __EMSCRIPTEN__ // the browser build has no zlib: stb's own deflate and CRC there
 namespace isoparm::ui {
 namespace {
 
@@ -43,6 +46,7 @@ unsigned int zlib_crc32(const unsigned char* data, int size) {
 
 #define STBIW_ZLIB_COMPRESS isoparm::ui::zlib_compress
 #define STBIW_CRC32 isoparm::ui::zlib_crc32
+#endif
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb/stb_image_write.h>
 

@@ -15,11 +15,13 @@
 #include "core/geom/deboor.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
+#include "core/geom/status.hpp"
 #include "core/geom/tessellate.hpp"
 #include "ui/panels/curve_designer.hpp"
 #include "ui/panels/flow.hpp"
 #include "ui/panels/panels.hpp"
-#include "ui/panels/plane_canvas.hpp"
+#include "ui/panels/picture_draw.hpp"
+#include "ui/panels/stage_controls.hpp"
 #include "ui/theme.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/doc_access.hpp"
@@ -28,21 +30,15 @@ namespace isoparm::ui {
 
 namespace {
 
-ImVec2 iv(const glm::dvec2& p) {
-    return {static_cast<float>(p.x), static_cast<float>(p.y)};
-}
-
 // "f(0.25, t, t)" with `t` written as the symbol where an argument is the trace parameter.
 std::string polar_text(const std::vector<double>& args, double t, const char* symbol) {
     std::string s = "f(";
-    char buf[32];
     for (std::size_t k = 0; k < args.size(); ++k) {
         if (k) s += ", ";
         if (symbol && args[k] == t) {
             s += symbol;
         } else {
-            std::snprintf(buf, sizeof buf, "%.3g", args[k]);
-            s += buf;
+            s += geom::format_short(args[k], 3);
         }
     }
     return s + ")";
@@ -58,9 +54,8 @@ std::string surface_polar_text(const std::vector<double>& u_args, const std::vec
 
 std::string point_text(const std::optional<glm::dvec3>& p) {
     if (!p) return "at infinity (weight 0)";
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "(%.4g, %.4g, %.4g)", p->x, p->y, p->z);
-    return buf;
+    return "(" + geom::format_short(p->x) + ", " + geom::format_short(p->y) + ", " +
+           geom::format_short(p->z) + ")";
 }
 
 // The arguments' range on a piece: the knots its control points' labels use.
@@ -128,69 +123,70 @@ void curve_canvas(AppContext& ctx, const doc::CurveObject& c, const geom::DeBoor
                 }
     if (lo.x > hi.x) lo = hi = glm::dvec2(0);
     const glm::dvec2 pad = glm::max((hi - lo) * 0.2, glm::dvec2(0.05));
-    const PlaneMap map = fit_plane(box, lo - pad, hi + pad, 10 * k);
-    auto px = [&](const glm::dvec3& p) { return iv(plane_to_pixel(map, flat(p))); };
-    ImDrawList* dl = ImGui::GetWindowDrawList();
-    const bool light = ctx.ui.presentation;
     ImGui::SetCursorScreenPos(ImVec2(box.x, box.y));
-    ImGui::Dummy(ImVec2(box.w, box.h));
-    begin_plane_canvas(dl, map, box, light);
+    ImGui::InvisibleButton("##blossom_canvas", ImVec2(std::max(box.w, 1.f), std::max(box.h, 1.f)));
+    report_item("blossom/canvas");
+    const PlaneMap map =
+        view_map(canvas_view(ctx, "blossom", box), fit_plane(box, lo - pad, hi + pad, 10 * k));
+    auto px = [&](const glm::dvec3& p) { return glm::vec2(plane_to_pixel(map, flat(p))); };
+    const bool light = ctx.ui.presentation;
+    Picture pic;
+    pic.view = "blossom";
+    pic.frame = box;
+    pic.background = light ? rgba8(250, 250, 250) : rgba8(26, 28, 34);
+    pic.style.offset = 5 * k;
+    const glm::dvec2 o = plane_to_pixel(map, {0, 0});
+    const Rgba8 axis_col = light ? rgba8(150, 150, 150) : rgba8(80, 84, 96);
+    pic.line({box.x, static_cast<float>(o.y)}, {box.x + box.w, static_cast<float>(o.y)}, axis_col);
+    pic.line({static_cast<float>(o.x), box.y}, {static_cast<float>(o.x), box.y + box.h}, axis_col);
     const doc::Colors& col = ctx.doc.colors;
-    std::vector<ImVec2> line;
+    std::vector<glm::vec2> line;
     for (const glm::dvec3& p : g.points) line.push_back(px(p));
-    dl->AddPolyline(line.data(), static_cast<int>(line.size()),
-                    curve_designer::rgba(col.control_net, 0.4f), 0, 1.0f * k);
+    pic.polyline(std::move(line), curve_designer::rgba(col.control_net, 0.4f), 1.0f * k);
     line.clear();
     const geom::Interval d = geom::domain(g);
     for (double s : geom::uniform_params(d.lo, d.hi, 300))
         if (auto p = geom::curve_point(g, s)) line.push_back(px(*p));
-    dl->AddPolyline(line.data(), static_cast<int>(line.size()),
-                    curve_designer::rgba(col.selected_surface), 0, 2.0f * k);
+    pic.polyline(std::move(line), curve_designer::rgba(col.selected_surface), 2.0f * k);
 
-    // de Boor's triangle at t, labelled with its blossom arguments, level by level; the labels
-    // are placed afterwards so that none covers another.
-    const ImU32 text_col = light ? IM_COL32(20, 20, 20, 255) : IM_COL32(230, 230, 230, 255);
-    std::vector<glm::dvec2> anchors, sizes;
-    std::vector<std::string> labels;
+    // de Boor's triangle at t, labelled with its blossom arguments, level by level; the placer
+    // keeps the labels apart (the last levels, nearest the curve point, matter most).
+    const Rgba8 text_col = light ? rgba8(20, 20, 20) : rgba8(230, 230, 230);
+    const Rgba8 plate = light ? rgba8(255, 255, 255, 200) : rgba8(26, 28, 34, 200);
+    const int levels = static_cast<int>(at_t.levels.size()) - 1;
     for (std::size_t lvl = 0; lvl < at_t.levels.size(); ++lvl) {
-        const ImU32 c_lvl = curve_designer::level_color(static_cast<int>(lvl),
-                                                        static_cast<int>(at_t.levels.size()) - 1);
-        std::vector<ImVec2> pts;
+        const ImU32 c_lvl = curve_designer::level_color(static_cast<int>(lvl), levels);
+        std::vector<glm::vec2> pts;
         for (std::size_t i = 0; i < at_t.levels[lvl].size(); ++i) {
             const auto p = geom::DeBoorTriangle::cartesian(at_t.levels[lvl][i]);
             if (!p) continue;
             pts.push_back(px(*p));
             const int index = at_t.first_index + static_cast<int>(i) + static_cast<int>(lvl);
-            const std::string label = polar_text(
-                geom::deboor_point_arguments(g.knots, g.degree, static_cast<int>(lvl), index, t), t,
-                "t");
-            dl->AddCircleFilled(pts.back(), 3.5f * k, c_lvl);
-            const ImVec2 size = ImGui::CalcTextSize(label.c_str());
-            anchors.emplace_back(pts.back().x, pts.back().y);
-            sizes.emplace_back(size.x, size.y);
-            labels.push_back(label);
+            const std::vector<double> args =
+                geom::deboor_point_arguments(g.knots, g.degree, static_cast<int>(lvl), index, t);
+            pic.disk(pts.back(), 3.5f * k, c_lvl);
+            LabelRequest& r = pic.label(pts.back(), polar_text(args, t, "t"), text_col,
+                                        10 + static_cast<int>(lvl));
+            r.plate = plate;
+            r.tooltip = polar_text(args, std::nan(""), nullptr) + " = " +
+                        point_text(geom::DeBoorTriangle::cartesian(at_t.levels[lvl][i]));
         }
-        if (pts.size() > 1)
-            dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), c_lvl, 0, 1.4f * k);
+        pic.polyline(std::move(pts), c_lvl, 1.4f * k);
     }
-    const std::vector<glm::dvec2> at = place_labels(anchors, sizes, 5.0 * k);
-    for (std::size_t q = 0; q < labels.size(); ++q)
-        dl->AddText(iv(at[q]), text_col, labels[q].c_str());
     // The triangle of the sliders' arguments, and its apex f(a_1, ..., a_p).
-    const ImU32 polar_col = light ? IM_COL32(170, 30, 170, 255) : IM_COL32(235, 90, 235, 255);
+    const Rgba8 polar_col = light ? rgba8(170, 30, 170) : rgba8(235, 90, 235);
     for (std::size_t lvl = 1; lvl < at_args.levels.size(); ++lvl) {
-        std::vector<ImVec2> pts;
+        std::vector<glm::vec2> pts;
         for (const geom::HPoint& h : at_args.levels[lvl])
             if (auto p = geom::DeBoorTriangle::cartesian(h)) pts.push_back(px(*p));
-        if (pts.size() > 1)
-            dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), polar_col, 0, 1.0f * k);
+        pic.polyline(std::move(pts), polar_col, 1.0f * k);
     }
     if (auto apex = geom::DeBoorTriangle::cartesian(at_args.levels.back().front())) {
-        const ImVec2 a = px(*apex);
-        dl->AddCircle(a, 7 * k, polar_col, 0, 2.2f * k);
+        const glm::vec2 a = px(*apex);
+        pic.disk(a, 7 * k, 0, polar_col, 2.2f * k);
         report_point("blossom/apex", a.x, a.y);
     }
-    dl->PopClipRect();
+    draw_picture(pic);
 }
 
 void curve_view(AppContext& ctx, const doc::Object& obj, const doc::CurveObject& c) {
@@ -198,13 +194,13 @@ void curve_view(AppContext& ctx, const doc::Object& obj, const doc::CurveObject&
     const geom::Curve& g = c.curve;
     const int p = g.degree, n = g.count();
     const float k = ctx.ui.scale();
-    double t = curve_designer::trace_param(ctx, g);
+    double t = ctx.ui.curve.trace_param(g);
     const geom::Interval dom = geom::domain(g);
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
     if (ImGui::SliderScalar("t (the designer's)", ImGuiDataType_Double, &t, &dom.lo, &dom.hi,
                             "%.4f")) {
         ctx.ui.curve.trace_t = normalize_param(dom, t);
-        t = curve_designer::trace_param(ctx, g);
+        t = ctx.ui.curve.trace_param(g);
     }
     const int span = geom::default_blossom_span(g.knots, p, n, t);
     keep_arguments(bs.args, bs.object, bs.span, obj.id, span, p, t);
@@ -242,8 +238,8 @@ void curve_view(AppContext& ctx, const doc::Object& obj, const doc::CurveObject&
             if (value) control_gap = glm::length(*value - g.points[static_cast<std::size_t>(i)]);
         }
     report_fact("blossom/control_gap", control_gap);
-    ImGui::TextWrapped("%s = %s%s", polar_text(bs.args, t, nullptr).c_str(),
-                       point_text(value).c_str(), is.c_str());
+    text_wrapped("%s = %s%s", polar_text(bs.args, t, nullptr).c_str(), point_text(value).c_str(),
+                 is.c_str());
     if (value)
         if (auto on_curve = geom::curve_point(g, t))
             report_fact("blossom/diagonal_gap",
@@ -266,8 +262,8 @@ void surface_view(AppContext& ctx, const doc::Object& obj, const geom::Surface& 
     const int span_v = geom::default_blossom_span(s.knots_v, q, s.n_v, uv.y);
     keep_arguments(bs.args, bs.object, bs.span, obj.id, span_u, p, uv.x);
     keep_arguments(bs.v_args, bs.v_object, bs.v_span, obj.id, span_v, q, uv.y);
-    ImGui::TextWrapped("Piece (%d, %d) at the indicator (u, v) = (%.4g, %.4g).", span_u, span_v,
-                       uv.x, uv.y);
+    text_wrapped("Piece (%d, %d) at the indicator (u, v) = (%.4g, %.4g).", span_u, span_v, uv.x,
+                 uv.y);
     argument_sliders(bs.args, argument_range(s.knots_u, p, span_u), "u");
     argument_sliders(bs.v_args, argument_range(s.knots_v, q, span_v), "v");
     if (ImGui::Button("f(u, .., u; v, .., v)")) {
@@ -280,8 +276,8 @@ void surface_view(AppContext& ctx, const doc::Object& obj, const geom::Surface& 
     if (same_arguments(bs.args, std::vector<double>(bs.args.size(), uv.x)) &&
         same_arguments(bs.v_args, std::vector<double>(bs.v_args.size(), uv.y)))
         is = " = S(u, v)";
-    ImGui::TextWrapped("%s = %s%s", surface_polar_text(bs.args, bs.v_args, uv, false).c_str(),
-                       point_text(value).c_str(), is.c_str());
+    text_wrapped("%s = %s%s", surface_polar_text(bs.args, bs.v_args, uv, false).c_str(),
+                 point_text(value).c_str(), is.c_str());
 
     // The stages, every point labelled: the u-stage's row j is f(..; V[j+1], ..., V[j+q]).
     const geom::DeBoorSurfaceTrace trace = geom::deboor_surface(s, uv.x, uv.y);
@@ -324,6 +320,7 @@ void surface_view(AppContext& ctx, const doc::Object& obj, const geom::Surface& 
 } // namespace
 
 void draw_blossom_panel(AppContext& ctx) {
+    note_hovered_view(ctx, StageView::blossom);
     const doc::Object* sel = ctx.doc.selected();
     if (sel && sel->curve_object()) {
         curve_view(ctx, *sel, *sel->curve_object());
@@ -334,8 +331,8 @@ void draw_blossom_panel(AppContext& ctx) {
         surface_view(ctx, *obj, *s);
         return;
     }
-    ImGui::TextWrapped("Select a curve or a surface: every point of de Boor's construction is its "
-                       "blossom (polar form) at some arguments.");
+    text_wrapped("Select a curve or a surface: every point of de Boor's construction is its "
+                 "blossom (polar form) at some arguments.");
 }
 
 } // namespace isoparm::ui

@@ -7,10 +7,13 @@
 #include <vector>
 
 #include "core/doc/commands.hpp"
+#include "core/doc/commands_construction.hpp"
 #include "core/doc/commands_curve.hpp"
 #include "core/doc/curve_constructions.hpp"
+#include "core/doc/placement.hpp"
 #include "ui/actions.hpp"
-#include "ui/panels/fit_panel.hpp"
+#include "ui/fit_actions.hpp"
+#include "ui/modeler_actions.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/theme.hpp"
 #include "ui/ui_report.hpp"
@@ -20,13 +23,19 @@ namespace isoparm::ui {
 
 namespace {
 
-constexpr int make_compatible_kind = 8; // after the doc::Construction values
+// After the doc::Construction values (isocurve, the last, has menu items of its own).
+constexpr int make_compatible_kind = 9;
+constexpr int isocurve_kind = static_cast<int>(doc::Construction::isocurve);
 
+// A new curve beside what the scene holds (never on top of it), with a name no other object
+// has; selected, and the camera refits to show it.
 void add_and_select(AppContext& ctx, geom::Expected<doc::Object> o, const char* what) {
     if (!o) {
         show_error(ctx, std::string("Cannot add the ") + what, o.error().message);
         return;
     }
+    doc::place_beside_scene(ctx.doc, o->shape);
+    o->name = doc::unique_name(ctx.doc, o->name);
     ctx.seal();
     if (ctx.execute(doc::add_object(std::move(o).value()))) {
         ctx.doc.view.selection = {ctx.doc.objects.back().id, -1, -1};
@@ -93,6 +102,7 @@ void open_dialog(AppContext& ctx, int kind) {
     CurveDesignerState& cd = ctx.ui.curve;
     cd.construct_kind = kind;
     cd.construct_open = true;
+    cd.editing = 0;
     cd.note.clear();
     // Keep the chosen curves that still exist; start from the selected curve.
     std::erase_if(cd.chosen, [&](std::uint64_t id) {
@@ -104,17 +114,69 @@ void open_dialog(AppContext& ctx, int kind) {
         cd.chosen.push_back(sel->id);
 }
 
+// Construct > Edit construction: the dialog on the selected object's recipe, changed in place.
+void open_edit_dialog(AppContext& ctx, const doc::Object& o) {
+    const doc::Recipe& r = *o.construction;
+    CurveDesignerState& cd = ctx.ui.curve;
+    cd.construct_kind = static_cast<int>(r.kind);
+    cd.construct_open = true;
+    cd.editing = o.id;
+    cd.note.clear();
+    cd.chosen = r.curves;
+    cd.angle = r.angle;
+    cd.swing_scale = r.scale;
+    cd.skin_degree = r.skin_degree;
+    cd.parametrization = static_cast<int>(r.parametrization);
+    cd.sections = r.sections;
+    cd.gordon_u_count = r.gordon_u_count;
+    cd.iso_dir = r.iso_dir == geom::Dir::u ? 0 : 1;
+    cd.iso_t = r.iso_t;
+}
+
+// Construct > Isocurve at the indicator: the selected surface's curve through (u, v), linked.
+void build_isocurve(AppContext& ctx, geom::Dir dir) {
+    const doc::Object* s = nullptr;
+    if (!current_surface(ctx.doc, &s) || !s) return;
+    doc::Recipe r;
+    r.kind = doc::Construction::isocurve;
+    r.curves = {s->id};
+    r.iso_dir = dir;
+    r.iso_t = dir == geom::Dir::u ? ctx.doc.view.indicator.x : ctx.doc.view.indicator.y;
+    ctx.seal();
+    if (ctx.execute(doc::construct(r))) {
+        if (const std::uint64_t id = doc::constructed_id(*ctx.history.top()))
+            ctx.doc.view.selection = {id, -1, -1};
+    }
+    ctx.seal();
+}
+
 void construct_menu(AppContext& ctx) {
     if (!begin_menu("Construct")) return;
     if (menu_item("Make compatible...")) open_dialog(ctx, make_compatible_kind);
     ImGui::Separator();
     const char* items[] = {"Ruled...",          "Revolve...", "Swing...", "Sweep...",
                            "Oriented sweep...", "Skin...",    "Coons...", "Gordon..."};
-    static_assert(std::size(items) == make_compatible_kind);
-    for (int k = 0; k < make_compatible_kind; ++k) {
+    static_assert(std::size(items) == isocurve_kind);
+    for (int k = 0; k < isocurve_kind; ++k) {
         if (k == 6) ImGui::Separator(); // from a boundary or a network of curves
         if (menu_item(items[k])) open_dialog(ctx, k);
     }
+    ImGui::Separator();
+    const doc::Object* cur = nullptr;
+    const bool surface = current_surface(ctx.doc, &cur) != nullptr;
+    if (menu_item("Isocurve along v at the indicator's u", nullptr, false, surface))
+        build_isocurve(ctx, geom::Dir::u);
+    if (menu_item("Isocurve along u at the indicator's v", nullptr, false, surface))
+        build_isocurve(ctx, geom::Dir::v);
+    ImGui::Separator();
+    // Constructions stay linked to their curves: edit the recipe, or cut the link.
+    const doc::Object* sel = ctx.doc.selected();
+    const bool linked = sel && sel->construction;
+    if (menu_item("Edit construction...", nullptr, false, linked)) open_edit_dialog(ctx, *sel);
+    if (!linked && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("Select a constructed object (one built here, still linked)");
+    if (menu_item("Detach (free the selected object)", nullptr, false, linked))
+        detach_selected(ctx);
     ImGui::EndMenu();
 }
 
@@ -147,6 +209,9 @@ const char* what_it_does(int kind) {
         return "The Gordon surface through a network (Gordon 1969; P&T 10.5): first the curves "
                "along u (constant v), then the curves along v (constant u); every u-curve must "
                "meet every v-curve. It interpolates every curve of the network.";
+    case isocurve_kind:
+        return "The curve of a surface at a fixed parameter, exact (P&T 3.4): it follows the "
+               "surface, so a collar ruled from a vase's rim follows the vase's profile.";
     default:
         return "Ruled and skinned surfaces pair the i-th control points of their curves, so "
                "the curves need one degree and one knot vector. This raises the degrees "
@@ -185,11 +250,20 @@ std::string curves_text(const doc::Document& d, const std::vector<std::uint64_t>
 void curve_chooser(AppContext& ctx) {
     CurveDesignerState& cd = ctx.ui.curve;
     const float k = ctx.ui.scale();
-    ImGui::TextUnformatted("Curves of the scene:");
+    const bool surfaces = cd.construct_kind == isocurve_kind; // an isocurve reads a surface
+    ImGui::TextUnformatted(surfaces ? "Surfaces of the scene:" : "Curves of the scene:");
     ImGui::BeginChild("##curves", ImVec2(0, 110 * k), true);
     for (const doc::Object& o : ctx.doc.objects) {
+        if (surfaces && o.surface() && o.id != cd.editing) {
+            const auto it = std::find(cd.chosen.begin(), cd.chosen.end(), o.id);
+            bool on = it != cd.chosen.end();
+            ImGui::PushID(static_cast<int>(o.id));
+            if (ImGui::Checkbox(o.name.c_str(), &on)) cd.chosen = {o.id};
+            ImGui::PopID();
+            continue;
+        }
         const auto* c = std::get_if<doc::CurveObject>(&o.shape);
-        if (!c) continue;
+        if (!c || surfaces || o.id == cd.editing) continue;
         const auto it = std::find(cd.chosen.begin(), cd.chosen.end(), o.id);
         bool on = it != cd.chosen.end();
         ImGui::PushID(static_cast<int>(o.id));
@@ -239,6 +313,8 @@ void curve_chooser(AppContext& ctx) {
     }
 }
 
+constexpr double zero_one[2] = {0.0, 1.0};
+
 void parameters(AppContext& ctx) {
     CurveDesignerState& cd = ctx.ui.curve;
     const float k = ctx.ui.scale();
@@ -266,6 +342,16 @@ void parameters(AppContext& ctx) {
         ImGui::InputInt("u-curves (the first in the order; the rest run along v)",
                         &cd.gordon_u_count);
         break;
+    case isocurve_kind: {
+        const char* dirs[] = {"u fixed (the curve runs along v)",
+                              "v fixed (the curve runs along u)"};
+        ImGui::SetNextItemWidth(260 * k);
+        ImGui::Combo("##isodir", &cd.iso_dir, dirs, 2);
+        ImGui::SetNextItemWidth(160 * k);
+        ImGui::SliderScalar("where (0..1 over the domain)", ImGuiDataType_Double, &cd.iso_t,
+                            &zero_one[0], &zero_one[1], "%.3f");
+        break;
+    }
     default:
         ImGui::Dummy(ImVec2(0, 0));
         break;
@@ -291,7 +377,7 @@ bool build(AppContext& ctx) {
         ctx.ui.status = "Made " + std::to_string(cd.chosen.size()) + " curves compatible";
         return true;
     }
-    doc::ConstructionRequest r;
+    doc::Recipe r;
     r.kind = static_cast<doc::Construction>(cd.construct_kind);
     r.curves = cd.chosen;
     r.angle = cd.angle;
@@ -300,24 +386,51 @@ bool build(AppContext& ctx) {
     r.parametrization = static_cast<geom::Parametrization>(cd.parametrization);
     r.sections = cd.sections;
     r.gordon_u_count = cd.gordon_u_count;
-    auto result = doc::build_construction(ctx.doc, r);
-    const std::string title = std::string(doc::construction_label(r.kind)) + ": not built";
-    if (!result) {
-        cd.error = title + ". " + result.error().message;
-        return false;
+    r.iso_dir = cd.iso_dir == 0 ? geom::Dir::u : geom::Dir::v;
+    r.iso_t = cd.iso_t;
+    // Edit construction: the recipe changes in place (one undo step), no copy is built.
+    if (const doc::Object* edited = ctx.doc.find(cd.editing); edited && edited->construction) {
+        const std::string name = edited->name;
+        ctx.seal();
+        const bool ok = ctx.execute(doc::edit_construction(cd.editing, r));
+        ctx.seal();
+        if (!ok) {
+            cd.error =
+                std::string(doc::construction_label(r.kind)) + ": not changed. " + ctx.ui.status;
+            return false;
+        }
+        const std::string note = doc::construction_note(*ctx.history.top());
+        cd.note = "Changed '" + name + "' in place." + (note.empty() ? "" : "\n" + note);
+        ctx.ui.status = "Changed the construction of '" + name + "'";
+        return true;
     }
-    const std::string name = result->object.name;
+    // The same recipe built already: say so (Edit construction changes that one).
+    std::string twin;
+    for (const doc::Object& o : ctx.doc.objects)
+        if (o.construction && o.construction->kind == r.kind && o.construction->curves == r.curves)
+            twin = o.name;
+    const std::string title = std::string(doc::construction_label(r.kind)) + ": not built";
     ctx.seal();
-    if (!ctx.execute(doc::add_object(std::move(result->object)))) {
+    // The recipe, not the surface: a recording (a lesson) keeps "revolve curve 2".
+    const bool ok = ctx.execute(doc::construct(r));
+    ctx.seal();
+    if (!ok) {
         cd.error = title + ". " + ctx.ui.status;
         return false;
     }
-    ctx.seal();
-    ctx.doc.view.selection = {ctx.doc.objects.back().id, -1, -1};
+    const std::uint64_t id = doc::constructed_id(*ctx.history.top());
+    const doc::Object* made = ctx.doc.find(id);
+    const std::string name = made ? made->name : "";
+    const std::string note = doc::construction_note(*ctx.history.top());
+    ctx.doc.view.selection = {id, -1, -1};
     fit_view(ctx);
-    cd.note = "Added '" + name + "' (selected; edit it like any surface)." +
-              (result->note.empty() ? "" : "\n" + result->note);
-    ctx.ui.status = cd.note;
+    cd.note =
+        "Added '" + name +
+        "' (selected). It follows its curves: edit them and it is built "
+        "again; Construct > Edit construction changes its parameters." +
+        (twin.empty() ? "" : "\n'" + twin + "' was built from the same curves the same way.") +
+        (note.empty() ? "" : "\n" + note);
+    ctx.ui.status = "Added '" + name + "'";
     return true;
 }
 
@@ -335,49 +448,46 @@ void draw_construct_menus(AppContext& ctx) {
 void draw_construct_dialog(AppContext& ctx) {
     CurveDesignerState& cd = ctx.ui.curve;
     const char* id = "Construct##dialog";
-    if (cd.construct_open) {
-        ImGui::OpenPopup(id);
-        cd.construct_open = false;
-        cd.error.clear();
-    }
-    const ImGuiViewport* vp = ImGui::GetMainViewport();
-    ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x * 0.5f, vp->Pos.y + vp->Size.y * 0.5f),
-                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowSize(ImVec2(520 * ctx.ui.scale(), 0));
-    if (!ImGui::BeginPopupModal(id, nullptr,
-                                ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoTitleBar))
+    if (cd.construct_open) cd.error.clear();
+    if (!begin_centered_modal(id, cd.construct_open, 520 * ctx.ui.scale(),
+                              ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoTitleBar))
         return;
     const int kind = cd.construct_kind;
     const char* title = kind == make_compatible_kind
                             ? "Make compatible"
                             : doc::construction_label(static_cast<doc::Construction>(kind));
-    ImGui::TextUnformatted(title);
+    const doc::Object* edited = ctx.doc.find(cd.editing);
+    if (edited)
+        ImGui::Text("Edit the construction of '%s' (%s)", edited->name.c_str(), title);
+    else
+        ImGui::TextUnformatted(title);
     ImGui::Separator();
-    ImGui::TextWrapped("%s", what_it_does(kind));
+    text_wrapped("%s", what_it_does(kind));
     ImGui::Spacing();
     curve_chooser(ctx);
     if (kind == make_compatible_kind && !cd.chosen.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-        ImGui::TextWrapped("%s", curves_text(ctx.doc, cd.chosen).c_str());
+        text_wrapped("%s", curves_text(ctx.doc, cd.chosen).c_str());
         ImGui::PopStyleColor();
     }
     parameters(ctx);
     if (!cd.note.empty()) {
         ImGui::Separator();
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.45f, 0.85f, 0.5f, 1));
-        ImGui::TextWrapped("%s", cd.note.c_str());
+        text_wrapped("%s", cd.note.c_str());
         ImGui::PopStyleColor();
     }
     if (!cd.error.empty()) {
         ImGui::Separator();
         ImGui::PushStyleColor(ImGuiCol_Text, error_text_color());
-        ImGui::TextWrapped("%s", cd.error.c_str());
+        text_wrapped("%s", cd.error.c_str());
         ImGui::PopStyleColor();
     }
     ImGui::Spacing();
     bool close = false;
-    const bool build_pressed =
-        ImGui::Button(kind == make_compatible_kind ? "Make compatible" : "Build");
+    const bool build_pressed = ImGui::Button(kind == make_compatible_kind ? "Make compatible"
+                                             : edited                     ? "Apply"
+                                                                          : "Build");
     report_item("construct/build");
     if (build_pressed && build(ctx)) cd.error.clear();
     ImGui::SameLine();

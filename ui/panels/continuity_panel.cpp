@@ -8,6 +8,7 @@
 #include "core/doc/border_measure.hpp"
 #include "ui/panels/flow.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/panels/stage_controls.hpp"
 #include "ui/theme.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/doc_access.hpp"
@@ -25,18 +26,19 @@ void figure(const char* format, double value, bool ok, bool light) {
 } // namespace
 
 void draw_continuity_panel(AppContext& ctx) {
+    note_hovered_view(ctx, StageView::continuity);
     const doc::Object* obj = nullptr;
     if (!current_surface(ctx.doc, &obj) || obj->patch_group == 0) {
-        ImGui::TextWrapped("The current surface is not split into patches: Surface > Split at u or "
-                           "v (S, Shift+S) makes a patch group, and this tab then measures every "
-                           "border between its patches.");
+        text_wrapped("The current surface is not split into patches: Surface > Split at u or "
+                     "v (S, Shift+S) makes a patch group, and this tab then measures every "
+                     "border between its patches.");
         return;
     }
     const std::uint64_t group = obj->patch_group;
     const std::vector<doc::SharedBorder> borders = doc::shared_borders(ctx.doc, group);
-    ImGui::TextWrapped("Kept across borders: %s. Measured on the surfaces at 33 points along "
-                       "each border (green: holds).",
-                       doc::continuity_name(ctx.doc.continuity));
+    text_wrapped("Kept across borders: %s. Measured on the surfaces at 33 points along "
+                 "each border (green: holds).",
+                 doc::continuity_name(ctx.doc.continuity));
     const double size = doc::group_size(ctx.doc, group);
     ImGui::Checkbox("Draw the borders in 3D in their colour", &ctx.ui.border_continuity);
     report_item("continuity/draw_borders");
@@ -73,8 +75,8 @@ void draw_continuity_panel(AppContext& ctx) {
     }
     ImGui::Separator();
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("gap: C0; angle between the normals: G1; dS, the first derivative across: "
-                       "C1; dH, the jump of mean curvature: G2.");
+    text_wrapped("gap: C0; angle between the normals: G1; dS, the first derivative across: "
+                 "C1; dH, the jump of mean curvature: G2.");
     ImGui::PopStyleColor();
     report_fact("continuity/borders", static_cast<double>(borders.size()));
     report_fact("continuity/c1_measured", kept);

@@ -1,8 +1,10 @@
 // The control panel: colours of the scene (saved with it, undoable) and display settings.
+#include <algorithm>
 #include <imgui.h>
 
 #include "core/doc/commands.hpp"
 #include "ui/panels/enum_combo.hpp"
+#include "ui/panels/flow.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/ui_report.hpp"
 
@@ -27,22 +29,27 @@ void draw_control_panel(AppContext& ctx) {
     doc::Colors colors = ctx.doc.colors;
     bool changed = false;
     ImGui::TextDisabled("Colours (saved with the scene)");
-    if (ImGui::BeginTable("colors", 2)) {
-        struct Row {
-            const char* label;
-            doc::Rgba* color;
-        };
-        const Row rows[] = {{"Background", &colors.background},
-                            {"Surface", &colors.surface},
-                            {"Selected surface", &colors.selected_surface},
-                            {"Control net", &colors.control_net},
-                            {"Control points", &colors.control_points},
-                            {"Selected point", &colors.selected_point},
-                            {"Knot curves", &colors.knot_curves},
-                            {"Indicator", &colors.indicator}};
+    struct Row {
+        const char* label;
+        doc::Rgba* color;
+    };
+    const Row rows[] = {{"Background", &colors.background},
+                        {"Surface", &colors.surface},
+                        {"Selected surface", &colors.selected_surface},
+                        {"Control net", &colors.control_net},
+                        {"Control points", &colors.control_points},
+                        {"Selected point", &colors.selected_point},
+                        {"Knot curves", &colors.knot_curves},
+                        {"Indicator", &colors.indicator}};
+    // Two columns while every whole label fits beside its swatch ("Backgrou" was cut on a
+    // projector), else one.
+    float widest = 0;
+    for (const Row& r : rows) widest = std::max(widest, toggle_width(r.label));
+    const int cols = columns_that_fit(widest + ImGui::GetStyle().CellPadding.x * 2, 2);
+    if (ImGui::BeginTable("colors", cols)) {
         int n = 0;
         for (const Row& r : rows) {
-            if (n % 2 == 0) ImGui::TableNextRow();
+            if (n % cols == 0) ImGui::TableNextRow();
             ImGui::TableNextColumn();
             changed |= color_row(r.label, *r.color);
             ++n;
@@ -67,18 +74,36 @@ void draw_control_panel(AppContext& ctx) {
     ImGui::SameLine();
     ImGui::RadioButton("Both", &style, static_cast<int>(doc::DisplayStyle::both));
     d.style = static_cast<doc::DisplayStyle>(style);
-    if (ImGui::BeginTable("toggles", 2)) {
+    // The selected object's own toggles (C, N, I, K); with none selected, the defaults every
+    // object without its own shows (and new objects start with).
+    const doc::Object* sel = ctx.doc.selected();
+    doc::ObjectDisplay od = doc::display_of(ctx.doc.view, ctx.doc.view.selection.object);
+    const doc::ObjectDisplay was = od;
+    ImGui::TextDisabled("%s", sel ? ("Of " + sel->name + ":").c_str() : "Of every object:");
+    const float toggle = std::max(toggle_width("Control points"), toggle_width("Knot curves")) +
+                         ImGui::GetStyle().CellPadding.x * 2;
+    if (ImGui::BeginTable("toggles", columns_that_fit(toggle, 2))) {
         ImGui::TableNextColumn();
-        ImGui::Checkbox("Control points", &d.control_points);
+        ImGui::Checkbox("Control points", &od.control_points);
         ImGui::TableNextColumn();
-        ImGui::Checkbox("Control net", &d.control_net);
+        ImGui::Checkbox("Control net", &od.control_net);
         ImGui::TableNextColumn();
-        ImGui::Checkbox("Point IDs", &d.point_ids);
+        ImGui::Checkbox("Point IDs", &od.point_ids);
+        ImGui::TableNextColumn();
+        ImGui::Checkbox("Knot curves", &od.knot_curves);
         ImGui::TableNextColumn();
         ImGui::Checkbox("S(u,v)", &d.indicator_point);
-        ImGui::TableNextColumn();
-        ImGui::Checkbox("Knot curves", &d.knot_curves);
         ImGui::EndTable();
+    }
+    if (od != was) {
+        if (sel) {
+            ctx.doc.view.object_display[sel->id] = od;
+        } else {
+            d.control_points = od.control_points;
+            d.control_net = od.control_net;
+            d.point_ids = od.point_ids;
+            d.knot_curves = od.knot_curves;
+        }
     }
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
     ImGui::SliderInt("Density", &d.density, 4, 64, "%d per span");
@@ -99,7 +124,14 @@ void draw_control_panel(AppContext& ctx) {
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Each interior knot curve in the colour of the continuity C(p - m) "
                           "it carries:\nC1 yellow, C0 orange, C-1 red");
-    if (ctx.ui.knot_continuity) d.knot_curves = true;
+    if (ctx.ui.knot_continuity &&
+        !doc::display_of(ctx.doc.view, ctx.doc.view.selection.object).knot_curves) {
+        if (sel)
+            ctx.doc.view.object_display.try_emplace(sel->id, doc::defaults_of(d))
+                .first->second.knot_curves = true;
+        else
+            d.knot_curves = true;
+    }
     ImGui::Checkbox("Borders by continuity", &ctx.ui.border_continuity);
     report_item("display/border_continuity");
     if (ImGui::IsItemHovered())

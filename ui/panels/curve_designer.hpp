@@ -8,15 +8,15 @@
 #include "core/doc/document.hpp"
 #include "ui/app_context.hpp"
 #include "ui/view/canvas_map.hpp"
+#include "ui/view/picture.hpp"
 
 namespace isoparm::ui::curve_designer {
 
 // The canvas plane of a curve: its own plane, or for a 3D curve the chosen view (0 xy, 1 xz,
 // 2 yz, as ui::plane_axes).
 int canvas_plane(const AppContext& ctx, const doc::CurveObject& c);
-
-// The curve's parameter at the designer's normalised trace position.
-double trace_param(const AppContext& ctx, const geom::Curve& c);
+// The canvas framed afresh around the curve: its zoom and pan undone (the Fit button).
+void fit_curve_canvas(CurveDesignerState& cd);
 
 // The plane canvas: control polygon with labels P0..Pn, the curve, its knot points, de Boor's
 // construction at the trace parameter; click to append, Ctrl+click a leg to insert, drag to
@@ -38,8 +38,8 @@ void basis_plot(AppContext& ctx, const doc::CurveObject& c, int selected, const 
 // canvas); curvature against t over the domain, the trace parameter marked, kappa and tau
 // written.
 void analysis_toggles(AppContext& ctx);
-void draw_curve_analysis(const AppContext& ctx, const geom::Curve& c, double t, ImDrawList* dl,
-                         const std::function<ImVec2(const glm::dvec3&)>& px);
+void draw_curve_analysis(const AppContext& ctx, const geom::Curve& c, double t, Picture& pic,
+                         const std::function<glm::vec2(const glm::dvec3&)>& px);
 void curvature_plot(AppContext& ctx, const geom::Curve& c, const Rect& box);
 
 // Colours shared by the pieces.

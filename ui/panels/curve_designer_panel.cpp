@@ -12,14 +12,19 @@
 #include "core/geom/basis.hpp"
 #include "core/geom/deboor.hpp"
 #include "core/geom/knots.hpp"
+#include "core/geom/status.hpp"
+#include "ui/modeler_actions.hpp"
 #include "ui/panels/curve_designer.hpp"
 #include "ui/panels/enum_combo.hpp"
 #include "ui/panels/flow.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/panels/picture_draw.hpp"
+#include "ui/panels/stage_controls.hpp"
 #include "ui/theme.hpp"
 #include "ui/toolbox_actions.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/doc_access.hpp"
+#include "ui/view/text_wrap.hpp"
 
 namespace isoparm::ui {
 
@@ -35,13 +40,13 @@ const doc::CurveObject* selected_curve(const AppContext& ctx, const doc::Object*
 void warn_text(const AppContext& ctx, const std::string& text) {
     const ImVec4 warn = ctx.ui.presentation ? ImVec4(0.7f, 0.25f, 0, 1) : ImVec4(1, 0.72f, 0.3f, 1);
     ImGui::PushStyleColor(ImGuiCol_Text, warn);
-    ImGui::TextWrapped("%s", text.c_str());
+    text_wrapped("%s", text.c_str());
     ImGui::PopStyleColor();
 }
 
 void hint_text(const char* text) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("%s", text);
+    text_wrapped("%s", text);
     ImGui::PopStyleColor();
 }
 
@@ -112,9 +117,9 @@ void point_controls(AppContext& ctx, const doc::Object& obj, const doc::CurveObj
                                     : std::max(ImGui::GetContentRegionAvail().x - label_w, whole));
         double value = p[a];
         if (ImGui::InputDouble(labels[a], &value, 0, 0, "%.3f") && std::isfinite(value) &&
-            value != p[a]) {
+            value != p[a] && may_edit_points(ctx, obj.id)) {
             p[a] = value;
-            if (!ctx.execute(doc::move_curve_point(obj.id, i, p)))
+            if (!ctx.execute(point_move_command(ctx, obj.id, i, -1, p)))
                 ctx.ui.curve.message = ctx.ui.status;
         }
         if (ImGui::IsItemDeactivatedAfterEdit()) ctx.seal();
@@ -191,9 +196,7 @@ void degree_and_knots(AppContext& ctx, const doc::Object& obj, const doc::CurveO
     // The knot vector in full, as the textbooks write it.
     std::string knots = "U = [";
     for (std::size_t q = 0; q < g.knots.size(); ++q) {
-        char buf[32];
-        std::snprintf(buf, sizeof buf, "%s%.3g", q ? ", " : "", g.knots[q]);
-        knots += buf;
+        knots += (q ? ", " : "") + geom::format_short(g.knots[q]);
     }
     knots += "]";
     hint_text(knots.c_str());
@@ -203,15 +206,18 @@ void degree_and_knots(AppContext& ctx, const doc::Object& obj, const doc::CurveO
 void refine_controls(AppContext& ctx, const doc::Object& obj, const doc::CurveObject& c) {
     CurveDesignerState& cd = ctx.ui.curve;
     const geom::Curve& g = c.curve;
-    const double t = trace_param(ctx, g);
-    char label[64];
-    std::snprintf(label, sizeof label, "t = %.4g", t);
-    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+    const double t = ctx.ui.curve.trace_param(g);
+    const std::string label = "t = " + geom::format_short(t);
+    // The slider no narrower than its value; the check box and the button wrap onto the next
+    // line where the column is narrow ("Insert knot" was cut on a projector).
+    ImGui::SetNextItemWidth(
+        std::max(ImGui::GetContentRegionAvail().x * 0.5f,
+                 ImGui::CalcTextSize(label.c_str()).x + ImGui::GetStyle().FramePadding.x * 4));
     const double zero = 0, one = 1;
-    ImGui::SliderScalar("##trace_t", ImGuiDataType_Double, &cd.trace_t, &zero, &one, label);
-    ImGui::SameLine();
+    ImGui::SliderScalar("##trace_t", ImGuiDataType_Double, &cd.trace_t, &zero, &one, label.c_str());
+    same_line_if_fits(toggle_width("de Boor"));
     ImGui::Checkbox("de Boor", &cd.trace);
-    ImGui::SameLine();
+    same_line_if_fits(button_width("Insert knot"));
     if (command_button(ctx, "Insert knot", *doc::insert_knot(obj.id, geom::Dir::u, t),
                        "Knot insertion at t (Boehm, P&T A5.1): one more point, same shape."))
         run(ctx, doc::insert_knot(obj.id, geom::Dir::u, t));
@@ -221,10 +227,11 @@ void refine_controls(AppContext& ctx, const doc::Object& obj, const doc::CurveOb
         char text[160];
         if (p)
             std::snprintf(text, sizeof text,
-                          "t in [u%d, u%d): de Boor blends P%d..P%d in %d levels; C(t) = (%.3f, "
-                          "%.3f, %.3f)",
+                          "t in [u%d, u%d): de Boor blends P%d..P%d in %d levels; C(t) = (%s, "
+                          "%s, %s)",
                           tri.span, tri.span + 1, tri.first_index, tri.first_index + g.degree,
-                          g.degree, p->x, p->y, p->z);
+                          g.degree, geom::format_short(p->x).c_str(),
+                          geom::format_short(p->y).c_str(), geom::format_short(p->z).c_str());
         else
             std::snprintf(text, sizeof text, "C(t) does not exist at t (zero weight sum)");
         hint_text(text);
@@ -314,38 +321,48 @@ void primitives(AppContext& ctx, const doc::CurveObject* c) {
     hint_text("exact rational quadratics (P&T A7.1)");
 }
 
-} // namespace
-
-void draw_curve_designer_panel(AppContext& ctx) {
+// Everything under the canvas (beside it on the stage): hints, the selected point, degree and
+// knots, the knot strip, refinement, analysis, the toolbox, curvature and basis plots.
+void curve_controls(AppContext& ctx, std::uint64_t id) {
     CurveDesignerState& cd = ctx.ui.curve;
+    const float k = ctx.ui.scale();
     const doc::Object* obj = nullptr;
     const doc::CurveObject* c = selected_curve(ctx, &obj);
-    if (!c) {
-        ImGui::TextWrapped("Select a curve (Surface > Select) or make one (Curve > New curve).");
-        return;
-    }
-    const std::uint64_t id = obj->id;
-    const float k = ctx.ui.scale();
+    if (!c) return;
+    hint_text("Click: add a point   Ctrl+click a leg: insert   drag: move (Alt: no snap)   Del: "
+              "delete   wheel: zoom   right-drag: pan");
+    // Points before the first and after the last (a leg's insertion cannot reach the ends), and
+    // the canvas framed again.
     {
         const geom::Curve& g = c->curve;
-        ImGui::TextWrapped("%s: %s, degree %d, %d points", obj->name.c_str(), geom::name_of(g.type),
-                           g.degree, g.count());
+        const int n = g.count();
+        const glm::dvec3 first = g.points.front(), last = g.points.back();
+        const glm::dvec3 before =
+            n > 1 ? first + (first - g.points[1]) : first - glm::dvec3(0.5, 0, 0);
+        const glm::dvec3 after = n > 1 ? last + (last - g.points[static_cast<std::size_t>(n - 2)])
+                                       : last + glm::dvec3(0.5, 0, 0);
+        if (command_button(ctx, "Add before P0", *doc::insert_curve_point(id, 0, before),
+                           "A new first point, continuing the polygon's first leg backwards") &&
+            may_edit_points(ctx, id) && run(ctx, doc::insert_curve_point(id, 0, before)))
+            ctx.doc.view.selection = {id, 0, -1};
+        report_item("curve/add_first");
+        ImGui::SameLine();
+        const std::string last_label = "Add after P" + std::to_string(n - 1);
+        if (command_button(ctx, last_label.c_str(), *doc::insert_curve_point(id, n, after),
+                           "A new last point, continuing the polygon's last leg") &&
+            may_edit_points(ctx, id) && run(ctx, doc::insert_curve_point(id, n, after)))
+            ctx.doc.view.selection = {id, n, -1};
+        report_item("curve/add_last");
+        ImGui::SameLine();
+        if (ImGui::Button("Fit")) fit_curve_canvas(cd);
+        report_item("curve/fit");
     }
-    plane_row(ctx, *obj, *c);
     if (!(c = selected_curve(ctx, &obj))) return;
-
-    // The canvas: square while the panel allows, leaving room for the controls below.
-    const ImVec2 avail = ImGui::GetContentRegionAvail();
-    const float side_h = std::clamp(avail.y * 0.62f, 120 * k, avail.x);
-    const ImVec2 origin = ImGui::GetCursorScreenPos();
-    plane_canvas(ctx, *obj, *c, {origin.x, origin.y, avail.x, side_h});
-    ImGui::SetCursorScreenPos(
-        ImVec2(origin.x, origin.y + side_h + ImGui::GetStyle().ItemSpacing.y));
-    hint_text("Click: add a point   Ctrl+click a leg: insert   drag: move   Del: delete");
     if (!cd.message.empty()) warn_text(ctx, cd.message);
 
     // Delete key: the selected point of this curve, unless a field has the keyboard.
-    if (!ImGui::GetIO().WantTextInput && ImGui::IsWindowFocused() &&
+    if (!ImGui::GetIO().WantTextInput &&
+        ImGui::IsWindowFocused(ImGuiFocusedFlags_RootAndChildWindows) &&
         ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Delete), false) &&
         ctx.doc.view.selection.object == id && ctx.doc.view.selection.has_point())
         run(ctx, doc::delete_curve_point(id, ctx.doc.view.selection.i));
@@ -377,14 +394,14 @@ void draw_curve_designer_panel(AppContext& ctx) {
         basis_plot(ctx, *c, sel, {p.x, p.y, ImGui::GetContentRegionAvail().x, 90 * k});
         // Partition of unity at t: the functions sum to 1 wherever the curve exists.
         const auto& g = c->curve;
-        const double t = trace_param(ctx, g);
+        const double t = ctx.ui.curve.trace_param(g);
         if (const auto r = geom::rational_basis(g.knots, g.degree, g.weights, t)) {
             double sum = 0;
             for (double v : (*r)[0]) sum += v;
-            char text[96];
-            std::snprintf(text, sizeof text, "Sum of all %s at t = %.4g: %.6f",
-                          geom::is_rational(g.type) ? "R_i" : "N_i", t, sum);
-            hint_text(text);
+            const std::string text =
+                std::string("Sum of all ") + (geom::is_rational(g.type) ? "R_i" : "N_i") +
+                " at t = " + geom::format_short(t) + ": " + geom::format_short(sum, 7);
+            hint_text(text.c_str());
         }
         if (sel >= 0) {
             hint_text(("The selected point's function is non-zero on [u" + std::to_string(sel) +
@@ -394,6 +411,58 @@ void draw_curve_designer_panel(AppContext& ctx) {
         }
     }
     if (ImGui::CollapsingHeader("Primitives")) primitives(ctx, c);
+}
+
+} // namespace
+
+void draw_curve_designer_panel(AppContext& ctx) {
+    note_hovered_view(ctx, StageView::curve);
+    CurveDesignerState& cd = ctx.ui.curve;
+    const doc::Object* obj = nullptr;
+    const doc::CurveObject* c = selected_curve(ctx, &obj);
+    if (!c) {
+        text_wrapped("Select a curve (Surface > Select) or make one (Curve > New curve).");
+        return;
+    }
+    const std::uint64_t id = obj->id;
+    const float k = ctx.ui.scale();
+    const bool staged = on_stage(ctx, StageView::curve);
+    {
+        const geom::Curve& g = c->curve;
+        const std::string title = obj->name + ": " + geom::name_of(g.type) + ", degree " +
+                                  std::to_string(g.degree) + ", " + std::to_string(g.count()) +
+                                  " points";
+        const float room =
+            ImGui::GetContentRegionAvail().x -
+            (staged ? 0.f : ImGui::GetFrameHeight() + ImGui::GetStyle().ItemSpacing.x);
+        const std::string shown = shortened(title, room, imgui_measure());
+        ImGui::AlignTextToFramePadding();
+        ImGui::TextUnformatted(shown.c_str());
+        if (shown != title && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", title.c_str());
+        if (!staged) stage_button(ctx, StageView::curve);
+    }
+    plane_row(ctx, *obj, *c);
+    if (!(c = selected_curve(ctx, &obj))) return;
+
+    // The canvas: square while the panel allows, leaving room for the controls below; on the
+    // stage it takes the height, the controls beside it.
+    const ImVec2 avail = ImGui::GetContentRegionAvail();
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    if (staged) {
+        const float w = std::max(std::min(avail.x * 0.64f, avail.x - 260 * k), avail.x * 0.5f);
+        plane_canvas(ctx, *obj, *c, {origin.x, origin.y, w, avail.y});
+        ImGui::SetCursorScreenPos(ImVec2(origin.x + w + 12 * k, origin.y));
+        if (ImGui::BeginChild("##curve_controls", ImVec2(avail.x - w - 12 * k, avail.y)))
+            curve_controls(ctx, id);
+        ImGui::EndChild();
+        return;
+    }
+    const float side_h = std::clamp(avail.y * 0.62f, 120 * k, avail.x);
+    plane_canvas(ctx, *obj, *c, {origin.x, origin.y, avail.x, side_h});
+    ImGui::SetCursorScreenPos(
+        ImVec2(origin.x, origin.y + side_h + ImGui::GetStyle().ItemSpacing.y));
+    curve_controls(ctx, id);
+    (void)cd;
 }
 
 } // namespace isoparm::ui

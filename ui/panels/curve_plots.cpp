@@ -10,17 +10,17 @@
 #include "core/doc/commands_curve.hpp"
 #include "core/geom/basis.hpp"
 #include "core/geom/knots.hpp"
+#include "core/geom/status.hpp"
 #include "core/geom/tessellate.hpp"
 #include "ui/panels/curve_designer.hpp"
+#include "ui/panels/picture_draw.hpp"
 
 namespace isoparm::ui::curve_designer {
 
 namespace {
 
 std::string short_number(double x) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", x);
-    return buf;
+    return geom::format_short(x, 3);
 }
 
 // Horizontal pixel of a normalised position inside a box with side padding.
@@ -99,43 +99,40 @@ void knot_strip(AppContext& ctx, const doc::Object& obj, const doc::CurveObject&
     if (!cur) return;
     const geom::Curve& h = *cur;
     const std::vector<KnotTick> now_ticks = knot_ticks(h.knots, h.degree, h.count());
-    ImDrawList* dl = ImGui::GetWindowDrawList();
     const bool light = ctx.ui.presentation;
-    const ImVec2 a(strip.x, strip.y), b(strip.x + strip.w, strip.y + strip.h);
-    dl->AddRectFilled(a, b, light ? IM_COL32(250, 250, 250, 255) : IM_COL32(26, 28, 34, 255));
+    Picture pic;
+    pic.view = "curve_knots";
+    pic.frame = strip;
+    pic.background = light ? rgba8(250, 250, 250) : rgba8(26, 28, 34);
+    pic.border = ImGui::GetColorU32(ImGuiCol_Border);
+    pic.border_width = k;
     const float base = strip.y + strip.h * 0.42f;
-    dl->AddLine(ImVec2(x_at(strip, pad, 0), base), ImVec2(x_at(strip, pad, 1), base),
-                ImGui::GetColorU32(ImGuiCol_TextDisabled), 1.5f * k);
-    std::vector<double> label_px;
-    for (const KnotTick& t : now_ticks) label_px.push_back(x_at(strip, pad, t.position));
-    const std::vector<bool> keep = thin_labels(label_px, 34 * k);
-    const ImU32 knot_col = rgba(ctx.doc.colors.knot_curves);
-    const ImU32 text_col = ImGui::GetColorU32(ImGuiCol_Text);
+    pic.line({x_at(strip, pad, 0), base}, {x_at(strip, pad, 1), base},
+             ImGui::GetColorU32(ImGuiCol_TextDisabled), 1.5f * k);
+    const Rgba8 knot_col = rgba(ctx.doc.colors.knot_curves);
+    const Rgba8 text_col = ImGui::GetColorU32(ImGuiCol_Text);
     for (std::size_t q = 0; q < now_ticks.size(); ++q) {
         const KnotTick& t = now_ticks[q];
-        const float x = static_cast<float>(label_px[q]);
+        const float x = x_at(strip, pad, t.position);
         const bool dragged =
             cd.drag_knot >= t.first_index && cd.drag_knot < t.first_index + t.multiplicity;
         const float len = (5 + 3 * static_cast<float>(t.multiplicity - 1)) * k;
-        dl->AddLine(ImVec2(x, base - len), ImVec2(x, base + len),
-                    dragged ? IM_COL32(255, 255, 255, 255) : knot_col,
-                    (t.interior && custom ? 2.5f : 1.5f) * k);
-        if (t.multiplicity > 1) {
-            const std::string mult = "x" + std::to_string(t.multiplicity);
-            dl->AddText(ImVec2(x + 2 * k, base - len - ImGui::GetTextLineHeight()), knot_col,
-                        mult.c_str());
-        }
-        if (keep[q]) {
-            const std::string v = short_number(t.value);
-            dl->AddText(ImVec2(x - ImGui::CalcTextSize(v.c_str()).x / 2, base + len + 1 * k),
-                        text_col, v.c_str());
-        }
+        pic.line({x, base - len}, {x, base + len}, dragged ? rgba8(255, 255, 255) : knot_col,
+                 (t.interior && custom ? 2.5f : 1.5f) * k);
+        // The ends and a dragged knot first; the placer drops values that would touch.
+        const int priority = dragged ? 200 : (q == 0 || q + 1 == now_ticks.size()) ? 150 : 100;
+        if (t.multiplicity > 1)
+            pic.fixed_label({x + 2 * k, base - len}, "x" + std::to_string(t.multiplicity), knot_col,
+                            LabelAlign::bottom_left, priority - 1);
+        pic.fixed_label({x, base + len + 1 * k}, short_number(t.value), text_col,
+                        LabelAlign::top_center, priority)
+            .tooltip = "knot " + geom::format_number(t.value);
     }
     // The parameter t of the trace and the basis plot.
     const float tx = x_at(strip, pad, std::clamp(cd.trace_t, 0.0, 1.0));
-    dl->AddTriangleFilled(ImVec2(tx, base - 2 * k), ImVec2(tx - 5 * k, base - 10 * k),
-                          ImVec2(tx + 5 * k, base - 10 * k), IM_COL32(235, 60, 60, 255));
-    dl->AddRect(a, b, ImGui::GetColorU32(ImGuiCol_Border), 0, 0, k);
+    pic.polygon({{tx, base - 2 * k}, {tx + 5 * k, base - 10 * k}, {tx - 5 * k, base - 10 * k}},
+                rgba8(235, 60, 60));
+    draw_picture(pic);
     if (hovered)
         ImGui::SetTooltip("%s", custom ? "Drag a knot (custom mode); press elsewhere to move t"
                                        : "Press or drag to move the parameter t");
@@ -146,10 +143,13 @@ void basis_plot(AppContext& ctx, const doc::CurveObject& c, int selected, const 
     const geom::Curve& g = c.curve;
     const int p = g.degree, n = g.count();
     const bool rational = geom::is_rational(g.type);
-    ImDrawList* dl = ImGui::GetWindowDrawList();
     const bool light = ctx.ui.presentation;
-    dl->AddRectFilled(ImVec2(box.x, box.y), ImVec2(box.x + box.w, box.y + box.h),
-                      light ? IM_COL32(250, 250, 250, 255) : IM_COL32(26, 28, 34, 255));
+    Picture pic;
+    pic.view = "curve_basis";
+    pic.frame = box;
+    pic.background = light ? rgba8(250, 250, 250) : rgba8(26, 28, 34);
+    pic.border = ImGui::GetColorU32(ImGuiCol_Border);
+    pic.border_width = k;
     const geom::Interval d = geom::domain(g);
     const std::vector<double> ts = geom::uniform_params(d.lo, d.hi, 201);
     std::vector<std::vector<double>> values; // values[sample][i]; empty where undefined
@@ -164,44 +164,41 @@ void basis_plot(AppContext& ctx, const doc::CurveObject& c, int selected, const 
         for (double v : values.back()) lo = std::min(lo, v), hi = std::max(hi, v);
     }
     const float pad = 12 * k; // the knot strip's padding, so the parameter lines up
-    const float top = box.y + 4 * k, h = box.h - 8 * k;
+    const float line_h = ImGui::GetTextLineHeight();
+    const float top = box.y + 6 * k + line_h, h = box.h - 10 * k - line_h;
     auto pt = [&](std::size_t sample, double y) {
-        return ImVec2(
+        return glm::vec2(
             x_at(box, pad, static_cast<double>(sample) / static_cast<double>(ts.size() - 1)),
             top + h * static_cast<float>((hi - y) / (hi - lo)));
     };
     if (lo < 0) // the zero line, when negative weights push a function below it
-        dl->AddLine(pt(0, 0), pt(ts.size() - 1, 0), ImGui::GetColorU32(ImGuiCol_TextDisabled));
-    const ImU32 faint = light ? IM_COL32(160, 160, 160, 255) : IM_COL32(110, 115, 135, 255);
-    std::vector<ImVec2> line;
-    auto curve = [&](int f, ImU32 color, float width) {
-        line.clear();
+        pic.line(pt(0, 0), pt(ts.size() - 1, 0), ImGui::GetColorU32(ImGuiCol_TextDisabled));
+    const Rgba8 faint = light ? rgba8(160, 160, 160) : rgba8(110, 115, 135);
+    auto curve = [&](int f, Rgba8 color, float width) {
+        std::vector<glm::vec2> line;
         for (std::size_t s = 0; s < ts.size(); ++s) {
             if (values[s].empty()) {
-                if (line.size() > 1)
-                    dl->AddPolyline(line.data(), static_cast<int>(line.size()), color, 0, width);
+                pic.polyline(std::move(line), color, width);
                 line.clear();
                 continue;
             }
             line.push_back(pt(s, values[s][static_cast<std::size_t>(f)]));
         }
-        if (line.size() > 1)
-            dl->AddPolyline(line.data(), static_cast<int>(line.size()), color, 0, width);
+        pic.polyline(std::move(line), color, width);
     };
     for (int f = 0; f < n; ++f)
         if (f != selected) curve(f, faint, 1 * k);
     if (selected >= 0 && selected < n)
         curve(selected, rgba(ctx.doc.colors.selected_point), 2.5f * k);
     const float x = x_at(box, pad, std::clamp(ctx.ui.curve.trace_t, 0.0, 1.0));
-    dl->AddLine(ImVec2(x, box.y), ImVec2(x, box.y + box.h), IM_COL32(235, 60, 60, 230), 1.5f * k);
+    pic.line({x, box.y}, {x, box.y + box.h}, rgba8(235, 60, 60, 230), 1.5f * k);
     std::string name = selected >= 0
                            ? std::string(rational ? "R" : "N") + std::to_string(selected) + "(t)"
                            : std::string(rational ? "R_i(t)" : "N_i(t)");
     name += ", degree " + std::to_string(p);
-    dl->AddText(ImVec2(box.x + 4 * k, box.y + 2 * k), ImGui::GetColorU32(ImGuiCol_TextDisabled),
-                name.c_str());
-    dl->AddRect(ImVec2(box.x, box.y), ImVec2(box.x + box.w, box.y + box.h),
-                ImGui::GetColorU32(ImGuiCol_Border), 0, 0, k);
+    pic.fixed_label({box.x + 4 * k, box.y + 2 * k}, name, ImGui::GetColorU32(ImGuiCol_TextDisabled),
+                    LabelAlign::top_left);
+    draw_picture(pic);
     ImGui::SetCursorScreenPos(ImVec2(box.x, box.y));
     ImGui::Dummy(ImVec2(box.w, box.h));
 }

@@ -6,9 +6,12 @@
 #include <string>
 
 #include "core/geom/deboor.hpp"
+#include "core/geom/status.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/panels/stage_controls.hpp"
 #include "ui/panels/triangle_panels.hpp"
 #include "ui/surface_actions.hpp"
+#include "ui/theme.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/deboor_overlay.hpp"
 #include "ui/view/doc_access.hpp"
@@ -18,16 +21,12 @@ namespace isoparm::ui {
 namespace {
 
 std::string point_text(const geom::HPoint& h, bool rational) {
-    char buf[128];
+    auto f = [](double x) { return geom::format_short(x); };
     if (const auto p = geom::DeBoorTriangle::cartesian(h)) {
-        if (rational)
-            std::snprintf(buf, sizeof buf, "(%.4g, %.4g, %.4g) w %.4g", p->x, p->y, p->z, h.w);
-        else
-            std::snprintf(buf, sizeof buf, "(%.4g, %.4g, %.4g)", p->x, p->y, p->z);
-    } else {
-        std::snprintf(buf, sizeof buf, "at infinity: (%.4g, %.4g, %.4g) w 0", h.x, h.y, h.z);
+        const std::string xyz = "(" + f(p->x) + ", " + f(p->y) + ", " + f(p->z) + ")";
+        return rational ? xyz + " w " + f(h.w) : xyz;
     }
-    return buf;
+    return "at infinity: (" + f(h.x) + ", " + f(h.y) + ", " + f(h.z) + ") w 0";
 }
 
 ImVec4 level_color(bool u_stage, int level) {
@@ -51,8 +50,11 @@ void triangle_lines(const geom::DeBoorTriangle& t, bool u_stage, int row, int up
         for (std::size_t i = 0; i < t.levels[k].size(); ++i) {
             const int index = t.first_index + static_cast<int>(i) + level;
             const std::string name = deboor_point_name(u_stage, level, index, row);
-            ImGui::TextColored(c, "%s%-9s %s", mark, name.c_str(),
-                               point_text(t.levels[k][i], rational).c_str());
+            // Wrapped at spaces in a narrow column (never cut, a number never split).
+            ImGui::PushStyleColor(ImGuiCol_Text, c);
+            text_wrapped("%s%-9s %s", mark, name.c_str(),
+                         point_text(t.levels[k][i], rational).c_str());
+            ImGui::PopStyleColor();
         }
     }
 }
@@ -60,18 +62,10 @@ void triangle_lines(const geom::DeBoorTriangle& t, bool u_stage, int row, int up
 } // namespace
 
 void draw_deboor_panel(AppContext& ctx) {
-    // A selected triangular patch has its own version of the panel (Farin ch. 17).
-    const doc::Object* triangle = nullptr;
-    if (const geom::TrianglePatch* t = selected_triangle(ctx.doc, &triangle)) {
-        draw_triangle_casteljau(ctx, *triangle, *t);
-        return;
-    }
     const doc::Object* obj = nullptr;
-    const geom::Surface* s = current_surface(ctx.doc, &obj);
-    if (!s) {
-        ImGui::TextWrapped("No surface.");
-        return;
-    }
+    const geom::Surface* s =
+        teaching_panel_surface(ctx, StageView::deboor, draw_triangle_casteljau, &obj);
+    if (!s) return;
     const glm::dvec2 uv = indicator_params(ctx.doc, *obj);
     const geom::DeBoorSurfaceTrace trace = geom::deboor_surface(*s, uv.x, uv.y);
     const int p_u = s->degree_u, p_v = s->degree_v;
@@ -98,21 +92,23 @@ void draw_deboor_panel(AppContext& ctx) {
     deboor_step_buttons(ctx, last);
     const DeBoorStepInfo info = deboor_step_info(player.step, p_u, p_v);
     if (player.step >= 0)
-        ImGui::TextWrapped("Step %d of %d: %s", player.step, last, info.text.c_str());
+        text_wrapped("Step %d of %d: %s", player.step, last, info.text.c_str());
     else
         ImGui::Text("All %d steps shown", last);
 
     if (const auto p = trace.point()) {
-        ImGui::TextWrapped("S(%.4g, %.4g) = (%.6g, %.6g, %.6g)", uv.x, uv.y, p->x, p->y, p->z);
+        text_wrapped("S(%s, %s) = (%s, %s, %s)", geom::format_short(uv.x).c_str(),
+                     geom::format_short(uv.y).c_str(), geom::format_short(p->x).c_str(),
+                     geom::format_short(p->y).c_str(), geom::format_short(p->z).c_str());
     } else {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.6f, 0.2f, 1));
-        ImGui::TextWrapped("S(%.4g, %.4g) does not exist: the weights sum to zero here", uv.x,
-                           uv.y);
+        text_wrapped("S(%s, %s) does not exist: the weights sum to zero here",
+                     geom::format_short(uv.x).c_str(), geom::format_short(uv.y).c_str());
         ImGui::PopStyleColor();
     }
     if (rational) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-        ImGui::TextWrapped("Rational: computed on (wx, wy, wz, w), shown as points and weights");
+        text_wrapped("Rational: computed on (wx, wy, wz, w), shown as points and weights");
         ImGui::PopStyleColor();
     }
 
@@ -121,7 +117,8 @@ void draw_deboor_panel(AppContext& ctx) {
     ImGui::Separator();
     ImGui::BeginChild("##deboor_values");
     char title[128];
-    std::snprintf(title, sizeof title, "u-stage: each row curve at u = %.4g (span %d)", uv.x,
+    std::snprintf(title, sizeof title, "u-stage: the rows at u = %s (span %d)",
+                  geom::format_short(uv.x).c_str(),
                   trace.u_stage.empty() ? 0 : trace.u_stage.front().span);
     if (ImGui::CollapsingHeader(title, ImGuiTreeNodeFlags_DefaultOpen)) {
         for (std::size_t j = 0; j < trace.u_stage.size(); ++j) {
@@ -138,8 +135,8 @@ void draw_deboor_panel(AppContext& ctx) {
             }
         }
     }
-    std::snprintf(title, sizeof title, "v-stage: the column curve at v = %.4g (span %d)", uv.y,
-                  trace.v_stage.span);
+    std::snprintf(title, sizeof title, "v-stage: the column at v = %s (span %d)",
+                  geom::format_short(uv.y).c_str(), trace.v_stage.span);
     if (ImGui::CollapsingHeader(title, ImGuiTreeNodeFlags_DefaultOpen))
         triangle_lines(trace.v_stage, false, -1, upto - p_u - 1, rational, stepping,
                        player.step > p_u ? player.step - p_u - 1 : -1);

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <imgui.h>
 #include <imgui_stdlib.h>
+#include <iterator>
 #include <string>
 #include <system_error>
 #include <tuple>
@@ -11,14 +12,18 @@
 #include "core/doc/commands.hpp"
 #include "core/doc/placement.hpp"
 #include "ui/actions.hpp"
+#include "ui/course_actions.hpp"
 #include "ui/exchange_actions.hpp"
+#include "ui/fit_actions.hpp"
 #include "ui/panels/enum_combo.hpp"
-#include "ui/panels/fit_panel.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/platform/files.hpp"
 #include "ui/recovery.hpp"
 #include "ui/theme.hpp"
 #include "ui/toolbox_actions.hpp"
 #include "ui/ui_report.hpp"
+#include "ui/uploads.hpp"
+#include "ui/view/doc_access.hpp"
 
 namespace isoparm::ui {
 
@@ -31,10 +36,7 @@ bool escape_pressed() {
 }
 
 void center_next(float w_units, float scale) {
-    const ImGuiViewport* vp = ImGui::GetMainViewport();
-    ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x * 0.5f, vp->Pos.y + vp->Size.y * 0.5f),
-                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    if (w_units > 0) ImGui::SetNextWindowSize(ImVec2(w_units * scale, 0));
+    center_next_window(w_units > 0 ? w_units * scale : 0);
 }
 
 std::string new_surface_error(const NewSurfaceForm& f) {
@@ -63,25 +65,31 @@ void new_surface_dialog(AppContext& ctx) {
     }
     center_next(360, ctx.ui.scale());
     if (!ImGui::BeginPopupModal("New surface", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-    ImGui::TextWrapped("A flat grid of control points in the xy-plane; shape it by moving points.");
+    text_wrapped("A flat grid of control points in the xy-plane; shape it by moving points.");
     auto type = static_cast<geom::SplineType>(f.type);
     if (enum_combo("Type", type, ItemCase::capitalized)) f.type = static_cast<int>(type);
+    report_item("new_surface/type");
     const bool bezier = f.type <= 1;
     ImGui::InputInt("Rows (u)", &f.rows);
     ImGui::InputInt("Columns (v)", &f.cols);
     f.rows = std::clamp(f.rows, 2, 64);
     f.cols = std::clamp(f.cols, 2, 64);
-    if (bezier) {
-        // A Bezier patch's degree follows from its point count.
-        f.degree_u = f.rows - 1;
-        f.degree_v = f.cols - 1;
-    }
+    // A Bezier patch's degree follows from its point count; the B-spline degrees are kept for
+    // when the type changes back (the dialog used to keep rows - 1 then).
+    f.degree_u = bezier ? f.rows - 1 : f.spline_degree_u;
+    f.degree_v = bezier ? f.cols - 1 : f.spline_degree_v;
     ImGui::BeginDisabled(bezier);
     ImGui::InputInt("Degree in u", &f.degree_u);
     ImGui::InputInt("Degree in v", &f.degree_v);
     ImGui::EndDisabled();
     f.degree_u = std::clamp(f.degree_u, 1, 63);
     f.degree_v = std::clamp(f.degree_v, 1, 63);
+    if (!bezier) {
+        f.spline_degree_u = f.degree_u;
+        f.spline_degree_v = f.degree_v;
+    }
+    report_fact("new_surface/degree_u", f.degree_u);
+    report_fact("new_surface/degree_v", f.degree_v);
     const std::string err = new_surface_error(f);
     if (!err.empty()) ImGui::TextColored(error_text_color(), "%s", err.c_str());
     ImGui::BeginDisabled(!err.empty());
@@ -89,10 +97,7 @@ void new_surface_dialog(AppContext& ctx) {
     report_item("new_surface/create");
     if (create) {
         doc::Object o;
-        int n = 1;
-        for (const doc::Object& x : ctx.doc.objects)
-            n += x.kind() == doc::ObjectKind::surface ? 1 : 0;
-        o.name = "Surface " + std::to_string(n);
+        o.name = fresh_name(ctx.doc, "Surface"); // unique, whatever was deleted or renamed
         o.shape = doc::SurfaceObject{doc::make_planar_grid(f.rows, f.cols, f.degree_u, f.degree_v,
                                                            static_cast<geom::SplineType>(f.type))};
         doc::place_beside_scene(ctx.doc, o.shape);
@@ -133,32 +138,53 @@ std::vector<Entry> list_directory(const std::string& dir, bool exchange = false)
     return out;
 }
 
-void file_dialog(AppContext& ctx) {
-    FileDialog& fd = ctx.ui.file_dialog;
-    // A stopped recording is saved as a script; another scene opened while recording asks too.
-    if (ctx.ui.offer_recording_save && fd.mode == FileDialog::Mode::closed) {
-        ctx.ui.offer_recording_save = false;
-        request_stop_recording(ctx);
-    }
-    const bool recording = fd.mode == FileDialog::Mode::save_recording;
-    const bool lesson = fd.mode == FileDialog::Mode::open_lesson;
-    const bool points = fd.mode == FileDialog::Mode::load_points;
-    const bool saving = fd.mode == FileDialog::Mode::save || recording;
-    const bool exporting = fd.mode == FileDialog::Mode::export_file;
-    const bool importing = fd.mode == FileDialog::Mode::import_file;
-    const char* title = recording   ? "Save recording as script"
-                        : saving    ? "Save scene as"
-                        : exporting ? "Export visible objects (.step .igs .obj .stl .ply .glb)"
-                        : importing ? "Import curves and surfaces (.step .igs .obj)"
-                        : lesson    ? "Open lesson (a script)"
-                        : points    ? "Load data points (CSV or XYZ)"
-                                    : "Open scene";
-    if (fd.just_opened) {
-        ImGui::OpenPopup(title);
-        fd.just_opened = false;
-    }
-    center_next(560, ctx.ui.scale());
-    if (!ImGui::BeginPopupModal(title, nullptr, 0)) return;
+// What the dialog is for, read once from its mode.
+struct FileDialogKind {
+    bool recording, lesson, points, lesson_out, exercise, saving, exporting, importing;
+
+    explicit FileDialogKind(FileDialog::Mode m)
+        : recording(m == FileDialog::Mode::save_recording),
+          lesson(m == FileDialog::Mode::open_lesson), points(m == FileDialog::Mode::load_points),
+          lesson_out(m == FileDialog::Mode::save_lesson),
+          exercise(m == FileDialog::Mode::open_exercise),
+          saving(m == FileDialog::Mode::save || recording || lesson_out),
+          exporting(m == FileDialog::Mode::export_file),
+          importing(m == FileDialog::Mode::import_file) {}
+};
+
+// Each mode's title and confirming button, in the order of FileDialog::Mode.
+struct FileDialogText {
+    FileDialog::Mode mode;
+    const char* title;
+    const char* button;
+};
+constexpr FileDialogText file_dialog_texts[] = {
+    {FileDialog::Mode::closed, "Open scene", "Open"},
+    {FileDialog::Mode::open, "Open scene", "Open"},
+    {FileDialog::Mode::save, "Save scene as", "Save"},
+    {FileDialog::Mode::save_recording, "Save recording as script", "Save"},
+    {FileDialog::Mode::open_lesson, "Open lesson (a script)", "Open"},
+    {FileDialog::Mode::load_points, "Load data points (CSV or XYZ)", "Open"},
+    {FileDialog::Mode::export_file, "Export visible objects (.step .igs .obj .stl .ply .glb)",
+     "Export"},
+    {FileDialog::Mode::import_file, "Import curves and surfaces (.step .igs .obj)", "Import"},
+    {FileDialog::Mode::save_lesson, "Save lesson as", "Save"},
+    {FileDialog::Mode::open_exercise, "Open exercise", "Open"},
+};
+static_assert(std::size(file_dialog_texts) ==
+              static_cast<std::size_t>(FileDialog::Mode::open_exercise) + 1);
+static_assert([] {
+    for (std::size_t k = 0; k < std::size(file_dialog_texts); ++k)
+        if (static_cast<std::size_t>(file_dialog_texts[k].mode) != k) return false;
+    return true;
+}());
+
+const FileDialogText& file_dialog_text(FileDialog::Mode m) {
+    return file_dialog_texts[static_cast<std::size_t>(m)];
+}
+
+// The folder line and the list of its files; returns the name double-clicked, if any.
+std::string draw_file_list(FileDialog& fd, bool exchange) {
     if (ImGui::Button("Up")) {
         const fs::path parent = fs::path(fd.directory).parent_path();
         if (!parent.empty()) fd.directory = parent.string();
@@ -169,7 +195,7 @@ void file_dialog(AppContext& ctx) {
     std::string chosen;
     const float list_h = ImGui::GetTextLineHeightWithSpacing() * 14;
     if (ImGui::BeginChild("##files", ImVec2(0, list_h), true)) {
-        for (const Entry& e : list_directory(fd.directory, exporting || importing)) {
+        for (const Entry& e : list_directory(fd.directory, exchange)) {
             const std::string label = e.directory ? e.name + "/" : e.name;
             if (ImGui::Selectable(label.c_str(), !e.directory && e.name == fd.name,
                                   ImGuiSelectableFlags_AllowDoubleClick)) {
@@ -183,15 +209,24 @@ void file_dialog(AppContext& ctx) {
         }
     }
     ImGui::EndChild();
+    return chosen;
+}
+
+// The name field and what is said under it; returns the name if Enter confirmed it.
+std::string draw_name_field(AppContext& ctx, const FileDialogKind& k) {
+    FileDialog& fd = ctx.ui.file_dialog;
     ImGui::SetNextItemWidth(-1);
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere(); // type a name right away
-    const bool enter = ImGui::InputText("##name", &fd.name, ImGuiInputTextFlags_EnterReturnsTrue);
+    // A click on the name selects all of it, so typing replaces it (a file name is most often
+    // typed anew).
+    const bool enter =
+        ImGui::InputText("##name", &fd.name,
+                         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
     report_item("file/name");
-    if (enter && !fd.name.empty()) chosen = fd.name;
     fs::path target = fs::path(fd.directory) / fd.name;
-    if (saving && !fd.name.empty() && target.extension().empty()) target += ".json";
+    if (k.saving && !fd.name.empty() && target.extension().empty()) target += ".json";
     std::error_code ec;
-    if ((saving || exporting) && !fd.name.empty() && fs::exists(target, ec))
+    if ((k.saving || k.exporting) && !fd.name.empty() && fs::exists(target, ec))
         ImGui::TextDisabled("%s exists and will be replaced.", target.filename().string().c_str());
     if (!fd.error.empty()) { // wrapped: a refused export names the extensions it knows
         ImGui::PushTextWrapPos(0.0f);
@@ -199,12 +234,18 @@ void file_dialog(AppContext& ctx) {
         report_item("file/error");
         ImGui::PopTextWrapPos();
     }
-    if (recording && ctx.ui.finished_recording)
+    if (k.recording && ctx.ui.finished_recording)
         ImGui::TextDisabled("A script of %zu steps. Cancel goes on recording; Discard drops it.",
                             ctx.ui.finished_recording->step_count());
+    return enter && !fd.name.empty() ? fd.name : std::string();
+}
+
+// The dialog's buttons; returns true when one of them closes it (the name confirmed goes to
+// `chosen`).
+bool draw_file_buttons(AppContext& ctx, const FileDialogKind& k, std::string& chosen) {
+    FileDialog& fd = ctx.ui.file_dialog;
     ImGui::BeginDisabled(fd.name.empty());
-    if (ImGui::Button(exporting ? "Export" : importing ? "Import" : saving ? "Save" : "Open"))
-        chosen = fd.name;
+    if (ImGui::Button(file_dialog_text(fd.mode).button)) chosen = fd.name;
     ImGui::EndDisabled();
     ImGui::SameLine();
     bool close = false;
@@ -212,41 +253,95 @@ void file_dialog(AppContext& ctx) {
         close = true;
         ctx.ui.pending = {};
         // Nothing is lost: the recording goes on where it stopped.
-        if (recording && ctx.ui.finished_recording && !ctx.recorder)
+        if (k.recording && ctx.ui.finished_recording && !ctx.recorder)
             ctx.recorder = std::move(ctx.ui.finished_recording);
     }
-    if (recording) {
+    if (k.recording) {
         ImGui::SameLine();
         if (ImGui::Button("Discard")) {
             close = true;
             discard_recording(ctx);
         }
     }
-    if (!chosen.empty()) {
-        target = fs::path(fd.directory) / chosen;
-        if (saving && target.extension().empty()) target += ".json";
-        if (exporting || importing) {
-            // A refusal keeps the dialog open with the reason; nothing was written or added.
-            close = exporting ? export_visible_objects(ctx, target.string(), fd.error)
-                              : import_objects(ctx, target.string(), fd.error);
-        } else if (recording) {
-            if (save_recording(ctx, target.string())) close = true;
-        } else if (saving) {
-            if (save_as(ctx, target.string())) {
-                close = true;
-                run_pending(ctx); // e.g. quit after "Save" in the unsaved-changes dialog
-            }
-        } else if (lesson) {
-            close = true;
-            request_open_lesson(ctx, target.string());
-        } else if (points) {
-            // A file that is not points keeps the dialog open with the line at fault.
-            close = load_fit_points(ctx, target.string(), fd.error);
+    // In a browser the list shows the page's own files (the examples, the lessons, uploads);
+    // the user's are reached through the browser's picker, and what is written downloads.
+    if (files::in_browser()) {
+        if (!k.saving && !k.exporting) {
+            ImGui::SameLine();
+            const bool upload = ImGui::Button("From this computer...");
+            report_item("file/upload");
+            if (upload && request_upload_for(fd.mode)) close = true;
         } else {
-            close = true;
-            open_file(ctx, target.string());
+            ImGui::TextDisabled("The browser downloads the file.");
         }
     }
+    return close;
+}
+
+// Does with the file chosen what the dialog was opened for; `close` becomes true when that
+// closes the dialog (a refusal keeps it open with the reason).
+void take_chosen_file(AppContext& ctx, const FileDialogKind& k, const std::string& chosen,
+                      bool& close) {
+    FileDialog& fd = ctx.ui.file_dialog;
+    fs::path target = fs::path(fd.directory) / chosen;
+    if (k.saving && target.extension().empty()) target += ".json";
+    if (k.lesson_out) {
+        close = save_lesson(ctx, target.string());
+    } else if (k.exercise) {
+        close = true;
+        request_open_exercise(ctx, target.string());
+    } else if (k.exporting || k.importing) {
+        // A refusal keeps the dialog open with the reason; nothing was written or added.
+        close = k.exporting ? export_visible_objects(ctx, target.string(), fd.error)
+                            : import_objects(ctx, target.string(), fd.error);
+    } else if (k.recording) {
+        if (save_recording(ctx, target.string())) close = true;
+    } else if (k.saving) {
+        if (save_as(ctx, target.string())) {
+            close = true;
+            run_pending(ctx); // e.g. quit after "Save" in the unsaved-changes dialog
+        }
+    } else if (k.lesson) {
+        close = true;
+        request_open_lesson(ctx, target.string());
+    } else if (k.points) {
+        // A file that is not points keeps the dialog open with the line at fault.
+        close = load_fit_points(ctx, target.string(), fd.error);
+    } else {
+        close = true;
+        open_file(ctx, target.string());
+    }
+}
+
+void file_dialog(AppContext& ctx) {
+    FileDialog& fd = ctx.ui.file_dialog;
+    // A stopped recording is saved as a script; another scene opened while recording asks too.
+    if (ctx.ui.offer_recording_save && fd.mode == FileDialog::Mode::closed) {
+        ctx.ui.offer_recording_save = false;
+        request_stop_recording(ctx);
+    }
+    const FileDialogKind k(fd.mode);
+    const char* title = file_dialog_text(fd.mode).title;
+    if (fd.just_opened) {
+        ImGui::OpenPopup(title);
+        fd.just_opened = false;
+    }
+    center_next(560, ctx.ui.scale());
+    if (!ImGui::BeginPopupModal(title, nullptr, 0)) return;
+    std::string chosen = draw_file_list(fd, k.exporting || k.importing);
+    if (std::string typed = draw_name_field(ctx, k); !typed.empty()) chosen = std::move(typed);
+    bool close = draw_file_buttons(ctx, k, chosen);
+    // A folder typed or picked (a path in the name field too) is opened in the dialog, never
+    // taken as the file: nothing is asked or refused for it.
+    std::error_code ec;
+    if (!chosen.empty() && fs::is_directory(fs::path(fd.directory) / chosen, ec)) {
+        fd.directory = (fs::path(fd.directory) / chosen).lexically_normal().string();
+        if (fd.directory.size() > 1 && fd.directory.back() == '/') fd.directory.pop_back();
+        fd.name.clear();
+        fd.error.clear();
+        chosen.clear();
+    }
+    if (!chosen.empty()) take_chosen_file(ctx, k, chosen, close);
     if (close) {
         fd.mode = FileDialog::Mode::closed;
         ImGui::CloseCurrentPopup();
@@ -254,14 +349,22 @@ void file_dialog(AppContext& ctx) {
     ImGui::EndPopup();
 }
 
-void unsaved_dialog(AppContext& ctx) {
-    if (ctx.ui.confirm_unsaved) {
-        ImGui::OpenPopup("Unsaved changes");
-        ctx.ui.confirm_unsaved = false;
+// Opens the centred modal `title` when `requested` (once), and begins it.
+bool begin_modal(const char* title, bool& requested, float w_units, float scale,
+                 ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize) {
+    return begin_centered_modal(title, requested, w_units > 0 ? w_units * scale : 0, flags);
+}
+
+// Cancel (or Escape) closes a question and forgets what was to follow its answer.
+void cancel_pending_button(AppContext& ctx) {
+    if (ImGui::Button("Cancel") || escape_pressed()) {
+        ImGui::CloseCurrentPopup();
+        ctx.ui.pending = {};
     }
-    center_next(0, ctx.ui.scale());
-    if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
-        return;
+}
+
+void unsaved_dialog(AppContext& ctx) {
+    if (!begin_modal("Unsaved changes", ctx.ui.confirm_unsaved, 0, ctx.ui.scale())) return;
     const std::string name =
         ctx.file_path.empty() ? "this untitled scene" : fs::path(ctx.file_path).filename().string();
     ImGui::Text("Save the changes to %s first?", name.c_str());
@@ -278,26 +381,18 @@ void unsaved_dialog(AppContext& ctx) {
         run_pending(ctx);
     }
     ImGui::SameLine();
-    if (ImGui::Button("Cancel") || escape_pressed()) {
-        ImGui::CloseCurrentPopup();
-        ctx.ui.pending = {};
-    }
+    cancel_pending_button(ctx);
     ImGui::EndPopup();
 }
 
 // Save found the file changed on disk since it was loaded or last saved (another window or
 // program wrote it): replacing it would silently lose that work, so ask.
 void overwrite_changed_dialog(AppContext& ctx) {
-    if (ctx.ui.confirm_overwrite_changed) {
-        ImGui::OpenPopup("File changed on disk");
-        ctx.ui.confirm_overwrite_changed = false;
-    }
-    center_next(480, ctx.ui.scale());
-    if (!ImGui::BeginPopupModal("File changed on disk", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
+    if (!begin_modal("File changed on disk", ctx.ui.confirm_overwrite_changed, 480, ctx.ui.scale()))
         return;
-    ImGui::TextWrapped("'%s' was changed on disk since it was opened or last saved (by another "
-                       "window or program). Saving now replaces those changes with this scene.",
-                       ctx.file_path.c_str());
+    text_wrapped("'%s' was changed on disk since it was opened or last saved (by another "
+                 "window or program). Saving now replaces those changes with this scene.",
+                 ctx.file_path.c_str());
     ImGui::Spacing();
     if (ImGui::Button("Save anyway")) {
         ImGui::CloseCurrentPopup();
@@ -310,25 +405,17 @@ void overwrite_changed_dialog(AppContext& ctx) {
         request_save_as(ctx);
     }
     ImGui::SameLine();
-    if (ImGui::Button("Cancel") || escape_pressed()) {
-        ImGui::CloseCurrentPopup();
-        ctx.ui.pending = {};
-    }
+    cancel_pending_button(ctx);
     ImGui::EndPopup();
 }
 
 void error_dialog(AppContext& ctx) {
-    if (ctx.ui.show_error) {
-        ImGui::OpenPopup("##error");
-        ctx.ui.show_error = false;
-    }
-    center_next(480, ctx.ui.scale());
-    if (!ImGui::BeginPopupModal("##error", nullptr,
-                                ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoTitleBar))
+    if (!begin_modal("##error", ctx.ui.show_error, 480, ctx.ui.scale(),
+                     ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoTitleBar))
         return;
     ImGui::TextUnformatted(ctx.ui.error_title.c_str());
     ImGui::Separator();
-    ImGui::TextWrapped("%s", ctx.ui.error_message.c_str());
+    text_wrapped("%s", ctx.ui.error_message.c_str());
     ImGui::Spacing();
     // Keys count only once the dialog is up: the Enter that confirmed a file name must not
     // also dismiss the error it caused.
@@ -395,9 +482,9 @@ void help_dialog(AppContext& ctx) {
         for (const Entry& e : entries) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            ImGui::TextWrapped("%s", e.keys);
+            text_wrapped("%s", e.keys);
             ImGui::TableNextColumn();
-            ImGui::TextWrapped("%s", e.action);
+            text_wrapped("%s", e.action);
         }
         ImGui::EndTable();
     }
@@ -408,6 +495,7 @@ void help_dialog(AppContext& ctx) {
 } // namespace
 
 void draw_dialogs(AppContext& ctx) {
+    receive_uploads(ctx); // the browser's: before the dialogs they may open
     new_surface_dialog(ctx);
     file_dialog(ctx);
     unsaved_dialog(ctx);

@@ -16,15 +16,18 @@
 #include "core/geom/tessellate.hpp"
 #include "core/scene/point_file.hpp"
 #include "ui/actions.hpp"
+#include "ui/fit_actions.hpp"
 #include "ui/panels/curve_designer.hpp"
 #include "ui/panels/enum_combo.hpp"
 #include "ui/panels/fit_panel.hpp"
 #include "ui/panels/flow.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/panels/picture_draw.hpp"
 #include "ui/panels/plane_canvas.hpp"
 #include "ui/theme.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/doc_access.hpp"
+#include "ui/view/text_wrap.hpp"
 
 namespace isoparm::ui {
 
@@ -168,11 +171,19 @@ void canvas(AppContext& ctx, const Rect& r) {
         dl->AddCircleFilled(c, (static_cast<int>(q) == f.drag ? 5.0f : 3.5f) * k, point_col);
         if (f.points.size() <= 60) report_point("fit/point/" + std::to_string(q), c.x, c.y);
     }
-    if (f.points.empty())
-        dl->AddText(ImVec2(r.x + 8 * k, r.y + 6 * k),
-                    light ? IM_COL32(90, 90, 90, 255) : IM_COL32(150, 150, 160, 255),
-                    "Click to add data points, in order; right click deletes one");
     dl->PopClipRect();
+    if (f.points.empty()) {
+        // The hint through the label placer, shortened to the canvas (the whole in a tooltip).
+        Picture pic;
+        pic.view = "fit";
+        pic.frame = r;
+        const std::string hint = "Click to add data points, in order; right click deletes one";
+        LabelRequest& l = pic.fixed_label(
+            {r.x + 8 * k, r.y + 6 * k}, shortened(hint, r.w - 16 * k, imgui_measure()),
+            light ? IM_COL32(90, 90, 90, 255) : IM_COL32(150, 150, 160, 255), LabelAlign::top_left);
+        if (l.text != hint) l.tooltip = hint;
+        draw_picture(pic, dl);
+    }
 }
 
 void settings(AppContext& ctx) {
@@ -228,7 +239,7 @@ void summary(AppContext& ctx) {
     FitState& f = ctx.ui.fit;
     if (!f.error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, error_text_color());
-        ImGui::TextWrapped("Not fitted: %s", f.error.c_str());
+        text_wrapped("Not fitted: %s", f.error.c_str());
         ImGui::PopStyleColor();
         return;
     }
@@ -239,12 +250,12 @@ void summary(AppContext& ctx) {
                    : std::to_string(f.points.size()) + " points";
     const std::string from = f.source.empty() ? "" : " (" + f.source + ")";
     if (f.settings.method == doc::FitMethod::interpolate)
-        ImGui::TextWrapped("%s%s: through every one (largest distance %.2g).", data.c_str(),
-                           from.c_str(), f.fit->max_error);
+        text_wrapped("%s%s: through every one (largest distance %.2g).", data.c_str(), from.c_str(),
+                     f.fit->max_error);
     else
-        ImGui::TextWrapped("%s%s: largest distance %.4g, RMS %.4g (red whiskers); %s kept.",
-                           data.c_str(), from.c_str(), f.fit->max_error, f.fit->rms_error,
-                           f.rows > 1 ? "corners" : "ends");
+        text_wrapped("%s%s: largest distance %.4g, RMS %.4g (red whiskers); %s kept.", data.c_str(),
+                     from.c_str(), f.fit->max_error, f.fit->rms_error,
+                     f.rows > 1 ? "corners" : "ends");
     report_fact("fit/max_error", f.fit->max_error);
     report_fact("fit/rms_error", f.fit->rms_error);
 }
@@ -271,29 +282,6 @@ void add_to_scene(AppContext& ctx) {
 }
 
 } // namespace
-
-bool load_fit_points(AppContext& ctx, const std::string& path, std::string& error) {
-    auto data = scene::load_points(path);
-    if (!data) {
-        error = data.error().message;
-        return false;
-    }
-    FitState& f = ctx.ui.fit;
-    f.points = std::move(data->points);
-    f.rows = data->rows;
-    f.columns = data->columns;
-    f.source = std::filesystem::path(path).filename().string();
-    f.stale = true;
-    f.open = true;
-    f.drag = -1;
-    f.frame_plane = -1; // frame the new data
-    // Counts that no longer fit the data are the fit's refusal, shown; nothing is clamped.
-    return true;
-}
-
-void open_fit_panel(AppContext& ctx) {
-    ctx.ui.fit.open = true;
-}
 
 void draw_fit_panel(AppContext& ctx) {
     FitState& f = ctx.ui.fit;

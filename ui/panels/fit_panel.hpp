@@ -1,16 +1,11 @@
-// The Fit panel's entry points for the menus and the file dialog.
+// The Fit panel: data points on a plane canvas, a curve or surface fitted through them
+// (its entry points for menus and files: ui/fit_actions.hpp).
 #pragma once
-
-#include <string>
 
 #include "ui/app_context.hpp"
 
 namespace isoparm::ui {
 
-void open_fit_panel(AppContext& ctx);
-// Replaces the panel's points with a CSV / XYZ file's (a grid when it has blank-line rows) and
-// opens the panel; false with the reason (naming the file and line) in `error`.
-bool load_fit_points(AppContext& ctx, const std::string& path, std::string& error);
 void draw_fit_panel(AppContext& ctx);
 
 } // namespace isoparm::ui

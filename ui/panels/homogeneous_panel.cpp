@@ -14,9 +14,12 @@
 
 #include "core/geom/knots.hpp"
 #include "core/geom/rational_picture.hpp"
+#include "core/geom/status.hpp"
 #include "ui/panels/curve_designer.hpp"
 #include "ui/panels/flow.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/panels/picture_draw.hpp"
+#include "ui/panels/stage_controls.hpp"
 #include "ui/theme.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/canvas_map.hpp"
@@ -27,7 +30,6 @@ namespace isoparm::ui {
 
 namespace {
 
-constexpr const char* plane_names[] = {"xy", "xz", "yz"};
 constexpr std::array<std::array<int, 2>, 3> plane_axes{{{0, 1}, {0, 2}, {1, 2}}};
 
 // What is lifted: the curve, the coordinates seen, the traced parameter and a caption.
@@ -58,7 +60,7 @@ std::optional<Lifted> chosen_curve(AppContext& ctx, std::string& why_not) {
         l.own_plane = co.plane != doc::CurvePlane::free3d;
         l.axes =
             l.own_plane ? plane_axes[static_cast<std::size_t>(co.plane)] : seen_in(hs, l.curve);
-        l.t = curve_designer::trace_param(ctx, l.curve);
+        l.t = ctx.ui.curve.trace_param(l.curve);
         l.caption = sel->name + " in the " + axes_name(l.axes) + " plane";
         return l;
     }
@@ -77,9 +79,9 @@ std::optional<Lifted> chosen_curve(AppContext& ctx, std::string& why_not) {
     if (!iso) {
         char text[160];
         std::snprintf(text, sizeof text,
-                      "The isocurve %s = %.4g has a control point at infinity (its weights sum "
+                      "The isocurve %s = %s has a control point at infinity (its weights sum "
                       "to 0 there): move the indicator.",
-                      along_u ? "v" : "u", along_u ? uv.y : uv.x);
+                      along_u ? "v" : "u", geom::format_short(along_u ? uv.y : uv.x).c_str());
         why_not = text;
         return std::nullopt;
     }
@@ -88,8 +90,9 @@ std::optional<Lifted> chosen_curve(AppContext& ctx, std::string& why_not) {
     l.axes = seen_in(hs, l.curve);
     l.t = along_u ? uv.x : uv.y;
     char text[160];
-    std::snprintf(text, sizeof text, "%s's isocurve %s = %.3g, seen in %s", obj->name.c_str(),
-                  along_u ? "v" : "u", along_u ? uv.y : uv.x, axes_name(l.axes).c_str());
+    std::snprintf(text, sizeof text, "%s's isocurve %s = %s, seen in %s", obj->name.c_str(),
+                  along_u ? "v" : "u", geom::format_short(along_u ? uv.y : uv.x).c_str(),
+                  axes_name(l.axes).c_str());
     l.caption = text;
     return l;
 }
@@ -102,14 +105,16 @@ std::pair<glm::dvec3, glm::dvec3> ray_ends(const glm::dvec3& q, const glm::dvec3
     return {glm::dvec3(0), q.z > 1 ? q : p};
 }
 
-void draw_picture(AppContext& ctx, const Lifted& l, const HomogeneousScene& h, const Rect& box) {
+void draw_lifted(AppContext& ctx, const Lifted& l, const HomogeneousScene& h, const Rect& box,
+                 const CanvasView& cv) {
     HomogeneousState& hs = ctx.ui.homogeneous;
     const float k = ctx.ui.scale();
     const bool light = ctx.ui.presentation;
-    ImDrawList* dl = ImGui::GetWindowDrawList();
-    const ImVec2 a(box.x, box.y), b(box.x + box.w, box.y + box.h);
-    dl->AddRectFilled(a, b, light ? IM_COL32(250, 250, 250, 255) : IM_COL32(26, 28, 34, 255));
-    dl->PushClipRect(a, b, true);
+    Picture pic;
+    pic.view = "homogeneous";
+    pic.frame = box;
+    pic.background = light ? rgba8(250, 250, 250) : rgba8(26, 28, 34);
+    pic.style.offset = 5 * k;
 
     // Fit the turned picture's box (its eight corners) into the canvas, then zoom.
     glm::dvec2 lo{1e300}, hi{-1e300};
@@ -125,86 +130,82 @@ void draw_picture(AppContext& ctx, const Lifted& l, const HomogeneousScene& h, c
     const glm::dvec2 mid = 0.5 * (lo + hi);
     auto px = [&](const glm::dvec3& p) {
         const glm::dvec3 q = orbit_project(p, hs.yaw, hs.pitch);
-        return ImVec2(box.x + box.w / 2 + static_cast<float>((q.x - mid.x) * scale),
-                      box.y + box.h / 2 - static_cast<float>((q.y - mid.y) * scale));
+        const glm::dvec2 fitted(box.x + box.w / 2 + (q.x - mid.x) * scale,
+                                box.y + box.h / 2 - (q.y - mid.y) * scale);
+        return glm::vec2(view_pixel(cv, box, fitted));
     };
 
     // The plane w = 1, where the rational curve lives.
-    const ImVec2 corners[4] = {
+    const glm::vec2 corners[4] = {
         px({h.plane_lo.x, h.plane_lo.y, 1}), px({h.plane_hi.x, h.plane_lo.y, 1}),
         px({h.plane_hi.x, h.plane_hi.y, 1}), px({h.plane_lo.x, h.plane_hi.y, 1})};
-    dl->AddConvexPolyFilled(corners, 4,
-                            light ? IM_COL32(255, 200, 120, 60) : IM_COL32(255, 190, 90, 40));
-    dl->AddPolyline(corners, 4, light ? IM_COL32(200, 120, 30, 200) : IM_COL32(255, 190, 90, 140),
-                    ImDrawFlags_Closed, 1.2f * k);
-    dl->AddText(ImVec2(corners[2].x + 4 * k, corners[2].y),
-                light ? IM_COL32(160, 90, 10, 255) : IM_COL32(255, 190, 90, 255), "w = 1");
+    pic.polygon({corners, corners + 4}, light ? rgba8(255, 200, 120, 60) : rgba8(255, 190, 90, 40));
+    pic.polyline({corners, corners + 4},
+                 light ? rgba8(200, 120, 30, 200) : rgba8(255, 190, 90, 140), 1.2f * k, true);
+    pic.label(corners[2], "w = 1", light ? rgba8(160, 90, 10) : rgba8(255, 190, 90), 30);
 
     // Axes from the origin: the rays' centre.
     const std::string a_name(1, "xyz"[l.axes[0]]), b_name(1, "xyz"[l.axes[1]]);
     const double axis_len = std::max({h.hi.x, h.hi.y, h.hi.z, 1.0}) * 1.05;
-    const ImU32 axis_cols[3] = {IM_COL32(220, 80, 80, 255), IM_COL32(80, 190, 80, 255),
-                                IM_COL32(90, 130, 255, 255)};
+    const Rgba8 axis_cols[3] = {rgba8(220, 80, 80), rgba8(80, 190, 80), rgba8(90, 130, 255)};
     for (int c = 0; c < 3; ++c) {
         glm::dvec3 e(0);
         e[c] = axis_len;
-        const ImVec2 tip = px(e);
-        dl->AddLine(px({0, 0, 0}), tip, axis_cols[c], 1.5f * k);
-        dl->AddText(ImVec2(tip.x + 3 * k, tip.y - 8 * k), axis_cols[c],
-                    c == 2   ? "w"
-                    : c == 0 ? ("w" + a_name).c_str()
-                             : ("w" + b_name).c_str());
+        const glm::vec2 tip = px(e);
+        pic.line(px({0, 0, 0}), tip, axis_cols[c], 1.5f * k);
+        pic.label(tip, c == 2 ? "w" : c == 0 ? "w" + a_name : "w" + b_name, axis_cols[c], 40);
     }
-    dl->AddCircleFilled(px({0, 0, 0}), 3.5f * k, ImGui::GetColorU32(ImGuiCol_Text));
+    pic.disk(px({0, 0, 0}), 3.5f * k, ImGui::GetColorU32(ImGuiCol_Text));
 
     // Rays: from the origin through each lifted control point to the plane w = 1 (a negative
     // weight puts the lifted point below the origin; its ray still passes through it).
-    const ImU32 ray = light ? IM_COL32(110, 110, 120, 150) : IM_COL32(170, 175, 190, 110);
+    const Rgba8 ray = light ? rgba8(110, 110, 120, 150) : rgba8(170, 175, 190, 110);
     for (std::size_t i = 0; i < h.lifted_points.size(); ++i) {
         if (h.weights[i] == 0) continue; // (w P, 0) = 0: the point has no say, no ray
         const auto [from, to] = ray_ends(h.lifted_points[i], h.projected_points[i]);
-        dl->AddLine(px(from), px(to), ray, 1.0f * k);
+        pic.line(px(from), px(to), ray, 1.0f * k);
     }
     // The rational curve on w = 1 and its control polygon there.
-    const ImU32 flat = light ? IM_COL32(200, 110, 20, 255) : IM_COL32(255, 175, 70, 255);
+    const Rgba8 flat = light ? rgba8(200, 110, 20) : rgba8(255, 175, 70);
     for (const auto& run : h.projected_curve) {
-        std::vector<ImVec2> pts;
+        std::vector<glm::vec2> pts;
         for (const glm::dvec3& p : run) pts.push_back(px(p));
-        dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), flat, 0, 2.6f * k);
+        pic.polyline(std::move(pts), flat, 2.6f * k);
     }
-    for (const glm::dvec3& p : h.projected_points) dl->AddCircleFilled(px(p), 3 * k, flat);
+    for (const glm::dvec3& p : h.projected_points) pic.disk(px(p), 3 * k, flat);
     // The polynomial curve in homogeneous space and its control polygon.
-    const ImU32 lifted = light ? IM_COL32(20, 100, 200, 255) : IM_COL32(110, 190, 255, 255);
-    std::vector<ImVec2> poly;
+    const Rgba8 lifted = light ? rgba8(20, 100, 200) : rgba8(110, 190, 255);
+    std::vector<glm::vec2> poly;
     for (const glm::dvec3& p : h.lifted_points) poly.push_back(px(p));
-    dl->AddPolyline(poly.data(), static_cast<int>(poly.size()),
-                    light ? IM_COL32(60, 60, 70, 200) : IM_COL32(200, 200, 210, 170), 0, 1.2f * k);
-    std::vector<ImVec2> curve;
+    pic.polyline(poly, light ? rgba8(60, 60, 70, 200) : rgba8(200, 200, 210, 170), 1.2f * k);
+    std::vector<glm::vec2> curve;
     for (const glm::dvec3& p : h.lifted_curve) curve.push_back(px(p));
-    dl->AddPolyline(curve.data(), static_cast<int>(curve.size()), lifted, 0, 2.6f * k);
+    pic.polyline(std::move(curve), lifted, 2.6f * k);
+    const Rgba8 text = ImGui::GetColorU32(ImGuiCol_Text);
+    const Rgba8 warn = ImGui::ColorConvertFloat4ToU32(error_text_color());
+    const Rgba8 plate = light ? rgba8(255, 255, 255, 190) : rgba8(26, 28, 34, 190);
     for (std::size_t i = 0; i < h.lifted_points.size(); ++i) {
-        const ImVec2 p = poly[i];
-        dl->AddCircleFilled(p, 4.5f * k, lifted);
+        pic.disk(poly[i], 4.5f * k, lifted);
         if (!hs.labels) continue;
-        char w[24];
-        std::snprintf(w, sizeof w, "w=%.3g", h.weights[i]);
-        dl->AddText(ImVec2(p.x + 5 * k, p.y - 2 * k),
-                    h.weights[i] <= 0 ? ImGui::ColorConvertFloat4ToU32(error_text_color())
-                                      : ImGui::GetColorU32(ImGuiCol_Text),
-                    w);
+        // Weights other than 1 first: a revolved profile's w = 1 and w = 0.707 alternate.
+        const double w = h.weights[i];
+        LabelRequest& r = pic.label(poly[i], "w=" + geom::format_short(w, 3), w <= 0 ? warn : text,
+                                    w != 1 ? 20 : 10);
+        r.plate = plate;
+        r.tooltip = "w" + std::to_string(i) + " = " + geom::format_number(w);
     }
     // The point at t: lifted, projected, and the ray between them.
     if (h.lifted_at_t) {
-        const ImU32 red = IM_COL32(235, 60, 60, 255);
+        const Rgba8 red = rgba8(235, 60, 60);
         const glm::dvec3 q = *h.lifted_at_t;
         if (h.projected_at_t) {
             const auto [from, to] = ray_ends(q, *h.projected_at_t);
-            dl->AddLine(px(from), px(to), red, 1.4f * k);
-            dl->AddCircleFilled(px(*h.projected_at_t), 5 * k, red);
+            pic.line(px(from), px(to), red, 1.4f * k);
+            pic.disk(px(*h.projected_at_t), 5 * k, red);
         }
-        dl->AddCircle(px(q), 6 * k, red, 20, 2 * k);
+        pic.disk(px(q), 6 * k, 0, red, 2 * k);
     }
-    dl->PopClipRect();
+    draw_picture(pic);
 }
 
 } // namespace
@@ -219,8 +220,15 @@ void homogeneous_controls(AppContext& ctx, const std::optional<Lifted>& l, bool 
     if (surface_source) {
         const char* iso_names[] = {"along u", "along v"};
         ImGui::SetNextItemWidth(combo_w);
-        ImGui::Combo("##isocurve", &hs.isocurve, iso_names, 2);
+        const bool open = ImGui::BeginCombo("##isocurve", iso_names[hs.isocurve == 1 ? 1 : 0]);
         report_item("homogeneous/isocurve");
+        if (open) {
+            for (int k = 0; k < 2; ++k) {
+                if (ImGui::Selectable(iso_names[k], hs.isocurve == k)) hs.isocurve = k;
+                report_item(std::string("homogeneous/isocurve/") + iso_names[k]);
+            }
+            ImGui::EndCombo();
+        }
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(
                 "The current surface's isocurve through the indicator that is lifted");
@@ -245,6 +253,7 @@ void homogeneous_controls(AppContext& ctx, const std::optional<Lifted>& l, bool 
 } // namespace
 
 void draw_homogeneous_panel(AppContext& ctx) {
+    note_hovered_view(ctx, StageView::homogeneous);
     HomogeneousState& hs = ctx.ui.homogeneous;
     const float k = ctx.ui.scale();
     std::string why_not;
@@ -253,7 +262,7 @@ void draw_homogeneous_panel(AppContext& ctx) {
     const bool surface_source = !(sel && sel->curve_object());
     if (!l) {
         homogeneous_controls(ctx, l, surface_source);
-        ImGui::TextWrapped("%s", why_not.c_str());
+        text_wrapped("%s", why_not.c_str());
         return;
     }
     const HomogeneousScene h = homogeneous_scene(l->curve, l->axes, l->t);
@@ -266,22 +275,28 @@ void draw_homogeneous_panel(AppContext& ctx) {
                    std::max({avail.y - below, avail.y * 0.5f, 60 * k})};
     ImGui::InvisibleButton("##homogeneous", ImVec2(box.w, box.h));
     report_item("homogeneous/canvas");
-    if (ImGui::IsItemActive()) {
+    // On the stage the wheel zooms about the pointer and a right-drag pans (canvas_view);
+    // in the tab the wheel zooms the picture about its centre.
+    const bool staged = on_stage(ctx, StageView::homogeneous);
+    const CanvasView cv = canvas_view(ctx, "homogeneous", box);
+    if (ImGui::IsItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
         const ImVec2 d = ImGui::GetIO().MouseDelta;
         hs.yaw += d.x * 0.4;
         // The picture turns over the top no further than looking straight down.
         hs.pitch = std::clamp(hs.pitch + d.y * 0.4, -89.0, 89.0);
     }
-    if (ImGui::IsItemHovered() && ImGui::GetIO().MouseWheel != 0)
+    if (!staged && ImGui::IsItemHovered() && ImGui::GetIO().MouseWheel != 0)
         hs.zoom = std::clamp(hs.zoom * std::pow(1.15, ImGui::GetIO().MouseWheel), 0.2, 20.0);
     if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
         ImGui::SetTooltip("Drag to turn the picture, wheel to zoom");
-    draw_picture(ctx, *l, h, box);
+    draw_lifted(ctx, *l, h, box, cv);
     if (h.lifted_at_t) {
         const glm::dvec3 q = *h.lifted_at_t;
-        ImGui::Text("t = %.4g: C^w = (%.3g, %.3g, %.3g), w = %.4g", h.t, q.x, q.y, q.z, q.z);
+        text_wrapped("t = %s: C^w = (%s, %s, %s), w = %s", geom::format_short(h.t).c_str(),
+                     geom::format_short(q.x).c_str(), geom::format_short(q.y).c_str(),
+                     geom::format_short(q.z).c_str(), geom::format_short(q.z).c_str());
     }
-    ImGui::TextWrapped("%s", l->caption.c_str());
+    text_wrapped("%s", l->caption.c_str());
     same_line_if_fits(ImGui::CalcTextSize("(?)").x);
     ImGui::TextDisabled("(?)");
     if (ImGui::IsItemHovered())
@@ -294,6 +309,7 @@ void draw_homogeneous_panel(AppContext& ctx) {
     homogeneous_controls(ctx, l, surface_source);
     report_fact("homogeneous/control_points", static_cast<double>(h.lifted_points.size()));
     report_fact("homogeneous/yaw", hs.yaw);
+    report_fact("homogeneous/isocurve", surface_source ? hs.isocurve : -1);
 }
 
 } // namespace isoparm::ui

@@ -9,11 +9,14 @@
 #include <variant>
 
 #include "core/doc/commands.hpp"
+#include "core/doc/placement.hpp"
 #include "core/geom/implicit/expression.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/theme.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/implicit_meshes.hpp"
 #include "ui/view/implicit_support.hpp"
+#include "ui/view/text_wrap.hpp"
 
 namespace isoparm::ui {
 
@@ -32,17 +35,32 @@ void presets_combo(AppContext& ctx, const doc::Object& obj) {
     const auto& presets = implicit_presets();
     ImplicitForm& form = ctx.ui.implicit;
     form.preset = std::clamp(form.preset, 0, static_cast<int>(presets.size()) - 1);
-    ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Preset").x - ImGui::GetStyle().ItemSpacing.x);
-    // The preview invites a choice: the object may no longer be any preset.
-    const bool open = ImGui::BeginCombo("Preset", "Replace with a preset...");
+    const float width = ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("Preset").x -
+                        ImGui::GetStyle().ItemInnerSpacing.x;
+    ImGui::SetNextItemWidth(width);
+    // The preview invites a choice (the object may no longer be any preset), cut on purpose in
+    // a narrow column with the whole in the tooltip.
+    const std::string invite = "Replace with a preset...";
+    const std::string preview =
+        shortened(invite, width - ImGui::GetFrameHeight() - ImGui::GetStyle().FramePadding.x * 2,
+                  [](std::string_view t) {
+                      const ImVec2 v = ImGui::CalcTextSize(t.data(), t.data() + t.size());
+                      return glm::vec2(v.x, v.y);
+                  });
+    const bool open = ImGui::BeginCombo("Preset", preview.c_str());
     report_item("implicit/preset");
+    if (preview != invite && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", invite.c_str());
     if (open) {
         for (int k = 0; k < static_cast<int>(presets.size()); ++k) {
             const bool picked = ImGui::Selectable(presets[k].name, false);
             report_item(std::string("implicit/preset/") + presets[k].name);
             if (!picked) continue;
             form.preset = k;
-            edit(ctx, obj.id, presets[k].object,
+            // Where the object is: a preset's formula is about the origin, moved to its centre.
+            const doc::ImplicitObject& now = *obj.implicit();
+            const doc::ImplicitObject& p = presets[k].object;
+            const glm::dvec3 d = 0.5 * (now.lo + now.hi) - 0.5 * (p.lo + p.hi);
+            edit(ctx, obj.id, doc::translated(p, d),
                  std::string("Apply implicit preset ") + presets[k].name);
         }
         ImGui::EndCombo();
@@ -67,7 +85,7 @@ void expression_field(AppContext& ctx, const doc::Object& obj, const doc::Implic
     }
     if (!form.error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, error_color);
-        ImGui::TextWrapped("%s", form.error.c_str());
+        text_wrapped("%s", form.error.c_str());
         ImGui::PopStyleColor();
     }
 }
@@ -139,7 +157,7 @@ void mesh_state(AppContext& ctx, const doc::Object& obj, const doc::ImplicitObje
     }
     if (!v.error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, error_color);
-        ImGui::TextWrapped("%s", v.error.c_str());
+        text_wrapped("%s", v.error.c_str());
         ImGui::PopStyleColor();
     } else if (v.mesh) {
         ImGui::TextDisabled("%zu triangles, %zu vertices%s", v.mesh->triangles.size(),

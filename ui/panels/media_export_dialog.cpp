@@ -85,15 +85,9 @@ void animation_fields(MediaExportState& m) {
 
 void draw_media_export_dialog(AppContext& ctx) {
     MediaExportState& m = ctx.ui.media_export;
-    if (m.just_opened) {
-        ImGui::OpenPopup(dialog_title);
-        m.just_opened = false;
-    }
-    const ImGuiViewport* vp = ImGui::GetMainViewport();
-    ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x * 0.5f, vp->Pos.y + vp->Size.y * 0.5f),
-                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowSize(ImVec2(460 * ctx.ui.scale(), 0));
-    if (!ImGui::BeginPopupModal(dialog_title, nullptr, ImGuiWindowFlags_NoSavedSettings)) return;
+    if (!begin_centered_modal(dialog_title, m.just_opened, 460 * ctx.ui.scale(),
+                              ImGuiWindowFlags_NoSavedSettings))
+        return;
     if (!m.open) {
         ImGui::CloseCurrentPopup();
         ImGui::EndPopup();

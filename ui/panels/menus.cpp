@@ -2,6 +2,7 @@
 #include <cmath>
 #include <filesystem>
 #include <imgui.h>
+#include <imgui_internal.h> // the popup stack: which open popups are menus
 #include <string>
 #include <tuple>
 #include <vector>
@@ -10,10 +11,15 @@
 #include <GLFW/glfw3.h> // key codes only: ImGui 1.86 indexes keys by the platform's codes
 
 #include "core/doc/commands.hpp"
+#include "core/doc/placement.hpp"
 #include "ui/actions.hpp"
+#include "ui/animation_actions.hpp"
 #include "ui/exchange_actions.hpp"
-#include "ui/panels/fit_panel.hpp"
+#include "ui/fit_actions.hpp"
+#include "ui/modeler_actions.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/panels/stage_controls.hpp"
+#include "ui/platform/files.hpp"
 #include "ui/surface_actions.hpp"
 #include "ui/theme.hpp"
 #include "ui/toolbox_actions.hpp"
@@ -27,13 +33,64 @@ namespace isoparm::ui {
 
 namespace {
 
+// The reason a greyed item cannot act, when the pointer rests on it.
+void explain_greyed(const std::string& why) {
+    if (!why.empty() && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        wrapped_tooltip(why);
+}
+
+// Whether the open popups are menus only (the menu bar's and their submenus), not a dialog or a
+// combo's list.
+bool only_menus_open() {
+    const ImGuiContext& g = *ImGui::GetCurrentContext();
+    if (g.OpenPopupStack.Size == 0) return false;
+    for (const ImGuiPopupData& p : g.OpenPopupStack)
+        if (!p.Window || !(p.Window->Flags & ImGuiWindowFlags_ChildMenu)) return false;
+    return true;
+}
+
+void close_menus() {
+    ImGui::ClosePopupToLevel(0, true);
+}
+
+// C, N, I, K: the selected object's own toggle (made from the defaults at its first change);
+// with nothing selected, the defaults every object without its own shows.
+void toggle_object_display(AppContext& ctx, bool doc::ObjectDisplay::*flag) {
+    doc::ViewState& v = ctx.doc.view;
+    if (ctx.doc.selected()) {
+        doc::ObjectDisplay& own =
+            v.object_display.try_emplace(v.selection.object, doc::defaults_of(v.display))
+                .first->second;
+        own.*flag = !(own.*flag);
+        return;
+    }
+    doc::ObjectDisplay all = doc::defaults_of(v.display);
+    all.*flag = !(all.*flag);
+    v.display.control_points = all.control_points;
+    v.display.control_net = all.control_net;
+    v.display.point_ids = all.point_ids;
+    v.display.knot_curves = all.knot_curves;
+}
+
+// F: on the stage the staged canvases return to their fit (and the 3D view fits too where it
+// is shown); elsewhere the 3D view fits the scene.
+void fit_or_reset(AppContext& ctx) {
+    StageState& st = ctx.ui.stage;
+    if (st.active()) st.fit = true;
+    if (!st.active() || st.four_views || st.view == StageView::deboor) fit_view(ctx);
+}
+
 void file_menu(AppContext& ctx) {
     if (!begin_menu("File")) return;
     if (menu_item("New", "Ctrl+N")) request_new_document(ctx);
     if (menu_item("Open...", "Ctrl+O")) request_open_dialog(ctx);
-    if (begin_menu("Open Recent", !ctx.settings.recent.empty())) {
+    // In a browser, files from the user's computer last one visit: only those still here.
+    std::vector<std::string> recent = ctx.settings.recent;
+    if (files::in_browser())
+        std::erase_if(recent, [](const std::string& r) { return !std::filesystem::exists(r); });
+    if (begin_menu("Open Recent", !recent.empty())) {
         std::string chosen;
-        for (const std::string& r : ctx.settings.recent)
+        for (const std::string& r : recent)
             if (menu_item(r.c_str())) chosen = r;
         ImGui::Separator();
         if (menu_item("Clear list")) {
@@ -60,8 +117,10 @@ void file_menu(AppContext& ctx) {
     // Pictures, vector figures and animations for slides and notes (ui/media_export.hpp).
     if (menu_item("Export picture...")) request_media_export(ctx, MediaExportState::Kind::picture);
     if (menu_item("Export figure...")) request_media_export(ctx, MediaExportState::Kind::figure);
-    if (menu_item("Export animation..."))
+    const std::string no_animation = files::unavailable(files::Feature::animation);
+    if (menu_item("Export animation...", nullptr, false, no_animation.empty()))
         request_media_export(ctx, MediaExportState::Kind::animation);
+    explain_greyed(no_animation);
     if (menu_item("Copy 3D view", "Ctrl+Shift+C")) ctx.ui.media_export.clipboard_pending = true;
     ImGui::Separator();
     if (menu_item("Open lesson...")) request_open_lesson_dialog(ctx);
@@ -74,7 +133,9 @@ void file_menu(AppContext& ctx) {
         if (menu_item(stop.c_str())) request_stop_recording(ctx);
     }
     ImGui::Separator();
-    if (menu_item("Quit", "Ctrl+Q")) request_quit(ctx);
+    const std::string no_quit = files::unavailable(files::Feature::quit);
+    if (menu_item("Quit", "Ctrl+Q", false, no_quit.empty())) request_quit(ctx);
+    explain_greyed(no_quit);
     ImGui::EndMenu();
 }
 
@@ -88,6 +149,21 @@ void edit_menu(AppContext& ctx) {
     const bool has_point = has_valid_point(ctx.doc);
     if (menu_item("Deselect point", "Esc", false, has_point)) {
         ctx.doc.view.selection.i = ctx.doc.view.selection.j = -1;
+    }
+    // Many points: Shift+click adds or removes one, Ctrl+drag draws a box (3D view; a plain
+    // drag on empty space in a plane).
+    if (menu_item("Select row of the point", "R", false, has_point)) select_row(ctx);
+    if (menu_item("Select column of the point", "Shift+R", false, has_point)) select_column(ctx);
+    const doc::Object* sel = ctx.doc.selected();
+    if (menu_item("Select all points", "Ctrl+A", false, sel && !sel->implicit()))
+        select_all_points(ctx);
+    ImGui::Separator();
+    SelectionState& st = ctx.ui.modeler.selection;
+    if (begin_menu("Symmetric editing")) {
+        const char* planes[] = {"Off", "About x = 0", "About y = 0", "About z = 0"};
+        for (int a = -1; a < 3; ++a)
+            if (menu_item(planes[a + 1], nullptr, st.symmetry == a)) st.symmetry = a;
+        ImGui::EndMenu();
     }
     ImGui::EndMenu();
 }
@@ -189,11 +265,14 @@ void surface_menu(AppContext& ctx) {
     if (menu_item("New implicit surface")) {
         // A sphere to start from; the implicit panel's presets and fields shape it.
         doc::Object o;
-        o.name = "implicit";
+        o.name = fresh_name(ctx.doc, "implicit");
         o.shape = implicit_presets().front().object;
+        doc::place_beside_scene(ctx.doc, o.shape); // beside the scene, its formula moved too
         ctx.seal();
-        if (ctx.execute(doc::add_object(std::move(o))))
+        if (ctx.execute(doc::add_object(std::move(o)))) {
             ctx.doc.view.selection = {ctx.doc.objects.back().id, -1, -1};
+            fit_view(ctx);
+        }
         ctx.seal();
     }
     if (begin_menu("New triangular patch")) {
@@ -236,15 +315,32 @@ void display_menu(AppContext& ctx) {
     if (menu_item("Shaded + wireframe", "3", d.style == doc::DisplayStyle::both))
         d.style = doc::DisplayStyle::both;
     ImGui::Separator();
-    menu_item("Control points", "C", &d.control_points);
-    menu_item("Control net", "N", &d.control_net);
-    menu_item("Point IDs (P_ij)", "I", &d.point_ids);
+    // The selected object's own toggles (the defaults for every object without its own when
+    // nothing is selected).
+    const doc::Object* sel = ctx.doc.selected();
+    ImGui::TextDisabled("%s", sel ? ("Of " + sel->name).c_str() : "Of every object");
+    const doc::ObjectDisplay od = doc::display_of(ctx.doc.view, ctx.doc.view.selection.object);
+    if (menu_item("Control points", "C", od.control_points))
+        toggle_object_display(ctx, &doc::ObjectDisplay::control_points);
+    if (menu_item("Control net", "N", od.control_net))
+        toggle_object_display(ctx, &doc::ObjectDisplay::control_net);
+    if (menu_item("Point IDs (P_ij)", "I", od.point_ids))
+        toggle_object_display(ctx, &doc::ObjectDisplay::point_ids);
+    if (menu_item("Knot curves", "K", od.knot_curves))
+        toggle_object_display(ctx, &doc::ObjectDisplay::knot_curves);
+    if (begin_menu("Defaults for new objects")) {
+        menu_item("Control points##default", nullptr, &d.control_points);
+        menu_item("Control net##default", nullptr, &d.control_net);
+        menu_item("Point IDs (P_ij)##default", nullptr, &d.point_ids);
+        menu_item("Knot curves##default", nullptr, &d.knot_curves);
+        ImGui::EndMenu();
+    }
+    ImGui::Separator();
     menu_item("Indicator point S(u,v)", nullptr, &d.indicator_point);
-    menu_item("Knot curves", "K", &d.knot_curves);
     // Yellow C1, orange C0, red C-1: why a knot's multiplicity changes smoothness.
     if (menu_item("Knot curves by continuity", nullptr, &ctx.ui.knot_continuity) &&
-        ctx.ui.knot_continuity)
-        d.knot_curves = true;
+        ctx.ui.knot_continuity && !od.knot_curves)
+        toggle_object_display(ctx, &doc::ObjectDisplay::knot_curves);
     // The measured continuity of each patch border: red broken .. cyan C1 + G2.
     menu_item("Borders by continuity", nullptr, &ctx.ui.border_continuity);
     if (menu_item("de Boor's construction", "D", &d.deboor) && d.deboor)
@@ -253,6 +349,24 @@ void display_menu(AppContext& ctx) {
     if (menu_item("de Boor: step forward", "]")) deboor_step(ctx, +1);
     if (menu_item(ctx.ui.deboor.playing ? "de Boor: pause" : "de Boor: play", "Space"))
         deboor_toggle_play(ctx, ImGui::GetTime());
+    ImGui::Separator();
+    // Grid and snap: the planes, the curve designer and the 3D view's working plane z = 0;
+    // Alt held during a drag snaps nothing.
+    SnapState& snap = ctx.ui.modeler.snap;
+    menu_item("Grid", "G", &snap.grid_shown);
+    menu_item("Snap while dragging (Alt: off)", nullptr, &snap.snapping);
+    if (begin_menu("Snap to")) {
+        menu_item("Grid steps", nullptr, &snap.settings.grid);
+        menu_item("Axes", nullptr, &snap.settings.axes);
+        menu_item("Other points", nullptr, &snap.settings.points);
+        ImGui::EndMenu();
+    }
+    if (menu_item("Animate...", nullptr, ctx.ui.modeler.animation.open)) {
+        AnimationState& a = ctx.ui.modeler.animation;
+        if (!a.open) a.focus = true;
+        a.open = !a.open;
+        if (!a.open) stop_animation(ctx);
+    }
     if (begin_menu("Analysis")) {
         // Curvature from exact derivatives as false colour, or reflection lines.
         for (const auto& m : doc::analysis_mode_names)
@@ -278,11 +392,30 @@ void display_menu(AppContext& ctx) {
         }
         ImGui::EndMenu();
     }
-    ImGui::Separator();
-    if (menu_item("Fit to view", "F")) fit_view(ctx);
-    if (menu_item("Presentation mode", "P", ctx.ui.presentation)) toggle_presentation(ctx);
+    ImGui::EndMenu();
+}
+
+// The views: a teaching view on the stage, the four-view layout, the 3D view alone, and the
+// projector's settings.
+void view_menu(AppContext& ctx) {
+    if (!begin_menu("View")) return;
+    StageState& st = ctx.ui.stage;
+    if (begin_menu("Stage")) {
+        // T stages the view under the pointer; the items name every one.
+        for (const StageViewInfo& i : stage_views)
+            if (menu_item(i.title, nullptr, st.view == i.view))
+                set_stage(ctx, st.view == i.view ? StageView::none : i.view);
+        ImGui::EndMenu();
+    }
+    if (menu_item("Four views (xy, 3D, xz, yz)", "4", st.four_views))
+        set_four_views(ctx, !st.four_views);
+    if (menu_item("Back to the workstation", "Esc", false, st.active()))
+        set_stage(ctx, StageView::none);
     if (menu_item("3D view only", "Shift+P", ctx.ui.view_mode == ViewMode::view3d_only))
         toggle_view_only(ctx);
+    ImGui::Separator();
+    if (menu_item("Fit to view", "F")) fit_or_reset(ctx);
+    if (menu_item("Presentation mode", "P", ctx.ui.presentation)) toggle_presentation(ctx);
     if (!ctx.ui.headless && menu_item("Full screen", "F11", ctx.ui.fullscreen))
         ctx.ui.fullscreen_request = true;
     ImGui::EndMenu();
@@ -294,15 +427,147 @@ void help_menu(AppContext& ctx) {
     ImGui::EndMenu();
 }
 
+// Ctrl and a key: the file and history commands.
+void ctrl_shortcut(AppContext& ctx, const KeyPress& k) {
+    switch (k.key) {
+    case GLFW_KEY_N:
+        if (k.shift)
+            ctx.ui.new_surface.open = true;
+        else
+            request_new_document(ctx);
+        break;
+    case GLFW_KEY_O:
+        request_open_dialog(ctx);
+        break;
+    case GLFW_KEY_S:
+        if (k.shift)
+            request_save_as(ctx);
+        else
+            save(ctx);
+        break;
+    case GLFW_KEY_Z:
+        if (k.shift)
+            redo(ctx);
+        else
+            undo(ctx);
+        break;
+    case GLFW_KEY_Y:
+        redo(ctx);
+        break;
+    case GLFW_KEY_C:
+        if (k.shift) ctx.ui.media_export.clipboard_pending = true; // the 3D view
+        break;
+    case GLFW_KEY_Q:
+        request_quit(ctx);
+        break;
+    case GLFW_KEY_A:
+        select_all_points(ctx);
+        break;
+    default:
+        break;
+    }
+}
+
+// A key alone (Shift aside): views, display toggles, de Boor's steps and surface edits.
+void plain_shortcut(AppContext& ctx, const KeyPress& k) {
+    doc::DisplaySettings& d = ctx.doc.view.display;
+    switch (k.key) {
+    case GLFW_KEY_F:
+        fit_or_reset(ctx);
+        break;
+    case GLFW_KEY_T:
+        // The teaching view under the pointer takes the stage; on the stage, T gives it back.
+        if (ctx.ui.stage.view != StageView::none)
+            set_stage(ctx, StageView::none);
+        else if (ctx.ui.stage.hovered != StageView::none)
+            set_stage(ctx, ctx.ui.stage.hovered);
+        break;
+    case GLFW_KEY_4:
+        set_four_views(ctx, !ctx.ui.stage.four_views);
+        break;
+    case GLFW_KEY_R:
+        (k.shift ? select_column : select_row)(ctx);
+        break;
+    case GLFW_KEY_G:
+        ctx.ui.modeler.snap.grid_shown = !ctx.ui.modeler.snap.grid_shown;
+        break;
+    case GLFW_KEY_F11:
+        ctx.ui.fullscreen_request = true;
+        break;
+    case GLFW_KEY_P:
+        if (k.shift)
+            toggle_view_only(ctx);
+        else
+            toggle_presentation(ctx);
+        break;
+    case GLFW_KEY_1:
+        d.style = doc::DisplayStyle::shaded;
+        break;
+    case GLFW_KEY_2:
+        d.style = doc::DisplayStyle::wireframe;
+        break;
+    case GLFW_KEY_3:
+        d.style = doc::DisplayStyle::both;
+        break;
+    case GLFW_KEY_C:
+        toggle_object_display(ctx, &doc::ObjectDisplay::control_points);
+        break;
+    case GLFW_KEY_N:
+        toggle_object_display(ctx, &doc::ObjectDisplay::control_net);
+        break;
+    case GLFW_KEY_I:
+        toggle_object_display(ctx, &doc::ObjectDisplay::point_ids);
+        break;
+    case GLFW_KEY_K:
+        toggle_object_display(ctx, &doc::ObjectDisplay::knot_curves);
+        break;
+    case GLFW_KEY_D:
+        d.deboor = !d.deboor;
+        ctx.ui.deboor.show_tab = d.deboor;
+        break;
+    case GLFW_KEY_LEFT_BRACKET:
+        deboor_step(ctx, -1);
+        break;
+    case GLFW_KEY_RIGHT_BRACKET:
+        deboor_step(ctx, +1);
+        break;
+    case GLFW_KEY_SPACE:
+        deboor_toggle_play(ctx, ImGui::GetTime());
+        break;
+    case GLFW_KEY_U:
+        (k.shift ? elevate_current : insert_knot_at_indicator)(ctx, geom::Dir::u);
+        break;
+    case GLFW_KEY_V:
+        (k.shift ? elevate_current : insert_knot_at_indicator)(ctx, geom::Dir::v);
+        break;
+    case GLFW_KEY_S:
+        split_at_indicator(ctx, k.shift ? geom::Dir::v : geom::Dir::u);
+        break;
+    case GLFW_KEY_ESCAPE:
+        if (ctx.ui.stage.active())
+            set_stage(ctx, StageView::none);
+        else if (ctx.ui.view_mode == ViewMode::view3d_only && !ctx.ui.headless)
+            toggle_view_only(ctx);
+        else
+            ctx.doc.view.selection.i = ctx.doc.view.selection.j = -1; // and the many points
+        break;
+    default:
+        break;
+    }
+}
+
 } // namespace
 
 void draw_menus(AppContext& ctx) {
     if (!ImGui::BeginMainMenuBar()) return;
     file_menu(ctx);
+    draw_lessons_menu(ctx);   // lessons_menu.cpp
+    draw_exercises_menu(ctx); // lessons_menu.cpp
     edit_menu(ctx);
     surface_menu(ctx);
     draw_construct_menus(ctx); // Curve, Construct (construct_menu.cpp)
     display_menu(ctx);
+    view_menu(ctx);
     help_menu(ctx);
     ImGui::EndMainMenuBar();
 }
@@ -312,112 +577,20 @@ void handle_shortcuts(AppContext& ctx) {
     keys.swap(ctx.ui.key_presses);
     const ImGuiIO& io = ImGui::GetIO();
     if (io.WantTextInput) return; // typing in a field: keys belong to the field
-    if (ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId)) return;
-    doc::DisplaySettings& d = ctx.doc.view.display;
+    // An open menu does not swallow the keys: Escape closes it, a shortcut closes it and acts.
+    // A dialog (a modal popup) or a combo's list keeps them.
+    const bool menus = only_menus_open();
+    if (!menus && ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId)) return;
     for (const KeyPress& k : keys) {
         if (k.alt) continue;
-        if (k.ctrl) {
-            switch (k.key) {
-            case GLFW_KEY_N:
-                if (k.shift)
-                    ctx.ui.new_surface.open = true;
-                else
-                    request_new_document(ctx);
-                break;
-            case GLFW_KEY_O:
-                request_open_dialog(ctx);
-                break;
-            case GLFW_KEY_S:
-                if (k.shift)
-                    request_save_as(ctx);
-                else
-                    save(ctx);
-                break;
-            case GLFW_KEY_Z:
-                if (k.shift)
-                    redo(ctx);
-                else
-                    undo(ctx);
-                break;
-            case GLFW_KEY_Y:
-                redo(ctx);
-                break;
-            case GLFW_KEY_C:
-                if (k.shift) ctx.ui.media_export.clipboard_pending = true; // the 3D view
-                break;
-            case GLFW_KEY_Q:
-                request_quit(ctx);
-                break;
-            default:
-                break;
-            }
-            continue;
+        if (menus && only_menus_open()) {
+            close_menus();
+            if (k.key == GLFW_KEY_ESCAPE) continue;
         }
-        switch (k.key) {
-        case GLFW_KEY_F:
-            fit_view(ctx);
-            break;
-        case GLFW_KEY_F11:
-            ctx.ui.fullscreen_request = true;
-            break;
-        case GLFW_KEY_P:
-            if (k.shift)
-                toggle_view_only(ctx);
-            else
-                toggle_presentation(ctx);
-            break;
-        case GLFW_KEY_1:
-            d.style = doc::DisplayStyle::shaded;
-            break;
-        case GLFW_KEY_2:
-            d.style = doc::DisplayStyle::wireframe;
-            break;
-        case GLFW_KEY_3:
-            d.style = doc::DisplayStyle::both;
-            break;
-        case GLFW_KEY_C:
-            d.control_points = !d.control_points;
-            break;
-        case GLFW_KEY_N:
-            d.control_net = !d.control_net;
-            break;
-        case GLFW_KEY_I:
-            d.point_ids = !d.point_ids;
-            break;
-        case GLFW_KEY_K:
-            d.knot_curves = !d.knot_curves;
-            break;
-        case GLFW_KEY_D:
-            d.deboor = !d.deboor;
-            ctx.ui.deboor.show_tab = d.deboor;
-            break;
-        case GLFW_KEY_LEFT_BRACKET:
-            deboor_step(ctx, -1);
-            break;
-        case GLFW_KEY_RIGHT_BRACKET:
-            deboor_step(ctx, +1);
-            break;
-        case GLFW_KEY_SPACE:
-            deboor_toggle_play(ctx, ImGui::GetTime());
-            break;
-        case GLFW_KEY_U:
-            (k.shift ? elevate_current : insert_knot_at_indicator)(ctx, geom::Dir::u);
-            break;
-        case GLFW_KEY_V:
-            (k.shift ? elevate_current : insert_knot_at_indicator)(ctx, geom::Dir::v);
-            break;
-        case GLFW_KEY_S:
-            split_at_indicator(ctx, k.shift ? geom::Dir::v : geom::Dir::u);
-            break;
-        case GLFW_KEY_ESCAPE:
-            if (ctx.ui.view_mode == ViewMode::view3d_only && !ctx.ui.headless)
-                toggle_view_only(ctx);
-            else
-                ctx.doc.view.selection.i = ctx.doc.view.selection.j = -1;
-            break;
-        default:
-            break;
-        }
+        if (k.ctrl)
+            ctrl_shortcut(ctx, k);
+        else
+            plain_shortcut(ctx, k);
     }
 }
 

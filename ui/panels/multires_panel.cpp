@@ -18,6 +18,7 @@
 #include "ui/panels/flow.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/panels/plane_canvas.hpp"
+#include "ui/panels/stage_controls.hpp"
 #include "ui/theme.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/polygon_hits.hpp"
@@ -122,17 +123,18 @@ void canvas(AppContext& ctx, const doc::Object& obj, const Rect& box) {
     ms.frame_object = obj.id;
     ms.frame_plane = plane;
     const PlaneMap fitted = kept_frame(ms.frame_lo, ms.frame_hi, same, lo, hi, 0.15, box, 14 * k);
-    const PlaneMap map = ms.drag >= 0 ? ms.frozen : fitted;
-    auto px = [&](const glm::dvec3& p) { return iv(plane_to_pixel(map, flat(p))); };
-
     ImGui::SetCursorScreenPos(ImVec2(box.x, box.y));
     ImGui::InvisibleButton("##multires_canvas", ImVec2(box.w, box.h));
     report_item("multires/canvas");
+    // On the stage the wheel zooms and a right-drag pans.
+    const PlaneMap map =
+        ms.drag >= 0 ? ms.frozen : view_map(canvas_view(ctx, "multires", box), fitted);
+    auto px = [&](const glm::dvec3& p) { return iv(plane_to_pixel(map, flat(p))); };
     const ImVec2 m = ImGui::GetIO().MousePos;
     const glm::dvec2 mouse(m.x, m.y);
     std::vector<glm::dvec2> handles;
     for (const glm::dvec3& p : pic->coarse) handles.push_back(plane_to_pixel(map, flat(p)));
-    if (ImGui::IsItemActivated()) {
+    if (ImGui::IsItemActivated() && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
         ctx.seal();
         ms.message.clear();
         if (const std::optional<int> hit = point_under(handles, mouse, 9 * k)) {
@@ -215,16 +217,17 @@ void legend(const AppContext& ctx, bool curve) {
 } // namespace
 
 void draw_multires_panel(AppContext& ctx) {
+    note_hovered_view(ctx, StageView::multires);
     MultiresState& ms = ctx.ui.multires;
     const doc::Object* obj = ctx.doc.selected();
     if (!obj || obj->kind() == doc::ObjectKind::implicit) {
-        ImGui::TextWrapped("Select a cubic curve or surface with 2^j + 3 control points and "
-                           "clamped uniform knots (5, 7, 11, 19, 35 ... points).");
+        text_wrapped("Select a cubic curve or surface with 2^j + 3 control points and "
+                     "clamped uniform knots (5, 7, 11, 19, 35 ... points).");
         return;
     }
     const auto levels = doc::multires_levels_of(*obj);
     if (!levels) {
-        ImGui::TextWrapped("No levels: %s", levels.error().message.c_str());
+        text_wrapped("No levels: %s", levels.error().message.c_str());
         return;
     }
     const bool surface = obj->surface() != nullptr;

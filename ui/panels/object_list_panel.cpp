@@ -5,9 +5,12 @@
 #include <string>
 
 #include "core/doc/commands.hpp"
+#include "core/doc/placement.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/theme.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/doc_access.hpp"
+#include "ui/view/text_wrap.hpp"
 
 namespace isoparm::ui {
 
@@ -32,8 +35,8 @@ bool run_alone(AppContext& ctx, std::unique_ptr<doc::Command> cmd) {
 void draw_object_list_panel(AppContext& ctx) {
     ObjectListState& st = ctx.ui.object_list;
     if (ctx.doc.objects.empty()) {
-        ImGui::TextWrapped("The scene is empty: Surface > New Surface (Ctrl+Shift+N) or "
-                           "Curve > New curve adds an object.");
+        text_wrapped("The scene is empty: Surface > New Surface (Ctrl+Shift+N) or "
+                     "Curve > New curve adds an object.");
         return;
     }
     std::uint64_t remove = 0, select = 0;
@@ -43,8 +46,10 @@ void draw_object_list_panel(AppContext& ctx) {
     if (ImGui::BeginTable("##objects", 4, flags)) {
         const float icon = ImGui::GetFrameHeight();
         ImGui::TableSetupColumn("##shown", ImGuiTableColumnFlags_WidthFixed, icon);
-        ImGui::TableSetupColumn("Name", ImGuiTableColumnFlags_WidthStretch, 3);
-        ImGui::TableSetupColumn("Kind", ImGuiTableColumnFlags_WidthStretch, 2);
+        // The kind as wide as its longest word; the name takes the rest.
+        ImGui::TableSetupColumn("Name", ImGuiTableColumnFlags_WidthStretch, 1);
+        ImGui::TableSetupColumn("Kind", ImGuiTableColumnFlags_WidthFixed,
+                                ImGui::CalcTextSize("triangle").x);
         ImGui::TableSetupColumn("##delete", ImGuiTableColumnFlags_WidthFixed, icon);
         ImGui::TableSetupScrollFreeze(0, 1);
         ImGui::TableHeadersRow();
@@ -68,16 +73,26 @@ void draw_object_list_panel(AppContext& ctx) {
                                                     ImGuiInputTextFlags_EnterReturnsTrue |
                                                         ImGuiInputTextFlags_AutoSelectAll);
                 if (enter) {
-                    if (std::string(st.name) != o.name)
-                        run_alone(ctx, doc::rename_object(o.id, st.name));
+                    // A name another object has gets a number: names stay unique.
+                    const std::string name = doc::unique_name(ctx.doc, st.name, o.id);
+                    if (name != o.name) run_alone(ctx, doc::rename_object(o.id, name));
                     st.renaming = 0;
                 } else if (ImGui::IsItemDeactivated()) {
                     st.renaming = 0; // Esc or a click elsewhere: the name stays
                 }
             } else {
                 const bool selected = o.id == ctx.doc.view.selection.object;
-                const bool clicked = ImGui::Selectable(label.c_str(), selected,
+                // Cut in the middle where the column is narrow, so names that differ at their
+                // end stay apart; the whole name in the tooltip.
+                const std::string shown = shortened_middle(
+                    label, ImGui::GetContentRegionAvail().x, [](std::string_view t) {
+                        const ImVec2 v = ImGui::CalcTextSize(t.data(), t.data() + t.size());
+                        return glm::vec2(v.x, v.y);
+                    });
+                ImGui::PushID("name");
+                const bool clicked = ImGui::Selectable((shown + "##" + label).c_str(), selected,
                                                        ImGuiSelectableFlags_AllowDoubleClick);
+                ImGui::PopID();
                 report_item("objects/" + label);
                 if (clicked) {
                     select = o.id;
@@ -88,7 +103,7 @@ void draw_object_list_panel(AppContext& ctx) {
                     }
                 }
                 if (ImGui::IsItemHovered() && st.renaming == 0)
-                    ImGui::SetTooltip("Click: select. Double-click: rename.");
+                    ImGui::SetTooltip("%s\nClick: select. Double-click: rename.", label.c_str());
             }
             ImGui::TableNextColumn();
             ImGui::TextDisabled("%s", kind_label(o));

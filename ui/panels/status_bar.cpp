@@ -3,8 +3,10 @@
 #include <imgui.h>
 #include <string>
 
+#include "ui/modeler_actions.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/render/renderer.hpp"
+#include "ui/ui_report.hpp"
 #include "ui/view/doc_access.hpp"
 
 namespace isoparm::ui {
@@ -41,30 +43,13 @@ void draw_status_bar(AppContext& ctx) {
                                ctx.recorder->step_count());
         }
         ImGui::SameLine(0, 24 * ctx.ui.scale());
-        const doc::Object* obj = nullptr;
-        const doc::Object* sel = ctx.doc.selected();
-        if (const geom::TrianglePatch* t = sel ? sel->triangle() : nullptr) {
-            const geom::Barycentric& b = ctx.doc.view.barycentric;
-            ImGui::Text("%s: %striangle, degree %d  (r, s, t) = (%.3g, %.3g, %.3g)",
-                        sel->name.c_str(), t->rational ? "rational " : "", t->degree, b[0], b[1],
-                        b[2]);
-            if (has_valid_point(ctx.doc)) {
-                ImGui::SameLine();
-                ImGui::Text("  %s", point_name('P', ctx.doc.view.selection.i,
-                                               ctx.doc.view.selection.j, ctx.doc)
-                                        .c_str());
-            }
-        } else if (const geom::Surface* s = current_surface(ctx.doc, &obj)) {
-            ImGui::Text("%s: %s %dx%d, degree (%d,%d)", obj->name.c_str(), geom::name_of(s->type),
-                        s->n_u, s->n_v, s->degree_u, s->degree_v);
-            if (has_valid_point(ctx.doc)) {
-                ImGui::SameLine();
-                ImGui::Text("  %s", point_name('P', ctx.doc.view.selection.i,
-                                               ctx.doc.view.selection.j, ctx.doc)
-                                        .c_str());
-            }
-        } else {
-            ImGui::TextUnformatted("no surface");
+        // The selected object, whatever its kind (never another one).
+        ImGui::TextUnformatted(selection_summary(ctx).c_str());
+        // Many selected points: how many and where their centroid is.
+        if (const std::string many = points_selection_summary(ctx); !many.empty()) {
+            ImGui::SameLine(0, 16 * ctx.ui.scale());
+            ImGui::TextUnformatted(many.c_str());
+            report_item("status/selection");
         }
         ImGui::SameLine(0, 24 * ctx.ui.scale());
         if (ctx.dirty())

@@ -5,12 +5,11 @@
 #include <imgui.h>
 #include <string>
 
-#include "ui/panels/flow.hpp"
 #include "ui/ui_report.hpp"
 
 namespace isoparm::ui {
 
-int tab_strip(const std::vector<TabLabel>& tabs, int current) {
+int tab_strip(const std::vector<TabLabel>& tabs, int current, float reserve) {
     if (tabs.empty()) return 0;
     int selected = std::clamp(current, 0, static_cast<int>(tabs.size()) - 1);
     const ImGuiStyle& st = ImGui::GetStyle();
@@ -18,9 +17,16 @@ int tab_strip(const std::vector<TabLabel>& tabs, int current) {
                         ImVec2(st.ItemInnerSpacing.x, st.ItemInnerSpacing.y));
     ImGui::PushStyleVar(ImGuiStyleVar_FrameRounding, st.TabRounding);
     const int shown = selected;
+    const float first_row_y = ImGui::GetCursorScreenPos().y;
     for (int k = 0; k < static_cast<int>(tabs.size()); ++k) {
         const TabLabel& t = tabs[static_cast<std::size_t>(k)];
-        if (k > 0) same_line_if_fits(ImGui::CalcTextSize(t.name).x + st.FramePadding.x * 2);
+        if (k > 0) {
+            ImGui::SameLine();
+            const bool first_row = ImGui::GetCursorScreenPos().y == first_row_y;
+            if (ImGui::GetContentRegionAvail().x - (first_row ? reserve : 0.f) <
+                ImGui::CalcTextSize(t.name).x + st.FramePadding.x * 2)
+                ImGui::NewLine();
+        }
         const bool on = k == shown;
         ImGui::PushStyleColor(ImGuiCol_Button,
                               ImGui::GetStyleColorVec4(on ? ImGuiCol_TabActive : ImGuiCol_Tab));

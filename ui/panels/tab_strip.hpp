@@ -12,7 +12,8 @@ struct TabLabel {
 };
 
 // Draws the strip and a separator under it; returns the selected index (current, or the tab
-// clicked this frame), always within [0, tabs.size()).
-int tab_strip(const std::vector<TabLabel>& tabs, int current);
+// clicked this frame), always within [0, tabs.size()). The first row leaves `reserve` pixels
+// free at its right end (for a button drawn there).
+int tab_strip(const std::vector<TabLabel>& tabs, int current, float reserve = 0);
 
 } // namespace isoparm::ui

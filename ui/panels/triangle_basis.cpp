@@ -7,7 +7,9 @@
 #include <string>
 
 #include "core/geom/binomial.hpp"
+#include "core/geom/status.hpp"
 #include "ui/panels/heat_color.hpp"
+#include "ui/panels/picture_draw.hpp"
 #include "ui/panels/triangle_panels.hpp"
 #include "ui/theme.hpp"
 #include "ui/ui_report.hpp"
@@ -113,7 +115,7 @@ void draw_heat(ImDrawList* dl, const TriangleCanvas& c, const TriangleHeat& h) {
 
 // A vertical bar of the ramp beside the map, from 0 (or -max where negative weights make R
 // negative) at the bottom to the largest |value| at the top, with those values written.
-void colour_bar(ImDrawList* dl, const Rect& bar, const TriangleHeat& h, float k) {
+void colour_bar(ImDrawList* dl, Picture& pic, const Rect& bar, const TriangleHeat& h, float k) {
     const bool negative = has_negative(h);
     const float lo = negative ? -1.f : 0.f;
     constexpr int segments = 24;
@@ -126,13 +128,13 @@ void colour_bar(ImDrawList* dl, const Rect& bar, const TriangleHeat& h, float k)
     }
     dl->AddRect(ImVec2(bar.x, bar.y), ImVec2(bar.x + bar.w, bar.y + bar.h),
                 ImGui::GetColorU32(ImGuiCol_Border), 0, 0, k);
-    char top[32], bottom[32];
-    std::snprintf(top, sizeof top, "%.3g", h.largest_magnitude);
-    std::snprintf(bottom, sizeof bottom, "%.3g", negative ? -h.largest_magnitude : 0.0);
     const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text);
     const float x = bar.x + bar.w + 3 * k;
-    dl->AddText(ImVec2(x, bar.y), text, top);
-    dl->AddText(ImVec2(x, bar.y + bar.h - ImGui::GetTextLineHeight()), text, bottom);
+    pic.fixed_label({x, bar.y}, geom::format_short(h.largest_magnitude, 3), text,
+                    LabelAlign::top_left, 110);
+    pic.fixed_label({x, bar.y + bar.h},
+                    geom::format_short(negative ? -h.largest_magnitude : 0.0, 3), text,
+                    LabelAlign::bottom_left, 110);
 }
 
 // The marks over the map: the selected point's (i, j, k) / n, the max and min, the indicator.
@@ -170,11 +172,11 @@ void map_marks(AppContext& ctx, ImDrawList* dl, const TriangleCanvas& c,
 void value_line(const geom::TrianglePatch& t, int i, int j, const geom::Barycentric& p) {
     const std::string name = function_name(t, i, j);
     if (const auto R = geom::rational_bernstein_triangle(t, i, j, p)) {
-        ImGui::TextWrapped("%s(%.3f, %.3f, %.3f) = %.5f", name.c_str(), p[0], p[1], p[2], *R);
+        text_wrapped("%s(%.3f, %.3f, %.3f) = %.5f", name.c_str(), p[0], p[1], p[2], *R);
         report_fact("basis/triangle_value", *R);
     } else {
-        ImGui::TextWrapped("%s(%.3f, %.3f, %.3f) undefined (zero denominator)", name.c_str(), p[0],
-                           p[1], p[2]);
+        text_wrapped("%s(%.3f, %.3f, %.3f) undefined (zero denominator)", name.c_str(), p[0], p[1],
+                     p[2]);
     }
 }
 
@@ -185,13 +187,13 @@ void formula_lines(const geom::TrianglePatch& t, int i, int j, const geom::Baryc
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     const std::string b =
         "B^" + std::to_string(n) + "_" + triangle_point_name(n, 0, i, j).substr(1);
-    ImGui::TextWrapped("%s = %d!/(%d! %d! %d!) r^%d s^%d t^%d = %s", b.c_str(), n, i, j, n - i - j,
-                       i, j, n - i - j, closed_form(n, i, j).c_str());
+    text_wrapped("%s = %d!/(%d! %d! %d!) r^%d s^%d t^%d = %s", b.c_str(), n, i, j, n - i - j, i, j,
+                 n - i - j, closed_form(n, i, j).c_str());
     if (t.rational)
-        ImGui::TextWrapped("%s = w %s / sum w B, with w = %.4g and %s = %.5f here",
-                           function_name(t, i, j).c_str(), b.c_str(),
-                           t.weights[geom::TrianglePatch::index(n, i, j)], b.c_str(),
-                           geom::bernstein_triangle(n, i, j, p));
+        text_wrapped("%s = w %s / sum w B, with w = %.4g and %s = %.5f here",
+                     function_name(t, i, j).c_str(), b.c_str(),
+                     t.weights[geom::TrianglePatch::index(n, i, j)], b.c_str(),
+                     geom::bernstein_triangle(n, i, j, p));
     ImGui::PopStyleColor();
 }
 
@@ -199,11 +201,11 @@ void sum_line(const geom::TrianglePatch& t, const geom::Barycentric& p) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     const char* f = t.rational ? "R_ijk" : "B^n_ijk";
     if (const auto sum = basis_sum(t, p)) {
-        ImGui::TextWrapped("Partition of unity: the sum of all %d %s at (r, s, t) = %.6f",
-                           geom::TrianglePatch::count_for(t.degree), f, *sum);
+        text_wrapped("Partition of unity: the sum of all %d %s at (r, s, t) = %.6f",
+                     geom::TrianglePatch::count_for(t.degree), f, *sum);
         report_fact("basis/triangle_sum", *sum);
     } else {
-        ImGui::TextWrapped("S(r, s, t) does not exist here (zero denominator)");
+        text_wrapped("S(r, s, t) does not exist here (zero denominator)");
     }
     ImGui::PopStyleColor();
 }
@@ -213,27 +215,27 @@ void sum_line(const geom::TrianglePatch& t, const geom::Barycentric& p) {
 void extreme_line(const char* what, const char* mark, int n, int i, int j, const BasisPeak& e) {
     const double value = e.value + 0.0; // no "-0"
     if (e.exact) {
-        ImGui::TextWrapped("%s %.5f at (%d, %d, %d) / %d = (i, j, k) / n (%s)", what, value, i, j,
-                           n - i - j, n, mark);
+        text_wrapped("%s %.5f at (%d, %d, %d) / %d = (i, j, k) / n (%s)", what, value, i, j,
+                     n - i - j, n, mark);
         return;
     }
     const double d = std::abs(e.at[0] - static_cast<double>(i) / n) +
                      std::abs(e.at[1] - static_cast<double>(j) / n);
-    ImGui::TextWrapped("%s %.5f at (%.3f, %.3f, %.3f) (%s), found by search: %s", what, value,
-                       e.at[0], e.at[1], e.at[2], mark,
-                       d > 1e-6 ? "not at (i, j, k) / n (ring)" : "at (i, j, k) / n (ring)");
+    text_wrapped("%s %.5f at (%.3f, %.3f, %.3f) (%s), found by search: %s", what, value, e.at[0],
+                 e.at[1], e.at[2], mark,
+                 d > 1e-6 ? "not at (i, j, k) / n (ring)" : "at (i, j, k) / n (ring)");
 }
 
 void peak_lines(const geom::TrianglePatch& t, int i, int j, const BasisPeak& peak,
                 const BasisPeak& low) {
     report_fact("basis/triangle_unbounded", peak.unbounded ? 1 : 0);
     if (peak.unbounded) {
-        ImGui::TextWrapped("No max or min: sum w_abc B_abc is zero inside the triangle (weights "
-                           "of both signs), and R_ijk grows without bound towards it.");
+        text_wrapped("No max or min: sum w_abc B_abc is zero inside the triangle (weights "
+                     "of both signs), and R_ijk grows without bound towards it.");
         return;
     }
     if (!peak.found) {
-        ImGui::TextWrapped("The function exists nowhere on the grid (zero denominator).");
+        text_wrapped("The function exists nowhere on the grid (zero denominator).");
         return;
     }
     report_fact("basis/triangle_max", peak.value + 0.0);
@@ -255,7 +257,7 @@ void draw_triangle_basis(AppContext& ctx, const doc::Object& obj, const geom::Tr
     if (point)
         value_line(t, sel.i, sel.j, p);
     else
-        ImGui::TextWrapped("Select a control point b_ijk to see its basis function.");
+        text_wrapped("Select a control point b_ijk to see its basis function.");
     sum_line(t, p);
 
     const ImVec2 avail = ImGui::GetContentRegionAvail();
@@ -273,23 +275,27 @@ void draw_triangle_basis(AppContext& ctx, const doc::Object& obj, const geom::Tr
     report_item("basis/triangle");
     ImDrawList* dl = ImGui::GetWindowDrawList();
     const ImVec2 A = to_imvec(c.vertex[0]), B = to_imvec(c.vertex[1]), C = to_imvec(c.vertex[2]);
+    Picture pic; // the map's texts (vertex names, the bar's values), placed together
+    pic.view = "basis_heat";
+    pic.frame = {box.x, box.y, box.w + bar_room, box.h};
     BasisPeak peak, low;
     if (point) {
         const TriangleHeat& h = cached_heat(ctx, t, sel.i, sel.j);
         draw_heat(dl, c, h);
         peak = h.peak;
         low = h.low;
-        colour_bar(dl, {box.x + box.w + 4 * k, B.y, bar_w, A.y - B.y}, h, k);
+        colour_bar(dl, pic, {box.x + box.w + 4 * k, B.y, bar_w, A.y - B.y}, h, k);
         if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
             ImGui::SetTooltip("%s over the domain triangle; press or drag to move the indicator",
                               function_name(t, sel.i, sel.j).c_str());
     }
     dl->AddTriangle(A, B, C, ImGui::GetColorU32(ImGuiCol_Border), k);
-    draw_vertex_labels(dl, c, t.degree, ImGui::GetColorU32(ImGuiCol_Text), k);
+    vertex_labels(pic, c, t.degree, ImGui::GetColorU32(ImGuiCol_Text), k);
     if (point)
         map_marks(ctx, dl, c, t, sel.i, sel.j, peak, low);
     else
         draw_indicator_handle(dl, barycentric_to_pixel(c, p), ctx, 5 * k);
+    draw_picture(pic, dl);
 
     ImGui::SetCursorScreenPos(ImVec2(origin.x, box.y + box.h));
     if (!point) return;

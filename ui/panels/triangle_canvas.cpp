@@ -22,10 +22,9 @@ Rect triangle_area(const Rect& box, float scale) {
     return {box.x, box.y + top_room(scale), box.w, box.h - triangle_label_room(scale)};
 }
 
-void draw_vertex_labels(ImDrawList* dl, const TriangleCanvas& c, int n, ImU32 color, float scale) {
+void vertex_labels(Picture& pic, const TriangleCanvas& c, int n, ImU32 color, float scale) {
     // b_n00 is r = 1 (vertex 0), b_0n0 is s = 1 (vertex 1), b_00n is t = 1 (vertex 2).
     static const char* coordinate[3] = {" (r = 1)", " (s = 1)", " (t = 1)"};
-    const float lh = ImGui::GetTextLineHeight();
     // The coordinates too where both base labels fit side by side, else the names alone.
     const std::string widest = triangle_point_name(n, 0, n, 0) + coordinate[0];
     const bool long_labels = 2 * ImGui::CalcTextSize(widest.c_str()).x + 8 * scale <=
@@ -35,11 +34,13 @@ void draw_vertex_labels(ImDrawList* dl, const TriangleCanvas& c, int n, ImU32 co
         const std::string label =
             triangle_point_name(n, 0, i, j) + (long_labels ? coordinate[v] : "");
         const ImVec2 at = to_imvec(c.vertex[v]);
-        const float w = ImGui::CalcTextSize(label.c_str()).x;
-        const ImVec2 corner = v == 0   ? ImVec2(at.x - w, at.y + 4 * scale)
-                              : v == 2 ? ImVec2(at.x, at.y + 4 * scale)
-                                       : ImVec2(at.x + 8 * scale, at.y - lh / 2);
-        dl->AddText(corner, color, label.c_str());
+        // Below the base corners, flush with them, and beside the apex.
+        if (v == 0)
+            pic.fixed_label({at.x, at.y + 4 * scale}, label, color, LabelAlign::top_right, 120);
+        else if (v == 2)
+            pic.fixed_label({at.x, at.y + 4 * scale}, label, color, LabelAlign::top_left, 120);
+        else
+            pic.fixed_label({at.x + 8 * scale, at.y}, label, color, LabelAlign::center_left, 120);
     }
 }
 

@@ -41,7 +41,7 @@ ImVec4 level_color(int level) {
 // The rule every level applies; what it means, with this indicator's numbers, on hover (the
 // tab is short: the points come first).
 void formula_line(const geom::Barycentric& p, bool rational) {
-    ImGui::TextWrapped("b^l_ijk = r b^(l-1)_(i+1)jk + s b^(l-1)_i(j+1)k + t b^(l-1)_ij(k+1)");
+    text_wrapped("b^l_ijk = r b^(l-1)_(i+1)jk + s b^(l-1)_i(j+1)k + t b^(l-1)_ij(k+1)");
     if (ImGui::IsItemHovered())
         wrapped_tooltip(
             "With (r, s, t) = (" + geom::format_number(p[0]) + ", " + geom::format_number(p[1]) +
@@ -97,7 +97,7 @@ void draw_triangle_casteljau(AppContext& ctx, const doc::Object& obj,
     const Levels levels = geom::triangle_de_casteljau(t, p);
     const std::vector<std::vector<double>> weights = triangle_level_weights(t, p);
 
-    ImGui::TextWrapped("de Casteljau on the triangle %s (degree %d)", obj.name.c_str(), n);
+    text_wrapped("de Casteljau on the triangle %s (degree %d)", obj.name.c_str(), n);
     ImGui::Checkbox("Show in 3D (D)", &ctx.doc.view.display.deboor);
     same_line_if_fits(button_width("Zoom to patch"));
     if (ImGui::Button("Zoom to patch")) zoom_to_acting_patch(ctx);
@@ -106,8 +106,8 @@ void draw_triangle_casteljau(AppContext& ctx, const doc::Object& obj,
                           geom::TrianglePatch::count_for(n));
     deboor_step_buttons(ctx, last);
     if (player.step >= 0)
-        ImGui::TextWrapped("Step %d of %d: %s", player.step, last,
-                           triangle_step_text(player.step, n).c_str());
+        text_wrapped("Step %d of %d: %s", player.step, last,
+                     triangle_step_text(player.step, n).c_str());
     else
         ImGui::Text("All %d levels shown", last + 1);
     const int level = player.step;
@@ -119,12 +119,12 @@ void draw_triangle_casteljau(AppContext& ctx, const doc::Object& obj,
 
     // (r, s, t) is in the tracing panel above: the point's name and value are what is new.
     if (const auto& S = levels.back()[0])
-        ImGui::TextWrapped("S = %s = (%.5g, %.5g, %.5g)", triangle_point_name(n, n, 0, 0).c_str(),
-                           S->x, S->y, S->z);
+        text_wrapped("S = %s = (%.5g, %.5g, %.5g)", triangle_point_name(n, n, 0, 0).c_str(), S->x,
+                     S->y, S->z);
     else {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.6f, 0.2f, 1));
-        ImGui::TextWrapped("S(%.4g, %.4g, %.4g) does not exist: the weights sum to zero here", p[0],
-                           p[1], p[2]);
+        text_wrapped("S(%.4g, %.4g, %.4g) does not exist: the weights sum to zero here", p[0], p[1],
+                     p[2]);
         ImGui::PopStyleColor();
     }
     formula_line(p, t.rational);

@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include "ui/app_context.hpp"
+#include "ui/view/picture.hpp"
 #include "ui/view/triangle_domain.hpp"
 
 namespace isoparm::ui {
@@ -32,8 +33,8 @@ Rect triangle_area(const Rect& box, float scale);
 float triangle_label_room(float scale);
 
 // The three vertices named by their control point and coordinate ("b300 (r = 1)"): below the
-// base corners, flush with them, and beside the apex.
-void draw_vertex_labels(ImDrawList* dl, const TriangleCanvas& c, int n, ImU32 color, float scale);
+// base corners, flush with them, and beside the apex, as fixed labels of the canvas's picture.
+void vertex_labels(Picture& pic, const TriangleCanvas& c, int n, ImU32 color, float scale);
 
 // The indicator (r, s, t) as the tracing square draws (u, v): a filled disc with a black ring.
 void draw_indicator_handle(ImDrawList* dl, const glm::dvec2& at, const AppContext& ctx,

@@ -7,8 +7,10 @@
 #include <glm/geometric.hpp>
 #include <string>
 
+#include "core/geom/status.hpp"
 #include "ui/panels/flow.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/panels/picture_draw.hpp"
 #include "ui/panels/triangle_panels.hpp"
 #include "ui/surface_actions.hpp"
 #include "ui/theme.hpp"
@@ -114,8 +116,9 @@ float dot_radius(int n, float k) {
 
 // b_ijk at (i, j, k) / n, where B^n_ijk peaks (the selected one larger, in the selection's
 // colour); for a rational patch with Weights on, each weight beside its dot.
-void draw_domain_points(const AppContext& ctx, ImDrawList* dl, const TriangleCanvas& c,
-                        const geom::TrianglePatch& t, const TrianglePalette& pal) {
+void draw_domain_points(const AppContext& ctx, ImDrawList* dl, Picture& pic,
+                        const TriangleCanvas& c, const geom::TrianglePatch& t,
+                        const TrianglePalette& pal) {
     const float k = ctx.ui.scale();
     const int n = t.degree;
     const doc::Selection& sel = ctx.doc.view.selection;
@@ -136,20 +139,14 @@ void draw_domain_points(const AppContext& ctx, ImDrawList* dl, const TriangleCan
             // A ring, not a larger disc: the indicator is a red disc too.
             if (chosen) dl->AddCircle(to_imvec(at), 2.2f * r, pal.selected, 16, 2 * k);
             if (!weights) continue;
-            // Inside the triangle, towards its centre: outside, a vertex's weight would run
-            // into the vertex's label.
-            char w[24];
-            std::snprintf(w, sizeof w, "%.3g", t.weights[geom::TrianglePatch::index(n, i, j)]);
-            const ImVec2 ts = ImGui::CalcTextSize(w);
-            const glm::dvec2 inward = centre - at;
-            const double length = glm::length(inward);
-            const glm::dvec2 dir = length > 1 ? inward / length : glm::dvec2(1, 0);
-            const glm::dvec2 mid =
-                at + dir * static_cast<double>(r + 3 * k + std::max(ts.x, ts.y) / 2);
-            dl->AddText(
-                ImVec2(static_cast<float>(mid.x) - ts.x / 2, static_cast<float>(mid.y) - ts.y / 2),
-                pal.text, w);
+            // The placer keeps each weight beside its dot, clear of the others and of the
+            // vertices' labels.
+            const double w = t.weights[geom::TrianglePatch::index(n, i, j)];
+            LabelRequest& l =
+                pic.label(glm::vec2(at), geom::format_short(w, 3), pal.text, w != 1 ? 20 : 5);
+            l.tooltip = triangle_point_name(n, 0, i, j) + ": w = " + geom::format_number(w);
         }
+    (void)centre;
 }
 
 // The width of each of the r, s, t fields, and on how many rows they fall in this column.
@@ -197,7 +194,7 @@ void coordinate_fields(AppContext& ctx, float avail) {
     }
     if (!ctx.ui.barycentric_refusal.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, warning_color(ctx));
-        ImGui::TextWrapped("%s", ctx.ui.barycentric_refusal.c_str());
+        text_wrapped("%s", ctx.ui.barycentric_refusal.c_str());
         ImGui::PopStyleColor();
     }
     report_fact("tracing/barycentric_refused", ctx.ui.barycentric_refusal.empty() ? 0 : 1);
@@ -205,12 +202,12 @@ void coordinate_fields(AppContext& ctx, float avail) {
 
 void patch_point_line(const geom::TrianglePatch& t, const geom::Barycentric& p) {
     if (const auto S = geom::triangle_point(t, p)) {
-        ImGui::TextWrapped("S(%.4g, %.4g, %.4g) = (%.6g, %.6g, %.6g)", p[0], p[1], p[2], S->x, S->y,
-                           S->z);
+        text_wrapped("S(%.4g, %.4g, %.4g) = (%.6g, %.6g, %.6g)", p[0], p[1], p[2], S->x, S->y,
+                     S->z);
     } else {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.6f, 0.2f, 1));
-        ImGui::TextWrapped("S(%.4g, %.4g, %.4g) does not exist: sum w_ijk B_ijk = 0 here", p[0],
-                           p[1], p[2]);
+        text_wrapped("S(%.4g, %.4g, %.4g) does not exist: sum w_ijk B_ijk = 0 here", p[0], p[1],
+                     p[2]);
         ImGui::PopStyleColor();
     }
 }
@@ -220,8 +217,8 @@ void patch_point_line(const geom::TrianglePatch& t, const geom::Barycentric& p) 
 void draw_triangle_tracing(AppContext& ctx, const doc::Object& obj, const geom::TrianglePatch& t) {
     const float k = ctx.ui.scale();
     const int n = t.degree;
-    ImGui::TextWrapped("%s  (%s triangular Bezier, degree %d)", obj.name.c_str(),
-                       t.rational ? "rational" : "polynomial", n);
+    text_wrapped("%s  (%s triangular Bezier, degree %d)", obj.name.c_str(),
+                 t.rational ? "rational" : "polynomial", n);
     const ActionNote* note = current_action_note(ctx);
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     const float note_h = note ? ImGui::CalcTextSize(note->text.c_str(), nullptr, false, avail.x).y +
@@ -261,10 +258,17 @@ void draw_triangle_tracing(AppContext& ctx, const doc::Object& obj, const geom::
     const geom::Barycentric& p = ctx.doc.view.barycentric;
     draw_cross(dl, c, p, pal.cross, k);
     dl->AddTriangle(A, B, C, pal.border, 1.5f * k);
-    draw_vertex_labels(dl, c, n, pal.text, k);
-    draw_domain_points(ctx, dl, c, t, pal);
+    Picture pic; // every text on the canvas, placed together over the drawing
+    pic.view = "tracing";
+    pic.frame = box;
+    pic.style.offset = 4 * k;
+    vertex_labels(pic, c, n, pal.text, k);
+    draw_domain_points(ctx, dl, pic, c, t, pal);
     const glm::dvec2 handle = barycentric_to_pixel(c, p);
     draw_indicator_handle(dl, handle, ctx, 7 * k);
+    pic.keep_clear.push_back({static_cast<float>(handle.x) - 7 * k,
+                              static_cast<float>(handle.y) - 7 * k, 14 * k, 14 * k});
+    draw_picture(pic, dl);
     report_point("tracing/barycentric_handle", static_cast<float>(handle.x),
                  static_cast<float>(handle.y));
     report_fact("tracing/barycentric", {p[0], p[1], p[2]});
@@ -293,8 +297,8 @@ void draw_triangle_tracing(AppContext& ctx, const doc::Object& obj, const geom::
     const doc::Selection& sel = ctx.doc.view.selection;
     if (sel.object == obj.id && sel.has_point()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-        ImGui::TextWrapped("%s at (%d, %d, %d) / %d", point_name('P', sel.i, sel.j, &obj).c_str(),
-                           sel.i, sel.j, n - sel.i - sel.j, n);
+        text_wrapped("%s at (%d, %d, %d) / %d", point_name('P', sel.i, sel.j, &obj).c_str(), sel.i,
+                     sel.j, n - sel.i - sel.j, n);
         ImGui::PopStyleColor();
     }
     if (t.rational) {
@@ -313,7 +317,7 @@ void draw_triangle_tracing(AppContext& ctx, const doc::Object& obj, const geom::
         ImGui::PushStyleColor(ImGuiCol_Text, note->refused
                                                  ? warning_color(ctx)
                                                  : ImGui::GetStyleColorVec4(ImGuiCol_Text));
-        ImGui::TextWrapped("%s", note->text.c_str());
+        text_wrapped("%s", note->text.c_str());
         ImGui::PopStyleColor();
     }
 }

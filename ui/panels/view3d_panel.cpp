@@ -1,9 +1,11 @@
 // The 3D drawing view: the rendered scene as an image, mouse orbit/pan/zoom, picking and
 // dragging control points, point labels, and the paper's translate/rotate/zoom sliders.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <imgui.h>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,8 +16,12 @@
 #include "core/doc/commands_curve.hpp"
 #include "core/doc/placement.hpp"
 #include "core/geom/deboor.hpp"
+#include "core/geom/status.hpp"
 #include "ui/actions.hpp"
+#include "ui/modeler_actions.hpp"
 #include "ui/panels/panels.hpp"
+#include "ui/panels/picture_draw.hpp"
+#include "ui/panels/view3d_mouse.hpp"
 #include "ui/render/renderer.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/analysis.hpp"
@@ -30,129 +36,56 @@ namespace isoparm::ui {
 
 namespace {
 
-constexpr double pick_radius = 10.0; // pixels (scaled)
-
-struct Candidate {
-    PointRef ref;
-    glm::dvec3 position;
-};
-
-// Every control point the user can click: those of visible objects, when points are shown.
-std::vector<Candidate> pick_candidates(const doc::Document& d) {
-    std::vector<Candidate> out;
-    if (!d.view.display.control_points) return out;
-    for (const doc::Object& o : d.objects) {
-        if (!o.visible) continue;
-        if (const geom::Surface* s = o.surface()) {
-            for (int i = 0; i < s->n_u; ++i)
-                for (int j = 0; j < s->n_v; ++j) out.push_back({{o.id, i, j}, s->point(i, j)});
-        } else if (const geom::Curve* c = o.curve()) {
-            for (int i = 0; i < c->count(); ++i) out.push_back({{o.id, i, -1}, c->points[i]});
-        } else if (const geom::TrianglePatch* t = o.triangle()) {
-            for (int i = 0; i <= t->degree; ++i)
-                for (int j = 0; i + j <= t->degree; ++j)
-                    out.push_back(
-                        {{o.id, i, j}, t->points[geom::TrianglePatch::index(t->degree, i, j)]});
-        }
-    }
-    return out;
-}
-
-std::optional<Candidate> pick(const AppContext& ctx, const Viewport& vp, const glm::dvec2& mouse) {
-    const std::vector<Candidate> cands = pick_candidates(ctx.doc);
-    const glm::dmat4 m = view_projection(ctx.ui.camera, vp.aspect());
-    std::vector<Projected> proj;
-    proj.reserve(cands.size());
-    for (const Candidate& c : cands) proj.push_back(project(m, vp, c.position));
-    const auto k = pick_nearest(proj, mouse, pick_radius * ctx.ui.scale());
-    if (!k) return std::nullopt;
-    return cands[*k];
-}
-
-// Curves go through the designer's command, so chord-length / centripetal knots follow.
-std::unique_ptr<doc::Command> move_point(const PointRef& r, const glm::dvec3& p) {
-    if (r.j < 0) return doc::move_curve_point(r.object, r.i, p);
-    return doc::move_control_point(r.object, r.i, r.j, p);
-}
-
-int held_axis_key() {
-    if (ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_X))) return 0;
-    if (ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_Y))) return 1;
-    if (ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_Z))) return 2;
-    return -1;
-}
-
 std::string point_label(int i, int j, int n_u, int n_v) {
     return point_name('P', i, j, n_u, n_v);
 }
 
-void handle_mouse(AppContext& ctx, const Viewport& vp) {
-    ImGuiIO& io = ImGui::GetIO();
-    UiState& ui = ctx.ui;
-    ViewDrag& drag = ui.drag;
-    const glm::dvec2 mouse(io.MousePos.x, io.MousePos.y);
-
-    if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f)
-        zoom(ui.camera, std::pow(0.88, io.MouseWheel));
-
-    if (ImGui::IsItemActivated()) {
-        drag = {};
-        drag.start_mouse = mouse;
-        if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !io.KeyCtrl) {
-            if (const auto hit = pick(ctx, vp, mouse)) {
-                ctx.doc.view.selection = {hit->ref.object, hit->ref.i, hit->ref.j};
-                drag.kind = ViewDrag::Kind::point;
-                drag.point = hit->ref;
-                drag.start = hit->position;
-                ctx.seal(); // a new gesture: a new undo step
-            } else {
-                drag.kind = io.KeyShift ? ViewDrag::Kind::pan : ViewDrag::Kind::orbit;
-            }
-        } else {
-            drag.kind = ViewDrag::Kind::pan;
+// The selection's handle and the box being drawn.
+void draw_selection(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
+    const float k = ctx.ui.scale();
+    const SelectionGesture& g = ctx.ui.modeler.selection.gesture;
+    if (g.kind == SelectionGesture::Kind::box) {
+        const ImVec2 a(static_cast<float>(g.press.x), static_cast<float>(g.press.y));
+        const ImVec2 b(static_cast<float>(g.now.x), static_cast<float>(g.now.y));
+        dl->AddRectFilled(a, b, IM_COL32(120, 170, 255, 40));
+        dl->AddRect(a, b, IM_COL32(140, 190, 255, 220), 0, 0, 1.5f * k);
+    }
+    const std::optional<HandleLayout> h = selection_handle(ctx, vp);
+    if (!h) return;
+    report_point("view3d/handle", static_cast<float>(h->centre.x), static_cast<float>(h->centre.y));
+    const ImU32 colors[3] = {IM_COL32(240, 80, 80, 255), IM_COL32(90, 215, 90, 255),
+                             IM_COL32(90, 140, 255, 255)};
+    const char* names[3] = {"x", "y", "z"};
+    auto iv = [](const glm::dvec2& p) {
+        return ImVec2(static_cast<float>(p.x), static_cast<float>(p.y));
+    };
+    for (int a = 0; a < 3; ++a) {
+        const auto& ring = h->ring[a];
+        if (ring.size() > 2) {
+            std::vector<ImVec2> pts;
+            for (const glm::dvec2& p : ring) pts.push_back(iv(p));
+            dl->AddPolyline(pts.data(), static_cast<int>(pts.size()),
+                            (colors[a] & 0x00FFFFFF) | 0xA0000000, ImDrawFlags_Closed, 1.5f * k);
+            report_point(std::string("view3d/handle/ring_") + names[a], pts.front().x,
+                         pts.front().y);
         }
     }
-
-    if (ImGui::IsItemActive() && drag.kind != ViewDrag::Kind::none) {
-        const glm::dvec2 delta(io.MouseDelta.x, io.MouseDelta.y);
-        if (glm::length(mouse - drag.start_mouse) > 2.0) drag.moved = true;
-        switch (drag.kind) {
-        case ViewDrag::Kind::orbit:
-            orbit(ui.camera, delta.x, delta.y);
-            break;
-        case ViewDrag::Kind::pan:
-            pan(ui.camera, delta.x, delta.y, vp.h);
-            break;
-        case ViewDrag::Kind::point: {
-            if (!drag.moved) break;
-            // Axis: X/Y/Z held picks it; Shift locks the axis the drag started along.
-            int axis = held_axis_key();
-            if (axis < 0 && io.KeyShift) {
-                if (drag.axis < 0)
-                    drag.axis = dominant_axis(ui.camera, vp, drag.start, mouse - drag.start_mouse);
-                axis = drag.axis;
-            } else if (axis >= 0) {
-                drag.axis = axis;
-            } else {
-                drag.axis = -1;
-            }
-            const glm::dvec3 p = axis >= 0 ? drag_along_axis(ui.camera, vp, drag.start, axis, mouse)
-                                           : drag_in_view_plane(ui.camera, vp, drag.start, mouse);
-            ctx.execute(move_point(drag.point, p));
-            break;
-        }
-        case ViewDrag::Kind::none:
-            break;
-        }
+    for (int a = 0; a < 3; ++a) {
+        if (!h->axis_shown[a]) continue;
+        const ImVec2 c = iv(h->centre), t = iv(h->tip[a]);
+        dl->AddLine(c, t, colors[a], 2.5f * k);
+        dl->AddCircleFilled(t, 4.5f * k, colors[a], 12);
+        report_point(std::string("view3d/handle/") + names[a], t.x, t.y);
     }
-
-    if (ImGui::IsItemDeactivated()) {
-        if (drag.kind == ViewDrag::Kind::orbit && !drag.moved) {
-            ctx.doc.view.selection.i = ctx.doc.view.selection.j = -1; // a click on empty space
-        }
-        drag = {};
-        ctx.seal();
-    }
+    const ImVec2 c = iv(h->centre);
+    dl->AddCircleFilled(c, static_cast<float>(h->centre_radius), IM_COL32(255, 255, 255, 200), 20);
+    dl->AddCircle(c, static_cast<float>(h->centre_radius), IM_COL32(0, 0, 0, 255), 20, 1.5f * k);
+    const ImVec2 sb = iv(h->scale_box);
+    const float hb = static_cast<float>(h->box_half);
+    dl->AddRectFilled(ImVec2(sb.x - hb, sb.y - hb), ImVec2(sb.x + hb, sb.y + hb),
+                      IM_COL32(250, 210, 80, 230));
+    dl->AddRect(ImVec2(sb.x - hb, sb.y - hb), ImVec2(sb.x + hb, sb.y + hb), IM_COL32(0, 0, 0, 255));
+    report_point("view3d/handle/scale", sb.x, sb.y);
 }
 
 glm::vec3 background_of(const doc::Document& d) {
@@ -174,77 +107,62 @@ void report_projected_points(const AppContext& ctx, const Viewport& vp) {
                              static_cast<float>(p.pixel.x), static_cast<float>(p.pixel.y));
 }
 
-void draw_labels(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
+Rgba8 rgba(const glm::vec4& c) {
+    auto byte = [](float x) { return static_cast<unsigned>(std::clamp(x, 0.f, 1.f) * 255 + 0.5f); };
+    return rgba8(byte(c.r), byte(c.g), byte(c.b), byte(c.a));
+}
+
+// The current surface's control points named P_ij (Display > Point IDs), beside their points.
+void point_id_labels(const AppContext& ctx, const Viewport& vp, Picture& pic) {
     const doc::Document& d = ctx.doc;
-    if (!d.view.display.point_ids) return;
     const doc::Object* obj = nullptr;
     const geom::Surface* s = current_surface(d, &obj);
-    if (!s) return;
+    if (!s || !obj->visible || !doc::display_of(d.view, obj->id).point_ids) return;
     const glm::dmat4 m = view_projection(ctx.ui.camera, vp.aspect());
     const doc::Rgba& c = d.colors.control_points;
-    const glm::vec3 bg = background_of(d);
-    const glm::vec4 t = readable_on(glm::vec4(c.r, c.g, c.b, 1), bg, text_contrast);
-    const ImU32 text = ImGui::ColorConvertFloat4ToU32(ImVec4(t.r, t.g, t.b, 1));
-    // The shadow is the opposite of the text, so it outlines it on any background.
-    const ImU32 shadow = relative_luminance(glm::vec3(t)) > 0.3f ? IM_COL32(0, 0, 0, 200)
-                                                                 : IM_COL32(255, 255, 255, 200);
-    const float off = 6.f * ctx.ui.scale();
+    const glm::vec4 t = readable_on(glm::vec4(c.r, c.g, c.b, 1), background_of(d), text_contrast);
+    // A plate the opposite of the text outlines it on any background.
+    const Rgba8 plate =
+        relative_luminance(glm::vec3(t)) > 0.3f ? rgba8(0, 0, 0, 150) : rgba8(255, 255, 255, 150);
     for (int i = 0; i < s->n_u; ++i)
         for (int j = 0; j < s->n_v; ++j) {
             const Projected p = project(m, vp, s->point(i, j));
             if (!p.visible) continue;
-            const std::string label = point_label(i, j, s->n_u, s->n_v);
-            const ImVec2 at(static_cast<float>(p.pixel.x) + off,
-                            static_cast<float>(p.pixel.y) - off * 2.4f);
-            dl->AddText(ImVec2(at.x + 1, at.y + 1), shadow, label.c_str());
-            dl->AddText(at, text, label.c_str());
+            pic.label(glm::vec2(p.pixel), point_label(i, j, s->n_u, s->n_v),
+                      rgba(glm::vec4(glm::vec3(t), 1)), 0)
+                .plate = plate;
         }
 }
 
 // The names of the current de Boor level's points (the de Boor tab's names), beside them in
-// the level's colour: the lecture can say "d^2_3,1" and the room finds it.
-void draw_deboor_labels(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
+// the level's colour on a dark plate: the lecture can say "d^2_3,1" and the room finds it.
+void deboor_labels(const AppContext& ctx, const Viewport& vp, Picture& pic) {
     const doc::Document& d = ctx.doc;
     if (!d.view.display.deboor || ctx.ui.deboor.step < 0) return;
     const doc::Object* obj = nullptr;
     const geom::Surface* s = current_surface(d, &obj);
-    if (!s) return;
+    if (!s || !obj->visible) return;
     const glm::dvec2 uv = indicator_params(d, *obj);
     const std::vector<DeBoorLabel> labels = deboor_step_labels(
         geom::deboor_surface(*s, uv.x, uv.y), s->degree_u, s->degree_v, ctx.ui.deboor.step);
     const glm::dmat4 m = view_projection(ctx.ui.camera, vp.aspect());
-    std::vector<const DeBoorLabel*> shown;
-    std::vector<glm::dvec2> anchors, sizes;
     for (const DeBoorLabel& l : labels) {
         const Projected p = project(m, vp, glm::dvec3(l.position));
         if (!p.visible) continue;
-        const ImVec2 ts = ImGui::CalcTextSize(l.text.c_str());
-        shown.push_back(&l);
-        anchors.push_back(p.pixel);
-        sizes.push_back({ts.x + 6.0 * ctx.ui.scale(), ts.y + 2.0 * ctx.ui.scale()});
-    }
-    // On a dark plate, clear of each other: the points of a level sit close together.
-    const float k = ctx.ui.scale();
-    const std::vector<glm::dvec2> at = place_labels(anchors, sizes, 9.0 * k);
-    for (std::size_t n = 0; n < shown.size(); ++n) {
-        const ImVec2 lo(static_cast<float>(at[n].x), static_cast<float>(at[n].y));
-        const ImVec2 hi(lo.x + static_cast<float>(sizes[n].x),
-                        lo.y + static_cast<float>(sizes[n].y));
-        const glm::vec4& c = shown[n]->color;
+        const glm::vec4& c = l.color;
         // The level's colour, lightened toward white to read well on the plate.
-        const ImU32 text = ImGui::ColorConvertFloat4ToU32(
-            ImVec4(0.65f * c.r + 0.35f, 0.65f * c.g + 0.35f, 0.65f * c.b + 0.35f, 1));
-        dl->AddRectFilled(lo, hi, IM_COL32(10, 12, 18, 200), 3 * k);
-        dl->AddRect(lo, hi, ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, 0.6f)), 3 * k, 0,
-                    1.f * k);
-        dl->AddText(ImVec2(lo.x + 3 * k, lo.y + 1 * k), text, shown[n]->text.c_str());
+        LabelRequest& r =
+            pic.label(glm::vec2(p.pixel), l.text,
+                      rgba({0.65f * c.r + 0.35f, 0.65f * c.g + 0.35f, 0.65f * c.b + 0.35f, 1}), 20);
+        r.plate = rgba8(10, 12, 18, 200);
+        r.frame = rgba({c.r, c.g, c.b, 0.6f});
     }
 }
 
 void draw_hover_ring(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
     if (ctx.ui.drag.kind != ViewDrag::Kind::none || !ImGui::IsItemHovered()) return;
     const ImVec2 mp = ImGui::GetIO().MousePos;
-    if (const auto hit = pick(ctx, vp, {mp.x, mp.y})) {
+    if (const auto hit = pick_point(ctx, vp, {mp.x, mp.y})) {
         const Projected p = project(view_projection(ctx.ui.camera, vp.aspect()), vp, hit->position);
         dl->AddCircle(ImVec2(static_cast<float>(p.pixel.x), static_cast<float>(p.pixel.y)),
                       9.f * ctx.ui.scale(), IM_COL32(255, 255, 255, 220), 24, 2.f * ctx.ui.scale());
@@ -256,33 +174,33 @@ void draw_hover_ring(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) 
 }
 
 // The x/y/z triad in the lower-left corner, so the control-point planes are easy to relate.
-void draw_axes(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
+void draw_axes(const AppContext& ctx, const Viewport& vp, Picture& pic) {
     const float k = ctx.ui.scale();
-    const ImVec2 o(static_cast<float>(vp.x) + 38 * k, static_cast<float>(vp.y + vp.h) - 38 * k);
+    const glm::vec2 o(static_cast<float>(vp.x) + 38 * k, static_cast<float>(vp.y + vp.h) - 38 * k);
     const glm::dvec3 right = camera_right(ctx.ui.camera), up = camera_up(ctx.ui.camera);
     const char* names[3] = {"x", "y", "z"};
-    const ImU32 colors[3] = {IM_COL32(240, 80, 80, 255), IM_COL32(90, 215, 90, 255),
-                             IM_COL32(90, 140, 255, 255)};
+    const Rgba8 colors[3] = {rgba8(240, 80, 80), rgba8(90, 215, 90), rgba8(90, 140, 255)};
     for (int a = 0; a < 3; ++a) {
         glm::dvec3 e(0);
         e[a] = 1;
-        const ImVec2 tip(o.x + static_cast<float>(glm::dot(e, right)) * 26 * k,
-                         o.y - static_cast<float>(glm::dot(e, up)) * 26 * k);
-        dl->AddLine(o, tip, colors[a], 2.f * k);
-        dl->AddText(ImVec2(tip.x - 3 * k, tip.y - 7 * k), colors[a], names[a]);
+        const glm::vec2 tip(o.x + static_cast<float>(glm::dot(e, right)) * 26 * k,
+                            o.y - static_cast<float>(glm::dot(e, up)) * 26 * k);
+        pic.line(o, tip, colors[a], 2.f * k);
+        pic.label(tip, names[a], colors[a], 60);
     }
 }
 
-void draw_help_line(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
+void help_line(const AppContext& ctx, const Viewport& vp, Picture& pic, float reserved) {
     if (ctx.ui.presentation) return;
-    // The longest wording that fits the view: a hint cut in the middle reads as a bug.
+    // The longest wording that fits beside the analysis title: a hint cut in the middle reads
+    // as a bug, and one under the title reads as neither.
     static const char* const wordings[] = {
         "drag: orbit   right-drag: pan   wheel: zoom   click or drag a point (X/Y/Z: along "
-        "an axis)",
+        "an axis)   Shift+click: add   Ctrl+drag: box",
         "drag: orbit   right-drag: pan   wheel: zoom   drag a point",
         "drag: orbit   right: pan   wheel: zoom",
     };
-    const float room = static_cast<float>(vp.w) - 16;
+    const float room = static_cast<float>(vp.w) - 24 - reserved;
     const char* help = nullptr;
     for (const char* w : wordings)
         if (ImGui::CalcTextSize(w).x <= room) {
@@ -292,8 +210,8 @@ void draw_help_line(const AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
     if (!help) return;
     const glm::vec4 c =
         readable_on(glm::vec4(0.86f, 0.86f, 0.86f, 1), background_of(ctx.doc), text_contrast);
-    dl->AddText(ImVec2(static_cast<float>(vp.x) + 8, static_cast<float>(vp.y) + 6),
-                ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, 0.85f)), help);
+    pic.fixed_label({static_cast<float>(vp.x) + 6, static_cast<float>(vp.y) + 4}, help,
+                    rgba({c.r, c.g, c.b, 0.85f}), LabelAlign::top_left, 70);
 }
 
 // Rows the slider strip needs: one when the panel is wide enough for all controls, two
@@ -332,11 +250,13 @@ void transform_slider(AppContext& ctx, int k, float width) {
                          held ? "%+.3f" : axis_names[a]);
     else
         ImGui::DragFloat(ids[k], value, 0.5f, 0.f, 0.f, held ? "%+.1f deg" : axis_names[a]);
+    report_item(std::string(k < 3 ? "view3d/move_" : "view3d/rotate_") + axis_names[a]);
     if (ImGui::IsItemHovered() && !held)
-        ImGui::SetTooltip(k < 3 ? "Drag left or right to move the selected surface along %s"
-                                : "Drag left or right to rotate the selected surface about %s",
+        ImGui::SetTooltip(k < 3 ? "Drag left or right to move the selected object along %s"
+                                : "Drag left or right to rotate the selected object about %s",
                           axis_names[a]);
-    if (ImGui::IsItemActivated() && id != 0) {
+    // A constructed object follows its curves: the slider asks to detach it first.
+    if (ImGui::IsItemActivated() && id != 0 && may_edit_points(ctx, id)) {
         sl.active = k;
         sl.applied = 0;
         ctx.seal();
@@ -444,64 +364,63 @@ namespace {
 
 // The analysis mode's colour bar at the view's right edge: the map from the range's low to its
 // high end with both values and zero, the mode's name, and the hatch of undefined points.
-void draw_colour_bar(AppContext& ctx, const Viewport& vp, ImDrawList* dl) {
+// Returns the width the title takes along the top (the help line keeps clear of it).
+float colour_bar(AppContext& ctx, const Viewport& vp, Picture& pic) {
     const AnalysisView& a = ctx.ui.analysis;
-    if (a.kind == AnalysisKind::off) return;
+    if (a.kind == AnalysisKind::off) return 0;
     const float k = ctx.ui.scale();
-    const ImU32 text = IM_COL32(230, 230, 230, 255), shadow = IM_COL32(0, 0, 0, 200);
-    auto label = [&](float x, float y, const std::string& s) {
-        dl->AddText(ImVec2(x + 1, y + 1), shadow, s.c_str());
-        dl->AddText(ImVec2(x, y), text, s.c_str());
-    };
+    const Rgba8 text = rgba8(230, 230, 230);
+    const Rgba8 plate = rgba8(0, 0, 0, 140);
     const std::string title = analysis_title(a.kind);
     const float line = ImGui::GetTextLineHeight();
-    const float title_w = ImGui::CalcTextSize(title.c_str()).x;
-    label(static_cast<float>(vp.x + vp.w) - title_w - 10 * k, static_cast<float>(vp.y) + 8 * k,
-          title);
-    if (!is_curvature(a.kind)) return;
     const float vx = static_cast<float>(vp.x), vy = static_cast<float>(vp.y);
     const float vw = static_cast<float>(vp.w), vh = static_cast<float>(vp.h);
+    pic.fixed_label({vx + vw - 8 * k, vy + 6 * k}, title, text, LabelAlign::top_right, 95).plate =
+        plate;
+    const float title_w = ImGui::CalcTextSize(title.c_str()).x + 16 * k;
+    if (!is_curvature(a.kind)) return title_w;
     const float w = 16 * k, h = std::min(vh * 0.45f, 260 * k);
     const float x = vx + vw - w - 12 * k, y = vy + 14 * k + line;
     const int steps = 48;
     for (int s = 0; s < steps; ++s) {
         // Top is the high end.
-        const double v0 = a.hi + (a.lo - a.hi) * s / steps,
-                     v1 = a.hi + (a.lo - a.hi) * (s + 1) / steps;
-        const glm::vec3 c0 = analysis_colour(a, v0), c1 = analysis_colour(a, v1);
-        auto col = [](const glm::vec3& c) {
-            return IM_COL32(static_cast<int>(c.r * 255), static_cast<int>(c.g * 255),
-                            static_cast<int>(c.b * 255), 255);
-        };
-        dl->AddRectFilledMultiColor(ImVec2(x, y + h * s / steps),
-                                    ImVec2(x + w, y + h * (s + 1) / steps), col(c0), col(c0),
-                                    col(c1), col(c1));
+        const double v = a.hi + (a.lo - a.hi) * (s + 0.5) / steps;
+        const glm::vec3 c = analysis_colour(a, v);
+        pic.box({x, y + h * s / steps}, {x + w, y + h * (s + 1) / steps + 0.5f},
+                rgba(glm::vec4(c, 1)));
     }
-    dl->AddRect(ImVec2(x, y), ImVec2(x + w, y + h), IM_COL32(20, 20, 20, 255));
-    auto value_label = [&](double v, float at) {
-        char buf[32];
-        std::snprintf(buf, sizeof buf, "%.3g", v);
-        const float tw = ImGui::CalcTextSize(buf).x;
-        label(x - tw - 6 * k, at - line * 0.5f, buf);
-        dl->AddLine(ImVec2(x - 3 * k, at), ImVec2(x, at), text);
+    pic.box({x, y}, {x + w, y + h}, 0, rgba8(20, 20, 20), 1);
+    auto value_label = [&](double v, float at, int priority) {
+        pic.line({x - 3 * k, at}, {x, at}, text);
+        pic.fixed_label({x - 6 * k, at}, geom::format_short(v, 3), text, LabelAlign::center_right,
+                        priority)
+            .plate = plate;
     };
-    value_label(a.hi, y);
-    value_label(a.lo, y + h);
-    if (a.lo < 0 && a.hi > 0) value_label(0.0, y + h * static_cast<float>(a.hi / (a.hi - a.lo)));
+    value_label(a.hi, y, 94);
+    value_label(a.lo, y + h, 94);
+    if (a.lo < 0 && a.hi > 0)
+        value_label(0.0, y + h * static_cast<float>(a.hi / (a.hi - a.lo)), 93);
     // The hatch the surface shows where the value is undefined (a pole, a zero denominator).
     const float hy = y + h + line;
     for (int s = 0; s < 4; ++s)
-        dl->AddRectFilled(ImVec2(x + w * s / 4, hy), ImVec2(x + w * (s + 1) / 4, hy + 8 * k),
-                          s % 2 ? IM_COL32(140, 140, 140, 255) : IM_COL32(90, 90, 90, 255));
-    const char* undefined = "undefined";
-    label(x - ImGui::CalcTextSize(undefined).x - 6 * k, hy - 3 * k, undefined);
+        pic.box({x + w * s / 4, hy}, {x + w * (s + 1) / 4, hy + 8 * k},
+                s % 2 ? rgba8(140, 140, 140) : rgba8(90, 90, 90));
+    pic.fixed_label({x - 6 * k, hy + 4 * k}, "undefined", text, LabelAlign::center_right, 92)
+        .plate = plate;
+    // The range shown: what lies beyond the bar (a robust range leaves outliers out).
+    if (const std::string note = analysis_range_note(a); !note.empty())
+        pic.fixed_label({x + w, hy + 8 * k + line}, note, text, LabelAlign::top_right, 91).plate =
+            plate;
+    return title_w;
 }
 
 } // namespace
 
 void draw_view3d_panel(AppContext& ctx) {
     UiState& ui = ctx.ui;
-    const bool bare = ui.view_mode == ViewMode::view3d_only;
+    // Alone, on the stage (de Boor) and in the four-view layout: the picture without sliders.
+    const bool alone = ui.view_mode == ViewMode::view3d_only;
+    const bool bare = alone || ui.stage.active();
     ImVec2 avail = ImGui::GetContentRegionAvail();
     const int rows = bare ? 0 : slider_rows(avail.x, ui.scale());
     if (!bare)
@@ -534,19 +453,27 @@ void draw_view3d_panel(AppContext& ctx) {
     // drawn as a textured quad it cost a CPU rasteriser several milliseconds a frame. This
     // panel has no background, so what it draws here lies on top of the picture.
     ImDrawList* dl = ImGui::GetWindowDrawList();
-    dl->PushClipRect(p0, ImVec2(p0.x + avail.x, p0.y + avail.y), true);
     report_projected_points(ctx, vp);
-    draw_labels(ctx, vp, dl);
-    draw_deboor_labels(ctx, vp, dl);
-    if (!ui.headless) draw_hover_ring(ctx, vp, dl);
-    draw_axes(ctx, vp, dl);
-    ui.analysis = analysis_view(ctx.doc);
-    draw_colour_bar(ctx, vp, dl);
+    report_rect("view3d/image", p0.x, p0.y, avail.x, avail.y);
+    // Every text over the picture through the one label placer (label/view3d/<n>).
+    Picture pic;
+    pic.view = "view3d";
+    pic.frame = {p0.x, p0.y, avail.x, avail.y};
+    pic.style.offset = 7 * ui.scale();
+    point_id_labels(ctx, vp, pic);
+    deboor_labels(ctx, vp, pic);
+    draw_axes(ctx, vp, pic);
+    ui.analysis = analysis_view(ctx.doc, ctx.implicit_meshes);
+    const float title_w = colour_bar(ctx, vp, pic);
     if (!bare)
-        draw_help_line(ctx, vp, dl);
-    else if (!ui.headless)
-        dl->AddText(ImVec2(p0.x + 8, p0.y + 6), IM_COL32(160, 160, 160, 200),
-                    "Shift+P or Esc: back to the workstation");
+        help_line(ctx, vp, pic, title_w);
+    else if (alone && !ui.headless)
+        pic.fixed_label({p0.x + 8, p0.y + 6}, "Shift+P or Esc: back to the workstation",
+                        rgba8(160, 160, 160, 200), LabelAlign::top_left, 70);
+    draw_picture(pic, dl);
+    dl->PushClipRect(p0, ImVec2(p0.x + avail.x, p0.y + avail.y), true);
+    if (!ui.headless) draw_hover_ring(ctx, vp, dl);
+    draw_selection(ctx, vp, dl); // the box being drawn, the many points' handle
     dl->PopClipRect();
 
     if (!bare) draw_sliders(ctx, rows);

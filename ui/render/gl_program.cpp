@@ -10,7 +10,9 @@ namespace {
 
 GLuint compile(GLenum kind, const char* source, std::string& error) {
     const GLuint s = glCreateShader(kind);
-    glShaderSource(s, 1, &source, nullptr);
+    // The version line (and GLSL ES's precision) for the GL this build draws with, then the body.
+    const char* parts[] = {glsl_prologue, source};
+    glShaderSource(s, 2, parts, nullptr);
     glCompileShader(s);
     GLint ok = 0;
     glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
@@ -19,9 +21,7 @@ GLuint compile(GLenum kind, const char* source, std::string& error) {
         glGetShaderiv(s, GL_INFO_LOG_LENGTH, &len);
         std::vector<char> log(static_cast<std::size_t>(len > 0 ? len : 1), '\0');
         glGetShaderInfoLog(s, len, nullptr, log.data());
-        const char* what = kind == GL_VERTEX_SHADER     ? "vertex"
-                           : kind == GL_GEOMETRY_SHADER ? "geometry"
-                                                        : "fragment";
+        const char* what = kind == GL_VERTEX_SHADER ? "vertex" : "fragment";
         error = std::string(what) + " shader: " + log.data();
         glDeleteShader(s);
         return 0;
@@ -31,19 +31,19 @@ GLuint compile(GLenum kind, const char* source, std::string& error) {
 
 } // namespace
 
-GlProgram::GlProgram(const char* vertex, const char* geometry, const char* fragment) {
+GlProgram::GlProgram(const char* vertex, const char* fragment) {
     const GLuint vs = compile(GL_VERTEX_SHADER, vertex, error_);
-    const GLuint gs = geometry && vs ? compile(GL_GEOMETRY_SHADER, geometry, error_) : 0;
-    const GLuint fs = vs && (gs || !geometry) ? compile(GL_FRAGMENT_SHADER, fragment, error_) : 0;
-    if (vs && fs && (gs || !geometry)) {
+    const GLuint fs = vs ? compile(GL_FRAGMENT_SHADER, fragment, error_) : 0;
+    if (vs && fs) {
         id_ = glCreateProgram();
         glAttachShader(id_, vs);
-        if (gs) glAttachShader(id_, gs);
         glAttachShader(id_, fs);
         // Attribute slots are fixed so one vertex layout serves every program.
-        glBindAttribLocation(id_, 0, "a_position");
-        glBindAttribLocation(id_, 1, "a_second");
-        glBindAttribLocation(id_, 2, "a_scalar");
+        glBindAttribLocation(id_, attrib_position, "a_position");
+        glBindAttribLocation(id_, attrib_second, "a_second");
+        glBindAttribLocation(id_, attrib_scalar, "a_scalar");
+        glBindAttribLocation(id_, attrib_end, "a_end");
+        glBindAttribLocation(id_, attrib_end_color, "a_end_color");
         glLinkProgram(id_);
         GLint ok = 0;
         glGetProgramiv(id_, GL_LINK_STATUS, &ok);
@@ -55,7 +55,7 @@ GlProgram::GlProgram(const char* vertex, const char* geometry, const char* fragm
             id_ = 0;
         }
     }
-    for (GLuint s : {vs, gs, fs})
+    for (GLuint s : {vs, fs})
         if (s) glDeleteShader(s);
 }
 

@@ -7,11 +7,23 @@
 
 namespace isoparm::ui {
 
+// The vertex attribute slots every program shares: a position, a second vector (a normal or
+// a colour) and a scalar (an analysis value) per vertex; a segment's end and its colour per
+// instance (ui/render/segments.hpp).
+enum : GLuint {
+    attrib_position = 0,
+    attrib_second = 1,
+    attrib_scalar = 2,
+    attrib_end = 3,
+    attrib_end_color = 4,
+};
+
 // Owns one linked program; empty (id 0) with `error` set when compiling or linking failed.
+// The sources are GLSL without a version line: gl.hpp's glsl_prologue goes first.
 class GlProgram {
 public:
     GlProgram() = default;
-    GlProgram(const char* vertex, const char* geometry, const char* fragment);
+    GlProgram(const char* vertex, const char* fragment);
     ~GlProgram();
     GlProgram(GlProgram&& o) noexcept;
     GlProgram& operator=(GlProgram&& o) noexcept;

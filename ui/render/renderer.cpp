@@ -10,6 +10,7 @@
 #include "ui/render/gl.hpp"
 #include "ui/render/gl_program.hpp"
 #include "ui/render/render_target.hpp"
+#include "ui/render/segments.hpp"
 #include "ui/render/shaders.hpp"
 #include "ui/view/analysis.hpp"
 #include "ui/view/face_culling.hpp"
@@ -38,8 +39,14 @@ struct MeshEntry {
     IncrementalMesh mesh; // CPU side: the tessellation, updated locally during drags
     int density = 0;
     std::uint64_t mesh_revision = 0; // of the ready-made mesh uploaded (0: none)
-    GLuint vbo = 0, tri_ibo = 0, wire_ibo = 0, tri_vao = 0, wire_vao = 0;
-    GLsizei tri_count = 0, wire_count = 0;
+    GLuint vbo = 0, tri_ibo = 0, tri_vao = 0;
+    GLsizei tri_count = 0;
+    // The wireframe: index pairs into the mesh, as segments gathered from `source` (this
+    // frame's mesh) when first drawn after a change.
+    std::vector<std::uint32_t> wire_pairs;
+    SegmentBuffer wire;
+    bool wire_stale = true;
+    const geom::Mesh* source = nullptr;
     long vertices = 0;
     AnalysisKind scalar_kind = AnalysisKind::off; // what the scalar attribute holds
     bool used = false;
@@ -47,11 +54,9 @@ struct MeshEntry {
     void create() {
         glGenBuffers(1, &vbo);
         glGenBuffers(1, &tri_ibo);
-        glGenBuffers(1, &wire_ibo);
         glGenVertexArrays(1, &tri_vao);
-        glGenVertexArrays(1, &wire_vao);
-        // Triangles: position and normal; wireframe: positions only, its colour comes from
-        // the constant attribute 1.
+        wire.create();
+        // Triangles: position, normal and analysis scalar.
         constexpr GLsizei stride = floats_per_vertex * sizeof(float);
         glBindVertexArray(tri_vao);
         glBindBuffer(GL_ARRAY_BUFFER, vbo);
@@ -64,39 +69,34 @@ struct MeshEntry {
         glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride,
                               reinterpret_cast<void*>(6 * sizeof(float)));
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, tri_ibo);
-        glBindVertexArray(wire_vao);
-        glBindBuffer(GL_ARRAY_BUFFER, vbo);
-        glEnableVertexAttribArray(0);
-        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
-        glDisableVertexAttribArray(1);
-        glDisableVertexAttribArray(2);
-        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, wire_ibo);
         glBindVertexArray(0);
     }
     void destroy() {
         glDeleteBuffers(1, &vbo);
         glDeleteBuffers(1, &tri_ibo);
-        glDeleteBuffers(1, &wire_ibo);
         glDeleteVertexArrays(1, &tri_vao);
-        glDeleteVertexArrays(1, &wire_vao);
+        wire.destroy();
     }
 };
 
-// One streaming buffer for the overlay's (position, colour) vertices.
+// One streaming buffer for the overlay's (position, colour) vertices: line batches as
+// segment instances (vertex pairs), point batches as point instances (segments.hpp).
 struct StreamBuffer {
     GLuint vbo = 0, vao = 0;
+    static constexpr GLsizei vertex = sizeof(OverlayVertex);
+    static constexpr GLintptr position = offsetof(OverlayVertex, position);
+    static constexpr GLintptr color = offsetof(OverlayVertex, color);
     void create() {
         glGenBuffers(1, &vbo);
         glGenVertexArrays(1, &vao);
-        glBindVertexArray(vao);
-        glBindBuffer(GL_ARRAY_BUFFER, vbo);
-        glEnableVertexAttribArray(0);
-        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(OverlayVertex),
-                              reinterpret_cast<void*>(offsetof(OverlayVertex, position)));
-        glEnableVertexAttribArray(1);
-        glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(OverlayVertex),
-                              reinterpret_cast<void*>(offsetof(OverlayVertex, color)));
-        glBindVertexArray(0);
+    }
+    // The vertex array over the batch starting at vertex `first`.
+    void segments_from(GLint first) const {
+        point_instances(vbo, first * vertex,
+                        {2 * vertex, position, color, vertex + position, vertex + color});
+    }
+    void points_from(GLint first) const {
+        point_instances(vbo, first * vertex, {vertex, position, color, -1, -1});
     }
     void destroy() {
         glDeleteBuffers(1, &vbo);
@@ -138,9 +138,8 @@ struct Renderer::Impl {
     StreamBuffer stream;
 
     explicit Impl(int samples)
-        : target(samples), mesh(shaders::mesh_vs, nullptr, shaders::mesh_fs),
-          line(shaders::line_vs, shaders::line_gs, shaders::line_fs),
-          point(shaders::point_vs, shaders::point_gs, shaders::point_fs) {
+        : target(samples), mesh(shaders::mesh_vs, shaders::mesh_fs),
+          line(shaders::line_vs, shaders::line_fs), point(shaders::point_vs, shaders::point_fs) {
         stream.create();
     }
     ~Impl() {
@@ -162,9 +161,11 @@ struct Renderer::Impl {
 
         if (d.mesh) {
             if (rescalar) m.mesh_revision = 0; // re-upload with the new scalar
+            m.source = d.mesh;
             return upload_mesh(m, d, stats);
         }
         m.mesh_revision = 0;
+        m.source = &m.mesh.mesh();
 
         const auto t0 = std::chrono::steady_clock::now();
         const auto [su, sv] = display_samples(*d.surface, d.density);
@@ -172,6 +173,7 @@ struct Renderer::Impl {
         m.density = d.density;
         const MeshChange change = m.mesh.update(*d.surface, su, sv);
         if (!change.any && !rescalar) return m;
+        m.wire_stale = true;
         const geom::Mesh& mesh = m.mesh.mesh();
         const bool full = rescalar || change.topology || resampled ||
                           change.vertex_count == static_cast<int>(mesh.positions.size());
@@ -192,7 +194,7 @@ struct Renderer::Impl {
         ++stats.retessellated;
 
         if (full) {
-            upload_all(m, verts, mesh.triangles, wire);
+            upload_all(m, verts, mesh.triangles, std::move(wire));
         } else {
             // Only the rows the moved points' basis functions reach.
             glBindBuffer(GL_ARRAY_BUFFER, m.vbo);
@@ -209,7 +211,7 @@ struct Renderer::Impl {
     // Vertices, triangles and wire edges of a mesh, replacing what the entry held.
     static void upload_all(MeshEntry& m, const std::vector<float>& verts,
                            const std::vector<std::array<std::uint32_t, 3>>& triangles,
-                           const std::vector<std::uint32_t>& wire) {
+                           std::vector<std::uint32_t> wire) {
         glBindBuffer(GL_ARRAY_BUFFER, m.vbo);
         glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(verts.size() * sizeof(float)),
                      verts.data(), GL_DYNAMIC_DRAW);
@@ -218,14 +220,11 @@ struct Renderer::Impl {
         glBufferData(GL_ELEMENT_ARRAY_BUFFER,
                      static_cast<GLsizeiptr>(triangles.size() * 3 * sizeof(std::uint32_t)),
                      triangles.data(), GL_DYNAMIC_DRAW);
-        glBindVertexArray(m.wire_vao);
-        glBufferData(GL_ELEMENT_ARRAY_BUFFER,
-                     static_cast<GLsizeiptr>(wire.size() * sizeof(std::uint32_t)), wire.data(),
-                     GL_DYNAMIC_DRAW);
         glBindVertexArray(0);
         glBindBuffer(GL_ARRAY_BUFFER, 0);
         m.tri_count = static_cast<GLsizei>(triangles.size() * 3);
-        m.wire_count = static_cast<GLsizei>(wire.size());
+        m.wire_pairs = std::move(wire);
+        m.wire_stale = true;
     }
 
     // A ready-made mesh (implicit objects): everything re-uploaded when its revision changes.
@@ -235,9 +234,14 @@ struct Renderer::Impl {
         m.density = 0;
         m.mesh = IncrementalMesh{}; // a later surface under this id starts afresh
         const geom::Mesh& mesh = *d.mesh;
-        // An implicit mesh has no curvature here: undefined under a curvature kind.
+        // An implicit surface's curvature at each vertex from f's gradient and Hessian; a mesh
+        // of another kind (or an f that does not compile) is undefined under a curvature kind.
+        const std::vector<double> scalars =
+            m.scalar_kind == AnalysisKind::off || !d.implicit
+                ? std::vector<double>{}
+                : implicit_vertex_curvature(*d.implicit, mesh, m.scalar_kind);
         const std::vector<float> verts =
-            interleave(mesh, 0, mesh.positions.size(), {},
+            interleave(mesh, 0, mesh.positions.size(), scalars,
                        m.scalar_kind == AnalysisKind::off ? 0.0f : undefined_scalar);
         // Each edge of a closed, consistently oriented mesh appears once in each direction.
         std::vector<std::uint32_t> wire;
@@ -248,10 +252,20 @@ struct Renderer::Impl {
                 if (a < b) wire.insert(wire.end(), {a, b});
             }
         ++stats.retessellated;
-        upload_all(m, verts, mesh.triangles, wire);
+        upload_all(m, verts, mesh.triangles, std::move(wire));
         m.vertices = static_cast<long>(mesh.positions.size());
         return m;
     }
+
+    void draw_shaded(const SceneView& view, const std::vector<SurfaceDraw>& surfaces,
+                     const std::vector<MeshEntry*>& entries, const glm::mat4& vp,
+                     const glm::mat4& vmat, double aspect);
+    void draw_wires(const std::vector<SurfaceDraw>& surfaces,
+                    const std::vector<MeshEntry*>& entries, const glm::mat4& vp,
+                    const float (&viewport)[2]);
+    GLint draw_overlay_lines(const Overlay& overlay);
+    void draw_points(const Overlay& overlay, GLint point_base, const glm::mat4& vp,
+                     const float (&viewport)[2]);
 
     void prune() {
         for (auto it = meshes.begin(); it != meshes.end();) {
@@ -289,6 +303,125 @@ unsigned Renderer::texture() const {
     return impl_->target.texture();
 }
 
+// Pass 1: shaded surfaces, pushed back a little so lines on them stay visible.
+void Renderer::Impl::draw_shaded(const SceneView& view, const std::vector<SurfaceDraw>& surfaces,
+                                 const std::vector<MeshEntry*>& entries, const glm::mat4& vp,
+                                 const glm::mat4& vmat, double aspect) {
+    glUseProgram(mesh.id());
+    glUniformMatrix4fv(mesh.uniform("u_view_proj"), 1, GL_FALSE, glm::value_ptr(vp));
+    glUniformMatrix4fv(mesh.uniform("u_view"), 1, GL_FALSE, glm::value_ptr(vmat));
+    set_analysis_uniforms(mesh, view.analysis);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.0f, 1.0f);
+    const glm::dvec3 eye = camera_eye(view.camera);
+    const double near_reach = near_plane_reach(view.camera, aspect);
+    for (std::size_t k = 0; k < surfaces.size(); ++k) {
+        if (!surfaces[k].shaded) continue;
+        const glm::vec4& c = surfaces[k].fill;
+        glUniform4f(mesh.uniform("u_color"), c.r, c.g, c.b, c.a);
+        // Counter-clockwise is OpenGL's front face (never changed here).
+        const HiddenFaces hidden = hidden_faces(surfaces[k], eye, near_reach);
+        if (hidden == HiddenFaces::none) {
+            glDisable(GL_CULL_FACE);
+        } else {
+            glEnable(GL_CULL_FACE);
+            glCullFace(hidden == HiddenFaces::clockwise ? GL_BACK : GL_FRONT);
+        }
+        glBindVertexArray(entries[k]->tri_vao);
+        glDrawElements(GL_TRIANGLES, entries[k]->tri_count, GL_UNSIGNED_INT, nullptr);
+    }
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+}
+
+// Pass 2: wireframes.
+void Renderer::Impl::draw_wires(const std::vector<SurfaceDraw>& surfaces,
+                                const std::vector<MeshEntry*>& entries, const glm::mat4& vp,
+                                const float (&viewport)[2]) {
+    glUseProgram(line.id());
+    glUniformMatrix4fv(line.uniform("u_view_proj"), 1, GL_FALSE, glm::value_ptr(vp));
+    glUniform2fv(line.uniform("u_viewport"), 1, viewport);
+    glUniform1f(line.uniform("u_depth_bias"), 0.0f);
+    glUniform1f(line.uniform("u_alpha"), 1.0f);
+    for (std::size_t k = 0; k < surfaces.size(); ++k) {
+        if (!surfaces[k].wireframe) continue;
+        MeshEntry& m = *entries[k];
+        if (m.wire_stale && m.source) {
+            m.wire.fill(*m.source, m.wire_pairs);
+            m.wire_stale = false;
+        }
+        const glm::vec4& c = surfaces[k].wire;
+        glUniform1f(line.uniform("u_width"), surfaces[k].wire_width);
+        glVertexAttrib4f(attrib_second, c.r, c.g, c.b, c.a); // both ends' constant colour
+        glVertexAttrib4f(attrib_end_color, c.r, c.g, c.b, c.a);
+        m.wire.draw();
+    }
+}
+
+// Pass 3: overlay lines; hidden parts first (faint), then the visible parts. Uploads the
+// points too; returns where they start in the stream.
+GLint Renderer::Impl::draw_overlay_lines(const Overlay& overlay) {
+    std::vector<OverlayVertex> all;
+    std::vector<std::pair<GLint, GLsizei>> ranges;
+    for (const LineBatch& b : overlay.lines) {
+        ranges.emplace_back(static_cast<GLint>(all.size()),
+                            static_cast<GLsizei>(b.vertices.size()));
+        all.insert(all.end(), b.vertices.begin(), b.vertices.end());
+    }
+    const GLint point_base = static_cast<GLint>(all.size());
+    for (const PointBatch& b : overlay.points)
+        all.insert(all.end(), b.points.begin(), b.points.end());
+    stream.upload(all);
+    glBindVertexArray(stream.vao);
+    glDepthMask(GL_FALSE);
+    glUniform1f(line.uniform("u_depth_bias"), 0.0005f);
+    for (std::size_t k = 0; k < overlay.lines.size(); ++k) {
+        const LineBatch& b = overlay.lines[k];
+        if (b.vertices.empty()) continue;
+        glUniform1f(line.uniform("u_width"), b.width_px);
+        stream.segments_from(ranges[k].first);
+        if (b.faint_when_hidden) {
+            glDepthFunc(GL_GREATER);
+            glUniform1f(line.uniform("u_alpha"), 0.28f);
+            draw_quads(ranges[k].second / 2);
+        }
+        glDepthFunc(GL_LEQUAL);
+        glUniform1f(line.uniform("u_alpha"), 1.0f);
+        draw_quads(ranges[k].second / 2);
+    }
+    return point_base;
+}
+
+// Pass 4: points, the same way (or on top of everything).
+void Renderer::Impl::draw_points(const Overlay& overlay, GLint point_base, const glm::mat4& vp,
+                                 const float (&viewport)[2]) {
+    glUseProgram(point.id());
+    glUniformMatrix4fv(point.uniform("u_view_proj"), 1, GL_FALSE, glm::value_ptr(vp));
+    glUniform2fv(point.uniform("u_viewport"), 1, viewport);
+    GLint first = point_base;
+    for (const PointBatch& b : overlay.points) {
+        const GLsizei count = static_cast<GLsizei>(b.points.size());
+        if (count == 0) continue;
+        glUniform1f(point.uniform("u_size"), b.size_px);
+        glUniform1i(point.uniform("u_sphere"), b.sphere ? 1 : 0);
+        stream.points_from(first);
+        if (b.on_top) {
+            glDisable(GL_DEPTH_TEST);
+            glUniform1f(point.uniform("u_alpha"), 1.0f);
+            draw_quads(count);
+            glEnable(GL_DEPTH_TEST);
+        } else {
+            glDepthFunc(GL_GREATER);
+            glUniform1f(point.uniform("u_alpha"), 0.35f);
+            draw_quads(count);
+            glDepthFunc(GL_LEQUAL);
+            glUniform1f(point.uniform("u_alpha"), 1.0f);
+            draw_quads(count);
+        }
+        first += count;
+    }
+}
+
 void Renderer::render(const SceneView& view, const std::vector<SurfaceDraw>& surfaces,
                       const Overlay& overlay) {
     stats_ = {};
@@ -312,7 +445,6 @@ void Renderer::render(const SceneView& view, const std::vector<SurfaceDraw>& sur
     im.target.resize(view.width, view.height);
     im.target.bind_for_drawing();
     glClearColor(view.background.r, view.background.g, view.background.b, view.background.a);
-    glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (!ok()) {
         im.target.resolve();
@@ -333,102 +465,10 @@ void Renderer::render(const SceneView& view, const std::vector<SurfaceDraw>& sur
     // Keep destination alpha at 1 so the texture stays opaque inside ImGui.
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
 
-    // Pass 1: shaded surfaces, pushed back a little so lines on them stay visible.
-    glUseProgram(im.mesh.id());
-    glUniformMatrix4fv(im.mesh.uniform("u_view_proj"), 1, GL_FALSE, glm::value_ptr(vp));
-    glUniformMatrix4fv(im.mesh.uniform("u_view"), 1, GL_FALSE, glm::value_ptr(vmat));
-    set_analysis_uniforms(im.mesh, view.analysis);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(1.0f, 1.0f);
-    const glm::dvec3 eye = camera_eye(view.camera);
-    const double near_reach = near_plane_reach(view.camera, aspect);
-    for (std::size_t k = 0; k < surfaces.size(); ++k) {
-        if (!surfaces[k].shaded) continue;
-        const glm::vec4& c = surfaces[k].fill;
-        glUniform4f(im.mesh.uniform("u_color"), c.r, c.g, c.b, c.a);
-        // Counter-clockwise is OpenGL's front face (never changed here).
-        const HiddenFaces hidden = hidden_faces(surfaces[k], eye, near_reach);
-        if (hidden == HiddenFaces::none) {
-            glDisable(GL_CULL_FACE);
-        } else {
-            glEnable(GL_CULL_FACE);
-            glCullFace(hidden == HiddenFaces::clockwise ? GL_BACK : GL_FRONT);
-        }
-        glBindVertexArray(entries[k]->tri_vao);
-        glDrawElements(GL_TRIANGLES, entries[k]->tri_count, GL_UNSIGNED_INT, nullptr);
-    }
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_POLYGON_OFFSET_FILL);
-
-    // Pass 2: wireframes.
-    glUseProgram(im.line.id());
-    glUniformMatrix4fv(im.line.uniform("u_view_proj"), 1, GL_FALSE, glm::value_ptr(vp));
-    glUniform2fv(im.line.uniform("u_viewport"), 1, viewport);
-    glUniform1f(im.line.uniform("u_depth_bias"), 0.0f);
-    glUniform1f(im.line.uniform("u_alpha"), 1.0f);
-    for (std::size_t k = 0; k < surfaces.size(); ++k) {
-        if (!surfaces[k].wireframe) continue;
-        const glm::vec4& c = surfaces[k].wire;
-        glUniform1f(im.line.uniform("u_width"), surfaces[k].wire_width);
-        glBindVertexArray(entries[k]->wire_vao);
-        glVertexAttrib4f(1, c.r, c.g, c.b, c.a);
-        glDrawElements(GL_LINES, entries[k]->wire_count, GL_UNSIGNED_INT, nullptr);
-    }
-
-    // Pass 3: overlay lines; hidden parts first (faint), then the visible parts.
-    std::vector<OverlayVertex> all;
-    std::vector<std::pair<GLint, GLsizei>> ranges;
-    for (const LineBatch& b : overlay.lines) {
-        ranges.emplace_back(static_cast<GLint>(all.size()),
-                            static_cast<GLsizei>(b.vertices.size()));
-        all.insert(all.end(), b.vertices.begin(), b.vertices.end());
-    }
-    const GLint point_base = static_cast<GLint>(all.size());
-    for (const PointBatch& b : overlay.points)
-        all.insert(all.end(), b.points.begin(), b.points.end());
-    im.stream.upload(all);
-    glBindVertexArray(im.stream.vao);
-    glDepthMask(GL_FALSE);
-    glUniform1f(im.line.uniform("u_depth_bias"), 0.0005f);
-    for (std::size_t k = 0; k < overlay.lines.size(); ++k) {
-        const LineBatch& b = overlay.lines[k];
-        if (b.vertices.empty()) continue;
-        glUniform1f(im.line.uniform("u_width"), b.width_px);
-        if (b.faint_when_hidden) {
-            glDepthFunc(GL_GREATER);
-            glUniform1f(im.line.uniform("u_alpha"), 0.28f);
-            glDrawArrays(GL_LINES, ranges[k].first, ranges[k].second);
-        }
-        glDepthFunc(GL_LEQUAL);
-        glUniform1f(im.line.uniform("u_alpha"), 1.0f);
-        glDrawArrays(GL_LINES, ranges[k].first, ranges[k].second);
-    }
-
-    // Pass 4: points, the same way (or on top of everything).
-    glUseProgram(im.point.id());
-    glUniformMatrix4fv(im.point.uniform("u_view_proj"), 1, GL_FALSE, glm::value_ptr(vp));
-    glUniform2fv(im.point.uniform("u_viewport"), 1, viewport);
-    GLint first = point_base;
-    for (const PointBatch& b : overlay.points) {
-        const GLsizei count = static_cast<GLsizei>(b.points.size());
-        if (count == 0) continue;
-        glUniform1f(im.point.uniform("u_size"), b.size_px);
-        glUniform1i(im.point.uniform("u_sphere"), b.sphere ? 1 : 0);
-        if (b.on_top) {
-            glDisable(GL_DEPTH_TEST);
-            glUniform1f(im.point.uniform("u_alpha"), 1.0f);
-            glDrawArrays(GL_POINTS, first, count);
-            glEnable(GL_DEPTH_TEST);
-        } else {
-            glDepthFunc(GL_GREATER);
-            glUniform1f(im.point.uniform("u_alpha"), 0.35f);
-            glDrawArrays(GL_POINTS, first, count);
-            glDepthFunc(GL_LEQUAL);
-            glUniform1f(im.point.uniform("u_alpha"), 1.0f);
-            glDrawArrays(GL_POINTS, first, count);
-        }
-        first += count;
-    }
+    im.draw_shaded(view, surfaces, entries, vp, vmat, aspect);
+    im.draw_wires(surfaces, entries, vp, viewport);
+    const GLint point_base = im.draw_overlay_lines(overlay);
+    im.draw_points(overlay, point_base, vp, viewport);
 
     glBindVertexArray(0);
     glUseProgram(0);

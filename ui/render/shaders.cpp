@@ -1,9 +1,10 @@
-// GLSL sources of the 3D view's three programs.
+// GLSL sources of the 3D view's three programs, without their version line (GlProgram puts
+// gl.hpp's glsl_prologue first: GLSL 3.30 on the desktop, GLSL ES 3.00 in the browser).
 #include "ui/render/shaders.hpp"
 
 namespace isoparm::ui::shaders {
 
-const char* const mesh_vs = R"(#version 330 core
+const char* const mesh_vs = R"(
 in vec3 a_position;
 in vec3 a_second; // normal
 in float a_scalar; // the analysis value (a curvature), 1e30 where undefined
@@ -21,7 +22,7 @@ void main() {
 }
 )";
 
-const char* const mesh_fs = R"(#version 330 core
+const char* const mesh_fs = R"(
 in vec3 v_eye_pos;
 in vec3 v_eye_normal;
 in float v_scalar;
@@ -87,33 +88,32 @@ void main() {
 }
 )";
 
-const char* const line_vs = R"(#version 330 core
-in vec3 a_position;
-in vec4 a_second; // colour
+// A segment per instance: its two ends (and colours) are per-instance attributes and
+// gl_VertexID picks the quad's corner, 0 and 1 at the start, 2 and 3 at the end (a triangle
+// strip). This is what a geometry shader would emit, built where WebGL 2 can build it.
+const char* const line_vs = R"(
+in vec3 a_position; // the segment's start
+in vec4 a_second;   // its colour
+in vec3 a_end;      // the segment's end
+in vec4 a_end_color;
 uniform mat4 u_view_proj;
-out vec4 g_color;
-void main() {
-    g_color = a_second;
-    gl_Position = u_view_proj * vec4(a_position, 1.0);
-}
-)";
-
-const char* const line_gs = R"(#version 330 core
-layout(lines) in;
-layout(triangle_strip, max_vertices = 4) out;
-in vec4 g_color[];
-out vec4 f_color;
-out float f_edge; // signed distance from the centre line, pixels
 uniform vec2 u_viewport; // pixels
 uniform float u_width;   // pixels
 uniform float u_depth_bias;
+out vec4 f_color;
+out float f_edge; // signed distance from the centre line, pixels
 void main() {
-    vec4 p0 = gl_in[0].gl_Position, p1 = gl_in[1].gl_Position;
-    vec4 c0 = g_color[0], c1 = g_color[1];
+    vec4 p0 = u_view_proj * vec4(a_position, 1.0), p1 = u_view_proj * vec4(a_end, 1.0);
+    vec4 c0 = a_second, c1 = a_end_color;
     // Clip against the near plane (w = eps) before dividing: otherwise a segment passing
     // behind the eye would flip across the screen.
     const float eps = 1e-5;
-    if (p0.w < eps && p1.w < eps) return;
+    if (p0.w < eps && p1.w < eps) { // wholly behind the eye: a point outside the clip volume
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+        f_color = vec4(0.0);
+        f_edge = 0.0;
+        return;
+    }
     if (p0.w < eps) { float t = (eps - p0.w) / (p1.w - p0.w); p0 = mix(p0, p1, t); c0 = mix(c0, c1, t); }
     if (p1.w < eps) { float t = (eps - p1.w) / (p0.w - p1.w); p1 = mix(p1, p0, t); c1 = mix(c1, c0, t); }
     vec2 s0 = p0.xy / p0.w * u_viewport * 0.5;
@@ -126,20 +126,17 @@ void main() {
     vec2 n = vec2(-d.y, d.x) * half_total;
     vec2 e = d * (u_width * 0.5); // half-width caps close the joints of polylines
     vec2 to_ndc = 2.0 / u_viewport;
-    vec4 q[4];
-    q[0] = vec4((s0 - e - n) * to_ndc * p0.w, p0.z - u_depth_bias * p0.w, p0.w);
-    q[1] = vec4((s0 - e + n) * to_ndc * p0.w, p0.z - u_depth_bias * p0.w, p0.w);
-    q[2] = vec4((s1 + e - n) * to_ndc * p1.w, p1.z - u_depth_bias * p1.w, p1.w);
-    q[3] = vec4((s1 + e + n) * to_ndc * p1.w, p1.z - u_depth_bias * p1.w, p1.w);
-    f_color = c0; f_edge = -half_total; gl_Position = q[0]; EmitVertex();
-    f_color = c0; f_edge = half_total; gl_Position = q[1]; EmitVertex();
-    f_color = c1; f_edge = -half_total; gl_Position = q[2]; EmitVertex();
-    f_color = c1; f_edge = half_total; gl_Position = q[3]; EmitVertex();
-    EndPrimitive();
+    bool start = gl_VertexID < 2;
+    float side = (gl_VertexID & 1) == 0 ? -1.0 : 1.0;
+    vec4 p = start ? p0 : p1;
+    vec2 s = start ? s0 - e : s1 + e;
+    gl_Position = vec4((s + side * n) * to_ndc * p.w, p.z - u_depth_bias * p.w, p.w);
+    f_color = start ? c0 : c1;
+    f_edge = side * half_total;
 }
 )";
 
-const char* const line_fs = R"(#version 330 core
+const char* const line_fs = R"(
 in vec4 f_color;
 in float f_edge;
 uniform float u_alpha;
@@ -153,33 +150,32 @@ void main() {
 }
 )";
 
-const char* const point_vs = line_vs;
-
-const char* const point_gs = R"(#version 330 core
-layout(points) in;
-layout(triangle_strip, max_vertices = 4) out;
-in vec4 g_color[];
-out vec4 f_color;
-out vec2 f_local;
+// A point per instance; gl_VertexID picks the corner of its square (a triangle strip).
+const char* const point_vs = R"(
+in vec3 a_position;
+in vec4 a_second; // colour
+uniform mat4 u_view_proj;
 uniform vec2 u_viewport;
 uniform float u_size; // diameter in pixels
+out vec4 f_color;
+out vec2 f_local;
 void main() {
-    vec4 p = gl_in[0].gl_Position;
-    if (p.w <= 1e-5) return;
+    vec4 p = u_view_proj * vec4(a_position, 1.0);
+    f_color = a_second;
+    if (p.w <= 1e-5) { // behind the eye: outside the clip volume
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+        f_local = vec2(0.0);
+        return;
+    }
+    vec2 corner = vec2(float(gl_VertexID & 1), float(gl_VertexID >> 1)) * 2.0 - 1.0;
     vec2 r = vec2(u_size * 0.5 + 1.0) * 2.0 / u_viewport * p.w;
     float k = (u_size * 0.5 + 1.0) / (u_size * 0.5); // one pixel of room for the soft edge
-    vec2 corners[4] = vec2[](vec2(-1, -1), vec2(1, -1), vec2(-1, 1), vec2(1, 1));
-    for (int c = 0; c < 4; ++c) {
-        f_color = g_color[0];
-        f_local = corners[c] * k;
-        gl_Position = vec4(p.xy + corners[c] * r, p.z, p.w);
-        EmitVertex();
-    }
-    EndPrimitive();
+    f_local = corner * k;
+    gl_Position = vec4(p.xy + corner * r, p.z, p.w);
 }
 )";
 
-const char* const point_fs = R"(#version 330 core
+const char* const point_fs = R"(
 in vec4 f_color;
 in vec2 f_local; // [-1, 1] is the disk's radius
 uniform float u_size;

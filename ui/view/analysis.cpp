@@ -4,6 +4,13 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/common.hpp>
+#include <iterator>
+#include <limits>
+#include <vector>
+
+#include "core/geom/implicit/curvature.hpp"
+#include "core/geom/status.hpp"
+#include "ui/view/implicit_meshes.hpp"
 
 #include "core/geom/curvature.hpp"
 
@@ -14,6 +21,30 @@ namespace {
 constexpr int range_samples = 17;
 
 } // namespace
+
+Range robust_range(std::vector<double> values, double tail) {
+    Range r;
+    if (values.empty()) return r;
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    r.all_lo = values.front();
+    r.all_hi = values.back();
+    // Nearest-rank percentiles: with few values the ends are the extremes themselves.
+    const auto at = [&](double q) {
+        const double pos = q * static_cast<double>(n - 1);
+        return values[static_cast<std::size_t>(
+            std::clamp(std::round(pos), 0.0, static_cast<double>(n - 1)))];
+    };
+    r.lo = at(tail);
+    r.hi = at(1 - tail);
+    return r;
+}
+
+std::string analysis_range_note(const AnalysisView& v) {
+    if (!is_curvature(v.kind) || !v.clipped) return "";
+    return "all values " + geom::format_short(v.data_lo, 3) + " .. " +
+           geom::format_short(v.data_hi, 3) + (v.fixed ? "" : "; the bar spans 96% of them");
+}
 
 // The view's kinds are the document's modes in the same order.
 static_assert(static_cast<int>(AnalysisKind::isophote) ==
@@ -36,7 +67,22 @@ AnalysisKind analysis_kind(doc::AnalysisMode mode) {
     return static_cast<AnalysisKind>(static_cast<int>(mode));
 }
 
-AnalysisView analysis_view(const doc::Document& doc) {
+std::vector<double> implicit_vertex_curvature(const doc::ImplicitObject& o, const geom::Mesh& mesh,
+                                              AnalysisKind kind, std::size_t stride) {
+    stride = std::max<std::size_t>(stride, 1);
+    const std::size_t n = (mesh.positions.size() + stride - 1) / stride;
+    std::vector<double> out(n, std::numeric_limits<double>::quiet_NaN());
+    const auto program = geom::implicit::compile(o.expression, o.parameter_names);
+    if (!program) return out;
+    const double* params = o.parameter_values.empty() ? nullptr : o.parameter_values.data();
+    const geom::CurvatureKind k = curvature_kind(kind);
+    for (std::size_t q = 0; q < n; ++q)
+        out[q] = geom::implicit::implicit_curvature_value(*program, mesh.positions[q * stride], k,
+                                                          params);
+    return out;
+}
+
+AnalysisView analysis_view(const doc::Document& doc, const ImplicitMeshes* implicit) {
     const doc::DisplaySettings& d = doc.view.display;
     AnalysisView v;
     v.kind = analysis_kind(d.analysis);
@@ -45,28 +91,41 @@ AnalysisView analysis_view(const doc::Document& doc) {
     v.diverging = v.kind == AnalysisKind::gaussian || v.kind == AnalysisKind::mean;
     if (!is_curvature(v.kind)) return v;
     double lo = 0, hi = 0;
+    std::vector<double> values;
+    for (const doc::Object& o : doc.objects) {
+        const geom::Surface* s = o.surface();
+        if (!s || !o.visible) continue;
+        for (double k :
+             geom::curvature_grid(*s, range_samples, range_samples, curvature_kind(v.kind)))
+            if (std::isfinite(k)) values.push_back(k);
+    }
+    if (implicit)
+        for (const doc::Object& o : doc.objects) {
+            const doc::ImplicitObject* im = o.implicit();
+            if (!im || !o.visible) continue;
+            const ImplicitMeshes::View mv = implicit->view(o.id);
+            if (!mv.mesh || mv.mesh->positions.empty()) continue;
+            const std::size_t stride = std::max<std::size_t>(mv.mesh->positions.size() / 300, 1);
+            for (double k : implicit_vertex_curvature(*im, *mv.mesh, v.kind, stride))
+                if (std::isfinite(k)) values.push_back(k);
+        }
+    const Range robust = robust_range(values);
+    v.data_lo = static_cast<float>(robust.all_lo);
+    v.data_hi = static_cast<float>(robust.all_hi);
     if (d.analysis_fixed) {
+        v.fixed = true;
         lo = d.analysis_lo;
         hi = d.analysis_hi;
     } else {
-        bool any = false;
-        for (const doc::Object& o : doc.objects) {
-            const geom::Surface* s = o.surface();
-            if (!s || !o.visible) continue;
-            for (double k :
-                 geom::curvature_grid(*s, range_samples, range_samples, curvature_kind(v.kind))) {
-                if (!std::isfinite(k)) continue;
-                lo = any ? std::min(lo, k) : k;
-                hi = any ? std::max(hi, k) : k;
-                any = true;
-            }
-        }
+        lo = robust.lo;
+        hi = robust.hi;
         if (v.diverging) {
             const double m = std::max(std::abs(lo), std::abs(hi));
             lo = -m;
             hi = m;
         }
     }
+    v.clipped = !values.empty() && (robust.all_lo < lo || robust.all_hi > hi);
     if (!(hi - lo > 1e-12)) {
         const double mid = 0.5 * (lo + hi);
         lo = mid - 1e-12;
@@ -90,24 +149,25 @@ glm::vec3 analysis_colour(const AnalysisView& view, double value) {
     return t < 0.5f ? glm::mix(a, b, t * 2) : glm::mix(b, c, t * 2 - 1);
 }
 
+namespace {
+
+// The colour bar's title of each kind ("" when off), in declaration order.
+constexpr const char* analysis_titles[] = {
+    "",
+    "K (Gaussian curvature)",
+    "H (mean curvature)",
+    "k1 (largest principal curvature)",
+    "k2 (smallest principal curvature)",
+    "zebra stripes",
+    "isophotes",
+};
+static_assert(std::size(analysis_titles) == static_cast<std::size_t>(AnalysisKind::isophote) + 1);
+
+} // namespace
+
 std::string analysis_title(AnalysisKind kind) {
-    switch (kind) {
-    case AnalysisKind::gaussian:
-        return "K (Gaussian curvature)";
-    case AnalysisKind::mean:
-        return "H (mean curvature)";
-    case AnalysisKind::kmax:
-        return "k1 (largest principal curvature)";
-    case AnalysisKind::kmin:
-        return "k2 (smallest principal curvature)";
-    case AnalysisKind::zebra:
-        return "zebra stripes";
-    case AnalysisKind::isophote:
-        return "isophotes";
-    case AnalysisKind::off:
-        break;
-    }
-    return "";
+    const auto k = static_cast<std::size_t>(kind);
+    return k < std::size(analysis_titles) ? analysis_titles[k] : "";
 }
 
 } // namespace isoparm::ui

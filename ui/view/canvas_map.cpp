@@ -82,39 +82,6 @@ std::optional<std::size_t> hit_movable_tick(const std::vector<double>& tick_px,
     return best;
 }
 
-std::vector<glm::dvec2> place_labels(const std::vector<glm::dvec2>& anchors,
-                                     const std::vector<glm::dvec2>& sizes, double offset) {
-    struct Box {
-        glm::dvec2 lo, hi;
-        bool overlaps(const Box& o) const {
-            return lo.x < o.hi.x && o.lo.x < hi.x && lo.y < o.hi.y && o.lo.y < hi.y;
-        }
-    };
-    std::vector<Box> placed;
-    std::vector<glm::dvec2> out;
-    for (std::size_t k = 0; k < anchors.size() && k < sizes.size(); ++k) {
-        const glm::dvec2 a = anchors[k], s = sizes[k];
-        const double d = offset;
-        const glm::dvec2 candidates[] = {
-            {a.x + d, a.y - s.y / 2},       {a.x - d - s.x, a.y - s.y / 2},
-            {a.x - s.x / 2, a.y - d - s.y}, {a.x - s.x / 2, a.y + d},
-            {a.x + d, a.y - d - s.y},       {a.x + d, a.y + d},
-            {a.x - d - s.x, a.y - d - s.y}, {a.x - d - s.x, a.y + d}};
-        glm::dvec2 chosen = candidates[0];
-        for (const glm::dvec2& c : candidates) {
-            const Box b{c, c + s};
-            if (std::none_of(placed.begin(), placed.end(),
-                             [&](const Box& p) { return p.overlaps(b); })) {
-                chosen = c;
-                break;
-            }
-        }
-        placed.push_back({chosen, chosen + s});
-        out.push_back(chosen);
-    }
-    return out;
-}
-
 std::vector<bool> thin_labels(const std::vector<double>& px, double min_gap) {
     const std::size_t n = px.size();
     std::vector<bool> keep(n, false);

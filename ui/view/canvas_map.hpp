@@ -47,16 +47,10 @@ std::optional<std::size_t> hit_movable_tick(const std::vector<double>& tick_px,
                                             const std::vector<bool>& movable, double pixel_pos,
                                             double radius_px);
 
-// Where to put the labels of points on screen so that none covers another: each label
-// (anchors[k], sizes[k] in pixels) tries eight places around its point, `offset` pixels
-// away (right, left, above, below, then the corners), and takes the first that overlaps no
-// label placed before it; when all do, the first place. Returns top-left corners.
-std::vector<glm::dvec2> place_labels(const std::vector<glm::dvec2>& anchors,
-                                     const std::vector<glm::dvec2>& sizes, double offset);
-
-// Which labels to draw along an edge so that none overlaps: a label is kept when it is at
-// least min_gap pixels from the last kept one; the two ends are always kept (the last end
-// replaces a kept label that would crowd it). Input sorted ascending.
+// Labels on a canvas: ui/view/label_placer.hpp (the one placer of every view). A row of tick
+// values can be thinned first: a label is kept when it is at least min_gap pixels from the
+// last kept one; the two ends are always kept (the last end replaces a kept label that would
+// crowd it). Input sorted ascending. (The figures' tick rows use it.)
 std::vector<bool> thin_labels(const std::vector<double>& px, double min_gap);
 
 // A 2D canvas showing world axes (ax, ay) at equal scale: the control-point panel's planes.

@@ -50,11 +50,23 @@ ControlNet triangle_net(const geom::TrianglePatch& t) {
     return net;
 }
 
+ControlNet curve_net(const geom::Curve& c) {
+    ControlNet net;
+    std::vector<int>& polygon = net.lines.emplace_back();
+    for (int i = 0; i < c.count(); ++i) {
+        net.ids.emplace_back(i, -1);
+        net.points.push_back(c.points[static_cast<std::size_t>(i)]);
+        polygon.push_back(i);
+    }
+    return net;
+}
+
 } // namespace
 
 ControlNet control_net_of(const doc::Object& o) {
     if (const geom::Surface* s = o.surface()) return surface_net(*s);
     if (const geom::TrianglePatch* t = o.triangle()) return triangle_net(*t);
+    if (const geom::Curve* c = o.curve()) return curve_net(*c);
     return {};
 }
 

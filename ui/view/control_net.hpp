@@ -1,5 +1,5 @@
-// A surface's or a triangular patch's control net as the plane canvases of the Control point
-// panel draw and pick it: the points with their (i, j) and the net's lines through them.
+// An object's control net as the plane canvases (the Control point panel, the four-view
+// layout's planes) draw and pick it: the points with their (i, j) and the net's lines.
 #pragma once
 
 #include <utility>
@@ -19,7 +19,8 @@ struct ControlNet {
 };
 
 // A surface: its rows and columns. A triangle of degree n: the lines i, j and k = const of
-// its triangular net (together its 3 n (n + 1) / 2 edges). Empty for other objects.
+// its triangular net (together its 3 n (n + 1) / 2 edges). A curve: its control polygon, the
+// points' ids (i, -1). Empty for implicit surfaces.
 ControlNet control_net_of(const doc::Object& o);
 
 } // namespace isoparm::ui

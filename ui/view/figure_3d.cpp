@@ -108,30 +108,14 @@ struct Piece {
     std::string role;
 };
 
-} // namespace
-
-geom::Expected<Drawing> view3d_figure(const doc::Document& d, const View3dFigureInput& in,
-                                      const FigureOptions& o) {
-    SceneStyle style;
-    style.deboor_step = in.deboor_step;
-    const BuiltScene scene = build_scene(d, style);
-    Drawing dr;
-    dr.width = o.width;
-    dr.height = o.height;
-    dr.title = "3D view";
-    if (!o.transparent)
-        dr.background =
-            DrawColor{d.colors.background.r, d.colors.background.g, d.colors.background.b, 1};
-    if (in.raster) dr.items.push_back(*in.raster);
-    const Projector project(in.camera, o.width, o.height);
-
-    // The surfaces hide what lies behind them; the tolerance lets lines drawn on a surface
-    // (isocurves, knot curves) through despite the tessellation's chords.
-    DepthBuffer depth(o.width, o.height, 2.0);
-    std::vector<const geom::Surface*> surfaces;
+// The surfaces' depth, for hiding what lies behind them.
+DepthBuffer surface_depth(const BuiltScene& scene, const Projector& project, int width,
+                          int height) {
+    // The tolerance lets lines drawn on a surface (isocurves, knot curves) through despite the
+    // tessellation's chords.
+    DepthBuffer depth(width, height, 2.0);
     for (const SurfaceDraw& sd : scene.surfaces) {
         if (!sd.surface) continue;
-        surfaces.push_back(sd.surface);
         const int n = std::clamp(sd.density * 2, 16, 128);
         const geom::Mesh mesh = geom::tessellate(*sd.surface, n, n);
         std::vector<ScreenPoint> px;
@@ -141,13 +125,20 @@ geom::Expected<Drawing> view3d_figure(const doc::Document& d, const View3dFigure
             if (mesh.vertex_exists(t[0]) && mesh.vertex_exists(t[1]) && mesh.vertex_exists(t[2]))
                 depth.triangle(px[t[0]], px[t[1]], px[t[2]]);
     }
-    const double tolerance = 0.012 * in.camera.distance;
+    return depth;
+}
 
+// The figure's lines as pieces of one stroke, each visible or (dashed) hidden.
+struct PieceCollector {
+    const Projector& project;
+    const DepthBuffer& depth;
+    double tolerance;
     std::vector<Piece> pieces;
+
     // A segment a-b sampled every point or so; runs of visible samples become pieces, and for
     // `dash_hidden` the hidden runs become dashed pieces.
-    auto add_segment = [&](const glm::dvec3& a, const glm::dvec3& b, const DrawStroke& s,
-                           bool dash_hidden, const std::string& role) {
+    void add_segment(const glm::dvec3& a, const glm::dvec3& b, const DrawStroke& s,
+                     bool dash_hidden, const std::string& role) {
         const ScreenPoint pa = project(a), pb = project(b);
         if (!pa.ok || !pb.ok) return;
         const double len = glm::length(pb.p - pa.p);
@@ -196,6 +187,87 @@ geom::Expected<Drawing> view3d_figure(const doc::Document& d, const View3dFigure
             }
         }
         flush();
+    }
+};
+
+// Drop hidden runs; join pieces that continue one another (same stroke, shared end) so a
+// curve is one path, not a hundred segments.
+std::vector<Piece> joined_pieces(std::vector<Piece> pieces) {
+    pieces.erase(
+        std::remove_if(pieces.begin(), pieces.end(), [](const Piece& p) { return p.role.empty(); }),
+        pieces.end());
+    std::vector<Piece> joined;
+    for (Piece& p : pieces) {
+        if (!joined.empty()) {
+            Piece& last = joined.back();
+            const auto same = [](const DrawStroke& x, const DrawStroke& y) {
+                return x.width == y.width && x.dash == y.dash && x.color.r == y.color.r &&
+                       x.color.g == y.color.g && x.color.b == y.color.b && x.color.a == y.color.a;
+            };
+            if (last.role == p.role && same(last.stroke, p.stroke) &&
+                glm::length(last.points.back() - p.points.front()) < 1e-6) {
+                const double nl = static_cast<double>(last.points.size());
+                const double np = static_cast<double>(p.points.size());
+                last.depth = (last.depth * nl + p.depth * np) / (nl + np);
+                last.points.insert(last.points.end(), p.points.begin() + 1, p.points.end());
+                continue;
+            }
+        }
+        joined.push_back(std::move(p));
+    }
+    return joined;
+}
+
+// Points: visible ones as dots (those drawn on top always), nearest last.
+void add_dots(Drawing& dr, const BuiltScene& scene, const Projector& project,
+              const DepthBuffer& depth, double tolerance, double line_scale) {
+    struct Dot {
+        glm::dvec2 p;
+        double depth, r;
+        DrawColor c;
+        bool sphere;
+    };
+    std::vector<Dot> dots;
+    for (const PointBatch& batch : scene.overlay.points)
+        for (const OverlayVertex& v : batch.points) {
+            const ScreenPoint q = project(v.position);
+            if (!q.ok) continue;
+            if (!batch.on_top && !depth.visible(q.p, q.depth, tolerance)) continue;
+            dots.push_back(
+                {q.p, q.depth, 0.25 * batch.size_px * line_scale, color_of(v.color), batch.sphere});
+        }
+    std::stable_sort(dots.begin(), dots.end(),
+                     [](const Dot& a, const Dot& b) { return a.depth > b.depth; });
+    for (const Dot& dt : dots)
+        dr.dot(dt.p, dt.r, dt.c, stroke({0, 0, 0, 0.6f}, 0.3),
+               dt.sphere ? "result-point" : "point");
+}
+
+} // namespace
+
+geom::Expected<Drawing> view3d_figure(const doc::Document& d, const View3dFigureInput& in,
+                                      const FigureOptions& o) {
+    SceneStyle style;
+    style.deboor_step = in.deboor_step;
+    const BuiltScene scene = build_scene(d, style);
+    Drawing dr;
+    dr.width = o.width;
+    dr.height = o.height;
+    dr.title = "3D view";
+    if (!o.transparent)
+        dr.background =
+            DrawColor{d.colors.background.r, d.colors.background.g, d.colors.background.b, 1};
+    if (in.raster) dr.items.push_back(*in.raster);
+    const Projector project(in.camera, o.width, o.height);
+
+    // The surfaces hide what lies behind them.
+    const DepthBuffer depth = surface_depth(scene, project, o.width, o.height);
+    const double tolerance = 0.012 * in.camera.distance;
+
+    PieceCollector lines{project, depth, tolerance, {}};
+    auto add_segment = [&lines](const glm::dvec3& a, const glm::dvec3& b, const DrawStroke& s,
+                                bool dash_hidden, const std::string& role) {
+        lines.add_segment(a, b, s, dash_hidden, role);
     };
 
     // The figure's wireframe: isocurves at the knots' span ends and between them.
@@ -219,55 +291,12 @@ geom::Expected<Drawing> view3d_figure(const doc::Document& d, const View3dFigure
             add_segment(a.position, batch.vertices[k + 1].position, st, batch.faint_when_hidden,
                         batch.faint_when_hidden ? "net" : "line");
         }
-    // Drop hidden runs; join pieces that continue one another (same stroke, shared end) so a
-    // curve is one path, not a hundred segments.
-    pieces.erase(
-        std::remove_if(pieces.begin(), pieces.end(), [](const Piece& p) { return p.role.empty(); }),
-        pieces.end());
-    std::vector<Piece> joined;
-    for (Piece& p : pieces) {
-        if (!joined.empty()) {
-            Piece& last = joined.back();
-            const auto same = [](const DrawStroke& x, const DrawStroke& y) {
-                return x.width == y.width && x.dash == y.dash && x.color.r == y.color.r &&
-                       x.color.g == y.color.g && x.color.b == y.color.b && x.color.a == y.color.a;
-            };
-            if (last.role == p.role && same(last.stroke, p.stroke) &&
-                glm::length(last.points.back() - p.points.front()) < 1e-6) {
-                const double nl = static_cast<double>(last.points.size());
-                const double np = static_cast<double>(p.points.size());
-                last.depth = (last.depth * nl + p.depth * np) / (nl + np);
-                last.points.insert(last.points.end(), p.points.begin() + 1, p.points.end());
-                continue;
-            }
-        }
-        joined.push_back(std::move(p));
-    }
+    std::vector<Piece> joined = joined_pieces(std::move(lines.pieces));
     std::stable_sort(joined.begin(), joined.end(),
                      [](const Piece& a, const Piece& b) { return a.depth > b.depth; });
     for (Piece& p : joined) dr.polyline(std::move(p.points), p.stroke, p.role);
 
-    // Points: visible ones as dots (those drawn on top always), nearest last.
-    struct Dot {
-        glm::dvec2 p;
-        double depth, r;
-        DrawColor c;
-        bool sphere;
-    };
-    std::vector<Dot> dots;
-    for (const PointBatch& batch : scene.overlay.points)
-        for (const OverlayVertex& v : batch.points) {
-            const ScreenPoint q = project(v.position);
-            if (!q.ok) continue;
-            if (!batch.on_top && !depth.visible(q.p, q.depth, tolerance)) continue;
-            dots.push_back({q.p, q.depth, 0.25 * batch.size_px * in.line_scale, color_of(v.color),
-                            batch.sphere});
-        }
-    std::stable_sort(dots.begin(), dots.end(),
-                     [](const Dot& a, const Dot& b) { return a.depth > b.depth; });
-    for (const Dot& dt : dots)
-        dr.dot(dt.p, dt.r, dt.c, stroke({0, 0, 0, 0.6f}, 0.3),
-               dt.sphere ? "result-point" : "point");
+    add_dots(dr, scene, project, depth, tolerance, in.line_scale);
     return dr;
 }
 

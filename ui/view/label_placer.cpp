@@ -184,12 +184,21 @@ LabelPlacement place_labels(const std::vector<LabelRequest>& requests, const Rec
         out.more_text = "+" + std::to_string(out.dropped.size());
         const glm::vec2 size = measure(out.more_text) + glm::vec2(2 * pad);
         const float inset = 2;
-        const Rect corners[4] = {
-            {bounds.x + bounds.w - size.x - inset, bounds.y + bounds.h - size.y - inset, size.x,
-             size.y},
-            {bounds.x + inset, bounds.y + bounds.h - size.y - inset, size.x, size.y},
-            {bounds.x + bounds.w - size.x - inset, bounds.y + inset, size.x, size.y},
-            {bounds.x + inset, bounds.y + inset, size.x, size.y}};
+        const float left = bounds.x + inset, right = bounds.x + bounds.w - size.x - inset;
+        const float top = bounds.y + inset, bottom = bounds.y + bounds.h - size.y - inset;
+        // The corners first, then along the bottom and top edges, then down the sides.
+        std::vector<Rect> corners{{right, bottom, size.x, size.y},
+                                  {left, bottom, size.x, size.y},
+                                  {right, top, size.x, size.y},
+                                  {left, top, size.x, size.y}};
+        for (float x = right - size.x; x > left; x -= size.x) {
+            corners.push_back({x, bottom, size.x, size.y});
+            corners.push_back({x, top, size.x, size.y});
+        }
+        for (float y = bottom - size.y; y > top; y -= size.y) {
+            corners.push_back({right, y, size.x, size.y});
+            corners.push_back({left, y, size.x, size.y});
+        }
         std::optional<Rect> badge;
         for (const Rect& c : corners)
             if (board.free(c)) {

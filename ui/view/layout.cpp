@@ -95,6 +95,19 @@ Layout compute_layout(const LayoutPrefs& prefs, const LayoutInput& in) {
             r = avail * r / total;
         }
     }
+    if (in.presentation && prefs.presentation_left > 0 && prefs.presentation_right > 0) {
+        // The columns the user dragged in presentation mode, while the centre keeps its minimum.
+        const float side_min = std::min(min_side, avail * 0.15f);
+        const float centre_min = std::min(min_center_width * s, avail * 0.3f);
+        l = std::max(prefs.presentation_left * avail, side_min);
+        r = std::max(prefs.presentation_right * avail, side_min);
+        if (l + r + centre_min > avail) {
+            const float excess = l + r + centre_min - avail;
+            const float extra = std::max((l - side_min) + (r - side_min), 1e-3f);
+            l -= (l - side_min) / extra * excess;
+            r -= (r - side_min) / extra * excess;
+        }
+    }
     const float c = std::max(avail - l - r, 0.f);
 
     const float y = in.top;
@@ -112,6 +125,22 @@ Layout compute_layout(const LayoutPrefs& prefs, const LayoutInput& in) {
 void drag_column_splitter(LayoutPrefs& prefs, const Layout& layout, const LayoutInput& in,
                           Side side, float dx) {
     const float s = in.scale > 0 ? in.scale : 1.f;
+    if (in.presentation) {
+        const float avail = std::max(in.width - 2 * in.splitter, 1.f);
+        float l = layout.left_splitter.x;
+        float r = in.width - (layout.right_splitter.x + layout.right_splitter.w);
+        if (side == Side::left)
+            l += dx;
+        else
+            r -= dx;
+        const float side_min = std::min(min_side_width * s, avail * 0.15f);
+        const float centre_min = std::min(min_center_width * s, avail * 0.3f);
+        l = std::clamp(l, side_min, std::max(side_min, avail - r - centre_min));
+        r = std::clamp(r, side_min, std::max(side_min, avail - l - centre_min));
+        prefs.presentation_left = l / avail;
+        prefs.presentation_right = r / avail;
+        return;
+    }
     if (side == Side::left) {
         const float w = layout.left_splitter.x + dx;
         prefs.left_width = std::max(w / s, min_side_width);
@@ -150,6 +179,11 @@ LayoutPrefs sanitize(const LayoutPrefs& prefs) {
         out.right_width > 4000)
         out.right_width = def.right_width;
     out.left_shares = sane_shares(out.left_shares, def.left_shares);
+    const bool shares_ok = std::isfinite(out.presentation_left) &&
+                           std::isfinite(out.presentation_right) && out.presentation_left > 0 &&
+                           out.presentation_right > 0 &&
+                           out.presentation_left + out.presentation_right < 0.9f;
+    if (!shares_ok) out.presentation_left = out.presentation_right = 0;
     out.right_shares = sane_shares(out.right_shares, def.right_shares);
     return out;
 }

@@ -20,6 +20,9 @@ struct LayoutPrefs {
     float right_width = 360;
     std::vector<float> left_shares{0.56f, 0.44f};  // tracing, basis functions
     std::vector<float> right_shares{0.62f, 0.38f}; // control point, control panel
+    // Presentation mode's columns once dragged, as shares of the width (0: not dragged, the
+    // 3D view keeps min_center_fraction); a projector and a laptop differ, so not in pixels.
+    float presentation_left = 0, presentation_right = 0;
     bool operator==(const LayoutPrefs&) const = default;
 };
 
@@ -31,6 +34,7 @@ struct LayoutInput {
     float splitter = 6;               // splitter thickness (already scaled)
     float min_center_fraction = 0;    // the centre keeps at least this share of the width
                                       // (presentation mode favours the 3D view)
+    bool presentation = false;        // presentation mode: its own column widths, once dragged
 };
 
 struct Layout {
@@ -53,7 +57,9 @@ Layout compute_layout(const LayoutPrefs& prefs, const LayoutInput& in);
 enum class Side { left, right };
 
 // A column splitter moved by dx pixels: the column takes its laid-out width plus the move,
-// stored unscaled and kept at least min_side_width wide.
+// stored unscaled and kept at least min_side_width wide. In presentation mode both columns are
+// stored as shares of the width (presentation_left / _right), the centre kept at least
+// min_center_width.
 void drag_column_splitter(LayoutPrefs& prefs, const Layout& layout, const LayoutInput& in,
                           Side side, float dx);
 // The splitter under stacked panel `index` (between index and index + 1) moved by dy pixels:

@@ -15,9 +15,16 @@ double distance_to_segment(const glm::dvec2& p, const glm::dvec2& a, const glm::
 
 std::optional<int> point_under(std::span<const glm::dvec2> points, const glm::dvec2& mouse,
                                double radius) {
-    for (int i = static_cast<int>(points.size()) - 1; i >= 0; --i)
-        if (glm::length(points[static_cast<std::size_t>(i)] - mouse) <= radius) return i;
-    return std::nullopt;
+    std::optional<int> hit;
+    double best = radius;
+    for (int i = static_cast<int>(points.size()) - 1; i >= 0; --i) {
+        const double d = glm::length(points[static_cast<std::size_t>(i)] - mouse);
+        if (d < best || (d == best && !hit)) {
+            best = d;
+            hit = i;
+        }
+    }
+    return hit;
 }
 
 std::optional<LegHit> leg_under(std::span<const glm::dvec2> points, const glm::dvec2& mouse,

@@ -12,8 +12,9 @@ namespace isoparm::ui {
 // The distance from p to the segment [a, b] (to a itself when a = b).
 double distance_to_segment(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b);
 
-// The point within `radius` of `mouse`; points drawn last are on top, so the last such
-// point wins.
+// The point nearest to `mouse` within `radius`: a click on a point's centre takes that point
+// even where a neighbour's disk overlaps it (a profile's crowded top on a projector's small
+// canvas); of points equally near, the one drawn last (on top) wins.
 std::optional<int> point_under(std::span<const glm::dvec2> points, const glm::dvec2& mouse,
                                double radius);
 

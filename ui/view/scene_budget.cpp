@@ -12,27 +12,59 @@
 namespace isoparm::ui {
 
 SceneDisplayCost estimate_scene_display(const doc::Document& d) {
+    return estimate_scene_display(d, d.view.display.density);
+}
+
+namespace {
+
+void add_object_cost(const doc::Object& o, int density, SceneDisplayCost& cost) {
+    cost.control_points += static_cast<double>(doc::control_points_of(o.shape).size());
+    if (const geom::Curve* c = o.curve())
+        cost.steps +=
+            geom::estimate_curve_evaluation(display_curve_evaluations, c->degree, 0).steps;
+    const geom::Surface* s = o.surface();
+    if (!s) return;
+    const auto [su, sv] = display_samples(*s, density);
+    const double vertices = static_cast<double>(su) * sv;
+    ++cost.surfaces;
+    cost.vertices += vertices;
+    cost.steps += geom::estimate_tessellation(su, sv, s->degree_u, s->degree_v).steps;
+    cost.bytes += vertices * display_bytes_per_vertex + display_bytes_per_surface;
+}
+
+} // namespace
+
+SceneDisplayCost estimate_scene_display(const doc::Document& d, int density,
+                                        const std::vector<doc::Object>& added) {
     SceneDisplayCost cost;
-    for (const doc::Object& o : d.objects) {
-        cost.control_points += static_cast<double>(doc::control_points_of(o.shape).size());
-        const geom::Surface* s = o.surface();
-        if (!s) continue;
-        const auto [su, sv] = display_samples(*s, d.view.display.density);
-        const double vertices = static_cast<double>(su) * sv;
-        ++cost.surfaces;
-        cost.vertices += vertices;
-        cost.steps += geom::estimate_tessellation(su, sv, s->degree_u, s->degree_v).steps;
-        cost.bytes += vertices * display_bytes_per_vertex + display_bytes_per_surface;
-    }
+    for (const doc::Object& o : d.objects) add_object_cost(o, density, cost);
+    for (const doc::Object& o : added) add_object_cost(o, density, cost);
     cost.steps += cost.control_points * display_steps_per_control_point;
     cost.bytes += cost.control_points * display_bytes_per_control_point;
     return cost;
 }
 
+namespace {
+
+double max_display_bytes() {
+    return geom::max_answer_numbers * geom::bytes_per_answer_number;
+}
+
+bool fits(const SceneDisplayCost& cost) {
+    return cost.bytes <= max_display_bytes() && cost.steps <= geom::max_work_steps;
+}
+
+} // namespace
+
 std::string scene_over_budget(const doc::Document& d) {
-    const SceneDisplayCost cost = estimate_scene_display(d);
-    const double max_bytes = geom::max_answer_numbers * geom::bytes_per_answer_number;
-    if (cost.bytes <= max_bytes && cost.steps <= geom::max_work_steps) return "";
+    return scene_over_budget(d, d.view.display.density, {});
+}
+
+std::string scene_over_budget(const doc::Document& d, int density,
+                              const std::vector<doc::Object>& added) {
+    const SceneDisplayCost cost = estimate_scene_display(d, density, added);
+    if (fits(cost)) return "";
+    const double max_bytes = max_display_bytes();
     const double mib = cost.bytes / (1 << 20);
     return "the scene is too large to show: its " + std::to_string(cost.surfaces) +
            " surfaces make " + geom::with_thousands(cost.vertices) + " vertices and " +
@@ -41,8 +73,15 @@ std::string scene_over_budget(const doc::Document& d) {
            " basis steps; the work budget allows about " +
            geom::with_thousands(max_bytes / (1 << 20)) + " MiB and " +
            geom::with_thousands(geom::max_work_steps) +
-           " steps (about 10 s); a lower display density, fewer surfaces or fewer control points "
-           "fit";
+           " steps (about 10 s); a lower display density, fewer surfaces, fewer control points "
+           "or lower degrees fit";
+}
+
+int display_density_that_fits(const doc::Document& d, const std::vector<doc::Object>& added) {
+    for (int density : {256, 192, 128, 96, 64, 48, 32, 24, 16, 12, 8, 6, 4, 3, 2})
+        if (density <= d.view.display.density && fits(estimate_scene_display(d, density, added)))
+            return density;
+    return 0;
 }
 
 namespace {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/doc/document.hpp"
 
@@ -22,6 +23,12 @@ inline constexpr double display_bytes_per_surface = 64 * 1024;
 inline constexpr double display_bytes_per_control_point = 3072;
 inline constexpr double display_steps_per_control_point = 3500;
 
+// Points evaluated per curve when the workstation shows it (the 3D view's polyline of 200, the
+// curve designer's and the basis plot's), each costing a de Boor evaluation of its degree:
+// measured, a degree-4095 curve scene took 108 s to render when only its control points were
+// counted.
+inline constexpr double display_curve_evaluations = 3 * 200;
+
 struct SceneDisplayCost {
     int surfaces = 0;
     double control_points = 0; // of surfaces and curves
@@ -31,9 +38,22 @@ struct SceneDisplayCost {
 };
 
 SceneDisplayCost estimate_scene_display(const doc::Document& d);
+// The same at another display density, with `added` objects beside the document's own (an
+// import checked before it is carried out).
+SceneDisplayCost estimate_scene_display(const doc::Document& d, int density,
+                                        const std::vector<doc::Object>& added = {});
 
 // "" when the scene fits the budget, else one sentence naming the scene's size and the budget.
 std::string scene_over_budget(const doc::Document& d);
+// The same at `density` with `added` objects beside the document's own.
+std::string scene_over_budget(const doc::Document& d, int density,
+                              const std::vector<doc::Object>& added);
+
+// The largest display density, at most the scene's own, at which it fits the budget with the
+// `added` objects (256, 192, 128, 96, 64, 48, 32, 24, 16, 12, 8, 6, 4, 3, 2 are tried), or 0
+// when it does not fit even at 2: what an import sets so that the scene it writes (or adds to)
+// can be shown (an imported 1,018-face part needed about 1,900 MiB at the default 32).
+int display_density_that_fits(const doc::Document& d, const std::vector<doc::Object>& added = {});
 
 // Address space the OpenGL driver (Mesa's llvmpipe: its threads, code and buffers) takes when
 // a headless context is created, measured: below ~750 MiB of `ulimit -v` even a one-patch

@@ -210,17 +210,275 @@ SurfaceDraw patch_style(std::uint64_t id, bool selected, bool shaded, bool wire,
     return sd;
 }
 
-} // namespace
+// The scene's draw lists, filled object by object, then the overlays of the selection, the
+// indicator, de Boor's construction and the working grid.
+class SceneAssembler {
+public:
+    SceneAssembler(const doc::Document& doc, const SceneStyle& scene_style,
+                   const ImplicitMeshes* implicit_meshes, const TriangleMeshes* triangle_meshes)
+        : d(doc), style(scene_style), implicit(implicit_meshes), triangles(triangle_meshes),
+          k(style.scale), col(readable_overlay_colors(d.colors)),
+          background(col.background.r, col.background.g, col.background.b), disp(d.view.display),
+          shaded(disp.style != doc::DisplayStyle::wireframe),
+          wire(disp.style != doc::DisplayStyle::shaded), points{{},
+                                                                point_size_for(d) * k,
+                                                                false,
+                                                                false} {
+        const doc::Object* sel_obj = d.selected();
+        sel_triangle = sel_obj && sel_obj->visible ? sel_obj->triangle() : nullptr;
+    }
 
-BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
-                       const ImplicitMeshes* implicit, const TriangleMeshes* triangles) {
+    void add_objects() {
+        for (const doc::Object& o : d.objects) {
+            if (!o.visible) continue;
+            const bool is_selected = o.id == d.view.selection.object;
+            // The object's own toggles (C, N, K with it selected), else the scene's defaults.
+            const doc::ObjectDisplay own = doc::display_of(d.view, o.id);
+            if (const geom::Surface* s = o.surface())
+                add_surface(o, *s, is_selected, own);
+            else if (const doc::ImplicitObject* im = o.implicit())
+                add_implicit(o, *im, is_selected);
+            else if (const geom::TrianglePatch* t = o.triangle())
+                add_triangle(o, *t, is_selected, own);
+            else if (const geom::Curve* c = o.curve())
+                add_curve(*c, is_selected, own);
+        }
+    }
+
+    void add_selected_points() {
+        // The selected control point: larger, in its own colour, always visible (unless its object
+        // is hidden, or shows no points).
+        if (has_valid_point(d) && d.selected()->visible &&
+            doc::display_of(d.view, d.view.selection.object).control_points) {
+            const doc::Object* o = d.selected();
+            glm::dvec3 p{0};
+            if (const geom::Surface* s = o->surface())
+                p = s->point(d.view.selection.i, d.view.selection.j);
+            else if (const geom::Curve* c = o->curve())
+                p = c->points[d.view.selection.i];
+            else if (const geom::TrianglePatch* t = o->triangle())
+                p = t->points[geom::TrianglePatch::index(t->degree, d.view.selection.i,
+                                                         d.view.selection.j)];
+            selected.points.push_back({glm::vec3(p), to_vec4(col.selected_point)});
+        }
+        if (disp.control_points)
+            for (const glm::dvec3& p : style.also_selected)
+                selected.points.push_back({glm::vec3(p), to_vec4(col.selected_point)});
+    }
+
+    void add_indicator() {
+        // The indicator: S(u,v) as a small sphere, with the two isoparametric curves through it.
+        // A selected triangle has its own indicator (r, s, t), with the three lines of constant
+        // r, s and t through it.
+        if (disp.indicator_point && sel_triangle) {
+            const glm::vec4 ic = to_vec4(col.indicator);
+            for (const auto& piece : triangle_iso_lines(*sel_triangle, d.view.barycentric, 97))
+                Overlay::add_polyline(iso, piece, with_alpha(ic, 0.55f));
+            if (const auto p = geom::triangle_point(*sel_triangle, d.view.barycentric))
+                indicator.points.push_back({glm::vec3(*p), ic});
+        } else if (disp.indicator_point) {
+            const doc::Object* current = nullptr;
+            // A hidden surface draws nothing, its indicator included.
+            if (const geom::Surface* s = current_surface(d, &current); s && current->visible) {
+                const glm::dvec2 uv = indicator_params(d, *current);
+                const glm::vec4 ic = to_vec4(col.indicator);
+                for (const auto& piece : iso_curve(*s, geom::Dir::u, uv.x, 97))
+                    Overlay::add_polyline(iso, piece, with_alpha(ic, 0.55f));
+                for (const auto& piece : iso_curve(*s, geom::Dir::v, uv.y, 97))
+                    Overlay::add_polyline(iso, piece, with_alpha(ic, 0.55f));
+                if (const auto p = geom::surface_point(*s, uv.x, uv.y))
+                    indicator.points.push_back({glm::vec3(*p), ic});
+            }
+        }
+    }
+
+    void add_guide_and_deboor() {
+        if (style.guide_axis >= 0) {
+            glm::dvec3 dir(0);
+            dir[style.guide_axis] = 1;
+            const auto box = doc::scene_bounds(d);
+            const double len = box ? std::max(glm::length(box->hi - box->lo), 1.0) * 2 : 10.0;
+            const glm::vec4 gc = axis_color(style.guide_axis);
+            guide.vertices.push_back({glm::vec3(style.guide_point - dir * len), gc});
+            guide.vertices.push_back({glm::vec3(style.guide_point + dir * len), gc});
+        }
+
+        // De Boor's construction at the indicator, up to the step the lecture has reached.
+        if (disp.deboor && sel_triangle) {
+            add_triangle_de_casteljau(*sel_triangle, d.view.barycentric, style.deboor_step, k,
+                                      deboor);
+        } else if (disp.deboor) {
+            const doc::Object* current = nullptr;
+            if (const geom::Surface* s = current_surface(d, &current); s && current->visible) {
+                const glm::dvec2 uv = indicator_params(d, *current);
+                add_deboor_overlay(geom::deboor_surface(*s, uv.x, uv.y), s->degree_u, s->degree_v,
+                                   style.deboor_step, k, deboor);
+            }
+        }
+
+        if (style.border_continuity) add_borders(borders, d);
+    }
+
+    void add_working_grid() {
+        // The working plane's grid, under everything (depth-tested, faint where hidden).
+        LineBatch grid{{}, 1.0f * k, true};
+        if (style.working_grid && style.grid_step > 0 && style.grid_lines > 0) {
+            const double step = style.grid_step;
+            const int n = style.grid_lines;
+            const glm::dvec2 c = glm::round(style.grid_centre / step) * step;
+            const glm::vec4 minor(0.55f, 0.58f, 0.65f, 0.28f), major(0.62f, 0.66f, 0.74f, 0.55f);
+            for (int q = -n; q <= n; ++q) {
+                const glm::dvec2 at = c + static_cast<double>(q) * step;
+                const glm::vec4 cx = std::llround(at.x / step) % 5 == 0 ? major : minor;
+                const glm::vec4 cy = std::llround(at.y / step) % 5 == 0 ? major : minor;
+                grid.vertices.push_back({glm::vec3(at.x, c.y - n * step, 0), cx});
+                grid.vertices.push_back({glm::vec3(at.x, c.y + n * step, 0), cx});
+                grid.vertices.push_back({glm::vec3(c.x - n * step, at.y, 0), cy});
+                grid.vertices.push_back({glm::vec3(c.x + n * step, at.y, 0), cy});
+            }
+            out.overlay.lines.push_back(std::move(grid));
+        }
+    }
+
+    BuiltScene finish() {
+        for (LineBatch* b :
+             {&knots, &knots_double, &knots_full, &curves, &net, &box, &iso, &guide, &borders})
+            if (!b->vertices.empty()) out.overlay.lines.push_back(std::move(*b));
+        add_curve_glyphs(out.overlay, d, style, k);
+        for (PointBatch* b : {&points, &indicator, &selected})
+            if (!b->points.empty()) out.overlay.points.push_back(std::move(*b));
+        // Last, so the construction draws over the net and the indicator.
+        for (LineBatch& b : deboor.lines) out.overlay.lines.push_back(std::move(b));
+        for (PointBatch& b : deboor.points) out.overlay.points.push_back(std::move(b));
+        return std::move(out);
+    }
+
+private:
+    // Many points (a 32x32 net) would bury the surface: they shrink with their number.
+    static float point_size_for(const doc::Document& d) {
+        std::size_t total_points = 0;
+        for (const doc::Object& o : d.objects)
+            if (o.visible && o.kind() != doc::ObjectKind::curve)
+                total_points += doc::control_points_of(o.shape).size();
+        return total_points > 400 ? 6.f : total_points > 100 ? 7.5f : 9.f;
+    }
+
+    void add_surface(const doc::Object& o, const geom::Surface& surface, bool is_selected,
+                     const doc::ObjectDisplay& own) {
+        const geom::Surface* s = &surface;
+        SurfaceDraw sd = patch_style(o.id, is_selected, shaded, wire, col, k);
+        sd.surface = s;
+        sd.density = disp.density;
+        out.surfaces.push_back(sd);
+
+        if (own.control_net) add_net(net, *s, to_vec4(col.control_net));
+        if (own.control_points)
+            for (int i = 0; i < s->n_u; ++i)
+                for (int j = 0; j < s->n_v; ++j) {
+                    const bool sel =
+                        is_selected && d.view.selection.i == i && d.view.selection.j == j;
+                    if (sel) continue;
+                    points.points.push_back(
+                        {glm::vec3(s->point(i, j)), to_vec4(col.control_points)});
+                }
+        if (own.knot_curves) {
+            // Knot curves S(u_k, v) and S(u, v_k); a repeated knot draws thicker.
+            for (geom::Dir dir : {geom::Dir::u, geom::Dir::v}) {
+                const geom::Interval dom = geom::domain(*s, dir);
+                for (const geom::KnotRun& r : geom::knot_runs(s->knots(dir))) {
+                    if (r.value < dom.lo || r.value > dom.hi) continue;
+                    const bool interior = r.value > dom.lo && r.value < dom.hi;
+                    LineBatch& b = !interior || r.multiplicity == 1 ? knots
+                                   : r.multiplicity == 2            ? knots_double
+                                                                    : knots_full;
+                    const glm::vec4 base = to_vec4(col.knot_curves);
+                    const glm::vec4 c =
+                        style.knot_continuity && interior
+                            ? knot_continuity_color(s->degree(dir), r.multiplicity, base)
+                            : base;
+                    for (const auto& piece : iso_curve(*s, dir, r.value, 97))
+                        Overlay::add_polyline(b, piece, c);
+                }
+            }
+        }
+    }
+
+    void add_implicit(const doc::Object& o, const doc::ImplicitObject& implicit_object,
+                      bool is_selected) {
+        const doc::ImplicitObject* im = &implicit_object;
+        const ImplicitMeshes::View v = implicit ? implicit->view(o.id) : ImplicitMeshes::View{};
+        if (v.mesh && !v.mesh->triangles.empty()) {
+            SurfaceDraw sd;
+            sd.id = o.id;
+            sd.mesh = v.mesh;
+            sd.mesh_revision = v.revision;
+            sd.implicit = im;
+            sd.seen_side = v.seen_side;
+            sd.box_lo = v.lo;
+            sd.box_hi = v.hi;
+            sd.shaded = shaded;
+            // Every triangle edge over a shaded surface would hide it: wireframe only
+            // in the wireframe style.
+            sd.wireframe = !shaded;
+            sd.fill = to_vec4(col.surface);
+            sd.wire = to_vec4(is_selected ? col.selected_surface : col.surface);
+            sd.wire_width = 1.0f * k;
+            out.surfaces.push_back(sd);
+        }
+        if (is_selected) add_box(box, im->lo, im->hi, to_vec4(col.selected_surface));
+    }
+
+    void add_triangle(const doc::Object& o, const geom::TrianglePatch& patch, bool is_selected,
+                      const doc::ObjectDisplay& own) {
+        const geom::TrianglePatch* t = &patch;
+        const TriangleMeshes::View v = triangles ? triangles->view(o.id) : TriangleMeshes::View{};
+        if (v.mesh) {
+            SurfaceDraw sd = patch_style(o.id, is_selected, shaded, wire, col, k);
+            sd.mesh = v.mesh;
+            sd.mesh_revision = v.revision;
+            out.surfaces.push_back(sd);
+        }
+        if (own.control_net) add_triangle_net(net, *t, to_vec4(col.control_net));
+        if (own.control_points)
+            for (int i = 0; i <= t->degree; ++i)
+                for (int j = 0; i + j <= t->degree; ++j)
+                    if (!(is_selected && d.view.selection.i == i && d.view.selection.j == j))
+                        points.points.push_back(
+                            {glm::vec3(t->points[geom::TrianglePatch::index(t->degree, i, j)]),
+                             to_vec4(col.control_points)});
+    }
+
+    void add_curve(const geom::Curve& curve, bool is_selected, const doc::ObjectDisplay& own) {
+        const geom::Curve* c = &curve;
+        // A curve in the surface colour disappears against a surface built from it (a
+        // ruled or skinned surface runs through its curves): curves take a pale tint.
+        const glm::vec4 cc = is_selected
+                                 ? to_vec4(col.selected_surface)
+                                 : readable_on(glm::mix(to_vec4(col.surface), glm::vec4(1), 0.6f),
+                                               background, line_contrast);
+        Overlay::add_polyline(curves, curve_polyline(*c, 200), cc);
+        if (own.control_net) {
+            std::vector<glm::vec3> poly;
+            for (const glm::dvec3& p : c->points) poly.emplace_back(p);
+            Overlay::add_polyline(net, poly, to_vec4(col.control_net));
+        }
+        if (own.control_points)
+            for (int i = 0; i < c->count(); ++i)
+                if (!(is_selected && d.view.selection.i == i))
+                    points.points.push_back({glm::vec3(c->points[i]), to_vec4(col.control_points)});
+    }
+
+    const doc::Document& d;
+    const SceneStyle& style;
+    const ImplicitMeshes* implicit;
+    const TriangleMeshes* triangles;
+    const float k;
+    const doc::Colors col;
+    const glm::vec3 background;
+    const doc::DisplaySettings& disp;
+    const bool shaded, wire;
+    const geom::TrianglePatch* sel_triangle = nullptr;
     BuiltScene out;
-    const float k = style.scale;
-    const doc::Colors col = readable_overlay_colors(d.colors);
-    const glm::vec3 background(col.background.r, col.background.g, col.background.b);
-    const doc::DisplaySettings& disp = d.view.display;
-    const bool shaded = disp.style != doc::DisplayStyle::wireframe;
-    const bool wire = disp.style != doc::DisplayStyle::shaded;
 
     LineBatch net{{}, 1.4f * k, true};
     LineBatch knots{{}, 1.6f * k, true};
@@ -230,191 +488,27 @@ BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
     LineBatch knots_full{{}, 4.6f * k, true};
     LineBatch curves{{}, 2.2f * k, true};
     LineBatch box{{}, 1.2f * k, true};
-    // Many points (a 32x32 net) would bury the surface: they shrink with their number.
-    std::size_t total_points = 0;
-    for (const doc::Object& o : d.objects)
-        if (o.visible && o.kind() != doc::ObjectKind::curve)
-            total_points += doc::control_points_of(o.shape).size();
-    const float point_size = total_points > 400 ? 6.f : total_points > 100 ? 7.5f : 9.f;
-    PointBatch points{{}, point_size * k, false, false};
+    PointBatch points;
     PointBatch selected{{}, 13.f * k, false, true};
-
-    for (const doc::Object& o : d.objects) {
-        if (!o.visible) continue;
-        const bool is_selected = o.id == d.view.selection.object;
-        if (const geom::Surface* s = o.surface()) {
-            SurfaceDraw sd = patch_style(o.id, is_selected, shaded, wire, col, k);
-            sd.surface = s;
-            sd.density = disp.density;
-            out.surfaces.push_back(sd);
-
-            if (disp.control_net) add_net(net, *s, to_vec4(col.control_net));
-            if (disp.control_points)
-                for (int i = 0; i < s->n_u; ++i)
-                    for (int j = 0; j < s->n_v; ++j) {
-                        const bool sel =
-                            is_selected && d.view.selection.i == i && d.view.selection.j == j;
-                        if (sel) continue;
-                        points.points.push_back(
-                            {glm::vec3(s->point(i, j)), to_vec4(col.control_points)});
-                    }
-            if (disp.knot_curves) {
-                // Knot curves S(u_k, v) and S(u, v_k); a repeated knot draws thicker.
-                for (geom::Dir dir : {geom::Dir::u, geom::Dir::v}) {
-                    const geom::Interval dom = geom::domain(*s, dir);
-                    for (const geom::KnotRun& r : geom::knot_runs(s->knots(dir))) {
-                        if (r.value < dom.lo || r.value > dom.hi) continue;
-                        const bool interior = r.value > dom.lo && r.value < dom.hi;
-                        LineBatch& b = !interior || r.multiplicity == 1 ? knots
-                                       : r.multiplicity == 2            ? knots_double
-                                                                        : knots_full;
-                        const glm::vec4 base = to_vec4(col.knot_curves);
-                        const glm::vec4 c =
-                            style.knot_continuity && interior
-                                ? knot_continuity_color(s->degree(dir), r.multiplicity, base)
-                                : base;
-                        for (const auto& piece : iso_curve(*s, dir, r.value, 97))
-                            Overlay::add_polyline(b, piece, c);
-                    }
-                }
-            }
-        } else if (const doc::ImplicitObject* im = o.implicit()) {
-            const ImplicitMeshes::View v = implicit ? implicit->view(o.id) : ImplicitMeshes::View{};
-            if (v.mesh && !v.mesh->triangles.empty()) {
-                SurfaceDraw sd;
-                sd.id = o.id;
-                sd.mesh = v.mesh;
-                sd.mesh_revision = v.revision;
-                sd.seen_side = v.seen_side;
-                sd.box_lo = v.lo;
-                sd.box_hi = v.hi;
-                sd.shaded = shaded;
-                // Every triangle edge over a shaded surface would hide it: wireframe only
-                // in the wireframe style.
-                sd.wireframe = !shaded;
-                sd.fill = to_vec4(col.surface);
-                sd.wire = to_vec4(is_selected ? col.selected_surface : col.surface);
-                sd.wire_width = 1.0f * k;
-                out.surfaces.push_back(sd);
-            }
-            if (is_selected) add_box(box, im->lo, im->hi, to_vec4(col.selected_surface));
-        } else if (const geom::TrianglePatch* t = o.triangle()) {
-            const TriangleMeshes::View v =
-                triangles ? triangles->view(o.id) : TriangleMeshes::View{};
-            if (v.mesh) {
-                SurfaceDraw sd = patch_style(o.id, is_selected, shaded, wire, col, k);
-                sd.mesh = v.mesh;
-                sd.mesh_revision = v.revision;
-                out.surfaces.push_back(sd);
-            }
-            if (disp.control_net) add_triangle_net(net, *t, to_vec4(col.control_net));
-            if (disp.control_points)
-                for (int i = 0; i <= t->degree; ++i)
-                    for (int j = 0; i + j <= t->degree; ++j)
-                        if (!(is_selected && d.view.selection.i == i && d.view.selection.j == j))
-                            points.points.push_back(
-                                {glm::vec3(t->points[geom::TrianglePatch::index(t->degree, i, j)]),
-                                 to_vec4(col.control_points)});
-        } else if (const geom::Curve* c = o.curve()) {
-            // A curve in the surface colour disappears against a surface built from it (a
-            // ruled or skinned surface runs through its curves): curves take a pale tint.
-            const glm::vec4 cc =
-                is_selected ? to_vec4(col.selected_surface)
-                            : readable_on(glm::mix(to_vec4(col.surface), glm::vec4(1), 0.6f),
-                                          background, line_contrast);
-            Overlay::add_polyline(curves, curve_polyline(*c, 200), cc);
-            if (disp.control_net) {
-                std::vector<glm::vec3> poly;
-                for (const glm::dvec3& p : c->points) poly.emplace_back(p);
-                Overlay::add_polyline(net, poly, to_vec4(col.control_net));
-            }
-            if (disp.control_points)
-                for (int i = 0; i < c->count(); ++i)
-                    if (!(is_selected && d.view.selection.i == i))
-                        points.points.push_back(
-                            {glm::vec3(c->points[i]), to_vec4(col.control_points)});
-        }
-    }
-
-    // The selected control point: larger, in its own colour, always visible.
-    if (disp.control_points && has_valid_point(d)) {
-        const doc::Object* o = d.selected();
-        glm::dvec3 p{0};
-        if (const geom::Surface* s = o->surface())
-            p = s->point(d.view.selection.i, d.view.selection.j);
-        else if (const geom::Curve* c = o->curve())
-            p = c->points[d.view.selection.i];
-        else if (const geom::TrianglePatch* t = o->triangle())
-            p = t->points[geom::TrianglePatch::index(t->degree, d.view.selection.i,
-                                                     d.view.selection.j)];
-        selected.points.push_back({glm::vec3(p), to_vec4(col.selected_point)});
-    }
-
     // The indicator: S(u,v) as a small sphere, with the two isoparametric curves through it.
     LineBatch iso{{}, 1.6f * k, true};
     PointBatch indicator{{}, 14.f * k, true, true};
-    // A selected triangle has its own indicator (r, s, t), with the three lines of constant
-    // r, s and t through it.
-    const doc::Object* sel_obj = d.selected();
-    const geom::TrianglePatch* sel_triangle =
-        sel_obj && sel_obj->visible ? sel_obj->triangle() : nullptr;
-    if (disp.indicator_point && sel_triangle) {
-        const glm::vec4 ic = to_vec4(col.indicator);
-        for (const auto& piece : triangle_iso_lines(*sel_triangle, d.view.barycentric, 97))
-            Overlay::add_polyline(iso, piece, with_alpha(ic, 0.55f));
-        if (const auto p = geom::triangle_point(*sel_triangle, d.view.barycentric))
-            indicator.points.push_back({glm::vec3(*p), ic});
-    } else if (disp.indicator_point) {
-        const doc::Object* current = nullptr;
-        if (const geom::Surface* s = current_surface(d, &current)) {
-            const glm::dvec2 uv = indicator_params(d, *current);
-            const glm::vec4 ic = to_vec4(col.indicator);
-            for (const auto& piece : iso_curve(*s, geom::Dir::u, uv.x, 97))
-                Overlay::add_polyline(iso, piece, with_alpha(ic, 0.55f));
-            for (const auto& piece : iso_curve(*s, geom::Dir::v, uv.y, 97))
-                Overlay::add_polyline(iso, piece, with_alpha(ic, 0.55f));
-            if (const auto p = geom::surface_point(*s, uv.x, uv.y))
-                indicator.points.push_back({glm::vec3(*p), ic});
-        }
-    }
-
     LineBatch guide{{}, 1.5f * k, false};
     Overlay deboor;
-    if (style.guide_axis >= 0) {
-        glm::dvec3 dir(0);
-        dir[style.guide_axis] = 1;
-        const auto box = doc::scene_bounds(d);
-        const double len = box ? std::max(glm::length(box->hi - box->lo), 1.0) * 2 : 10.0;
-        const glm::vec4 gc = axis_color(style.guide_axis);
-        guide.vertices.push_back({glm::vec3(style.guide_point - dir * len), gc});
-        guide.vertices.push_back({glm::vec3(style.guide_point + dir * len), gc});
-    }
-
-    // De Boor's construction at the indicator, up to the step the lecture has reached.
-    if (disp.deboor && sel_triangle) {
-        add_triangle_de_casteljau(*sel_triangle, d.view.barycentric, style.deboor_step, k, deboor);
-    } else if (disp.deboor) {
-        const doc::Object* current = nullptr;
-        if (const geom::Surface* s = current_surface(d, &current)) {
-            const glm::dvec2 uv = indicator_params(d, *current);
-            add_deboor_overlay(geom::deboor_surface(*s, uv.x, uv.y), s->degree_u, s->degree_v,
-                               style.deboor_step, k, deboor);
-        }
-    }
-
     LineBatch borders{{}, 5.0f * k, true};
-    if (style.border_continuity) add_borders(borders, d);
+};
 
-    for (LineBatch* b :
-         {&knots, &knots_double, &knots_full, &curves, &net, &box, &iso, &guide, &borders})
-        if (!b->vertices.empty()) out.overlay.lines.push_back(std::move(*b));
-    add_curve_glyphs(out.overlay, d, style, k);
-    for (PointBatch* b : {&points, &indicator, &selected})
-        if (!b->points.empty()) out.overlay.points.push_back(std::move(*b));
-    // Last, so the construction draws over the net and the indicator.
-    for (LineBatch& b : deboor.lines) out.overlay.lines.push_back(std::move(b));
-    for (PointBatch& b : deboor.points) out.overlay.points.push_back(std::move(b));
-    return out;
+} // namespace
+
+BuiltScene build_scene(const doc::Document& d, const SceneStyle& style,
+                       const ImplicitMeshes* implicit, const TriangleMeshes* triangles) {
+    SceneAssembler scene(d, style, implicit, triangles);
+    scene.add_objects();
+    scene.add_selected_points();
+    scene.add_indicator();
+    scene.add_guide_and_deboor();
+    scene.add_working_grid();
+    return scene.finish();
 }
 
 std::vector<glm::dvec3> scene_points(const doc::Document& d) {

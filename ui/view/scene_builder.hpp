@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "core/doc/border_measure.hpp"
@@ -29,6 +30,14 @@ struct SceneStyle {
     // [0, 1] over its domain), as the curve designer shows them on its canvas.
     CurveGlyphRequest curve_glyphs;
     double curve_t = 0.4;
+    // The working plane z = 0 with its grid (Display > Grid): lines every grid_step out to
+    // grid_lines steps either side of grid_centre (put on a grid line), every fifth brighter.
+    bool working_grid = false;
+    double grid_step = 1;
+    int grid_lines = 20;
+    glm::dvec2 grid_centre{0};
+    // Points selected beside the selected one (many points selected): drawn as it is.
+    std::vector<glm::dvec3> also_selected;
 };
 
 // A border's colour by the continuity measured on it (doc::border_level): red broken, orange

@@ -3,6 +3,8 @@
 // and points around them are the overlay (overlay.hpp).
 #pragma once
 
+#include "core/doc/document.hpp"
+
 #include <cstdint>
 
 #include <glm/vec4.hpp>
@@ -28,6 +30,9 @@ struct SurfaceDraw {
     // mesh_revision differs from the cached one; its wireframe is the triangle edges.
     const geom::Mesh* mesh = nullptr;
     std::uint64_t mesh_revision = 0;
+    // The implicit object the mesh is of: under a curvature kind its vertices are coloured by
+    // the curvature f's gradient and Hessian give (geom::implicit::implicit_curvature).
+    const doc::ImplicitObject* implicit = nullptr;
     // A closed mesh inside the box [box_lo, box_hi] is seen from outside the box only from
     // this side (+1: where its triangles run counter-clockwise; -1: the other; 0: not closed,
     // any side may show). See face_culling.hpp.
@@ -50,6 +55,12 @@ struct AnalysisView {
     bool diverging = true; // blue - white - red about zero, else a sequential map lo .. hi
     int stripes = 12;      // zebra / isophote stripes
     float zebra_angle = 0; // degrees, the stripes' direction on screen
+    // The automatic range is robust: the values' 2nd to 98th percentiles, so that one pole or
+    // outlier does not wash every other surface out. All the values span data_lo .. data_hi;
+    // `clipped` when that is wider than the bar (values beyond take the end colours).
+    bool fixed = false;
+    float data_lo = 0, data_hi = 0;
+    bool clipped = false;
     bool operator==(const AnalysisView&) const = default;
 };
 

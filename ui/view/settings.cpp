@@ -38,7 +38,9 @@ nlohmann::json settings_to_json(const Settings& s) {
          {{"left_width", s.layout.left_width},
           {"right_width", s.layout.right_width},
           {"left_shares", s.layout.left_shares},
-          {"right_shares", s.layout.right_shares}}},
+          {"right_shares", s.layout.right_shares},
+          {"presentation_left", s.layout.presentation_left},
+          {"presentation_right", s.layout.presentation_right}}},
         {"recent", s.recent},
         {"window_sizes", s.window_sizes},
     };
@@ -64,6 +66,8 @@ Settings settings_from_json(const nlohmann::json& j) {
         read(l, "right_width", s.layout.right_width);
         read(l, "left_shares", s.layout.left_shares);
         read(l, "right_shares", s.layout.right_shares);
+        read(l, "presentation_left", s.layout.presentation_left);
+        read(l, "presentation_right", s.layout.presentation_right);
         s.layout = sanitize(s.layout);
     }
     std::vector<std::string> recent;

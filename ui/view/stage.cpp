@@ -27,16 +27,8 @@ std::string stage_view_names() {
 }
 
 int stage_plane(StageView v) {
-    switch (v) {
-    case StageView::plane_xy:
-        return 0;
-    case StageView::plane_xz:
-        return 1;
-    case StageView::plane_yz:
-        return 2;
-    default:
-        return -1;
-    }
+    const StageViewInfo* i = stage_info(v);
+    return i ? i->plane : -1;
 }
 
 FourViews four_view_cells(const Rect& area, float gap) {

@@ -35,15 +35,16 @@ struct StageViewInfo {
     StageView view;
     const char* name;  // on the command line and in the UI report (stage/<name>)
     const char* title; // in the menu and the stage's header
+    int plane = -1;    // the coordinate plane a plane view shows (0 xy, 1 xz, 2 yz)
 };
 
 inline constexpr std::array<StageViewInfo, 11> stage_views{{
     {StageView::tracing, "tracing", "Tracing square"},
     {StageView::basis, "basis", "Basis functions"},
     {StageView::deboor, "deboor", "de Boor"},
-    {StageView::plane_xy, "xy", "xy plane"},
-    {StageView::plane_xz, "xz", "xz plane"},
-    {StageView::plane_yz, "yz", "yz plane"},
+    {StageView::plane_xy, "xy", "xy plane", 0},
+    {StageView::plane_xz, "xz", "xz plane", 1},
+    {StageView::plane_yz, "yz", "yz plane", 2},
     {StageView::curve, "curve", "Curve designer"},
     {StageView::homogeneous, "homogeneous", "Homogeneous"},
     {StageView::blossom, "blossom", "Blossom"},

@@ -64,4 +64,17 @@ std::string shortened(std::string_view text, float width, const MeasureText& mea
     return "..";
 }
 
+std::string shortened_middle(std::string_view text, float width, const MeasureText& measure) {
+    if (measure(text).x <= width) return std::string(text);
+    // Keep about a third from the end, the rest from the start, as much as fits.
+    for (std::size_t keep = text.size(); keep-- > 0;) {
+        const std::size_t tail = std::min(keep, std::max<std::size_t>(keep / 3, 1));
+        const std::size_t head = keep - tail;
+        const std::string s =
+            std::string(text.substr(0, head)) + ".." + std::string(text.substr(text.size() - tail));
+        if (measure(s).x <= width) return s;
+    }
+    return "..";
+}
+
 } // namespace isoparm::ui

@@ -19,5 +19,8 @@ std::vector<std::string> wrap_at_spaces(std::string_view text, float width,
 
 // The text cut to fit `width`, ending in ".." when cut (whole when it fits).
 std::string shortened(std::string_view text, float width, const MeasureText& measure);
+// The same with the cut in the middle, so the end still shows: names that differ only at
+// their end ("Surface 1.1.1", "Surface 1.1.2") stay apart ("Surf..1.1.1", "Surf..1.1.2").
+std::string shortened_middle(std::string_view text, float width, const MeasureText& measure);
 
 } // namespace isoparm::ui

@@ -18,146 +18,14 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "core/geom/implicit/polygonize_parts.hpp"
 #include "core/geom/validate.hpp"
 
 namespace isoparm::geom::implicit {
+
+using namespace detail;
+
 namespace {
-
-using Index = std::uint32_t;
-
-// Triangles inside a chunk name vertices of three groups; the top two bits say which, and the
-// merge turns them into global indices.
-constexpr Index tag_local = 0u << 30;
-constexpr Index tag_bottom = 1u << 30; // the chunk's bottom boundary plane
-constexpr Index tag_top = 2u << 30;    // the chunk's top boundary plane
-constexpr Index tag_mask = 3u << 30;
-
-// The sign convention: NaN counts as positive ("outside"), zero counts as positive, so every
-// grid point is on exactly one side and a zero lies on the surface only through its edges.
-inline bool positive(double v) {
-    return !(v < 0.0);
-}
-
-// ---------------------------------------------------------------------------------------------
-// After J. Bloomenthal, "An Implicit Surface Polygonizer", Graphics Gems IV (1994), in its
-// full-grid form with tetrahedral decomposition.
-//
-// The case table. Cube corner c sits at offset (c & 1, c >> 1 & 1, c >> 2 & 1). The Kuhn
-// (Freudenthal) triangulation splits the cube into six tetrahedra 0 -> e_a -> e_a + e_b -> 7,
-// one per axis order (a, b, c); all share the main diagonal 0-7, and each cube face is split by
-// the diagonal from its lowest to its highest corner, so neighbouring cubes agree on every face
-// and the surface has no cracks and no ambiguous faces (a tetrahedron has none).
-// Every tetrahedron edge joins corners c1 < c2 with c1's bits a subset of c2's: the edge is the
-// grid edge from the point at c1 in direction d = c1 ^ c2 (1..7), coded c1 * 8 + d.
-
-struct Polygon {
-    std::uint8_t n = 0;  // 3 or 4
-    std::uint8_t e[4]{}; // edge codes, counter-clockwise seen from f > 0
-};
-
-struct CubeCase {
-    std::uint8_t count = 0;
-    Polygon polygons[6];
-};
-
-glm::dvec3 corner_position(int c) {
-    return {c & 1, (c >> 1) & 1, (c >> 2) & 1};
-}
-
-std::uint8_t edge_code(int a, int b) {
-    if (a > b) std::swap(a, b);
-    assert((a & b) == a);
-    return static_cast<std::uint8_t>(a * 8 + (a ^ b));
-}
-
-glm::dvec3 edge_midpoint(std::uint8_t code) {
-    const int c1 = code >> 3;
-    const int c2 = c1 | (code & 7);
-    return 0.5 * (corner_position(c1) + corner_position(c2));
-}
-
-// One tetrahedron's polygon for the signs of its corners (bit k set = corner v[k] positive):
-// a triangle around a lone corner, or the quadrilateral between two and two. Its orientation is
-// fixed on the exact midpoint geometry: counter-clockwise seen from the positive corners.
-Polygon tetrahedron_polygon(const int v[4], int mask) {
-    Polygon poly;
-    int pos[4], neg[4], np = 0, nn = 0;
-    for (int k = 0; k < 4; ++k) (mask >> k & 1 ? pos[np++] : neg[nn++]) = v[k];
-    if (np == 0 || nn == 0) return poly;
-    if (np == 1 || nn == 1) {
-        const int lone = np == 1 ? pos[0] : neg[0];
-        const int* others = np == 1 ? neg : pos;
-        poly.n = 3;
-        for (int k = 0; k < 3; ++k) poly.e[k] = edge_code(lone, others[k]);
-    } else {
-        // The cycle ac, ad, bd, bc: consecutive edges share a corner.
-        const int a = pos[0], b = pos[1], c = neg[0], d = neg[1];
-        poly.n = 4;
-        poly.e[0] = edge_code(a, c);
-        poly.e[1] = edge_code(a, d);
-        poly.e[2] = edge_code(b, d);
-        poly.e[3] = edge_code(b, c);
-    }
-    glm::dvec3 toward_positive(0.0);
-    for (int k = 0; k < np; ++k) toward_positive += corner_position(pos[k]) / double(np);
-    for (int k = 0; k < nn; ++k) toward_positive -= corner_position(neg[k]) / double(nn);
-    const glm::dvec3 m0 = edge_midpoint(poly.e[0]), m1 = edge_midpoint(poly.e[1]),
-                     m2 = edge_midpoint(poly.e[2]);
-    const glm::dvec3 normal = poly.n == 3 ? glm::cross(m1 - m0, m2 - m0)
-                                          : glm::cross(m2 - m0, edge_midpoint(poly.e[3]) - m1);
-    assert(glm::dot(normal, toward_positive) != 0.0);
-    if (glm::dot(normal, toward_positive) < 0) std::reverse(poly.e + 1, poly.e + poly.n);
-    return poly;
-}
-
-std::array<CubeCase, 256> build_cube_cases() {
-    static const int axis_orders[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2},
-                                          {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
-    std::array<CubeCase, 256> cases{};
-    for (int mask = 0; mask < 256; ++mask) {
-        CubeCase& cc = cases[mask];
-        for (const auto& order : axis_orders) {
-            const int v1 = 1 << order[0];
-            const int v2 = v1 | (1 << order[1]);
-            const int v[4] = {0, v1, v2, 7};
-            int m = 0;
-            for (int k = 0; k < 4; ++k) m |= (mask >> v[k] & 1) << k;
-            Polygon poly = tetrahedron_polygon(v, m);
-            if (poly.n != 0) cc.polygons[cc.count++] = poly;
-        }
-    }
-    return cases;
-}
-
-const std::array<CubeCase, 256>& cube_cases() {
-    static const std::array<CubeCase, 256> cases = build_cube_cases();
-    return cases;
-}
-
-// ---------------------------------------------------------------------------------------------
-// Vertices.
-
-// The vertices one work unit makes. A normal of (0,0,0) means grad f vanished or was not finite
-// there; it is replaced by the average face normal at the end.
-struct VertexGroup {
-    std::vector<glm::dvec3> positions;
-    std::vector<glm::dvec3> normals;
-    // Vertices lying exactly on a grid point where f == 0, with that point's index: several
-    // edges meet there, and the vertices are welded into one at the end.
-    std::vector<std::pair<Index, std::uint64_t>> pinned;
-};
-
-struct Grid {
-    int nx = 0, ny = 0, nz = 0;
-    std::size_t row = 0;   // nx + 1
-    std::size_t plane = 0; // (nx + 1) * (ny + 1)
-    std::vector<double> xs, ys, zs;
-
-    glm::dvec3 point(int i, int j, int k) const { return {xs[i], ys[j], zs[k]}; }
-    std::uint64_t index(int i, int j, int k) const {
-        return (static_cast<std::uint64_t>(k) * (ny + 1) + j) * row + i;
-    }
-};
 
 // Coordinates lo + (hi - lo) i / n, exact at both ends.
 std::vector<double> grid_coordinates(double lo, double hi, int n) {
@@ -166,165 +34,6 @@ std::vector<double> grid_coordinates(double lo, double hi, int n) {
     c[n] = hi;
     return c;
 }
-
-struct Context {
-    const Program& f;
-    const double* params;
-    const Grid& grid;
-};
-
-// The vertices of a layer's edges are placed together (Refiner::run), so the expression is
-// evaluated a block of points at a time (Program::values_and_derivatives / _gradients) instead
-// of one point per call: the interpreter's dispatch was most of the polygonizer's time. Each
-// edge goes through exactly the steps it would alone, so the mesh is the same to the bit.
-//
-// On the grid edge from a (value fa) to b (value fb), where the sign changes: safeguarded
-// Newton on g(t) = f(p + t (q - p)) from the positive end p: the bracket [lo, hi] always holds
-// the sign change, and a Newton step that leaves it becomes a bisection (as in rtsafe,
-// Numerical Recipes 9.4). It stops once the Newton step is below 1e-12 edge lengths, so the
-// point is that close to the surface along the edge, and |f| <= 1e-12 |grad f| |q - p|.
-// Steps use the cheap directional derivative g'(t) = grad f . (q - p); the full gradient (for
-// the normal) is computed where the next point is expected to be the last.
-struct Refiner {
-    struct Edge {
-        Index id = 0;
-        glm::dvec3 p, d; // the positive end and q - p
-        double lo = 0.0, hi = 1.0, t = 0.5;
-        int evaluations = 0;
-        bool full = false, converged = false, pinned = false;
-        glm::dvec3 gradient{0.0};
-    };
-    std::vector<Edge> edges;
-    // Per round: the edges still iterating, split by the evaluation they need, and the
-    // evaluation's points and results.
-    std::vector<std::size_t> active, by_derivative, by_gradient;
-    std::vector<glm::dvec3> points, directions, gradients;
-    std::vector<double> values, slopes;
-    std::vector<double> scratch;
-
-    // Queues the vertex on the edge from a to b and returns its id; its position and normal are
-    // placeholders until run().
-    Index add(VertexGroup& out, const glm::dvec3& a, double fa, std::uint64_t ga,
-              const glm::dvec3& b, double fb, std::uint64_t gb) {
-        const bool a_positive = positive(fa);
-        const glm::dvec3& p = a_positive ? a : b;
-        const glm::dvec3& q = a_positive ? b : a;
-        const double fp = a_positive ? fa : fb;
-        const double fq = a_positive ? fb : fa;
-        Edge e;
-        e.id = static_cast<Index>(out.positions.size());
-        e.p = p;
-        out.positions.push_back(p);
-        out.normals.push_back(glm::dvec3(0.0));
-        if (fp == 0.0) {
-            e.pinned = true;
-            out.pinned.emplace_back(e.id, a_positive ? ga : gb);
-        } else {
-            e.d = q - p;
-            e.t = std::isfinite(fp) && std::isfinite(fq) ? fp / (fp - fq) : 0.5;
-            if (!(e.t > e.lo && e.t < e.hi)) e.t = 0.5;
-        }
-        edges.push_back(e);
-        return e.id;
-    }
-
-    // One Newton step of an edge given g(t) and g'(t); false when the edge is finished.
-    static bool step(Edge& e, double v, double slope) {
-        ++e.evaluations;
-        if (positive(v))
-            e.lo = e.t;
-        else
-            e.hi = e.t;
-        const double step = v / slope;
-        if (v == 0.0 || std::fabs(step) <= 1e-12) {
-            e.converged = true;
-            return false;
-        }
-        double next = e.t - step;
-        if (!(next > e.lo && next < e.hi)) next = 0.5 * (e.lo + e.hi);
-        if (next == e.t || !(next > e.lo && next < e.hi)) return false; // one ulp wide
-        // Newton squares the error: after a step of 1e-4 the next one is tiny.
-        e.full = std::fabs(e.t - next) <= 1e-4;
-        e.t = next;
-        return e.evaluations < 100;
-    }
-
-    void evaluate(const Context& ctx, const std::vector<std::size_t>& which, bool full) {
-        const std::size_t n = which.size();
-        if (n == 0) return;
-        points.resize(n);
-        directions.resize(n);
-        values.resize(n);
-        slopes.resize(n);
-        gradients.resize(n);
-        for (std::size_t k = 0; k < n; ++k) {
-            const Edge& e = edges[which[k]];
-            points[k] = e.p + e.t * e.d;
-            directions[k] = e.d;
-        }
-        if (full) {
-            ctx.f.values_and_gradients(points.data(), n, values.data(), gradients.data(),
-                                       ctx.params, scratch);
-            for (std::size_t k = 0; k < n; ++k) {
-                edges[which[k]].gradient = gradients[k];
-                slopes[k] = glm::dot(gradients[k], directions[k]);
-            }
-        } else {
-            ctx.f.values_and_derivatives(points.data(), directions.data(), n, values.data(),
-                                         slopes.data(), ctx.params, scratch);
-        }
-    }
-
-    // Places every queued vertex and sets its normal; the queue is then empty.
-    void run(const Context& ctx, VertexGroup& out) {
-        active.clear();
-        for (std::size_t k = 0; k < edges.size(); ++k)
-            if (!edges[k].pinned) active.push_back(k);
-        while (!active.empty()) {
-            by_derivative.clear();
-            by_gradient.clear();
-            for (std::size_t k : active) (edges[k].full ? by_gradient : by_derivative).push_back(k);
-            std::size_t kept = 0;
-            for (const bool full : {false, true}) {
-                const std::vector<std::size_t>& which = full ? by_gradient : by_derivative;
-                evaluate(ctx, which, full);
-                for (std::size_t k = 0; k < which.size(); ++k)
-                    if (step(edges[which[k]], values[k], slopes[k])) active[kept++] = which[k];
-            }
-            active.resize(kept);
-        }
-        // Where the last evaluation was not a full one at the final point, the gradient is
-        // computed there (for a pinned vertex: at its grid point). Without convergence (a
-        // pole, an undefined region, a kink) the sign change is somewhere in the final bracket.
-        by_gradient.clear();
-        for (std::size_t k = 0; k < edges.size(); ++k) {
-            Edge& e = edges[k];
-            if (e.pinned) {
-                by_gradient.push_back(k);
-                continue;
-            }
-            if (!e.converged) e.t = 0.5 * (e.lo + e.hi);
-            out.positions[e.id] = e.p + e.t * e.d;
-            if (!e.converged || !e.full) by_gradient.push_back(k);
-        }
-        if (!by_gradient.empty()) {
-            const std::size_t n = by_gradient.size();
-            points.resize(n);
-            values.resize(n);
-            gradients.resize(n);
-            for (std::size_t k = 0; k < n; ++k) points[k] = out.positions[edges[by_gradient[k]].id];
-            ctx.f.values_and_gradients(points.data(), n, values.data(), gradients.data(),
-                                       ctx.params, scratch);
-            for (std::size_t k = 0; k < n; ++k) edges[by_gradient[k]].gradient = gradients[k];
-        }
-        for (const Edge& e : edges) {
-            const double norm = glm::length(e.gradient);
-            out.normals[e.id] =
-                std::isfinite(norm) && norm > 0 ? e.gradient / norm : glm::dvec3(0.0);
-        }
-        edges.clear();
-    }
-};
 
 // In-plane edge directions (x, y, x+y) and the layer-crossing ones (z, x+z, y+z, x+y+z), as
 // offsets; d = 1..7 is the corner-offset bit pattern of the edge.
@@ -510,6 +219,17 @@ struct Polygonizer {
 
         Layer bottom = planes[c].view(tag_bottom);
         const BoundaryPlane& above = planes[c + 1];
+        // Room for about what the chunk will make, from its boundary planes' vertices: per
+        // slab about one layer's in-plane vertices and 4/3 of that across (seven edge
+        // directions, three in the plane), two triangles per vertex. Growing instead would
+        // copy the arrays at every doubling.
+        const double per_layer = 0.5 * static_cast<double>(planes[c].vertices.positions.size() +
+                                                           above.vertices.positions.size());
+        const auto expected =
+            static_cast<std::size_t>(2.5 * per_layer * (chunk.end_slab - chunk.first_slab));
+        chunk.vertices.positions.reserve(expected);
+        chunk.vertices.normals.reserve(expected);
+        chunk.triangles.reserve(2 * expected);
         int buffer = 0;
         for (int k = chunk.first_slab; k < chunk.end_slab; ++k) {
             if (stop) return;
@@ -555,7 +275,7 @@ struct Polygonizer {
 
     void emit_triangles(int c, const Layer& bottom, const Layer& top, const Index* vertical_ids) {
         const Grid& g = ctx.grid;
-        const CubeCase* cases = cube_cases().data();
+        const CubeCase* cases = cube_cases();
         std::vector<std::array<Index, 3>>& out = chunks[c].triangles;
         // Where each edge code finds its vertex id, relative to the cell's first point.
         struct EdgeSlot {
@@ -763,10 +483,10 @@ std::size_t drop_degenerate_triangles(Mesh& mesh) {
     return removed;
 }
 
-Expected<Mesh> polygonize(const Program& f, const PolygonizeOptions& options) {
-    if (Status s = check_options(f, options); !s) return s.error();
+namespace {
 
-    // The grid: ceil(extent / cell) cells per axis, the cell shrunk to fit (convention 18).
+// The grid: ceil(extent / cell) cells per axis, the cell shrunk to fit (convention 18).
+Expected<Grid> make_grid(const PolygonizeOptions& options) {
     // Counted in double first so a tiny cell cannot overflow an int before the check.
     double n[3], points = 1.0;
     for (int a = 0; a < 3; ++a) {
@@ -790,6 +510,107 @@ Expected<Mesh> polygonize(const Program& f, const PolygonizeOptions& options) {
     grid.ys = grid_coordinates(options.lo.y, options.hi.y, grid.ny);
     grid.zs = grid_coordinates(options.lo.z, options.hi.z, grid.nz);
 
+    return grid;
+}
+
+// Why the threads' work gave no mesh: an exception, a cap passed, a cancel; or nothing.
+Status polygonizer_failure(const Polygonizer& pz, const PolygonizeOptions& options) {
+    if (pz.failure) {
+        try {
+            std::rethrow_exception(pz.failure);
+        } catch (const std::bad_alloc&) {
+            return make_error(ErrorCode::limit, "not enough memory to polygonize this grid",
+                              "/cell");
+        } catch (const std::exception& e) {
+            return make_error_nopath(ErrorCode::internal,
+                                     std::string("polygonization failed: ") + e.what());
+        }
+    }
+    if (pz.over_cap) {
+        const bool vertices = pz.vertex_count > options.max_vertices;
+        return make_error(
+            ErrorCode::limit,
+            "cell " + format_number(options.cell) + " gives a mesh of more than " +
+                std::to_string(vertices ? options.max_vertices : options.max_triangles) +
+                (vertices ? " vertices" : " triangles") +
+                " (the most allowed); use a larger cell or smaller bounds",
+            "/cell");
+    }
+    if (pz.cancelled) return make_error_nopath(ErrorCode::limit, "polygonization was cancelled");
+    return Ok{};
+}
+
+// Merge in a fixed order: plane 0, chunk 0, plane 1, chunk 1, ..., the last plane. The
+// vertices that sit on a zero grid point are listed in `pinned` (point, vertex).
+Expected<Mesh> merge_chunks(Polygonizer& pz, std::vector<std::pair<std::uint64_t, Index>>& pinned) {
+    Mesh mesh;
+    std::vector<std::size_t> plane_offset(pz.planes.size()), chunk_offset(pz.chunks.size());
+    auto append = [&](const VertexGroup& g) {
+        const std::size_t offset = mesh.positions.size();
+        mesh.positions.insert(mesh.positions.end(), g.positions.begin(), g.positions.end());
+        mesh.normals.insert(mesh.normals.end(), g.normals.begin(), g.normals.end());
+        for (const auto& [id, point] : g.pinned)
+            pinned.emplace_back(point, static_cast<Index>(offset + id));
+        return offset;
+    };
+    // Sized once: appended group by group, the arrays would be copied again at every growth.
+    std::size_t vertex_total = 0;
+    for (const BoundaryPlane& bp : pz.planes) vertex_total += bp.vertices.positions.size();
+    for (const Chunk& ch : pz.chunks) vertex_total += ch.vertices.positions.size();
+    mesh.positions.reserve(vertex_total);
+    mesh.normals.reserve(vertex_total);
+    std::size_t triangle_count = 0;
+    for (std::size_t c = 0; c < pz.chunks.size(); ++c) {
+        plane_offset[c] = append(pz.planes[c].vertices);
+        chunk_offset[c] = append(pz.chunks[c].vertices);
+        triangle_count += pz.chunks[c].triangles.size();
+    }
+    plane_offset.back() = append(pz.planes.back().vertices);
+    if (mesh.positions.size() >= static_cast<std::size_t>(tag_bottom))
+        return make_error(ErrorCode::limit, "the mesh has too many vertices", "/cell");
+    mesh.triangles.reserve(triangle_count);
+    for (std::size_t c = 0; c < pz.chunks.size(); ++c) {
+        const Index offsets[3] = {static_cast<Index>(chunk_offset[c]),
+                                  static_cast<Index>(plane_offset[c]),
+                                  static_cast<Index>(plane_offset[c + 1])};
+        for (const auto& t : pz.chunks[c].triangles) {
+            std::array<Index, 3> r;
+            for (int k = 0; k < 3; ++k) r[k] = (t[k] & ~tag_mask) + offsets[t[k] >> 30];
+            mesh.triangles.push_back(r);
+        }
+    }
+    pz.chunks.clear();
+    pz.planes.clear();
+
+    return mesh;
+}
+
+// Weld the vertices that sit on the same zero grid point, then drop the triangles that
+// collapsed (they repeat a vertex).
+void weld_pinned(Mesh& mesh, std::vector<std::pair<std::uint64_t, Index>>& pinned) {
+    if (pinned.empty()) return;
+    std::sort(pinned.begin(), pinned.end());
+    std::vector<Index> remap(mesh.positions.size());
+    for (std::size_t v = 0; v < remap.size(); ++v) remap[v] = static_cast<Index>(v);
+    for (std::size_t s = 0; s < pinned.size();) {
+        std::size_t e = s;
+        while (e < pinned.size() && pinned[e].first == pinned[s].first) ++e;
+        for (std::size_t k = s + 1; k < e; ++k) remap[pinned[k].second] = pinned[s].second;
+        s = e;
+    }
+    for (auto& t : mesh.triangles)
+        for (Index& v : t) v = remap[v];
+    drop_degenerate_triangles(mesh);
+}
+
+} // namespace
+
+Expected<Mesh> polygonize(const Program& f, const PolygonizeOptions& options) {
+    if (Status s = check_options(f, options); !s) return s.error();
+
+    Expected<Grid> made = make_grid(options);
+    if (!made) return made.error();
+    const Grid& grid = *made;
     Polygonizer pz(Context{f, options.parameters.data(), grid});
     pz.progress = &options.progress;
     pz.max_vertices = options.max_vertices;
@@ -814,85 +635,18 @@ Expected<Mesh> polygonize(const Program& f, const PolygonizeOptions& options) {
         for (int w = 1; w < threads; ++w) helpers.emplace_back([&pz, w] { pz.work(w); });
         pz.work(0);
     }
-    if (pz.failure) {
-        try {
-            std::rethrow_exception(pz.failure);
-        } catch (const std::bad_alloc&) {
-            return make_error(ErrorCode::limit, "not enough memory to polygonize this grid",
-                              "/cell");
-        } catch (const std::exception& e) {
-            return make_error_nopath(ErrorCode::internal,
-                                     std::string("polygonization failed: ") + e.what());
-        }
-    }
-    if (pz.over_cap) {
-        const bool vertices = pz.vertex_count > options.max_vertices;
-        return make_error(
-            ErrorCode::limit,
-            "cell " + format_number(options.cell) + " gives a mesh of more than " +
-                std::to_string(vertices ? options.max_vertices : options.max_triangles) +
-                (vertices ? " vertices" : " triangles") +
-                " (the most allowed); use a larger cell or smaller bounds",
-            "/cell");
-    }
-    if (pz.cancelled) return make_error_nopath(ErrorCode::limit, "polygonization was cancelled");
+    if (Status failed = polygonizer_failure(pz, options); !failed) return failed.error();
 
-    // Merge in a fixed order: plane 0, chunk 0, plane 1, chunk 1, ..., the last plane.
-    Mesh mesh;
-    std::vector<std::size_t> plane_offset(pz.planes.size()), chunk_offset(pz.chunks.size());
     std::vector<std::pair<std::uint64_t, Index>> pinned;
-    auto append = [&](const VertexGroup& g) {
-        const std::size_t offset = mesh.positions.size();
-        mesh.positions.insert(mesh.positions.end(), g.positions.begin(), g.positions.end());
-        mesh.normals.insert(mesh.normals.end(), g.normals.begin(), g.normals.end());
-        for (const auto& [id, point] : g.pinned)
-            pinned.emplace_back(point, static_cast<Index>(offset + id));
-        return offset;
-    };
-    std::size_t triangle_count = 0;
-    for (std::size_t c = 0; c < pz.chunks.size(); ++c) {
-        plane_offset[c] = append(pz.planes[c].vertices);
-        chunk_offset[c] = append(pz.chunks[c].vertices);
-        triangle_count += pz.chunks[c].triangles.size();
-    }
-    plane_offset.back() = append(pz.planes.back().vertices);
-    if (mesh.positions.size() >= static_cast<std::size_t>(tag_bottom))
-        return make_error(ErrorCode::limit, "the mesh has too many vertices", "/cell");
-    mesh.triangles.reserve(triangle_count);
-    for (std::size_t c = 0; c < pz.chunks.size(); ++c) {
-        const Index offsets[3] = {static_cast<Index>(chunk_offset[c]),
-                                  static_cast<Index>(plane_offset[c]),
-                                  static_cast<Index>(plane_offset[c + 1])};
-        for (const auto& t : pz.chunks[c].triangles) {
-            std::array<Index, 3> r;
-            for (int k = 0; k < 3; ++k) r[k] = (t[k] & ~tag_mask) + offsets[t[k] >> 30];
-            mesh.triangles.push_back(r);
-        }
-    }
-    pz.chunks.clear();
-    pz.planes.clear();
-
-    // Weld the vertices that sit on the same zero grid point, then drop the triangles that
-    // collapsed (they repeat a vertex).
-    if (!pinned.empty()) {
-        std::sort(pinned.begin(), pinned.end());
-        std::vector<Index> remap(mesh.positions.size());
-        for (std::size_t v = 0; v < remap.size(); ++v) remap[v] = static_cast<Index>(v);
-        for (std::size_t s = 0; s < pinned.size();) {
-            std::size_t e = s;
-            while (e < pinned.size() && pinned[e].first == pinned[s].first) ++e;
-            for (std::size_t k = s + 1; k < e; ++k) remap[pinned[k].second] = pinned[s].second;
-            s = e;
-        }
-        for (auto& t : mesh.triangles)
-            for (Index& v : t) v = remap[v];
-        drop_degenerate_triangles(mesh);
-    }
+    Expected<Mesh> merged = merge_chunks(pz, pinned);
+    if (!merged) return merged.error();
+    Mesh& mesh = *merged;
+    weld_pinned(mesh, pinned);
     repair_normals(mesh);
     mesh.exists.assign(mesh.positions.size(), 1);
     if (options.progress && !options.progress(1.0))
         return make_error_nopath(ErrorCode::limit, "polygonization was cancelled");
-    return mesh;
+    return std::move(mesh);
 }
 
 } // namespace isoparm::geom::implicit

@@ -233,10 +233,12 @@ TrimmedLayout triangulate_trimmed(const std::vector<double>& us, const std::vect
     }
     std::vector<std::size_t> order(points.size());
     for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-    CGAL::spatial_sort(order.begin(), order.end(),
-                       CGAL::Spatial_sort_traits_adapter_2<
-                           Kernel, CGAL::Pointer_property_map<Kernel::Point_2>::const_type>(
-                           CGAL::make_property_map(std::as_const(points))));
+    // CGAL's property map takes &points[0]: an untrimmed domain has no point to sort.
+    if (!points.empty())
+        CGAL::spatial_sort(order.begin(), order.end(),
+                           CGAL::Spatial_sort_traits_adapter_2<
+                               Kernel, CGAL::Pointer_property_map<Kernel::Point_2>::const_type>(
+                               CGAL::make_property_map(std::as_const(points))));
     Cdt cdt;
     std::vector<Cdt::Vertex_handle> handles(points.size());
     Cdt::Face_handle hint;

@@ -2,15 +2,21 @@
 // or remote desktop has no GPU): one whole workstation frame at 1440x900, the way the window
 // draws it (no multisampling on a software rasteriser), for what a person does: nothing
 // (a frame drawn for a hover), dragging the indicator, dragging a control point, orbiting.
-// Process CPU time per frame (llvmpipe rasterises on worker threads), glFinish'ed.
+// Process CPU time per frame (llvmpipe rasterises on worker threads), glFinish'ed; each
+// frame's own times too, as the median and 95th percentile a drag's stutter shows in.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cfloat>
+#include <chrono>
 #include <cmath>
+#include <ctime>
 #include <imgui.h>
 #include <string>
+#include <vector>
 
 #include "core/doc/commands.hpp"
+#include "core/doc/commands_curve.hpp"
 #include "core/scene/scene_io.hpp"
 #include "ui/headless/egl_context.hpp"
 #include "ui/headless/offscreen_target.hpp"
@@ -24,7 +30,22 @@ namespace {
 
 using namespace isoparm;
 
-enum class Gesture { idle, indicator, point, orbit };
+enum class Gesture { idle, indicator, point, orbit, profile };
+
+double process_cpu_ms() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
+}
+
+// The q-quantile (nearest rank) of the frames' times.
+double quantile(std::vector<double> v, double q) {
+    if (v.empty()) return 0;
+    const auto k = static_cast<std::size_t>(std::ceil(q * static_cast<double>(v.size()))) - 1;
+    const std::size_t i = std::min(k, v.size() - 1);
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(i), v.end());
+    return v[i];
+}
 
 // A 64x64 bicubic NURBS surface, gently waved, with varying weights (the big-net drag case).
 doc::Document nurbs_64x64() {
@@ -43,6 +64,25 @@ doc::Document nurbs_64x64() {
     return d;
 }
 
+// Fig. 8's vase refined to 64x64 control points (53 knots inserted along u, 55 along v after
+// the 11x9 revolution), still linked to its 11-point profile: a drag of a profile point rebuilds
+// it every frame (the associative constructions' drag case). The profile is selected, as when
+// its point is dragged in the curve designer.
+doc::Document vase_64x64(std::uint64_t& profile, glm::dvec3& p0) {
+    auto d = scene::load_scene(ISOPARM_SOURCE_DIR "/assets/scenes/fig8-revolution.json");
+    if (!d) return {};
+    doc::History h;
+    const std::uint64_t vase = 1;
+    profile = 2;
+    for (int k = 0; k < 53; ++k)
+        (void)h.execute(*d, doc::insert_knot(vase, geom::Dir::u, (k + 0.37) / 53));
+    for (int k = 0; k < 55; ++k)
+        (void)h.execute(*d, doc::insert_knot(vase, geom::Dir::v, (k + 0.37) / 55));
+    d->view.selection = {profile, 5, -1};
+    p0 = d->find(profile)->curve()->points[5];
+    return std::move(d).value();
+}
+
 void BM_Frame1440x900(benchmark::State& state, const char* scene, Gesture gesture) {
     std::string error;
     const std::unique_ptr<ui::EglContext> egl = ui::EglContext::create(error);
@@ -50,10 +90,22 @@ void BM_Frame1440x900(benchmark::State& state, const char* scene, Gesture gestur
         state.SkipWithError(("no headless OpenGL: " + error).c_str());
         return;
     }
-    // No scene file: the 64x64 net.
-    auto loaded = *scene ? scene::load_scene(std::string(ISOPARM_SOURCE_DIR "/assets/scenes/") +
-                                             scene)
-                         : geom::Expected<doc::Document>(nurbs_64x64());
+    // No scene file: the 64x64 net (or the 64x64 vase that follows its profile).
+    std::uint64_t profile = 0;
+    glm::dvec3 profile_p0(0);
+    auto loaded = *scene
+                      ? scene::load_scene(std::string(ISOPARM_SOURCE_DIR "/assets/scenes/") + scene)
+                  : gesture == Gesture::profile
+                      ? geom::Expected<doc::Document>(vase_64x64(profile, profile_p0))
+                      : geom::Expected<doc::Document>(nurbs_64x64());
+    if (loaded.ok() && gesture == Gesture::profile) {
+        const doc::Object* vase = loaded->find(1);
+        const geom::Surface* vs = vase ? vase->surface() : nullptr;
+        if (!vs || vs->n_u != 64 || vs->n_v != 64 || !vase->construction) {
+            state.SkipWithError("the 64x64 vase was not built");
+            return;
+        }
+    }
     if (!loaded.ok()) {
         state.SkipWithError(loaded.error().message.c_str());
         return;
@@ -79,7 +131,10 @@ void BM_Frame1440x900(benchmark::State& state, const char* scene, Gesture gestur
         const int pi = s ? s->n_u / 2 : 0, pj = s ? s->n_v / 2 : 0;
         const glm::dvec3 p0 = s ? s->point(pi, pj) : glm::dvec3(0);
         long n = 0;
+        std::vector<double> wall_ms, cpu_ms;
         for (auto _ : state) {
+            const auto wall0 = std::chrono::steady_clock::now();
+            const double cpu0 = process_cpu_ms();
             const double t = 0.02 * static_cast<double>(n++ % 40); // back and forth
             switch (gesture) {
             case Gesture::idle:
@@ -93,12 +148,24 @@ void BM_Frame1440x900(benchmark::State& state, const char* scene, Gesture gestur
             case Gesture::orbit:
                 ui::orbit(ctx.ui.camera, 3, 1);
                 break;
+            case Gesture::profile:
+                ctx.execute(doc::move_curve_point(profile, 5, profile_p0 + glm::dvec3(t, 0, 0)));
+                break;
             }
             ws.frame(fbo);
             glFinish();
+            cpu_ms.push_back(process_cpu_ms() - cpu0);
+            wall_ms.push_back(
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall0)
+                    .count());
         }
+        state.SetLabel(egl->renderer_name()); // the figures are this renderer's (llvmpipe here)
         state.counters["frames_per_s"] =
             benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsRate);
+        state.counters["wall_med_ms"] = quantile(wall_ms, 0.5);
+        state.counters["wall_p95_ms"] = quantile(wall_ms, 0.95);
+        state.counters["cpu_med_ms"] = quantile(cpu_ms, 0.5);
+        state.counters["cpu_p95_ms"] = quantile(cpu_ms, 0.95);
     }
 }
 
@@ -114,6 +181,8 @@ FRAME_CASE(fig3b_indicator_drag, "fig3b-weight-5.json", Gesture::indicator);
 FRAME_CASE(fig3b_point_drag, "fig3b-weight-5.json", Gesture::point);
 FRAME_CASE(fig3b_orbit, "fig3b-weight-5.json", Gesture::orbit);
 FRAME_CASE(nurbs64_point_drag, "", Gesture::point);
+// A profile point dragged while a 64x64 revolved surface follows it (rebuilt every frame).
+FRAME_CASE(vase64_profile_drag, "", Gesture::profile);
 FRAME_CASE(implicit_gallery_idle, "implicit-gallery.json", Gesture::idle);
 // Each frame redraws some 880k triangles: the closed meshes without their hidden side.
 FRAME_CASE(implicit_gallery_orbit, "implicit-gallery.json", Gesture::orbit);
