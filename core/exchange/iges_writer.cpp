@@ -70,8 +70,13 @@ std::string directory_entry(int type, int parameter_start, int parameter_lines, 
 std::vector<std::string> curve_tokens(const geom::Curve& c, bool planar = false) {
     const int K = c.count() - 1, M = c.degree;
     const bool polynomial = !geom::is_rational(c.type);
-    std::vector<std::string> t = {"126", std::to_string(K),          std::to_string(M),
-                                  planar ? "1" : "0", "0", polynomial ? "1" : "0", "0"};
+    std::vector<std::string> t = {"126",
+                                  std::to_string(K),
+                                  std::to_string(M),
+                                  planar ? "1" : "0",
+                                  "0",
+                                  polynomial ? "1" : "0",
+                                  "0"};
     for (double u : c.knots) t.push_back(real_text(u));
     for (double w : c.weights) t.push_back(real_text(w));
     for (const glm::dvec3& p : c.points)
@@ -151,7 +156,8 @@ int loop_entity(Entities& e, int surface, const geom::Surface& s, const geom::Tr
     };
     const int b = chain(uv, dependent_parametric), c = chain(xyz, dependent);
     // CRTN 0 (unspecified), the surface, B, C, PREF 1 (S o B, the (u, v) curve, is preferred).
-    return e.add(142, {"142", "0", std::to_string(surface), std::to_string(b), std::to_string(c), "1"},
+    return e.add(142,
+                 {"142", "0", std::to_string(surface), std::to_string(b), std::to_string(c), "1"},
                  dependent);
 }
 
@@ -278,7 +284,8 @@ geom::Expected<std::string> iges_text(const std::vector<ExactShape>& shapes,
             for (const geom::TrimLoop& h : t.trim.holes)
                 holes.push_back(loop_entity(entities, surface, t.surface, h, tolerance));
             // N1: 0 when the outer boundary is the surface's own (its domain), 1 otherwise.
-            std::vector<std::string> tokens = {"144", std::to_string(surface), t.trim.outer ? "1" : "0",
+            std::vector<std::string> tokens = {"144", std::to_string(surface),
+                                               t.trim.outer ? "1" : "0",
                                                std::to_string(holes.size()), std::to_string(outer)};
             for (int h : holes) tokens.push_back(std::to_string(h));
             entities.add(144, std::move(tokens), independent);
@@ -289,8 +296,8 @@ geom::Expected<std::string> iges_text(const std::vector<ExactShape>& shapes,
         std::string records;
         parameter_records(e.tokens, de_pointer, p_seq, records);
         parameters += records;
-        directory +=
-            directory_entry(e.type, parameter_start, p_seq - parameter_start, e.form, e.status, d_seq);
+        directory += directory_entry(e.type, parameter_start, p_seq - parameter_start, e.form,
+                                     e.status, d_seq);
     }
     char terminate[80];
     std::snprintf(terminate, sizeof terminate, "S%07dG%07dD%07dP%07d", s_seq - 1, g_seq - 1,

@@ -106,7 +106,9 @@ public:
         return id;
     }
 
-    int point2(const glm::dvec3& p) { return d_.add("CARTESIAN_POINT(''," + reals({p.x, p.y}) + ")"); }
+    int point2(const glm::dvec3& p) {
+        return d_.add("CARTESIAN_POINT(''," + reals({p.x, p.y}) + ")");
+    }
 
     // planar: a (u, v) curve, its points 2D (a p-curve's definitional representation).
     int curve(const geom::Curve& c, bool planar = false) {
@@ -181,9 +183,9 @@ public:
             for (std::size_t k = 0; k < loop.curves.size(); ++k) {
                 const geom::Curve& c = loop.curves[k];
                 const int c3 = curve(geom::curve_on_surface(s, c, edge_tolerance));
-                const int representation = d_.add("DEFINITIONAL_REPRESENTATION(''," +
-                                                  list({ref(curve(c, true))}) + "," +
-                                                  ref(parameter_context()) + ")");
+                const int representation =
+                    d_.add("DEFINITIONAL_REPRESENTATION(''," + list({ref(curve(c, true))}) + "," +
+                           ref(parameter_context()) + ")");
                 const int pcurve =
                     d_.add("PCURVE(''," + ref(surface_id) + "," + ref(representation) + ")");
                 const int surface_curve = d_.add("SURFACE_CURVE(''," + ref(c3) + "," +
@@ -265,9 +267,9 @@ int representation_context(step::DataSection& d, double uncertainty_mm) {
     const int mm = d.add("( LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.MILLI.,.METRE.) )");
     const int radian = d.add("( NAMED_UNIT(*) PLANE_ANGLE_UNIT() SI_UNIT($,.RADIAN.) )");
     const int steradian = d.add("( NAMED_UNIT(*) SI_UNIT($,.STERADIAN.) SOLID_ANGLE_UNIT() )");
-    const int uncertainty = d.add("UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(" +
-                                  step_real(uncertainty_mm) + ")," +
-                                  ref(mm) + ",'distance_accuracy_value','confusion accuracy')");
+    const int uncertainty =
+        d.add("UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(" + step_real(uncertainty_mm) + ")," +
+              ref(mm) + ",'distance_accuracy_value','confusion accuracy')");
     return d.add("( GEOMETRIC_REPRESENTATION_CONTEXT(3) GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT(" +
                  list({ref(uncertainty)}) + ") GLOBAL_UNIT_ASSIGNED_CONTEXT(" +
                  list({ref(mm), ref(radian), ref(steradian)}) +
@@ -321,7 +323,8 @@ geom::Expected<std::string> step_text(const std::vector<ExactShape>& shapes,
     // Trimmed faces' edges follow their surfaces within edge_tolerance: the file's uncertainty
     // (what readers take as their precision) is at least ten times that.
     bool trimmed = false;
-    for (const ExactShape& shape : shapes) trimmed |= std::holds_alternative<geom::TrimmedSurface>(shape);
+    for (const ExactShape& shape : shapes)
+        trimmed |= std::holds_alternative<geom::TrimmedSurface>(shape);
     const int context =
         representation_context(d, trimmed ? std::max(1e-7, 10 * edge_tolerance) : 1e-7);
     const int origin = d.add("AXIS2_PLACEMENT_3D(''," + ref(w.point(glm::dvec3(0.0))) + "," +

@@ -194,7 +194,8 @@ Converted face_geometry(const TopoDS_Face& face) {
     auto trim = face_trim(face, s, box, surface);
     if (auto* why = std::get_if<std::string>(&trim))
         return {std::move(surface), "", kind + ": its trim loops were left out (" + *why + ")"};
-    return {geom::TrimmedSurface{std::move(surface), std::move(std::get<geom::Trim>(trim))}, "", ""};
+    return {geom::TrimmedSurface{std::move(surface), std::move(std::get<geom::Trim>(trim))}, "",
+            ""};
 }
 
 Converted edge_geometry(const TopoDS_Edge& edge) {

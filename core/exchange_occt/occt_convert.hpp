@@ -18,7 +18,7 @@ namespace isoparm::exchange_occt {
 struct Converted {
     std::optional<exchange::ExactShape> shape;
     std::string skip_reason;
-    std::string note;
+    std::string note = {}; // why a face came without its trim loops (empty: it has them)
 };
 
 // The box (BRepTools::UVBounds) is fitted to the surface first: cut to the surface's range

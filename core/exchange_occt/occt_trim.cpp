@@ -18,6 +18,7 @@
 #include <TopoDS_Wire.hxx>
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <glm/geometric.hpp>
 #include <optional>
 
@@ -155,8 +156,10 @@ private:
             const glm::dvec3 d1 = dir == geom::Dir::u ? der->D[1][0] : der->D[0][1];
             const glm::dvec3 d2 = dir == geom::Dir::u ? der->D[2][0] : der->D[0][2];
             const double g1 = glm::dot(d1, r), g2 = glm::dot(d2, r) + glm::dot(d1, d1);
-            if (g1 > 0) hi = t;
-            else lo = t;
+            if (g1 > 0)
+                hi = t;
+            else
+                lo = t;
             double next = g2 > 0 ? t - g1 / g2 : 0.5 * (lo + hi);
             if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
             if (std::abs(next - t) <= 1e-15 * (I.hi - I.lo) || g1 == 0) break;
@@ -211,12 +214,106 @@ double period_shift(double t, double lo, double hi, double period) {
 }
 
 struct EdgeCurve {
-    geom::Curve curve;
-    std::string why; // when it failed
+    std::vector<geom::Curve> curves; // the edge in order (a mapped edge may be several pieces)
+    std::string why;                 // when it failed
 };
 
+// The distinct interior knots of a knot vector.
+std::vector<double> interior_knots(const geom::Knots& k) {
+    std::vector<double> out;
+    for (double t : k)
+        if (t > k.front() && t < k.back() && (out.empty() || t != out.back())) out.push_back(t);
+    return out;
+}
+
+// Where a mapped p-curve has a kink: the parameters t in (f, l) at which its image crosses a
+// knot line of the converted surface (the map from OCCT's parameters to the NURBS surface's is
+// only piecewise smooth there: each rational arc of a converted circle has a map of its own)
+// and the p-curve's own knots of continuity below C2. A cubic fit of uniform samples cannot
+// follow a kink, so each smooth piece is fitted on its own.
+std::vector<double> kinks(const std::function<glm::dvec2(double)>& mapped, double f, double l,
+                          const geom::Surface& s, const Handle(Geom2d_Curve) & basis) {
+    std::vector<double> out;
+    if (auto b = Handle(Geom2d_BSplineCurve)::DownCast(basis); !b.IsNull())
+        for (int i = 1; i <= b->NbKnots(); ++i)
+            if (b->Multiplicity(i) >= std::max(1, b->Degree() - 1) && b->Knot(i) > f &&
+                b->Knot(i) < l)
+                out.push_back(b->Knot(i));
+    const std::vector<double> lines[2] = {interior_knots(s.knots_u), interior_knots(s.knots_v)};
+    constexpr int samples = 256;
+    glm::dvec2 prev = mapped(f);
+    double t_prev = f;
+    for (int k = 1; k <= samples; ++k) {
+        const double t = f + (l - f) * k / samples;
+        const glm::dvec2 q = mapped(t);
+        for (int axis = 0; axis < 2; ++axis)
+            for (double knot : lines[axis]) {
+                const double a = prev[axis] - knot, b = q[axis] - knot;
+                if (!(a * b < 0)) continue;
+                // Bisection for the crossing (the map is monotone within a sample step).
+                double lo = t_prev, hi = t;
+                for (int it = 0; it < 60; ++it) {
+                    const double m = 0.5 * (lo + hi);
+                    if ((mapped(m)[axis] - knot) * a > 0)
+                        lo = m;
+                    else
+                        hi = m;
+                }
+                out.push_back(0.5 * (lo + hi));
+            }
+        prev = q;
+        t_prev = t;
+    }
+    std::sort(out.begin(), out.end());
+    // Pieces shorter than 1e-9 of the edge are merged into their neighbour.
+    std::vector<double> kept;
+    for (double t : out)
+        if (t - (kept.empty() ? f : kept.back()) > 1e-9 * (l - f) && l - t > 1e-9 * (l - f))
+            kept.push_back(t);
+    return kept;
+}
+
+// Pieces of a mapped curve are fitted with at most this many samples each; a piece that does
+// not come within the tolerance is halved (down to `max_depth` halvings), which isolates a kink
+// the search in kinks() missed (a cubic fit converges only slowly across one).
+constexpr int piece_samples = 256;
+constexpr int max_depth = 40;
+
+// Fits [a, b] into `out`, halving it where one fit is not within the tolerance; false where
+// even the smallest pieces are not.
+bool fit_adaptive(const std::function<glm::dvec2(double)>& mapped, double a, double b, int pieces,
+                  double tolerance, int depth, std::vector<geom::Curve>& out) {
+    geom::SampleFit fit =
+        geom::fit_samples_limited([&](double t) { return glm::dvec3(mapped(t), 0.0); }, {a, b},
+                                  pieces, tolerance, piece_samples);
+    if (!fit.within && depth < max_depth) {
+        const double m = 0.5 * (a + b);
+        return fit_adaptive(mapped, a, m, std::max(1, pieces / 2), tolerance, depth + 1, out) &&
+               fit_adaptive(mapped, m, b, std::max(1, pieces / 2), tolerance, depth + 1, out);
+    }
+    if (!out.empty()) fit.curve.points.front() = out.back().points.back();
+    out.push_back(std::move(fit.curve));
+    return fit.within;
+}
+
+// The mapped function fitted piece by piece between its kinks; consecutive pieces share their
+// end points exactly. Empty where it cannot be followed within the tolerance.
+std::vector<geom::Curve> fit_pieces(const std::function<glm::dvec2(double)>& mapped, double f,
+                                    double l, const std::vector<double>& breaks, int pieces,
+                                    double tolerance) {
+    std::vector<double> ends{f};
+    ends.insert(ends.end(), breaks.begin(), breaks.end());
+    ends.push_back(l);
+    std::vector<geom::Curve> out;
+    const int per_piece = std::max(1, pieces / static_cast<int>(ends.size() - 1));
+    for (std::size_t k = 0; k + 1 < ends.size(); ++k)
+        if (!fit_adaptive(mapped, ends[k], ends[k + 1], per_piece, tolerance, 0, out)) return {};
+    return out;
+}
+
 EdgeCurve edge_curve(const TopoDS_Edge& edge, const TopoDS_Face& face, const FaceBox& box,
-                     const Mapper& map, const ParamRect& domain) {
+                     const Mapper& map, const geom::Surface& surface) {
+    const ParamRect domain = geom::domain(surface);
     Standard_Real f = 0, l = 0;
     Handle(Geom2d_Curve) c2d = BRep_Tool::CurveOnSurface(edge, face, f, l);
     const double scale = geom::domain_scale(domain);
@@ -236,16 +333,13 @@ EdgeCurve edge_curve(const TopoDS_Edge& edge, const TopoDS_Face& face, const Fac
             return out;
         }
         const gp_Trsf trsf = loc.Transformation();
-        glm::dvec2 last{NAN, NAN};
-        out.curve = geom::fit_samples(
-            [&](double t) {
-                gp_Pnt p = c3d->Value(t);
-                p.Transform(trsf);
-                const glm::dvec2 q = map.project({p.X(), p.Y(), p.Z()});
-                last = q;
-                return glm::dvec3(q, 0.0);
-            },
-            {a, b}, 8, tolerance);
+        const std::function<glm::dvec2(double)> projected = [&](double t) {
+            gp_Pnt p = c3d->Value(t);
+            p.Transform(trsf);
+            return map.project({p.X(), p.Y(), p.Z()});
+        };
+        out.curves = fit_pieces(
+            projected, a, b, kinks(projected, a, b, surface, Handle(Geom2d_Curve)()), 8, tolerance);
     } else {
         // Unwrap trimmed curves to see a line.
         Handle(Geom2d_Curve) basis = c2d;
@@ -268,7 +362,7 @@ EdgeCurve edge_curve(const TopoDS_Edge& edge, const TopoDS_Face& face, const Fac
                 Handle(Geom2d_BSplineCurve) b =
                     Geom2dConvert::CurveToBSplineCurve(new Geom2d_TrimmedCurve(c2d, f, l));
                 if (!b.IsNull()) {
-                    out.curve = to_curve_2d(b, shift);
+                    out.curves.push_back(to_curve_2d(b, shift));
                     converted = true;
                 }
             } catch (const Standard_Failure&) {
@@ -283,7 +377,7 @@ EdgeCurve edge_curve(const TopoDS_Edge& edge, const TopoDS_Face& face, const Fac
                 glm::dvec2 a2 = a, b2 = b;
                 if (std::abs(dir.X()) < 1e-12) b2.x = a2.x; // exactly constant u
                 if (std::abs(dir.Y()) < 1e-12) b2.y = a2.y;
-                out.curve = geom::trim_line(a2, b2);
+                out.curves.push_back(geom::trim_line(a2, b2));
                 converted = true;
             }
         }
@@ -291,11 +385,20 @@ EdgeCurve edge_curve(const TopoDS_Edge& edge, const TopoDS_Face& face, const Fac
             int pieces = 8;
             if (auto b = Handle(Geom2d_BSplineCurve)::DownCast(basis); !b.IsNull())
                 pieces = std::max(pieces, b->NbKnots());
-            out.curve = geom::fit_samples([&](double t) { return glm::dvec3(map.map(at(t)), 0.0); },
-                                          {f, l}, pieces, tolerance);
+            const std::function<glm::dvec2(double)> mapped = [&](double t) {
+                return map.map(at(t));
+            };
+            out.curves =
+                fit_pieces(mapped, f, l, kinks(mapped, f, l, surface, basis), pieces, tolerance);
         }
     }
-    if (edge.Orientation() == TopAbs_REVERSED) out.curve = geom::reversed(out.curve);
+    if (out.curves.empty() && out.why.empty())
+        out.why =
+            "an edge that no fit follows within " + geom::format_short(tolerance, 3) + " in (u, v)";
+    if (edge.Orientation() == TopAbs_REVERSED) {
+        std::reverse(out.curves.begin(), out.curves.end());
+        for (geom::Curve& c : out.curves) c = geom::reversed(c);
+    }
     return out;
 }
 
@@ -306,14 +409,16 @@ void move_end(geom::Curve& c, bool last, glm::dvec2 p) {
     q.y = p.y;
 }
 
-std::variant<geom::TrimLoop, std::string> wire_loop(const TopoDS_Wire& wire, const TopoDS_Face& face,
-                                                    const FaceBox& box, const Mapper& map,
-                                                    const ParamRect& domain) {
+std::variant<geom::TrimLoop, std::string> wire_loop(const TopoDS_Wire& wire,
+                                                    const TopoDS_Face& face, const FaceBox& box,
+                                                    const Mapper& map,
+                                                    const geom::Surface& surface) {
+    const ParamRect domain = geom::domain(surface);
     geom::TrimLoop loop;
     for (BRepTools_WireExplorer e(wire, face); e.More(); e.Next()) {
-        EdgeCurve c = edge_curve(e.Current(), face, box, map, domain);
+        EdgeCurve c = edge_curve(e.Current(), face, box, map, surface);
         if (!c.why.empty()) return c.why;
-        loop.curves.push_back(std::move(c.curve));
+        for (geom::Curve& piece : c.curves) loop.curves.push_back(std::move(piece));
     }
     if (loop.curves.empty()) return std::string("a wire without edges");
     // Join the ends: each junction to the middle of the two ends that meet there.
@@ -358,7 +463,7 @@ std::variant<geom::Trim, std::string> face_trim(const TopoDS_Face& face,
     int wires = 0;
     for (TopExp_Explorer e(face, TopAbs_WIRE); e.More(); e.Next(), ++wires) {
         const TopoDS_Wire wire = TopoDS::Wire(e.Current());
-        auto loop = wire_loop(wire, face, box, map, domain);
+        auto loop = wire_loop(wire, face, box, map, converted);
         if (auto* why = std::get_if<std::string>(&loop)) return *why;
         geom::TrimLoop l = std::move(std::get<geom::TrimLoop>(loop));
         const double area = geom::twice_signed_area(geom::flatten_loop(l, rule).points);

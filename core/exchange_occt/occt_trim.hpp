@@ -30,7 +30,6 @@ struct FaceBox {
 // counter-clockwise, holes clockwise); the result passes geom::validate_trim.
 std::variant<geom::Trim, std::string> face_trim(const TopoDS_Face& face,
                                                 const Handle(Geom_Surface) & original,
-                                                const FaceBox& box,
-                                                const geom::Surface& converted);
+                                                const FaceBox& box, const geom::Surface& converted);
 
 } // namespace isoparm::exchange_occt

@@ -69,9 +69,8 @@ json text_answer(std::string text) {
 } // namespace
 
 OpResult op_export(const json& request) {
-    if (geom::Status s =
-            check_fields(request, "export",
-                         {"curve", "surface", "trim", "triangle", "format", "samples"});
+    if (geom::Status s = check_fields(
+            request, "export", {"curve", "surface", "trim", "triangle", "format", "samples"});
         !s)
         return s.error();
     if (find_member(request, "triangle")) {
@@ -113,8 +112,8 @@ OpResult op_export(const json& request) {
     }
     const exchange::ExactShape shape =
         !subject->is_surface ? exchange::ExactShape(subject->curve)
-        : *trim ? exchange::ExactShape(geom::TrimmedSurface{subject->surface, **trim})
-                : exchange::ExactShape(subject->surface);
+        : *trim              ? exchange::ExactShape(geom::TrimmedSurface{subject->surface, **trim})
+                             : exchange::ExactShape(subject->surface);
     if (*format == Format::obj) return text_answer(exchange::obj_freeform_text({shape}));
     Expected<std::string> text = *format == Format::step ? exchange::step_text({shape}, "isoparm")
                                                          : exchange::iges_text({shape}, "isoparm");

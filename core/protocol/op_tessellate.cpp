@@ -88,7 +88,9 @@ Expected<geom::Mesh> tessellate_mesh(const json& request) {
     if (!n) return n.error();
     double tolerance = 0; // the default: geom::default_chord_tolerance
     if (const json* t = find_member(request, "tolerance")) {
-        if (!*trim) return schema_error("tolerance is for a trimmed tessellation (give trim)", "/tolerance");
+        if (!*trim)
+            return schema_error("tolerance is for a trimmed tessellation (give trim)",
+                                "/tolerance");
         if (!is_finite_number(*t) || !(t->get<double>() > 0))
             return schema_error("tolerance is a positive number (the largest distance, in the "
                                 "model's units, between a loop on the surface and the mesh)",
@@ -105,7 +107,8 @@ Expected<geom::Mesh> tessellate_mesh(const json& request) {
                                         ", a millionth of the default)",
                                     "/tolerance");
     }
-    if (*trim) return geom::tessellate_trimmed(subject->surface, **trim, (*n)[0], (*n)[1], tolerance);
+    if (*trim)
+        return geom::tessellate_trimmed(subject->surface, **trim, (*n)[0], (*n)[1], tolerance);
     return geom::tessellate(subject->surface, (*n)[0], (*n)[1]);
 }
 

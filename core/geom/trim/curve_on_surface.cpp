@@ -7,10 +7,10 @@
 #include <glm/geometric.hpp>
 
 #include "core/geom/evaluate.hpp"
-#include "core/geom/trim/fit_samples.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/rational_picture.hpp"
 #include "core/geom/refine.hpp"
+#include "core/geom/trim/fit_samples.hpp"
 #include "core/geom/trim/trim.hpp"
 
 namespace isoparm::geom {
@@ -20,8 +20,7 @@ namespace {
 // Knots mapped linearly from [a, b] onto [lo, hi] (ends exact, equal knots equal).
 void rescale(Curve& c, double lo, double hi) {
     const double a = c.knots.front(), b = c.knots.back();
-    for (double& k : c.knots)
-        k = k == a ? lo : k == b ? hi : lo + (k - a) / (b - a) * (hi - lo);
+    for (double& k : c.knots) k = k == a ? lo : k == b ? hi : lo + (k - a) / (b - a) * (hi - lo);
 }
 
 glm::dvec3 on_surface(const Surface& s, const Curve& uv, double t) {
@@ -37,7 +36,8 @@ std::optional<Curve> iso_piece(const Surface& s, Dir fixed, double at, double a,
     if (!iso) return std::nullopt;
     Curve c = std::move(*iso);
     const Interval d = domain(c);
-    const double lo = std::clamp(std::min(a, b), d.lo, d.hi), hi = std::clamp(std::max(a, b), d.lo, d.hi);
+    const double lo = std::clamp(std::min(a, b), d.lo, d.hi),
+                 hi = std::clamp(std::max(a, b), d.lo, d.hi);
     if (!(lo < hi)) return std::nullopt;
     if (lo > d.lo) {
         auto r = split(c, lo);
@@ -76,8 +76,8 @@ Curve curve_on_surface(const Surface& s, const Curve& uv, double tolerance) {
         // The same speed as the isocurve only when the line is linear in t: degree 1.
         if (uv.degree == 1 && uv.count() == 2 && (along_u || along_v) && !(along_u && along_v) &&
             monotone(along_v ? 1 : 0)) {
-            auto piece = along_v ? iso_piece(s, Dir::u, a.x, a.y, b.y)
-                                 : iso_piece(s, Dir::v, a.y, a.x, b.x);
+            auto piece =
+                along_v ? iso_piece(s, Dir::u, a.x, a.y, b.y) : iso_piece(s, Dir::v, a.y, a.x, b.x);
             if (piece) {
                 // The isocurve runs with v (or u) itself; the line with t from a to b linearly.
                 rescale(*piece, d.lo, d.hi);

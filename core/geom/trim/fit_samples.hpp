@@ -18,4 +18,14 @@ namespace isoparm::geom {
 Curve fit_samples(const std::function<glm::dvec3(double)>& f, Interval d, int pieces,
                   double tolerance);
 
+// The same with at most `max_samples` samples (so at most max_samples + 1 control points):
+// the closest fit found and whether it is within the tolerance. Callers split an interval
+// where a fit is not (a kink inside is what keeps a cubic fit from converging).
+struct SampleFit {
+    Curve curve;
+    bool within = false;
+};
+SampleFit fit_samples_limited(const std::function<glm::dvec3(double)>& f, Interval d, int pieces,
+                              double tolerance, int max_samples);
+
 } // namespace isoparm::geom
