@@ -372,11 +372,15 @@ void read_and_send(const ReadPlan& plan, ReadProgress& progress, exchange::Impor
                     out.skipped({item.entity, c.skip_reason});
                     continue;
                 }
+                if (!c.note.empty()) out.skipped({item.entity, c.note});
                 if (item.file_rational) {
                     if (auto* curve = std::get_if<geom::Curve>(&*c.shape))
                         curve->type = geom::SplineType::nurbs;
+                    else if (auto* surface = std::get_if<geom::Surface>(&*c.shape))
+                        surface->type = geom::SplineType::nurbs;
                     else
-                        std::get<geom::Surface>(*c.shape).type = geom::SplineType::nurbs;
+                        std::get<geom::TrimmedSurface>(*c.shape).surface.type =
+                            geom::SplineType::nurbs;
                 }
                 out.object({item.name, std::move(*c.shape)});
             }
