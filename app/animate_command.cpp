@@ -23,6 +23,7 @@
 #include "ui/headless/egl_context.hpp"
 #include "ui/view/camera.hpp"
 #include "ui/view/doc_access.hpp"
+#include "ui/view/kinds/kind_view.hpp"
 #include "ui/view/triangle_domain.hpp"
 
 namespace isoparm::app {
@@ -78,8 +79,7 @@ std::string sequence_of(const AnimateOptions& o, const doc::Document& d, ui::Seq
         const auto ij = parts.size() == 3 ? numbers(parts[0], 1, 2) : std::nullopt;
         const auto from = parts.size() == 3 ? numbers(parts[1], 1, 1) : std::nullopt;
         const auto to = parts.size() == 3 ? numbers(parts[2], 1, 1) : std::nullopt;
-        if (!ij || !from || !to || (obj->surface() && ij->size() != 2) ||
-            (obj->curve() && ij->size() != 1))
+        if (!ij || !from || !to || ij->size() != (ui::two_index_points(obj->shape) ? 2u : 1u))
             return "--sweep-weight '" + o.sweep_weight +
                    "' must be I,J:FROM:TO for a surface or I:FROM:TO for a curve (" + obj->name +
                    ")";

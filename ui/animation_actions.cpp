@@ -3,6 +3,7 @@
 #include "ui/animation_actions.hpp"
 
 #include "ui/actions.hpp"
+#include "ui/view/kinds/kind_view.hpp"
 
 namespace isoparm::ui {
 
@@ -116,7 +117,7 @@ doc::AnimationTarget weight_target_of_selection(const doc::Document& doc) {
     t.object = doc.view.selection.object;
     t.i = doc.view.selection.i;
     t.j = doc.view.selection.j;
-    if (const doc::Object* o = doc.find(t.object); o && o->curve()) t.j = -1;
+    if (const doc::Object* o = doc.find(t.object); o && !two_index_points(o->shape)) t.j = -1;
     t.from = 0;
     t.to = 5;
     return t;

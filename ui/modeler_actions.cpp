@@ -13,6 +13,7 @@
 #include "core/doc/commands_points.hpp"
 #include "core/doc/point_set.hpp"
 #include "ui/surface_actions.hpp"
+#include "ui/view/kinds/kind_view.hpp"
 
 namespace isoparm::ui {
 
@@ -123,7 +124,8 @@ void select_row(AppContext& ctx) {
 void select_column(AppContext& ctx) {
     if (const doc::Object* o = selected_with_point(ctx))
         set_points(ctx, *o,
-                   doc::column_points(o->shape, o->curve() ? 0 : ctx.doc.view.selection.j));
+                   doc::column_points(o->shape,
+                                      two_index_points(o->shape) ? ctx.doc.view.selection.j : 0));
 }
 
 void select_all_points(AppContext& ctx) {
@@ -206,7 +208,7 @@ std::unique_ptr<doc::Command> move_points_command(const AppContext& ctx, std::ui
 std::unique_ptr<doc::Command> point_move_command(const AppContext& ctx, std::uint64_t id, int i,
                                                  int j, const glm::dvec3& p) {
     const doc::Object* o = ctx.doc.find(id);
-    const bool curve = o && o->curve();
+    const bool curve = o && !two_index_points(o->shape);
     if (ctx.ui.modeler.selection.symmetry >= 0 && o) {
         const PointIndex at{i, curve ? -1 : j};
         return move_points_command(
@@ -216,8 +218,8 @@ std::unique_ptr<doc::Command> point_move_command(const AppContext& ctx, std::uin
                                   : "P" + std::to_string(i) + std::to_string(j)) +
                 " symmetrically");
     }
-    if (curve) return doc::move_curve_point(id, i, p);
-    return doc::move_control_point(id, i, j, p);
+    if (o) return move_point_command(*o, i, j, p);
+    return doc::move_control_point(id, i, j, p); // refused: no such object
 }
 
 void transform_selection(AppContext& ctx, const glm::dmat4& m, const std::string& label) {

@@ -24,6 +24,7 @@
 #include "ui/view/current_patch.hpp"
 #include "ui/view/doc_access.hpp"
 #include "ui/view/implicit_meshes.hpp"
+#include "ui/view/kinds/kind_view.hpp"
 #include "ui/view/scene_builder.hpp"
 #include "ui/view/triangle_domain.hpp"
 #include "ui/view/triangle_meshes.hpp"
@@ -122,12 +123,19 @@ void right_column(AppContext& ctx, const Layout& l) {
         const Rect column{l.right[0].x, l.right[0].y, l.right[0].w,
                           l.right[1].y + l.right[1].h - l.right[0].y};
         if (begin_panel("Fit", column)) draw_fit_panel(ctx);
-    } else if (sel && sel->kind() == doc::ObjectKind::implicit) {
-        if (begin_panel("Implicit surface", l.right[0])) draw_implicit_panel(ctx);
-    } else if (sel && sel->kind() == doc::ObjectKind::curve) {
-        if (begin_panel("Curve designer", l.right[0])) draw_curve_designer_panel(ctx);
     } else {
-        if (begin_panel("Control point", l.right[0])) draw_control_point_panel(ctx);
+        // Nothing selected: the control point panel says what to select.
+        switch (sel ? editor_of(*sel) : ObjectEditor::control_points) {
+        case ObjectEditor::implicit_surface:
+            if (begin_panel("Implicit surface", l.right[0])) draw_implicit_panel(ctx);
+            break;
+        case ObjectEditor::curve_designer:
+            if (begin_panel("Curve designer", l.right[0])) draw_curve_designer_panel(ctx);
+            break;
+        case ObjectEditor::control_points:
+            if (begin_panel("Control point", l.right[0])) draw_control_point_panel(ctx);
+            break;
+        }
     }
     ImGui::End();
     // The scene's objects and the display settings share the slot as tabs.
@@ -442,7 +450,7 @@ void Workstation::render_view3d(float scale) {
     if (const doc::Object* sel = ctx_.doc.selected(); sel && ui.modeler.selection.points.size() > 1)
         for (const PointIndex& p : ui.modeler.selection.points.points)
             if (!(p.i == ctx_.doc.view.selection.i &&
-                  (p.j == ctx_.doc.view.selection.j || sel->curve())))
+                  (p.j == ctx_.doc.view.selection.j || !two_index_points(sel->shape))))
                 style.also_selected.push_back(doc::position_of(sel->shape, p));
     // Implicit meshes: coarse while a parameter slider moves, synchronous when headless.
     ImplicitMeshes::Mode mode;

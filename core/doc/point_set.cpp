@@ -4,20 +4,27 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <variant>
 
 namespace isoparm::doc {
 
 std::vector<PointIndex> all_points(const Shape& shape) {
     std::vector<PointIndex> out;
-    if (const geom::Surface* s = surface_of(shape)) {
-        for (int i = 0; i < s->n_u; ++i)
-            for (int j = 0; j < s->n_v; ++j) out.push_back({i, j});
-    } else if (const geom::Curve* c = curve_of(shape)) {
-        for (int i = 0; i < c->count(); ++i) out.push_back({i, -1});
-    } else if (const geom::TrianglePatch* t = triangle_of(shape)) {
-        for (int i = t->degree; i >= 0; --i)
-            for (int j = t->degree - i; j >= 0; --j) out.push_back({i, j});
-    }
+    std::visit(overloaded{
+                   [&](const SurfaceObject& so) {
+                       for (int i = 0; i < so.surface.n_u; ++i)
+                           for (int j = 0; j < so.surface.n_v; ++j) out.push_back({i, j});
+                   },
+                   [&](const CurveObject& c) {
+                       for (int i = 0; i < c.curve.count(); ++i) out.push_back({i, -1});
+                   },
+                   [](const ImplicitObject&) {},
+                   [&](const TriangleObject& t) {
+                       for (int i = t.patch.degree; i >= 0; --i)
+                           for (int j = t.patch.degree - i; j >= 0; --j) out.push_back({i, j});
+                   },
+               },
+               shape);
     return out;
 }
 
@@ -29,16 +36,22 @@ namespace {
 std::vector<PointIndex> line_points(const Shape& shape, bool row, int k) {
     std::vector<PointIndex> out;
     auto at = [row, k](int other) { return row ? PointIndex{k, other} : PointIndex{other, k}; };
-    if (const geom::Surface* s = surface_of(shape)) {
-        const int fixed_count = row ? s->n_u : s->n_v, other_count = row ? s->n_v : s->n_u;
-        if (k >= 0 && k < fixed_count)
-            for (int o = 0; o < other_count; ++o) out.push_back(at(o));
-    } else if (curve_of(shape)) {
-        out = all_points(shape);
-    } else if (const geom::TrianglePatch* t = triangle_of(shape)) {
-        if (k >= 0 && k <= t->degree)
-            for (int o = t->degree - k; o >= 0; --o) out.push_back(at(o));
-    }
+    std::visit(overloaded{
+                   [&](const SurfaceObject& so) {
+                       const geom::Surface& s = so.surface;
+                       const int fixed_count = row ? s.n_u : s.n_v;
+                       const int other_count = row ? s.n_v : s.n_u;
+                       if (k >= 0 && k < fixed_count)
+                           for (int o = 0; o < other_count; ++o) out.push_back(at(o));
+                   },
+                   [&](const CurveObject&) { out = all_points(shape); },
+                   [](const ImplicitObject&) {},
+                   [&](const TriangleObject& t) {
+                       if (k >= 0 && k <= t.patch.degree)
+                           for (int o = t.patch.degree - k; o >= 0; --o) out.push_back(at(o));
+                   },
+               },
+               shape);
     return out;
 }
 
@@ -53,10 +66,18 @@ std::vector<PointIndex> column_points(const Shape& shape, int j) {
 }
 
 glm::dvec3 position_of(const Shape& shape, PointIndex p) {
-    if (const geom::Surface* s = surface_of(shape)) return s->point(p.i, p.j);
-    if (const geom::Curve* c = curve_of(shape)) return c->points[static_cast<std::size_t>(p.i)];
-    const geom::TrianglePatch* t = triangle_of(shape);
-    return t->points[static_cast<std::size_t>(geom::TrianglePatch::index(t->degree, p.i, p.j))];
+    // Callers pass a point the shape has (has_control_point); an implicit surface has none.
+    return std::visit(
+        overloaded{
+            [&](const SurfaceObject& s) { return s.surface.point(p.i, p.j); },
+            [&](const CurveObject& c) { return c.curve.points[static_cast<std::size_t>(p.i)]; },
+            [](const ImplicitObject&) { return glm::dvec3(0); },
+            [&](const TriangleObject& t) {
+                return t.patch.points[static_cast<std::size_t>(
+                    geom::TrianglePatch::index(t.patch.degree, p.i, p.j))];
+            },
+        },
+        shape);
 }
 
 glm::dvec3 centroid(const Shape& shape, const std::vector<PointIndex>& points) {

@@ -8,6 +8,7 @@
 #include <imgui.h>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "core/doc/commands.hpp"
@@ -381,14 +382,25 @@ struct SelectedPoint {
     bool rational = false;
     const char* type = "";
 };
+// This panel edits surfaces' and triangles' points (editor_of); curves have the designer.
 SelectedPoint selected_point(const doc::Object& obj, int i, int j) {
-    if (const geom::TrianglePatch* t = obj.triangle()) {
-        const auto at = static_cast<std::size_t>(geom::TrianglePatch::index(t->degree, i, j));
-        return {t->points[at], t->weights[at], t->rational,
-                t->rational ? "rational_triangle_bezier" : "triangle_bezier"};
-    }
-    const geom::Surface& s = *obj.surface();
-    return {s.point(i, j), s.weight(i, j), geom::is_rational(s.type), geom::name_of(s.type)};
+    return std::visit(doc::overloaded{
+                          [&](const doc::SurfaceObject& so) -> SelectedPoint {
+                              const geom::Surface& s = so.surface;
+                              return {s.point(i, j), s.weight(i, j), geom::is_rational(s.type),
+                                      geom::name_of(s.type)};
+                          },
+                          [](const doc::CurveObject&) { return SelectedPoint{}; },
+                          [](const doc::ImplicitObject&) { return SelectedPoint{}; },
+                          [&](const doc::TriangleObject& to) -> SelectedPoint {
+                              const geom::TrianglePatch& t = to.patch;
+                              const auto at = static_cast<std::size_t>(
+                                  geom::TrianglePatch::index(t.degree, i, j));
+                              return {t.points[at], t.weights[at], t.rational,
+                                      t.rational ? "rational_triangle_bezier" : "triangle_bezier"};
+                          },
+                      },
+                      obj.shape);
 }
 
 void coordinate_fields(AppContext& ctx, const doc::Object& obj) {

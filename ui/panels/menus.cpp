@@ -155,7 +155,8 @@ void edit_menu(AppContext& ctx) {
     if (menu_item("Select row of the point", "R", false, has_point)) select_row(ctx);
     if (menu_item("Select column of the point", "Shift+R", false, has_point)) select_column(ctx);
     const doc::Object* sel = ctx.doc.selected();
-    if (menu_item("Select all points", "Ctrl+A", false, sel && !sel->implicit()))
+    if (menu_item("Select all points", "Ctrl+A", false,
+                  sel && !doc::control_points_of(sel->shape).empty()))
         select_all_points(ctx);
     ImGui::Separator();
     SelectionState& st = ctx.ui.modeler.selection;

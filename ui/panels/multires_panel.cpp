@@ -7,6 +7,7 @@
 #include <glm/common.hpp>
 #include <imgui.h>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "core/doc/commands_multires.hpp"
@@ -220,7 +221,17 @@ void draw_multires_panel(AppContext& ctx) {
     note_hovered_view(ctx, StageView::multires);
     MultiresState& ms = ctx.ui.multires;
     const doc::Object* obj = ctx.doc.selected();
-    if (!obj || obj->kind() == doc::ObjectKind::implicit) {
+    // Curves and surfaces have multiresolution forms (an allow-list: the panel below asks
+    // obj->surface() to tell the two apart).
+    const bool multires_kind =
+        obj && std::visit(doc::overloaded{
+                              [](const doc::SurfaceObject&) { return true; },
+                              [](const doc::CurveObject&) { return true; },
+                              [](const doc::ImplicitObject&) { return false; },
+                              [](const doc::TriangleObject&) { return false; },
+                          },
+                          obj->shape);
+    if (!multires_kind) {
         text_wrapped("Select a cubic curve or surface with 2^j + 3 control points and "
                      "clamped uniform knots (5, 7, 11, 19, 35 ... points).");
         return;

@@ -10,17 +10,12 @@
 #include "ui/theme.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/doc_access.hpp"
+#include "ui/view/kinds/kind_view.hpp"
 #include "ui/view/text_wrap.hpp"
 
 namespace isoparm::ui {
 
 namespace {
-
-// The Kind column: a surface by its spline type, else the kind as scene files name it.
-const char* kind_label(const doc::Object& o) {
-    if (const geom::Surface* s = o.surface()) return geom::name_of(s->type);
-    return geom::name_of(o.kind());
-}
 
 // One edit, one undo step, apart from whatever gesture came before.
 bool run_alone(AppContext& ctx, std::unique_ptr<doc::Command> cmd) {

@@ -21,6 +21,7 @@
 #include "ui/view/canvas_map.hpp"
 #include "ui/view/control_net.hpp"
 #include "ui/view/doc_access.hpp"
+#include "ui/view/kinds/kind_view.hpp"
 #include "ui/view/plane_wire.hpp"
 
 namespace isoparm::ui {
@@ -66,8 +67,7 @@ std::vector<Dot> dots_of(const doc::Document& d) {
 
 std::unique_ptr<doc::Command> move_command(const doc::Object& o, int i, int j,
                                            const glm::dvec3& p) {
-    if (o.curve()) return doc::move_curve_point(o.id, i, p);
-    return doc::move_control_point(o.id, i, j, p);
+    return move_point_command(o, i, j, p);
 }
 
 // How one plane view maps the document: its axes, its map to pixels and its sizes.

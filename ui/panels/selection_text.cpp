@@ -15,7 +15,16 @@ namespace isoparm::ui {
 
 const doc::Object* selected_non_surface(const doc::Document& d) {
     const doc::Object* sel = d.selected();
-    return sel && (sel->curve() || sel->implicit()) ? sel : nullptr;
+    if (!sel) return nullptr;
+    // A triangular patch has its own versions of the surface panels.
+    const bool described = std::visit(doc::overloaded{
+                                          [](const doc::SurfaceObject&) { return false; },
+                                          [](const doc::CurveObject&) { return true; },
+                                          [](const doc::ImplicitObject&) { return true; },
+                                          [](const doc::TriangleObject&) { return false; },
+                                      },
+                                      sel->shape);
+    return described ? sel : nullptr;
 }
 
 std::string selection_summary(const AppContext& ctx) {
@@ -27,20 +36,33 @@ std::string selection_summary(const AppContext& ctx) {
                    : std::string();
     };
     const std::string hidden = sel && !sel->visible ? " (hidden)" : "";
-    if (sel) {
-        if (const geom::Curve* c = sel->curve())
-            return sel->name + hidden + ": " + geom::name_of(c->type) + " curve, " +
-                   std::to_string(c->count()) + " points, degree " + std::to_string(c->degree) +
-                   point();
-        if (sel->implicit()) return sel->name + hidden + ": implicit surface f(x, y, z) = 0";
-        if (const geom::TrianglePatch* t = sel->triangle()) {
-            const geom::Barycentric& b = d.view.barycentric;
-            return sel->name + hidden + ": " + (t->rational ? "rational " : "") +
-                   "triangle, degree " + std::to_string(t->degree) + "  (r, s, t) = (" +
-                   geom::format_short(b[0], 3) + ", " + geom::format_short(b[1], 3) + ", " +
-                   geom::format_short(b[2], 3) + ")" + point();
-        }
-    }
+    // A selected surface, or none: the current surface (the subpatch the indicator is on).
+    const std::string own =
+        !sel ? std::string()
+             : std::visit(doc::overloaded{
+                              [](const doc::SurfaceObject&) { return std::string(); },
+                              [&](const doc::CurveObject& co) {
+                                  const geom::Curve& c = co.curve;
+                                  return sel->name + hidden + ": " + geom::name_of(c.type) +
+                                         " curve, " + std::to_string(c.count()) +
+                                         " points, degree " + std::to_string(c.degree) + point();
+                              },
+                              [&](const doc::ImplicitObject&) {
+                                  return sel->name + hidden + ": implicit surface f(x, y, z) = 0";
+                              },
+                              [&](const doc::TriangleObject& to) {
+                                  const geom::TrianglePatch& t = to.patch;
+                                  const geom::Barycentric& b = d.view.barycentric;
+                                  return sel->name + hidden + ": " +
+                                         (t.rational ? "rational " : "") + "triangle, degree " +
+                                         std::to_string(t.degree) + "  (r, s, t) = (" +
+                                         geom::format_short(b[0], 3) + ", " +
+                                         geom::format_short(b[1], 3) + ", " +
+                                         geom::format_short(b[2], 3) + ")" + point();
+                              },
+                          },
+                          sel->shape);
+    if (!own.empty()) return own;
     const doc::Object* obj = nullptr;
     if (const geom::Surface* s = current_surface(d, &obj)) {
         const std::string h = obj->visible ? "" : " (hidden)";

@@ -27,8 +27,10 @@
 #include "ui/view/analysis.hpp"
 #include "ui/view/canvas_map.hpp"
 #include "ui/view/contrast.hpp"
+#include "ui/view/control_net.hpp"
 #include "ui/view/deboor_overlay.hpp"
 #include "ui/view/doc_access.hpp"
+#include "ui/view/kinds/kind_view.hpp"
 #include "ui/view/picking.hpp"
 #include "ui/view/scene_builder.hpp"
 
@@ -43,17 +45,10 @@ std::vector<PickedPoint> pick_candidates(const doc::Document& d) {
     std::vector<PickedPoint> out;
     for (const doc::Object& o : d.objects) {
         if (!o.visible || !doc::display_of(d.view, o.id).control_points) continue;
-        if (const geom::Surface* s = o.surface()) {
-            for (int i = 0; i < s->n_u; ++i)
-                for (int j = 0; j < s->n_v; ++j) out.push_back({{o.id, i, j}, s->point(i, j)});
-        } else if (const geom::Curve* c = o.curve()) {
-            for (int i = 0; i < c->count(); ++i) out.push_back({{o.id, i, -1}, c->points[i]});
-        } else if (const geom::TrianglePatch* t = o.triangle()) {
-            for (int i = 0; i <= t->degree; ++i)
-                for (int j = 0; i + j <= t->degree; ++j)
-                    out.push_back(
-                        {{o.id, i, j}, t->points[geom::TrianglePatch::index(t->degree, i, j)]});
-        }
+        // Its control net's points (control_net_of answers by kind; none for an implicit).
+        const ControlNet net = control_net_of(o);
+        for (std::size_t q = 0; q < net.points.size(); ++q)
+            out.push_back({{o.id, net.ids[q].first, net.ids[q].second}, net.points[q]});
     }
     return out;
 }
@@ -190,7 +185,9 @@ std::vector<PointIndex> points_in_box(const AppContext& ctx, const Viewport& vp,
 
 // The object a box selects in: the selected one, else the current surface.
 const doc::Object* box_object(const AppContext& ctx) {
-    if (const doc::Object* sel = ctx.doc.selected(); sel && !sel->implicit()) return sel;
+    if (const doc::Object* sel = ctx.doc.selected();
+        sel && !doc::control_points_of(sel->shape).empty())
+        return sel;
     const doc::Object* cur = nullptr;
     current_surface(ctx.doc, &cur);
     return cur;
@@ -207,7 +204,7 @@ glm::dvec3 snapped_point(const AppContext& ctx, const Viewport& vp, const PointR
     std::vector<glm::dvec3> others;
     std::vector<glm::dvec2> others_px;
     for (const PointIndex& q : doc::all_points(o->shape)) {
-        if (q.i == ref.i && (q.j == ref.j || o->curve())) continue;
+        if (q.i == ref.i && (q.j == ref.j || !two_index_points(o->shape))) continue;
         const glm::dvec3 x = doc::position_of(o->shape, q);
         const Projected pr = project(m, vp, x);
         if (!pr.visible) continue;

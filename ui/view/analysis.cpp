@@ -6,6 +6,7 @@
 #include <glm/common.hpp>
 #include <iterator>
 #include <limits>
+#include <variant>
 #include <vector>
 
 #include "core/geom/implicit/curvature.hpp"
@@ -92,23 +93,30 @@ AnalysisView analysis_view(const doc::Document& doc, const ImplicitMeshes* impli
     if (!is_curvature(v.kind)) return v;
     double lo = 0, hi = 0;
     std::vector<double> values;
-    for (const doc::Object& o : doc.objects) {
-        const geom::Surface* s = o.surface();
-        if (!s || !o.visible) continue;
+    // The range of the kinds the 3D view colours by curvature: surfaces (a grid of samples)
+    // and implicit surfaces (their meshes' vertices).
+    auto add_surface = [&](const geom::Surface& s) {
         for (double k :
-             geom::curvature_grid(*s, range_samples, range_samples, curvature_kind(v.kind)))
+             geom::curvature_grid(s, range_samples, range_samples, curvature_kind(v.kind)))
             if (std::isfinite(k)) values.push_back(k);
+    };
+    auto add_implicit = [&](const doc::Object& o, const doc::ImplicitObject& im) {
+        const ImplicitMeshes::View mv = implicit ? implicit->view(o.id) : ImplicitMeshes::View{};
+        if (!mv.mesh || mv.mesh->positions.empty()) return;
+        const std::size_t stride = std::max<std::size_t>(mv.mesh->positions.size() / 300, 1);
+        for (double k : implicit_vertex_curvature(im, *mv.mesh, v.kind, stride))
+            if (std::isfinite(k)) values.push_back(k);
+    };
+    for (const doc::Object& o : doc.objects) {
+        if (!o.visible) continue;
+        std::visit(doc::overloaded{
+                       [&](const doc::SurfaceObject& s) { add_surface(s.surface); },
+                       [](const doc::CurveObject&) {},
+                       [&](const doc::ImplicitObject& im) { add_implicit(o, im); },
+                       [](const doc::TriangleObject&) {},
+                   },
+                   o.shape);
     }
-    if (implicit)
-        for (const doc::Object& o : doc.objects) {
-            const doc::ImplicitObject* im = o.implicit();
-            if (!im || !o.visible) continue;
-            const ImplicitMeshes::View mv = implicit->view(o.id);
-            if (!mv.mesh || mv.mesh->positions.empty()) continue;
-            const std::size_t stride = std::max<std::size_t>(mv.mesh->positions.size() / 300, 1);
-            for (double k : implicit_vertex_curvature(*im, *mv.mesh, v.kind, stride))
-                if (std::isfinite(k)) values.push_back(k);
-        }
     const Range robust = robust_range(values);
     v.data_lo = static_cast<float>(robust.all_lo);
     v.data_hi = static_cast<float>(robust.all_hi);

@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <variant>
 
+#include "core/doc/point_set.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/triangle.hpp"
@@ -24,25 +26,33 @@ std::vector<glm::dvec3> outline_points(const doc::Object& o, const doc::DisplayS
         out.assign(net.begin(), net.end());
     }
     constexpr int n = 8;
-    if (const geom::Surface* s = o.surface()) {
-        const geom::ParamRect d = geom::domain(*s);
-        for (int a = 0; a <= n; ++a)
-            for (int b = 0; b <= n; ++b)
-                if (auto p = geom::surface_point(*s, d.u.lo + (d.u.hi - d.u.lo) * a / n,
-                                                 d.v.lo + (d.v.hi - d.v.lo) * b / n))
-                    out.push_back(*p);
-    } else if (const geom::Curve* c = o.curve()) {
-        const geom::Interval d = geom::domain(*c);
-        for (int a = 0; a <= 4 * n; ++a)
-            if (auto p = geom::curve_point(*c, d.lo + (d.hi - d.lo) * a / (4 * n)))
-                out.push_back(*p);
-    } else if (const geom::TrianglePatch* t = o.triangle()) {
-        out.insert(out.end(), t->points.begin(), t->points.end());
-    } else if (const doc::ImplicitObject* f = o.implicit()) {
-        for (int k = 0; k < 8; ++k)
-            out.push_back(
-                {k & 1 ? f->hi.x : f->lo.x, k & 2 ? f->hi.y : f->lo.y, k & 4 ? f->hi.z : f->lo.z});
-    }
+    std::visit(
+        doc::overloaded{
+            [&](const doc::SurfaceObject& so) {
+                const geom::Surface& s = so.surface;
+                const geom::ParamRect d = geom::domain(s);
+                for (int a = 0; a <= n; ++a)
+                    for (int b = 0; b <= n; ++b)
+                        if (auto p = geom::surface_point(s, d.u.lo + (d.u.hi - d.u.lo) * a / n,
+                                                         d.v.lo + (d.v.hi - d.v.lo) * b / n))
+                            out.push_back(*p);
+            },
+            [&](const doc::CurveObject& co) {
+                const geom::Interval d = geom::domain(co.curve);
+                for (int a = 0; a <= 4 * n; ++a)
+                    if (auto p = geom::curve_point(co.curve, d.lo + (d.hi - d.lo) * a / (4 * n)))
+                        out.push_back(*p);
+            },
+            [&](const doc::ImplicitObject& f) {
+                for (int k = 0; k < 8; ++k)
+                    out.push_back({k & 1 ? f.hi.x : f.lo.x, k & 2 ? f.hi.y : f.lo.y,
+                                   k & 4 ? f.hi.z : f.lo.z});
+            },
+            [&](const doc::TriangleObject& t) {
+                out.insert(out.end(), t.patch.points.begin(), t.patch.points.end());
+            },
+        },
+        o.shape);
     return out;
 }
 
@@ -65,11 +75,7 @@ std::optional<glm::dvec3> selected_point(const doc::Document& d) {
     const doc::Object* o = d.selected();
     const doc::Selection& s = d.view.selection;
     if (!o || !s.has_point() || !doc::has_control_point(o->shape, s.i, s.j)) return std::nullopt;
-    if (const geom::Surface* sf = o->surface()) return sf->point(s.i, s.j);
-    if (const geom::Curve* c = o->curve()) return c->points[static_cast<std::size_t>(s.i)];
-    if (const geom::TrianglePatch* t = o->triangle())
-        return t->points[static_cast<std::size_t>(geom::TrianglePatch::index(t->degree, s.i, s.j))];
-    return std::nullopt;
+    return doc::position_of(o->shape, {s.i, s.j});
 }
 
 } // namespace

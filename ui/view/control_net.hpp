@@ -21,6 +21,7 @@ struct ControlNet {
 // A surface: its rows and columns. A triangle of degree n: the lines i, j and k = const of
 // its triangular net (together its 3 n (n + 1) / 2 edges). A curve: its control polygon, the
 // points' ids (i, -1). Empty for implicit surfaces.
+// Each kind's own in its view file (ui/view/kinds/); the dispatch is in kinds/kind_view.cpp.
 ControlNet control_net_of(const doc::Object& o);
 
 } // namespace isoparm::ui

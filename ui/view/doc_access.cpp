@@ -2,6 +2,7 @@
 #include "ui/view/doc_access.hpp"
 
 #include <algorithm>
+#include <variant>
 
 #include "core/doc/patches.hpp"
 #include "core/geom/knots.hpp"
@@ -53,15 +54,24 @@ std::string point_name(char prefix, int i, int j, int n_u, int n_v) {
 }
 
 std::string point_name(char prefix, int i, int j, const doc::Object* o) {
-    if (const geom::TrianglePatch* t = o ? o->triangle() : nullptr) {
-        // b_ijk (w_ijk), k = n - i - j: the triangle's own three indices.
-        const char letter = prefix == 'P' ? 'b' : prefix;
-        const std::string sep = t->degree < 10 ? "" : ",";
-        return std::string(1, letter) + std::to_string(i) + sep + std::to_string(j) + sep +
-               std::to_string(t->degree - i - j);
-    }
-    const geom::Surface* s = o ? o->surface() : nullptr;
-    return point_name(prefix, i, j, s ? s->n_u : 0, s ? s->n_v : 0);
+    if (!o) return point_name(prefix, i, j, 0, 0);
+    return std::visit(
+        doc::overloaded{
+            [&](const doc::SurfaceObject& s) {
+                return point_name(prefix, i, j, s.surface.n_u, s.surface.n_v);
+            },
+            [&](const doc::CurveObject&) { return point_name(prefix, i, j, 0, 0); },
+            [&](const doc::ImplicitObject&) { return point_name(prefix, i, j, 0, 0); },
+            [&](const doc::TriangleObject& to) {
+                // b_ijk (w_ijk), k = n - i - j: the triangle's own three indices.
+                const int n = to.patch.degree;
+                const char letter = prefix == 'P' ? 'b' : prefix;
+                const std::string sep = n < 10 ? "" : ",";
+                return std::string(1, letter) + std::to_string(i) + sep + std::to_string(j) + sep +
+                       std::to_string(n - i - j);
+            },
+        },
+        o->shape);
 }
 
 std::string point_name(char prefix, int i, int j, const doc::Document& d) {

@@ -2,6 +2,7 @@
 #include "ui/view/plane_wire.hpp"
 
 #include <algorithm>
+#include <variant>
 
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
@@ -40,7 +41,7 @@ std::vector<double> domain_knots(const geom::Knots& U, int p, int n) {
 std::vector<Polyline3> object_wire(const doc::Object& o, int samples) {
     samples = std::max(samples, 2);
     std::vector<Polyline3> out;
-    if (const geom::Surface* s = o.surface()) {
+    auto surface = [&](const geom::Surface* s) {
         const geom::ParamRect d = geom::domain(*s);
         const std::vector<double> us = geom::uniform_params(d.u.lo, d.u.hi, samples);
         const std::vector<double> vs = geom::uniform_params(d.v.lo, d.v.hi, samples);
@@ -48,7 +49,8 @@ std::vector<Polyline3> object_wire(const doc::Object& o, int samples) {
             sampled(out, vs, [&](double v) { return geom::surface_point(*s, u, v); });
         for (double v : domain_knots(s->knots_v, s->degree_v, s->n_v))
             sampled(out, us, [&](double u) { return geom::surface_point(*s, u, v); });
-    } else if (const geom::Curve* c = o.curve()) {
+    };
+    auto curve = [&](const geom::Curve* c) {
         const geom::Interval d = geom::domain(*c);
         const int spans =
             std::max(1, static_cast<int>(domain_knots(c->knots, c->degree, c->count()).size()) - 1);
@@ -56,7 +58,8 @@ std::vector<Polyline3> object_wire(const doc::Object& o, int samples) {
         for (double k : domain_knots(c->knots, c->degree, c->count())) ts.push_back(k);
         std::sort(ts.begin(), ts.end());
         sampled(out, ts, [&](double t) { return geom::curve_point(*c, t); });
-    } else if (const geom::TrianglePatch* t = o.triangle()) {
+    };
+    auto triangle = [&](const geom::TrianglePatch* t) {
         const std::vector<double> ts = geom::uniform_params(0, 1, samples);
         for (int edge = 0; edge < 3; ++edge)
             sampled(out, ts, [&](double a) {
@@ -65,7 +68,15 @@ std::vector<Polyline3> object_wire(const doc::Object& o, int samples) {
                 b[static_cast<std::size_t>((edge + 1) % 3)] = a;
                 return geom::triangle_point(*t, b);
             });
-    }
+    };
+    // An implicit surface has no parameter lines: the plane views draw its mesh's section.
+    std::visit(doc::overloaded{
+                   [&](const doc::SurfaceObject& s) { surface(&s.surface); },
+                   [&](const doc::CurveObject& c) { curve(&c.curve); },
+                   [](const doc::ImplicitObject&) {},
+                   [&](const doc::TriangleObject& t) { triangle(&t.patch); },
+               },
+               o.shape);
     return out;
 }
 

@@ -1,5 +1,6 @@
 // The selection of many points, box selection, and the handle's layout, hits and maps.
 #include "ui/view/point_selection.hpp"
+#include "ui/view/kinds/kind_view.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -40,7 +41,7 @@ void sync_selection(PointSelection& s, const doc::Document& doc) {
         if (o) s.object = o->id;
         return;
     }
-    const PointIndex primary{sel.i, o->curve() ? -1 : sel.j};
+    const PointIndex primary{sel.i, two_index_points(o->shape) ? sel.j : -1};
     if (s.object != o->id) s = PointSelection{o->id, {}};
     std::erase_if(s.points,
                   [&](PointIndex p) { return !doc::has_control_point(o->shape, p.i, p.j); });

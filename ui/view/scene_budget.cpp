@@ -17,13 +17,27 @@ SceneDisplayCost estimate_scene_display(const doc::Document& d) {
 
 namespace {
 
+void add_surface_cost(const geom::Surface& surface, int density, SceneDisplayCost& cost);
+
 void add_object_cost(const doc::Object& o, int density, SceneDisplayCost& cost) {
     cost.control_points += static_cast<double>(doc::control_points_of(o.shape).size());
-    if (const geom::Curve* c = o.curve())
-        cost.steps +=
-            geom::estimate_curve_evaluation(display_curve_evaluations, c->degree, 0).steps;
-    const geom::Surface* s = o.surface();
-    if (!s) return;
+    // Surfaces' meshes and curves' polylines; implicit and triangle meshes have their own
+    // budgets (polygonizer, degree cap).
+    std::visit(doc::overloaded{
+                   [&](const doc::SurfaceObject& s) { add_surface_cost(s.surface, density, cost); },
+                   [&](const doc::CurveObject& c) {
+                       cost.steps += geom::estimate_curve_evaluation(display_curve_evaluations,
+                                                                     c.curve.degree, 0)
+                                         .steps;
+                   },
+                   [](const doc::ImplicitObject&) {},
+                   [](const doc::TriangleObject&) {},
+               },
+               o.shape);
+}
+
+void add_surface_cost(const geom::Surface& surface, int density, SceneDisplayCost& cost) {
+    const geom::Surface* s = &surface;
     const auto [su, sv] = display_samples(*s, density);
     const double vertices = static_cast<double>(su) * sv;
     ++cost.surfaces;

@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <variant>
 
 #include "core/doc/placement.hpp"
+#include "core/doc/point_set.hpp"
 #include "core/geom/deboor.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
@@ -16,6 +18,7 @@
 #include "ui/view/deboor_overlay.hpp"
 #include "ui/view/doc_access.hpp"
 #include "ui/view/implicit_meshes.hpp"
+#include "ui/view/kinds/kind_view.hpp"
 #include "ui/view/triangle_meshes.hpp"
 #include "ui/view/triangle_scene.hpp"
 
@@ -32,36 +35,6 @@ glm::vec4 axis_color(int axis) {
     static const glm::vec4 colors[3] = {
         {0.95f, 0.3f, 0.3f, 1}, {0.35f, 0.85f, 0.35f, 1}, {0.35f, 0.55f, 1.0f, 1}};
     return colors[std::clamp(axis, 0, 2)];
-}
-
-void add_net(LineBatch& b, const geom::Surface& s, const glm::vec4& c) {
-    for (int i = 0; i < s.n_u; ++i)
-        for (int j = 0; j < s.n_v; ++j) {
-            const glm::vec3 p(s.point(i, j));
-            if (j + 1 < s.n_v)
-                b.vertices.insert(b.vertices.end(), {{p, c}, {glm::vec3(s.point(i, j + 1)), c}});
-            if (i + 1 < s.n_u)
-                b.vertices.insert(b.vertices.end(), {{p, c}, {glm::vec3(s.point(i + 1, j)), c}});
-        }
-}
-
-// The 12 edges of an axis-aligned box (an implicit object's bounds).
-void add_box(LineBatch& b, const glm::dvec3& lo, const glm::dvec3& hi, const glm::vec4& c) {
-    auto corner = [&](int k) {
-        return glm::vec3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
-    };
-    for (int k = 0; k < 8; ++k)
-        for (int bit : {1, 2, 4})
-            if (!(k & bit))
-                b.vertices.insert(b.vertices.end(), {{corner(k), c}, {corner(k | bit), c}});
-}
-
-std::vector<glm::vec3> curve_polyline(const geom::Curve& c, int samples) {
-    std::vector<glm::vec3> out;
-    const geom::Interval d = geom::domain(c);
-    for (double t : geom::uniform_params(d.lo, d.hi, samples))
-        if (const auto p = geom::curve_point(c, t)) out.emplace_back(*p);
-    return out;
 }
 
 } // namespace
@@ -193,23 +166,6 @@ void add_curve_glyphs(Overlay& out, const doc::Document& d, const SceneStyle& st
         if (!b->vertices.empty()) out.lines.push_back(std::move(*b));
 }
 
-// A spline patch's (surface or triangle) colours: the wireframe of the selected one in its own
-// colour; over a shaded patch the lines are a darker shade of it so they read as grid, not as
-// edges.
-SurfaceDraw patch_style(std::uint64_t id, bool selected, bool shaded, bool wire,
-                        const doc::Colors& col, float k) {
-    SurfaceDraw sd;
-    sd.id = id;
-    sd.shaded = shaded;
-    sd.wireframe = wire;
-    sd.fill = to_vec4(col.surface);
-    glm::vec4 w = selected ? to_vec4(col.selected_surface) : to_vec4(col.surface);
-    if (shaded) w = glm::vec4(glm::vec3(w) * 0.45f, 0.9f);
-    sd.wire = w;
-    sd.wire_width = (shaded ? 1.0f : 1.3f) * k;
-    return sd;
-}
-
 // The scene's draw lists, filled object by object, then the overlays of the selection, the
 // indicator, de Boor's construction and the working grid.
 class SceneAssembler {
@@ -226,6 +182,17 @@ public:
                                                                 false} {
         const doc::Object* sel_obj = d.selected();
         sel_triangle = sel_obj && sel_obj->visible ? sel_obj->triangle() : nullptr;
+        base_look.point_i = d.view.selection.i;
+        base_look.point_j = d.view.selection.j;
+        base_look.colors = &col;
+        base_look.background = background;
+        base_look.scale = k;
+        base_look.shaded = shaded;
+        base_look.wire = wire;
+        base_look.density = disp.density;
+        base_look.knot_continuity = style.knot_continuity;
+        base_look.implicit_meshes = implicit;
+        base_look.triangle_meshes = triangles;
     }
 
     void add_objects() {
@@ -234,14 +201,11 @@ public:
             const bool is_selected = o.id == d.view.selection.object;
             // The object's own toggles (C, N, K with it selected), else the scene's defaults.
             const doc::ObjectDisplay own = doc::display_of(d.view, o.id);
-            if (const geom::Surface* s = o.surface())
-                add_surface(o, *s, is_selected, own);
-            else if (const doc::ImplicitObject* im = o.implicit())
-                add_implicit(o, *im, is_selected);
-            else if (const geom::TrianglePatch* t = o.triangle())
-                add_triangle(o, *t, is_selected, own);
-            else if (const geom::Curve* c = o.curve())
-                add_curve(*c, is_selected, own);
+            ObjectLook look = base_look;
+            look.id = o.id;
+            look.selected = is_selected;
+            look.own = own;
+            draw_in_scene(o, look, batches);
         }
     }
 
@@ -251,14 +215,8 @@ public:
         if (has_valid_point(d) && d.selected()->visible &&
             doc::display_of(d.view, d.view.selection.object).control_points) {
             const doc::Object* o = d.selected();
-            glm::dvec3 p{0};
-            if (const geom::Surface* s = o->surface())
-                p = s->point(d.view.selection.i, d.view.selection.j);
-            else if (const geom::Curve* c = o->curve())
-                p = c->points[d.view.selection.i];
-            else if (const geom::TrianglePatch* t = o->triangle())
-                p = t->points[geom::TrianglePatch::index(t->degree, d.view.selection.i,
-                                                         d.view.selection.j)];
+            const glm::dvec3 p =
+                doc::position_of(o->shape, {d.view.selection.i, d.view.selection.j});
             selected.points.push_back({glm::vec3(p), to_vec4(col.selected_point)});
         }
         if (disp.control_points)
@@ -357,115 +315,18 @@ private:
     // Many points (a 32x32 net) would bury the surface: they shrink with their number.
     static float point_size_for(const doc::Document& d) {
         std::size_t total_points = 0;
+        // A curve's few points, on its own line, do not count.
         for (const doc::Object& o : d.objects)
-            if (o.visible && o.kind() != doc::ObjectKind::curve)
-                total_points += doc::control_points_of(o.shape).size();
+            if (o.visible)
+                total_points += std::visit(
+                    doc::overloaded{
+                        [](const doc::SurfaceObject& s) { return s.surface.points.size(); },
+                        [](const doc::CurveObject&) { return std::size_t{0}; },
+                        [](const doc::ImplicitObject&) { return std::size_t{0}; },
+                        [](const doc::TriangleObject& t) { return t.patch.points.size(); },
+                    },
+                    o.shape);
         return total_points > 400 ? 6.f : total_points > 100 ? 7.5f : 9.f;
-    }
-
-    void add_surface(const doc::Object& o, const geom::Surface& surface, bool is_selected,
-                     const doc::ObjectDisplay& own) {
-        const geom::Surface* s = &surface;
-        SurfaceDraw sd = patch_style(o.id, is_selected, shaded, wire, col, k);
-        sd.surface = s;
-        sd.density = disp.density;
-        out.surfaces.push_back(sd);
-
-        if (own.control_net) add_net(net, *s, to_vec4(col.control_net));
-        if (own.control_points)
-            for (int i = 0; i < s->n_u; ++i)
-                for (int j = 0; j < s->n_v; ++j) {
-                    const bool sel =
-                        is_selected && d.view.selection.i == i && d.view.selection.j == j;
-                    if (sel) continue;
-                    points.points.push_back(
-                        {glm::vec3(s->point(i, j)), to_vec4(col.control_points)});
-                }
-        if (own.knot_curves) {
-            // Knot curves S(u_k, v) and S(u, v_k); a repeated knot draws thicker.
-            for (geom::Dir dir : {geom::Dir::u, geom::Dir::v}) {
-                const geom::Interval dom = geom::domain(*s, dir);
-                for (const geom::KnotRun& r : geom::knot_runs(s->knots(dir))) {
-                    if (r.value < dom.lo || r.value > dom.hi) continue;
-                    const bool interior = r.value > dom.lo && r.value < dom.hi;
-                    LineBatch& b = !interior || r.multiplicity == 1 ? knots
-                                   : r.multiplicity == 2            ? knots_double
-                                                                    : knots_full;
-                    const glm::vec4 base = to_vec4(col.knot_curves);
-                    const glm::vec4 c =
-                        style.knot_continuity && interior
-                            ? knot_continuity_color(s->degree(dir), r.multiplicity, base)
-                            : base;
-                    for (const auto& piece : iso_curve(*s, dir, r.value, 97))
-                        Overlay::add_polyline(b, piece, c);
-                }
-            }
-        }
-    }
-
-    void add_implicit(const doc::Object& o, const doc::ImplicitObject& implicit_object,
-                      bool is_selected) {
-        const doc::ImplicitObject* im = &implicit_object;
-        const ImplicitMeshes::View v = implicit ? implicit->view(o.id) : ImplicitMeshes::View{};
-        if (v.mesh && !v.mesh->triangles.empty()) {
-            SurfaceDraw sd;
-            sd.id = o.id;
-            sd.mesh = v.mesh;
-            sd.mesh_revision = v.revision;
-            sd.implicit = im;
-            sd.seen_side = v.seen_side;
-            sd.box_lo = v.lo;
-            sd.box_hi = v.hi;
-            sd.shaded = shaded;
-            // Every triangle edge over a shaded surface would hide it: wireframe only
-            // in the wireframe style.
-            sd.wireframe = !shaded;
-            sd.fill = to_vec4(col.surface);
-            sd.wire = to_vec4(is_selected ? col.selected_surface : col.surface);
-            sd.wire_width = 1.0f * k;
-            out.surfaces.push_back(sd);
-        }
-        if (is_selected) add_box(box, im->lo, im->hi, to_vec4(col.selected_surface));
-    }
-
-    void add_triangle(const doc::Object& o, const geom::TrianglePatch& patch, bool is_selected,
-                      const doc::ObjectDisplay& own) {
-        const geom::TrianglePatch* t = &patch;
-        const TriangleMeshes::View v = triangles ? triangles->view(o.id) : TriangleMeshes::View{};
-        if (v.mesh) {
-            SurfaceDraw sd = patch_style(o.id, is_selected, shaded, wire, col, k);
-            sd.mesh = v.mesh;
-            sd.mesh_revision = v.revision;
-            out.surfaces.push_back(sd);
-        }
-        if (own.control_net) add_triangle_net(net, *t, to_vec4(col.control_net));
-        if (own.control_points)
-            for (int i = 0; i <= t->degree; ++i)
-                for (int j = 0; i + j <= t->degree; ++j)
-                    if (!(is_selected && d.view.selection.i == i && d.view.selection.j == j))
-                        points.points.push_back(
-                            {glm::vec3(t->points[geom::TrianglePatch::index(t->degree, i, j)]),
-                             to_vec4(col.control_points)});
-    }
-
-    void add_curve(const geom::Curve& curve, bool is_selected, const doc::ObjectDisplay& own) {
-        const geom::Curve* c = &curve;
-        // A curve in the surface colour disappears against a surface built from it (a
-        // ruled or skinned surface runs through its curves): curves take a pale tint.
-        const glm::vec4 cc = is_selected
-                                 ? to_vec4(col.selected_surface)
-                                 : readable_on(glm::mix(to_vec4(col.surface), glm::vec4(1), 0.6f),
-                                               background, line_contrast);
-        Overlay::add_polyline(curves, curve_polyline(*c, 200), cc);
-        if (own.control_net) {
-            std::vector<glm::vec3> poly;
-            for (const glm::dvec3& p : c->points) poly.emplace_back(p);
-            Overlay::add_polyline(net, poly, to_vec4(col.control_net));
-        }
-        if (own.control_points)
-            for (int i = 0; i < c->count(); ++i)
-                if (!(is_selected && d.view.selection.i == i))
-                    points.points.push_back({glm::vec3(c->points[i]), to_vec4(col.control_points)});
     }
 
     const doc::Document& d;
@@ -496,6 +357,9 @@ private:
     LineBatch guide{{}, 1.5f * k, false};
     Overlay deboor;
     LineBatch borders{{}, 5.0f * k, true};
+    // What each object's kind draws into (kinds/kind_view.hpp), and how.
+    SceneBatches batches{out.surfaces, net, knots, knots_double, knots_full, curves, box, points};
+    ObjectLook base_look;
 };
 
 } // namespace
@@ -515,13 +379,14 @@ std::vector<glm::dvec3> scene_points(const doc::Document& d) {
     std::vector<glm::dvec3> out;
     for (const doc::Object& o : d.objects) {
         if (!o.visible) continue;
+        // Its control points, or an implicit surface's box (doc::bounds answers by kind).
         const std::span<const glm::dvec3> points = doc::control_points_of(o.shape);
         out.insert(out.end(), points.begin(), points.end());
-        if (const doc::ImplicitObject* im = o.implicit()) {
-            for (int k = 0; k < 8; ++k)
-                out.push_back({k & 1 ? im->hi.x : im->lo.x, k & 2 ? im->hi.y : im->lo.y,
-                               k & 4 ? im->hi.z : im->lo.z});
-        }
+        if (points.empty())
+            if (const std::optional<doc::Box> box = doc::bounds_of(o.shape))
+                for (int k = 0; k < 8; ++k)
+                    out.push_back({k & 1 ? box->hi.x : box->lo.x, k & 2 ? box->hi.y : box->lo.y,
+                                   k & 4 ? box->hi.z : box->lo.z});
     }
     return out;
 }

@@ -106,20 +106,20 @@ glm::dvec2 TrimmedLayout::param(std::uint32_t k) const {
     return loop_points[k - grid_vertices.size()];
 }
 
-TrimmedLayout triangulate_trimmed(const std::vector<double>& us, const std::vector<double>& vs,
-                                  const Trim& trim, const ParamRect& domain,
-                                  const FlattenRule& rule) {
-    assert(us.size() >= 2 && vs.size() >= 2);
-    (void)domain;
-    Cells cells(us, vs);
+namespace {
+
+// The smallest cell's side: snapping distances are a millionth of it.
+double smallest_cell(const std::vector<double>& us, const std::vector<double>& vs) {
     double cell_size = INFINITY;
     for (std::size_t i = 0; i + 1 < us.size(); ++i)
         cell_size = std::min(cell_size, us[i + 1] - us[i]);
     for (std::size_t j = 0; j + 1 < vs.size(); ++j)
         cell_size = std::min(cell_size, vs[j + 1] - vs[j]);
-    const double snap = 1e-6 * cell_size;
+    return cell_size;
+}
 
-    // The loops' chords, without repeated points.
+// The loops' chords, without repeated points.
+std::vector<std::vector<glm::dvec2>> flat_loops(const Trim& trim, const FlattenRule& rule) {
     std::vector<std::vector<glm::dvec2>> loops;
     for (int k = 0; k < trim.loop_count(); ++k) {
         const FlatLoop flat = flatten_loop(trim.loop(k), rule);
@@ -129,34 +129,36 @@ TrimmedLayout triangulate_trimmed(const std::vector<double>& us, const std::vect
         while (pts.size() > 1 && pts.back() == pts.front()) pts.pop_back();
         loops.push_back(std::move(pts));
     }
-    for (const auto& pts : loops) {
-        for (std::size_t k = 0; k < pts.size(); ++k) {
-            const glm::dvec2 a = pts[k], b = pts[(k + 1) % pts.size()];
-            cells.mark_cut(glm::min(a, b) - 2 * snap, glm::max(a, b) + 2 * snap);
-        }
-    }
+    return loops;
+}
 
-    // Whole cells: kept by parity of the chords crossing their row to the left of their centre.
-    const bool start_kept = !trim.outer;
+using Loops = std::vector<std::vector<glm::dvec2>>;
+
+// Calls f(a, b) for every chord of every loop.
+template <class F> void for_each_chord(const Loops& loops, F&& f) {
+    for (const auto& pts : loops)
+        for (std::size_t k = 0; k < pts.size(); ++k) f(pts[k], pts[(k + 1) % pts.size()]);
+}
+
+// Whole cells: kept by parity of the chords crossing their row to the left of their centre.
+void keep_whole_cells(Cells& cells, const Loops& loops, const std::vector<double>& us,
+                      const std::vector<double>& vs, bool start_kept) {
     std::vector<std::vector<double>> crossings(static_cast<std::size_t>(cells.cv()));
     std::vector<double> centres_v(static_cast<std::size_t>(cells.cv()));
     for (int j = 0; j < cells.cv(); ++j)
         centres_v[static_cast<std::size_t>(j)] =
             0.5 * (vs[static_cast<std::size_t>(j)] + vs[static_cast<std::size_t>(j) + 1]);
-    for (const auto& pts : loops) {
-        for (std::size_t k = 0; k < pts.size(); ++k) {
-            const glm::dvec2 a = pts[k], b = pts[(k + 1) % pts.size()];
-            const double lo = std::min(a.y, b.y), hi = std::max(a.y, b.y);
-            // Rows whose centre c has (a.y > c) != (b.y > c): lo <= c < hi.
-            auto first = std::lower_bound(centres_v.begin(), centres_v.end(), lo);
-            for (auto it = first; it != centres_v.end() && *it < hi; ++it) {
-                const double c = *it;
-                if ((a.y > c) == (b.y > c)) continue;
-                crossings[static_cast<std::size_t>(it - centres_v.begin())].push_back(
-                    a.x + (c - a.y) / (b.y - a.y) * (b.x - a.x));
-            }
+    for_each_chord(loops, [&](glm::dvec2 a, glm::dvec2 b) {
+        const double lo = std::min(a.y, b.y), hi = std::max(a.y, b.y);
+        // Rows whose centre c has (a.y > c) != (b.y > c): lo <= c < hi.
+        auto first = std::lower_bound(centres_v.begin(), centres_v.end(), lo);
+        for (auto it = first; it != centres_v.end() && *it < hi; ++it) {
+            const double c = *it;
+            if ((a.y > c) == (b.y > c)) continue;
+            crossings[static_cast<std::size_t>(it - centres_v.begin())].push_back(
+                a.x + (c - a.y) / (b.y - a.y) * (b.x - a.x));
         }
-    }
+    });
     for (int j = 0; j < cells.cv(); ++j) {
         auto& xs = crossings[static_cast<std::size_t>(j)];
         std::sort(xs.begin(), xs.end());
@@ -168,94 +170,117 @@ TrimmedLayout triangulate_trimmed(const std::vector<double>& us, const std::vect
             if (!cells.cut(i, j) && (start_kept != (passed % 2 == 1))) cells.set_kept(i, j);
         }
     }
+}
 
-    TrimmedLayout out;
-    out.us = us;
-    out.vs = vs;
-    // Mesh vertices are numbered once the triangles are known: grid corners first (by grid
-    // index), then loop points. Until then triangles hold grid indices or loop_base + index.
-    const std::uint32_t loop_base = static_cast<std::uint32_t>(us.size() * vs.size());
-    std::vector<std::array<std::uint32_t, 3>> tris;
+using Triangles = std::vector<std::array<std::uint32_t, 3>>;
+
+// Two triangles per whole kept cell, as the grid has them (grid indices).
+Triangles whole_cell_triangles(const Cells& cells, std::uint32_t nv) {
+    Triangles tris;
     for (int i = 0; i < cells.cu(); ++i) {
         for (int j = 0; j < cells.cv(); ++j) {
             if (!cells.whole_kept(i, j)) continue;
-            const std::uint32_t k = cells.corner(i, j), nv = static_cast<std::uint32_t>(vs.size());
+            const std::uint32_t k = cells.corner(i, j);
             tris.push_back({k, k + nv, k + nv + 1});
             tris.push_back({k, k + nv + 1, k + 1});
         }
     }
-    out.grid_triangles = tris.size();
+    return tris;
+}
 
-    // The crossed cells: their corners (those not on a chord), the loops' points, the chords
-    // and the borders with whole kept cells as constraints. The points go in along a Hilbert
-    // curve (CGAL's spatial_sort), each located from the one before.
+constexpr std::size_t absent = std::numeric_limits<std::size_t>::max();
+
+// What goes into the constrained triangulation: the loops' points, then the crossed cells'
+// corners (those not on a chord), each with its info.
+struct CutPoints {
     std::vector<glm::dvec2> loop_points;
     std::vector<Kernel::Point_2> points;
     std::vector<VertexInfo> infos;
-    std::vector<std::vector<std::size_t>> loop_indices(loops.size());
+    std::vector<std::vector<std::size_t>> loop_indices; // per loop, its indices in points
+    std::vector<std::size_t> corner_index;              // per grid corner, or absent
+};
+
+// Grid corners within snap of a chord (left out: the loop's own points stand there).
+std::vector<std::uint8_t> corners_near_loops(const Cells& cells, const Loops& loops,
+                                             const std::vector<double>& us,
+                                             const std::vector<double>& vs, double snap) {
+    std::vector<std::uint8_t> near_loop(us.size() * vs.size(), 0);
+    for_each_chord(loops, [&](glm::dvec2 a, glm::dvec2 b) {
+        const glm::dvec2 lo = glm::min(a, b) - snap, hi = glm::max(a, b) + snap;
+        const std::size_t i0 = std::lower_bound(us.begin(), us.end(), lo.x) - us.begin();
+        const std::size_t j0 = std::lower_bound(vs.begin(), vs.end(), lo.y) - vs.begin();
+        for (std::size_t i = i0; i < us.size() && us[i] <= hi.x; ++i)
+            for (std::size_t j = j0; j < vs.size() && vs[j] <= hi.y; ++j)
+                if (distance_to_segment({us[i], vs[j]}, a, b) <= snap)
+                    near_loop[cells.corner(static_cast<int>(i), static_cast<int>(j))] = 1;
+    });
+    return near_loop;
+}
+
+CutPoints cut_points(const Cells& cells, const Loops& loops, const std::vector<double>& us,
+                     const std::vector<double>& vs, double snap, std::uint32_t loop_base) {
+    CutPoints c;
+    c.loop_indices.resize(loops.size());
     for (std::size_t l = 0; l < loops.size(); ++l) {
         for (const glm::dvec2& p : loops[l]) {
-            loop_indices[l].push_back(points.size());
-            points.emplace_back(p.x, p.y);
-            infos.push_back({loop_base + static_cast<std::uint32_t>(loop_points.size()), false});
-            loop_points.push_back(p);
+            c.loop_indices[l].push_back(c.points.size());
+            c.points.emplace_back(p.x, p.y);
+            c.infos.push_back(
+                {loop_base + static_cast<std::uint32_t>(c.loop_points.size()), false});
+            c.loop_points.push_back(p);
         }
     }
-    // Grid corners near a chord: left out.
-    std::vector<std::uint8_t> near_loop(us.size() * vs.size(), 0);
-    for (const auto& pts : loops) {
-        for (std::size_t k = 0; k < pts.size(); ++k) {
-            const glm::dvec2 a = pts[k], b = pts[(k + 1) % pts.size()];
-            const glm::dvec2 lo = glm::min(a, b) - snap, hi = glm::max(a, b) + snap;
-            const std::size_t i0 = std::lower_bound(us.begin(), us.end(), lo.x) - us.begin();
-            const std::size_t j0 = std::lower_bound(vs.begin(), vs.end(), lo.y) - vs.begin();
-            for (std::size_t i = i0; i < us.size() && us[i] <= hi.x; ++i)
-                for (std::size_t j = j0; j < vs.size() && vs[j] <= hi.y; ++j)
-                    if (distance_to_segment({us[i], vs[j]}, a, b) <= snap)
-                        near_loop[cells.corner(static_cast<int>(i), static_cast<int>(j))] = 1;
-        }
-    }
-    constexpr std::size_t absent = std::numeric_limits<std::size_t>::max();
-    std::vector<std::size_t> corner_index(us.size() * vs.size(), absent);
+    const std::vector<std::uint8_t> near_loop = corners_near_loops(cells, loops, us, vs, snap);
+    c.corner_index.assign(us.size() * vs.size(), absent);
     for (int i = 0; i < cells.cu(); ++i) {
         for (int j = 0; j < cells.cv(); ++j) {
             if (!cells.cut(i, j)) continue;
             for (int di = 0; di <= 1; ++di)
                 for (int dj = 0; dj <= 1; ++dj) {
                     const std::uint32_t g = cells.corner(i + di, j + dj);
-                    if (near_loop[g] || corner_index[g] != absent) continue;
-                    corner_index[g] = points.size();
+                    if (near_loop[g] || c.corner_index[g] != absent) continue;
+                    c.corner_index[g] = c.points.size();
                     const glm::dvec2 p = cells.corner_uv(i + di, j + dj);
-                    points.emplace_back(p.x, p.y);
-                    infos.push_back({g, true});
+                    c.points.emplace_back(p.x, p.y);
+                    c.infos.push_back({g, true});
                 }
         }
     }
-    std::vector<std::size_t> order(points.size());
+    return c;
+}
+
+// The points go in along a Hilbert curve (CGAL's spatial_sort), each located from the one
+// before; the handles come back in the points' order.
+std::vector<Cdt::Vertex_handle> insert_points(Cdt& cdt, const CutPoints& c) {
+    std::vector<std::size_t> order(c.points.size());
     for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
     // CGAL's property map takes &points[0]: an untrimmed domain has no point to sort.
-    if (!points.empty())
+    if (!c.points.empty())
         CGAL::spatial_sort(order.begin(), order.end(),
                            CGAL::Spatial_sort_traits_adapter_2<
                                Kernel, CGAL::Pointer_property_map<Kernel::Point_2>::const_type>(
-                               CGAL::make_property_map(std::as_const(points))));
-    Cdt cdt;
-    std::vector<Cdt::Vertex_handle> handles(points.size());
+                               CGAL::make_property_map(c.points)));
+    std::vector<Cdt::Vertex_handle> handles(c.points.size());
     Cdt::Face_handle hint;
     for (std::size_t k : order) {
-        handles[k] = cdt.insert(points[k], hint);
-        if (handles[k]->info().id == none) handles[k]->info() = infos[k];
+        handles[k] = cdt.insert(c.points[k], hint);
+        if (handles[k]->info().id == none) handles[k]->info() = c.infos[k];
         hint = handles[k]->face();
     }
-    for (const auto& idx : loop_indices)
+    return handles;
+}
+
+// The loops' chords, and the borders between a crossed cell and a whole kept one.
+void insert_constraints(Cdt& cdt, const std::vector<Cdt::Vertex_handle>& handles,
+                        const CutPoints& c, const Cells& cells) {
+    for (const auto& idx : c.loop_indices)
         for (std::size_t k = 0; k < idx.size(); ++k) {
             const auto a = handles[idx[k]], b = handles[idx[(k + 1) % idx.size()]];
             if (a != b) cdt.insert_constraint(a, b);
         }
-    // Borders between a crossed cell and a whole kept one.
     auto border = [&](int ai, int aj, int bi, int bj) {
-        const std::size_t a = corner_index[cells.corner(ai, aj)];
-        const std::size_t b = corner_index[cells.corner(bi, bj)];
+        const std::size_t a = c.corner_index[cells.corner(ai, aj)];
+        const std::size_t b = c.corner_index[cells.corner(bi, bj)];
         if (a != absent && b != absent) cdt.insert_constraint(handles[a], handles[b]);
     };
     for (int i = 0; i < cells.cu(); ++i) {
@@ -267,9 +292,11 @@ TrimmedLayout triangulate_trimmed(const std::vector<double>& us, const std::vect
             if (cells.whole_kept(i, j + 1)) border(i, j + 1, i + 1, j + 1);
         }
     }
+}
 
-    // Kept faces: parity of the loop constraints crossed from the infinite face (outside every
-    // loop: kept only without an outer loop, where the domain's edge bounds the mesh instead).
+// Kept faces: parity of the loop constraints crossed from the infinite face (outside every
+// loop: kept only without an outer loop, where the domain's edge bounds the mesh instead).
+void mark_kept_faces(Cdt& cdt, bool start_kept) {
     auto loop_edge = [&](Cdt::Face_handle f, int i) {
         if (!cdt.is_constrained({f, i})) return false;
         const auto a = f->vertex(Cdt::cw(i)), b = f->vertex(Cdt::ccw(i));
@@ -296,7 +323,12 @@ TrimmedLayout triangulate_trimmed(const std::vector<double>& us, const std::vect
                 queue.push_back({n, kept});
         }
     }
+}
 
+// The kept faces outside whole kept cells, appended to tris; a vertex CGAL made where two
+// chords cross becomes a loop point.
+void add_kept_faces(Cdt& cdt, const Cells& cells, std::uint32_t loop_base,
+                    std::vector<glm::dvec2>& loop_points, Triangles& tris) {
     for (auto f = cdt.finite_faces_begin(); cdt.dimension() == 2 && f != cdt.finite_faces_end();
          ++f) {
         if (f->info().kept != 1) continue;
@@ -314,9 +346,12 @@ TrimmedLayout triangulate_trimmed(const std::vector<double>& us, const std::vect
         if (cells.whole_kept(cells.cell_u(centre.x), cells.cell_v(centre.y))) continue;
         tris.push_back(t);
     }
+}
 
-    // Number the vertices the triangles use: grid corners by grid index, then loop points.
-    std::vector<std::uint32_t> number(loop_base + loop_points.size(), none);
+// Numbers the vertices the triangles use: grid corners by grid index, then loop points.
+void number_vertices(TrimmedLayout& out, Triangles tris, const CutPoints& c,
+                     const std::vector<Cdt::Vertex_handle>& handles, std::uint32_t loop_base) {
+    std::vector<std::uint32_t> number(loop_base + c.loop_points.size(), none);
     for (const auto& t : tris)
         for (std::uint32_t v : t) number[v] = 0;
     for (std::uint32_t g = 0; g < loop_base; ++g)
@@ -326,18 +361,53 @@ TrimmedLayout triangulate_trimmed(const std::vector<double>& us, const std::vect
         }
     const auto first_loop = static_cast<std::uint32_t>(out.grid_vertices.size());
     // Every loop point is a vertex (the boundary), used or not.
-    for (std::size_t k = 0; k < loop_points.size(); ++k) {
+    for (std::size_t k = 0; k < c.loop_points.size(); ++k) {
         number[loop_base + k] = first_loop + static_cast<std::uint32_t>(k);
-        out.loop_points.push_back(loop_points[k]);
+        out.loop_points.push_back(c.loop_points[k]);
     }
     for (auto& t : tris)
         for (auto& v : t) v = number[v];
     out.triangles = std::move(tris);
-    for (const auto& idx : loop_indices) {
+    for (const auto& idx : c.loop_indices) {
         std::vector<std::uint32_t> ids;
         for (std::size_t k : idx) ids.push_back(number[handles[k]->info().id]);
         out.loops.push_back(std::move(ids));
     }
+}
+
+} // namespace
+
+TrimmedLayout triangulate_trimmed(const std::vector<double>& us, const std::vector<double>& vs,
+                                  const Trim& trim, const ParamRect& domain,
+                                  const FlattenRule& rule) {
+    assert(us.size() >= 2 && vs.size() >= 2);
+    (void)domain;
+    Cells cells(us, vs);
+    const double snap = 1e-6 * smallest_cell(us, vs);
+    const Loops loops = flat_loops(trim, rule);
+    for_each_chord(loops, [&](glm::dvec2 a, glm::dvec2 b) {
+        cells.mark_cut(glm::min(a, b) - 2 * snap, glm::max(a, b) + 2 * snap);
+    });
+    const bool start_kept = !trim.outer;
+    keep_whole_cells(cells, loops, us, vs, start_kept);
+
+    TrimmedLayout out;
+    out.us = us;
+    out.vs = vs;
+    // Mesh vertices are numbered once the triangles are known: grid corners first (by grid
+    // index), then loop points. Until then triangles hold grid indices or loop_base + index.
+    const auto loop_base = static_cast<std::uint32_t>(us.size() * vs.size());
+    Triangles tris = whole_cell_triangles(cells, static_cast<std::uint32_t>(vs.size()));
+    out.grid_triangles = tris.size();
+
+    // The crossed cells go to CGAL's constrained Delaunay triangulation.
+    CutPoints c = cut_points(cells, loops, us, vs, snap, loop_base);
+    Cdt cdt;
+    const std::vector<Cdt::Vertex_handle> handles = insert_points(cdt, c);
+    insert_constraints(cdt, handles, c, cells);
+    mark_kept_faces(cdt, start_kept);
+    add_kept_faces(cdt, cells, loop_base, c.loop_points, tris);
+    number_vertices(out, std::move(tris), c, handles, loop_base);
     return out;
 }
 
