@@ -17,6 +17,7 @@ enum Tag : char {
     tag_transferred = 'T',
     tag_curve = 'C',
     tag_surface = 'S',
+    tag_trimmed_surface = 'R', // a surface, then its trim (outer loop flag, loops of curves)
     tag_skipped = 'K',
     tag_error = 'E',
     tag_done = 'D',
@@ -55,6 +56,7 @@ public:
     bool ok() const { return ok_; }
     bool bad() const { return bad_; }
     bool empty() const { return rest_.empty(); }
+    std::size_t left() const { return rest_.size(); }
 
     template <class T> T get() {
         T value{};
@@ -144,6 +146,34 @@ geom::Surface read_surface(Cursor& in) {
     return s;
 }
 
+// Counts are checked against the bytes left (every curve takes at least 25 bytes), so a garbled
+// count never reserves more than the stream holds.
+geom::Trim read_trim(Cursor& in) {
+    geom::Trim t;
+    const auto has_outer = in.get<std::uint8_t>();
+    if (has_outer > 1) return in.fail<geom::Trim>();
+    const auto loops = in.get<std::uint64_t>();
+    if (!in.ok() || loops > in.left() / 8 || (has_outer && loops == 0)) return in.cut<geom::Trim>();
+    for (std::uint64_t k = 0; k < loops && in.ok(); ++k) {
+        const auto count = in.get<std::uint64_t>();
+        if (!in.ok() || count > in.left() / 25) return in.cut<geom::Trim>();
+        geom::TrimLoop loop;
+        for (std::uint64_t c = 0; c < count && in.ok(); ++c) loop.curves.push_back(read_curve(in));
+        if (has_outer && k == 0)
+            t.outer = std::move(loop);
+        else
+            t.holes.push_back(std::move(loop));
+    }
+    return t;
+}
+
+geom::TrimmedSurface read_trimmed_surface(Cursor& in) {
+    geom::TrimmedSurface t;
+    t.surface = read_surface(in);
+    t.trim = read_trim(in);
+    return t;
+}
+
 // A shape record: its name, then its geometry; kept only when the record is whole.
 template <class ReadGeometry>
 void read_shape(Cursor& in, ImportWireReading& r, ReadGeometry read_geometry) {
@@ -164,29 +194,56 @@ void ImportWireWriter::transferred(std::size_t items) {
     put<std::uint64_t>(buffer_, items);
 }
 
+namespace {
+
+void put_curve(std::string& out, const geom::Curve& c) {
+    put<std::uint8_t>(out, static_cast<std::uint8_t>(c.type));
+    put<std::int32_t>(out, c.degree);
+    put_reals(out, c.knots);
+    put_points(out, c.points);
+    put_reals(out, c.weights);
+}
+
+void put_surface(std::string& out, const geom::Surface& s) {
+    put<std::uint8_t>(out, static_cast<std::uint8_t>(s.type));
+    put<std::int32_t>(out, s.degree_u);
+    put<std::int32_t>(out, s.degree_v);
+    put<std::int32_t>(out, s.n_u);
+    put<std::int32_t>(out, s.n_v);
+    put_reals(out, s.knots_u);
+    put_reals(out, s.knots_v);
+    put_points(out, s.points);
+    put_reals(out, s.weights);
+}
+
+void put_trim(std::string& out, const geom::Trim& t) {
+    put<std::uint8_t>(out, t.outer ? 1 : 0);
+    put<std::uint64_t>(out, static_cast<std::uint64_t>(t.loop_count()));
+    for (int k = 0; k < t.loop_count(); ++k) {
+        const geom::TrimLoop& loop = t.loop(k);
+        put<std::uint64_t>(out, loop.curves.size());
+        for (const geom::Curve& c : loop.curves) put_curve(out, c);
+    }
+}
+
+} // namespace
+
 void ImportWireWriter::object(const ImportedShape& shape) {
     if (const auto* c = std::get_if<geom::Curve>(&shape.shape)) {
         buffer_.push_back(tag_curve);
         put_text(buffer_, shape.name);
-        put<std::uint8_t>(buffer_, static_cast<std::uint8_t>(c->type));
-        put<std::int32_t>(buffer_, c->degree);
-        put_reals(buffer_, c->knots);
-        put_points(buffer_, c->points);
-        put_reals(buffer_, c->weights);
-        return;
+        put_curve(buffer_, *c);
+    } else if (const auto* s = std::get_if<geom::Surface>(&shape.shape)) {
+        buffer_.push_back(tag_surface);
+        put_text(buffer_, shape.name);
+        put_surface(buffer_, *s);
+    } else {
+        const auto& t = std::get<geom::TrimmedSurface>(shape.shape);
+        buffer_.push_back(tag_trimmed_surface);
+        put_text(buffer_, shape.name);
+        put_surface(buffer_, t.surface);
+        put_trim(buffer_, t.trim);
     }
-    const auto& s = std::get<geom::Surface>(shape.shape);
-    buffer_.push_back(tag_surface);
-    put_text(buffer_, shape.name);
-    put<std::uint8_t>(buffer_, static_cast<std::uint8_t>(s.type));
-    put<std::int32_t>(buffer_, s.degree_u);
-    put<std::int32_t>(buffer_, s.degree_v);
-    put<std::int32_t>(buffer_, s.n_u);
-    put<std::int32_t>(buffer_, s.n_v);
-    put_reals(buffer_, s.knots_u);
-    put_reals(buffer_, s.knots_v);
-    put_points(buffer_, s.points);
-    put_reals(buffer_, s.weights);
 }
 
 void ImportWireWriter::skipped(const SkippedEntity& entity) {
@@ -231,6 +288,9 @@ ImportWireReading read_import_wire(std::string_view bytes) {
             break;
         case tag_surface:
             read_shape(in, r, read_surface);
+            break;
+        case tag_trimmed_surface:
+            read_shape(in, r, read_trimmed_surface);
             break;
         case tag_skipped: {
             SkippedEntity e;

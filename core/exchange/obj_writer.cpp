@@ -23,7 +23,7 @@ std::string parm_line(char dir, const geom::Knots& knots) {
 
 std::string obj_freeform_text(const std::vector<ExactShape>& shapes) {
     std::string out = "# isoparm: exact NURBS geometry (OBJ free-form)\n";
-    long next_vertex = 1;
+    long next_vertex = 1, next_vp = 1, next_curv2 = 1;
     for (const ExactShape& shape : shapes) {
         if (const auto* c = std::get_if<geom::Curve>(&shape)) {
             const bool rational = geom::is_rational(c->type);
@@ -38,7 +38,32 @@ std::string obj_freeform_text(const std::vector<ExactShape>& shapes) {
             out += "\n" + parm_line('u', c->knots) + "end\n";
             continue;
         }
-        const auto& s = std::get<geom::Surface>(shape);
+        const geom::Surface& s = *surface_of(shape);
+        // A trimmed surface's loop curves first: curv2 elements on parameter vertices (vp),
+        // numbered from 1 in file order as the trim and hole statements refer to them.
+        std::string loops;
+        if (const auto* t = std::get_if<geom::TrimmedSurface>(&shape)) {
+            auto loop_line = [&](const char* keyword, const geom::TrimLoop& loop) {
+                std::string line = keyword;
+                for (const geom::Curve& c : loop.curves) {
+                    const bool rat = geom::is_rational(c.type);
+                    const long first_vp = next_vp;
+                    for (int i = 0; i < c.count(); ++i, ++next_vp)
+                        out += "vp " + real_text(c.points[i].x) + " " + real_text(c.points[i].y) +
+                               (rat ? " " + real_text(c.weights[i]) : "") + "\n";
+                    out += std::string("cstype ") + (rat ? "rat " : "") + "bspline\ndeg " +
+                           std::to_string(c.degree) + "\ncurv2";
+                    for (long k = first_vp; k < next_vp; ++k) out += " " + std::to_string(k);
+                    out += "\n" + parm_line('u', c.knots) + "end\n";
+                    const geom::Interval d = geom::domain(c);
+                    line += " " + real_text(d.lo) + " " + real_text(d.hi) + " " +
+                            std::to_string(next_curv2++);
+                }
+                loops += line + "\n";
+            };
+            if (t->trim.outer) loop_line("trim", *t->trim.outer);
+            for (const geom::TrimLoop& h : t->trim.holes) loop_line("hole", h);
+        }
         const bool rational = geom::is_rational(s.type);
         const long first = next_vertex;
         for (int j = 0; j < s.n_v; ++j)
@@ -52,7 +77,7 @@ std::string obj_freeform_text(const std::vector<ExactShape>& shapes) {
                real_text(du.lo) + " " + real_text(du.hi) + " " + real_text(dv.lo) + " " +
                real_text(dv.hi);
         for (long k = first; k < next_vertex; ++k) out += " " + std::to_string(k);
-        out += "\n" + parm_line('u', s.knots_u) + parm_line('v', s.knots_v) + "end\n";
+        out += "\n" + parm_line('u', s.knots_u) + parm_line('v', s.knots_v) + loops + "end\n";
     }
     return out;
 }

@@ -10,6 +10,7 @@
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/refine.hpp"
+#include "core/geom/trim/curve_on_surface.hpp"
 
 namespace isoparm::exchange {
 
@@ -105,9 +106,14 @@ public:
         return id;
     }
 
-    int curve(const geom::Curve& c) {
+    int point2(const glm::dvec3& p) {
+        return d_.add("CARTESIAN_POINT(''," + reals({p.x, p.y}) + ")");
+    }
+
+    // planar: a (u, v) curve, its points 2D (a p-curve's definitional representation).
+    int curve(const geom::Curve& c, bool planar = false) {
         std::vector<std::string> points;
-        for (const glm::dvec3& p : c.points) points.push_back(ref(point(p)));
+        for (const glm::dvec3& p : c.points) points.push_back(ref(planar ? point2(p) : point(p)));
         const auto [multiplicities, knots] = knots_and_multiplicities(c.knots);
         const geom::Interval dom = geom::domain(c);
         const auto a = geom::curve_point(c, dom.lo), b = geom::curve_point(c, dom.hi);
@@ -155,6 +161,49 @@ public:
                       list(weight_rows) + ") REPRESENTATION_ITEM('') SURFACE() )");
     }
 
+    // A trimmed surface: a FACE_BOUND per loop (FACE_OUTER_BOUND for the outer one, the
+    // domain's rectangle where there is none), an edge per trim curve, each a SURFACE_CURVE of
+    // its model-space trace with its (u, v) curve as the PCURVE master representation (ISO
+    // 10303-42 surface_curve, master_representation .PCURVE_S1.).
+    int face(const geom::TrimmedSurface& t, double edge_tolerance) {
+        const geom::Surface& s = t.surface;
+        const int surface_id = surface(s, false, false);
+        std::vector<std::string> bounds;
+        auto loop_bound = [&](const geom::TrimLoop& loop, bool outer) {
+            // One vertex per junction: curve k starts at junction k, ends at junction k + 1.
+            std::vector<int> junctions;
+            for (const geom::Curve& c : loop.curves) {
+                const glm::dvec2 p = geom::curve_start(c).value_or(glm::dvec2(0.0));
+                const geom::ParamRect d = geom::domain(s);
+                const auto q = geom::surface_point(s, std::clamp(p.x, d.u.lo, d.u.hi),
+                                                   std::clamp(p.y, d.v.lo, d.v.hi));
+                junctions.push_back(vertex(q.value_or(glm::dvec3(0.0))));
+            }
+            std::vector<std::string> oriented;
+            for (std::size_t k = 0; k < loop.curves.size(); ++k) {
+                const geom::Curve& c = loop.curves[k];
+                const int c3 = curve(geom::curve_on_surface(s, c, edge_tolerance));
+                const int representation =
+                    d_.add("DEFINITIONAL_REPRESENTATION(''," + list({ref(curve(c, true))}) + "," +
+                           ref(parameter_context()) + ")");
+                const int pcurve =
+                    d_.add("PCURVE(''," + ref(surface_id) + "," + ref(representation) + ")");
+                const int surface_curve = d_.add("SURFACE_CURVE(''," + ref(c3) + "," +
+                                                 list({ref(pcurve)}) + ",.PCURVE_S1.)");
+                const int edge = d_.add("EDGE_CURVE(''," + ref(junctions[k]) + "," +
+                                        ref(junctions[(k + 1) % junctions.size()]) + "," +
+                                        ref(surface_curve) + ",.T.)");
+                oriented.push_back(ref(d_.add("ORIENTED_EDGE('',*,*," + ref(edge) + ",.T.)")));
+            }
+            const int edge_loop = d_.add("EDGE_LOOP(''," + list(oriented) + ")");
+            bounds.push_back(ref(d_.add(std::string(outer ? "FACE_OUTER_BOUND" : "FACE_BOUND") +
+                                        "(''," + ref(edge_loop) + ",.T.)")));
+        };
+        loop_bound(t.trim.outer ? *t.trim.outer : geom::rectangle_loop(geom::domain(s)), true);
+        for (const geom::TrimLoop& h : t.trim.holes) loop_bound(h, false);
+        return d_.add("ADVANCED_FACE(''," + list(bounds) + "," + ref(surface_id) + ",.T.)");
+    }
+
     int face(const geom::Surface& s) {
         const geom::ParamRect dom = geom::domain(s);
         // Sides in loop order: v = v0 (along u), u = u1 (along v), v = v1, u = u0.
@@ -192,19 +241,35 @@ public:
     }
 
 private:
+    // The 2D context p-curves are defined in (made once, when the first is written).
+    int parameter_context() {
+        if (!parameter_context_)
+            parameter_context_ = d_.add("( GEOMETRIC_REPRESENTATION_CONTEXT(2) "
+                                        "PARAMETRIC_REPRESENTATION_CONTEXT() "
+                                        "REPRESENTATION_CONTEXT('2D SPACE','') )");
+        return parameter_context_;
+    }
+
     step::DataSection d_;
+    int parameter_context_ = 0;
     double tolerance_;
     std::vector<std::pair<glm::dvec3, int>> vertices_;
 };
 
+// 1e-7 as "1.0E-07" (the text earlier files have), others in shortest round-trip form.
+std::string step_real(double x) {
+    return x == 1e-7 ? "1.0E-07" : real_text(x);
+}
+
 // Millimetres, radians, steradians, and the distance uncertainty readers take as their
 // precision (ISO 10303-41 units; the context every AP214 representation points to).
-int representation_context(step::DataSection& d) {
+int representation_context(step::DataSection& d, double uncertainty_mm) {
     const int mm = d.add("( LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.MILLI.,.METRE.) )");
     const int radian = d.add("( NAMED_UNIT(*) PLANE_ANGLE_UNIT() SI_UNIT($,.RADIAN.) )");
     const int steradian = d.add("( NAMED_UNIT(*) SI_UNIT($,.STERADIAN.) SOLID_ANGLE_UNIT() )");
-    const int uncertainty = d.add("UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(1.0E-07)," +
-                                  ref(mm) + ",'distance_accuracy_value','confusion accuracy')");
+    const int uncertainty =
+        d.add("UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(" + step_real(uncertainty_mm) + ")," +
+              ref(mm) + ",'distance_accuracy_value','confusion accuracy')");
     return d.add("( GEOMETRIC_REPRESENTATION_CONTEXT(3) GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT(" +
                  list({ref(uncertainty)}) + ") GLOBAL_UNIT_ASSIGNED_CONTEXT(" +
                  list({ref(mm), ref(radian), ref(steradian)}) +
@@ -238,12 +303,8 @@ void product(step::DataSection& d, const std::string& name, int representation) 
 double model_tolerance(const std::vector<ExactShape>& shapes) {
     double size = 0;
     for (const ExactShape& shape : shapes)
-        std::visit(
-            [&](const auto& g) {
-                for (const glm::dvec3& p : g.points)
-                    for (int a = 0; a < 3; ++a) size = std::max(size, std::abs(p[a]));
-            },
-            shape);
+        for (const glm::dvec3& p : control_points_of(shape))
+            for (int a = 0; a < 3; ++a) size = std::max(size, std::abs(p[a]));
     return 1e-12 * std::max(size, 1e-300);
 }
 
@@ -257,8 +318,15 @@ geom::Expected<std::string> step_text(const std::vector<ExactShape>& shapes,
                                       : st.error().under("/objects/" + std::to_string(k));
 
     Writer w(model_tolerance(shapes));
+    const double edge_tolerance = edge_curve_tolerance(shapes);
     step::DataSection& d = w.data();
-    const int context = representation_context(d);
+    // Trimmed faces' edges follow their surfaces within edge_tolerance: the file's uncertainty
+    // (what readers take as their precision) is at least ten times that.
+    bool trimmed = false;
+    for (const ExactShape& shape : shapes)
+        trimmed |= std::holds_alternative<geom::TrimmedSurface>(shape);
+    const int context =
+        representation_context(d, trimmed ? std::max(1e-7, 10 * edge_tolerance) : 1e-7);
     const int origin = d.add("AXIS2_PLACEMENT_3D(''," + ref(w.point(glm::dvec3(0.0))) + "," +
                              ref(d.add("DIRECTION('',(0.0,0.0,1.0))")) + "," +
                              ref(d.add("DIRECTION('',(1.0,0.0,0.0))")) + ")");
@@ -270,7 +338,8 @@ geom::Expected<std::string> step_text(const std::vector<ExactShape>& shapes,
             continue;
         }
         // One open shell per surface: the surfaces need not meet.
-        const int face = w.face(std::get<geom::Surface>(shape));
+        const auto* t = std::get_if<geom::TrimmedSurface>(&shape);
+        const int face = t ? w.face(*t, edge_tolerance) : w.face(std::get<geom::Surface>(shape));
         shells.push_back(ref(d.add("OPEN_SHELL(''," + list({ref(face)}) + ")")));
     }
     std::vector<int> representations;

@@ -17,6 +17,7 @@
 #include <variant>
 #include <vector>
 
+#include "core/exchange_occt/occt_trim.hpp"
 #include "core/geom/status.hpp"
 
 namespace isoparm::exchange_occt {
@@ -188,7 +189,13 @@ Converted face_geometry(const TopoDS_Face& face) {
         b = GeomConvert::SurfaceToBSplineSurface(box);
     }
     if (b.IsNull()) return {std::nullopt, kind + ": OCCT cannot convert it to a B-spline surface"};
-    return {to_surface(b), ""};
+    geom::Surface surface = to_surface(b);
+    const FaceBox box{u.lo, u.hi, v.lo, v.hi, up ? s->UPeriod() : 0.0, vp ? s->VPeriod() : 0.0};
+    auto trim = face_trim(face, s, box, surface);
+    if (auto* why = std::get_if<std::string>(&trim))
+        return {std::move(surface), "", kind + ": its trim loops were left out (" + *why + ")"};
+    return {geom::TrimmedSurface{std::move(surface), std::move(std::get<geom::Trim>(trim))}, "",
+            ""};
 }
 
 Converted edge_geometry(const TopoDS_Edge& edge) {

@@ -13,10 +13,12 @@
 namespace isoparm::exchange_occt {
 
 // A converted item, or why it was not (then `shape` is empty). A face comes in as its
-// underlying surface over the face's (u, v) box; its trimming loops are not carried (yet).
+// underlying surface over the face's (u, v) box with its wires as trim loops
+// (occt_trim.hpp); where the loops cannot be made, the surface alone, and `note` says why.
 struct Converted {
     std::optional<exchange::ExactShape> shape;
     std::string skip_reason;
+    std::string note = {}; // why a face came without its trim loops (empty: it has them)
 };
 
 // The box (BRepTools::UVBounds) is fitted to the surface first: cut to the surface's range

@@ -279,18 +279,43 @@ std::vector<Converted> convert_item(const Item& item, XSControl_Reader& reader) 
     return out;
 }
 
+std::unique_ptr<XSControl_Reader> make_reader(CadFormat format) {
+    if (format == CadFormat::step) return std::make_unique<STEPControl_Reader>();
+    auto reader = std::make_unique<IGESControl_Reader>();
+    // Keep B-splines as the file has them: the default (1) splits a C0 curve or surface into C1
+    // pieces, which would turn one object into several.
+    Interface_Static::SetIVal("read.iges.bspline.continuity", 0);
+    return reader;
+}
+
+// A shape the file declares rational stays `nurbs` even where its weights are all 1.
+void mark_rational(exchange::ExactShape& shape) {
+    if (auto* curve = std::get_if<geom::Curve>(&shape))
+        curve->type = geom::SplineType::nurbs;
+    else if (auto* surface = std::get_if<geom::Surface>(&shape))
+        surface->type = geom::SplineType::nurbs;
+    else
+        std::get<geom::TrimmedSurface>(shape).surface.type = geom::SplineType::nurbs;
+}
+
+// An item's converted shapes into the stream: each shape, or why it is left out; a face that
+// came without its trim loops also says why in `skipped`.
+void send_item(const Item& item, XSControl_Reader& reader, exchange::ImportWireWriter& out) {
+    for (Converted& c : convert_item(item, reader)) {
+        if (!c.shape) {
+            out.skipped({item.entity, c.skip_reason});
+            continue;
+        }
+        if (!c.note.empty()) out.skipped({item.entity, c.note});
+        if (item.file_rational) mark_rational(*c.shape);
+        out.object({item.name, std::move(*c.shape)});
+    }
+}
+
 void read_and_send(const ReadPlan& plan, ReadProgress& progress, exchange::ImportWireWriter& out,
                    const std::function<void(bool)>& flush) {
     const CadFormat format = plan.format;
-    std::unique_ptr<XSControl_Reader> reader;
-    if (format == CadFormat::iges) {
-        reader = std::make_unique<IGESControl_Reader>();
-        // Keep B-splines as the file has them: the default (1) splits a C0 curve or surface
-        // into C1 pieces, which would turn one object into several.
-        Interface_Static::SetIVal("read.iges.bspline.continuity", 0);
-    } else {
-        reader = std::make_unique<STEPControl_Reader>();
-    }
+    std::unique_ptr<XSControl_Reader> reader = make_reader(format);
     progress.stage = ReadProgress::reading;
     IFSelect_ReturnStatus status;
     if (format == CadFormat::step) {
@@ -367,19 +392,7 @@ void read_and_send(const ReadPlan& plan, ReadProgress& progress, exchange::Impor
         } else if (!item.file_problem.empty()) {
             out.skipped({item.entity, "not read: " + item.file_problem});
         } else {
-            for (Converted& c : convert_item(item, *reader)) {
-                if (!c.shape) {
-                    out.skipped({item.entity, c.skip_reason});
-                    continue;
-                }
-                if (item.file_rational) {
-                    if (auto* curve = std::get_if<geom::Curve>(&*c.shape))
-                        curve->type = geom::SplineType::nurbs;
-                    else
-                        std::get<geom::Surface>(*c.shape).type = geom::SplineType::nurbs;
-                }
-                out.object({item.name, std::move(*c.shape)});
-            }
+            send_item(item, *reader, out);
         }
         flush(false);
     }

@@ -14,6 +14,7 @@
 
 #include "core/geom/interpolate.hpp"
 #include "core/geom/status.hpp"
+#include "core/geom/trim/trim.hpp"
 #include "core/geom/types.hpp"
 #include "core/json/fields.hpp"
 
@@ -59,6 +60,8 @@ OpResult op_interpolate(const json& request); // op_fitting.cpp
 OpResult op_approximate(const json& request);
 OpResult op_remove_knot(const json& request); // op_reduce.cpp
 OpResult op_reduce_degree(const json& request);
+OpResult op_classify(const json& request); // op_trim.cpp
+OpResult op_area(const json& request);
 // The meshes of `tessellate` and `polygonize` before they become JSON: the text path writes
 // them straight to the output (stream.hpp) instead of building a JSON tree.
 geom::Expected<geom::Mesh> tessellate_mesh(const json& request);
@@ -109,6 +112,10 @@ inline geom::Error with_weights_path(const Subject& s, const geom::Error& e) {
 // Exactly one of "curve" / "surface" (`schema` at "/surface" when both are given), parsed
 // and validated, errors under "/curve" or "/surface".
 geom::Expected<Subject> read_subject(const json& request, bool allow_curve, bool allow_surface);
+
+// `trim` (optional): read and checked against s's domain (geom::validate_trim), errors under
+// "/trim" (op_trim.cpp).
+geom::Expected<std::optional<geom::Trim>> read_trim(const json& request, const geom::Surface& s);
 
 // `params`: a curve's, each a finite number in the domain; a surface's, each [u, v] with u and
 // v in their domains (`schema` / `domain` at "/params/3", "/params/3/1").

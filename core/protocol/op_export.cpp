@@ -5,6 +5,7 @@
 #include "core/exchange/step_writer.hpp"
 #include "core/geom/tessellate.hpp"
 #include "core/geom/triangle.hpp"
+#include "core/geom/trim/trimmed_tessellator.hpp"
 #include "core/geom/work_budget.hpp"
 #include "core/json/shapes.hpp"
 #include "core/protocol/detail.hpp"
@@ -68,8 +69,8 @@ json text_answer(std::string text) {
 } // namespace
 
 OpResult op_export(const json& request) {
-    if (geom::Status s =
-            check_fields(request, "export", {"curve", "surface", "triangle", "format", "samples"});
+    if (geom::Status s = check_fields(
+            request, "export", {"curve", "surface", "trim", "triangle", "format", "samples"});
         !s)
         return s.error();
     if (find_member(request, "triangle")) {
@@ -91,6 +92,12 @@ OpResult op_export(const json& request) {
     Expected<Format> format = read_format(request);
     if (!format) return format.error();
     const char* member = subject->is_surface ? "/surface" : "/curve";
+    if (!subject->is_surface && find_member(request, "trim"))
+        return schema_error("a trim belongs to a surface", "/trim");
+    Expected<std::optional<geom::Trim>> trim =
+        subject->is_surface ? read_trim(request, subject->surface)
+                            : Expected<std::optional<geom::Trim>>(std::optional<geom::Trim>{});
+    if (!trim) return trim.error();
     if (is_mesh(*format)) {
         if (!subject->is_surface)
             return schema_error("a curve has no mesh: export it as iges, step or obj", "/format");
@@ -99,11 +106,14 @@ OpResult op_export(const json& request) {
         Expected<std::array<int, 2>> n =
             read_grid_samples(defaults, subject->surface.degree_u, subject->surface.degree_v);
         if (!n) return n.error();
-        return text_answer(
-            mesh_text(*format, geom::tessellate(subject->surface, (*n)[0], (*n)[1])));
+        return text_answer(mesh_text(
+            *format, *trim ? geom::tessellate_trimmed(subject->surface, **trim, (*n)[0], (*n)[1])
+                           : geom::tessellate(subject->surface, (*n)[0], (*n)[1])));
     }
-    const exchange::ExactShape shape = subject->is_surface ? exchange::ExactShape(subject->surface)
-                                                           : exchange::ExactShape(subject->curve);
+    const exchange::ExactShape shape =
+        !subject->is_surface ? exchange::ExactShape(subject->curve)
+        : *trim              ? exchange::ExactShape(geom::TrimmedSurface{subject->surface, **trim})
+                             : exchange::ExactShape(subject->surface);
     if (*format == Format::obj) return text_answer(exchange::obj_freeform_text({shape}));
     Expected<std::string> text = *format == Format::step ? exchange::step_text({shape}, "isoparm")
                                                          : exchange::iges_text({shape}, "isoparm");

@@ -5,6 +5,7 @@
 #include "core/exchange/cad_reader.hpp"
 #include "core/exchange/obj_reader.hpp"
 #include "core/json/shapes.hpp"
+#include "core/json/trim_json.hpp"
 #include "core/protocol/detail.hpp"
 
 namespace isoparm::protocol {
@@ -46,10 +47,13 @@ OpResult op_import(const json& request) {
     json objects = json::array();
     for (const exchange::ImportedShape& shape : read->objects) {
         json o = json::object();
-        if (const auto* c = std::get_if<geom::Curve>(&shape.shape))
+        if (const auto* c = std::get_if<geom::Curve>(&shape.shape)) {
             o["curve"] = curve_to_json(*c);
-        else
-            o["surface"] = surface_to_json(std::get<geom::Surface>(shape.shape));
+        } else {
+            o["surface"] = surface_to_json(*exchange::surface_of(shape.shape));
+            if (const auto* t = std::get_if<geom::TrimmedSurface>(&shape.shape))
+                o["trim"] = trim_to_json(t->trim);
+        }
         objects.push_back(std::move(o));
     }
     json skipped = json::array();

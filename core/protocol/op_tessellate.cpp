@@ -1,6 +1,7 @@
 // The `tessellate` op: a surface over a uniform n_u x n_v parameter grid.
 #include "core/geom/implicit/polygonize.hpp" // the mesh caps
 #include "core/geom/tessellate.hpp"
+#include "core/geom/trim/trimmed_tessellator.hpp"
 #include "core/geom/validate.hpp"
 #include "core/geom/work_budget.hpp"
 #include "core/json/fields.hpp"
@@ -74,13 +75,40 @@ Expected<std::array<int, 2>> read_grid_samples(const json& request, int degree_u
 Expected<geom::Mesh> tessellate_mesh(const json& request) {
     if (find_member(request, "curve"))
         return schema_error("tessellate takes a surface, not a curve", "/curve");
-    if (geom::Status s = check_fields(request, "tessellate", {"surface", "samples"}); !s)
+    if (geom::Status s =
+            check_fields(request, "tessellate", {"surface", "samples", "trim", "tolerance"});
+        !s)
         return s.error();
     Expected<Subject> subject = read_subject(request, false, true);
     if (!subject) return subject.error();
+    Expected<std::optional<geom::Trim>> trim = read_trim(request, subject->surface);
+    if (!trim) return trim.error();
     Expected<std::array<int, 2>> n =
         read_grid_samples(request, subject->surface.degree_u, subject->surface.degree_v);
     if (!n) return n.error();
+    double tolerance = 0; // the default: geom::default_chord_tolerance
+    if (const json* t = find_member(request, "tolerance")) {
+        if (!*trim)
+            return schema_error("tolerance is for a trimmed tessellation (give trim)",
+                                "/tolerance");
+        if (!is_finite_number(*t) || !(t->get<double>() > 0))
+            return schema_error("tolerance is a positive number (the largest distance, in the "
+                                "model's units, between a loop on the surface and the mesh)",
+                                "/tolerance");
+        tolerance = t->get<double>();
+        // Chords are cut at 1/1024 of the default at the finest: a far smaller tolerance asks
+        // for more chords than the mesh caps allow.
+        const double floor = 1e-6 * geom::default_chord_tolerance(subject->surface);
+        if (tolerance < floor)
+            return geom::make_error(geom::ErrorCode::limit,
+                                    "tolerance " + geom::format_number(tolerance) +
+                                        " is below the smallest allowed here (" +
+                                        geom::format_short(floor, 3) +
+                                        ", a millionth of the default)",
+                                    "/tolerance");
+    }
+    if (*trim)
+        return geom::tessellate_trimmed(subject->surface, **trim, (*n)[0], (*n)[1], tolerance);
     return geom::tessellate(subject->surface, (*n)[0], (*n)[1]);
 }
 

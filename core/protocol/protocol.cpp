@@ -33,7 +33,7 @@ struct OpEntry {
 };
 
 // Adding an op is one line here and one file (see detail.hpp).
-constexpr std::array<OpEntry, 28> op_table = {{
+constexpr std::array<OpEntry, 30> op_table = {{
     {"evaluate", protocol::op_evaluate},
     {"basis", protocol::op_basis},
     {"deboor", protocol::op_deboor},
@@ -62,6 +62,8 @@ constexpr std::array<OpEntry, 28> op_table = {{
     {"de_casteljau", protocol::op_de_casteljau},
     {"export", protocol::op_export},
     {"import", protocol::op_import},
+    {"classify", protocol::op_classify},
+    {"area", protocol::op_area},
 }};
 
 json error_response(const Error& e) {

@@ -50,7 +50,7 @@ geom::Expected<ImportedObjects> import_text(std::string_view text, ImportFormat 
     // The import's budget (the OBJ reader counts while it reads; a CAD reader's answer here).
     std::size_t points = 0;
     for (const exchange::ImportedShape& shape : read->objects)
-        points += std::visit([](const auto& g) { return g.points.size(); }, shape.shape);
+        points += exchange::control_points_of(shape.shape).size();
     if (points > exchange::max_import_control_points)
         return geom::make_error(geom::ErrorCode::limit,
                                 "the file's curves and surfaces have " + std::to_string(points) +
@@ -82,7 +82,7 @@ geom::Expected<ImportedObjects> import_text(std::string_view text, ImportFormat 
             co.knot_mode = doc::CurveKnotMode::custom;
             o.shape = std::move(co);
         } else {
-            o.shape = doc::SurfaceObject{std::move(std::get<geom::Surface>(shape.shape))};
+            o.shape = doc::SurfaceObject{std::move(*exchange::surface_of(shape.shape))};
         }
         // The document's own rules (add_object's checks, on a scratch document), so a scene
         // written from these loads again; an object they refuse is left out, with the reason.

@@ -32,45 +32,15 @@
 #include "core/exchange_occt/occt_reader.hpp"
 #include "core/geom/evaluate.hpp"
 #include "core/geom/knots.hpp"
+#include "tests/exchange_occt/real_cad_files.hpp"
 
 using namespace isoparm;
 
 namespace {
 
-const std::filesystem::path cad_dir = ISOPARM_CAD_DIR;
-
-bool is_iges(const std::filesystem::path& p) {
-    std::string e = p.extension().string();
-    std::transform(e.begin(), e.end(), e.begin(), ::tolower);
-    return e == ".igs" || e == ".iges";
-}
-
-std::vector<std::filesystem::path> cad_files() {
-    std::vector<std::filesystem::path> out;
-    if (!std::filesystem::is_directory(cad_dir)) return out;
-    for (const auto& e : std::filesystem::directory_iterator(cad_dir)) {
-        std::string ext = e.path().extension().string();
-        std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-        if (ext == ".igs" || ext == ".iges" || ext == ".stp" || ext == ".step")
-            out.push_back(e.path());
-    }
-    std::sort(out.begin(), out.end());
-    return out;
-}
-
-// The file read by OCCT here in the test (these files are known to read), as one shape.
-TopoDS_Shape read_shape(const std::filesystem::path& file) {
-    std::unique_ptr<XSControl_Reader> reader;
-    if (is_iges(file)) {
-        reader = std::make_unique<IGESControl_Reader>();
-        Interface_Static::SetIVal("read.iges.bspline.continuity", 0);
-    } else {
-        reader = std::make_unique<STEPControl_Reader>();
-    }
-    if (reader->ReadFile(file.c_str()) != IFSelect_RetDone) return {};
-    reader->TransferRoots();
-    return reader->OneShape();
-}
+using test::cad_dir;
+using test::cad_files;
+using test::is_iges;
 
 // t moved by whole periods into [lo, hi], clamped where only rounding keeps it out (a box end
 // and the imported domain's end differ in the last bits); NaN where it is really outside, so
@@ -129,7 +99,7 @@ struct FaceReport {
 
 FaceReport check_faces(const std::filesystem::path& file) {
     FaceReport r;
-    const TopoDS_Shape shape = read_shape(file);
+    const TopoDS_Shape shape = test::read_cad_shape(file);
     int index = 0;
     for (TopExp_Explorer e(shape, TopAbs_FACE); e.More(); e.Next(), ++index) {
         const TopoDS_Face face = TopoDS::Face(e.Current());
@@ -145,7 +115,7 @@ FaceReport check_faces(const std::filesystem::path& file) {
             continue;
         }
         ++r.converted;
-        const geom::Surface& s = std::get<geom::Surface>(*c.shape);
+        const geom::Surface& s = *exchange::surface_of(*c.shape);
         const geom::Interval du = geom::domain(s, geom::Dir::u), dv = geom::domain(s, geom::Dir::v);
         Handle(Geom_Surface) g = BRep_Tool::Surface(face);
         Standard_Real u0, u1, v0, v1;
@@ -241,17 +211,23 @@ TEST(RealCadFiles, TheIssuesTwoFilesImportAllTheirFaces) {
         const auto path = cad_dir / name;
         if (!std::filesystem::exists(path)) GTEST_SKIP() << "skipped: " << path << " is absent";
         int faces = 0;
-        const TopoDS_Shape shape = read_shape(path);
+        const TopoDS_Shape shape = test::read_cad_shape(path);
         for (TopExp_Explorer e(shape, TopAbs_FACE); e.More(); e.Next()) ++faces;
         const auto r = exchange_occt::read(
             file_text(path), is_iges(path) ? exchange::CadFormat::iges : exchange::CadFormat::step);
         ASSERT_TRUE(r) << name << ": " << r.error().message;
         int surfaces = 0;
         for (const exchange::ImportedShape& s : r->objects)
-            surfaces += std::holds_alternative<geom::Surface>(s.shape);
+            surfaces += exchange::surface_of(s.shape) != nullptr;
         EXPECT_EQ(surfaces, faces) << name;
-        for (const exchange::SkippedEntity& s : r->skipped)
-            ADD_FAILURE() << name << ": skipped " << s.entity << ": " << s.reason;
+        // A face whose loops could not be built comes in untrimmed with a note (counted by
+        // occt_trimmed_area_test.cpp); anything else skipped is a failure here.
+        for (const exchange::SkippedEntity& s : r->skipped) {
+            if (s.reason.find("its trim loops were left out") != std::string::npos)
+                std::cout << name << ": " << s.entity << ": " << s.reason << "\n";
+            else
+                ADD_FAILURE() << name << ": skipped " << s.entity << ": " << s.reason;
+        }
     }
 }
 

@@ -36,6 +36,13 @@ struct Trim {
     bool is_outer(int k) const { return outer && k == 0; }
 };
 
+// A surface and the trim that says which part of its domain it keeps (an exchange file's
+// trimmed face).
+struct TrimmedSurface {
+    Surface surface;
+    Trim trim;
+};
+
 // How messages name loop k of t: "the outer loop", "hole 2".
 std::string loop_name(const Trim& t, int k);
 // Its JSON Pointer below the trim: "/outer", "/holes/2".
