@@ -45,6 +45,12 @@ glm::dvec3 occt_point(const Handle(Geom_Surface) & s, double u, double v) {
     return {p.X(), p.Y(), p.Z()};
 }
 
+// Where the maps are checked, as fractions of the box: not quarters, since a circle converted
+// in two or four equal arcs agrees with its angle parameter exactly at the quarters (its knots)
+// and nowhere between.
+constexpr int sample_count = 7;
+constexpr double samples[sample_count] = {0, 0.137, 0.291, 0.458, 0.619, 0.853, 1};
+
 // From OCCT's parameters of the face's surface to the converted NURBS surface's.
 class Mapper {
 public:
@@ -54,24 +60,24 @@ public:
         for (const glm::dvec3& p : s.points) lo = glm::min(lo, p), hi = glm::max(hi, p);
         size_ = std::max(glm::length(hi - lo), 1e-300);
         identity_ = true;
-        for (int i = 0; i <= 4 && identity_; ++i)
-            for (int j = 0; j <= 4 && identity_; ++j) {
-                const double u = box.u0 + (box.u1 - box.u0) * i / 4;
-                const double v = box.v0 + (box.v1 - box.v0) * j / 4;
+        for (int i = 0; i < sample_count && identity_; ++i)
+            for (int j = 0; j < sample_count && identity_; ++j) {
+                const double u = box.u0 + (box.u1 - box.u0) * samples[i];
+                const double v = box.v0 + (box.v1 - box.v0) * samples[j];
                 const auto p = inside(u, v) ? geom::surface_point(s, u, v) : std::nullopt;
                 identity_ = p && glm::length(*p - occt_point(original, u, v)) <= 1e-9 * size_;
             }
         if (identity_) return;
-        // One-dimensional maps through the middle of the box, checked on a 5 x 5 grid.
+        // One-dimensional maps through the middle of the box, checked on the same grid.
         const double um = 0.5 * (box.u0 + box.u1), vm = 0.5 * (box.v0 + box.v1);
         const glm::dvec2 mid = newton({um, vm}, occt_point(original, um, vm), guess({um, vm}));
         u_ref_ = mid.x;
         v_ref_ = mid.y;
         separable_ = true;
-        for (int i = 0; i <= 4 && separable_; ++i)
-            for (int j = 0; j <= 4 && separable_; ++j) {
-                const double u = box.u0 + (box.u1 - box.u0) * i / 4;
-                const double v = box.v0 + (box.v1 - box.v0) * j / 4;
+        for (int i = 0; i < sample_count && separable_; ++i)
+            for (int j = 0; j < sample_count && separable_; ++j) {
+                const double u = box.u0 + (box.u1 - box.u0) * samples[i];
+                const double v = box.v0 + (box.v1 - box.v0) * samples[j];
                 const glm::dvec2 m{map_u(u), map_v(v)};
                 const auto p = geom::surface_point(s, m.x, m.y);
                 separable_ = p && glm::length(*p - occt_point(original, u, v)) <= 1e-8 * size_;

@@ -36,11 +36,11 @@ using test::cad_dir;
 using test::cad_files;
 
 // How many faces of each file import trimmed with OCCT's area, as measured when the test was
-// written (2026-11-27): a file that drops below its count fails. The faces that do not are
-// printed with the reason (loops that could not be built: open wires beyond 1e-4 of the domain,
-// loops that leave the domain or cross, edges no fit follows; or areas that differ: on a plane
-// of trj3 OCCT's BRepGProp is itself off (its mesher's area is nearer isoparm's); on some
-// cylinders, cones and revolutions a mapped p-curve is off).
+// written (2026-11-27, 1172 of 1222): a file that drops below its count fails. The faces that do
+// not are printed with the reason: 45 whose loops could not be built (open wires beyond 1e-4 of
+// the domain, loops that leave the domain or cross, edges no fit follows), 2 offset faces not
+// converted, and 3 planes of trj3 whose area differs by 4.7e-4: there OCCT's BRepGProp is
+// itself off (the p-curves' own enclosed area is isoparm's; OCCT's mesher is nearer it).
 const std::map<std::string, int> measured_matches = {
     {"BUC50025.igs", 7},
     {"OCC8842_cone_CATIA.igs", 3},
@@ -48,16 +48,16 @@ const std::map<std::string, int> measured_matches = {
     {"bug22869_Spring.igs", 3},
     {"bug24283_spheres.stp", 1},
     {"bug24595_281390.stp", 19},
-    {"bug32596_abc_0_13.step", 86},
-    {"catiav5_Ventilator.stp", 283},
-    {"ec_turbine-A.stp", 48},
+    {"bug32596_abc_0_13.step", 91},
+    {"catiav5_Ventilator.stp", 285},
+    {"ec_turbine-A.stp", 50},
     {"hammer.iges", 41},
     {"nx9_face_recognition_sample_part.stp", 23},
     {"occ22470.igs", 18},
     {"splinecage.stp", 4},
     {"sw2013_featuretype.STEP", 96},
     {"trj2_as1-tc-214.stp", 160},
-    {"trj3_s1-ct-214.stp", 160},
+    {"trj3_s1-ct-214.stp", 175},
     {"trj3_s1-id-203.stp", 134},
     {"trj7_k1-al-214.stp", 55},
 };
@@ -128,7 +128,7 @@ TEST(RealCadFilesTrimmed, FacesImportTrimmedWithOcctsAreas) {
     }
     std::cout << "all files: " << match << " of " << faces << " faces trimmed and matching\n";
     EXPECT_GT(faces, 1000);
-    EXPECT_GE(match, 1148) << "of " << faces << " faces (" << trimmed << " trimmed)";
+    EXPECT_GE(match, 1172) << "of " << faces << " faces (" << trimmed << " trimmed)";
 }
 
 // Imported trimmed faces written again by isoparm (STEP and IGES, all faces of a file in one
