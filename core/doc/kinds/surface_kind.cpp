@@ -110,7 +110,9 @@ void translate(SurfaceObject& s, const glm::dvec3& d) {
     for (glm::dvec3& p : control_points(s)) p += d;
 }
 
+// A trimmed surface goes out as a trimmed face (IGES 144, STEP ADVANCED_FACE with its bounds).
 ExactForm exact_form(const SurfaceObject& s) {
+    if (!s.trim.empty()) return geom::TrimmedSurface{s.surface, s.trim};
     return s.surface;
 }
 
