@@ -14,7 +14,7 @@ struct SurfaceObject {
     geom::Surface surface;
     // Empty: the whole domain. Scenes write "trim" only when it is not empty, so an untrimmed
     // surface saves as it always did.
-    geom::Trim trim;
+    geom::Trim trim{};
 
     static constexpr ObjectKind kind = ObjectKind::surface;
     static constexpr std::array<std::string_view, 2> shape_members{"surface", "trim"};
