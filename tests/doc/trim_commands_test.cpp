@@ -112,4 +112,28 @@ TEST(TrimCommands, TheTrimIsPartOfTheSurfaceKindsFacts) {
     EXPECT_EQ(st.error().path.rfind("/trim/outer", 0), 0u) << st.error().path;
 }
 
+TEST(TrimCommands, RefinementKeepsTheTrimAndSplitsAreRefusedNotSilentlyUntrimmed) {
+    Document doc = sample_document();
+    const geom::Trim trim = square_with_hole(surface_of(doc, grid_id));
+    History h;
+    ASSERT_TRUE(h.execute(doc, set_trim(grid_id, trim)).ok());
+    // Knot insertion and degree elevation keep the domain, so the loops stay.
+    ASSERT_TRUE(h.execute(doc, insert_knot(grid_id, geom::Dir::u, 0.3)).ok());
+    ASSERT_TRUE(h.execute(doc, elevate_degree(grid_id, geom::Dir::v, 1)).ok());
+    EXPECT_EQ(trim_of_object(doc, grid_id).loop_count(), 2);
+    // A split and a conversion into several Bezier pieces would have to divide the loops:
+    // refused, saying so, and the document is unchanged.
+    const Document before = doc;
+    auto st = split_object(grid_id, geom::Dir::u, 0.5)->apply(doc);
+    ASSERT_FALSE(st.ok());
+    EXPECT_NE(st.error().message.find("trim"), std::string::npos) << st.error().message;
+    st = convert_object(grid_id, geom::SplineType::bezier, false)->apply(doc);
+    ASSERT_FALSE(st.ok());
+    EXPECT_NE(st.error().message.find("trim"), std::string::npos) << st.error().message;
+    EXPECT_TRUE(same_document(doc, before));
+    // One piece: the trim stays.
+    ASSERT_TRUE(h.execute(doc, convert_object(grid_id, geom::SplineType::nurbs, false)).ok());
+    EXPECT_EQ(trim_of_object(doc, grid_id).loop_count(), 2);
+}
+
 } // namespace
