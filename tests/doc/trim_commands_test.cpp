@@ -136,4 +136,25 @@ TEST(TrimCommands, RefinementKeepsTheTrimAndSplitsAreRefusedNotSilentlyUntrimmed
     EXPECT_EQ(trim_of_object(doc, grid_id).loop_count(), 2);
 }
 
+TEST(TrimCommands, AnEndKnotCannotMovePastTheLoops) {
+    Document doc = sample_document();
+    History h;
+    ASSERT_TRUE(h.execute(doc, set_trim(grid_id, square_with_hole(surface_of(doc, grid_id)))).ok());
+    const geom::Surface& s = surface_of(doc, grid_id);
+    const int last = static_cast<int>(s.knots_u.size()) - 1 - s.degree_u;
+    const double end = s.knots_u[static_cast<std::size_t>(last)];
+    const Document before = doc;
+    // The domain's upper u end moved in past the outer loop (at 90% of the domain): refused.
+    const double inward = s.knots_u[static_cast<std::size_t>(last - 1)] +
+                          0.5 * (end - s.knots_u[static_cast<std::size_t>(last - 1)]);
+    auto st = move_knot_run(grid_id, geom::Dir::u, last, s.degree_u + 1, inward)->apply(doc);
+    ASSERT_FALSE(st.ok());
+    EXPECT_EQ(st.error().path, "/value");
+    EXPECT_NE(st.error().message.find("trim"), std::string::npos) << st.error().message;
+    EXPECT_TRUE(same_document(doc, before));
+    // Moved outward: the loops stay inside.
+    EXPECT_TRUE(
+        h.execute(doc, move_knot_run(grid_id, geom::Dir::u, last, s.degree_u + 1, end + 1)).ok());
+}
+
 } // namespace
