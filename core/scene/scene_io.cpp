@@ -161,7 +161,9 @@ Expected<Shape> read_shape(const json& j, const std::string& at, ObjectKind kind
     });
     if (!shape) return shape.error();
     // The document's own rules (size caps, finite points, the implicit's box and parameters).
-    if (auto st = detail::validate_shape(*shape); !st) return st.error().under(gat);
+    // A surface's trim is a member beside its geometry, not inside it.
+    if (auto st = detail::validate_shape(*shape); !st)
+        return st.error().under(st.error().path.starts_with("/trim") ? at : gat);
     return shape;
 }
 

@@ -50,7 +50,8 @@ TEST(TrimCommands, RemoveTrimGivesTheWholeDomainBack) {
     const Document after = expect_undo_redo_exact(doc, remove_trim(grid_id));
     EXPECT_TRUE(trim_of_object(after, grid_id).empty());
     // An empty trim given to set_trim removes it as well.
-    Document again = doc;
+    Document again = sample_document();
+    ASSERT_TRUE(set_trim(grid_id, square_with_hole(surface_of(again, grid_id)))->apply(again).ok());
     ASSERT_TRUE(set_trim(grid_id, geom::Trim{})->apply(again).ok());
     EXPECT_TRUE(trim_of_object(again, grid_id).empty());
 }
@@ -138,23 +139,19 @@ TEST(TrimCommands, RefinementKeepsTheTrimAndSplitsAreRefusedNotSilentlyUntrimmed
 
 TEST(TrimCommands, AnEndKnotCannotMovePastTheLoops) {
     Document doc = sample_document();
+    // Unclamped u knots: the domain's ends are the knots u2 = 2 and u4 = 4, which may move.
+    std::get<SurfaceObject>(doc.find(grid_id)->shape).surface.knots_u = {0, 1, 2, 3, 4, 5, 6};
     History h;
     ASSERT_TRUE(h.execute(doc, set_trim(grid_id, square_with_hole(surface_of(doc, grid_id)))).ok());
-    const geom::Surface& s = surface_of(doc, grid_id);
-    const int last = static_cast<int>(s.knots_u.size()) - 1 - s.degree_u;
-    const double end = s.knots_u[static_cast<std::size_t>(last)];
     const Document before = doc;
-    // The domain's upper u end moved in past the outer loop (at 90% of the domain): refused.
-    const double inward = s.knots_u[static_cast<std::size_t>(last - 1)] +
-                          0.5 * (end - s.knots_u[static_cast<std::size_t>(last - 1)]);
-    auto st = move_knot_run(grid_id, geom::Dir::u, last, s.degree_u + 1, inward)->apply(doc);
+    // The lower u end moved in past the outer loop (at u = 2.2): refused.
+    auto st = move_knot_run(grid_id, geom::Dir::u, 2, 1, 2.5)->apply(doc);
     ASSERT_FALSE(st.ok());
     EXPECT_EQ(st.error().path, "/value");
     EXPECT_NE(st.error().message.find("trim"), std::string::npos) << st.error().message;
     EXPECT_TRUE(same_document(doc, before));
     // Moved outward: the loops stay inside.
-    EXPECT_TRUE(
-        h.execute(doc, move_knot_run(grid_id, geom::Dir::u, last, s.degree_u + 1, end + 1)).ok());
+    EXPECT_TRUE(h.execute(doc, move_knot_run(grid_id, geom::Dir::u, 2, 1, 1.5)).ok());
 }
 
 } // namespace

@@ -623,7 +623,7 @@ TEST(SceneObjectDisplay, VersionOneOrBadMembersAreRefusedWithTheirPath) {
     const auto wrong = scene_from_text(scene(2, bad));
     ASSERT_FALSE(wrong);
     EXPECT_EQ(wrong.error().path.rfind("/objects/0/display", 0), 0u) << wrong.error().path;
-    const auto newer = scene_from_text(scene(3, object));
+    const auto newer = scene_from_text(scene(4, object));
     ASSERT_FALSE(newer);
     EXPECT_EQ(newer.error().path, "/version");
 }
