@@ -7,6 +7,7 @@
 #include "core/doc/commands_multires.hpp"
 #include "core/doc/commands_points.hpp"
 #include "core/doc/commands_triangle.hpp"
+#include "core/doc/commands_trim.hpp"
 
 namespace isoparm::doc {
 
@@ -24,6 +25,10 @@ struct Build {
         return rename_object(s.id, std::move(s.name));
     }
     std::unique_ptr<Command> operator()(SetVisibleSpec& s) { return set_visible(s.id, s.visible); }
+    std::unique_ptr<Command> operator()(SetTrimSpec& s) {
+        return set_trim(s.id, std::move(s.trim));
+    }
+    std::unique_ptr<Command> operator()(RemoveTrimSpec& s) { return remove_trim(s.id); }
     std::unique_ptr<Command> operator()(EditShapeSpec& s) {
         return edit_shape(s.id, std::move(s.shape), std::move(s.label), std::move(s.merge_key));
     }

@@ -235,6 +235,17 @@ struct TransformPointsSpec {
     std::string label; // empty: "Transform 3 points"
 };
 
+// A surface's trim loops set (empty: removed) or removed (commands_trim.hpp).
+struct SetTrimSpec {
+    static constexpr const char* script_name = "set_trim";
+    std::uint64_t id = 0;
+    geom::Trim trim;
+};
+struct RemoveTrimSpec {
+    static constexpr const char* script_name = "remove_trim";
+    std::uint64_t id = 0;
+};
+
 // Every command; each names itself (Spec::name), and core/scene/command_json.cpp gives each
 // its JSON form (a spec without one does not build).
 using CommandSpec =
@@ -245,7 +256,7 @@ using CommandSpec =
                  SetCurvePlaneSpec, MakeCompatibleSpec, RemoveKnotSpec, ReduceDegreeSpec,
                  SplitKnotSpec, CloseSpec, ConvertSpec, AddObjectsSpec, MultiresEditSpec,
                  SplitTriangleSpec, ConstructSpec, EditConstructionSpec, DetachSpec, MovePointsSpec,
-                 TransformPointsSpec>;
+                 TransformPointsSpec, SetTrimSpec, RemoveTrimSpec>;
 
 namespace detail {
 template <class V> struct SpecNames;

@@ -11,6 +11,7 @@
 #include "core/doc/patches.hpp"
 #include "core/doc/shape_edit.hpp"
 #include "core/geom/knots.hpp"
+#include "core/geom/trim/trim_validate.hpp"
 
 namespace isoparm::doc {
 
@@ -433,6 +434,17 @@ public:
                               "moving knot " + name + " to " + geom::format_number(value_) +
                                   " is not allowed: " + st.error().message,
                               "/value");
+        // A trimmed surface's loops must stay inside its domain when an end knot moves.
+        if (const geom::Trim* t = trim_of(obj.shape); t && !t->empty()) {
+            geom::Surface moved_surface = *obj.surface();
+            (dir_ == Dir::u ? moved_surface.knots_u : moved_surface.knots_v) = moved;
+            if (geom::Status st = geom::validate_trim(*t, geom::domain(moved_surface)); !st)
+                return make_error(
+                    ErrorCode::domain,
+                    "moving knot " + name + " to " + geom::format_number(value_) +
+                        " would leave the trim outside the domain: " + st.error().message,
+                    "/value");
+        }
         old_ = K[k_];
         std::fill(U->begin() + k_, U->begin() + last + 1, value_);
         return geom::Ok{};

@@ -59,7 +59,16 @@ geom::Expected<std::vector<Shape>> converted(const Object& obj, SplineType to, b
     if (const geom::Surface* s = surface_of(shape)) {
         auto pieces = geom::convert(*s, to);
         if (!pieces) return rehome(pieces.error());
-        for (geom::Surface& p : *pieces) out.push_back(SurfaceObject{std::move(p)});
+        const geom::Trim& trim = *trim_of(obj.shape);
+        if (!trim.empty() && pieces->size() > 1)
+            return geom::make_error(geom::ErrorCode::schema,
+                                    "object '" + obj.name + "' is trimmed: as " +
+                                        geom::label_of(to) + " it would be " +
+                                        std::to_string(pieces->size()) +
+                                        " pieces, and a trim is not divided among pieces "
+                                        "(remove the trim first)",
+                                    "/to");
+        for (geom::Surface& p : *pieces) out.push_back(SurfaceObject{std::move(p), trim});
     } else {
         const CurveObject& c = *curve_object_of(shape);
         auto pieces = geom::convert(c.curve, to);

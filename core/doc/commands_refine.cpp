@@ -121,6 +121,12 @@ public:
         if (!found) return found.error();
         Object& obj = **found;
         Shape first, second;
+        if (is_trimmed(obj))
+            return geom::make_error(geom::ErrorCode::schema,
+                                    "object '" + obj.name +
+                                        "' is trimmed: a split does not divide its trim loops "
+                                        "(remove the trim first)",
+                                    "/id");
         if (const geom::Surface* s = obj.surface()) {
             auto r = geom::split(*s, dir_, t_);
             if (!r) return r.error();

@@ -33,6 +33,13 @@ geom::Surface* surface_of(Shape& shape) {
 const geom::Surface* surface_of(const Shape& shape) {
     return part_of(shape, &SurfaceObject::surface);
 }
+const geom::Trim* trim_of(const Shape& shape) {
+    return part_of(shape, &SurfaceObject::trim);
+}
+bool is_trimmed(const Object& o) {
+    const geom::Trim* t = trim_of(o.shape);
+    return t && !t->empty();
+}
 CurveObject* curve_object_of(Shape& shape) {
     return std::get_if<CurveObject>(&shape);
 }

@@ -52,6 +52,8 @@ template <class F, std::size_t I = 0> decltype(auto) with_kind_type(ObjectKind k
 // code for some kinds asks for those, and refuses the others with kind_refusal).
 geom::Surface* surface_of(Shape& shape);
 const geom::Surface* surface_of(const Shape& shape);
+// A surface's trim loops (empty: untrimmed); nullptr for another kind.
+const geom::Trim* trim_of(const Shape& shape);
 CurveObject* curve_object_of(Shape& shape);
 const CurveObject* curve_object_of(const Shape& shape);
 geom::Curve* curve_of(Shape& shape);
@@ -102,6 +104,8 @@ struct Object {
 // "object 'T' is a triangular patch; <rest>" (`schema` at path): the refusal of code that serves
 // other kinds, naming the object's real kind.
 geom::Error kind_refusal(const Object& o, const std::string& rest, const std::string& path = "/id");
+// Whether o is a surface with trim loops.
+bool is_trimmed(const Object& o);
 
 // Whether moving a control point of a subpatch also moves its neighbours' so the border stays
 // closed (c0) and, where degrees and knots allow it, tangent-continuous (c1).

@@ -98,7 +98,9 @@ std::unique_ptr<Command> refinement_command(std::uint64_t id, CommandSpec spec, 
         if (const geom::Surface* s = obj.surface()) {
             auto refined = r.surface(*s);
             if (!refined) return refined.error();
-            return Shape{SurfaceObject{std::move(refined).value()}};
+            // The trim stays: refinement keeps the domain (validate_shape refuses an edit whose
+            // new domain the loops leave).
+            return Shape{SurfaceObject{std::move(refined).value(), *trim_of(obj.shape)}};
         }
         const CurveObject& c = *obj.curve_object();
         auto refined = r.curve(c.curve);

@@ -8,6 +8,7 @@
 
 #include "core/json/fields.hpp"
 #include "core/json/shapes.hpp"
+#include "core/json/trim_json.hpp"
 #include "core/scene/recipe_json.hpp"
 #include "core/scene/scene_io.hpp"
 
@@ -544,6 +545,28 @@ template <> struct Form<DetachSpec> {
     static constexpr std::string_view members[]{"id"};
     static DetachSpec read(Members& m) { return DetachSpec{m.id("id")}; }
     static json write(const DetachSpec& s) { return {{"id", s.id}}; }
+};
+template <> struct Form<SetTrimSpec> {
+    static constexpr std::string_view members[]{"id", "trim"};
+    static SetTrimSpec read(Members& m) {
+        SetTrimSpec s;
+        s.id = m.id("id");
+        s.trim = m.read<geom::Trim>(
+            "trim", [](const json& v, const std::string& path) -> Expected<geom::Trim> {
+                auto t = json_io::trim_from_json(v);
+                if (!t) return t.error().under(path);
+                return t;
+            });
+        return s;
+    }
+    static json write(const SetTrimSpec& s) {
+        return {{"id", s.id}, {"trim", json_io::trim_to_json(s.trim)}};
+    }
+};
+template <> struct Form<RemoveTrimSpec> {
+    static constexpr std::string_view members[]{"id"};
+    static RemoveTrimSpec read(Members& m) { return RemoveTrimSpec{m.id("id")}; }
+    static json write(const RemoveTrimSpec& s) { return {{"id", s.id}}; }
 };
 template <> struct Form<MovePointsSpec> {
     static constexpr std::string_view members[]{"id", "points", "positions", "label"};

@@ -87,9 +87,10 @@ geom::Expected<ExportResult> exact(const std::vector<const doc::Object*>& object
             r.skipped.push_back(label(*o) + ": " + none->why);
             continue;
         }
-        exchange::ExactShape shape = std::holds_alternative<geom::Surface>(form)
-                                         ? exchange::ExactShape(std::get<geom::Surface>(form))
-                                         : exchange::ExactShape(std::get<geom::Curve>(form));
+        exchange::ExactShape shape =
+            std::visit(doc::overloaded{[](doc::NoForm&) { return exchange::ExactShape(); },
+                                       [](auto& g) { return exchange::ExactShape(std::move(g)); }},
+                       form);
         if (options.format != ExportFormat::obj)
             if (geom::Status st = exchange::check_positive_weights(shape); !st) {
                 // The shared message ends with the protocol's format names; say the mesh

@@ -81,8 +81,11 @@ geom::Expected<ImportedObjects> import_text(std::string_view text, ImportFormat 
             co.plane = doc::CurvePlane::free3d;
             co.knot_mode = doc::CurveKnotMode::custom;
             o.shape = std::move(co);
+        } else if (auto* t = std::get_if<geom::TrimmedSurface>(&shape.shape)) {
+            // A face of a solid: its surface and the loops of its wires.
+            o.shape = doc::SurfaceObject{std::move(t->surface), std::move(t->trim)};
         } else {
-            o.shape = doc::SurfaceObject{std::move(*exchange::surface_of(shape.shape))};
+            o.shape = doc::SurfaceObject{std::move(std::get<geom::Surface>(shape.shape)), {}};
         }
         // The document's own rules (add_object's checks, on a scratch document), so a scene
         // written from these loads again; an object they refuse is left out, with the reason.

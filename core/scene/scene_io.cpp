@@ -161,7 +161,9 @@ Expected<Shape> read_shape(const json& j, const std::string& at, ObjectKind kind
     });
     if (!shape) return shape.error();
     // The document's own rules (size caps, finite points, the implicit's box and parameters).
-    if (auto st = detail::validate_shape(*shape); !st) return st.error().under(gat);
+    // A surface's trim is a member beside its geometry, not inside it.
+    if (auto st = detail::validate_shape(*shape); !st)
+        return st.error().under(st.error().path.starts_with("/trim") ? at : gat);
     return shape;
 }
 
@@ -466,12 +468,14 @@ json scene_to_json(const Document& doc) {
 
     json scene = json::object();
     scene["format"] = scene_format_name;
-    // Version 2 only where it is needed (an object's own display toggles or a construction), so
-    // other scenes save as version 1 and read in older builds as before.
+    // Version 2 only where it is needed (an object's own display toggles or a construction),
+    // version 3 where a surface is trimmed, so other scenes save as version 1 and read in older
+    // builds as before.
     const bool constructions =
         std::any_of(doc.objects.begin(), doc.objects.end(),
                     [](const Object& o) { return o.construction.has_value(); });
-    scene["version"] = own_display || constructions ? scene_format_version : 1;
+    const bool trims = std::any_of(doc.objects.begin(), doc.objects.end(), is_trimmed);
+    scene["version"] = trims ? 3 : own_display || constructions ? 2 : 1;
     scene["objects"] = std::move(objects);
     scene["colors"] = std::move(colors);
     scene["display"] = std::move(display);
@@ -549,6 +553,11 @@ geom::Status read_scene_objects(const json& j, std::int64_t version, Document& d
                                 "version " +
                                     std::to_string(version),
                                 at + "/display");
+        if (version < 3 && oj.is_object() && oj.contains("trim"))
+            return schema_error("a surface's trim needs format version 3, this scene says "
+                                "version " +
+                                    std::to_string(version),
+                                at + "/trim");
         if (own) own_displays.emplace_back(k, &oj.at("display"));
         auto o = own ? object_from_json(without_display(oj), at) : object_from_json(oj, at);
         if (!o) return o.error();

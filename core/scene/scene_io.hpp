@@ -14,9 +14,10 @@ namespace isoparm::scene {
 // The scene format's name and the newest version this build reads and writes. Version 2 added
 // an object's own display toggles ("display" in the object) and its "construction" (a recipe
 // that keeps it linked to its inputs); a scene is written as version 1 while none of its
-// objects has either, so that it stays readable by older builds.
+// objects has either, so that it stays readable by older builds. Version 3 added a surface's
+// "trim" (its trim loops), written only by scenes with a trimmed surface.
 inline constexpr const char* scene_format_name = "isoparm-scene";
-inline constexpr int scene_format_version = 2;
+inline constexpr int scene_format_version = 3;
 // The largest object (and patch group) id a file or command may name: 2^53, exact in every
 // JSON reader.
 inline constexpr std::uint64_t max_object_id = 9007199254740992ull;

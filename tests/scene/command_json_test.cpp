@@ -8,6 +8,7 @@
 
 #include "core/doc/commands.hpp"
 #include "core/doc/commands_curve.hpp"
+#include "core/geom/trim/trim.hpp"
 #include "core/scene/command_json.hpp"
 #include "tests/doc/doc_fixtures.hpp"
 
@@ -80,6 +81,9 @@ std::vector<CommandSpec> one_of_each() {
                             ""},
         TransformPointsSpec{
             curve_id, {{1, -1}, {2, -1}}, mirror(0), Pivot::point, glm::dvec3(0.5, 0, 0), "Mirror"},
+        SetTrimSpec{grid_id,
+                    geom::Trim{std::nullopt, {geom::circle_loop({0.5, 0.5}, 0.25, true).value()}}},
+        RemoveTrimSpec{grid_id},
     };
 }
 

@@ -5,6 +5,7 @@
 #include "core/exchange/mesh_weld.hpp"
 #include "core/geom/construct.hpp"
 #include "core/geom/primitives.hpp"
+#include "core/geom/trim/trim.hpp"
 #include "core/scene/export_document.hpp"
 
 namespace {
@@ -129,6 +130,44 @@ TEST(ExportDocument, NonPositiveWeightsAreRefusedByIgesAndStepOnly) {
         options.format = f;
         EXPECT_TRUE(scene::export_document(objects, options));
     }
+}
+
+} // namespace
+
+namespace {
+
+// A trimmed surface exports as itself: its trimmed face in IGES and STEP (the hole an inner
+// bound), its trimmed mesh in the mesh formats.
+TEST(ExportDocument, ATrimmedSurfaceExportsItsTrimmedFaceAndMesh) {
+    doc::Document d;
+    doc::SurfaceObject plate{doc::make_planar_grid(4, 4, 3, 3, geom::SplineType::bspline), {}};
+    d.objects.push_back(object(1, "plate", plate));
+    const auto objects = *scene::export_objects(d, "");
+    scene::ExportOptions options;
+    options.name = "plate";
+    options.format = ExportFormat::step;
+    const auto plain = scene::export_document(objects, options);
+    options.format = ExportFormat::stl;
+    options.samples = 16;
+    const auto plain_stl = scene::export_document(objects, options);
+    ASSERT_TRUE(plain && plain_stl);
+    EXPECT_EQ(plain->bytes.find("FACE_BOUND("), std::string::npos);
+
+    std::get<doc::SurfaceObject>(d.objects[0].shape)
+        .trim.holes.push_back(geom::circle_loop({0.5, 0.5}, 0.25, /*clockwise=*/true).value());
+    options.format = ExportFormat::step;
+    const auto trimmed = scene::export_document(objects, options);
+    ASSERT_TRUE(trimmed) << trimmed.error().message;
+    EXPECT_NE(trimmed->bytes.find("FACE_BOUND("), std::string::npos);
+    EXPECT_NE(trimmed->bytes.find("PCURVE"), std::string::npos);
+    options.format = ExportFormat::iges;
+    const auto iges = scene::export_document(objects, options);
+    ASSERT_TRUE(iges) << iges.error().message;
+    EXPECT_NE(iges->bytes.find("     144"), std::string::npos); // a trimmed surface entity
+    options.format = ExportFormat::stl;
+    const auto stl = scene::export_document(objects, options);
+    ASSERT_TRUE(stl) << stl.error().message;
+    EXPECT_NE(stl->bytes.size(), plain_stl->bytes.size());
 }
 
 } // namespace

@@ -9,6 +9,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <nlohmann/json.hpp>
+
 #include "core/scene/scene_io.hpp"
 #include "tests/doc/doc_fixtures.hpp"
 
@@ -17,6 +19,7 @@ using namespace isoparm::doc;
 using namespace isoparm::scene;
 using namespace isoparm::doc::testing;
 using geom::ErrorCode;
+using nlohmann::json;
 namespace fs = std::filesystem;
 
 namespace {
@@ -213,10 +216,69 @@ TEST(SceneRead, TopLevelErrors) {
 
 TEST(SceneRead, NewerVersionIsRefusedBeforeItsNewMembers) {
     auto doc = scene_from_text(
-        R"({"format": "isoparm-scene", "version": 3, "objects": [], "patches": []})");
+        R"({"format": "isoparm-scene", "version": 4, "objects": [], "patches": []})");
     ASSERT_FALSE(doc.ok());
     EXPECT_EQ(doc.error().path, "/version");
-    EXPECT_NE(doc.error().message.find("version 3"), std::string::npos) << doc.error().message;
+    EXPECT_NE(doc.error().message.find("version 4"), std::string::npos) << doc.error().message;
+}
+
+// good_surface's domain [0, 1]^2 kept inside a square, less a square hole (clockwise).
+const std::string good_trim =
+    R"("trim": {"outer": [{"type": "bspline", "degree": 1, "knots": [0, 0, 1, 2, 3, 4, 4],
+                          "points": [[0.1, 0.1], [0.9, 0.1], [0.9, 0.9], [0.1, 0.9], [0.1, 0.1]]}],
+                "holes": [[{"type": "bspline", "degree": 1, "knots": [0, 0, 1, 2, 3, 4, 4],
+                          "points": [[0.4, 0.4], [0.4, 0.6], [0.6, 0.6], [0.6, 0.4], [0.4, 0.4]]}]]})";
+
+std::string trimmed_surface(const std::string& trim) {
+    return good_surface.substr(0, good_surface.size() - 1) + ", " + trim + "}";
+}
+
+TEST(SceneTrim, ATrimmedSurfaceRoundTripsAsVersionThreeAndAnUntrimmedOneAsBefore) {
+    auto doc = scene_from_text(R"({"format": "isoparm-scene", "version": 3, "objects": [)" +
+                               trimmed_surface(good_trim) + "]}");
+    ASSERT_TRUE(doc.ok()) << doc.error().path << ": " << doc.error().message;
+    const geom::Trim* trim = trim_of(doc->objects[0].shape);
+    ASSERT_NE(trim, nullptr);
+    EXPECT_TRUE(trim->outer.has_value());
+    EXPECT_EQ(trim->holes.size(), 1u);
+    const json written = json::parse(scene_to_text(*doc));
+    EXPECT_EQ(written.at("version"), 3);
+    EXPECT_TRUE(written.at("objects").at(0).contains("trim"));
+    EXPECT_TRUE(same_document(*doc, round_trip(*doc)));
+    // Without the trim the same scene writes version 1 and no "trim" member.
+    std::get<SurfaceObject>(doc->objects[0].shape).trim = {};
+    const json plain = json::parse(scene_to_text(*doc));
+    EXPECT_EQ(plain.at("version"), 1);
+    EXPECT_FALSE(plain.at("objects").at(0).contains("trim"));
+}
+
+TEST(SceneTrim, ATrimNeedsVersionThreeAndValidLoops) {
+    expect_error(scene_with(trimmed_surface(good_trim)), ErrorCode::schema, "/objects/0/trim");
+    const auto v3 = [](const std::string& object) {
+        return R"({"format": "isoparm-scene", "version": 3, "objects": [)" + object + "]}";
+    };
+    // The outer loop run clockwise: named at the loop.
+    std::string clockwise = good_trim;
+    const std::string ccw = "[[0.1, 0.1], [0.9, 0.1], [0.9, 0.9], [0.1, 0.9], [0.1, 0.1]]";
+    clockwise.replace(clockwise.find(ccw), ccw.size(),
+                      "[[0.1, 0.1], [0.1, 0.9], [0.9, 0.9], [0.9, 0.1], [0.1, 0.1]]");
+    auto doc = scene_from_text(v3(trimmed_surface(clockwise)));
+    ASSERT_FALSE(doc.ok());
+    EXPECT_EQ(doc.error().path.rfind("/objects/0/trim/outer", 0), 0u) << doc.error().path;
+    EXPECT_NE(doc.error().message.find("outer loop"), std::string::npos) << doc.error().message;
+    // A hole that is not closed.
+    std::string open = good_trim;
+    open.replace(open.rfind("[0.4, 0.4]]"), 11, "[0.45, 0.4]]");
+    doc = scene_from_text(v3(trimmed_surface(open)));
+    ASSERT_FALSE(doc.ok());
+    EXPECT_EQ(doc.error().path.rfind("/objects/0/trim/holes/0", 0), 0u) << doc.error().path;
+    // A trim on another kind of object is an unknown member there.
+    const std::string curve =
+        R"({"name": "c", "kind": "curve", "curve": {"type": "bspline", "degree": 1,
+            "knots": [0, 0, 1, 1], "points": [[0, 0, 0], [1, 0, 0]]}, )" +
+        good_trim + "}";
+    doc = scene_from_text(v3(curve));
+    ASSERT_FALSE(doc.ok());
 }
 
 TEST(SceneRead, ObjectErrors) {
@@ -561,7 +623,7 @@ TEST(SceneObjectDisplay, VersionOneOrBadMembersAreRefusedWithTheirPath) {
     const auto wrong = scene_from_text(scene(2, bad));
     ASSERT_FALSE(wrong);
     EXPECT_EQ(wrong.error().path.rfind("/objects/0/display", 0), 0u) << wrong.error().path;
-    const auto newer = scene_from_text(scene(3, object));
+    const auto newer = scene_from_text(scene(4, object));
     ASSERT_FALSE(newer);
     EXPECT_EQ(newer.error().path, "/version");
 }

@@ -3,7 +3,11 @@
 // analysis kind changes, dropped when a surface is no longer drawn.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "core/geom/knots.hpp"
+#include "core/geom/trim/trim.hpp"
+#include "core/geom/trim/trimmed_tessellator.hpp"
 #include "ui/view/mesh_data.hpp"
 #include "ui/view/surface_meshes.hpp"
 
@@ -88,4 +92,61 @@ TEST(SurfaceMeshes, AnAnalysisKindRemakesWholeAndAnUndrawnSurfaceIsDropped) {
     draws = draw_of(s);
     EXPECT_EQ(meshes.update(draws, AnalysisKind::off), 1);
     EXPECT_FALSE(draws[0].display->partial);
+}
+
+namespace {
+
+// bicubic(n)'s domain [0, 1]^2 less a round hole in the middle.
+geom::Trim round_hole() {
+    geom::Trim t;
+    t.holes.push_back(geom::circle_loop({0.5, 0.5}, 0.25, /*clockwise=*/true).value());
+    return t;
+}
+
+} // namespace
+
+TEST(SurfaceMeshes, ATrimmedSurfaceDrawsTheTrimmedTessellatorsMesh) {
+    geom::Surface s = bicubic(8);
+    const geom::Trim trim = round_hole();
+    SurfaceMeshes meshes;
+    std::vector<SurfaceDraw> draws = draw_of(s);
+    draws[0].trim = &trim;
+    EXPECT_EQ(meshes.update(draws, AnalysisKind::off), 1);
+    const SurfaceMesh* m = draws[0].display;
+    ASSERT_NE(m, nullptr);
+    ASSERT_TRUE(m->trimmed.has_value());
+    // The mesh drawn is the trimmed tessellator's at the same sampling, bit for bit.
+    const geom::Mesh expected =
+        geom::tessellate_trimmed(s, trim, m->trimmed->samples_u, m->trimmed->samples_v);
+    EXPECT_EQ(m->geometry().positions, expected.positions);
+    EXPECT_EQ(m->geometry().triangles, expected.triangles);
+    EXPECT_EQ(m->vertices.size(), expected.positions.size() * floats_per_vertex);
+    EXPECT_FALSE(m->wire_pairs.empty());
+    // No vertex inside the hole (the loop's own points lie on the circle).
+    const geom::TrimmedLayout& layout = m->trimmed->tessellator->layout();
+    for (std::uint32_t k = 0; k < layout.vertex_count(); ++k) {
+        const glm::dvec2 p = layout.param(k);
+        EXPECT_GT(std::hypot(p.x - 0.5, p.y - 0.5), 0.25 - 1e-3) << p.x << ", " << p.y;
+    }
+    // Unchanged: nothing to do; a moved point: remade whole, the triangulation kept.
+    draws = draw_of(s);
+    draws[0].trim = &trim;
+    EXPECT_EQ(meshes.update(draws, AnalysisKind::off), 0);
+    const auto* layout_before = &m->trimmed->tessellator->layout();
+    s.points[10].z += 0.5;
+    draws = draw_of(s);
+    draws[0].trim = &trim;
+    EXPECT_EQ(meshes.update(draws, AnalysisKind::mean), 1);
+    m = draws[0].display;
+    EXPECT_FALSE(m->partial);
+    EXPECT_EQ(&m->trimmed->tessellator->layout(), layout_before);
+    EXPECT_EQ(
+        m->geometry().positions,
+        geom::tessellate_trimmed(s, trim, m->trimmed->samples_u, m->trimmed->samples_v).positions);
+    // The trim removed: the grid mesh again.
+    draws = draw_of(s);
+    EXPECT_EQ(meshes.update(draws, AnalysisKind::off), 1);
+    EXPECT_FALSE(draws[0].display->trimmed.has_value());
+    EXPECT_EQ(draws[0].display->geometry().positions.size(),
+              draws[0].display->mesh.mesh().positions.size());
 }

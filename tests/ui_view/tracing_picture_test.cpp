@@ -5,6 +5,9 @@
 #include <algorithm>
 
 #include "core/doc/commands.hpp"
+#include "core/doc/commands_trim.hpp"
+#include "core/geom/knots.hpp"
+#include "core/geom/trim/trim.hpp"
 #include "ui/view/tracing_picture.hpp"
 
 namespace isoparm::ui {
@@ -79,6 +82,50 @@ TEST(TracingPicture, WeightsAndTheHeldKnotAreLabelled) {
     EXPECT_FLOAT_EQ(t.indicator.x, 60 + 150);
     ASSERT_FALSE(t.picture.keep_clear.empty());
     expect_apart(t.picture);
+}
+
+// The default hill less a round hole in the middle of its domain.
+doc::Document hill_with_hole() {
+    doc::Document d = doc::default_document();
+    const geom::ParamRect dom = geom::domain(*d.objects[0].surface());
+    const glm::dvec2 mid{(dom.u.lo + dom.u.hi) / 2, (dom.v.lo + dom.v.hi) / 2};
+    geom::Trim t;
+    t.holes.push_back(
+        geom::circle_loop(mid, 0.25 * (dom.u.hi - dom.u.lo), /*clockwise=*/true).value());
+    doc::History h;
+    EXPECT_TRUE(h.execute(d, doc::set_trim(d.objects[0].id, t)).ok());
+    return d;
+}
+
+std::size_t trim_polylines(const Picture& pic, Rgba8 color) {
+    return static_cast<std::size_t>(
+        std::count_if(pic.shapes.begin(), pic.shapes.end(), [&](const Shape& s) {
+            const auto* p = std::get_if<shape::Polyline>(&s);
+            return p && p->closed && p->color == color && p->points.size() > 8;
+        }));
+}
+
+TEST(TracingPicture, ATrimmedSurfaceShowsItsLoopsAndTheIndicatorInTheHoleIsCutAway) {
+    doc::Document d = hill_with_hole();
+    const TracingInput in = input(300);
+    d.view.indicator = {0.5, 0.5}; // in the hole
+    TracingPicture t = tracing_picture(d, d.objects[0], in);
+    EXPECT_EQ(trim_polylines(t.picture, in.colors.trim), 1u);
+    EXPECT_TRUE(t.indicator_cut);
+    EXPECT_EQ(std::count_if(t.picture.labels.begin(), t.picture.labels.end(),
+                            [](const LabelRequest& r) { return r.text == "cut away"; }),
+              1);
+    d.view.indicator = {0.1, 0.1}; // kept
+    t = tracing_picture(d, d.objects[0], in);
+    EXPECT_FALSE(t.indicator_cut);
+    EXPECT_EQ(std::count_if(t.picture.labels.begin(), t.picture.labels.end(),
+                            [](const LabelRequest& r) { return r.text == "cut away"; }),
+              0);
+    expect_apart(t.picture);
+    // Untrimmed: no loop drawn.
+    const doc::Document plain = doc::default_document();
+    EXPECT_EQ(trim_polylines(tracing_picture(plain, plain.objects[0], in).picture, in.colors.trim),
+              0u);
 }
 
 } // namespace

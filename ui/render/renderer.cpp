@@ -171,7 +171,7 @@ struct Renderer::Impl {
             return m;
         }
         const SurfaceMesh& sm = *d.display;
-        const geom::Mesh& mesh = sm.mesh.mesh();
+        const geom::Mesh& mesh = sm.geometry();
         m.source = &mesh;
         if (m.surface_revision == sm.revision) return m;
         m.wire_stale = true;

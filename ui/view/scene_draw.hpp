@@ -22,6 +22,7 @@ struct SurfaceMesh;
 struct SurfaceDraw {
     std::uint64_t id = 0;
     const geom::Surface* surface = nullptr;
+    const geom::Trim* trim = nullptr; // the part of its domain kept (nullptr: all of it)
     int density = 32;
     // The surface's display mesh at `density` (surface_meshes.hpp fills it in before drawing;
     // its revision goes in mesh_revision).

@@ -6,6 +6,8 @@
 #include "core/doc/patches.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/status.hpp"
+#include "core/geom/trim/trim_classify.hpp"
+#include "core/geom/trim/trim_flatten.hpp"
 #include "ui/view/doc_access.hpp"
 
 namespace isoparm::ui {
@@ -105,6 +107,35 @@ void knot_tick_labels(Picture& pic, const TracingPicture& out, const geom::Surfa
     }
 }
 
+// Cells per side of the shading of what a trim cuts away.
+constexpr int trim_shade_cells = 64;
+
+// A trimmed surface's loops over its own part of the square, and the cells whose centres the
+// trim cuts away shaded.
+void trim_loops(Picture& pic, const geom::Trim& trim, const geom::ParamRect& own,
+                const geom::ParamRect& dom, const TracingInput& in) {
+    auto px = [&](double u, double v) { return param_pixel(in.square, dom, u, v); };
+    const geom::TrimClassifier classify(trim, own);
+    const int n = trim_shade_cells;
+    const double du = (own.u.hi - own.u.lo) / n, dv = (own.v.hi - own.v.lo) / n;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const glm::dvec2 centre{own.u.lo + (i + 0.5) * du, own.v.lo + (j + 0.5) * dv};
+            if (classify.classify(centre) == geom::TrimSide::cut)
+                pic.box(px(own.u.lo + i * du, own.v.lo + (j + 1) * dv),
+                        px(own.u.lo + (i + 1) * du, own.v.lo + j * dv), in.colors.cut);
+        }
+    // Chords within a thousandth of the domain: smooth at any zoom the square allows.
+    geom::FlattenRule rule;
+    rule.tolerance = 1e-3 * geom::domain_scale(own);
+    for (int k = 0; k < trim.loop_count(); ++k) {
+        std::vector<glm::vec2> points;
+        for (const glm::dvec2& p : geom::flatten_loop(trim.loop(k), rule).points)
+            points.push_back(px(p.x, p.y));
+        pic.polyline(std::move(points), in.colors.trim, 2.0f * in.scale, /*closed=*/true);
+    }
+}
+
 // The ends of the shared domain where the current patch does not reach them.
 void shared_domain_ends(Picture& pic, const geom::ParamRect& own, const geom::ParamRect& dom,
                         const TracingInput& in) {
@@ -199,13 +230,28 @@ TracingPicture tracing_picture(const doc::Document& d, const doc::Object& obj,
 
     pic.begin_clip(canvas);
     if (in.denominator && geom::is_rational(s.type)) denominator(pic, s, *in.denominator, dom, in);
-    // The indicator with its two isoparametric lines.
+    const geom::Trim* trim = doc::trim_of(obj.shape);
+    if (trim && !trim->empty()) {
+        trim_loops(pic, *trim, own, dom, in);
+        const glm::dvec2 at{dom.u.lo + d.view.indicator.x * (dom.u.hi - dom.u.lo),
+                            dom.v.lo + d.view.indicator.y * (dom.v.hi - dom.v.lo)};
+        out.indicator_cut = !own.contains(at) ||
+                            geom::TrimClassifier(*trim, own).classify(at) == geom::TrimSide::cut;
+    }
+    // The indicator with its two isoparametric lines; hollow where the trim cuts it away.
     const glm::vec2 ip = domain_to_pixel(sq, d.view.indicator);
     out.indicator = ip;
     pic.line({ip.x, a.y}, {ip.x, b.y}, c.cross, 1.5f * k);
     pic.line({a.x, ip.y}, {b.x, ip.y}, c.cross, 1.5f * k);
-    pic.disk(ip, 7 * k, c.indicator, rgba8(0, 0, 0), 1.5f * k);
+    if (out.indicator_cut)
+        pic.disk(ip, 7 * k, 0, c.indicator, 2.5f * k);
+    else
+        pic.disk(ip, 7 * k, c.indicator, rgba8(0, 0, 0), 1.5f * k);
     pic.end_clip();
+    if (out.indicator_cut)
+        pic.label(ip, "cut away", c.indicator, 130).tooltip =
+            "the indicator is outside the trimmed surface's kept region: no point of the surface "
+            "there";
     if (canvas.contains(ip.x, ip.y))
         pic.keep_clear.push_back({ip.x - 7 * k, ip.y - 7 * k, 14 * k, 14 * k});
     if (in.weights && geom::is_rational(s.type)) weight_labels(pic, s, dom, in);

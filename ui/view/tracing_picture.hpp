@@ -1,8 +1,10 @@
 // The tracing square's drawing (pure), one code for the Domain and knots panel and for a vector
 // figure of the tracing view: the domain (the patch group's whole), the current patch's part,
 // the knot lines, the ticks with their values and multiplicities, the indicator with its two
-// isoparametric lines, the denominator's negative part and zero set, and the weights at their
-// Greville points. Every text is a label of the Picture (the one placer lays them out).
+// isoparametric lines, the denominator's negative part and zero set, the weights at their
+// Greville points, and a trimmed surface's loops with what they cut away shaded (the indicator
+// drawn hollow where it leaves the kept region: no point of the trimmed surface there). Every text
+// is a label of the Picture (the one placer lays them out).
 #pragma once
 
 #include <optional>
@@ -27,6 +29,7 @@ struct TracingColors {
     Rgba8 negative = rgba8(230, 70, 70, 80), zero = rgba8(255, 90, 90); // the denominator
     Rgba8 weight = rgba8(255, 255, 255), weight_warning = rgba8(255, 110, 110);
     Rgba8 weight_plate = rgba8(20, 22, 28, 190);
+    Rgba8 trim = rgba8(255, 200, 80), cut = rgba8(0, 0, 0, 120); // trim loops, cut-away part
 };
 
 struct TracingInput {
@@ -48,6 +51,7 @@ struct TracingPicture {
     std::vector<KnotTick> ticks_u, ticks_v;
     std::vector<double> px_u, px_v; // each tick's pixel along its edge (the knot handles)
     glm::vec2 indicator{0};         // where the indicator is drawn
+    bool indicator_cut = false;     // the indicator lies in the part a trim cuts away
 };
 
 // The drawing of `obj`'s tracing square (a spline surface; the document gives the patch group

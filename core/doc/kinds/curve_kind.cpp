@@ -147,11 +147,8 @@ std::size_t heap_bytes(const CurveObject& c) {
 }
 
 bool same_bits(const CurveObject& a, const CurveObject& b) {
-    const geom::Curve& c = a.curve;
-    const geom::Curve& d = b.curve;
-    return a.plane == b.plane && a.knot_mode == b.knot_mode && c.type == d.type &&
-           c.degree == d.degree && detail::bit_equal(c.knots, d.knots) &&
-           detail::bit_equal(c.points, d.points) && detail::bit_equal(c.weights, d.weights);
+    return a.plane == b.plane && a.knot_mode == b.knot_mode &&
+           detail::same_curve_bits(a.curve, b.curve);
 }
 
 } // namespace isoparm::doc

@@ -39,6 +39,10 @@ inline bool bit_equal(const std::vector<glm::dvec3>& a, const std::vector<glm::d
         if (!bit_equal(a[k], b[k])) return false;
     return true;
 }
+inline bool same_curve_bits(const geom::Curve& a, const geom::Curve& b) {
+    return a.type == b.type && a.degree == b.degree && bit_equal(a.knots, b.knots) &&
+           bit_equal(a.points, b.points) && bit_equal(a.weights, b.weights);
+}
 
 // Every coordinate finite (`schema`); point_path(k) is the JSON Pointer of point k, to which
 // the coordinate's index is appended.

@@ -25,6 +25,7 @@
 #include "core/geom/enum_names.hpp"
 #include "core/geom/status.hpp"
 #include "core/geom/tessellate.hpp"
+#include "core/geom/trim/trim.hpp"
 #include "core/geom/types.hpp"
 
 namespace isoparm::doc {
@@ -62,7 +63,7 @@ struct Box {
 struct NoForm {
     std::string why;
 };
-using ExactForm = std::variant<NoForm, geom::Curve, geom::Surface>;
+using ExactForm = std::variant<NoForm, geom::Curve, geom::Surface, geom::TrimmedSurface>;
 using MeshForm = std::variant<NoForm, geom::Mesh>;
 
 // A control point, or its weight, as labels name it ("P23" and "w23"); indexed: with its

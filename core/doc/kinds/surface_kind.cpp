@@ -1,13 +1,19 @@
-// The surface kind's facts: JSON members, validation, control points, export forms.
+// The surface kind's facts: JSON members (the surface and its trim), validation, control
+// points, export forms.
 #include "core/doc/kinds/surface_kind.hpp"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include "core/doc/kinds/kind_common.hpp"
+#include "core/geom/knots.hpp"
 #include "core/geom/refine_within_limits.hpp"
+#include "core/geom/trim/trim_validate.hpp"
+#include "core/geom/trim/trimmed_tessellator.hpp"
 #include "core/geom/validate.hpp"
 #include "core/json/fields.hpp"
 #include "core/json/shapes.hpp"
+#include "core/json/trim_json.hpp"
 
 namespace isoparm::doc {
 
@@ -17,12 +23,21 @@ using nlohmann::json;
 
 geom::Expected<SurfaceObject> read_kind(std::type_identity<SurfaceObject>, const json& j,
                                         const std::string& at) {
-    return detail::read_geometry<SurfaceObject>(
+    auto s = detail::read_geometry<SurfaceObject>(
         j, at, "surface", [](const json& v) { return json_io::surface_from_json(v); });
+    if (!s) return s;
+    // Whether the loops fit the domain is validate's (the document's rules, on every path in).
+    if (const auto t = j.find("trim"); t != j.end()) {
+        auto trim = json_io::trim_from_json(*t);
+        if (!trim) return trim.error().under(at + "/trim");
+        s->trim = std::move(trim).value();
+    }
+    return s;
 }
 
 void kind_to_json(const SurfaceObject& s, json& out) {
     out["surface"] = json_io::surface_to_json(s.surface);
+    if (!s.trim.empty()) out["trim"] = json_io::trim_to_json(s.trim);
 }
 
 geom::Expected<std::pair<int, int>>
@@ -54,7 +69,11 @@ geom::Status validate(const SurfaceObject& s) {
                                         });
         !st)
         return st;
-    return geom::validate_surface(g);
+    if (auto st = geom::validate_surface(g); !st) return st;
+    if (s.trim.empty()) return geom::Ok{};
+    geom::Status st = geom::validate_trim(s.trim, geom::domain(g));
+    if (!st) return st.error().under("/trim");
+    return st;
 }
 
 ISOPARM_NET_FACTS(SurfaceObject, surface)
@@ -91,23 +110,55 @@ void translate(SurfaceObject& s, const glm::dvec3& d) {
     for (glm::dvec3& p : control_points(s)) p += d;
 }
 
+// A trimmed surface goes out as a trimmed face (IGES 144, STEP ADVANCED_FACE with its bounds).
 ExactForm exact_form(const SurfaceObject& s) {
+    if (!s.trim.empty()) return geom::TrimmedSurface{s.surface, s.trim};
     return s.surface;
 }
 
 geom::Expected<MeshForm> mesh_form(const SurfaceObject& s, int samples) {
+    if (!s.trim.empty())
+        return MeshForm{geom::tessellate_trimmed(s.surface, s.trim, samples, samples)};
     return MeshForm{geom::tessellate(s.surface, samples, samples)};
 }
 
-// A samples x samples grid.
+// A samples x samples grid (a trim keeps part of it and adds its loops' points).
 double mesh_vertices(const SurfaceObject&, int samples) {
     return double(samples) * samples;
 }
 
+namespace {
+
+std::size_t curve_bytes(const geom::Curve& c) {
+    return (c.knots.size() + c.weights.size()) * sizeof(double) +
+           c.points.size() * sizeof(glm::dvec3) + sizeof(geom::Curve);
+}
+
+std::size_t trim_bytes(const geom::Trim& t) {
+    std::size_t bytes = 0;
+    for (int k = 0; k < t.loop_count(); ++k)
+        for (const geom::Curve& c : t.loop(k).curves) bytes += curve_bytes(c);
+    return bytes + t.holes.size() * sizeof(geom::TrimLoop);
+}
+
+bool same_loop_bits(const geom::TrimLoop& a, const geom::TrimLoop& b) {
+    return std::equal(a.curves.begin(), a.curves.end(), b.curves.begin(), b.curves.end(),
+                      detail::same_curve_bits);
+}
+
+bool same_trim_bits(const geom::Trim& a, const geom::Trim& b) {
+    if (a.outer.has_value() != b.outer.has_value()) return false;
+    if (a.outer && !same_loop_bits(*a.outer, *b.outer)) return false;
+    return std::equal(a.holes.begin(), a.holes.end(), b.holes.begin(), b.holes.end(),
+                      same_loop_bits);
+}
+
+} // namespace
+
 std::size_t heap_bytes(const SurfaceObject& s) {
     const geom::Surface& g = s.surface;
     return (g.knots_u.size() + g.knots_v.size() + g.weights.size()) * sizeof(double) +
-           g.points.size() * sizeof(glm::dvec3);
+           g.points.size() * sizeof(glm::dvec3) + trim_bytes(s.trim);
 }
 
 bool same_bits(const SurfaceObject& x, const SurfaceObject& y) {
@@ -116,7 +167,7 @@ bool same_bits(const SurfaceObject& x, const SurfaceObject& y) {
     return a.type == b.type && a.degree_u == b.degree_u && a.degree_v == b.degree_v &&
            a.n_u == b.n_u && a.n_v == b.n_v && detail::bit_equal(a.knots_u, b.knots_u) &&
            detail::bit_equal(a.knots_v, b.knots_v) && detail::bit_equal(a.points, b.points) &&
-           detail::bit_equal(a.weights, b.weights);
+           detail::bit_equal(a.weights, b.weights) && same_trim_bits(x.trim, y.trim);
 }
 
 } // namespace isoparm::doc

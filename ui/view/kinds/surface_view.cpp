@@ -45,6 +45,7 @@ void draw_kind(const doc::SurfaceObject& object, const ObjectLook& look, SceneBa
     const geom::Surface& s = object.surface;
     SurfaceDraw sd = patch_draw(look);
     sd.surface = &s;
+    if (!object.trim.empty()) sd.trim = &object.trim;
     sd.density = look.density;
     out.surfaces.push_back(sd);
 
