@@ -205,6 +205,16 @@ struct ActionNote {
 };
 
 // A knot tick held in the tracing panel: the run of copies it moves.
+// A trim loop being drawn in the tracing square (Surface > Trim > Draw ...): the corners
+// clicked so far, in the surface's own (u, v). Closed into a polygon loop, it becomes the
+// outer loop or one more hole of the surface's trim (ui/trim_actions.hpp).
+struct TrimDrawing {
+    std::uint64_t object = 0; // the surface being trimmed; 0: not drawing
+    bool hole = true;         // a hole (the kept region outside it) or the outer loop
+    std::vector<glm::dvec2> corners;
+    bool active() const { return object != 0; }
+};
+
 struct KnotDrag {
     bool active = false;
     geom::Dir dir = geom::Dir::u;
@@ -338,6 +348,7 @@ struct UiState {
     PlaneDrag plane_drag;
     bool indicator_drag = false;
     KnotDrag knot_drag;
+    TrimDrawing trim_drawing;
     DeBoorPlayer deboor;
     ActionNote action_note;
 

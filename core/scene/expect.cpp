@@ -88,6 +88,23 @@ std::vector<std::string> unmet_on_triangle(const ExpectStep& e, const std::strin
     return out;
 }
 
+// Which side of the surface's trim e.at lies on (an untrimmed surface keeps its whole domain).
+void unmet_side(const ExpectStep& e, const std::string& name, const doc::Object& o,
+                const geom::Surface* s, std::vector<std::string>& out) {
+    if (!s) {
+        out.push_back(name + " is a curve: only a surface is trimmed");
+        return;
+    }
+    const auto* surface = std::get_if<doc::SurfaceObject>(&o.shape);
+    geom::TrimSide side = geom::TrimSide::kept;
+    if (surface && !surface->trim.empty())
+        side = geom::TrimClassifier(surface->trim, geom::domain(*s)).classify(*e.at);
+    if (side != *e.side)
+        out.push_back("expected (u, v) = (" + geom::format_number(e.at->x) + ", " +
+                      geom::format_number(e.at->y) + ") to be " + geom::name_of(*e.side) + " on " +
+                      name + ", it is " + geom::name_of(side));
+}
+
 // What the surface or curve is at e.at: its point, R_ij (or R_i), the sum of all of them and
 // the curvatures, each compared with what the expectation names.
 void unmet_at_parameter(const ExpectStep& e, const std::string& name, const geom::Surface* s,
@@ -260,6 +277,11 @@ geom::Status read_value_members(const MemberReader& r, ExpectStep& e) {
     for (auto [name, into] : {std::pair{"basis", &e.basis}, std::pair{"basis_sum", &e.basis_sum},
                               std::pair{"gaussian", &e.gaussian}, std::pair{"mean", &e.mean}})
         if (auto st = r.number(name, *into); !st) return st.error();
+    if (const json* m = member("side")) {
+        const auto side = enum_value<geom::TrimSide>(*m);
+        if (!side) return schema_error("side is kept, cut or boundary", path("side"));
+        e.side = *side;
+    }
     if (const json* m = member("tolerance")) {
         auto t = read_finite(*m, path("tolerance"), "tolerance");
         if (!t) return t.error();
@@ -272,7 +294,8 @@ geom::Status read_value_members(const MemberReader& r, ExpectStep& e) {
 // The members that only make sense together.
 geom::Status check_expect_members(const ExpectStep& e, const std::string& at) {
     const bool about_object = e.i || e.position || e.weight || e.knots || e.degree || e.type ||
-                              e.kind || e.at || e.basis || e.basis_sum || e.gaussian || e.mean;
+                              e.kind || e.at || e.basis || e.basis_sum || e.gaussian || e.mean ||
+                              e.side;
     if (about_object && !e.id)
         return schema_error("an expect about an object's point, weight, knots, degree, kind, type "
                             "or values at a parameter names the object: add \"id\"",
@@ -281,8 +304,9 @@ geom::Status check_expect_members(const ExpectStep& e, const std::string& at) {
         return schema_error("an expected position or weight belongs to a point: add \"point\" "
                             "(or \"at\" for the object's point at a parameter)",
                             at);
-    if ((e.basis || e.basis_sum || e.gaussian || e.mean) && !e.at)
-        return schema_error("a basis function or a curvature is taken at a parameter: add \"at\"",
+    if ((e.basis || e.basis_sum || e.gaussian || e.mean || e.side) && !e.at)
+        return schema_error("a basis function, a curvature or the side of a trim is taken at a "
+                            "parameter: add \"at\"",
                             at);
     if (e.basis && !e.i)
         return schema_error("a basis function belongs to a control point: add \"point\"", at);
@@ -302,7 +326,7 @@ Expected<ExpectStep> expect_from_json(const json& v, const std::string& at) {
     if (auto st = check_members(v, at, "expect",
                                 {"objects", "id", "kind", "point", "position", "weight",
                                  "direction", "knots", "degree", "type", "group", "borders", "at",
-                                 "basis", "basis_sum", "gaussian", "mean", "tolerance"});
+                                 "basis", "basis_sum", "gaussian", "mean", "side", "tolerance"});
         !st)
         return st.error();
     ExpectStep e;
@@ -335,6 +359,7 @@ json expect_to_json(const ExpectStep& e) {
     if (e.basis_sum) j["basis_sum"] = *e.basis_sum;
     if (e.gaussian) j["gaussian"] = *e.gaussian;
     if (e.mean) j["mean"] = *e.mean;
+    if (e.side) j["side"] = geom::name_of(*e.side);
     if (e.tolerance != 1e-9) j["tolerance"] = e.tolerance;
     return j;
 }
@@ -418,6 +443,7 @@ std::vector<std::string> unmet_expectations(const ExpectStep& e, const doc::Docu
                           tol);
     }
     if (e.at) unmet_at_parameter(e, name, s, c, out);
+    if (e.side) unmet_side(e, name, *o, s, out);
     return out;
 }
 

@@ -12,6 +12,7 @@
 
 #include "core/doc/document.hpp"
 #include "core/geom/status.hpp"
+#include "core/geom/trim/trim_classify.hpp"
 
 namespace isoparm::scene {
 
@@ -33,6 +34,9 @@ struct ExpectStep {
     std::optional<double> basis;     // R_ij(u, v) of point (i, j) (a curve: R_i(t))
     std::optional<double> basis_sum; // the sum of every R_ij (partition of unity: 1)
     std::optional<double> gaussian, mean;
+    // Where `at` lies against the surface's trim: kept, cut away or on a loop (an untrimmed
+    // surface keeps its whole domain).
+    std::optional<geom::TrimSide> side;
     double tolerance = 1e-9;
 };
 

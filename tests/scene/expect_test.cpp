@@ -5,6 +5,7 @@
 #include "core/geom/basis.hpp"
 #include "core/geom/curvature.hpp"
 #include "core/geom/evaluate.hpp"
+#include "core/geom/trim/trim.hpp"
 #include "core/scene/expect.hpp"
 
 using namespace isoparm;
@@ -73,6 +74,24 @@ TEST(Expect, KindAndTheJsonFormReadBack) {
               std::vector<std::string>{"expected 'hill' to be a curve, it is a surface"});
 }
 
+// "side": where (u, v) lies against a surface's trim; an untrimmed surface keeps everything.
+TEST(Expect, TheSideOfATrimHoldsAndSaysWhereThePointIs) {
+    doc::Document d = doc::default_document();
+    const scene::ExpectStep kept = read(R"({"id": 1, "at": [0.5, 0.5], "side": "kept"})");
+    EXPECT_TRUE(scene::unmet_expectations(kept, d).empty());
+    auto& surface = std::get<doc::SurfaceObject>(d.objects[0].shape);
+    surface.trim.holes.push_back(*geom::circle_loop({0.5, 0.5}, 0.2, true));
+    EXPECT_EQ(scene::unmet_expectations(kept, d),
+              std::vector<std::string>{"expected (u, v) = (0.5, 0.5) to be kept on 'hill', it "
+                                       "is cut"});
+    EXPECT_TRUE(scene::unmet_expectations(read(R"({"id": 1, "at": [0.5, 0.5], "side": "cut"})"), d)
+                    .empty());
+    EXPECT_TRUE(
+        scene::unmet_expectations(read(R"({"id": 1, "at": [0.7, 0.5], "side": "boundary"})"), d)
+            .empty());
+    EXPECT_EQ(scene::expect_to_json(kept)["side"], "kept");
+}
+
 TEST(Expect, WhatAnExpectationNeedsIsRefusedWithTheMemberToAdd) {
     struct Case {
         const char* text;
@@ -83,6 +102,8 @@ TEST(Expect, WhatAnExpectationNeedsIsRefusedWithTheMemberToAdd) {
                           Case{R"({"at": [0.5, 0.5], "gaussian": 0})", "add \"id\""},
                           Case{R"({"id": 1, "at": [0.1, 0.2, 0.3]})", "[u, v]"},
                           Case{R"({"id": 1, "kind": "blob"})", "surface, curve"},
+                          Case{R"({"id": 1, "side": "cut"})", "add \"at\""},
+                          Case{R"({"id": 1, "at": [0.5, 0.5], "side": "in"})", "kept, cut"},
                           Case{R"({"id": 1, "at": [0.5, 0.5], "point": [1, 1],
                                    "position": [0, 0, 0]})",
                                "leave out"}}) {

@@ -1329,6 +1329,50 @@ def detach_question_before_editing_a_vase_point(s, ctx):
     check("construction" not in by_name(s.save(), "vase"), "Construct > Detach left the recipe")
 
 
+def signed_area(points):
+    return 0.5 * sum(p[0] * q[1] - q[0] * p[1] for p, q in zip(points, points[1:] + points[:1]))
+
+
+def trim_drawn_in_the_tracing_square(s, ctx):
+    """Surface > Trim: a triangular hole drawn corner by corner in the tracing square (Enter
+    closes it, turned clockwise), the indicator inside it cut away (hollow), Remove trim, and
+    Ctrl+Z bringing the hole back."""
+    s.menu("Surface", "Trim", "surface/draw_hole")
+    sq = s.rect("tracing/square")
+    corners = [(0.2, 0.2), (0.5, 0.2), (0.35, 0.45)]  # (u, v), counter-clockwise as clicked
+    for u, v in corners:
+        s.click_rect(sq, u, 1 - v)
+    ctx.shot(s, "hole-drawn")
+    s.key("Return")
+    r = s.wait_for("the hole set", lambda r: r["undo"].startswith("Trim (1 loop)"))
+    trim = s.save()["objects"][0].get("trim", {})
+    holes = trim.get("holes", [])
+    check(len(holes) == 1 and len(holes[0]) == 3 and "outer" not in trim,
+          f"the saved trim after drawing one triangle: {trim!r}")
+    starts = [c["points"][0][:2] for c in holes[0]]
+    check(signed_area(starts) < 0, f"the drawn hole runs counter-clockwise: {starts}")
+    # Each corner where it was clicked, within a pixel of the square.
+    tol = 1.5 / sq[2]
+    for u, v in corners:
+        check(any(abs(p[0] - u) < tol and abs(p[1] - v) < tol for p in starts),
+              f"no corner of the hole near (u, v) = ({u}, {v}): {starts}")
+    # The action's note under the square takes room: the square is smaller now.
+    sq = s.rect("tracing/square")
+    s.click_rect(sq, 0.35, 1 - 0.28)  # the triangle's centroid: cut away
+    r = s.wait_for("the indicator cut away",
+                   lambda r: r["facts"].get("tracing/indicator_cut") == 1)
+    ctx.shot(s, "indicator-cut")
+    s.click_rect(s.rect("tracing/square"), 0.7, 1 - 0.7)
+    s.wait_for("the indicator kept", lambda r: r["facts"].get("tracing/indicator_cut") == 0)
+    s.menu("Surface", "Trim", "surface/remove_trim")
+    s.wait_for("Remove trim", lambda r: r["undo"] == "Remove trim")
+    check("trim" not in s.save()["objects"][0], "Remove trim left a trim in the saved scene")
+    s.key("ctrl+z")
+    s.wait_for("Ctrl+Z: the hole again", lambda r: r["undo"].startswith("Trim (1 loop)"))
+    check(len(s.save()["objects"][0].get("trim", {}).get("holes", [])) == 1,
+          "Ctrl+Z did not bring the hole back")
+
+
 SCENARIOS = [
     ("window_fits", "fig3b-weight-5.json", window_fits_the_screen),
     ("window_size", "fig3b-weight-5.json", window_size_is_remembered),
@@ -1363,6 +1407,7 @@ SCENARIOS = [
     ("weight_animation", "fig3b-weight-5.json", weight_animation_plays_without_editing),
     ("grid_snap", "fig3b-weight-5.json", grid_and_snap_in_the_curve_designer),
     ("detach_question", "fig8-revolution.json", detach_question_before_editing_a_vase_point),
+    ("trim_drawn", "fig3b-weight-5.json", trim_drawn_in_the_tracing_square),
 ] + projector_scenarios.SCENARIOS  # the stage, four views, labels apart (issue #30)
 
 

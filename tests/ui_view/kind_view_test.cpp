@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/doc/commands_triangle.hpp"
+#include "core/geom/trim/trim.hpp"
 #include "ui/view/kinds/kind_view.hpp"
 #include "ui/view/scene_builder.hpp"
 
@@ -73,9 +74,20 @@ TEST(KindView, EachKindOpensItsEditorAndIndexesItsPoints) {
     EXPECT_STREQ(kind_label(c), "curve");
     EXPECT_STREQ(kind_label(f), "implicit");
     EXPECT_STREQ(kind_label(t), "triangle");
+    EXPECT_STREQ(traits_of(s.shape).note, "");
     EXPECT_EQ(control_net_of(c).points.size(), 4u);
     EXPECT_EQ(control_net_of(c).find(2, -1), 2);
     EXPECT_TRUE(control_net_of(f).points.empty());
+}
+
+// The Objects tab says which surfaces are trimmed (the Kind column: "bezier, trimmed").
+TEST(KindView, ATrimmedSurfaceSaysSoInItsKindNote) {
+    doc::SurfaceObject trimmed{grid(3, 3)};
+    trimmed.trim.holes.push_back(*geom::circle_loop({0.5, 0.5}, 0.2, true));
+    EXPECT_STREQ(traits_of(doc::Shape{trimmed}).note, "trimmed");
+    EXPECT_STREQ(traits_of(doc::Shape{trimmed}).label, geom::name_of(geom::SplineType::bezier));
+    trimmed.trim = {};
+    EXPECT_STREQ(traits_of(doc::Shape{trimmed}).note, "");
 }
 
 TEST(KindView, EachKindDrawsItsOwnPartOfTheScene) {

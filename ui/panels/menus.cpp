@@ -24,6 +24,7 @@
 #include "ui/theme.hpp"
 #include "ui/toolbox_actions.hpp"
 #include "ui/triangle_actions.hpp"
+#include "ui/trim_actions.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/data_dir.hpp"
 #include "ui/view/doc_access.hpp"
@@ -176,6 +177,30 @@ void action_item(AppContext& ctx, const ActionState& a, const char* shortcut,
         wrapped_tooltip(a.why);
 }
 
+// An item whose label carries numbers: `name` reports it to the GUI tests.
+void named_action_item(AppContext& ctx, const ActionState& state, void (*run)(AppContext&),
+                       const char* name) {
+    const bool picked = menu_item(state.label.c_str(), nullptr, false, state.enabled);
+    report_item(name);
+    if (picked) run(ctx);
+    if (!state.enabled && !state.why.empty() &&
+        ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        wrapped_tooltip(state.why);
+}
+
+// Trimming in the window (ui/trim_actions.hpp): a hole at the indicator, and the whole domain
+// back. A submenu: the Surface menu must still fit a 1024x768 projector in presentation mode.
+void trim_menu(AppContext& ctx) {
+    if (!begin_menu("Trim")) return;
+    ImGui::TextDisabled("What the surface keeps of its domain (its points stay)");
+    named_action_item(ctx, draw_hole_state(ctx), start_drawing_hole, "menu/surface/draw_hole");
+    named_action_item(ctx, draw_outer_state(ctx), start_drawing_outer, "menu/surface/draw_outer");
+    named_action_item(ctx, punch_hole_state(ctx), punch_hole_at_indicator,
+                      "menu/surface/punch_hole");
+    named_action_item(ctx, remove_trim_state(ctx), remove_trim_current, "menu/surface/remove_trim");
+    ImGui::EndMenu();
+}
+
 // Knot insertion, degree elevation and splitting at the indicator, and how subpatches stay
 // joined.
 void refine_items(AppContext& ctx) {
@@ -184,18 +209,10 @@ void refine_items(AppContext& ctx) {
     // A selected triangle has one degree and a barycentric indicator: its own two items.
     if (const doc::Object* sel = ctx.doc.selected(); sel && sel->triangle()) {
         // The labels carry numbers; the report names them for the GUI tests too.
-        for (const auto& [state, run, name] :
-             {std::tuple{elevate_triangle_state(ctx), &elevate_selected_triangle,
-                         "menu/triangle/elevate"},
-              std::tuple{split_triangle_state(ctx), &split_triangle_at_indicator,
-                         "menu/triangle/split"}}) {
-            const bool picked = menu_item(state.label.c_str(), nullptr, false, state.enabled);
-            report_item(name);
-            if (picked) run(ctx);
-            if (!state.enabled && !state.why.empty() &&
-                ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-                wrapped_tooltip(state.why);
-        }
+        named_action_item(ctx, elevate_triangle_state(ctx), elevate_selected_triangle,
+                          "menu/triangle/elevate");
+        named_action_item(ctx, split_triangle_state(ctx), split_triangle_at_indicator,
+                          "menu/triangle/split");
         return;
     }
     action_item(ctx, insert_knot_state(ctx, Dir::u), "U", insert_knot_at_indicator, Dir::u);
@@ -210,6 +227,7 @@ void refine_items(AppContext& ctx) {
                 set_continuity(ctx, c);
         ImGui::EndMenu();
     }
+    trim_menu(ctx);
 }
 
 } // namespace
@@ -557,6 +575,26 @@ void plain_shortcut(AppContext& ctx, const KeyPress& k) {
     }
 }
 
+// While a trim loop is drawn in the tracing square, Enter closes it, Backspace takes its last
+// corner back and Escape abandons it; other keys keep their meaning.
+bool trim_drawing_key(AppContext& ctx, int key) {
+    if (!ctx.ui.trim_drawing.active()) return false;
+    switch (key) {
+    case GLFW_KEY_ENTER:
+    case GLFW_KEY_KP_ENTER:
+        close_drawn_loop(ctx);
+        return true;
+    case GLFW_KEY_BACKSPACE:
+        take_back_loop_corner(ctx);
+        return true;
+    case GLFW_KEY_ESCAPE:
+        cancel_loop_drawing(ctx);
+        return true;
+    default:
+        return false;
+    }
+}
+
 } // namespace
 
 void draw_menus(AppContext& ctx) {
@@ -588,6 +626,7 @@ void handle_shortcuts(AppContext& ctx) {
             close_menus();
             if (k.key == GLFW_KEY_ESCAPE) continue;
         }
+        if (!k.ctrl && trim_drawing_key(ctx, k.key)) continue;
         if (k.ctrl)
             ctrl_shortcut(ctx, k);
         else

@@ -14,6 +14,7 @@
 #include "ui/panels/panels.hpp"
 #include "ui/panels/picture_draw.hpp"
 #include "ui/panels/stage_controls.hpp"
+#include "ui/panels/tracing_trim_drawing.hpp"
 #include "ui/panels/triangle_panels.hpp"
 #include "ui/surface_actions.hpp"
 #include "ui/theme.hpp"
@@ -324,6 +325,8 @@ TracingPicture draw_square(AppContext& ctx, const doc::Object& obj, const geom::
             weights += r.priority == 20 || r.priority == 5;
         report_fact("tracing/weight_labels", weights);
     }
+    // For the GUI tests: whether the indicator is drawn hollow (cut away by a trim).
+    report_fact("tracing/indicator_cut", drawn.indicator_cut ? 1 : 0);
     draw_picture(drawn.picture);
     return drawn;
 }
@@ -364,14 +367,19 @@ void draw_tracing_panel(AppContext& ctx) {
     report_item("tracing/square");
     const CanvasView cv = canvas_view(ctx, "tracing", canvas);
     const Rect sq = view_rect(cv, canvas, canvas); // the whole domain, seen through the view
-    if (ImGui::IsItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+    // While a trim loop is drawn (Surface > Trim), a click adds a corner instead.
+    const bool drawing_loop = drawing_loop_on(ctx, *obj);
+    if (drawing_loop) {
+        loop_drawing_click(ctx, *obj, sq);
+    } else if (ImGui::IsItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
         const ImVec2 m = ImGui::GetIO().MousePos;
         ctx.doc.view.indicator = pixel_to_domain(sq, {m.x, m.y}); // view state, not undoable
     }
-    ctx.ui.indicator_drag = ImGui::IsItemActive();
+    ctx.ui.indicator_drag = !drawing_loop && ImGui::IsItemActive();
 
     // The drawing (ui/view/tracing_picture: the same Picture a figure of the view draws).
     const TracingPicture drawn = draw_square(ctx, *obj, *s, canvas, sq, label_w, label_h);
+    if (drawing_loop) draw_loop_in_progress(ctx, *obj, sq, canvas);
     const std::vector<KnotTick>& tu = drawn.ticks_u;
     const std::vector<KnotTick>& tv = drawn.ticks_v;
     const std::vector<double>& px_u = drawn.px_u;

@@ -53,11 +53,12 @@ struct ObjectLook {
 
 // What the panels ask of a kind: the editor it opens in the right column, whether its control
 // points are named (i, j) (true) or i alone, j = -1, or not at all (false), and the Objects
-// tab's Kind column.
+// tab's Kind column (label and note).
 struct KindTraits {
     ObjectEditor editor = ObjectEditor::control_points;
     bool two_index = false;
     const char* label = "";
+    const char* note = ""; // after the label, e.g. "trimmed" for a surface with trim loops
 };
 
 // The batches every object adds to (build_scene draws them in its order).

@@ -78,7 +78,8 @@ ControlNet kind_net(const doc::SurfaceObject& object) {
 }
 
 KindTraits kind_traits(const doc::SurfaceObject& s) {
-    return {ObjectEditor::control_points, true, geom::name_of(s.surface.type)};
+    return {ObjectEditor::control_points, true, geom::name_of(s.surface.type),
+            s.trim.empty() ? "" : "trimmed"};
 }
 
 } // namespace isoparm::ui
