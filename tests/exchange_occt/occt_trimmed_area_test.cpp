@@ -1,16 +1,23 @@
 // Real files written by other CAD systems (../shared/cad, never committed; skipped with a
 // message where absent) import as trimmed faces: each face's wires become trim loops on its
 // NURBS surface (occt_trim.hpp), and the trimmed area (core/geom/trim/trim_area.hpp) must match
-// OpenCASCADE's own area of the face (BRepGProp) within 1e-4 relative. Faces whose loops could
-// not be built come in untrimmed with a note; they are counted and named, never compared. Each
-// file must keep at least the number of matching faces measured when the test was written.
+// OpenCASCADE's own area of the face (BRepGProp) within 1e-4 relative, or, where the file's
+// wires have 2D gaps (which BRepGProp's integral leaves out), OCCT's area of the same face with
+// the gaps closed by ShapeFix within 1e-4; the two kinds are counted and printed apart. Faces whose
+// loops could not be built come in untrimmed with a note; they are counted and named, never
+// compared. Each file must keep at least the number of matching faces measured when the test was
+// written.
 #include <gtest/gtest.h>
 
 #include <BRepGProp.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
 #include <IGESControl_Reader.hxx>
 #include <Interface_Static.hxx>
 #include <STEPControl_Reader.hxx>
+#include <ShapeExtend_Status.hxx>
+#include <ShapeFix_Wire.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <algorithm>
@@ -35,21 +42,25 @@ namespace {
 using test::cad_dir;
 using test::cad_files;
 
-// How many faces of each file import trimmed with OCCT's area, as measured when the test was
-// written (2026-11-27, 1172 of 1222): a file that drops below its count fails. The faces that do
-// not are printed with the reason: 45 whose loops could not be built (open wires beyond 1e-4 of
-// the domain, loops that leave the domain or cross, edges no fit follows), 2 offset faces not
-// converted, and 3 planes of trj3 whose area differs by 4.7e-4: there OCCT's BRepGProp is
-// itself off (the p-curves' own enclosed area is isoparm's; OCCT's mesher is nearer it).
+// How many faces of each file import trimmed with OCCT's area (as read, or once the wires' 2D
+// gaps are closed: occt_area_gaps_closed), as measured (2026-11-28, 1195 of 1222): a file that
+// drops below its count fails. The faces that do not are printed with the reason: loops that
+// could not be built (hammer.iges and trj7 leave their surface's domain by 0.04 to 0.1 and
+// 7e-4 in space, beyond the files' edge tolerances of 3e-6 to 8e-6 and 5e-4; curves that meet
+// themselves or wires open by a period on periodic surfaces; edges no fit follows), the 2 offset
+// faces of bug23171 (not converted), and face 10 of catiav5_Ventilator.stp, a hexagon whose six
+// lines miss their corners by 0.014 (vertex tolerance 0.028): its area is defined only to about
+// its perimeter times that, 1e-2 relative, and isoparm (lines joined where they cross) 67.977,
+// BRepGProp 67.872, BRepGProp with ShapeFix's gaps closed 67.910 and BRepMesh 67.57 all differ.
 const std::map<std::string, int> measured_matches = {
     {"BUC50025.igs", 7},
     {"OCC8842_cone_CATIA.igs", 3},
     {"bug22566_test_Bad.igs", 7},
-    {"bug22869_Spring.igs", 3},
+    {"bug22869_Spring.igs", 4},
     {"bug24283_spheres.stp", 1},
     {"bug24595_281390.stp", 19},
     {"bug32596_abc_0_13.step", 91},
-    {"catiav5_Ventilator.stp", 285},
+    {"catiav5_Ventilator.stp", 304},
     {"ec_turbine-A.stp", 50},
     {"hammer.iges", 41},
     {"nx9_face_recognition_sample_part.stp", 23},
@@ -57,15 +68,43 @@ const std::map<std::string, int> measured_matches = {
     {"splinecage.stp", 4},
     {"sw2013_featuretype.STEP", 96},
     {"trj2_as1-tc-214.stp", 160},
-    {"trj3_s1-ct-214.stp", 175},
+    {"trj3_s1-ct-214.stp", 178},
     {"trj3_s1-id-203.stp", 134},
     {"trj7_k1-al-214.stp", 55},
 };
 
 struct FileAreas {
-    int faces = 0, trimmed = 0, untrimmed = 0, skipped = 0, match = 0;
-    std::vector<std::string> mismatches, notes;
+    int faces = 0, trimmed = 0, untrimmed = 0, skipped = 0, match = 0, match_closed = 0;
+    std::vector<std::string> mismatches, gap_matches, notes;
 };
+
+double occt_area(const TopoDS_Face& face) {
+    GProp_GProps props;
+    BRepGProp::SurfaceProperties(face, props, 1e-10);
+    return props.Mass();
+}
+
+// OCCT's area of the face with the 2D gaps of its wires closed (ShapeFix_Wire::FixGaps2d, each
+// wire at its face's tolerance), or NaN where no wire has one. BRepGProp integrates along each
+// edge's p-curve on its own (Green's theorem), so a gap between two p-curves' ends is a piece of
+// the boundary it leaves out: its area is then off by about the gap times the distance to the
+// parameters' origin. trj3_s1-ct-214.stp's three ring-shaped planes (faces 78, 83, 103) have
+// two such gaps of 0.003 at u = +-23 (within the vertices' tolerance 0.0015): BRepGProp gives
+// 276.3215, the same face with its gaps closed 276.45058, and isoparm's loops (the ends joined)
+// 276.45058; the ring between the circles of radius 23 and 21 the curves approximate is
+// pi * 88 = 276.460.
+double occt_area_gaps_closed(const TopoDS_Face& face) {
+    TopoDS_Face closed = TopoDS::Face(face.EmptyCopied());
+    BRep_Builder builder;
+    bool fixed = false;
+    for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next()) {
+        ShapeFix_Wire fix(TopoDS::Wire(w.Current()), face, BRep_Tool::Tolerance(face));
+        fix.FixGaps2dMode() = 1;
+        fixed = fix.FixGaps2d() || fixed;
+        builder.Add(closed, fix.Wire());
+    }
+    return fixed ? occt_area(closed) : NAN;
+}
 
 FileAreas check_areas(const std::filesystem::path& file) {
     FileAreas r;
@@ -86,17 +125,27 @@ FileAreas check_areas(const std::filesystem::path& file) {
             continue;
         }
         ++r.trimmed;
-        GProp_GProps props;
-        BRepGProp::SurfaceProperties(face, props, 1e-10);
-        const double occt = props.Mass();
+        const double occt = occt_area(face);
         const double ours = geom::trimmed_area(t->surface, t->trim);
         const double rel = std::abs(ours - occt) / std::max(std::abs(occt), 1e-300);
-        if (rel <= 1e-4)
+        if (rel <= 1e-4) {
             ++r.match;
-        else
-            r.mismatches.push_back("face " + std::to_string(index) + ": area " +
-                                   std::to_string(ours) + ", OCCT " + std::to_string(occt) + " (" +
-                                   std::to_string(rel) + " relative)");
+            continue;
+        }
+        std::string text = "face " + std::to_string(index) + ": area " + std::to_string(ours) +
+                           ", OCCT " + std::to_string(occt) + " (" + std::to_string(rel) +
+                           " relative)";
+        if (const double closed = occt_area_gaps_closed(face); !std::isnan(closed)) {
+            const double rel_closed = std::abs(ours - closed) / std::abs(closed);
+            text += "; OCCT with the wires' 2D gaps closed " + std::to_string(closed) + " (" +
+                    std::to_string(rel_closed) + " relative)";
+            if (rel_closed <= 1e-4) {
+                ++r.match_closed;
+                r.gap_matches.push_back(text);
+                continue;
+            }
+        }
+        r.mismatches.push_back(text);
     }
     return r;
 }
@@ -105,7 +154,7 @@ TEST(RealCadFilesTrimmed, FacesImportTrimmedWithOcctsAreas) {
     const auto files = cad_files();
     if (files.empty())
         GTEST_SKIP() << "skipped: no real CAD files in " << cad_dir << " (../shared/cad)";
-    int faces = 0, trimmed = 0, match = 0;
+    int faces = 0, trimmed = 0, match = 0, match_closed = 0;
     for (const auto& file : files) {
         const auto start = std::chrono::steady_clock::now();
         const FileAreas r = check_areas(file);
@@ -115,20 +164,26 @@ TEST(RealCadFilesTrimmed, FacesImportTrimmedWithOcctsAreas) {
         faces += r.faces;
         trimmed += r.trimmed;
         match += r.match;
+        match_closed += r.match_closed;
         std::cout << name << ": " << r.match << " of " << r.faces
-                  << " faces trimmed with OCCT's area within 1e-4 (" << r.trimmed << " trimmed, "
-                  << r.untrimmed << " without their loops, " << r.skipped << " not converted; "
-                  << seconds << " s)\n";
+                  << " faces trimmed with OCCT's area within 1e-4";
+        if (r.match_closed > 0)
+            std::cout << " and " << r.match_closed << " with its area once the gaps are closed";
+        std::cout << " (" << r.trimmed << " trimmed, " << r.untrimmed << " without their loops, "
+                  << r.skipped << " not converted; " << seconds << " s)\n";
+        for (const std::string& m : r.gap_matches) std::cout << "  gaps closed: " << m << "\n";
         for (const std::string& m : r.mismatches) std::cout << "  area differs: " << m << "\n";
         if (const auto it = measured_matches.find(name); it != measured_matches.end()) {
-            EXPECT_GE(r.match, it->second)
+            EXPECT_GE(r.match + r.match_closed, it->second)
                 << name << ": fewer faces match OCCT's area than the " << it->second << " measured";
         }
         for (const std::string& n : r.notes) std::cout << "  untrimmed: " << n << "\n";
     }
-    std::cout << "all files: " << match << " of " << faces << " faces trimmed and matching\n";
+    std::cout << "all files: " << match + match_closed << " of " << faces
+              << " faces trimmed and matching (" << match << " OCCT's area as read, "
+              << match_closed << " OCCT's area once the wires' 2D gaps are closed)\n";
     EXPECT_GT(faces, 1000);
-    EXPECT_GE(match, 1172) << "of " << faces << " faces (" << trimmed << " trimmed)";
+    EXPECT_GE(match + match_closed, 1194) << "of " << faces << " faces (" << trimmed << " trimmed)";
 }
 
 // Imported trimmed faces written again by isoparm (STEP and IGES, all faces of a file in one
