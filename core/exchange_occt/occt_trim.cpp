@@ -176,11 +176,24 @@ private:
         return t;
     }
 
+    // The box's ends are the NURBS domain's ends (the conversion spans the box, in the same
+    // direction). Inverting the surface cannot tell them apart where the box is a whole period:
+    // both are the seam, and a p-curve on the seam at u1 would land on u0 (its loop then
+    // encloses nothing or crosses itself).
+    static std::optional<double> at_end(double t, double t0, double t1, geom::Interval d) {
+        const double tol = 1e-9 * (t1 - t0);
+        if (std::abs(t - t0) <= tol) return d.lo;
+        if (std::abs(t - t1) <= tol) return d.hi;
+        return std::nullopt;
+    }
+
     double map_u(double u) const {
+        if (const auto end = at_end(u, box_.u0, box_.u1, d_.u)) return *end;
         const double vm = 0.5 * (box_.v0 + box_.v1);
         return solve_1d(geom::Dir::u, occt_point(original_, u, vm), guess({u, vm}).x);
     }
     double map_v(double v) const {
+        if (const auto end = at_end(v, box_.v0, box_.v1, d_.v)) return *end;
         const double um = 0.5 * (box_.u0 + box_.u1);
         return solve_1d(geom::Dir::v, occt_point(original_, um, v), guess({um, v}).y);
     }
