@@ -332,6 +332,30 @@ std::vector<geom::Curve> fit_pieces(const std::function<glm::dvec2(double)>& map
     return out;
 }
 
+// Where a B-spline p-curve is a line of constant u or v written as a spline (its poles on one
+// line of constant u or v, running one way along it, so the curve does too): the direction of
+// that line, else a null direction.
+std::optional<gp_Dir2d> iso_line_of(const Handle(Geom2d_Curve) & basis, const FaceBox& box) {
+    const auto b = Handle(Geom2d_BSplineCurve)::DownCast(basis);
+    if (b.IsNull() || b->NbPoles() < 2) return std::nullopt;
+    for (int axis = 0; axis < 2; ++axis) {
+        const double width = axis == 0 ? box.u1 - box.u0 : box.v1 - box.v0;
+        const auto coord = [&](int i, int a) { return a == 0 ? b->Pole(i).X() : b->Pole(i).Y(); };
+        bool flat = true, up = true, down = true;
+        for (int i = 2; i <= b->NbPoles(); ++i) {
+            flat = flat && std::abs(coord(i, axis) - coord(1, axis)) <= 1e-12 * width;
+            up = up && coord(i, 1 - axis) >= coord(i - 1, 1 - axis);
+            down = down && coord(i, 1 - axis) <= coord(i - 1, 1 - axis);
+        }
+        if (flat && (up || down) && coord(1, 1 - axis) != coord(b->NbPoles(), 1 - axis))
+            return axis == 0 ? gp_Dir2d(0, up ? 1 : -1) : gp_Dir2d(up ? 1 : -1, 0);
+    }
+    return std::nullopt;
+}
+bool iso_spline(const Handle(Geom2d_Curve) & basis, const FaceBox& box) {
+    return iso_line_of(basis, box).has_value();
+}
+
 EdgeCurve edge_curve(const TopoDS_Edge& edge, const TopoDS_Face& face, const FaceBox& box,
                      const Mapper& map, const geom::Surface& surface) {
     const ParamRect domain = geom::domain(surface);
@@ -389,8 +413,8 @@ EdgeCurve edge_curve(const TopoDS_Edge& edge, const TopoDS_Face& face, const Fac
             } catch (const Standard_Failure&) {
             }
         }
-        if (!converted && !line.IsNull()) {
-            const gp_Dir2d dir = line->Direction();
+        if (!converted && (!line.IsNull() || iso_spline(basis, box))) {
+            const gp_Dir2d dir = !line.IsNull() ? line->Direction() : *iso_line_of(basis, box);
             // Lines of constant u or v map to lines (the maps are one-dimensional), and every
             // line maps to itself where the parameters are kept.
             if (map.identity() || std::abs(dir.X()) < 1e-12 || std::abs(dir.Y()) < 1e-12) {
