@@ -601,4 +601,23 @@ std::variant<geom::Trim, std::string> face_trim(const TopoDS_Face& face,
     return trim;
 }
 
+bool is_whole_domain(const geom::Trim& trim, const ParamRect& domain) {
+    if (!trim.outer || !trim.holes.empty()) return false;
+    const double tol = 1e-12 * geom::domain_scale(domain);
+    const auto on = [&](double a, double b) { return std::abs(a - b) <= tol; };
+    for (const geom::Curve& c : trim.outer->curves) {
+        bool u_lo = true, u_hi = true, v_lo = true, v_hi = true;
+        for (const glm::dvec3& p : c.points) {
+            u_lo = u_lo && on(p.x, domain.u.lo);
+            u_hi = u_hi && on(p.x, domain.u.hi);
+            v_lo = v_lo && on(p.y, domain.v.lo);
+            v_hi = v_hi && on(p.y, domain.v.hi);
+        }
+        if (!(u_lo || u_hi || v_lo || v_hi)) return false;
+    }
+    // Curves along the sides only (each inside the hull of its control points, all on one side),
+    // counter-clockwise (face_trim orients the outer loop): the whole rectangle.
+    return true;
+}
+
 } // namespace isoparm::exchange_occt

@@ -34,4 +34,10 @@ std::variant<geom::Trim, std::string> face_trim(const TopoDS_Face& face,
                                                 const Handle(Geom_Surface) & original,
                                                 const FaceBox& box, const geom::Surface& converted);
 
+// Whether a trim is the domain's own boundary: no holes and an outer loop of curves each with its
+// control points on one side of the domain (a face with its natural bounds, as OCCT reads an
+// untrimmed surface). Such a face comes in as its surface alone, so an untrimmed surface exported
+// and read back stays untrimmed.
+bool is_whole_domain(const geom::Trim& trim, const geom::ParamRect& domain);
+
 } // namespace isoparm::exchange_occt
