@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/exchange_occt/occt_trim.hpp"
+#include "core/geom/knots.hpp"
 #include "core/geom/status.hpp"
 
 namespace isoparm::exchange_occt {
@@ -194,6 +195,8 @@ Converted face_geometry(const TopoDS_Face& face) {
     auto trim = face_trim(face, s, box, surface);
     if (auto* why = std::get_if<std::string>(&trim))
         return {std::move(surface), "", kind + ": its trim loops were left out (" + *why + ")"};
+    if (is_whole_domain(std::get<geom::Trim>(trim), geom::domain(surface)))
+        return {std::move(surface), "", ""};
     return {geom::TrimmedSurface{std::move(surface), std::move(std::get<geom::Trim>(trim))}, "",
             ""};
 }

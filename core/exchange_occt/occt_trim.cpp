@@ -12,9 +12,11 @@
 #include <Geom_Curve.hxx>
 #include <Standard_Failure.hxx>
 #include <TColStd_Array1OfReal.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopLoc_Location.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Vertex.hxx>
 #include <TopoDS_Wire.hxx>
 #include <algorithm>
 #include <cmath>
@@ -174,11 +176,24 @@ private:
         return t;
     }
 
+    // The box's ends are the NURBS domain's ends (the conversion spans the box, in the same
+    // direction). Inverting the surface cannot tell them apart where the box is a whole period:
+    // both are the seam, and a p-curve on the seam at u1 would land on u0 (its loop then
+    // encloses nothing or crosses itself).
+    static std::optional<double> at_end(double t, double t0, double t1, geom::Interval d) {
+        const double tol = 1e-9 * (t1 - t0);
+        if (std::abs(t - t0) <= tol) return d.lo;
+        if (std::abs(t - t1) <= tol) return d.hi;
+        return std::nullopt;
+    }
+
     double map_u(double u) const {
+        if (const auto end = at_end(u, box_.u0, box_.u1, d_.u)) return *end;
         const double vm = 0.5 * (box_.v0 + box_.v1);
         return solve_1d(geom::Dir::u, occt_point(original_, u, vm), guess({u, vm}).x);
     }
     double map_v(double v) const {
+        if (const auto end = at_end(v, box_.v0, box_.v1, d_.v)) return *end;
         const double um = 0.5 * (box_.u0 + box_.u1);
         return solve_1d(geom::Dir::v, occt_point(original_, um, v), guess({um, v}).y);
     }
@@ -317,6 +332,30 @@ std::vector<geom::Curve> fit_pieces(const std::function<glm::dvec2(double)>& map
     return out;
 }
 
+// Where a B-spline p-curve is a line of constant u or v written as a spline (its poles on one
+// line of constant u or v, running one way along it, so the curve does too): the direction of
+// that line, else a null direction.
+std::optional<gp_Dir2d> iso_line_of(const Handle(Geom2d_Curve) & basis, const FaceBox& box) {
+    const auto b = Handle(Geom2d_BSplineCurve)::DownCast(basis);
+    if (b.IsNull() || b->NbPoles() < 2) return std::nullopt;
+    for (int axis = 0; axis < 2; ++axis) {
+        const double width = axis == 0 ? box.u1 - box.u0 : box.v1 - box.v0;
+        const auto coord = [&](int i, int a) { return a == 0 ? b->Pole(i).X() : b->Pole(i).Y(); };
+        bool flat = true, up = true, down = true;
+        for (int i = 2; i <= b->NbPoles(); ++i) {
+            flat = flat && std::abs(coord(i, axis) - coord(1, axis)) <= 1e-12 * width;
+            up = up && coord(i, 1 - axis) >= coord(i - 1, 1 - axis);
+            down = down && coord(i, 1 - axis) <= coord(i - 1, 1 - axis);
+        }
+        if (flat && (up || down) && coord(1, 1 - axis) != coord(b->NbPoles(), 1 - axis))
+            return axis == 0 ? gp_Dir2d(0, up ? 1 : -1) : gp_Dir2d(up ? 1 : -1, 0);
+    }
+    return std::nullopt;
+}
+bool iso_spline(const Handle(Geom2d_Curve) & basis, const FaceBox& box) {
+    return iso_line_of(basis, box).has_value();
+}
+
 EdgeCurve edge_curve(const TopoDS_Edge& edge, const TopoDS_Face& face, const FaceBox& box,
                      const Mapper& map, const geom::Surface& surface) {
     const ParamRect domain = geom::domain(surface);
@@ -374,8 +413,8 @@ EdgeCurve edge_curve(const TopoDS_Edge& edge, const TopoDS_Face& face, const Fac
             } catch (const Standard_Failure&) {
             }
         }
-        if (!converted && !line.IsNull()) {
-            const gp_Dir2d dir = line->Direction();
+        if (!converted && (!line.IsNull() || iso_spline(basis, box))) {
+            const gp_Dir2d dir = !line.IsNull() ? line->Direction() : *iso_line_of(basis, box);
             // Lines of constant u or v map to lines (the maps are one-dimensional), and every
             // line maps to itself where the parameters are kept.
             if (map.identity() || std::abs(dir.X()) < 1e-12 || std::abs(dir.Y()) < 1e-12) {
@@ -415,20 +454,91 @@ void move_end(geom::Curve& c, bool last, glm::dvec2 p) {
     q.y = p.y;
 }
 
+// The file's own tolerance where two edges of a wire meet (BRep_Tool::Tolerance of the vertex
+// between them and of both edges): the distance in space within which OCCT, and the system that
+// wrote the file, take the p-curves' ends as one point.
+double junction_tolerance(const TopoDS_Edge& before, const TopoDS_Edge& after) {
+    double t = std::max(BRep_Tool::Tolerance(before), BRep_Tool::Tolerance(after));
+    const TopoDS_Vertex a = TopExp::LastVertex(before, Standard_True);
+    const TopoDS_Vertex b = TopExp::FirstVertex(after, Standard_True);
+    if (!a.IsNull()) t = std::max(t, BRep_Tool::Tolerance(a));
+    if (!b.IsNull()) t = std::max(t, BRep_Tool::Tolerance(b));
+    return t;
+}
+
+glm::dvec2 clamped(glm::dvec2 p, const ParamRect& d) {
+    return {std::clamp(p.x, d.u.lo, d.u.hi), std::clamp(p.y, d.v.lo, d.v.hi)};
+}
+
+// The distance in space between the surface's points at two parameters (clamped to the domain).
+double distance_on_surface(const geom::Surface& s, glm::dvec2 a, glm::dvec2 b) {
+    const ParamRect d = geom::domain(s);
+    const auto p = geom::surface_point(s, clamped(a, d).x, clamped(a, d).y);
+    const auto q = geom::surface_point(s, clamped(b, d).x, clamped(b, d).y);
+    return p && q ? glm::length(*p - *q) : INFINITY;
+}
+
+bool is_line(const geom::Curve& c) {
+    return c.degree == 1 && c.points.size() == 2;
+}
+
+// Where two curves whose ends do not quite meet are joined. Two lines meet where they cross
+// when that is near both ends (a writer's lines that overshoot or stop short of their corner,
+// as a rectangle's sides in catiav5_Ventilator.stp do by 0.024, keep the rectangle); any other
+// pair meets halfway between the ends.
+glm::dvec2 junction_point(const geom::Curve& before, const geom::Curve& after, double limit) {
+    const glm::dvec2 a = geom::curve_end(before).value_or(glm::dvec2(NAN));
+    const glm::dvec2 b = geom::curve_start(after).value_or(glm::dvec2(NAN));
+    const glm::dvec2 mid = 0.5 * (a + b);
+    if (a == b || !is_line(before) || !is_line(after)) return mid;
+    const glm::dvec2 p = geom::uv(before.points.front()), d = a - p;
+    const glm::dvec2 q = b, e = geom::uv(after.points.back()) - b;
+    const double cross = d.x * e.y - d.y * e.x;
+    // Nearly parallel lines (within 1e-3 radians) meet halfway.
+    if (!(std::abs(cross) > 1e-3 * glm::length(d) * glm::length(e))) return mid;
+    const double s = ((q.x - p.x) * e.y - (q.y - p.y) * e.x) / cross;
+    const glm::dvec2 x = p + s * d;
+    return glm::length(x - a) <= limit && glm::length(x - b) <= limit ? x : mid;
+}
+
+// Ends farther apart than this fraction of the domain are never joined, whatever the distance
+// in space: across a seam or a pole the ends of an open wire meet in space but not in (u, v).
+constexpr double join_fraction_limit = 1e-2;
+
 std::variant<geom::TrimLoop, std::string> wire_loop(const TopoDS_Wire& wire,
                                                     const TopoDS_Face& face, const FaceBox& box,
                                                     const Mapper& map,
                                                     const geom::Surface& surface) {
     const ParamRect domain = geom::domain(surface);
     geom::TrimLoop loop;
+    // For each curve, the file's tolerance at its start where an edge starts there (0 between
+    // the pieces of one edge, which share their ends exactly).
+    std::vector<double> start_tolerance;
+    std::vector<TopoDS_Edge> edges;
     for (BRepTools_WireExplorer e(wire, face); e.More(); e.Next()) {
         EdgeCurve c = edge_curve(e.Current(), face, box, map, surface);
         if (!c.why.empty()) return c.why;
-        for (geom::Curve& piece : c.curves) loop.curves.push_back(std::move(piece));
+        edges.push_back(e.Current());
+        for (std::size_t k = 0; k < c.curves.size(); ++k) {
+            loop.curves.push_back(std::move(c.curves[k]));
+            start_tolerance.push_back(k == 0 ? -1.0 : 0.0); // -1: an edge starts here
+        }
     }
     if (loop.curves.empty()) return std::string("a wire without edges");
-    // Join the ends: each junction to the middle of the two ends that meet there.
+    for (std::size_t k = 0, edge = 0; k < start_tolerance.size(); ++k)
+        if (start_tolerance[k] < 0) {
+            const TopoDS_Edge& after = edges[edge];
+            const TopoDS_Edge& before = edges[(edge + edges.size() - 1) % edges.size()];
+            start_tolerance[k] = junction_tolerance(before, after);
+            ++edge;
+        }
+    // Join the ends: each junction to the middle of the two ends that meet there. Ends meet
+    // where they are within 1e-4 of the domain in (u, v), or where the surface's points there are
+    // within twice the file's tolerance in space (what "closed" means in that file: BRepCheck
+    // takes each p-curve's end within the tolerance of the vertex, so the two are within twice
+    // it of each other).
     const double join = join_fraction * geom::domain_scale(domain);
+    const double join_limit = join_fraction_limit * geom::domain_scale(domain);
     const std::size_t n = loop.curves.size();
     for (std::size_t k = 0; k < n; ++k) {
         geom::Curve& before = loop.curves[(k + n - 1) % n];
@@ -436,10 +546,16 @@ std::variant<geom::TrimLoop, std::string> wire_loop(const TopoDS_Wire& wire,
         const glm::dvec2 a = geom::curve_end(before).value_or(glm::dvec2(NAN));
         const glm::dvec2 b = geom::curve_start(after).value_or(glm::dvec2(NAN));
         const double gap = glm::length(a - b);
-        if (!(gap <= join))
-            return "its wire is open by " + geom::format_short(gap, 3) + " in (u, v) (at most " +
-                   geom::format_short(join, 3) + " is joined)";
-        const glm::dvec2 m = 0.5 * (a + b);
+        const bool closes =
+            gap <= join ||
+            (gap <= join_limit && distance_on_surface(surface, a, b) <= 2 * start_tolerance[k]);
+        if (!closes)
+            return "its wire is open by " + geom::format_short(gap, 3) + " in (u, v), " +
+                   geom::format_short(distance_on_surface(surface, a, b), 3) +
+                   " in space (at most " + geom::format_short(join, 3) +
+                   " is joined, or the file's tolerance " +
+                   geom::format_short(2 * start_tolerance[k], 3) + " in space)";
+        const glm::dvec2 m = junction_point(before, after, join_limit);
         move_end(before, true, m);
         move_end(after, false, m);
     }
@@ -483,6 +599,25 @@ std::variant<geom::Trim, std::string> face_trim(const TopoDS_Face& face,
     if (wires == 0) return std::string("a face without wires");
     if (geom::Status st = geom::validate_trim(trim, domain); !st) return st.error().message;
     return trim;
+}
+
+bool is_whole_domain(const geom::Trim& trim, const ParamRect& domain) {
+    if (!trim.outer || !trim.holes.empty()) return false;
+    const double tol = 1e-12 * geom::domain_scale(domain);
+    const auto on = [&](double a, double b) { return std::abs(a - b) <= tol; };
+    for (const geom::Curve& c : trim.outer->curves) {
+        bool u_lo = true, u_hi = true, v_lo = true, v_hi = true;
+        for (const glm::dvec3& p : c.points) {
+            u_lo = u_lo && on(p.x, domain.u.lo);
+            u_hi = u_hi && on(p.x, domain.u.hi);
+            v_lo = v_lo && on(p.y, domain.v.lo);
+            v_hi = v_hi && on(p.y, domain.v.hi);
+        }
+        if (!(u_lo || u_hi || v_lo || v_hi)) return false;
+    }
+    // Curves along the sides only (each inside the hull of its control points, all on one side),
+    // counter-clockwise (face_trim orients the outer loop): the whole rectangle.
+    return true;
 }
 
 } // namespace isoparm::exchange_occt

@@ -26,10 +26,18 @@ struct FaceBox {
 // NURBS surface (one-dimensional maps u -> u', v -> v' where the conversion is separable, as
 // OCCT's are; Newton on the surface otherwise), lines of constant u or v stay lines, and other
 // curves are fitted within 1e-9 of the domain's size. Curve ends are joined where they differ by
-// less than 1e-4 of the domain; loops are oriented (the outer one, BRepTools::OuterWire,
-// counter-clockwise, holes clockwise); the result passes geom::validate_trim.
+// less than 1e-4 of the domain, or by less than 1e-2 of it where their points in space are within
+// the file's own tolerance there (BRep_Tool::Tolerance of the vertex and the edges; two lines
+// then meet where they cross, other curves halfway); loops are oriented (the outer one,
+// BRepTools::OuterWire, counter-clockwise, holes clockwise); the result passes geom::validate_trim.
 std::variant<geom::Trim, std::string> face_trim(const TopoDS_Face& face,
                                                 const Handle(Geom_Surface) & original,
                                                 const FaceBox& box, const geom::Surface& converted);
+
+// Whether a trim is the domain's own boundary: no holes and an outer loop of curves each with its
+// control points on one side of the domain (a face with its natural bounds, as OCCT reads an
+// untrimmed surface). Such a face comes in as its surface alone, so an untrimmed surface exported
+// and read back stays untrimmed.
+bool is_whole_domain(const geom::Trim& trim, const geom::ParamRect& domain);
 
 } // namespace isoparm::exchange_occt

@@ -31,8 +31,10 @@ TEST(OcctImportDocument, ARealPartsFacesComeInTrimmedAndSaveAsVersionThree) {
         ++trimmed;
         holes += static_cast<int>(doc::trim_of(o.shape)->holes.size());
     }
-    // Measured 2026-11-28: the part's faces nearly all come in trimmed, some with holes.
-    EXPECT_GE(trimmed, 20) << imported->objects.size() << " objects";
+    // Measured 2026-11-28: 8 of the part's 23 faces come in trimmed, some with holes; the other
+    // 15 are bounded by their surface's whole domain and come in as the surface alone
+    // (exchange_occt::is_whole_domain).
+    EXPECT_GE(trimmed, 8) << imported->objects.size() << " objects";
     EXPECT_GT(holes, 0);
 
     doc::Document d = doc::default_document();

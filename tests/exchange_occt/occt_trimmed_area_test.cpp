@@ -1,16 +1,23 @@
 // Real files written by other CAD systems (../shared/cad, never committed; skipped with a
 // message where absent) import as trimmed faces: each face's wires become trim loops on its
 // NURBS surface (occt_trim.hpp), and the trimmed area (core/geom/trim/trim_area.hpp) must match
-// OpenCASCADE's own area of the face (BRepGProp) within 1e-4 relative. Faces whose loops could
-// not be built come in untrimmed with a note; they are counted and named, never compared. Each
-// file must keep at least the number of matching faces measured when the test was written.
+// OpenCASCADE's own area of the face (BRepGProp) within 1e-4 relative, or, where the file's
+// wires have 2D gaps (which BRepGProp's integral leaves out), OCCT's area of the same face with
+// the gaps closed by ShapeFix within 1e-4; the two kinds are counted and printed apart. Faces whose
+// loops could not be built come in untrimmed with a note; they are counted and named, never
+// compared. Each file must keep at least the number of matching faces measured when the test was
+// written.
 #include <gtest/gtest.h>
 
 #include <BRepGProp.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
 #include <IGESControl_Reader.hxx>
 #include <Interface_Static.hxx>
 #include <STEPControl_Reader.hxx>
+#include <ShapeExtend_Status.hxx>
+#include <ShapeFix_Wire.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <algorithm>
@@ -24,6 +31,8 @@
 #include "core/exchange/iges_writer.hpp"
 #include "core/exchange/step_writer.hpp"
 #include "core/exchange_occt/occt_convert.hpp"
+#include "core/geom/knots.hpp"
+#include "core/geom/trim/trim.hpp"
 #include "core/geom/trim/trim_area.hpp"
 #include "tests/exchange_occt/real_cad_files.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -35,37 +44,76 @@ namespace {
 using test::cad_dir;
 using test::cad_files;
 
-// How many faces of each file import trimmed with OCCT's area, as measured when the test was
-// written (2026-11-27, 1172 of 1222): a file that drops below its count fails. The faces that do
-// not are printed with the reason: 45 whose loops could not be built (open wires beyond 1e-4 of
-// the domain, loops that leave the domain or cross, edges no fit follows), 2 offset faces not
-// converted, and 3 planes of trj3 whose area differs by 4.7e-4: there OCCT's BRepGProp is
-// itself off (the p-curves' own enclosed area is isoparm's; OCCT's mesher is nearer it).
+// How many faces of each file import trimmed with OCCT's area (as read, or once the wires' 2D
+// gaps are closed: occt_area_gaps_closed), as measured (2026-11-28, 1207 of 1222): a file that
+// drops below its count fails. The 15 faces that do not are printed with the reason:
+// - loops that leave the surface's domain by more than the file's tolerance (hammer.iges faces
+//   13, 18, 33, 44 by 0.037 to 0.115 in space against edge and vertex tolerances of 3e-6 to
+//   8e-6; trj7 faces 7 and 8 by 7.0e-4 against 5.0e-4 and 2.8e-4), left untrimmed rather than
+//   snapped onto the domain's edge;
+// - p-curves that cross where the file's tolerance is loose (bug32596 faces 4, 13, 65, edge
+//   tolerances 0.0033 to 0.012 on faces of area 8.4; bug22869_Spring face 5, up to 0.079), and
+//   Spring's face 0, one of whose edges (tolerance 0.079) no fit follows;
+// - ec_turbine-A face 1, a plane whose hole touches its outer loop at one point (validation
+//   refuses loops that meet);
+// - the 2 offset faces of bug23171 (an offset surface has no exact NURBS form: not converted);
+// - face 10 of catiav5_Ventilator.stp, a hexagon whose six lines miss their corners by 0.014
+//   (vertex tolerance 0.028): its area is defined only to about its perimeter times that, 1e-2
+//   relative, and isoparm (lines joined where they cross) 67.977, BRepGProp 67.872, BRepGProp
+//   with ShapeFix's gaps closed 67.910 and BRepMesh 67.57 to 67.59 all differ.
 const std::map<std::string, int> measured_matches = {
     {"BUC50025.igs", 7},
     {"OCC8842_cone_CATIA.igs", 3},
-    {"bug22566_test_Bad.igs", 7},
-    {"bug22869_Spring.igs", 3},
-    {"bug24283_spheres.stp", 1},
-    {"bug24595_281390.stp", 19},
-    {"bug32596_abc_0_13.step", 91},
-    {"catiav5_Ventilator.stp", 285},
-    {"ec_turbine-A.stp", 50},
+    {"bug22566_test_Bad.igs", 9},
+    {"bug22869_Spring.igs", 4},
+    {"bug24283_spheres.stp", 2},
+    {"bug24595_281390.stp", 21},
+    {"bug32596_abc_0_13.step", 96},
+    {"catiav5_Ventilator.stp", 304},
+    {"ec_turbine-A.stp", 52},
     {"hammer.iges", 41},
     {"nx9_face_recognition_sample_part.stp", 23},
     {"occ22470.igs", 18},
     {"splinecage.stp", 4},
     {"sw2013_featuretype.STEP", 96},
     {"trj2_as1-tc-214.stp", 160},
-    {"trj3_s1-ct-214.stp", 175},
+    {"trj3_s1-ct-214.stp", 178},
     {"trj3_s1-id-203.stp", 134},
     {"trj7_k1-al-214.stp", 55},
 };
 
 struct FileAreas {
-    int faces = 0, trimmed = 0, untrimmed = 0, skipped = 0, match = 0;
-    std::vector<std::string> mismatches, notes;
+    int faces = 0, trimmed = 0, untrimmed = 0, skipped = 0, match = 0, match_closed = 0;
+    std::vector<std::string> mismatches, gap_matches, notes;
 };
+
+double occt_area(const TopoDS_Face& face) {
+    GProp_GProps props;
+    BRepGProp::SurfaceProperties(face, props, 1e-10);
+    return props.Mass();
+}
+
+// OCCT's area of the face with the 2D gaps of its wires closed (ShapeFix_Wire::FixGaps2d, each
+// wire at its face's tolerance), or NaN where no wire has one. BRepGProp integrates along each
+// edge's p-curve on its own (Green's theorem), so a gap between two p-curves' ends is a piece of
+// the boundary it leaves out: its area is then off by about the gap times the distance to the
+// parameters' origin. trj3_s1-ct-214.stp's three ring-shaped planes (faces 78, 83, 103) have
+// two such gaps of 0.003 at u = +-23 (within the vertices' tolerance 0.0015): BRepGProp gives
+// 276.3215, the same face with its gaps closed 276.45058, and isoparm's loops (the ends joined)
+// 276.45058; the ring between the circles of radius 23 and 21 the curves approximate is
+// pi * 88 = 276.460.
+double occt_area_gaps_closed(const TopoDS_Face& face) {
+    TopoDS_Face closed = TopoDS::Face(face.EmptyCopied());
+    BRep_Builder builder;
+    bool fixed = false;
+    for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next()) {
+        ShapeFix_Wire fix(TopoDS::Wire(w.Current()), face, BRep_Tool::Tolerance(face));
+        fix.FixGaps2dMode() = 1;
+        fixed = fix.FixGaps2d() || fixed;
+        builder.Add(closed, fix.Wire());
+    }
+    return fixed ? occt_area(closed) : NAN;
+}
 
 FileAreas check_areas(const std::filesystem::path& file) {
     FileAreas r;
@@ -80,23 +128,39 @@ FileAreas check_areas(const std::filesystem::path& file) {
             continue;
         }
         const auto* t = std::get_if<geom::TrimmedSurface>(&*c.shape);
-        if (!t) {
+        const auto* whole = std::get_if<geom::Surface>(&*c.shape);
+        if (!t && !(whole && c.note.empty())) {
             ++r.untrimmed;
             r.notes.push_back("face " + std::to_string(index) + ": " + c.note);
             continue;
         }
         ++r.trimmed;
-        GProp_GProps props;
-        BRepGProp::SurfaceProperties(face, props, 1e-10);
-        const double occt = props.Mass();
-        const double ours = geom::trimmed_area(t->surface, t->trim);
+        // A face bounded by its surface's own domain comes in as the surface alone
+        // (exchange_occt::is_whole_domain): its area is the whole domain's.
+        geom::Trim domain_trim;
+        if (!t) domain_trim.outer = geom::rectangle_loop(geom::domain(*whole));
+        const double occt = occt_area(face);
+        const double ours =
+            t ? geom::trimmed_area(t->surface, t->trim) : geom::trimmed_area(*whole, domain_trim);
         const double rel = std::abs(ours - occt) / std::max(std::abs(occt), 1e-300);
-        if (rel <= 1e-4)
+        if (rel <= 1e-4) {
             ++r.match;
-        else
-            r.mismatches.push_back("face " + std::to_string(index) + ": area " +
-                                   std::to_string(ours) + ", OCCT " + std::to_string(occt) + " (" +
-                                   std::to_string(rel) + " relative)");
+            continue;
+        }
+        std::string text = "face " + std::to_string(index) + ": area " + std::to_string(ours) +
+                           ", OCCT " + std::to_string(occt) + " (" + std::to_string(rel) +
+                           " relative)";
+        if (const double closed = occt_area_gaps_closed(face); !std::isnan(closed)) {
+            const double rel_closed = std::abs(ours - closed) / std::abs(closed);
+            text += "; OCCT with the wires' 2D gaps closed " + std::to_string(closed) + " (" +
+                    std::to_string(rel_closed) + " relative)";
+            if (rel_closed <= 1e-4) {
+                ++r.match_closed;
+                r.gap_matches.push_back(text);
+                continue;
+            }
+        }
+        r.mismatches.push_back(text);
     }
     return r;
 }
@@ -105,7 +169,7 @@ TEST(RealCadFilesTrimmed, FacesImportTrimmedWithOcctsAreas) {
     const auto files = cad_files();
     if (files.empty())
         GTEST_SKIP() << "skipped: no real CAD files in " << cad_dir << " (../shared/cad)";
-    int faces = 0, trimmed = 0, match = 0;
+    int faces = 0, trimmed = 0, match = 0, match_closed = 0;
     for (const auto& file : files) {
         const auto start = std::chrono::steady_clock::now();
         const FileAreas r = check_areas(file);
@@ -115,21 +179,27 @@ TEST(RealCadFilesTrimmed, FacesImportTrimmedWithOcctsAreas) {
         faces += r.faces;
         trimmed += r.trimmed;
         match += r.match;
+        match_closed += r.match_closed;
         std::cout << name << ": " << r.match << " of " << r.faces
-                  << " faces trimmed with OCCT's area within 1e-4 (" << r.trimmed << " trimmed, "
-                  << r.untrimmed << " without their loops, " << r.skipped << " not converted; "
-                  << seconds << " s)\n";
+                  << " faces trimmed with OCCT's area within 1e-4";
+        if (r.match_closed > 0)
+            std::cout << " and " << r.match_closed << " with its area once the gaps are closed";
+        std::cout << " (" << r.trimmed << " trimmed, " << r.untrimmed << " without their loops, "
+                  << r.skipped << " not converted; " << seconds << " s)\n";
+        for (const std::string& m : r.gap_matches) std::cout << "  gaps closed: " << m << "\n";
         for (const std::string& m : r.mismatches) std::cout << "  area differs: " << m << "\n";
         if (const auto it = measured_matches.find(name); it != measured_matches.end()) {
-            EXPECT_GE(r.match, it->second)
+            EXPECT_GE(r.match + r.match_closed, it->second)
                 << name << ": fewer faces match OCCT's area than the " << it->second << " measured";
         }
         for (const std::string& n : r.notes) std::cout << "  untrimmed: " << n << "\n";
     }
-    std::cout << "all files: " << match << " of " << faces << " faces trimmed and matching\n";
+    std::cout << "all files: " << match + match_closed << " of " << faces
+              << " faces trimmed and matching (" << match << " OCCT's area as read, "
+              << match_closed << " OCCT's area once the wires' 2D gaps are closed)\n";
     if (!test::every_cad_file()) return; // the totals need every file (real_cad_files.hpp)
     EXPECT_GT(faces, 1000);
-    EXPECT_GE(match, 1172) << "of " << faces << " faces (" << trimmed << " trimmed)";
+    EXPECT_GE(match + match_closed, 1207) << "of " << faces << " faces (" << trimmed << " trimmed)";
 }
 
 // Imported trimmed faces written again by isoparm (STEP and IGES, all faces of a file in one
@@ -150,11 +220,20 @@ TEST(RealCadFilesTrimmed, ImportedFacesGoOutAndComeBackTheSame) {
             const exchange_occt::Converted c =
                 exchange_occt::convert_face(TopoDS::Face(e.Current()));
             const auto* t = c.shape ? std::get_if<geom::TrimmedSurface>(&*c.shape) : nullptr;
-            if (!t) continue;
-            faces.push_back(*t);
+            // A face bounded by its surface's whole domain comes in as the surface alone.
+            const auto* whole =
+                c.shape && c.note.empty() ? std::get_if<geom::Surface>(&*c.shape) : nullptr;
+            if (!t && !whole) continue;
+            geom::Trim domain_trim;
+            if (whole) domain_trim.outer = geom::rectangle_loop(geom::domain(*whole));
+            if (t)
+                faces.push_back(*t);
+            else
+                faces.push_back(*whole);
             // 384 pieces a direction: the quadrature's own error on nx9's largest face is 6e-6 at
             // the default 96 and 7e-7 at 192, too close to the 1e-6 compared here.
-            areas.push_back(geom::trimmed_area(t->surface, t->trim, 384));
+            areas.push_back(t ? geom::trimmed_area(t->surface, t->trim, 384)
+                              : geom::trimmed_area(*whole, domain_trim, 384));
         }
         ASSERT_FALSE(faces.empty()) << name;
         for (const bool step : {true, false}) {
