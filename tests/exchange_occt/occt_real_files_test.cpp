@@ -194,7 +194,9 @@ TEST(RealCadFiles, EveryFaceConvertsOnItsOwnOverItsWholeBox) {
                   << (r.offsets ? " (" + std::to_string(r.offsets) + " offset surfaces)" : "")
                   << ", largest difference " << r.worst << " of the face's size\n";
     }
-    if (test::every_cad_file()) EXPECT_GT(faces, 1000);
+    if (test::every_cad_file()) { // the total needs every file (real_cad_files.hpp)
+        EXPECT_GT(faces, 1000);
+    }
 }
 
 std::string file_text(const std::filesystem::path& path) {
