@@ -50,6 +50,22 @@ geom::Expected<geom::Trim> with_hole(const AppContext& ctx, const Target& t) {
     return trim;
 }
 
+// Runs `cmd` as one undo step when `state` allows it; what happened, or the refusal after
+// `refused`, becomes the action's note (the status bar and the tracing panel).
+void run_noted(AppContext& ctx, const ActionState& state, const std::string& refused,
+               std::unique_ptr<doc::Command> cmd, const std::string& done) {
+    if (!state.enabled || !cmd) {
+        note_action(ctx, refused + state.why, true);
+        return;
+    }
+    ctx.seal();
+    if (ctx.execute(std::move(cmd)))
+        note_action(ctx, done, false);
+    else
+        note_action(ctx, ctx.ui.status, true);
+    ctx.seal();
+}
+
 // Twice the signed area of the polygon (positive: counter-clockwise).
 double signed_area2(const std::vector<glm::dvec2>& p) {
     double a = 0;
@@ -180,40 +196,24 @@ ActionState remove_trim_state(const AppContext& ctx) {
 void punch_hole_at_indicator(AppContext& ctx) {
     const Target t = target(ctx);
     if (!t.surface) return;
-    if (const ActionState state = punch_hole_state(ctx); !state.enabled) {
-        note_action(ctx, "Cannot cut a hole: " + state.why, true);
-        return;
-    }
+    const ActionState state = punch_hole_state(ctx);
     auto trim = with_hole(ctx, t);
-    if (!trim) return;
-    const int holes = static_cast<int>(trim->holes.size());
-    ctx.seal();
-    if (ctx.execute(doc::set_trim(t.object->id, std::move(*trim))))
-        note_action(ctx,
-                    "Cut hole " + std::to_string(holes - 1) +
-                        ": the surface keeps its points and knots; its trim has " +
-                        std::to_string(holes) + (holes == 1 ? " hole" : " holes") +
-                        " (the indicator inside is cut away).",
-                    false);
-    else
-        note_action(ctx, ctx.ui.status, true);
-    ctx.seal();
+    if (state.enabled && !trim) return;
+    const int holes = trim ? static_cast<int>(trim->holes.size()) : 0;
+    run_noted(ctx, state,
+              "Cannot cut a hole: ", trim ? doc::set_trim(t.object->id, std::move(*trim)) : nullptr,
+              "Cut hole " + std::to_string(holes - 1) +
+                  ": the surface keeps its points and knots; its trim has " +
+                  std::to_string(holes) + (holes == 1 ? " hole" : " holes") +
+                  " (the indicator inside is cut away).");
 }
 
 void remove_trim_current(AppContext& ctx) {
     const Target t = target(ctx);
     if (!t.surface) return;
-    if (const ActionState state = remove_trim_state(ctx); !state.enabled) {
-        note_action(ctx, "Cannot remove the trim: " + state.why, true);
-        return;
-    }
-    ctx.seal();
-    if (ctx.execute(doc::remove_trim(t.object->id)))
-        note_action(ctx, "Trim removed: the whole domain is kept (Ctrl+Z brings the loops back).",
-                    false);
-    else
-        note_action(ctx, ctx.ui.status, true);
-    ctx.seal();
+    run_noted(ctx, remove_trim_state(ctx),
+              "Cannot remove the trim: ", doc::remove_trim(t.object->id),
+              "Trim removed: the whole domain is kept (Ctrl+Z brings the loops back).");
 }
 
 } // namespace isoparm::ui
