@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <memory>
+#include <string>
 #include <variant>
+#include <vector>
 
 #include "core/doc/commands_trim.hpp"
 #include "core/geom/knots.hpp"

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <imgui.h>
+#include <vector>
 
 #include "core/doc/patches.hpp"
 #include "ui/trim_actions.hpp"
