@@ -1,6 +1,5 @@
 // The object list: every object of the scene with its kind; select, rename (double-click),
 // hide / show and delete, each through the command layer (undoable).
-#include <algorithm>
 #include <cstdio>
 #include <imgui.h>
 #include <string>
@@ -17,12 +16,6 @@
 namespace isoparm::ui {
 
 namespace {
-
-// The Kind column's text: "nurbs", or "nurbs, trimmed" with the kind's note.
-std::string kind_text(const doc::Object& o) {
-    const KindTraits kind = traits_of(o.shape);
-    return *kind.note ? std::string(kind.label) + ", " + kind.note : std::string(kind.label);
-}
 
 // One edit, one undo step, apart from whatever gesture came before.
 bool run_alone(AppContext& ctx, std::unique_ptr<doc::Command> cmd) {
@@ -48,12 +41,11 @@ void draw_object_list_panel(AppContext& ctx) {
     if (ImGui::BeginTable("##objects", 4, flags)) {
         const float icon = ImGui::GetFrameHeight();
         ImGui::TableSetupColumn("##shown", ImGuiTableColumnFlags_WidthFixed, icon);
-        // The kind as wide as its longest text (at least "triangle"); the name takes the rest.
-        float kind_width = ImGui::CalcTextSize("triangle").x;
-        for (const doc::Object& o : ctx.doc.objects)
-            kind_width = std::max(kind_width, ImGui::CalcTextSize(kind_text(o).c_str()).x);
+        // The kind as wide as its longest word; the name takes the rest (on a projector the
+        // column is narrow: a trimmed surface says "trimmed" there, its type in the tooltip).
         ImGui::TableSetupColumn("Name", ImGuiTableColumnFlags_WidthStretch, 1);
-        ImGui::TableSetupColumn("Kind", ImGuiTableColumnFlags_WidthFixed, kind_width);
+        ImGui::TableSetupColumn("Kind", ImGuiTableColumnFlags_WidthFixed,
+                                ImGui::CalcTextSize("triangle").x);
         ImGui::TableSetupColumn("##delete", ImGuiTableColumnFlags_WidthFixed, icon);
         ImGui::TableSetupScrollFreeze(0, 1);
         ImGui::TableHeadersRow();
@@ -110,7 +102,13 @@ void draw_object_list_panel(AppContext& ctx) {
                     ImGui::SetTooltip("%s\nClick: select. Double-click: rename.", label.c_str());
             }
             ImGui::TableNextColumn();
-            ImGui::TextDisabled("%s", kind_text(o).c_str());
+            if (const KindTraits kind = traits_of(o.shape); *kind.note) {
+                ImGui::TextDisabled("%s", kind.note);
+                if (ImGui::IsItemHovered())
+                    ImGui::SetTooltip("%s surface, %s", kind.label, kind.note);
+            } else {
+                ImGui::TextDisabled("%s", kind.label);
+            }
             ImGui::TableNextColumn();
             if (ImGui::SmallButton("x")) remove = o.id;
             if (ImGui::IsItemHovered())

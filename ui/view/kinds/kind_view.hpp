@@ -58,7 +58,7 @@ struct KindTraits {
     ObjectEditor editor = ObjectEditor::control_points;
     bool two_index = false;
     const char* label = "";
-    const char* note = ""; // after the label, e.g. "trimmed" for a surface with trim loops
+    const char* note = ""; // shown instead, the label in its tooltip: "trimmed" (trim loops)
 };
 
 // The batches every object adds to (build_scene draws them in its order).
