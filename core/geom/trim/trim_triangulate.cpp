@@ -11,6 +11,7 @@
 #include <CGAL/property_map.h>
 #include <CGAL/spatial_sort.h>
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <deque>
@@ -325,17 +326,53 @@ void mark_kept_faces(Cdt& cdt, bool start_kept) {
     }
 }
 
+// A corner's place in the plane, compared x first.
+std::pair<double, double> corner(const Cdt::Face_handle f, int k) {
+    return {f->vertex(k)->point().x(), f->vertex(k)->point().y()};
+}
+
+int lowest_corner(const Cdt::Face_handle f) {
+    int low = 0;
+    for (int k = 1; k < 3; ++k)
+        if (corner(f, k) < corner(f, low)) low = k;
+    return low;
+}
+
+// The kept faces sorted by their corners. CGAL visits faces in the order it allocated them,
+// which follows the order the points went in: spatial_sort's, which differs between standard
+// libraries where keys are equal (libstdc++ here, libc++ in the browser build). The
+// triangulation itself is the same (its degenerate cases are decided by the points' order in
+// the plane), so sorted the triangles come out the same everywhere: the browser build answers
+// as the command line does, triangle for triangle.
+std::vector<Cdt::Face_handle> kept_faces_in_corner_order(Cdt& cdt) {
+    using Corners = std::array<std::pair<double, double>, 3>;
+    std::vector<std::pair<Corners, Cdt::Face_handle>> faces;
+    for (auto f = cdt.finite_faces_begin(); cdt.dimension() == 2 && f != cdt.finite_faces_end();
+         ++f) {
+        if (f->info().kept != 1) continue;
+        Corners c{corner(f, 0), corner(f, 1), corner(f, 2)};
+        std::sort(c.begin(), c.end());
+        faces.push_back({c, f});
+    }
+    std::sort(faces.begin(), faces.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<Cdt::Face_handle> out;
+    out.reserve(faces.size());
+    for (const auto& f : faces) out.push_back(f.second);
+    return out;
+}
+
 // The kept faces outside whole kept cells, appended to tris; a vertex CGAL made where two
 // chords cross becomes a loop point.
 void add_kept_faces(Cdt& cdt, const Cells& cells, std::uint32_t loop_base,
                     std::vector<glm::dvec2>& loop_points, Triangles& tris) {
-    for (auto f = cdt.finite_faces_begin(); cdt.dimension() == 2 && f != cdt.finite_faces_end();
-         ++f) {
-        if (f->info().kept != 1) continue;
+    for (const Cdt::Face_handle f : kept_faces_in_corner_order(cdt)) {
+        // Each triangle from its lowest corner on (counter-clockwise, as CGAL keeps it).
+        const int first = lowest_corner(f);
         std::array<std::uint32_t, 3> t{};
         glm::dvec2 centre(0.0);
         for (int k = 0; k < 3; ++k) {
-            const auto v = f->vertex(k);
+            const auto v = f->vertex((first + k) % 3);
             if (v->info().id == none) { // where two chords cross
                 v->info().id = loop_base + static_cast<std::uint32_t>(loop_points.size());
                 loop_points.push_back({v->point().x(), v->point().y()});
