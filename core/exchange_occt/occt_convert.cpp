@@ -2,6 +2,9 @@
 
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
+#include <BndLib_Add2dCurve.hxx>
+#include <Bnd_Box2d.hxx>
+#include <Geom2d_Curve.hxx>
 #include <GeomConvert.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
@@ -12,12 +15,15 @@
 #include <Precision.hxx>
 #include <Standard_Failure.hxx>
 #include <TColStd_Array1OfReal.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
 #include <algorithm>
 #include <cmath>
 #include <variant>
 #include <vector>
 
 #include "core/exchange_occt/occt_trim.hpp"
+#include "core/geom/extend.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/status.hpp"
 
@@ -133,6 +139,11 @@ struct Range {
 };
 using Fitted = std::variant<Range, std::string>;
 
+struct ParamReach {
+    double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+    bool found = false;
+};
+
 Fitted fit_range(double lo, double hi, double first, double last, bool periodic, double period,
                  const char* what) {
     const double huge = Precision::Infinite() / 2;
@@ -154,6 +165,56 @@ Fitted fit_range(double lo, double hi, double first, double last, bool periodic,
                interval_text(first, last);
     const double tol = rounding(first, last);
     return Range{lo, hi, lo > first + tol || hi < last - tol};
+}
+
+// Where the face's p-curves reach in its surface's parameters: the box of their control points
+// (which holds each curve), unlike BRepTools::UVBounds, which cuts it to the surface's range.
+ParamReach pcurve_reach(const TopoDS_Face& face) {
+    Bnd_Box2d box;
+    for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) {
+        Standard_Real f = 0, l = 0;
+        const Handle(Geom2d_Curve) c =
+            BRep_Tool::CurveOnSurface(TopoDS::Edge(e.Current()), face, f, l);
+        if (!c.IsNull() && f < l) BndLib_Add2dCurve::Add(c, f, l, 0.0, box);
+    }
+    ParamReach r;
+    if (box.IsVoid()) return r;
+    box.Get(r.u0, r.v0, r.u1, r.v1);
+    r.found = true;
+    return r;
+}
+
+// A B-spline face whose p-curves leave its surface's range (by more than rounding, in a
+// direction that is not periodic): the face's edges run on the surface continued past its range
+// (OCCT's Geom_BSplineSurface evaluates there by continuing its end pieces). The surface is
+// extended the same way (geom::extend_domain: unchanged on its range, exactly that continuation
+// outside) to hold the loops, so the trim follows the file's edges, and the note says so.
+// hammer.iges has four planes (bilinear patches) with circles 1e-5 to 2e-5 outside their range,
+// 0.037 to 0.115 in space against the file's tolerances of 3e-6 to 8e-6; trj7_k1-al-214.stp two
+// bicubic faces with an edge wandering 3.1e-4 past u = 0 (OCCT's area integral cuts those at
+// the range: occt_trimmed_area_test.cpp has the figures).
+std::string extend_to_pcurves(const TopoDS_Face& face, bool u_periodic, bool v_periodic,
+                              geom::Surface& surface, FaceBox& box) {
+    const ParamReach reach = pcurve_reach(face);
+    if (!reach.found) return "";
+    const geom::ParamRect d = geom::domain(surface);
+    geom::ParamRect to = d;
+    if (!u_periodic && reach.u0 < d.u.lo - rounding(d.u.lo, d.u.hi)) to.u.lo = reach.u0;
+    if (!u_periodic && reach.u1 > d.u.hi + rounding(d.u.lo, d.u.hi)) to.u.hi = reach.u1;
+    if (!v_periodic && reach.v0 < d.v.lo - rounding(d.v.lo, d.v.hi)) to.v.lo = reach.v0;
+    if (!v_periodic && reach.v1 > d.v.hi + rounding(d.v.lo, d.v.hi)) to.v.hi = reach.v1;
+    if (to.u.lo == d.u.lo && to.u.hi == d.u.hi && to.v.lo == d.v.lo && to.v.hi == d.v.hi) return "";
+    geom::Expected<geom::Surface> extended = geom::extend_domain(surface, to);
+    if (!extended) return "";
+    surface = std::move(extended).value();
+    box.u0 = to.u.lo;
+    box.u1 = to.u.hi;
+    box.v0 = to.v.lo;
+    box.v1 = to.v.hi;
+    return "its surface was extended from " + interval_text(d.u.lo, d.u.hi) + " x " +
+           interval_text(d.v.lo, d.v.hi) + " to " + interval_text(to.u.lo, to.u.hi) + " x " +
+           interval_text(to.v.lo, to.v.hi) +
+           " to hold its trim loops (its end pieces continued, as OCCT evaluates them)";
 }
 
 Converted face_geometry(const TopoDS_Face& face) {
@@ -191,14 +252,18 @@ Converted face_geometry(const TopoDS_Face& face) {
     }
     if (b.IsNull()) return {std::nullopt, kind + ": OCCT cannot convert it to a B-spline surface"};
     geom::Surface surface = to_surface(b);
-    const FaceBox box{u.lo, u.hi, v.lo, v.hi, up ? s->UPeriod() : 0.0, vp ? s->VPeriod() : 0.0};
+    FaceBox box{u.lo, u.hi, v.lo, v.hi, up ? s->UPeriod() : 0.0, vp ? s->VPeriod() : 0.0};
+    // Only where the parameters are OCCT's own (a B-spline, not one converted over a box).
+    const std::string extended = Handle(Geom_BSplineSurface)::DownCast(s).IsNull()
+                                     ? ""
+                                     : extend_to_pcurves(face, up, vp, surface, box);
     auto trim = face_trim(face, s, box, surface);
     if (auto* why = std::get_if<std::string>(&trim))
         return {std::move(surface), "", kind + ": its trim loops were left out (" + *why + ")"};
     if (is_whole_domain(std::get<geom::Trim>(trim), geom::domain(surface)))
         return {std::move(surface), "", ""};
     return {geom::TrimmedSurface{std::move(surface), std::move(std::get<geom::Trim>(trim))}, "",
-            ""};
+            extended.empty() ? "" : kind + ": " + extended};
 }
 
 Converted edge_geometry(const TopoDS_Edge& edge) {

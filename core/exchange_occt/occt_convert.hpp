@@ -18,7 +18,9 @@ namespace isoparm::exchange_occt {
 struct Converted {
     std::optional<exchange::ExactShape> shape;
     std::string skip_reason;
-    std::string note = {}; // why a face came without its trim loops (empty: it has them)
+    // Why a face came without its trim loops, or what was changed to keep them (its surface
+    // extended to hold them); empty: the face as the file has it.
+    std::string note = {};
 };
 
 // The box (BRepTools::UVBounds) is fitted to the surface first: cut to the surface's range

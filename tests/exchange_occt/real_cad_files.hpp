@@ -33,9 +33,16 @@ inline std::size_t cad_file_stride() {
     return n > 1 ? static_cast<std::size_t>(n) : 1;
 }
 
+// While working on one file: ISOPARM_CAD_FILES_ONLY=TEXT keeps the files whose names contain
+// TEXT (totals over all files are then not checked: every_cad_file() is false).
+inline const char* cad_files_only() {
+    const char* only = std::getenv("ISOPARM_CAD_FILES_ONLY");
+    return only && *only ? only : nullptr;
+}
+
 // True when the tests see every file, so totals over all files can be checked.
 inline bool every_cad_file() {
-    return cad_file_stride() == 1;
+    return cad_file_stride() == 1 && !cad_files_only();
 }
 
 // Every cad_file_stride()th name of a list (all of them in the normal build).
@@ -46,14 +53,16 @@ inline std::vector<std::string> sampled(const std::vector<std::string>& names) {
 }
 
 // The STEP and IGES files of cad_dir in name order (none where it is absent), every
-// cad_file_stride()th under the sanitizers.
+// cad_file_stride()th under the sanitizers, only those named by ISOPARM_CAD_FILES_ONLY where set.
 inline std::vector<std::filesystem::path> cad_files() {
     std::vector<std::filesystem::path> out;
     if (!std::filesystem::is_directory(cad_dir)) return out;
     for (const auto& e : std::filesystem::directory_iterator(cad_dir)) {
         std::string ext = e.path().extension().string();
         std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-        if (ext == ".igs" || ext == ".iges" || ext == ".stp" || ext == ".step")
+        const bool named = !cad_files_only() ||
+                           e.path().filename().string().find(cad_files_only()) != std::string::npos;
+        if (named && (ext == ".igs" || ext == ".iges" || ext == ".stp" || ext == ".step"))
             out.push_back(e.path());
     }
     std::sort(out.begin(), out.end());
