@@ -8,9 +8,11 @@
 #include <GeomConvert.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
+#include <Geom_Line.hxx>
 #include <Geom_OffsetCurve.hxx>
 #include <Geom_OffsetSurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
+#include <Geom_SurfaceOfRevolution.hxx>
 #include <Geom_TrimmedCurve.hxx>
 #include <Precision.hxx>
 #include <Standard_Failure.hxx>
@@ -217,6 +219,57 @@ std::string extend_to_pcurves(const TopoDS_Face& face, bool u_periodic, bool v_p
            " to hold its trim loops (its end pieces continued, as OCCT evaluates them)";
 }
 
+// The surface an offset surface is, exactly, where OCCT or the basis's form gives one: OCCT's own
+// equivalent (Geom_OffsetSurface::Surface: a plane, cylinder, cone, sphere or torus basis, trimmed
+// or not, becomes the same kind with the offset radius), or, for a straight line revolved about
+// an axis in its plane (a cylinder, cone or plane written as a revolution, as bug23171_tube_surf
+// has), the revolution of that line moved by the offset along its normal: the normal is the same
+// all along a line in the meridian plane, so the offset of each meridian is the moved line, with
+// the same parameters. Either is accepted only where it agrees with the offset surface on a
+// grid over the face's box (within 1e-9 of the box's size): a skew line (a hyperboloid) fails.
+Handle(Geom_Surface)
+    exact_offset(const Handle(Geom_OffsetSurface) & o, double u0, double u1, double v0, double v1) {
+    Handle(Geom_Surface) eq = o->Surface();
+    if (eq.IsNull()) {
+        Handle(Geom_Surface) basis = o->BasisSurface();
+        for (int depth = 0; depth < 64; ++depth) {
+            auto t = Handle(Geom_RectangularTrimmedSurface)::DownCast(basis);
+            if (t.IsNull()) break;
+            basis = t->BasisSurface();
+        }
+        const auto rev = Handle(Geom_SurfaceOfRevolution)::DownCast(basis);
+        if (rev.IsNull()) return {};
+        Handle(Geom_Curve) meridian = rev->BasisCurve();
+        for (int depth = 0; depth < 64; ++depth) {
+            auto t = Handle(Geom_TrimmedCurve)::DownCast(meridian);
+            if (t.IsNull()) break;
+            meridian = t->BasisCurve();
+        }
+        const auto line = Handle(Geom_Line)::DownCast(meridian);
+        if (line.IsNull()) return {};
+        // At u = 0 the revolution is its meridian: the offset's points there are the moved line.
+        const gp_Pnt start = o->Value(0, 0);
+        const gp_Pnt on_line = line->Value(0);
+        Handle(Geom_Line) moved =
+            new Geom_Line(line->Position().Translated(gp_Vec(on_line, start)));
+        eq = new Geom_SurfaceOfRevolution(moved, rev->Axis());
+    }
+    const double huge = Precision::Infinite() / 2;
+    if (!(u0 > -huge && u1 < huge && v0 > -huge && v1 < huge)) return {};
+    double size = 0;
+    const gp_Pnt corner = o->Value(u0, v0);
+    for (int i = 0; i <= 8; ++i)
+        for (int j = 0; j <= 8; ++j)
+            size = std::max(
+                size, o->Value(u0 + (u1 - u0) * i / 8, v0 + (v1 - v0) * j / 8).Distance(corner));
+    for (int i = 0; i <= 8; ++i)
+        for (int j = 0; j <= 8; ++j) {
+            const double u = u0 + (u1 - u0) * i / 8, v = v0 + (v1 - v0) * j / 8;
+            if (o->Value(u, v).Distance(eq->Value(u, v)) > 1e-9 * std::max(size, 1e-300)) return {};
+        }
+    return eq;
+}
+
 Converted face_geometry(const TopoDS_Face& face) {
     Handle(Geom_Surface) s = BRep_Tool::Surface(face);
     if (s.IsNull()) return {std::nullopt, "a face without a surface"};
@@ -227,9 +280,16 @@ Converted face_geometry(const TopoDS_Face& face) {
         if (t.IsNull()) break;
         s = t->BasisSurface();
     }
-    const std::string kind = s->DynamicType()->Name();
-    if (!Handle(Geom_OffsetSurface)::DownCast(s).IsNull())
-        return {std::nullopt, kind + ": an offset surface has no exact NURBS form"};
+    std::string kind = s->DynamicType()->Name();
+    if (const auto offset = Handle(Geom_OffsetSurface)::DownCast(s); !offset.IsNull()) {
+        const Handle(Geom_Surface) exact = exact_offset(offset, u0, u1, v0, v1);
+        if (exact.IsNull())
+            return {std::nullopt, kind + ": an offset surface has no exact NURBS form (only an "
+                                         "offset of a plane, cylinder, cone, sphere, torus or "
+                                         "revolved line is converted)"};
+        s = exact;
+        kind += " (as a " + std::string(s->DynamicType()->Name()) + ")";
+    }
     Standard_Real a0, a1, b0, b1;
     s->Bounds(a0, a1, b0, b1);
     const bool up = s->IsUPeriodic(), vp = s->IsVPeriodic();

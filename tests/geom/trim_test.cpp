@@ -433,3 +433,29 @@ TEST(TrimArea, PlaneWithAHoleAndADisc) {
     EXPECT_NEAR(trimmed_area(s, d), std::numbers::pi * 0.6 * 0.3, 2e-9);
     EXPECT_NEAR(trimmed_area(s, Trim{}), 2.0, 1e-12);
 }
+
+// A half tube of radius 90 and length 1350 parametrized over u in [0, pi] (two rational quarter
+// arcs) and v in [0, 1350]: layout cells 430 times longer than wide (bug23171_tube_surf.igs's
+// offset faces). The area was 2.5e-4 low there before the quadrature ran on a square domain.
+TEST(TrimArea, ALongThinDomainKeepsItsAccuracy) {
+    const double r = 90, length = 1350, pi = std::numbers::pi, h = std::sqrt(0.5);
+    Surface s;
+    s.type = SplineType::nurbs;
+    s.degree_u = 2;
+    s.degree_v = 1;
+    s.knots_u = {0, 0, 0, pi / 2, pi / 2, pi, pi, pi};
+    s.knots_v = {0, 0, length, length};
+    s.n_u = 5;
+    s.n_v = 2;
+    const glm::dvec2 ring[5] = {{r, 0}, {r, r}, {0, r}, {-r, r}, {-r, 0}};
+    const double w[5] = {1, h, 1, h, 1};
+    for (int i = 0; i < 5; ++i)
+        for (const double z : {0.0, length}) {
+            s.points.push_back({ring[i], z});
+            s.weights.push_back(w[i]);
+        }
+    EXPECT_NEAR(trimmed_area(s, Trim{}) / (pi * r * length), 1.0, 1e-10);
+    Trim half;
+    half.outer = rectangle_loop({{0, pi}, {0, length / 2}});
+    EXPECT_NEAR(trimmed_area(s, half) / (pi * r * length / 2), 1.0, 1e-10);
+}
