@@ -166,13 +166,69 @@ TEST(TrimValidate, NamesLoopsThatCrossOrNest) {
     EXPECT_EQ(e.path, "/holes/1");
     EXPECT_NE(e.message.find("hole 1 lies inside hole 0"), std::string::npos) << e.message;
 
-    // Touching at one point is crossing too (the kept region would not be a surface there).
-    Trim touch;
-    touch.holes.push_back(polygon_loop({{0.2, 0.2}, {0.2, 0.5}, {0.5, 0.5}, {0.5, 0.2}}));
-    touch.holes.push_back(polygon_loop({{0.5, 0.5}, {0.5, 0.8}, {0.8, 0.8}, {0.8, 0.5}}));
-    EXPECT_NE(error_of(touch).message.find("hole 1 crosses hole 0 at (u, v) = (0.5, 0.5)"),
-              std::string::npos)
-        << error_of(touch).message;
+    // Loops may touch at isolated points (touching_trims), but not run along each other: two
+    // squares sharing a piece of a side cross there.
+    Trim overlap;
+    overlap.holes.push_back(polygon_loop({{0.2, 0.2}, {0.2, 0.5}, {0.5, 0.5}, {0.5, 0.2}}));
+    overlap.holes.push_back(polygon_loop({{0.5, 0.3}, {0.5, 0.8}, {0.8, 0.8}, {0.8, 0.3}}));
+    e = error_of(overlap);
+    EXPECT_EQ(e.path, "/holes/1");
+    EXPECT_NE(e.message.find("hole 1 crosses hole 0 at (u, v) = (0.5"), std::string::npos)
+        << e.message;
+    // A hole that touches the outer loop at its corner from outside lies outside.
+    Trim through;
+    through.outer = polygon_loop({{0.1, 0.1}, {0.9, 0.1}, {0.9, 0.9}, {0.1, 0.9}});
+    through.holes.push_back(polygon_loop({{0.9, 0.9}, {0.92, 0.98}, {0.98, 0.92}}));
+    e = error_of(through);
+    EXPECT_EQ(e.path, "/holes/0");
+    EXPECT_NE(e.message.find("hole 0 lies outside the outer loop"), std::string::npos) << e.message;
+    // Touching a hole at a vertex and going on inside it is lying inside it.
+    Trim into;
+    into.holes.push_back(polygon_loop({{0.2, 0.2}, {0.2, 0.5}, {0.5, 0.5}, {0.5, 0.2}}));
+    into.holes.push_back(polygon_loop({{0.5, 0.5}, {0.4, 0.4}, {0.3, 0.45}}));
+    e = error_of(into);
+    EXPECT_NE(e.message.find("hole 1 lies inside hole 0"), std::string::npos) << e.message;
+}
+
+namespace {
+
+// Loops that touch at one point: two holes at a corner; a triangular hole whose apex is on the
+// outer square's side; a circular hole inside a circle, both starting where they touch (as
+// ec_turbine-A.stp's face 1 has them).
+std::vector<Trim> touching_trims() {
+    std::vector<Trim> out(3);
+    out[0].holes.push_back(polygon_loop({{0.2, 0.2}, {0.2, 0.5}, {0.5, 0.5}, {0.5, 0.2}}));
+    out[0].holes.push_back(polygon_loop({{0.5, 0.5}, {0.5, 0.8}, {0.8, 0.8}, {0.8, 0.5}}));
+    out[1].outer = polygon_loop({{0.1, 0.1}, {0.9, 0.1}, {0.9, 0.9}, {0.1, 0.9}});
+    out[1].holes.push_back(polygon_loop({{0.5, 0.1}, {0.3, 0.6}, {0.7, 0.6}}));
+    out[2].outer = *circle_loop({0.5, 0.5}, 0.4, false);
+    out[2].holes.push_back(*circle_loop({0.7, 0.5}, 0.2, true));
+    return out;
+}
+
+} // namespace
+
+TEST(TrimValidate, LoopsMayTouchAtAPoint) {
+    const std::vector<Trim> trims = touching_trims();
+    for (std::size_t k = 0; k < trims.size(); ++k) {
+        const Status st = validate_trim(trims[k], unit);
+        EXPECT_TRUE(st.ok()) << k << ": " << (st.ok() ? "" : st.error().message);
+    }
+    // Classification on either side of the touching points and at them.
+    const TrimClassifier corner(trims[0], unit), apex(trims[1], unit), circles(trims[2], unit);
+    EXPECT_EQ(corner.classify({0.5, 0.5}), TrimSide::boundary);
+    EXPECT_EQ(corner.classify({0.49, 0.51}), TrimSide::kept);
+    EXPECT_EQ(corner.classify({0.51, 0.49}), TrimSide::kept);
+    EXPECT_EQ(corner.classify({0.49, 0.49}), TrimSide::cut);
+    EXPECT_EQ(corner.classify({0.51, 0.51}), TrimSide::cut);
+    EXPECT_EQ(apex.classify({0.5, 0.1}), TrimSide::boundary);
+    EXPECT_EQ(apex.classify({0.5, 0.12}), TrimSide::cut);
+    EXPECT_EQ(apex.classify({0.45, 0.12}), TrimSide::kept);
+    EXPECT_EQ(apex.classify({0.5, 0.09}), TrimSide::cut);
+    EXPECT_EQ(circles.classify({0.9, 0.5}), TrimSide::boundary);
+    EXPECT_EQ(circles.classify({0.88, 0.5}), TrimSide::cut);
+    EXPECT_EQ(circles.classify({0.2, 0.5}), TrimSide::kept);
+    EXPECT_EQ(circles.classify({0.89, 0.58}), TrimSide::kept);
 }
 
 TEST(TrimValidate, NamesBadCurves) {
@@ -336,6 +392,7 @@ TEST(TrimTessellate, MeshesAreWatertightAlongEveryLoop) {
     }
     star.outer = polygon_loop(corners);
     trims.push_back(star);
+    for (const Trim& t : touching_trims()) trims.push_back(t);
     for (std::size_t k = 0; k < trims.size(); ++k) {
         ASSERT_TRUE(validate_trim(trims[k], unit).ok()) << k;
         for (const auto& [nu, nv] : {std::pair{5, 5}, {17, 9}, {33, 33}, {64, 80}}) {

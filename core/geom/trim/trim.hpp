@@ -23,8 +23,9 @@ struct TrimLoop {
 
 // Which part of the domain a trimmed surface keeps: inside `outer` (counter-clockwise; absent:
 // the whole domain rectangle) and outside every hole (each clockwise). The kept region lies to
-// the left of every loop as it runs. No loop touches itself or another; holes lie inside the
-// outer loop and apart from each other (core/geom/trim/trim_validate.hpp checks all of it).
+// the left of every loop as it runs. No loop touches itself; two loops may touch at isolated
+// points but never cross; holes lie inside the outer loop and apart from each other
+// (core/geom/trim/trim_validate.hpp checks all of it).
 struct Trim {
     std::optional<TrimLoop> outer;
     std::vector<TrimLoop> holes;

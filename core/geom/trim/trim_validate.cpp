@@ -74,9 +74,27 @@ bool folds_back(const Segment& s, const Segment& t) {
     return cross(d1, d2) == 0 && glm::dot(d1, d2) < 0;
 }
 
+// Segments of two loops that meet at `where` touch there: `where` is within `touch` of an end
+// of either, and they do not run along each other for longer than `touch`.
+bool is_touch(const Segment& s, const Segment& t, glm::dvec2 where, double touch) {
+    const bool at_end = glm::length(where - s.a) <= touch || glm::length(where - s.b) <= touch ||
+                        glm::length(where - t.a) <= touch || glm::length(where - t.b) <= touch;
+    if (!at_end) return false;
+    const glm::dvec2 d = s.b - s.a;
+    const double len = glm::length(d);
+    if (len == 0) return true;
+    // Collinear within `touch`: the overlap of t's projection on s.
+    const double da = std::abs(cross(d, t.a - s.a)) / len, db = std::abs(cross(d, t.b - s.a)) / len;
+    if (da > touch || db > touch) return true;
+    const double ta = glm::dot(t.a - s.a, d) / len, tb = glm::dot(t.b - s.a, d) / len;
+    const double overlap = std::min(len, std::max(ta, tb)) - std::max(0.0, std::min(ta, tb));
+    return overlap <= touch;
+}
+
 } // namespace
 
-std::optional<Crossing> find_crossing(const std::vector<std::vector<glm::dvec2>>& loops) {
+std::optional<Crossing> find_crossing(const std::vector<std::vector<glm::dvec2>>& loops,
+                                      double touch, std::vector<Crossing>* touches) {
     std::vector<Segment> segments;
     glm::dvec2 lo(INFINITY), hi(-INFINITY);
     for (std::size_t l = 0; l < loops.size(); ++l) {
@@ -127,6 +145,10 @@ std::optional<Crossing> find_crossing(const std::vector<std::vector<glm::dvec2>>
                 Crossing c{s.loop, s.index, t.loop, t.index, *where};
                 if (std::tie(t.loop, t.index) < std::tie(s.loop, s.index))
                     c = {t.loop, t.index, s.loop, s.index, *where};
+                if (touches && s.loop != t.loop && is_touch(s, t, *where, touch)) {
+                    touches->push_back(c);
+                    continue;
+                }
                 if (!best || key(c) < key(*best)) best = c;
             }
         }
@@ -231,6 +253,47 @@ bool inside_polygon(glm::dvec2 p, const std::vector<glm::dvec2>& poly) {
     return in;
 }
 
+// The points of loop k that decide where it lies: its first point, or, where it touches
+// another loop, each of its points farther than `near` from every touching point (a point at a
+// touch lies on both loops, so on neither side).
+std::vector<glm::dvec2> witnesses(int k, const CheckedLoop& flat,
+                                  const std::vector<Crossing>& touches, double near) {
+    std::vector<glm::dvec2> at;
+    for (const Crossing& t : touches)
+        if (t.loop_a == k || t.loop_b == k) at.push_back(t.where);
+    if (at.empty()) return {flat.points.front()};
+    std::vector<glm::dvec2> out;
+    for (const glm::dvec2& p : flat.points)
+        if (std::all_of(at.begin(), at.end(),
+                        [&](glm::dvec2 q) { return glm::length(p - q) > near; }))
+            out.push_back(p);
+    return out;
+}
+
+// Each hole inside the outer loop and outside every other hole.
+Status check_nesting(const Trim& trim, const std::vector<CheckedLoop>& flats,
+                     const std::vector<Crossing>& touches, double near) {
+    const int first_hole = trim.outer ? 1 : 0;
+    for (int k = first_hole; k < trim.loop_count(); ++k) {
+        for (const glm::dvec2& p :
+             witnesses(k, flats[static_cast<std::size_t>(k)], touches, near)) {
+            if (trim.outer && !inside_polygon(p, flats[0].points))
+                return make_error(ErrorCode::geometry,
+                                  loop_name(trim, k) + " lies outside the outer loop",
+                                  loop_path(trim, k));
+            for (int h = first_hole; h < trim.loop_count(); ++h) {
+                if (h == k || !inside_polygon(p, flats[static_cast<std::size_t>(h)].points))
+                    continue;
+                return make_error(ErrorCode::geometry,
+                                  loop_name(trim, k) + " lies inside " + loop_name(trim, h) +
+                                      " (a region cut away already)",
+                                  loop_path(trim, k));
+            }
+        }
+    }
+    return Ok{};
+}
+
 } // namespace
 
 Status validate_trim(const Trim& trim, const ParamRect& domain) {
@@ -271,29 +334,15 @@ Status validate_trim(const Trim& trim, const ParamRect& domain) {
     }
     std::vector<std::vector<glm::dvec2>> all;
     for (const CheckedLoop& f : flats) all.push_back(f.points);
-    if (auto c = find_crossing(all)) {
+    std::vector<Crossing> touches;
+    if (auto c = find_crossing(all, trim_touch * domain_scale(domain), &touches)) {
         // Within one loop there are none (checked above): two loops meet.
         return make_error(ErrorCode::geometry,
                           loop_name(trim, c->loop_b) + " crosses " + loop_name(trim, c->loop_a) +
                               " at " + point_text(c->where),
                           loop_path(trim, c->loop_b));
     }
-    const int first_hole = trim.outer ? 1 : 0;
-    for (int k = first_hole; k < trim.loop_count(); ++k) {
-        const glm::dvec2 p = flats[static_cast<std::size_t>(k)].points.front();
-        if (trim.outer && !inside_polygon(p, flats[0].points))
-            return make_error(ErrorCode::geometry,
-                              loop_name(trim, k) + " lies outside the outer loop",
-                              loop_path(trim, k));
-        for (int h = first_hole; h < trim.loop_count(); ++h) {
-            if (h == k || !inside_polygon(p, flats[static_cast<std::size_t>(h)].points)) continue;
-            return make_error(ErrorCode::geometry,
-                              loop_name(trim, k) + " lies inside " + loop_name(trim, h) +
-                                  " (a region cut away already)",
-                              loop_path(trim, k));
-        }
-    }
-    return Ok{};
+    return check_nesting(trim, flats, touches, flatness);
 }
 
 } // namespace isoparm::geom
