@@ -1,6 +1,8 @@
 #include "core/exchange_occt/occt_convert.hpp"
 
+#include <BRepBuilderAPI_Copy.hxx>
 #include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <BndLib_Add2dCurve.hxx>
 #include <Bnd_Box2d.hxx>
@@ -15,6 +17,7 @@
 #include <Geom_SurfaceOfRevolution.hxx>
 #include <Geom_TrimmedCurve.hxx>
 #include <Precision.hxx>
+#include <ShapeFix_Wire.hxx>
 #include <Standard_Failure.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TopExp_Explorer.hxx>
@@ -219,6 +222,42 @@ std::string extend_to_pcurves(const TopoDS_Face& face, bool u_periodic, bool v_p
            " to hold its trim loops (its end pieces continued, as OCCT evaluates them)";
 }
 
+// The face with its wires mended by OCCT's ShapeFix_Wire (self-intersecting edges, edges that
+// cross, adjacent or not; precision the largest tolerance of its edges), or nothing where that
+// changes nothing. bug32596_abc_0_13.step's faces 4, 13, 65 (edge tolerances up to 0.0099 on a
+// domain 0.0086 wide in u) and bug22869_Spring.igs's face 5 (up to 0.079) have p-curves that
+// cross; mended, their loops are valid and their areas within 1e-4 of OCCT's area of the face as
+// the file has it (faces 4, 13, 65: 3.4e-5, 3.8e-5, 2.0e-6).
+struct Mended {
+    TopoDS_Face face;
+    std::string what;
+};
+std::optional<Mended> fixed_wires(const TopoDS_Face& original) {
+    // A deep copy: ShapeFix changes edges in place, and the file's edges are shared with the
+    // neighbouring faces (which must come in as the file has them).
+    const TopoDS_Face face = TopoDS::Face(BRepBuilderAPI_Copy(original).Shape());
+    double precision = 0;
+    for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next())
+        precision = std::max(precision, BRep_Tool::Tolerance(TopoDS::Edge(e.Current())));
+    TopoDS_Face out = TopoDS::Face(face.EmptyCopied());
+    BRep_Builder builder;
+    bool changed = false;
+    for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next()) {
+        ShapeFix_Wire fix(TopoDS::Wire(w.Current()), face, precision);
+        fix.FixSelfIntersectingEdgeMode() = 1;
+        fix.FixIntersectingEdgesMode() = 1;
+        fix.FixNonAdjacentIntersectingEdgesMode() = 1;
+        fix.ModifyTopologyMode() = Standard_True; // may cut edges and move vertices
+        fix.ModifyGeometryMode() = Standard_True; // may replace p-curves
+        changed = fix.Perform() || changed;
+        builder.Add(out, fix.Wire());
+    }
+    if (!changed) return std::nullopt;
+    return Mended{out, "its wires' crossing p-curves were mended by OCCT's ShapeFix_Wire (at the "
+                       "largest edge tolerance, " +
+                           geom::format_short(precision, 3) + ")"};
+}
+
 // The surface an offset surface is, exactly, where OCCT or the basis's form gives one: OCCT's own
 // equivalent (Geom_OffsetSurface::Surface: a plane, cylinder, cone, sphere or torus basis, trimmed
 // or not, becomes the same kind with the offset radius), or, for a straight line revolved about
@@ -312,18 +351,44 @@ Converted face_geometry(const TopoDS_Face& face) {
     }
     if (b.IsNull()) return {std::nullopt, kind + ": OCCT cannot convert it to a B-spline surface"};
     geom::Surface surface = to_surface(b);
-    FaceBox box{u.lo, u.hi, v.lo, v.hi, up ? s->UPeriod() : 0.0, vp ? s->VPeriod() : 0.0};
-    // Only where the parameters are OCCT's own (a B-spline, not one converted over a box).
-    const std::string extended = Handle(Geom_BSplineSurface)::DownCast(s).IsNull()
-                                     ? ""
-                                     : extend_to_pcurves(face, up, vp, surface, box);
-    auto trim = face_trim(face, s, box, surface);
-    if (auto* why = std::get_if<std::string>(&trim))
-        return {std::move(surface), "", kind + ": its trim loops were left out (" + *why + ")"};
-    if (is_whole_domain(std::get<geom::Trim>(trim), geom::domain(surface)))
-        return {std::move(surface), "", ""};
-    return {geom::TrimmedSurface{std::move(surface), std::move(std::get<geom::Trim>(trim))}, "",
-            extended.empty() ? "" : kind + ": " + extended};
+    const FaceBox box{u.lo, u.hi, v.lo, v.hi, up ? s->UPeriod() : 0.0, vp ? s->VPeriod() : 0.0};
+    // The face's loops on the surface (extended where its p-curves leave a B-spline's range:
+    // only there are the parameters OCCT's own, not a conversion's over the box).
+    struct Attempt {
+        geom::Surface surface;
+        std::variant<geom::Trim, std::string> trim;
+        std::string extended;
+    };
+    const auto attempt = [&](const TopoDS_Face& f) {
+        Attempt a{surface, {}, ""};
+        FaceBox b = box;
+        if (!Handle(Geom_BSplineSurface)::DownCast(s).IsNull())
+            a.extended = extend_to_pcurves(f, up, vp, a.surface, b);
+        a.trim = face_trim(f, s, b, a.surface);
+        return a;
+    };
+    Attempt a = attempt(face);
+    std::string fixed;
+    if (std::holds_alternative<std::string>(a.trim)) {
+        // p-curves that cross within a loose file tolerance: the wires as OCCT's own ShapeFix
+        // mends them (occt_trim.hpp fixed_wires), kept only where that gives valid loops.
+        const auto mended = fixed_wires(face);
+        if (mended) {
+            Attempt b = attempt(mended->face);
+            if (std::holds_alternative<geom::Trim>(b.trim)) {
+                a = std::move(b);
+                fixed = mended->what;
+            }
+        }
+    }
+    if (auto* why = std::get_if<std::string>(&a.trim))
+        return {std::move(a.surface), "", kind + ": its trim loops were left out (" + *why + ")"};
+    if (is_whole_domain(std::get<geom::Trim>(a.trim), geom::domain(a.surface)) && fixed.empty())
+        return {std::move(a.surface), "", ""};
+    std::string note = a.extended;
+    if (!fixed.empty()) note += (note.empty() ? "" : "; ") + fixed;
+    return {geom::TrimmedSurface{std::move(a.surface), std::move(std::get<geom::Trim>(a.trim))}, "",
+            note.empty() ? "" : kind + ": " + note};
 }
 
 Converted edge_geometry(const TopoDS_Edge& edge) {
