@@ -34,11 +34,11 @@ struct WorkstationOptions {
 };
 
 // Gesture frames on a CPU rasteriser (llvmpipe): while the mouse drags (a point, the indicator,
-// an orbit) or the wheel turns, the implicit objects are drawn from meshes of their coarse grid
-// (a quarter of the triangles: a software rasteriser's orbit of the implicit gallery is bound
-// by triangles, not pixels); every still frame, and the one after the release, is drawn in
-// full. Headless renders are never gestures. (Half-resolution gesture frames were measured and
-// dropped: llvmpipe's scaled blit cost more than the fill they saved.)
+// an orbit) or the wheel turns, the implicit objects are drawn from meshes of a coarse grid
+// (2.5 cells or more: a sixth of the triangles; a software rasteriser's orbit of the implicit
+// gallery is bound by triangles, not pixels); every still frame, and the one after the release, is
+// drawn in full. Headless renders are never gestures. (Half-resolution gesture frames were measured
+// and dropped: llvmpipe's scaled blit cost more than the fill they saved.)
 struct GestureFrames {
     bool coarse = true;  // draw gestures coarse (off: every frame in full, as before)
     bool forced = false; // a gesture without the mouse (the frame benchmark's drags)

@@ -26,7 +26,7 @@ public:
         bool wait = false;           // polygonize synchronously (headless)
         std::uint64_t coarse_id = 0; // this object's parameter slider is moving: coarse grid
         // A gesture frame (an orbit, a drag on a CPU rasteriser): every object shows a mesh of
-        // its coarse grid, made once beside the full one and kept until the object changes.
+        // a coarse grid, made once beside the full one and kept until the object changes.
         bool gesture = false;
         std::function<void()> wake; // called from the worker when a mesh is ready
     };
