@@ -171,6 +171,12 @@ double evaluate_dual(const std::vector<Program::Instruction>& code, const glm::d
     };
     for (const Program::Instruction& in : code) {
         switch (in.op) {
+        case op_store:
+            stack[in.n] = end[-1];
+            break;
+        case op_load:
+            *end++ = stack[in.n];
+            break;
         case op_const:
             push_constant(in.c);
             break;
@@ -219,9 +225,9 @@ template <int N> struct DualLanes {
     double* d[L];
 };
 
-template <int N> std::size_t dual_scratch_size(int max_stack) {
+template <int N> std::size_t dual_scratch_size(int slots) {
     // The slots, then one lane of per-point factors.
-    return (static_cast<std::size_t>(max_stack) * (1 + lanes_for<N>)+1) * dual_block;
+    return (static_cast<std::size_t>(slots) * (1 + lanes_for<N>)+1) * dual_block;
 }
 
 // d = d * bv + av * bd (the product rule, with a's old value).
@@ -401,7 +407,7 @@ template <int N>
 
 // directions: the tangent seeds of x, y, z per point (N = 1); nullptr: unit seeds (N = 3).
 template <int N>
-void evaluate_dual_lanes(const std::vector<Program::Instruction>& code, int max_stack,
+void evaluate_dual_lanes(const std::vector<Program::Instruction>& code, int slots,
                          const glm::dvec3* points, const glm::dvec3* directions, std::size_t m,
                          const double* params, double* scratch, double* values, double* tangents) {
     constexpr int L = lanes_for<N>;
@@ -414,9 +420,17 @@ void evaluate_dual_lanes(const std::vector<Program::Instruction>& code, int max_
         return lanes;
     };
     int sp = 0;
-    double* const f = scratch + static_cast<std::size_t>(max_stack) * (1 + L) * dual_block;
+    double* const f = scratch + static_cast<std::size_t>(slots) * (1 + L) * dual_block;
     for (const Program::Instruction& in : code) {
         switch (in.op) {
+        case op_store:
+        case op_load: {
+            const DualLanes<N> from = slot(in.op == op_store ? sp - 1 : in.n);
+            const DualLanes<N> to = slot(in.op == op_store ? in.n : sp++);
+            std::copy_n(from.v, padded, to.v);
+            for (int i = 0; i < L; ++i) std::copy_n(from.d[i], padded, to.d[i]);
+            break;
+        }
         case op_const:
         case op_param: {
             const DualLanes<N> a = slot(sp++);
@@ -468,7 +482,7 @@ double Program::value_and_gradient(const glm::dvec3& p, glm::dvec3& gradient,
     assert(params != nullptr || parameter_names_.empty());
     static constexpr double seeds[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     double tangent[3];
-    const double v = evaluate_dual<3>(code_, p, seeds, params, tangent);
+    const double v = evaluate_dual<3>(run().code, p, seeds, params, tangent);
     gradient = glm::dvec3(tangent[0], tangent[1], tangent[2]);
     return v;
 }
@@ -478,7 +492,7 @@ double Program::value_and_derivative(const glm::dvec3& p, const glm::dvec3& dire
     assert(params != nullptr || parameter_names_.empty());
     const double seeds[3][1] = {{direction.x}, {direction.y}, {direction.z}};
     double tangent[1];
-    const double v = evaluate_dual<1>(code_, p, seeds, params, tangent);
+    const double v = evaluate_dual<1>(run().code, p, seeds, params, tangent);
     derivative = tangent[0];
     return v;
 }
@@ -487,13 +501,14 @@ void Program::values_and_derivatives(const glm::dvec3* points, const glm::dvec3*
                                      std::size_t n, double* values, double* derivatives,
                                      const double* params, std::vector<double>& scratch) const {
     assert(params != nullptr || parameter_names_.empty());
-    const std::size_t need = dual_scratch_size<1>(max_stack_);
+    const Code& program = run();
+    const std::size_t need = dual_scratch_size<1>(program.slots);
     if (scratch.size() < need) scratch.resize(need);
     for (std::size_t first = 0; first < n; first += dual_block) {
         const std::size_t m = std::min(dual_block, n - first);
         const glm::dvec3* dirs = directions + first;
-        evaluate_dual_lanes<1>(code_, max_stack_, points + first, dirs, m, params, scratch.data(),
-                               values + first, derivatives + first);
+        evaluate_dual_lanes<1>(program.code, program.slots, points + first, dirs, m, params,
+                               scratch.data(), values + first, derivatives + first);
     }
 }
 
@@ -501,12 +516,13 @@ void Program::values_and_gradients(const glm::dvec3* points, std::size_t n, doub
                                    glm::dvec3* gradients, const double* params,
                                    std::vector<double>& scratch) const {
     assert(params != nullptr || parameter_names_.empty());
-    const std::size_t need = dual_scratch_size<3>(max_stack_);
+    const Code& program = run();
+    const std::size_t need = dual_scratch_size<3>(program.slots);
     if (scratch.size() < need) scratch.resize(need);
     double tangents[dual_block * 3];
     for (std::size_t first = 0; first < n; first += dual_block) {
         const std::size_t m = std::min(dual_block, n - first);
-        evaluate_dual_lanes<3>(code_, max_stack_, points + first, nullptr, m, params,
+        evaluate_dual_lanes<3>(program.code, program.slots, points + first, nullptr, m, params,
                                scratch.data(), values + first, tangents);
         for (std::size_t k = 0; k < m; ++k)
             gradients[first + k] =

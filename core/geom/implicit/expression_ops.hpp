@@ -39,6 +39,8 @@ enum Op : std::uint8_t {
     op_log,
     op_sqrt,
     op_abs,
+    op_store, // copy the top of the stack to slot n (a register), keeping it on the stack
+    op_load,  // push a copy of slot n
 };
 
 // Nesting (parentheses, function calls, exponents) is bounded so the parser's recursion and the
@@ -48,6 +50,14 @@ constexpr int max_nesting = 64;
 constexpr int stack_capacity = 256;
 constexpr int max_int_exponent = 64; // larger integer exponents go through pow
 constexpr std::size_t batch_block = 256;
+
+// Common-subexpression elimination on folded postfix code (expression_share.cpp): the
+// first occurrence of a repeated subexpression is followed by op_store into a register slot
+// (from max_stack up, at most stack_capacity), the later ones replaced by op_load. Each
+// value is computed by the same instructions as before, so every evaluator gives the same
+// bits. `slots` is set to max_stack + the registers used.
+std::vector<Program::Instruction>
+share_subexpressions(const std::vector<Program::Instruction>& code, int max_stack, int& slots);
 
 // a^n by binary exponentiation; x^2 and x^3 cost one and two multiplications. The special
 // cases give the same bits as the loop would (1 * (a * a) == a * a).

@@ -375,6 +375,7 @@ int stack_delta(std::uint8_t op) {
     case op_y:
     case op_z:
     case op_param:
+    case op_load:
         return 1;
     case op_add:
     case op_sub:
@@ -411,18 +412,25 @@ Expected<Program> compile(std::string_view text, const std::vector<std::string>&
                               "parameter name '" + name + "' is given more than once", path);
     }
     Program program;
+    Program::Code& plain = program.plain_;
     try {
-        program.code_ = Parser(text, parameter_names).run();
+        plain.code = Parser(text, parameter_names).run();
     } catch (const ParseFailure& e) {
         return make_error(ErrorCode::parse, e.message);
     }
     program.parameter_names_ = parameter_names;
     int depth = 0;
-    for (const auto& in : program.code_) {
+    for (const auto& in : plain.code) {
         depth += stack_delta(in.op);
-        program.max_stack_ = std::max(program.max_stack_, depth);
+        plain.max_stack = std::max(plain.max_stack, depth);
     }
-    assert(depth == 1 && program.max_stack_ <= stack_capacity);
+    assert(depth == 1 && plain.max_stack <= stack_capacity);
+    plain.slots = plain.max_stack;
+    // The shared code never needs a deeper stack (a load stands for a whole subexpression), so
+    // its registers can start where the plain code's stack ends.
+    Program::Code& shared = program.shared_;
+    shared.code = share_subexpressions(plain.code, plain.max_stack, shared.slots);
+    shared.max_stack = plain.max_stack;
     return program;
 }
 
