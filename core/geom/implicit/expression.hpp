@@ -70,6 +70,7 @@ private:
         std::vector<Instruction> code;
         int max_stack = 0;
         int slots = 0;
+        bool has_pow = false; // op_pow: a power with a varying exponent
     };
     const Code& run() const { return sharing_ ? shared_ : plain_; }
     Code plain_;  // as parsed and folded

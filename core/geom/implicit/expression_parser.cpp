@@ -426,11 +426,14 @@ Expected<Program> compile(std::string_view text, const std::vector<std::string>&
     }
     assert(depth == 1 && plain.max_stack <= stack_capacity);
     plain.slots = plain.max_stack;
+    plain.has_pow = std::any_of(plain.code.begin(), plain.code.end(),
+                                [](const Program::Instruction& in) { return in.op == op_pow; });
     // The shared code never needs a deeper stack (a load stands for a whole subexpression), so
     // its registers can start where the plain code's stack ends.
     Program::Code& shared = program.shared_;
     shared.code = share_subexpressions(plain.code, plain.max_stack, shared.slots);
     shared.max_stack = plain.max_stack;
+    shared.has_pow = plain.has_pow;
     return program;
 }
 

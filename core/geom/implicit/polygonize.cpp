@@ -169,6 +169,65 @@ struct Workspace {
     Refiner refiner;
 };
 
+// The planes' and chunks' arrays of finished polygonizations, kept for the next one: the
+// workstation polygonizes again at every parameter change and `isoparm render` one surface after
+// another, and arrays of that size are fresh pages from the kernel each time (their page faults
+// cost about a sixth of the gallery's polygonization). At most two sets and 128 MiB are kept.
+struct Buffers {
+    std::vector<BoundaryPlane> planes;
+    std::vector<Chunk> chunks;
+
+    std::size_t bytes() const {
+        std::size_t n = 0;
+        auto group = [&](const VertexGroup& g) {
+            n += (g.positions.capacity() + g.normals.capacity()) * sizeof(glm::dvec3) +
+                 g.pinned.capacity() * sizeof(g.pinned[0]);
+        };
+        for (const BoundaryPlane& p : planes) {
+            group(p.vertices);
+            n += p.values.capacity() * sizeof(double) + p.rows.capacity() +
+                 p.ids.capacity() * sizeof(Index);
+        }
+        for (const Chunk& c : chunks) {
+            group(c.vertices);
+            n += c.triangles.capacity() * sizeof(c.triangles[0]);
+        }
+        return n;
+    }
+};
+
+class BufferPool {
+public:
+    Buffers take() {
+        std::lock_guard lock(mutex_);
+        if (free_.empty()) return {};
+        Buffers b = std::move(free_.back());
+        free_.pop_back();
+        return b;
+    }
+    void give(Buffers&& b) {
+        if (b.bytes() > (std::size_t{128} << 20)) return;
+        std::lock_guard lock(mutex_);
+        if (free_.size() < 2) free_.push_back(std::move(b));
+    }
+
+private:
+    std::mutex mutex_;
+    std::vector<Buffers> free_;
+};
+
+BufferPool& buffer_pool() {
+    static BufferPool pool;
+    return pool;
+}
+
+// Empty arrays that keep their room.
+void clear(VertexGroup& g) {
+    g.positions.clear();
+    g.normals.clear();
+    g.pinned.clear();
+}
+
 struct Polygonizer {
     Context ctx;
     std::vector<BoundaryPlane> planes;
@@ -579,8 +638,9 @@ Expected<Mesh> merge_chunks(Polygonizer& pz, std::vector<std::pair<std::uint64_t
             mesh.triangles.push_back(r);
         }
     }
-    pz.chunks.clear();
+    buffer_pool().give(Buffers{std::move(pz.planes), std::move(pz.chunks)});
     pz.planes.clear();
+    pz.chunks.clear();
 
     return mesh;
 }
@@ -617,8 +677,16 @@ Expected<Mesh> polygonize(const Program& f, const PolygonizeOptions& options) {
     pz.max_triangles = options.max_triangles;
     // About eight slabs per chunk, at most 32 chunks: enough to balance two to eight threads.
     const int chunk_count = std::clamp(grid.nz / 8, 1, 32);
+    Buffers reused = buffer_pool().take();
+    pz.planes = std::move(reused.planes);
+    pz.chunks = std::move(reused.chunks);
     pz.planes.resize(chunk_count + 1);
     pz.chunks.resize(chunk_count);
+    for (BoundaryPlane& bp : pz.planes) clear(bp.vertices);
+    for (Chunk& ch : pz.chunks) {
+        clear(ch.vertices);
+        ch.triangles.clear();
+    }
     for (int c = 0; c <= chunk_count; ++c)
         pz.planes[c].layer = static_cast<int>(static_cast<long>(grid.nz) * c / chunk_count);
     for (int c = 0; c < chunk_count; ++c) {
