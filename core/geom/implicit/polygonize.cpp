@@ -693,15 +693,15 @@ Expected<Mesh> merge_chunks(Polygonizer& pz, std::vector<std::pair<std::uint64_t
     plane_offset.back() = append(pz.planes.back().vertices);
     if (mesh.positions.size() >= static_cast<std::size_t>(tag_bottom))
         return make_error(ErrorCode::limit, "the mesh has too many vertices", "/cell");
-    mesh.triangles.reserve(triangle_count);
+    mesh.triangles.resize(triangle_count);
+    std::array<Index, 3>* out = mesh.triangles.data();
     for (std::size_t c = 0; c < pz.chunks.size(); ++c) {
         const Index offsets[3] = {static_cast<Index>(chunk_offset[c]),
                                   static_cast<Index>(plane_offset[c]),
                                   static_cast<Index>(plane_offset[c + 1])};
         for (const auto& t : pz.chunks[c].triangles) {
-            std::array<Index, 3> r;
-            for (int k = 0; k < 3; ++k) r[k] = (t[k] & ~tag_mask) + offsets[t[k] >> 30];
-            mesh.triangles.push_back(r);
+            for (int k = 0; k < 3; ++k) (*out)[k] = (t[k] & ~tag_mask) + offsets[t[k] >> 30];
+            ++out;
         }
     }
     buffer_pool().give(Buffers{std::move(pz.planes), std::move(pz.chunks)});
