@@ -13,6 +13,8 @@
 #include "core/doc/commands_trim.hpp"
 #include "core/geom/knots.hpp"
 #include "core/geom/status.hpp"
+#include "core/geom/trim/projected_loop.hpp"
+#include "core/geom/trim/trim_flatten.hpp"
 #include "ui/view/doc_access.hpp"
 
 namespace isoparm::ui {
@@ -68,25 +70,41 @@ void run_noted(AppContext& ctx, const ActionState& state, const std::string& ref
     ctx.seal();
 }
 
-// Twice the signed area of the polygon (positive: counter-clockwise).
-double signed_area2(const std::vector<glm::dvec2>& p) {
-    double a = 0;
-    for (std::size_t k = 0; k < p.size(); ++k) {
-        const glm::dvec2 q = p[k], r = p[(k + 1) % p.size()];
-        a += q.x * r.y - r.x * q.y;
-    }
-    return a;
+// The loop turned to run the way its role wants (holes clockwise, the outer loop
+// counter-clockwise), judged by the area its flattened polyline encloses.
+geom::TrimLoop oriented(geom::TrimLoop loop, bool hole) {
+    const double area = geom::twice_signed_area(geom::flatten_loop(loop, {}).points);
+    return (area > 0) == hole ? geom::reversed(loop) : loop;
 }
 
-// The trim with the drawn polygon as one more hole or as the outer loop.
-geom::Trim with_drawn_loop(const doc::SurfaceObject& s, const TrimDrawing& d) {
-    std::vector<glm::dvec2> corners = d.corners;
-    if ((signed_area2(corners) > 0) == d.hole) std::reverse(corners.begin(), corners.end());
+// The direction a curve drawn in `plane` is projected along; nullopt for a 3D curve.
+std::optional<glm::dvec3> plane_normal(doc::CurvePlane plane) {
+    switch (plane) {
+    case doc::CurvePlane::xy:
+        return glm::dvec3(0, 0, 1);
+    case doc::CurvePlane::xz:
+        return glm::dvec3(0, 1, 0);
+    case doc::CurvePlane::yz:
+        return glm::dvec3(1, 0, 0);
+    case doc::CurvePlane::free3d:
+        return std::nullopt;
+    }
+    return std::nullopt;
+}
+
+const char* seen_along(doc::CurvePlane plane) {
+    return plane == doc::CurvePlane::xy ? "z" : plane == doc::CurvePlane::xz ? "y" : "x";
+}
+
+// The trim with the drawn loop (the polygon, or the smooth loop on it) as one more hole or as
+// the outer loop.
+geom::Trim with_drawn_loop(const doc::SurfaceObject& s, const TrimDrawing& d, bool smooth) {
+    geom::TrimLoop loop = oriented(drawn_loop(d.corners, smooth), d.hole);
     geom::Trim trim = s.trim;
     if (d.hole)
-        trim.holes.push_back(geom::polygon_loop(corners));
+        trim.holes.push_back(std::move(loop));
     else
-        trim.outer = geom::polygon_loop(corners);
+        trim.outer = std::move(loop);
     return trim;
 }
 
@@ -105,7 +123,8 @@ void start_drawing(AppContext& ctx, bool hole) {
     ctx.ui.trim_drawing = {t.object->id, hole, {}};
     ctx.ui.status = std::string("Drawing ") + (hole ? "a hole" : "the outer loop") +
                     ": click its corners in the tracing square; Enter or a click on the first "
-                    "corner closes it, Backspace takes a corner back, Escape abandons it.";
+                    "corner closes it, Backspace takes a corner back, C makes it smooth or a "
+                    "polygon, Escape abandons it.";
 }
 
 } // namespace
@@ -124,6 +143,19 @@ void start_drawing_hole(AppContext& ctx) {
 
 void start_drawing_outer(AppContext& ctx) {
     start_drawing(ctx, false);
+}
+
+geom::TrimLoop drawn_loop(const std::vector<glm::dvec2>& corners, bool smooth) {
+    return smooth ? geom::smooth_loop(corners) : geom::polygon_loop(corners);
+}
+
+void toggle_smooth_loops(AppContext& ctx) {
+    ctx.ui.smooth_loops = !ctx.ui.smooth_loops;
+    if (ctx.ui.trim_drawing.active())
+        ctx.ui.status = ctx.ui.smooth_loops
+                            ? "Smooth loop: the corners are the control points of a closed cubic "
+                              "B-spline (C: a polygon again)."
+                            : "Polygon loop: straight edges through the corners (C: smooth).";
 }
 
 void add_loop_corner(AppContext& ctx, glm::dvec2 uv) {
@@ -164,7 +196,7 @@ void close_drawn_loop(AppContext& ctx) {
     }
     const bool hole = d.hole;
     ctx.seal();
-    if (ctx.execute(doc::set_trim(d.object, with_drawn_loop(*s, d)))) {
+    if (ctx.execute(doc::set_trim(d.object, with_drawn_loop(*s, d, ctx.ui.smooth_loops)))) {
         d = {};
         note_action(ctx,
                     hole ? "Hole added: the region inside it is cut away."
@@ -208,6 +240,48 @@ void punch_hole_at_indicator(AppContext& ctx) {
                   ": the surface keeps its points and knots; its trim has " +
                   std::to_string(holes) + (holes == 1 ? " hole" : " holes") +
                   " (the indicator inside is cut away).");
+}
+
+ActionState trim_by_curve_state(const AppContext& ctx, const doc::Object& curve) {
+    const doc::CurveObject* c = curve.curve_object();
+    std::string label = curve.name;
+    if (c && plane_normal(c->plane))
+        label += std::string(" (seen along ") + seen_along(c->plane) + ")";
+    if (!c) return {label, false, "not a curve"};
+    if (!target(ctx).surface) return {label, false, "select the surface to trim"};
+    if (!plane_normal(c->plane))
+        return {label, false,
+                "a curve drawn in 3D has no plane to project along: set its plane to xy, xz or "
+                "yz in the curve designer"};
+    return {label, true, {}};
+}
+
+void trim_by_curve(AppContext& ctx, std::uint64_t curve, bool hole) {
+    const Target t = target(ctx);
+    const doc::Object* o = ctx.doc.find(curve);
+    if (!t.surface || !o || !o->curve_object()) return;
+    const ActionState state = trim_by_curve_state(ctx, *o);
+    const doc::CurveObject& c = *o->curve_object();
+    const std::string refused = "Cannot trim " + t.object->name + " by " + o->name + ": ";
+    if (!state.enabled) {
+        note_action(ctx, refused + state.why, true);
+        return;
+    }
+    auto loop = geom::projected_loop(t.surface->surface, c.curve, *plane_normal(c.plane));
+    if (!loop) {
+        note_action(ctx, refused + loop.error().message, true);
+        return;
+    }
+    geom::Trim trim = t.surface->trim;
+    if (hole)
+        trim.holes.push_back(oriented(std::move(*loop), true));
+    else
+        trim.outer = oriented(std::move(*loop), false);
+    run_noted(ctx, state, refused, doc::set_trim(t.object->id, std::move(trim)),
+              std::string(hole ? "Hole cut along " : "Outer loop set along ") + o->name +
+                  " seen along " + seen_along(c.plane) + ": " +
+                  (hole ? "the surface inside it is cut away."
+                        : "the surface keeps what lies inside it."));
 }
 
 void remove_trim_current(AppContext& ctx) {

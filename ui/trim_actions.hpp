@@ -3,7 +3,11 @@
 // panel and the keyboard (the loops themselves: core/geom/trim).
 #pragma once
 
+#include <cstdint>
 #include <glm/vec2.hpp>
+#include <vector>
+
+#include "core/geom/trim/trim.hpp"
 
 #include "ui/app_context.hpp"
 #include "ui/surface_actions.hpp"
@@ -36,5 +40,17 @@ void add_loop_corner(AppContext& ctx, glm::dvec2 uv);
 void take_back_loop_corner(AppContext& ctx);
 void close_drawn_loop(AppContext& ctx);
 void cancel_loop_drawing(AppContext& ctx);
+// The loop the corners make: the polygon through them, or (smooth) the closed cubic B-spline
+// they are the control points of (geom::polygon_loop, geom::smooth_loop). Which one a drawing
+// makes is ctx.ui.smooth_loops, switched from the menu or by C while drawing.
+geom::TrimLoop drawn_loop(const std::vector<glm::dvec2>& corners, bool smooth);
+void toggle_smooth_loops(AppContext& ctx);
+
+// Trimming by a closed curve drawn in the curve designer in the xy, xz or yz plane: its
+// projection along the plane's normal onto the current surface (core/geom/trim/projected_loop)
+// becomes one more hole, or the outer loop. The item is enabled for a curve in a plane; the
+// projection's refusal (not closed, missing the surface) is the action's note.
+ActionState trim_by_curve_state(const AppContext& ctx, const doc::Object& curve);
+void trim_by_curve(AppContext& ctx, std::uint64_t curve, bool hole);
 
 } // namespace isoparm::ui

@@ -204,10 +204,10 @@ struct ActionNote {
     std::string undo_label;
 };
 
-// A knot tick held in the tracing panel: the run of copies it moves.
 // A trim loop being drawn in the tracing square (Surface > Trim > Draw ...): the corners
-// clicked so far, in the surface's own (u, v). Closed into a polygon loop, it becomes the
-// outer loop or one more hole of the surface's trim (ui/trim_actions.hpp).
+// clicked so far, in the surface's own (u, v). Closed into a polygon loop (or, smooth, the
+// closed cubic B-spline they are the control points of), it becomes the outer loop or one
+// more hole of the surface's trim (ui/trim_actions.hpp).
 struct TrimDrawing {
     std::uint64_t object = 0; // the surface being trimmed; 0: not drawing
     bool hole = true;         // a hole (the kept region outside it) or the outer loop
@@ -215,6 +215,7 @@ struct TrimDrawing {
     bool active() const { return object != 0; }
 };
 
+// A knot tick held in the tracing panel: the run of copies it moves.
 struct KnotDrag {
     bool active = false;
     geom::Dir dir = geom::Dir::u;
@@ -349,6 +350,7 @@ struct UiState {
     bool indicator_drag = false;
     KnotDrag knot_drag;
     TrimDrawing trim_drawing;
+    bool smooth_loops = false; // drawn loops are smooth: Surface > Trim, or C while drawing
     DeBoorPlayer deboor;
     ActionNote action_note;
 

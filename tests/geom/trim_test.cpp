@@ -433,3 +433,27 @@ TEST(TrimArea, PlaneWithAHoleAndADisc) {
     EXPECT_NEAR(trimmed_area(s, d), std::numbers::pi * 0.6 * 0.3, 2e-9);
     EXPECT_NEAR(trimmed_area(s, Trim{}), 2.0, 1e-12);
 }
+
+TEST(TrimLoops, SmoothLoopIsAClosedC2CubicInsideItsPolygon) {
+    const std::vector<glm::dvec2> control{{0.2, 0.2}, {0.8, 0.25}, {0.7, 0.8}, {0.3, 0.7}};
+    const TrimLoop loop = smooth_loop(control);
+    ASSERT_EQ(loop.curves.size(), 4u);
+    for (std::size_t k = 0; k < 4; ++k) {
+        const Curve& a = loop.curves[k];
+        const Curve& b = loop.curves[(k + 1) % 4];
+        EXPECT_EQ(a.degree, 3);
+        // Closed exactly, and C2 where the pieces meet (uniform knots, equal Bezier spans).
+        EXPECT_EQ(a.points.back(), b.points.front());
+        const auto da = *curve_derivatives(a, 1.0, 2), db = *curve_derivatives(b, 0.0, 2);
+        for (int d = 1; d <= 2; ++d) EXPECT_NEAR(glm::length(da[d] - db[d]), 0.0, 1e-12) << d;
+    }
+    // The B-spline's point at the knot between P1 and P2: (P0 + 4 P1 + P2) / 6.
+    const glm::dvec3 start = *curve_point(loop.curves[1], 0.0);
+    EXPECT_NEAR(start.x, (0.2 + 4 * 0.8 + 0.7) / 6, 1e-15);
+    EXPECT_NEAR(start.y, (0.2 + 4 * 0.25 + 0.8) / 6, 1e-15);
+    // Runs the polygon's way (counter-clockwise) and is a valid outer loop of the unit square.
+    Trim t;
+    t.outer = loop;
+    EXPECT_TRUE(validate_trim(t, unit));
+    EXPECT_FALSE(validate_trim(Trim{std::nullopt, {loop}}, unit)); // not a clockwise hole
+}

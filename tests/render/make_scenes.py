@@ -245,6 +245,17 @@ def figure_scenes(isoparm):
     # flat triangle of Surface > New triangular patch with its middle point b111 lifted and
     # weighted 2, the edge points b210 and b120 raised and b012 lowered.
     scenes["triangle-cubic"] = triangle_scene()
+
+    # Trimming by a projected curve (issue #35): Figure 3(b)'s hill and a circle of radius 0.5
+    # drawn in the xy plane under it, for Surface > Trim > Cut a hole along a curve.
+    hill = nurbs_surface(grid_net(HILL), [[5.0 if (i, j) == (2, 2) else 1.0 for j in range(5)]
+                                          for i in range(5)])
+    cutter = {"type": "nurbs", "degree": 2, "knots": CIRCLE_KNOTS,
+              "points": [[0.25 + 0.5 * x, 0.5 * y, 0.0] for (x, y) in CIRCLE_UNIT],
+              "weights": CIRCLE_WEIGHTS}
+    scenes["trim-by-curve"] = scene([surface_object(1, "hill", hill),
+                                     curve_object(2, "cutter", cutter, "xy")], {},
+                                    selection={"object": 1})
     return scenes
 
 

@@ -1373,6 +1373,80 @@ def trim_drawn_in_the_tracing_square(s, ctx):
           "Ctrl+Z did not bring the hole back")
 
 
+def smooth_loop_drawn_in_the_tracing_square(s, ctx):
+    """Surface > Trim > Smooth drawn loops, then a hole drawn by four clicks: the clicked points
+    are the control points of a closed cubic B-spline (four cubic pieces inside their polygon,
+    turned clockwise). After Ctrl+Z the same clicks with C pressed while drawing make a polygon
+    again."""
+    s.menu("Surface", "Trim", "surface/smooth_loops")
+    corners = [(0.2, 0.2), (0.6, 0.2), (0.6, 0.55), (0.2, 0.55)]  # (u, v), counter-clockwise
+
+    def draw(toggle):
+        s.menu("Surface", "Trim", "surface/draw_hole")
+        sq = s.rect("tracing/square")
+        for u, v in corners:
+            s.click_rect(sq, u, 1 - v)
+        if toggle:
+            s.key("c")
+        ctx.shot(s, "polygon-drawn" if toggle else "smooth-drawn")
+        s.key("Return")
+        s.wait_for("the hole set", lambda r: r["undo"].startswith("Trim (1 loop)"))
+        holes = s.save()["objects"][0].get("trim", {}).get("holes", [])
+        check(len(holes) == 1 and len(holes[0]) == 4, f"the saved holes: {holes!r}")
+        return holes[0]
+
+    hole = draw(False)
+    check(all(c["degree"] == 3 and len(c["points"]) == 4 for c in hole),
+          f"a smooth hole is four cubic pieces: {hole!r}")
+    starts = [c["points"][0][:2] for c in hole]
+    check(signed_area(starts) < 0, f"the smooth hole runs counter-clockwise: {starts}")
+    # Each piece starts at (P_i-1 + 4 P_i + P_i+1) / 6: well inside the clicked rectangle.
+    check(all(0.25 < p[0] < 0.55 and 0.25 < p[1] < 0.5 for p in starts),
+          f"the smooth hole's joints are not inside the clicked polygon: {starts}")
+    ctx.shot(s, "smooth-hole")
+    s.key("ctrl+z")
+    s.wait_for("Ctrl+Z: no trim", lambda r: not r["undo"].startswith("Trim"))
+    hole = draw(True)
+    check(all(c["degree"] == 1 for c in hole), f"C while drawing: not a polygon: {hole!r}")
+
+
+def trim_by_a_projected_curve(s, ctx):
+    """Surface > Trim > Cut a hole along a curve: the circle 'cutter' drawn in the xy plane,
+    seen along z, cuts a clockwise hole in the hill; the indicator inside it is cut away;
+    Ctrl+Z, then Keep the inside of a curve makes the same circle the outer loop (the inside
+    kept, the corner of the domain cut away)."""
+    s.menu("Surface", "Trim", "Cut a hole along a curve", "surface/hole_along/0")
+    s.wait_for("the hole cut along the circle", lambda r: r["undo"].startswith("Trim (1 loop)"))
+    trim = s.save()["objects"][0].get("trim", {})
+    holes = trim.get("holes", [])
+    # The circle's four quarter arcs (C0 knots) give four pieces.
+    check(len(holes) == 1 and len(holes[0]) == 4 and "outer" not in trim,
+          f"the saved trim after cutting along the circle: {trim!r}")
+    starts = [c["points"][0][:2] for c in holes[0]]
+    check(signed_area(starts) < 0, f"the projected hole runs counter-clockwise: {starts}")
+    centre = [sum(p[k] for p in starts) / 4 for k in (0, 1)]
+    sq = s.rect("tracing/square")
+    s.click_rect(sq, centre[0], 1 - centre[1])
+    s.wait_for("the indicator cut away", lambda r: r["facts"].get("tracing/indicator_cut") == 1)
+    ctx.shot(s, "hole-along-circle")
+    s.key("ctrl+z")
+    s.wait_for("Ctrl+Z: no trim", lambda r: not r["undo"].startswith("Trim"))
+    s.menu("Surface", "Trim", "Keep the inside of a curve", "surface/keep_inside/0")
+    s.wait_for("the outer loop along the circle",
+               lambda r: r["undo"].startswith("Trim (1 loop)"))
+    trim = s.save()["objects"][0].get("trim", {})
+    outer = trim.get("outer", [])
+    check(len(outer) == 4 and not trim.get("holes"), f"the saved trim: {trim!r}")
+    check(signed_area([c["points"][0][:2] for c in outer]) > 0,
+          "the projected outer loop runs clockwise")
+    sq = s.rect("tracing/square")
+    s.click_rect(sq, 0.03, 1 - 0.03)  # a corner of the domain: outside the circle
+    s.wait_for("the corner cut away", lambda r: r["facts"].get("tracing/indicator_cut") == 1)
+    s.click_rect(s.rect("tracing/square"), centre[0], 1 - centre[1])
+    s.wait_for("the circle's inside kept", lambda r: r["facts"].get("tracing/indicator_cut") == 0)
+    ctx.shot(s, "inside-kept")
+
+
 SCENARIOS = [
     ("window_fits", "fig3b-weight-5.json", window_fits_the_screen),
     ("window_size", "fig3b-weight-5.json", window_size_is_remembered),
@@ -1408,6 +1482,8 @@ SCENARIOS = [
     ("grid_snap", "fig3b-weight-5.json", grid_and_snap_in_the_curve_designer),
     ("detach_question", "fig8-revolution.json", detach_question_before_editing_a_vase_point),
     ("trim_drawn", "fig3b-weight-5.json", trim_drawn_in_the_tracing_square),
+    ("trim_by_curve", "trim-by-curve.json", trim_by_a_projected_curve),
+    ("trim_smooth_drawn", "fig3b-weight-5.json", smooth_loop_drawn_in_the_tracing_square),
 ] + projector_scenarios.SCENARIOS  # the stage, four views, labels apart (issue #30)
 
 

@@ -188,6 +188,31 @@ void named_action_item(AppContext& ctx, const ActionState& state, void (*run)(Ap
         wrapped_tooltip(state.why);
 }
 
+// The scene's curves, each an item that trims the current surface by its projection (as a
+// hole, or as the outer loop); the items are reported as menu/surface/hole_along/<k>.
+void curves_to_trim_by(AppContext& ctx, bool hole) {
+    if (!begin_menu(hole ? "Cut a hole along a curve" : "Keep the inside of a curve")) return;
+    ImGui::TextDisabled("A closed curve from the curve designer, projected onto the surface");
+    int k = 0;
+    std::uint64_t picked_curve = 0; // run after the loop: the command edits ctx.doc.objects
+    for (const doc::Object& o : ctx.doc.objects) {
+        if (!o.curve_object()) continue;
+        const ActionState state = trim_by_curve_state(ctx, o);
+        ImGui::PushID(static_cast<int>(o.id));
+        const bool picked = menu_item(state.label.c_str(), nullptr, false, state.enabled);
+        report_item(std::string(hole ? "menu/surface/hole_along/" : "menu/surface/keep_inside/") +
+                    std::to_string(k++));
+        if (!state.enabled && !state.why.empty() &&
+            ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+            wrapped_tooltip(state.why);
+        ImGui::PopID();
+        if (picked) picked_curve = o.id;
+    }
+    if (k == 0) ImGui::TextDisabled("No curves yet: draw a closed one in the curve designer");
+    ImGui::EndMenu();
+    if (picked_curve) trim_by_curve(ctx, picked_curve, hole);
+}
+
 // Trimming in the window (ui/trim_actions.hpp): a hole at the indicator, and the whole domain
 // back. A submenu: the Surface menu must still fit a 1024x768 projector in presentation mode.
 void trim_menu(AppContext& ctx) {
@@ -195,8 +220,15 @@ void trim_menu(AppContext& ctx) {
     ImGui::TextDisabled("What the surface keeps of its domain (its points stay)");
     named_action_item(ctx, draw_hole_state(ctx), start_drawing_hole, "menu/surface/draw_hole");
     named_action_item(ctx, draw_outer_state(ctx), start_drawing_outer, "menu/surface/draw_outer");
+    if (menu_item("Smooth drawn loops", "C", ctx.ui.smooth_loops)) toggle_smooth_loops(ctx);
+    report_item("menu/surface/smooth_loops");
+    if (ImGui::IsItemHovered())
+        wrapped_tooltip("The clicked corners become the control points of a closed cubic "
+                        "B-spline (smooth) instead of a polygon's corners");
     named_action_item(ctx, punch_hole_state(ctx), punch_hole_at_indicator,
                       "menu/surface/punch_hole");
+    curves_to_trim_by(ctx, true);
+    curves_to_trim_by(ctx, false);
     named_action_item(ctx, remove_trim_state(ctx), remove_trim_current, "menu/surface/remove_trim");
     ImGui::EndMenu();
 }
@@ -589,6 +621,9 @@ bool trim_drawing_key(AppContext& ctx, int key) {
         return true;
     case GLFW_KEY_ESCAPE:
         cancel_loop_drawing(ctx);
+        return true;
+    case GLFW_KEY_C:
+        toggle_smooth_loops(ctx);
         return true;
     default:
         return false;

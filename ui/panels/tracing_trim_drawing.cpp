@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/doc/patches.hpp"
+#include "core/geom/evaluate.hpp"
 #include "ui/trim_actions.hpp"
 #include "ui/view/canvas_map.hpp"
 
@@ -69,7 +70,17 @@ void draw_loop_in_progress(const AppContext& ctx, const doc::Object& obj, const 
                      true);
     std::vector<ImVec2> px;
     for (const glm::dvec2& c : d.corners) px.push_back(corner_pixel(ctx, obj, square, c));
-    dl->AddPolyline(px.data(), int(px.size()), line, ImDrawFlags_None, 2.5f * k);
+    const bool smooth = ctx.ui.smooth_loops && d.corners.size() >= 3;
+    // Smooth: the corners are a control polygon (thin) and the loop they make is drawn.
+    dl->AddPolyline(px.data(), int(px.size()), line, ImDrawFlags_None, (smooth ? 1.0f : 2.5f) * k);
+    if (smooth) {
+        std::vector<ImVec2> curve;
+        for (const geom::Curve& piece : drawn_loop(d.corners, true).curves)
+            for (int s = 0; s < 16; ++s)
+                if (auto p = geom::curve_point(piece, s / 16.0))
+                    curve.push_back(corner_pixel(ctx, obj, square, {p->x, p->y}));
+        dl->AddPolyline(curve.data(), int(curve.size()), line, ImDrawFlags_Closed, 2.5f * k);
+    }
     // The edge the next click (or Enter) would add, dashed-looking by its thinner line.
     const ImVec2 m = ImGui::GetIO().MousePos;
     if (canvas.contains(m.x, m.y)) dl->AddLine(px.back(), m, line, 1.0f * k);

@@ -71,6 +71,26 @@ TrimLoop polygon_loop(const std::vector<glm::dvec2>& corners) {
     return loop;
 }
 
+TrimLoop smooth_loop(const std::vector<glm::dvec2>& control) {
+    TrimLoop loop;
+    const std::size_t n = control.size();
+    auto P = [&](std::size_t k) { return control[k % n]; };
+    for (std::size_t i = 0; i < n; ++i) {
+        // The span between P_i and P_(i+1): its Bezier points divide the legs in thirds and
+        // sit at the neighbouring legs' weighted middles (Farin, ch. 7; uniform knots).
+        const glm::dvec2 a = P(i + n - 1), b = P(i), c = P(i + 1), d = P(i + 2);
+        Curve piece;
+        piece.degree = 3;
+        piece.knots = bezier_knots(3);
+        for (const glm::dvec2 q : {(a + 4.0 * b + c) / 6.0, (2.0 * b + c) / 3.0,
+                                   (b + 2.0 * c) / 3.0, (b + 4.0 * c + d) / 6.0})
+            piece.points.push_back({q, 0.0});
+        piece.weights.assign(4, 1.0);
+        loop.curves.push_back(std::move(piece));
+    }
+    return loop;
+}
+
 Expected<TrimLoop> circle_loop(glm::dvec2 centre, double radius, bool clockwise) {
     auto circle = circular_arc({centre, 0.0}, radius, 0.0, 360.0, Plane::xy);
     if (!circle) return circle.error();

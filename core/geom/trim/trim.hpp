@@ -68,6 +68,10 @@ Expected<Curve> trim_arc(glm::dvec2 centre, double radius, double start_degrees,
 TrimLoop polygon_loop(const std::vector<glm::dvec2>& corners);
 Expected<TrimLoop> circle_loop(glm::dvec2 centre, double radius, bool clockwise);
 TrimLoop rectangle_loop(const ParamRect& r);
+// The closed uniform cubic B-spline whose control polygon is `control` (at least three points,
+// taken cyclically), as one cubic Bezier piece per point (Boehm's B-spline-to-Bezier points,
+// exact): a smooth (C2) loop inside the polygon's convex hull, running the polygon's way.
+TrimLoop smooth_loop(const std::vector<glm::dvec2>& control);
 
 // The same curve run backwards: points and weights reversed, knots a + b - U[m - k].
 Curve reversed(const Curve& c);
