@@ -43,6 +43,25 @@ enum Op : std::uint8_t {
     op_load,  // push a copy of slot n
 };
 
+inline bool is_binary(std::uint8_t op) {
+    return op >= op_add && op <= op_pow;
+}
+
+// Stack effect of one instruction.
+inline int stack_delta(std::uint8_t op) {
+    switch (op) {
+    case op_const:
+    case op_x:
+    case op_y:
+    case op_z:
+    case op_param:
+    case op_load:
+        return 1;
+    default:
+        return is_binary(op) ? -1 : 0;
+    }
+}
+
 // Nesting (parentheses, function calls, exponents) is bounded so the parser's recursion and the
 // evaluator's fixed-size stack are bounded: each level holds at most three pending operands
 // (a sum's left side, a product's left side, a power's base), so the stack stays below 3 * 65 + 1.

@@ -367,27 +367,6 @@ private:
     std::vector<Program::Instruction> code_;
 };
 
-// Stack effect of one instruction.
-int stack_delta(std::uint8_t op) {
-    switch (op) {
-    case op_const:
-    case op_x:
-    case op_y:
-    case op_z:
-    case op_param:
-    case op_load:
-        return 1;
-    case op_add:
-    case op_sub:
-    case op_mul:
-    case op_div:
-    case op_pow:
-        return -1;
-    default:
-        return 0;
-    }
-}
-
 } // namespace
 
 Expected<Program> compile(std::string_view text, const std::vector<std::string>& parameter_names) {

@@ -15,23 +15,9 @@ namespace {
 
 using Instruction = Program::Instruction;
 
+// Operands of an instruction of folded code: 2 for the binary ones, 0 for pushes, else 1.
 int operand_count(std::uint8_t op) {
-    switch (op) {
-    case op_const:
-    case op_x:
-    case op_y:
-    case op_z:
-    case op_param:
-        return 0;
-    case op_add:
-    case op_sub:
-    case op_mul:
-    case op_div:
-    case op_pow:
-        return 2;
-    default:
-        return 1;
-    }
+    return is_binary(op) ? 2 : stack_delta(op) == 1 ? 0 : 1;
 }
 
 // A subexpression's identity: its instruction (opcode and immediates, the constant by its bits)
