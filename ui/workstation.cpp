@@ -183,6 +183,7 @@ Workstation::Workstation(const WorkstationOptions& options) {
     ctx_.doc = doc::default_document();
     ctx_.history.mark_clean();
     renderer_ = std::make_unique<Renderer>(options.msaa_samples);
+    software_ = software_renderer();
     ctx_.renderer = renderer_.get();
     implicit_ = std::make_unique<ImplicitMeshes>();
     triangles_ = std::make_unique<TriangleMeshes>();
@@ -384,6 +385,7 @@ void Workstation::frame(unsigned target_framebuffer) {
     }
     draw_detach_question(ctx_); // a drag in the 3D view alone asks too
     ImGui::Render();
+    gesture_.active = gesture_frame();
     const bool view3d_drawn = ui.view_rect.w > 0;
     if (!view3d_drawn) ui.view_rect = last_view; // its last size, for fit_view's aspect
     ui.stage.fit = false;                        // F was seen by every staged canvas this frame
@@ -426,6 +428,20 @@ void Workstation::frame(unsigned target_framebuffer) {
     animation_end_frame(ctx_);
 }
 
+// A frame of a gesture: on a CPU rasteriser, while the mouse drags (in any panel: a point, the
+// indicator, an orbit) or the wheel zooms. The frame after it is asked for, so the picture is
+// drawn in full as soon as the mouse stops, even while the button is still held.
+bool Workstation::gesture_frame() {
+    if (ctx_.ui.headless && !gesture_.forced) return false;
+    if (!software_ || !gesture_.coarse) return false;
+    const ImGuiIO& io = ImGui::GetIO();
+    const bool moved = io.MouseDelta.x != 0 || io.MouseDelta.y != 0;
+    const bool gesture =
+        gesture_.forced || (ImGui::IsAnyMouseDown() && moved) || io.MouseWheel != 0;
+    if (gesture && request_frame_) request_frame_();
+    return gesture;
+}
+
 void Workstation::render_view3d(float scale) {
     UiState& ui = ctx_.ui;
     SceneStyle style;
@@ -459,9 +475,11 @@ void Workstation::render_view3d(float scale) {
     mode.wait = ui.headless;
     mode.coarse_id = ui.implicit.dragging ? ui.implicit.object : 0;
     if (request_frame_) mode.wake = request_frame_;
+    mode.gesture = gesture_.active;
     implicit_->update(ctx_.doc, mode);
     triangles_->update(ctx_.doc, ctx_.doc.view.display.density);
     BuiltScene scene = build_scene(ctx_.doc, style, implicit_.get(), triangles_.get());
+    implicit_->end_gesture_frame();
     surfaces_->update(scene.surfaces, ui.analysis.kind);
     SceneView view;
     view.camera = ui.camera;

@@ -33,6 +33,18 @@ struct WorkstationOptions {
     bool transparent = false;
 };
 
+// Gesture frames on a CPU rasteriser (llvmpipe): while the mouse drags (a point, the indicator,
+// an orbit) or the wheel turns, the implicit objects are drawn from meshes of a coarse grid
+// (2.5 cells or more: a sixth of the triangles; a software rasteriser's orbit of the implicit
+// gallery is bound by triangles, not pixels); every still frame, and the one after the release, is
+// drawn in full. Headless renders are never gestures. (Half-resolution gesture frames were measured
+// and dropped: llvmpipe's scaled blit cost more than the fill they saved.)
+struct GestureFrames {
+    bool coarse = true;  // draw gestures coarse (off: every frame in full, as before)
+    bool forced = false; // a gesture without the mouse (the frame benchmark's drags)
+    bool active = false; // the last frame was drawn coarse
+};
+
 class Workstation {
 public:
     // Needs a current OpenGL 3.3 core context. Creates the ImGui context and initialises
@@ -54,14 +66,18 @@ public:
     // Makes this workstation's ImGui context current (another workstation, e.g. a picture
     // export's, may have taken its place).
     void make_current();
+    GestureFrames& gesture() { return gesture_; }
 
 private:
     void layout_panels();
     void render_view3d(float scale); // the scene into the renderer's texture
+    bool gesture_frame();            // this frame is drawn coarse (GestureFrames)
     void splitters();
     AppContext ctx_;
     ImGuiContext* imgui_ = nullptr;
     bool transparent_ = false;
+    bool software_ = false; // a CPU rasteriser: gestures are drawn coarse (GestureFrames)
+    GestureFrames gesture_;
     std::function<void()> request_frame_;
     std::unique_ptr<Renderer> renderer_;
     std::unique_ptr<ImplicitMeshes> implicit_;

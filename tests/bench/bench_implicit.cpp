@@ -161,7 +161,9 @@ void BM_TorusGradientBatch(benchmark::State& state) {
 BENCHMARK(BM_TorusGradientBatch);
 
 // The implicit gallery (assets/scenes/implicit-gallery.json): its six surfaces polygonized at
-// their own cells, one after the other, as `isoparm render` does (threads: 0 = all, 1).
+// their own cells, one after the other, as `isoparm render` does (threads: 0 = all, 1; shared:
+// repeated subexpressions computed once (1, the default) or every time (0, as before): the
+// meshes are the same to the bit).
 void BM_PolygonizeGallery(benchmark::State& state) {
     auto scene =
         isoparm::scene::load_scene(ISOPARM_SOURCE_DIR "/assets/scenes/implicit-gallery.json");
@@ -179,6 +181,7 @@ void BM_PolygonizeGallery(benchmark::State& state) {
         if (!im) continue;
         Job j;
         j.f = std::move(compile(im->expression, im->parameter_names)).value();
+        j.f.share_subexpressions(state.range(1) != 0);
         j.o.parameters = im->parameter_values;
         j.o.lo = im->lo;
         j.o.hi = im->hi;
@@ -204,9 +207,10 @@ void BM_PolygonizeGallery(benchmark::State& state) {
     state.counters["vertices"] = static_cast<double>(vertices);
 }
 BENCHMARK(BM_PolygonizeGallery)
-    ->ArgName("threads")
-    ->Arg(0)
-    ->Arg(1)
+    ->ArgNames({"threads", "shared"})
+    ->Args({0, 1})
+    ->Args({1, 1})
+    ->Args({1, 0})
     ->Unit(benchmark::kMillisecond)
     ->MeasureProcessCPUTime()
     ->UseRealTime();

@@ -25,7 +25,10 @@ public:
     struct Mode {
         bool wait = false;           // polygonize synchronously (headless)
         std::uint64_t coarse_id = 0; // this object's parameter slider is moving: coarse grid
-        std::function<void()> wake;  // called from the worker when a mesh is ready
+        // A gesture frame (an orbit, a drag on a CPU rasteriser): every object shows a mesh of
+        // a coarse grid, made once beside the full one and kept until the object changes.
+        bool gesture = false;
+        std::function<void()> wake; // called from the worker when a mesh is ready
     };
     // What the renderer and the panel see of one object.
     struct View {
@@ -49,6 +52,8 @@ public:
     // Brings every visible implicit object up to date and drops objects no longer present.
     void update(const doc::Document& d, const Mode& mode);
     View view(std::uint64_t id) const;
+    // After the gesture frame's scene is built: view() shows the full meshes again (panels).
+    void end_gesture_frame() { gesture_ = false; }
 
     // Polygonizations run on the calling thread so far (coarse and headless ones).
     int synchronous_runs() const { return synchronous_runs_; }
@@ -70,14 +75,20 @@ private:
         std::uint64_t revision = 0;
         std::string error;
         std::shared_ptr<Job> job;
+        // The gesture frames' coarse mesh, of the key `gesture_key` (made on the first gesture).
+        std::optional<ImplicitKey> gesture_key;
+        geom::Mesh gesture_mesh;
+        std::uint64_t gesture_revision = 0;
         std::jthread worker; // declared last: joined first on destruction
         bool used = false;
     };
+    void update_gesture_mesh(Entry& e, const doc::ImplicitObject& im);
     void adopt(Entry& e, const ImplicitKey& key, std::optional<geom::Mesh> mesh, std::string error,
                int seen_side);
     std::unordered_map<std::uint64_t, Entry> entries_;
     std::uint64_t next_revision_ = 1;
     int synchronous_runs_ = 0;
+    bool gesture_ = false; // the last update's Mode::gesture
 };
 
 // Polygonizes one key; progress gets [0, 1] and returns false to cancel.

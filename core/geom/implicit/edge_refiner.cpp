@@ -8,11 +8,7 @@ namespace isoparm::geom::implicit::detail {
 void Refiner::evaluate(const Context& ctx, const std::vector<std::size_t>& which, bool full) {
     const std::size_t n = which.size();
     if (n == 0) return;
-    points.resize(n);
-    directions.resize(n);
-    values.resize(n);
-    slopes.resize(n);
-    gradients.resize(n);
+    grow(n);
     for (std::size_t k = 0; k < n; ++k) {
         const Edge& e = edges[which[k]];
         points[k] = e.p + e.t * e.d;
@@ -29,6 +25,17 @@ void Refiner::evaluate(const Context& ctx, const std::vector<std::size_t>& which
         ctx.f.values_and_derivatives(points.data(), directions.data(), n, values.data(),
                                      slopes.data(), ctx.params, scratch);
     }
+}
+
+// The evaluation arrays hold at least n points (they only grow: resizing down and up again
+// would fill them anew each round).
+void Refiner::grow(std::size_t n) {
+    if (points.size() >= n) return;
+    points.resize(n);
+    directions.resize(n);
+    values.resize(n);
+    slopes.resize(n);
+    gradients.resize(n);
 }
 
 void Refiner::run(const Context& ctx, VertexGroup& out) {
@@ -52,29 +59,31 @@ void Refiner::run(const Context& ctx, VertexGroup& out) {
     // computed there (for a pinned vertex: at its grid point). Without convergence (a
     // pole, an undefined region, a kink) the sign change is somewhere in the final bracket.
     by_gradient.clear();
+    out.positions.reserve(out.positions.size() + edges.size());
     for (std::size_t k = 0; k < edges.size(); ++k) {
         Edge& e = edges[k];
         if (e.pinned) {
+            out.positions.push_back(e.p);
             by_gradient.push_back(k);
             continue;
         }
         if (!e.converged) e.t = 0.5 * (e.lo + e.hi);
-        out.positions[e.id] = e.p + e.t * e.d;
+        out.positions.push_back(e.p + e.t * e.d);
         if (!e.converged || !e.full) by_gradient.push_back(k);
     }
     if (!by_gradient.empty()) {
         const std::size_t n = by_gradient.size();
-        points.resize(n);
-        values.resize(n);
-        gradients.resize(n);
+        grow(n);
         for (std::size_t k = 0; k < n; ++k) points[k] = out.positions[edges[by_gradient[k]].id];
         ctx.f.values_and_gradients(points.data(), n, values.data(), gradients.data(), ctx.params,
                                    scratch);
         for (std::size_t k = 0; k < n; ++k) edges[by_gradient[k]].gradient = gradients[k];
     }
+    out.normals.reserve(out.normals.size() + edges.size());
     for (const Edge& e : edges) {
         const double norm = glm::length(e.gradient);
-        out.normals[e.id] = std::isfinite(norm) && norm > 0 ? e.gradient / norm : glm::dvec3(0.0);
+        out.normals.push_back(std::isfinite(norm) && norm > 0 ? e.gradient / norm
+                                                              : glm::dvec3(0.0));
     }
     edges.clear();
 }

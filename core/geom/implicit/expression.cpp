@@ -17,8 +17,14 @@ double Program::value(const glm::dvec3& p, const double* params) const {
     assert(params != nullptr || parameter_names_.empty());
     double s[stack_capacity];
     int sp = 0;
-    for (const Instruction& in : code_) {
+    for (const Instruction& in : run().code) {
         switch (in.op) {
+        case op_store:
+            s[in.n] = s[sp - 1];
+            break;
+        case op_load:
+            s[sp++] = s[in.n];
+            break;
         case op_const:
             s[sp++] = in.c;
             break;
@@ -89,7 +95,8 @@ double Program::value(const glm::dvec3& p, const double* params) const {
 void Program::values_along_x(const double* xs, std::size_t n, double y, double z, double* out,
                              const double* params, std::vector<double>& scratch) const {
     assert(params != nullptr || parameter_names_.empty());
-    const std::size_t need = static_cast<std::size_t>(max_stack_) * batch_block;
+    const Code& program = run();
+    const std::size_t need = static_cast<std::size_t>(program.slots) * batch_block;
     if (scratch.size() < need) scratch.resize(need);
     // The stack holds, per slot, either one value shared by every point (anything that does
     // not depend on x: y, z, parameters, constants and what is computed from them) or a lane
@@ -104,8 +111,19 @@ void Program::values_along_x(const double* xs, std::size_t n, double y, double z
             return scratch.data() + static_cast<std::size_t>(slot) * batch_block;
         };
         int sp = 0;
-        for (const Instruction& in : code_) {
+        for (const Instruction& in : program.code) {
             switch (in.op) {
+            case op_store:
+            case op_load: {
+                const int from = in.op == op_store ? sp - 1 : in.n;
+                const int to = in.op == op_store ? in.n : sp++;
+                varying[to] = varying[from];
+                if (varying[from])
+                    std::copy_n(lanes(from), padded, lanes(to));
+                else
+                    uniform[to] = uniform[from];
+                break;
+            }
             case op_const:
                 uniform[sp] = in.c, varying[sp++] = false;
                 break;

@@ -43,8 +43,16 @@ public:
                               glm::dvec3* gradients, const double* params,
                               std::vector<double>& scratch) const;
 
-    // Number of instructions after constant folding (for tests and diagnostics).
-    std::size_t instruction_count() const { return code_.size(); }
+    // Number of instructions after constant folding (for tests, diagnostics and the work
+    // budget), before repeated subexpressions are shared.
+    std::size_t instruction_count() const { return plain_.code.size(); }
+
+    // Repeated subexpressions are computed once and reused (on by default); off, every
+    // occurrence is computed again, as before. Either way every result has the same bits
+    // (tests and the benchmark compare the two).
+    void share_subexpressions(bool on) { sharing_ = on; }
+    // Instructions the evaluators run (fewer than instruction_count() when something repeats).
+    std::size_t shared_instruction_count() const { return shared_.code.size(); }
 
     // One stack-machine instruction: an opcode and its immediate (a constant, an integer
     // exponent or a parameter index). Internal; public only so helpers in the .cpp can see it.
@@ -56,9 +64,19 @@ public:
 
 private:
     friend Expected<Program> compile(std::string_view, const std::vector<std::string>&);
-    std::vector<Instruction> code_; // postfix code
+    // Postfix code and the stack slots it needs: the operand stack's depth, then the
+    // registers that hold shared subexpressions (slots [max_stack, slots)).
+    struct Code {
+        std::vector<Instruction> code;
+        int max_stack = 0;
+        int slots = 0;
+        bool has_pow = false; // op_pow: a power with a varying exponent
+    };
+    const Code& run() const { return sharing_ ? shared_ : plain_; }
+    Code plain_;  // as parsed and folded
+    Code shared_; // repeated subexpressions stored once and loaded (op_store / op_load)
+    bool sharing_ = true;
     std::vector<std::string> parameter_names_;
-    int max_stack_ = 0;
 };
 
 // Names not in parameter_names and not x, y, z are errors. Column-precise `parse` errors

@@ -171,6 +171,12 @@ double evaluate_dual(const std::vector<Program::Instruction>& code, const glm::d
     };
     for (const Program::Instruction& in : code) {
         switch (in.op) {
+        case op_store:
+            stack[in.n] = end[-1];
+            break;
+        case op_load:
+            *end++ = stack[in.n];
+            break;
         case op_const:
             push_constant(in.c);
             break;
@@ -204,67 +210,37 @@ double evaluate_dual(const std::vector<Program::Instruction>& code, const glm::d
     return stack[0].v;
 }
 
-// The batch form of evaluate_dual: each stack slot holds a value lane and lanes_for<N> tangent
-// lanes of up to dual_block points, so an instruction is dispatched once per block instead of
-// once per point. Every lane does exactly evaluate_dual's arithmetic in the same order (the
-// padding tangent of N = 3 included: a NaN there makes op_pow take its log term, and the
-// batch must do the same), so each point gets the same bits as a call of its own. The loops
+// The batch form of evaluate_dual: each stack slot holds a value lane and L tangent lanes of up
+// to dual_block points, so an instruction is dispatched once per block instead of once per
+// point. Every lane does exactly evaluate_dual's arithmetic in the same order (the padding
+// tangent of N = 3 included where the program has op_pow: a NaN there makes op_pow take its log
+// term, and the batch must do the same; nothing else reads it, so without op_pow L = 3), so each
+// point gets the same bits as a call of its own. The loops
 // are small functions with __restrict arguments so that GCC's -O2 vectorizes them (lambdas'
 // captured pointers lose the no-alias promise).
-constexpr std::size_t dual_block = 64;
+constexpr std::size_t dual_block = 256;
 
-template <int N> struct DualLanes {
-    static constexpr int L = lanes_for<N>;
+template <int L> struct DualLanes {
     double* v;
     double* d[L];
 };
 
-template <int N> std::size_t dual_scratch_size(int max_stack) {
+template <int N> std::size_t dual_scratch_size(int slots) {
     // The slots, then one lane of per-point factors.
-    return (static_cast<std::size_t>(max_stack) * (1 + lanes_for<N>)+1) * dual_block;
-}
-
-// d = d * bv + av * bd (the product rule, with a's old value).
-void product_tangent(double* __restrict d, const double* __restrict bv, const double* __restrict av,
-                     const double* __restrict bd, std::size_t m) {
-    for_lanes(m, [=](std::size_t k) { d[k] = d[k] * bv[k] + av[k] * bd[k]; });
-}
-
-// d = (d - q * bd) / bv (the quotient rule, q the new value).
-void quotient_tangent(double* __restrict d, const double* __restrict q, const double* __restrict bd,
-                      const double* __restrict bv, std::size_t m) {
-    for_lanes(m, [=](std::size_t k) { d[k] = (d[k] - q[k] * bd[k]) / bv[k]; });
-}
-
-// std::fill_n is not vectorized at -O2 (an unknown trip count); four lanes a step are.
-void fill_lane(double* __restrict d, double c, std::size_t m) {
-    for_lanes(m, [=](std::size_t k) { d[k] = c; });
-}
-
-void scale_lane(double* __restrict d, const double* __restrict f, std::size_t m) {
-    for_lanes(m, [=](std::size_t k) { d[k] *= f[k]; });
-}
-
-void scale_lane(double* __restrict d, double f, std::size_t m) {
-    for_lanes(m, [=](std::size_t k) { d[k] *= f; });
-}
-
-void divide_lane(double* __restrict d, double f, std::size_t m) {
-    for_lanes(m, [=](std::size_t k) { d[k] /= f; });
+    return (static_cast<std::size_t>(slots) * (1 + lanes_for<N>)+1) * dual_block;
 }
 
 // The per-point factors f of evaluate_dual's scale(), then the tangents scaled by them.
-template <int N>
-[[gnu::always_inline]] inline void scale_all(const DualLanes<N>& a, const double* f,
+template <int L>
+[[gnu::always_inline]] inline void scale_all(const DualLanes<L>& a, const double* f,
                                              std::size_t padded) {
-    for (int i = 0; i < lanes_for<N>; ++i) scale_lane(a.d[i], f, padded);
+    for (int i = 0; i < L; ++i) scale_lane(a.d[i], f, padded);
 }
 
 // a = a (op) b over the lanes for the five binary instructions (evaluate_dual's dual_binary).
-template <int N>
-[[gnu::always_inline]] inline void binary_dual_lanes(std::uint8_t op, const DualLanes<N>& a,
-                                                     const DualLanes<N>& b, std::size_t padded) {
-    constexpr int L = lanes_for<N>;
+template <int L>
+[[gnu::always_inline]] inline void binary_dual_lanes(std::uint8_t op, const DualLanes<L>& a,
+                                                     const DualLanes<L>& b, std::size_t padded) {
     switch (op) {
     case op_add:
     case op_sub:
@@ -296,11 +272,11 @@ template <int N>
 
 // a = f(a) over the lanes for the unary and constant-operand instructions (evaluate_dual's
 // dual_unary); f: one lane of scratch for the per-point factors.
-template <int N>
+template <int L>
 [[gnu::always_inline]] inline void unary_dual_lanes(const Program::Instruction& in,
-                                                    const DualLanes<N>& a, double* f,
+                                                    const DualLanes<L>& a, double* f,
                                                     std::size_t padded) {
-    constexpr int L = lanes_for<N>;
+
     double* const v = a.v;
     const double c = in.c;
     switch (in.op) {
@@ -311,15 +287,15 @@ template <int N>
     case op_rsub_c:
     case op_neg:
         unary_lane(in, v, padded);
-        for (int i = 0; i < L; ++i) scale_lane(a.d[i], -1.0, padded);
+        for (int i = 0; i < L; ++i) scale_lane_by(a.d[i], -1.0, padded);
         break;
     case op_mul_c:
         unary_lane(in, v, padded);
-        for (int i = 0; i < L; ++i) scale_lane(a.d[i], c, padded);
+        for (int i = 0; i < L; ++i) scale_lane_by(a.d[i], c, padded);
         break;
     case op_div_c:
         unary_lane(in, v, padded);
-        for (int i = 0; i < L; ++i) divide_lane(a.d[i], c, padded);
+        for (int i = 0; i < L; ++i) divide_lane_by(a.d[i], c, padded);
         break;
     case op_rdiv_c:
         for (std::size_t k = 0; k < padded; ++k) {
@@ -400,26 +376,34 @@ template <int N>
 }
 
 // directions: the tangent seeds of x, y, z per point (N = 1); nullptr: unit seeds (N = 3).
-template <int N>
-void evaluate_dual_lanes(const std::vector<Program::Instruction>& code, int max_stack,
+template <int N, int L>
+void evaluate_dual_lanes(const std::vector<Program::Instruction>& code, int slots,
                          const glm::dvec3* points, const glm::dvec3* directions, std::size_t m,
                          const double* params, double* scratch, double* values, double* tangents) {
-    constexpr int L = lanes_for<N>;
+
     const std::size_t padded = (m + 3) & ~std::size_t{3}; // dual_block is a multiple of 4
     auto slot = [&](int s) {
-        DualLanes<N> lanes;
+        DualLanes<L> lanes;
         double* base = scratch + static_cast<std::size_t>(s) * (1 + L) * dual_block;
         lanes.v = base;
         for (int i = 0; i < L; ++i) lanes.d[i] = base + (1 + i) * dual_block;
         return lanes;
     };
     int sp = 0;
-    double* const f = scratch + static_cast<std::size_t>(max_stack) * (1 + L) * dual_block;
+    double* const f = scratch + static_cast<std::size_t>(slots) * (1 + L) * dual_block;
     for (const Program::Instruction& in : code) {
         switch (in.op) {
+        case op_store:
+        case op_load: {
+            const DualLanes<L> from = slot(in.op == op_store ? sp - 1 : in.n);
+            const DualLanes<L> to = slot(in.op == op_store ? in.n : sp++);
+            copy_lane(to.v, from.v, padded);
+            for (int i = 0; i < L; ++i) copy_lane(to.d[i], from.d[i], padded);
+            break;
+        }
         case op_const:
         case op_param: {
-            const DualLanes<N> a = slot(sp++);
+            const DualLanes<L> a = slot(sp++);
             fill_lane(a.v, in.op == op_const ? in.c : params[in.n], padded);
             for (int i = 0; i < L; ++i) fill_lane(a.d[i], 0.0, padded);
             break;
@@ -427,7 +411,7 @@ void evaluate_dual_lanes(const std::vector<Program::Instruction>& code, int max_
         case op_x:
         case op_y:
         case op_z: {
-            const DualLanes<N> a = slot(sp++);
+            const DualLanes<L> a = slot(sp++);
             const int var = in.op - op_x;
             // Padding lanes repeat the last point: they compute something harmless, never read.
             for (std::size_t k = 0; k < m; ++k) a.v[k] = points[k][var];
@@ -446,15 +430,15 @@ void evaluate_dual_lanes(const std::vector<Program::Instruction>& code, int max_
         case op_div:
         case op_pow:
             --sp;
-            binary_dual_lanes<N>(in.op, slot(sp - 1), slot(sp), padded);
+            binary_dual_lanes<L>(in.op, slot(sp - 1), slot(sp), padded);
             break;
         default:
-            unary_dual_lanes<N>(in, slot(sp - 1), f, padded);
+            unary_dual_lanes<L>(in, slot(sp - 1), f, padded);
             break;
         }
     }
     assert(sp == 1);
-    const DualLanes<N> top = slot(0);
+    const DualLanes<L> top = slot(0);
     for (std::size_t k = 0; k < m; ++k) {
         values[k] = top.v[k];
         for (int i = 0; i < N; ++i) tangents[k * N + i] = top.d[i][k];
@@ -468,7 +452,7 @@ double Program::value_and_gradient(const glm::dvec3& p, glm::dvec3& gradient,
     assert(params != nullptr || parameter_names_.empty());
     static constexpr double seeds[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     double tangent[3];
-    const double v = evaluate_dual<3>(code_, p, seeds, params, tangent);
+    const double v = evaluate_dual<3>(run().code, p, seeds, params, tangent);
     gradient = glm::dvec3(tangent[0], tangent[1], tangent[2]);
     return v;
 }
@@ -478,7 +462,7 @@ double Program::value_and_derivative(const glm::dvec3& p, const glm::dvec3& dire
     assert(params != nullptr || parameter_names_.empty());
     const double seeds[3][1] = {{direction.x}, {direction.y}, {direction.z}};
     double tangent[1];
-    const double v = evaluate_dual<1>(code_, p, seeds, params, tangent);
+    const double v = evaluate_dual<1>(run().code, p, seeds, params, tangent);
     derivative = tangent[0];
     return v;
 }
@@ -487,13 +471,14 @@ void Program::values_and_derivatives(const glm::dvec3* points, const glm::dvec3*
                                      std::size_t n, double* values, double* derivatives,
                                      const double* params, std::vector<double>& scratch) const {
     assert(params != nullptr || parameter_names_.empty());
-    const std::size_t need = dual_scratch_size<1>(max_stack_);
+    const Code& program = run();
+    const std::size_t need = dual_scratch_size<1>(program.slots);
     if (scratch.size() < need) scratch.resize(need);
     for (std::size_t first = 0; first < n; first += dual_block) {
         const std::size_t m = std::min(dual_block, n - first);
         const glm::dvec3* dirs = directions + first;
-        evaluate_dual_lanes<1>(code_, max_stack_, points + first, dirs, m, params, scratch.data(),
-                               values + first, derivatives + first);
+        evaluate_dual_lanes<1, 1>(program.code, program.slots, points + first, dirs, m, params,
+                                  scratch.data(), values + first, derivatives + first);
     }
 }
 
@@ -501,13 +486,19 @@ void Program::values_and_gradients(const glm::dvec3* points, std::size_t n, doub
                                    glm::dvec3* gradients, const double* params,
                                    std::vector<double>& scratch) const {
     assert(params != nullptr || parameter_names_.empty());
-    const std::size_t need = dual_scratch_size<3>(max_stack_);
+    const Code& program = run();
+    const std::size_t need = dual_scratch_size<3>(program.slots);
     if (scratch.size() < need) scratch.resize(need);
     double tangents[dual_block * 3];
     for (std::size_t first = 0; first < n; first += dual_block) {
         const std::size_t m = std::min(dual_block, n - first);
-        evaluate_dual_lanes<3>(code_, max_stack_, points + first, nullptr, m, params,
-                               scratch.data(), values + first, tangents);
+        // Without op_pow nothing reads the padding tangent (see evaluate_dual_lanes): skipped.
+        if (program.has_pow)
+            evaluate_dual_lanes<3, 4>(program.code, program.slots, points + first, nullptr, m,
+                                      params, scratch.data(), values + first, tangents);
+        else
+            evaluate_dual_lanes<3, 3>(program.code, program.slots, points + first, nullptr, m,
+                                      params, scratch.data(), values + first, tangents);
         for (std::size_t k = 0; k < m; ++k)
             gradients[first + k] =
                 glm::dvec3(tangents[k * 3], tangents[k * 3 + 1], tangents[k * 3 + 2]);

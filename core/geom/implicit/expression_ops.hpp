@@ -39,7 +39,28 @@ enum Op : std::uint8_t {
     op_log,
     op_sqrt,
     op_abs,
+    op_store, // copy the top of the stack to slot n (a register), keeping it on the stack
+    op_load,  // push a copy of slot n
 };
+
+inline bool is_binary(std::uint8_t op) {
+    return op >= op_add && op <= op_pow;
+}
+
+// Stack effect of one instruction.
+inline int stack_delta(std::uint8_t op) {
+    switch (op) {
+    case op_const:
+    case op_x:
+    case op_y:
+    case op_z:
+    case op_param:
+    case op_load:
+        return 1;
+    default:
+        return is_binary(op) ? -1 : 0;
+    }
+}
 
 // Nesting (parentheses, function calls, exponents) is bounded so the parser's recursion and the
 // evaluator's fixed-size stack are bounded: each level holds at most three pending operands
@@ -48,6 +69,14 @@ constexpr int max_nesting = 64;
 constexpr int stack_capacity = 256;
 constexpr int max_int_exponent = 64; // larger integer exponents go through pow
 constexpr std::size_t batch_block = 256;
+
+// Common-subexpression elimination on folded postfix code (expression_share.cpp): the
+// first occurrence of a repeated subexpression is followed by op_store into a register slot
+// (from max_stack up, at most stack_capacity), the later ones replaced by op_load. Each
+// value is computed by the same instructions as before, so every evaluator gives the same
+// bits. `slots` is set to max_stack + the registers used.
+std::vector<Program::Instruction>
+share_subexpressions(const std::vector<Program::Instruction>& code, int max_stack, int& slots);
 
 // a^n by binary exponentiation; x^2 and x^3 cost one and two multiplications. The special
 // cases give the same bits as the loop would (1 * (a * a) == a * a).
@@ -143,104 +172,24 @@ template <class F> inline void for_lanes(std::size_t m, F f) {
     }
 }
 
-inline void binary_lanes(std::uint8_t op, double* __restrict a, const double* __restrict b,
-                         std::size_t m) {
-    switch (op) {
-    case op_add:
-        for_lanes(m, [=](std::size_t i) { a[i] += b[i]; });
-        break;
-    case op_sub:
-        for_lanes(m, [=](std::size_t i) { a[i] -= b[i]; });
-        break;
-    case op_mul:
-        for_lanes(m, [=](std::size_t i) { a[i] *= b[i]; });
-        break;
-    case op_div:
-        for_lanes(m, [=](std::size_t i) { a[i] /= b[i]; });
-        break;
-    default:
-        for_lanes(m, [=](std::size_t i) { a[i] = std::pow(a[i], b[i]); });
-        break;
-    }
-}
-
-inline void binary_lane_value(std::uint8_t op, double* __restrict a, double b, std::size_t m) {
-    switch (op) {
-    case op_add:
-        for_lanes(m, [=](std::size_t i) { a[i] += b; });
-        break;
-    case op_sub:
-        for_lanes(m, [=](std::size_t i) { a[i] -= b; });
-        break;
-    case op_mul:
-        for_lanes(m, [=](std::size_t i) { a[i] *= b; });
-        break;
-    case op_div:
-        for_lanes(m, [=](std::size_t i) { a[i] /= b; });
-        break;
-    default:
-        for_lanes(m, [=](std::size_t i) { a[i] = std::pow(a[i], b); });
-        break;
-    }
-}
-
-inline void binary_value_lane(std::uint8_t op, double a, const double* __restrict b,
-                              double* __restrict out, std::size_t m) {
-    switch (op) {
-    case op_add:
-        for_lanes(m, [=](std::size_t i) { out[i] = a + b[i]; });
-        break;
-    case op_sub:
-        for_lanes(m, [=](std::size_t i) { out[i] = a - b[i]; });
-        break;
-    case op_mul:
-        for_lanes(m, [=](std::size_t i) { out[i] = a * b[i]; });
-        break;
-    case op_div:
-        for_lanes(m, [=](std::size_t i) { out[i] = a / b[i]; });
-        break;
-    default:
-        for_lanes(m, [=](std::size_t i) { out[i] = std::pow(a, b[i]); });
-        break;
-    }
-}
-
-inline void unary_lane(const Program::Instruction& in, double* __restrict a, std::size_t m) {
-    const double c = in.c;
-    switch (in.op) {
-    case op_add_c:
-        for_lanes(m, [=](std::size_t i) { a[i] += c; });
-        break;
-    case op_sub_c:
-        for_lanes(m, [=](std::size_t i) { a[i] -= c; });
-        break;
-    case op_rsub_c:
-        for_lanes(m, [=](std::size_t i) { a[i] = c - a[i]; });
-        break;
-    case op_mul_c:
-        for_lanes(m, [=](std::size_t i) { a[i] *= c; });
-        break;
-    case op_div_c:
-        for_lanes(m, [=](std::size_t i) { a[i] /= c; });
-        break;
-    case op_rdiv_c:
-        for_lanes(m, [=](std::size_t i) { a[i] = c / a[i]; });
-        break;
-    case op_neg:
-        for_lanes(m, [=](std::size_t i) { a[i] = -a[i]; });
-        break;
-    case op_pow_int:
-        if (in.n == 2)
-            for_lanes(m, [=](std::size_t i) { a[i] = a[i] * a[i]; });
-        else if (in.n == 3)
-            for_lanes(m, [=](std::size_t i) { a[i] = a[i] * (a[i] * a[i]); });
-        else
-            for_lanes(m, [=](std::size_t i) { a[i] = powi(a[i], in.n); });
-        break;
-    default:
-        for_lanes(m, [=](std::size_t i) { a[i] = apply_instruction(in, a[i]); });
-        break;
-    }
-}
+// The lane loops live in expression_lanes.cpp, built for AVX2 beside the baseline and chosen
+// when the program starts (the arithmetic is the same: no fused multiply-adds, so the same bits).
+void binary_lanes(std::uint8_t op, double* __restrict a, const double* __restrict b, std::size_t m);
+void binary_lane_value(std::uint8_t op, double* __restrict a, double b, std::size_t m);
+void binary_value_lane(std::uint8_t op, double a, const double* __restrict b,
+                       double* __restrict out, std::size_t m);
+void unary_lane(const Program::Instruction& in, double* __restrict a, std::size_t m);
+// The dual numbers' tangent rules (expression_dual.cpp):
+// d = d * bv + av * bd (the product rule, with a's old value).
+void product_tangent(double* __restrict d, const double* __restrict bv, const double* __restrict av,
+                     const double* __restrict bd, std::size_t m);
+// d = (d - q * bd) / bv (the quotient rule, q the new value).
+void quotient_tangent(double* __restrict d, const double* __restrict q, const double* __restrict bd,
+                      const double* __restrict bv, std::size_t m);
+void fill_lane(double* __restrict d, double c, std::size_t m);
+void copy_lane(double* __restrict d, const double* __restrict from, std::size_t m);
+void scale_lane(double* __restrict d, const double* __restrict f, std::size_t m);
+void scale_lane_by(double* __restrict d, double f, std::size_t m);
+void divide_lane_by(double* __restrict d, double f, std::size_t m);
 
 } // namespace isoparm::geom::implicit::detail

@@ -367,26 +367,6 @@ private:
     std::vector<Program::Instruction> code_;
 };
 
-// Stack effect of one instruction.
-int stack_delta(std::uint8_t op) {
-    switch (op) {
-    case op_const:
-    case op_x:
-    case op_y:
-    case op_z:
-    case op_param:
-        return 1;
-    case op_add:
-    case op_sub:
-    case op_mul:
-    case op_div:
-    case op_pow:
-        return -1;
-    default:
-        return 0;
-    }
-}
-
 } // namespace
 
 Expected<Program> compile(std::string_view text, const std::vector<std::string>& parameter_names) {
@@ -411,18 +391,28 @@ Expected<Program> compile(std::string_view text, const std::vector<std::string>&
                               "parameter name '" + name + "' is given more than once", path);
     }
     Program program;
+    Program::Code& plain = program.plain_;
     try {
-        program.code_ = Parser(text, parameter_names).run();
+        plain.code = Parser(text, parameter_names).run();
     } catch (const ParseFailure& e) {
         return make_error(ErrorCode::parse, e.message);
     }
     program.parameter_names_ = parameter_names;
     int depth = 0;
-    for (const auto& in : program.code_) {
+    for (const auto& in : plain.code) {
         depth += stack_delta(in.op);
-        program.max_stack_ = std::max(program.max_stack_, depth);
+        plain.max_stack = std::max(plain.max_stack, depth);
     }
-    assert(depth == 1 && program.max_stack_ <= stack_capacity);
+    assert(depth == 1 && plain.max_stack <= stack_capacity);
+    plain.slots = plain.max_stack;
+    plain.has_pow = std::any_of(plain.code.begin(), plain.code.end(),
+                                [](const Program::Instruction& in) { return in.op == op_pow; });
+    // The shared code never needs a deeper stack (a load stands for a whole subexpression), so
+    // its registers can start where the plain code's stack ends.
+    Program::Code& shared = program.shared_;
+    shared.code = share_subexpressions(plain.code, plain.max_stack, shared.slots);
+    shared.max_stack = plain.max_stack;
+    shared.has_pow = plain.has_pow;
     return program;
 }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <bit>
 #include <cassert>
 #include <cmath>
 #include <cstdint>
@@ -48,15 +49,42 @@ constexpr int edge_dy(int d) {
 // neighbourhood has a single sign have no sign change to look at, which skips most of the grid.
 enum RowSign : std::uint8_t { row_negative = 0, row_positive = 1, row_mixed = 2 };
 
-// Values of layer k, one batch evaluation per row, and each row's sign summary.
+// Sign bits: bit i % 64 of signs[j * words + i / 64] is positive(value of point (i, j)); the
+// bits past a row's end are 0. Within a row that has both signs, the points and cells with a
+// sign change nearby are found 64 at a time from them (for_candidates), and only those are
+// looked at one by one, exactly as before.
+std::size_t sign_words(const Grid& g) {
+    return (g.row + 63) / 64;
+}
+
+// The row's bits shifted down by one (bit i: point i + 1), the next word's first bit on top.
+inline std::uint64_t next_bits(const std::uint64_t* row, std::size_t w, std::size_t words) {
+    return (row[w] >> 1) | (w + 1 < words ? row[w + 1] << 63 : 0);
+}
+
+// Calls f(i) for each point i of a row whose bit is set in candidates(w), in increasing order.
+template <class Bits, class F> void for_candidates(std::size_t words, Bits candidates, F&& f) {
+    for (std::size_t w = 0; w < words; ++w)
+        for (std::uint64_t bits = candidates(w); bits != 0; bits &= bits - 1)
+            f(static_cast<int>(w * 64 + static_cast<std::size_t>(std::countr_zero(bits))));
+}
+
+// Values of layer k, one batch evaluation per row, each row's sign summary and sign bits.
 void evaluate_layer(const Context& ctx, int k, double* values, std::uint8_t* rows,
-                    std::vector<double>& scratch) {
+                    std::uint64_t* signs, std::vector<double>& scratch) {
     const Grid& g = ctx.grid;
+    const std::size_t words = sign_words(g);
     for (int j = 0; j <= g.ny; ++j) {
         double* row = values + j * g.row;
         ctx.f.values_along_x(g.xs.data(), g.row, g.ys[j], g.zs[k], row, ctx.params, scratch);
         std::size_t count = 0;
-        for (std::size_t i = 0; i < g.row; ++i) count += positive(row[i]);
+        std::uint64_t* bits = signs + j * words;
+        std::fill_n(bits, words, 0);
+        for (std::size_t i = 0; i < g.row; ++i) {
+            const bool p = positive(row[i]);
+            count += p;
+            bits[i / 64] |= static_cast<std::uint64_t>(p) << (i % 64);
+        }
         rows[j] = count == 0 ? row_negative : count == g.row ? row_positive : row_mixed;
     }
 }
@@ -74,24 +102,33 @@ struct Layer {
     int k = 0;
     const double* values = nullptr;
     const std::uint8_t* rows = nullptr;
+    const std::uint64_t* signs = nullptr;
     const Index* ids = nullptr;
     Index tag = tag_local;
 };
 
 // Vertices on the in-plane edges (d = 1, 2, 3) of layer k; ids[point * 3 + d - 1].
 void make_plane_vertices(const Context& ctx, int k, const double* values, const std::uint8_t* rows,
-                         Index* ids, VertexGroup& out, Refiner& refiner) {
+                         const std::uint64_t* signs, Index* ids, VertexGroup& out,
+                         Refiner& refiner) {
     const Grid& g = ctx.grid;
+    const std::size_t words = sign_words(g);
     for (int j = 0; j <= g.ny; ++j) {
         if (rows_uniform(rows, rows, j, g.ny)) continue;
         const double* row = values + j * g.row;
         const double* next = j < g.ny ? row + g.row : row; // no y edges from the last row
-        for (int i = 0; i <= g.nx; ++i) {
+        const std::uint64_t* r = signs + j * words;
+        const std::uint64_t* n = j < g.ny ? r + words : r;
+        const auto changes = [&](std::size_t w) {
+            return (r[w] ^ next_bits(r, w, words)) | (r[w] ^ n[w]) |
+                   (r[w] ^ next_bits(n, w, words));
+        };
+        for_candidates(words, changes, [&](int i) {
             const bool s = positive(row[i]);
             const int i1 = std::min(i + 1, g.nx);
             const bool x = positive(row[i1]) != s, y = positive(next[i]) != s,
                        xy = positive(next[i1]) != s;
-            if (!(x || y || xy)) continue;
+            if (!(x || y || xy)) return;
             for (int d = 1; d <= 3; ++d) {
                 const int i2 = i + edge_dx(d), j2 = j + edge_dy(d);
                 if (i2 > g.nx || j2 > g.ny) continue;
@@ -101,7 +138,7 @@ void make_plane_vertices(const Context& ctx, int k, const double* values, const 
                     refiner.add(out, g.point(i, j, k), row[i], g.index(i, j, k), g.point(i2, j2, k),
                                 fb, g.index(i2, j2, k));
             }
-        }
+        });
     }
     refiner.run(ctx, out);
 }
@@ -111,17 +148,25 @@ void make_vertical_vertices(const Context& ctx, const Layer& bottom, const Layer
                             VertexGroup& out, Refiner& refiner) {
     const Grid& g = ctx.grid;
     const int k = bottom.k;
+    const std::size_t words = sign_words(g);
     for (int j = 0; j <= g.ny; ++j) {
         if (rows_uniform(bottom.rows, top.rows, j, g.ny)) continue;
         const double* row = bottom.values + j * g.row;
         const double* up = top.values + j * g.row;
         const double* up_next = j < g.ny ? up + g.row : up;
-        for (int i = 0; i <= g.nx; ++i) {
+        const std::uint64_t* b = bottom.signs + j * words;
+        const std::uint64_t* t0 = top.signs + j * words;
+        const std::uint64_t* t1 = j < g.ny ? t0 + words : t0;
+        const auto changes = [&](std::size_t w) {
+            return (b[w] ^ t0[w]) | (b[w] ^ next_bits(t0, w, words)) | (b[w] ^ t1[w]) |
+                   (b[w] ^ next_bits(t1, w, words));
+        };
+        for_candidates(words, changes, [&](int i) {
             const bool s = positive(row[i]);
             const int i1 = std::min(i + 1, g.nx);
             if (positive(up[i]) == s && positive(up[i1]) == s && positive(up_next[i]) == s &&
                 positive(up_next[i1]) == s)
-                continue;
+                return;
             for (int d = 4; d <= 7; ++d) {
                 const int i2 = i + edge_dx(d), j2 = j + edge_dy(d);
                 if (i2 > g.nx || j2 > g.ny) continue;
@@ -131,7 +176,7 @@ void make_vertical_vertices(const Context& ctx, const Layer& bottom, const Layer
                     refiner.add(out, g.point(i, j, k), row[i], g.index(i, j, k),
                                 g.point(i2, j2, k + 1), fb, g.index(i2, j2, k + 1));
             }
-        }
+        });
     }
     refiner.run(ctx, out);
 }
@@ -145,11 +190,12 @@ struct BoundaryPlane {
     int layer = 0;
     std::vector<double> values;
     std::vector<std::uint8_t> rows;
+    std::vector<std::uint64_t> signs;
     std::vector<Index> ids; // in-plane edge vertex ids, 3 per point
     VertexGroup vertices;
 
     Layer view(Index tag) const {
-        return Layer{layer, values.data(), rows.data(), ids.data(), tag};
+        return Layer{layer, values.data(), rows.data(), signs.data(), ids.data(), tag};
     }
 };
 
@@ -164,10 +210,70 @@ struct Workspace {
     std::vector<double> scratch;
     std::vector<double> values[2];
     std::vector<std::uint8_t> rows[2];
+    std::vector<std::uint64_t> signs[2];
     std::vector<Index> plane_ids[2];
     std::vector<Index> vertical_ids;
     Refiner refiner;
 };
+
+// The planes' and chunks' arrays of finished polygonizations, kept for the next one: the
+// workstation polygonizes again at every parameter change and `isoparm render` one surface after
+// another, and arrays of that size are fresh pages from the kernel each time (their page faults
+// cost about a sixth of the gallery's polygonization). At most two sets and 128 MiB are kept.
+struct Buffers {
+    std::vector<BoundaryPlane> planes;
+    std::vector<Chunk> chunks;
+
+    std::size_t bytes() const {
+        std::size_t n = 0;
+        auto group = [&](const VertexGroup& g) {
+            n += (g.positions.capacity() + g.normals.capacity()) * sizeof(glm::dvec3) +
+                 g.pinned.capacity() * sizeof(g.pinned[0]);
+        };
+        for (const BoundaryPlane& p : planes) {
+            group(p.vertices);
+            n += p.values.capacity() * sizeof(double) + p.rows.capacity() +
+                 p.ids.capacity() * sizeof(Index);
+        }
+        for (const Chunk& c : chunks) {
+            group(c.vertices);
+            n += c.triangles.capacity() * sizeof(c.triangles[0]);
+        }
+        return n;
+    }
+};
+
+class BufferPool {
+public:
+    Buffers take() {
+        std::lock_guard lock(mutex_);
+        if (free_.empty()) return {};
+        Buffers b = std::move(free_.back());
+        free_.pop_back();
+        return b;
+    }
+    void give(Buffers&& b) {
+        if (b.bytes() > (std::size_t{128} << 20)) return;
+        std::lock_guard lock(mutex_);
+        if (free_.size() < 2) free_.push_back(std::move(b));
+    }
+
+private:
+    std::mutex mutex_;
+    std::vector<Buffers> free_;
+};
+
+BufferPool& buffer_pool() {
+    static BufferPool pool;
+    return pool;
+}
+
+// Empty arrays that keep their room.
+void clear(VertexGroup& g) {
+    g.positions.clear();
+    g.normals.clear();
+    g.pinned.clear();
+}
 
 struct Polygonizer {
     Context ctx;
@@ -205,10 +311,12 @@ struct Polygonizer {
         const Grid& g = ctx.grid;
         bp.values.resize(g.plane);
         bp.rows.resize(g.ny + 1);
+        bp.signs.resize((g.ny + 1) * sign_words(g));
         bp.ids.resize(g.plane * 3);
-        evaluate_layer(ctx, bp.layer, bp.values.data(), bp.rows.data(), ws.scratch);
-        make_plane_vertices(ctx, bp.layer, bp.values.data(), bp.rows.data(), bp.ids.data(),
-                            bp.vertices, ws.refiner);
+        evaluate_layer(ctx, bp.layer, bp.values.data(), bp.rows.data(), bp.signs.data(),
+                       ws.scratch);
+        make_plane_vertices(ctx, bp.layer, bp.values.data(), bp.rows.data(), bp.signs.data(),
+                            bp.ids.data(), bp.vertices, ws.refiner);
         count(bp.vertices.positions.size(), 0);
     }
 
@@ -242,13 +350,16 @@ struct Polygonizer {
                 // Interior layers live in the worker's buffers (allocated on first use).
                 ws.values[buffer].resize(g.plane);
                 ws.rows[buffer].resize(g.ny + 1);
+                ws.signs[buffer].resize((g.ny + 1) * sign_words(g));
                 ws.plane_ids[buffer].resize(g.plane * 3);
                 double* values = ws.values[buffer].data();
                 std::uint8_t* rows = ws.rows[buffer].data();
+                std::uint64_t* signs = ws.signs[buffer].data();
                 Index* ids = ws.plane_ids[buffer].data();
-                evaluate_layer(ctx, k + 1, values, rows, ws.scratch);
-                make_plane_vertices(ctx, k + 1, values, rows, ids, chunk.vertices, ws.refiner);
-                top = Layer{k + 1, values, rows, ids, tag_local};
+                evaluate_layer(ctx, k + 1, values, rows, signs, ws.scratch);
+                make_plane_vertices(ctx, k + 1, values, rows, signs, ids, chunk.vertices,
+                                    ws.refiner);
+                top = Layer{k + 1, values, rows, signs, ids, tag_local};
             }
             make_vertical_vertices(ctx, bottom, top, ws.vertical_ids.data(), chunk.vertices,
                                    ws.refiner);
@@ -276,6 +387,7 @@ struct Polygonizer {
     void emit_triangles(int c, const Layer& bottom, const Layer& top, const Index* vertical_ids) {
         const Grid& g = ctx.grid;
         const CubeCase* cases = cube_cases();
+        const std::size_t words = sign_words(g);
         std::vector<std::array<Index, 3>>& out = chunks[c].triangles;
         // Where each edge code finds its vertex id, relative to the cell's first point.
         struct EdgeSlot {
@@ -302,15 +414,28 @@ struct Polygonizer {
             const double* b1 = b0 + g.row;
             const double* t0 = top.values + j * g.row;
             const double* t1 = t0 + g.row;
-            // The four corners at x = x_i, carried along the row.
-            unsigned left = positive(b0[0]) << 0 | positive(b1[0]) << 2 | positive(t0[0]) << 4 |
-                            positive(t1[0]) << 6;
-            for (int i = 0; i < g.nx; ++i) {
+            // Cells whose eight corners may not all have one sign: a column (the four corners
+            // at x_i) with both signs, at i or i + 1, or two columns of different signs.
+            const std::uint64_t* sb0 = bottom.signs + j * words;
+            const std::uint64_t* sb1 = sb0 + words;
+            const std::uint64_t* st0 = top.signs + j * words;
+            const std::uint64_t* st1 = st0 + words;
+            const auto column = [&](std::size_t w) {
+                return w < words ? (sb0[w] ^ sb1[w]) | (sb0[w] ^ st0[w]) | (sb0[w] ^ st1[w])
+                                 : std::uint64_t{0};
+            };
+            const auto changes = [&](std::size_t w) {
+                const std::uint64_t c = column(w);
+                return c | (c >> 1) | (column(w + 1) << 63) | (sb0[w] ^ next_bits(sb0, w, words));
+            };
+            for_candidates(words, changes, [&](int i) {
+                if (i >= g.nx) return;
+                const unsigned left = positive(b0[i]) << 0 | positive(b1[i]) << 2 |
+                                      positive(t0[i]) << 4 | positive(t1[i]) << 6;
                 const unsigned right = positive(b0[i + 1]) << 0 | positive(b1[i + 1]) << 2 |
                                        positive(t0[i + 1]) << 4 | positive(t1[i + 1]) << 6;
                 const unsigned mask = left | right << 1;
-                left = right;
-                if (mask == 0 || mask == 255) continue;
+                if (mask == 0 || mask == 255) return;
                 const std::size_t point = j * g.row + i;
                 const CubeCase& cc = cases[mask];
                 for (int k = 0; k < cc.count; ++k) {
@@ -336,7 +461,7 @@ struct Polygonizer {
                         out.push_back({v[1], v[3], v[0]});
                     }
                 }
-            }
+            });
         }
     }
 
@@ -568,19 +693,20 @@ Expected<Mesh> merge_chunks(Polygonizer& pz, std::vector<std::pair<std::uint64_t
     plane_offset.back() = append(pz.planes.back().vertices);
     if (mesh.positions.size() >= static_cast<std::size_t>(tag_bottom))
         return make_error(ErrorCode::limit, "the mesh has too many vertices", "/cell");
-    mesh.triangles.reserve(triangle_count);
+    mesh.triangles.resize(triangle_count);
+    std::array<Index, 3>* out = mesh.triangles.data();
     for (std::size_t c = 0; c < pz.chunks.size(); ++c) {
         const Index offsets[3] = {static_cast<Index>(chunk_offset[c]),
                                   static_cast<Index>(plane_offset[c]),
                                   static_cast<Index>(plane_offset[c + 1])};
         for (const auto& t : pz.chunks[c].triangles) {
-            std::array<Index, 3> r;
-            for (int k = 0; k < 3; ++k) r[k] = (t[k] & ~tag_mask) + offsets[t[k] >> 30];
-            mesh.triangles.push_back(r);
+            for (int k = 0; k < 3; ++k) (*out)[k] = (t[k] & ~tag_mask) + offsets[t[k] >> 30];
+            ++out;
         }
     }
-    pz.chunks.clear();
+    buffer_pool().give(Buffers{std::move(pz.planes), std::move(pz.chunks)});
     pz.planes.clear();
+    pz.chunks.clear();
 
     return mesh;
 }
@@ -617,8 +743,16 @@ Expected<Mesh> polygonize(const Program& f, const PolygonizeOptions& options) {
     pz.max_triangles = options.max_triangles;
     // About eight slabs per chunk, at most 32 chunks: enough to balance two to eight threads.
     const int chunk_count = std::clamp(grid.nz / 8, 1, 32);
+    Buffers reused = buffer_pool().take();
+    pz.planes = std::move(reused.planes);
+    pz.chunks = std::move(reused.chunks);
     pz.planes.resize(chunk_count + 1);
     pz.chunks.resize(chunk_count);
+    for (BoundaryPlane& bp : pz.planes) clear(bp.vertices);
+    for (Chunk& ch : pz.chunks) {
+        clear(ch.vertices);
+        ch.triangles.clear();
+    }
     for (int c = 0; c <= chunk_count; ++c)
         pz.planes[c].layer = static_cast<int>(static_cast<long>(grid.nz) * c / chunk_count);
     for (int c = 0; c < chunk_count; ++c) {

@@ -115,8 +115,8 @@ struct Refiner {
     std::vector<double> values, slopes;
     std::vector<double> scratch;
 
-    // Queues the vertex on the edge from a to b and returns its id; its position and normal are
-    // placeholders until run().
+    // Queues the vertex on the edge from a to b and returns its id; run() appends its position
+    // and normal to `out` (the ids follow on from what `out` holds).
     Index add(VertexGroup& out, const glm::dvec3& a, double fa, std::uint64_t ga,
               const glm::dvec3& b, double fb, std::uint64_t gb) {
         const bool a_positive = positive(fa);
@@ -125,10 +125,8 @@ struct Refiner {
         const double fp = a_positive ? fa : fb;
         const double fq = a_positive ? fb : fa;
         Edge e;
-        e.id = static_cast<Index>(out.positions.size());
+        e.id = static_cast<Index>(out.positions.size() + edges.size());
         e.p = p;
-        out.positions.push_back(p);
-        out.normals.push_back(glm::dvec3(0.0));
         if (fp == 0.0) {
             e.pinned = true;
             out.pinned.emplace_back(e.id, a_positive ? ga : gb);
@@ -167,6 +165,7 @@ struct Refiner {
 
     // Places every queued vertex and sets its normal; the queue is then empty.
     void run(const Context& ctx, VertexGroup& out);
+    void grow(std::size_t n);
 };
 
 } // namespace isoparm::geom::implicit::detail

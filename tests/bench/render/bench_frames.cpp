@@ -4,12 +4,17 @@
 // (a frame drawn for a hover), dragging the indicator, dragging a control point, orbiting.
 // Process CPU time per frame (llvmpipe rasterises on worker threads), glFinish'ed; each
 // frame's own times too, as the median and 95th percentile a drag's stutter shows in.
+// coarse:0 draws every gesture frame in full (as before gesture frames existed), coarse:1 the
+// way the window draws a drag or orbit on a CPU rasteriser (ui/workstation.hpp, GestureFrames:
+// the implicit objects from their coarse grid's meshes): before and after in one run.
+// ISOPARM_BENCH_FRAME_DIR=<dir> writes each case's last frame there as a PNG, to look at.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <cfloat>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <ctime>
 #include <imgui.h>
 #include <string>
@@ -20,6 +25,7 @@
 #include "core/scene/scene_io.hpp"
 #include "ui/headless/egl_context.hpp"
 #include "ui/headless/offscreen_target.hpp"
+#include "ui/image/png_writer.hpp"
 #include "ui/render/gl.hpp"
 #include "ui/render/renderer.hpp"
 #include "ui/view/camera.hpp"
@@ -45,6 +51,24 @@ double quantile(std::vector<double> v, double q) {
     const std::size_t i = std::min(k, v.size() - 1);
     std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(i), v.end());
     return v[i];
+}
+
+// The frame in `fbo` as <dir>/<name>.png when ISOPARM_BENCH_FRAME_DIR is set.
+void write_last_frame(unsigned fbo, int w, int h, const std::string& name) {
+    const char* dir = std::getenv("ISOPARM_BENCH_FRAME_DIR");
+    if (!dir || !*dir) return;
+    std::vector<std::uint8_t> rgba(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    std::vector<std::uint8_t> flipped(rgba.size()); // OpenGL's rows run bottom-up
+    const std::size_t row = static_cast<std::size_t>(w) * 4;
+    for (int y = 0; y < h; ++y)
+        std::copy_n(rgba.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(y)),
+                    row,
+                    flipped.begin() +
+                        static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(h - 1 - y)));
+    for (std::size_t k = 3; k < flipped.size(); k += 4) flipped[k] = 255;
+    (void)ui::write_png(std::string(dir) + "/" + name + ".png", w, h, flipped);
 }
 
 // A 64x64 bicubic NURBS surface, gently waved, with varying weights (the big-net drag case).
@@ -83,7 +107,8 @@ doc::Document vase_64x64(std::uint64_t& profile, glm::dvec3& p0) {
     return std::move(d).value();
 }
 
-void BM_Frame1440x900(benchmark::State& state, const char* scene, Gesture gesture) {
+void BM_Frame1440x900(benchmark::State& state, const char* name, const char* scene,
+                      Gesture gesture) {
     std::string error;
     const std::unique_ptr<ui::EglContext> egl = ui::EglContext::create(error);
     if (!egl) {
@@ -124,6 +149,11 @@ void BM_Frame1440x900(benchmark::State& state, const char* scene, Gesture gestur
         io.DeltaTime = 1.0f / 60.0f;
         io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
         for (int f = 0; f < 3; ++f) ws.frame(fbo); // layout, fit, first tessellation
+        // A gesture (the mouse held and moving) from here on; the first gesture frame makes the
+        // implicit objects' coarse meshes, once, outside the measured frames.
+        ws.gesture().coarse = state.range(0) != 0;
+        ws.gesture().forced = gesture != Gesture::idle;
+        ws.frame(fbo);
         glFinish();
         const doc::Object* obj = nullptr;
         const geom::Surface* s = ui::current_surface(ctx.doc, &obj);
@@ -159,6 +189,7 @@ void BM_Frame1440x900(benchmark::State& state, const char* scene, Gesture gestur
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall0)
                     .count());
         }
+        write_last_frame(fbo, w, h, std::string(name) + "_coarse" + std::to_string(state.range(0)));
         state.SetLabel(egl->renderer_name()); // the figures are this renderer's (llvmpipe here)
         state.counters["frames_per_s"] =
             benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsRate);
@@ -170,11 +201,14 @@ void BM_Frame1440x900(benchmark::State& state, const char* scene, Gesture gestur
 }
 
 #define FRAME_CASE(name, scene, gesture)                                                           \
-    BENCHMARK_CAPTURE(BM_Frame1440x900, name, scene, gesture)                                      \
+    BENCHMARK_CAPTURE(BM_Frame1440x900, name, #name, scene, gesture)                               \
         ->Unit(benchmark::kMillisecond)                                                            \
         ->MeasureProcessCPUTime()                                                                  \
         ->UseRealTime()                                                                            \
-        ->MinTime(2.0)
+        ->MinTime(2.0)                                                                             \
+        ->ArgName("coarse")                                                                        \
+        ->Arg(0)                                                                                   \
+        ->Arg(1)
 
 FRAME_CASE(fig3b_idle, "fig3b-weight-5.json", Gesture::idle);
 FRAME_CASE(fig3b_indicator_drag, "fig3b-weight-5.json", Gesture::indicator);
