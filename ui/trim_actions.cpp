@@ -96,12 +96,10 @@ const char* seen_along(doc::CurvePlane plane) {
     return plane == doc::CurvePlane::xy ? "z" : plane == doc::CurvePlane::xz ? "y" : "x";
 }
 
-// The trim with the drawn loop (the polygon, or the smooth loop on it) as one more hole or as
-// the outer loop.
-geom::Trim with_drawn_loop(const doc::SurfaceObject& s, const TrimDrawing& d, bool smooth) {
-    geom::TrimLoop loop = oriented(drawn_loop(d.corners, smooth), d.hole);
-    geom::Trim trim = s.trim;
-    if (d.hole)
+// The trim with `loop`, turned to run the right way, as one more hole or as the outer loop.
+geom::Trim with_loop(geom::Trim trim, geom::TrimLoop loop, bool hole) {
+    loop = oriented(std::move(loop), hole);
+    if (hole)
         trim.holes.push_back(std::move(loop));
     else
         trim.outer = std::move(loop);
@@ -196,7 +194,8 @@ void close_drawn_loop(AppContext& ctx) {
     }
     const bool hole = d.hole;
     ctx.seal();
-    if (ctx.execute(doc::set_trim(d.object, with_drawn_loop(*s, d, ctx.ui.smooth_loops)))) {
+    if (ctx.execute(doc::set_trim(
+            d.object, with_loop(s->trim, drawn_loop(d.corners, ctx.ui.smooth_loops), hole)))) {
         d = {};
         note_action(ctx,
                     hole ? "Hole added: the region inside it is cut away."
@@ -272,12 +271,8 @@ void trim_by_curve(AppContext& ctx, std::uint64_t curve, bool hole) {
         note_action(ctx, refused + loop.error().message, true);
         return;
     }
-    geom::Trim trim = t.surface->trim;
-    if (hole)
-        trim.holes.push_back(oriented(std::move(*loop), true));
-    else
-        trim.outer = oriented(std::move(*loop), false);
-    run_noted(ctx, state, refused, doc::set_trim(t.object->id, std::move(trim)),
+    run_noted(ctx, state, refused,
+              doc::set_trim(t.object->id, with_loop(t.surface->trim, std::move(*loop), hole)),
               std::string(hole ? "Hole cut along " : "Outer loop set along ") + o->name +
                   " seen along " + seen_along(c.plane) + ": " +
                   (hole ? "the surface inside it is cut away."
