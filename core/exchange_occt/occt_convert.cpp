@@ -225,9 +225,9 @@ std::string extend_to_pcurves(const TopoDS_Face& face, bool u_periodic, bool v_p
 // The face with its wires mended by OCCT's ShapeFix_Wire (self-intersecting edges, edges that
 // cross, adjacent or not; precision the largest tolerance of its edges), or nothing where that
 // changes nothing. bug32596_abc_0_13.step's faces 4, 13, 65 (edge tolerances up to 0.0099 on a
-// domain 0.0086 wide in u) and bug22869_Spring.igs's face 5 (up to 0.079) have p-curves that
-// cross; mended, their loops are valid and their areas within 1e-4 of OCCT's area of the face as
-// the file has it (faces 4, 13, 65: 3.4e-5, 3.8e-5, 2.0e-6).
+// domain 0.0086 wide in u) and bug22869_Spring.igs's faces 0 and 5 (up to 0.079) have p-curves
+// that cross; mended, their loops are valid and their areas within 1e-4 of OCCT's area of the
+// face as the file has it (faces 4, 13, 65: 3.4e-5, 3.8e-5, 2.0e-6; Spring face 0: 8.2e-7).
 struct Mended {
     TopoDS_Face face;
     std::string what;

@@ -66,7 +66,8 @@ public:
             for (int j = 0; j < sample_count && identity_; ++j) {
                 const double u = box.u0 + (box.u1 - box.u0) * samples[i];
                 const double v = box.v0 + (box.v1 - box.v0) * samples[j];
-                const auto p = inside(u, v) ? geom::surface_point(s, u, v) : std::nullopt;
+                const auto at = on_domain(u, v);
+                const auto p = at ? geom::surface_point(s, at->x, at->y) : std::nullopt;
                 identity_ = p && glm::length(*p - occt_point(original, u, v)) <= 1e-9 * size_;
             }
         if (identity_) return;
@@ -111,7 +112,18 @@ public:
     }
 
 private:
-    bool inside(double u, double v) const { return d_.contains({u, v}); }
+    // (u, v) in the domain, where it is there up to rounding (1e-9 of the domain's width: the
+    // box's ends and the domain's differ by a rounding where a B-spline was segmented to the box,
+    // as Geom_BSplineSurface::Segment computes its end knots: bug22869_Spring.igs face 0's box
+    // ends at u = 0.00097572377793087028, its segmented surface at ...78442, and that corner of
+    // the box, "outside", made its parameters look not OCCT's: its p-curves then went through
+    // maps and fits, and one edge was not followed).
+    std::optional<glm::dvec2> on_domain(double u, double v) const {
+        const double tu = 1e-9 * (d_.u.hi - d_.u.lo), tv = 1e-9 * (d_.v.hi - d_.v.lo);
+        if (!(u >= d_.u.lo - tu && u <= d_.u.hi + tu && v >= d_.v.lo - tv && v <= d_.v.hi + tv))
+            return std::nullopt;
+        return glm::dvec2(std::clamp(u, d_.u.lo, d_.u.hi), std::clamp(v, d_.v.lo, d_.v.hi));
+    }
 
     // The NURBS parameters proportional to OCCT's over the box: the first guess.
     glm::dvec2 guess(glm::dvec2 uv) const {

@@ -45,7 +45,7 @@ using test::cad_dir;
 using test::cad_files;
 
 // How many faces of each file import trimmed with OCCT's area (as read, or once the wires' 2D
-// gaps are closed: occt_area_gaps_closed), as measured (2026-11-28, 1220 of 1222): a file that
+// gaps are closed: occt_area_gaps_closed), as measured (2026-11-28, 1221 of 1222): a file that
 // drops below its count fails. Faces whose p-curves leave their B-spline surface's range come
 // in on the surface extended to hold them (occt_convert.cpp, extend_to_pcurves): hammer.iges
 // faces 13, 18, 33, 44 (bilinear planes, circles 1e-5 to 2e-5 past the range, 0.037 to 0.115
@@ -57,20 +57,27 @@ using test::cad_files;
 // the revolution of the moved line (occt_convert.cpp exact_offset): 397270.6723 as OCCT (a domain
 // 430 times longer than wide: trim_area.cpp). ec_turbine-A face 1, a plane whose circular hole
 // starts where it touches the outer circle, trims now that loops may touch at a point:
-// 629.4008312 as OCCT (5e-15). bug32596 faces 4, 13, 65 and bug22869_Spring face 5 have p-curves
-// that cross within the file's loose tolerance: their wires mended by ShapeFix_Wire on a copy
-// (occt_convert.cpp fixed_wires) trim, and match OCCT's area of the face as the file has it. The
-// 2 faces that do not match are printed with the reason:
-// - Spring's face 0, one of whose edges (tolerance 0.079) no fit follows;
-// - face 10 of catiav5_Ventilator.stp, a hexagon whose six lines miss their corners by 0.014
-//   (vertex tolerance 0.028): its area is defined only to about its perimeter times that, 1e-2
-//   relative, and isoparm (lines joined where they cross) 67.977, BRepGProp 67.872, BRepGProp
-//   with ShapeFix's gaps closed 67.910 and BRepMesh 67.57 to 67.59 all differ.
+// 629.4008312 as OCCT (5e-15). bug32596 faces 4, 13, 65 and bug22869_Spring faces 0 and 5 have
+// p-curves that cross within the file's loose tolerance: their wires mended by ShapeFix_Wire on a
+// copy (occt_convert.cpp fixed_wires) trim, and match OCCT's area of the face as the file has it
+// (Spring face 0: 5655.90742 against 5655.90281, 8.2e-7; its box ends 8.6e-17 past its segmented
+// surface's domain, which occt_trim.cpp's Mapper now takes as the domain: before, its parameters
+// were taken as not OCCT's and one of its edges, tolerance 0.079, went through a fit that failed).
+// The face that does not match is printed with the reason: face 10 of catiav5_Ventilator.stp, a
+// hexagon (with a round hole) of six lines that miss their corners: at each corner one line ends
+// on the vertex and the other 0.014 from it, sideways (vertex tolerances 0.014, one 0.028). Its
+// area is defined only to about its perimeter times that, 1e-2 relative: the vertices as corners
+// give 67.573 (BRepMesh 67.57 to 67.59), the midpoints of the line ends 67.876, BRepGProp as read
+// (which leaves the gaps out) 67.872, ShapeFix_Wire::FixGaps2d (each line made a quadratic
+// B-spline with its end poles moved to those midpoints: bent sides) 67.910, and isoparm (the lines
+// joined where they cross, 0.016 from the vertices) 67.977. OCCT's reader leaves the gaps open,
+// so none of these is OCCT's face; picking the rule that lands on a reference would not make the
+// face better defined, so it is left unmatched.
 const std::map<std::string, int> measured_matches = {
     {"BUC50025.igs", 7},
     {"OCC8842_cone_CATIA.igs", 3},
     {"bug22566_test_Bad.igs", 9},
-    {"bug22869_Spring.igs", 5},
+    {"bug22869_Spring.igs", 6},
     {"bug23171_tube_surf.igs", 2},
     {"bug24283_spheres.stp", 2},
     {"bug24595_281390.stp", 21},
@@ -205,7 +212,7 @@ TEST(RealCadFilesTrimmed, FacesImportTrimmedWithOcctsAreas) {
               << match_closed << " OCCT's area once the wires' 2D gaps are closed)\n";
     if (!test::every_cad_file()) return; // the totals need every file (real_cad_files.hpp)
     EXPECT_GT(faces, 1000);
-    EXPECT_GE(match + match_closed, 1220) << "of " << faces << " faces (" << trimmed << " trimmed)";
+    EXPECT_GE(match + match_closed, 1221) << "of " << faces << " faces (" << trimmed << " trimmed)";
 }
 
 // Imported trimmed faces written again by isoparm (STEP and IGES, all faces of a file in one
