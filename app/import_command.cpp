@@ -47,14 +47,20 @@ int run_unguarded(const ImportCommandOptions& o) {
     for (doc::Object& object : imported->objects)
         if (geom::Status st = doc::add_object(std::move(object))->apply(document); !st)
             return fail(st.error().message); // import_file checked them: not expected
-    // The scene written must be one the workstation and `isoparm render` can show: a part of
+    // The scene written should be one the workstation and `isoparm render` can show: a part of
     // a thousand faces at the default density would need gigabytes, so the density is lowered
-    // until it fits (or, where nothing fits, nothing is written).
+    // until it fits. Where nothing fits (140 bicubic 64 x 64 patches need 2.1 million vertices
+    // even at two samples a span), the scene is written all the same at the lowest density, and
+    // says so: the import's work is not thrown away, and `isoparm export` and `isoparm geom`
+    // take the scene; the window and `isoparm render` refuse it with the same sentence.
     const int density = ui::display_density_that_fits(document);
-    if (density == 0)
-        return fail("'" + o.input + "': " + ui::scene_over_budget(document, 2, {}) +
-                    " (at display density 2)");
-    if (density < document.view.display.density) {
+    if (density == 0) {
+        std::cerr << "isoparm import: warning: '" << o.input
+                  << "': " << ui::scene_over_budget(document, 2, {})
+                  << " (at display density 2); the scene is written at display density 2 "
+                     "for `isoparm export` and `isoparm geom`, which do not show it\n";
+        document.view.display.density = 2;
+    } else if (density < document.view.display.density) {
         std::cerr << "isoparm import: display density " << document.view.display.density
                   << " lowered to " << density << " so that the " << document.objects.size()
                   << " objects can be shown\n";

@@ -46,7 +46,8 @@ struct ReadPlan {
 };
 
 // Reads and converts, calling `send` with wire bytes (core/exchange/import_wire.hpp) as they
-// accumulate and once at the end (`last`). Throws only std::bad_alloc.
+// accumulate and once at the end (`last`), while the reader's model still exists (`send` may
+// end the process after the last bytes). Throws only std::bad_alloc.
 void read_with_occt(const ReadPlan& plan, ReadProgress& progress,
                     const std::function<void(std::string&& bytes, bool last)>& send);
 

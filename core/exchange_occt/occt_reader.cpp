@@ -236,8 +236,10 @@ geom::Expected<exchange::ImportResult> read(std::string_view text, CadFormat for
         const exchange::SandboxRun run = exchange::run_sandboxed(
             [&](int fd) {
                 try {
-                    read_with_occt(plan, *progress, [fd](std::string&& bytes, bool) {
+                    read_with_occt(plan, *progress, [fd](std::string&& bytes, bool last) {
                         if (!exchange::write_to_parent(fd, bytes)) ::_exit(5);
+                        // Everything is sent: the child ends without freeing OCCT's model.
+                        if (last) ::_exit(0);
                     });
                 } catch (const std::bad_alloc&) {
                     exchange::write_to_parent(fd, out_of_memory_record);

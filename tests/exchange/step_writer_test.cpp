@@ -91,8 +91,44 @@ TEST(StepWriter, APolynomialSurfaceIsAnAdvancedFaceWithFourEdges) {
     EXPECT_EQ(count_of(data, "EDGE_CURVE("), 4);
     EXPECT_EQ(count_of(data, "VERTEX_POINT("), 4);
     EXPECT_EQ(count_of(data, "EDGE_LOOP("), 1);
-    // 20 control points, 4 + 4 + 4 + 5 + 5 side points, 4 vertices, the origin.
-    EXPECT_EQ(count_of(data, "CARTESIAN_POINT("), 20 + 18 + 4 + 1);
+    // 20 control points, 4 + 4 + 4 + 5 + 5 side points, 4 vertices, the origin, and the two
+    // (u, v) ends of each side's p-curve.
+    EXPECT_EQ(count_of(data, "CARTESIAN_POINT("), 20 + 18 + 4 + 1 + 8);
+    // Each side carries its (u, v) line, so that a reader need not project it onto the surface
+    // (OCCT spent a quarter of reading a big file doing so).
+    EXPECT_EQ(count_of(data, "SURFACE_CURVE("), 4);
+    EXPECT_EQ(count_of(data, "PCURVE("), 4);
+    for (const auto& [id, record] : data) {
+        if (record.rfind("EDGE_CURVE(", 0) == 0) {
+            EXPECT_EQ(data.at(references(record)[2]).rfind("SURFACE_CURVE(", 0), 0u) << record;
+        }
+        if (record.rfind("SURFACE_CURVE(", 0) != 0) continue;
+        EXPECT_NE(record.find(".CURVE_3D."), std::string::npos) << record;
+        const auto pcurve = data.at(references(record)[1]);
+        const auto definition = data.at(references(pcurve)[1]);
+        const auto line = data.at(references(definition)[0]);
+        // Degree 1 over the side's own parameter range: the domain's u or v interval.
+        EXPECT_EQ(line.rfind("B_SPLINE_CURVE_WITH_KNOTS('',1,", 0), 0u) << line;
+        const auto at = line.find(",(2,2),(");
+        ASSERT_NE(at, std::string::npos) << line;
+        std::size_t used = 0;
+        const double lo = std::stod(line.substr(at + 8), &used);
+        const double hi = std::stod(line.substr(at + 8 + used + 1));
+        const geom::ParamRect dom = geom::domain(s);
+        EXPECT_TRUE((lo == dom.u.lo && hi == dom.u.hi) || (lo == dom.v.lo && hi == dom.v.hi))
+            << line;
+    }
+}
+
+TEST(StepWriter, SidesOfAClosedOrPolarSurfaceHaveNoPcurves) {
+    // A seam is one edge on two sides of the domain (two p-curves, a SEAM_CURVE): left to the
+    // reader, as before.
+    const geom::Curve profile = geom::line_segment({1, 0, 0}, {2, 0, 1});
+    const auto band = geom::revolve(profile, 360);
+    ASSERT_TRUE(band);
+    const auto text = exchange::step_text({*band}, "band");
+    ASSERT_TRUE(text);
+    EXPECT_EQ(count_of(instances(*text), "PCURVE("), 0);
 }
 
 TEST(StepWriter, KnotsAreDistinctValuesWithMultiplicitiesAndPointsU_Major) {
