@@ -1,6 +1,7 @@
-// The polygonizer's parts shared by its files (core/geom/implicit/polygonize.cpp walks the grid,
-// cube_cases.cpp holds the marching-tetrahedra case table, edge_refiner.cpp places the vertices
-// on their edges). Internal: nothing outside these files includes it.
+// The polygonizer's parts shared by its files (polygonize.cpp schedules the work,
+// grid_layers.cpp walks the grid's layers, cell_triangles.cpp makes the cells' triangles from
+// the marching-tetrahedra case table in cube_cases.cpp, edge_refiner.cpp places the vertices on
+// their edges). Internal: nothing outside these files includes it.
 #pragma once
 
 #include <cmath>
