@@ -23,9 +23,10 @@ void evaluate_layer(const Context& ctx, int k, double* values, std::uint8_t* row
                     std::uint64_t* signs, std::vector<double>& scratch) {
     const Grid& g = ctx.grid;
     const std::size_t words = sign_words(g);
+    ctx.f.values_on_rows(g.xs.data(), g.row, g.ys.data(), g.ys.size(), g.zs[k], values, ctx.params,
+                         scratch);
     for (int j = 0; j <= g.ny; ++j) {
-        double* row = values + j * g.row;
-        ctx.f.values_along_x(g.xs.data(), g.row, g.ys[j], g.zs[k], row, ctx.params, scratch);
+        const double* row = values + j * g.row;
         std::size_t count = 0;
         std::uint64_t* bits = signs + j * words;
         std::fill_n(bits, words, 0);

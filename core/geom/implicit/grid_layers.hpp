@@ -57,7 +57,7 @@ struct Layer {
     Index tag = tag_local;
 };
 
-// Values of layer k, one batch evaluation per row, each row's sign summary and sign bits.
+// Values of layer k (Program::values_on_rows), each row's sign summary and sign bits.
 void evaluate_layer(const Context& ctx, int k, double* values, std::uint8_t* rows,
                     std::uint64_t* signs, std::vector<double>& scratch);
 

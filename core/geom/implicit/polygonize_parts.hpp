@@ -143,10 +143,9 @@ struct Refiner {
     // One Newton step of an edge given g(t) and g'(t); false when the edge is finished.
     static bool step(Edge& e, double v, double slope) {
         ++e.evaluations;
-        if (positive(v))
-            e.lo = e.t;
-        else
-            e.hi = e.t;
+        // The side picked by address, not by a branch: v's sign is as likely one way as the
+        // other, so a branch on it is often mispredicted.
+        (positive(v) ? e.lo : e.hi) = e.t;
         const double step = v / slope;
         if (v == 0.0 || std::fabs(step) <= 1e-12) {
             e.converged = true;
