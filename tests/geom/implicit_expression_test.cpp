@@ -173,7 +173,8 @@ TEST(ImplicitExpression, ConstantExponentGradientIsFiniteForNegativeBase) {
 }
 
 TEST(ImplicitExpression, BatchMatchesScalarBitForBit) {
-    auto program = compile("sin(x*y) + x^3 - 2/x + a*z^0.7 - (x - y)^2 + abs(x) + x^y", {"a"});
+    auto program =
+        compile("sin(x*y) + x^3 - 2/x + a*z^0.7 - (x - y)^2 + abs(x) + x^y + (x - 0.5)^4", {"a"});
     ASSERT_TRUE(program.ok());
     const double a = 0.8;
     std::vector<double> xs(1000), out(1000);
@@ -199,7 +200,7 @@ std::string random_expression(std::mt19937& rng, int depth) {
         return leaves[pick(10)];
     }
     static const char* functions[] = {"sin", "cos", "tan", "exp", "log", "sqrt", "abs"};
-    static const char* exponents[] = {"2", "3", "5", "0", "-1", "-3", "0.5", "1.7", "y", "a"};
+    static const char* exponents[] = {"2", "3", "4", "5", "0", "-1", "-3", "0.5", "1.7", "y", "a"};
     switch (pick(8)) {
     case 0:
         return "(" + random_expression(rng, depth - 1) + " + " + random_expression(rng, depth - 1) +
@@ -214,7 +215,7 @@ std::string random_expression(std::mt19937& rng, int depth) {
         return "(" + random_expression(rng, depth - 1) + " / " + random_expression(rng, depth - 1) +
                ")";
     case 4:
-        return "(" + random_expression(rng, depth - 1) + ")^" + exponents[pick(10)];
+        return "(" + random_expression(rng, depth - 1) + ")^" + exponents[pick(11)];
     case 5:
         return "-(" + random_expression(rng, depth - 1) + ")";
     default:
@@ -231,11 +232,11 @@ TEST(ImplicitExpression, BatchDualsMatchOnePointCallsBitForBit) {
     std::mt19937 rng(2024);
     const double params[2] = {0.8, -1.25};
     // Ordinary points, zeros (division by zero, log 0, 0^-1), negatives (log, sqrt, fractional
-    // powers: NaN) and large values (overflow to infinity, inf - inf): 70 points, so the
-    // 64-point blocks and their padding are crossed.
+    // powers: NaN) and large values (overflow to infinity, inf - inf): 270 points, so the
+    // 256-point blocks and their padding are crossed.
     std::vector<glm::dvec3> points, directions;
     std::uniform_real_distribution<double> u(-3.0, 3.0);
-    for (int k = 0; k < 64; ++k) {
+    for (int k = 0; k < 264; ++k) {
         points.emplace_back(u(rng), u(rng), u(rng));
         directions.emplace_back(u(rng), u(rng), u(rng));
     }
@@ -270,6 +271,33 @@ TEST(ImplicitExpression, BatchDualsMatchOnePointCallsBitForBit) {
                     ASSERT_TRUE(same_bits(gradients[k][i], g[i]))
                         << text << " at point " << k << ", component " << i;
             }
+        }
+    }
+}
+
+// Rows several to a block (values per block, per row and per point mixed in every way the
+// random expressions give): the same bits as one point at a time, for rows shorter than a
+// block, exactly one, and longer (split across blocks).
+TEST(ImplicitExpression, RowBlocksMatchOnePointCallsBitForBit) {
+    std::mt19937 rng(77);
+    const double params[2] = {0.8, -1.25};
+    std::vector<double> ys = {-2.5, -1.0, -0.0, 0.0, 0.3, 1.0, 2.0, 1e200, -3.0};
+    std::vector<double> scratch;
+    for (int e = 0; e < 200; ++e) {
+        const std::string text = random_expression(rng, 1 + e % 5);
+        auto program = compile(text, {"a", "b"});
+        ASSERT_TRUE(program.ok()) << text;
+        for (const std::size_t n : {std::size_t{1}, std::size_t{3}, std::size_t{51},
+                                    std::size_t{256}, std::size_t{300}}) {
+            std::vector<double> xs(n), out(n * ys.size());
+            for (std::size_t i = 0; i < n; ++i) xs[i] = -2.0 + 4.0 * static_cast<double>(i) / n;
+            program->values_on_rows(xs.data(), n, ys.data(), ys.size(), 0.7, out.data(), params,
+                                    scratch);
+            for (std::size_t r = 0; r < ys.size(); ++r)
+                for (std::size_t i = 0; i < n; ++i)
+                    ASSERT_TRUE(
+                        same_bits(out[r * n + i], program->value({xs[i], ys[r], 0.7}, params)))
+                        << text << " at row " << r << ", point " << i << " of " << n;
         }
     }
 }

@@ -32,6 +32,11 @@ public:
     // scratch is resized on first use and can be reused across calls (no allocation once warm).
     void values_along_x(const double* xs, std::size_t n, double y, double z, double* out,
                         const double* params, std::vector<double>& scratch) const;
+    // Several rows of a layer: out[r * n + i] = f(xs[i], ys[r], z) for r < rows, i < n, the
+    // same bits. Short rows are evaluated several to a block (dispatch paid once per block).
+    void values_on_rows(const double* xs, std::size_t n, const double* ys, std::size_t rows,
+                        double z, double* out, const double* params,
+                        std::vector<double>& scratch) const;
 
     // Batch forms of value_and_derivative and value_and_gradient (the polygonizer refines all
     // the edges of a layer together): for i < n, the same bits as the one-point calls. scratch

@@ -215,11 +215,9 @@ double evaluate_dual(const std::vector<Program::Instruction>& code, const glm::d
 // point. Every lane does exactly evaluate_dual's arithmetic in the same order (the padding
 // tangent of N = 3 included where the program has op_pow: a NaN there makes op_pow take its log
 // term, and the batch must do the same; nothing else reads it, so without op_pow L = 3), so each
-// point gets the same bits as a call of its own. The loops
-// are small functions with __restrict arguments so that GCC's -O2 vectorizes them (lambdas'
-// captured pointers lose the no-alias promise).
-constexpr std::size_t dual_block = 256;
-
+// point gets the same bits as a call of its own. The arithmetic instructions run as one pass
+// over the slot's lanes (dual_binary_slots, dual_unary_slots in expression_lanes.cpp, built
+// for AVX2 too); op_pow and the functions compute their factors here one point at a time.
 template <int L> struct DualLanes {
     double* v;
     double* d[L];
@@ -230,111 +228,60 @@ template <int N> std::size_t dual_scratch_size(int slots) {
     return (static_cast<std::size_t>(slots) * (1 + lanes_for<N>)+1) * dual_block;
 }
 
-// The per-point factors f of evaluate_dual's scale(), then the tangents scaled by them.
-template <int L>
-[[gnu::always_inline]] inline void scale_all(const DualLanes<L>& a, const double* f,
-                                             std::size_t padded) {
-    for (int i = 0; i < L; ++i) scale_lane(a.d[i], f, padded);
-}
-
 // a = a (op) b over the lanes for the five binary instructions (evaluate_dual's dual_binary).
 template <int L>
 [[gnu::always_inline]] inline void binary_dual_lanes(std::uint8_t op, const DualLanes<L>& a,
                                                      const DualLanes<L>& b, std::size_t padded) {
-    switch (op) {
-    case op_add:
-    case op_sub:
-        for (int i = 0; i < L; ++i) binary_lanes(op, a.d[i], b.d[i], padded);
-        binary_lanes(op, a.v, b.v, padded);
-        break;
-    case op_mul:
-        for (int i = 0; i < L; ++i) product_tangent(a.d[i], b.v, a.v, b.d[i], padded);
-        binary_lanes(op_mul, a.v, b.v, padded);
-        break;
-    case op_div:
-        binary_lanes(op_div, a.v, b.v, padded);
-        for (int i = 0; i < L; ++i) quotient_tangent(a.d[i], a.v, b.d[i], b.v, padded);
-        break;
-    default: // op_pow
-        for (std::size_t k = 0; k < padded; ++k) {
-            const double v = std::pow(a.v[k], b.v[k]);
-            const double da = b.v[k] * std::pow(a.v[k], b.v[k] - 1.0);
-            bool varies = false;
-            for (int i = 0; i < L; ++i) varies = varies || b.d[i][k] != 0.0;
-            const double db = varies ? v * std::log(a.v[k]) : 0.0;
-            for (int i = 0; i < L; ++i)
-                a.d[i][k] = a.d[i][k] * da + (varies ? b.d[i][k] * db : 0.0);
-            a.v[k] = v;
-        }
-        break;
+    if (op != op_pow) {
+        dual_binary_slots(op, L, a.v, b.v, padded);
+        return;
+    }
+    for (std::size_t k = 0; k < padded; ++k) {
+        const double v = std::pow(a.v[k], b.v[k]);
+        const double da = b.v[k] * std::pow(a.v[k], b.v[k] - 1.0);
+        bool varies = false;
+        for (int i = 0; i < L; ++i) varies = varies || b.d[i][k] != 0.0;
+        const double db = varies ? v * std::log(a.v[k]) : 0.0;
+        for (int i = 0; i < L; ++i) a.d[i][k] = a.d[i][k] * da + (varies ? b.d[i][k] * db : 0.0);
+        a.v[k] = v;
     }
 }
 
 // a = f(a) over the lanes for the unary and constant-operand instructions (evaluate_dual's
-// dual_unary); f: one lane of scratch for the per-point factors.
+// dual_unary); f: one lane of scratch for the per-point factors of the functions.
 template <int L>
 [[gnu::always_inline]] inline void unary_dual_lanes(const Program::Instruction& in,
                                                     const DualLanes<L>& a, double* f,
                                                     std::size_t padded) {
-
+    if (dual_unary_slots(in, L, a.v, padded)) return;
     double* const v = a.v;
     const double c = in.c;
     switch (in.op) {
-    case op_add_c:
-    case op_sub_c:
-        unary_lane(in, v, padded);
-        break;
-    case op_rsub_c:
-    case op_neg:
-        unary_lane(in, v, padded);
-        for (int i = 0; i < L; ++i) scale_lane_by(a.d[i], -1.0, padded);
-        break;
-    case op_mul_c:
-        unary_lane(in, v, padded);
-        for (int i = 0; i < L; ++i) scale_lane_by(a.d[i], c, padded);
-        break;
-    case op_div_c:
-        unary_lane(in, v, padded);
-        for (int i = 0; i < L; ++i) divide_lane_by(a.d[i], c, padded);
-        break;
-    case op_rdiv_c:
+    case op_pow_int: {
+        const int n = in.n;
         for (std::size_t k = 0; k < padded; ++k) {
-            const double r = c / v[k];
-            f[k] = -r / v[k];
-            v[k] = r;
+            f[k] = n == 0 ? 0.0 : n * powi(v[k], n - 1);
+            v[k] = powi(v[k], n);
         }
-        scale_all(a, f, padded);
         break;
-    case op_pow_int:
-        if (in.n == 2) {
-            for_lanes(padded, [=](std::size_t k) { f[k] = 2.0 * v[k]; });
-        } else {
-            const int n = in.n;
-            for (std::size_t k = 0; k < padded; ++k) f[k] = n == 0 ? 0.0 : n * powi(v[k], n - 1);
-        }
-        scale_all(a, f, padded);
-        unary_lane(in, v, padded);
-        break;
+    }
     case op_pow_c:
         for (std::size_t k = 0; k < padded; ++k) {
             f[k] = c * std::pow(v[k], c - 1.0);
             v[k] = std::pow(v[k], c);
         }
-        scale_all(a, f, padded);
         break;
     case op_sin:
         for (std::size_t k = 0; k < padded; ++k) {
             f[k] = std::cos(v[k]);
             v[k] = std::sin(v[k]);
         }
-        scale_all(a, f, padded);
         break;
     case op_cos:
         for (std::size_t k = 0; k < padded; ++k) {
             f[k] = -std::sin(v[k]);
             v[k] = std::cos(v[k]);
         }
-        scale_all(a, f, padded);
         break;
     case op_tan:
         for (std::size_t k = 0; k < padded; ++k) {
@@ -342,18 +289,15 @@ template <int L>
             f[k] = 1.0 + t * t;
             v[k] = t;
         }
-        scale_all(a, f, padded);
         break;
     case op_exp:
         for (std::size_t k = 0; k < padded; ++k) f[k] = v[k] = std::exp(v[k]);
-        scale_all(a, f, padded);
         break;
     case op_log:
         for (std::size_t k = 0; k < padded; ++k) {
             f[k] = 1.0 / v[k];
             v[k] = std::log(v[k]);
         }
-        scale_all(a, f, padded);
         break;
     case op_sqrt:
         for (std::size_t k = 0; k < padded; ++k) {
@@ -361,18 +305,18 @@ template <int L>
             f[k] = 0.5 / r;
             v[k] = r;
         }
-        scale_all(a, f, padded);
         break;
     case op_abs:
         for (std::size_t k = 0; k < padded; ++k) {
             f[k] = v[k] > 0 ? 1.0 : (v[k] < 0 ? -1.0 : 0.0);
             v[k] = std::fabs(v[k]);
         }
-        scale_all(a, f, padded);
         break;
     default:
         assert(false && "unknown opcode");
+        return;
     }
+    dual_scale_slots(L, a.v, f, padded);
 }
 
 // directions: the tangent seeds of x, y, z per point (N = 1); nullptr: unit seeds (N = 3).
@@ -391,16 +335,27 @@ void evaluate_dual_lanes(const std::vector<Program::Instruction>& code, int slot
     };
     int sp = 0;
     double* const f = scratch + static_cast<std::size_t>(slots) * (1 + L) * dual_block;
+    const auto copy = [&](int from_slot, int to_slot) {
+        const DualLanes<L> from = slot(from_slot), to = slot(to_slot);
+        copy_lane(to.v, from.v, padded);
+        for (int i = 0; i < L; ++i) copy_lane(to.d[i], from.d[i], padded);
+    };
+    // A loaded register is copied onto the stack only when something changes it there: the
+    // right operand of a binary instruction (the usual next one) is read in place.
+    int loaded = -1; // the register that the top of the stack is still, or -1
     for (const Program::Instruction& in : code) {
+        if (loaded >= 0 && !is_binary(in.op)) {
+            copy(loaded, sp - 1);
+            loaded = -1;
+        }
         switch (in.op) {
         case op_store:
-        case op_load: {
-            const DualLanes<L> from = slot(in.op == op_store ? sp - 1 : in.n);
-            const DualLanes<L> to = slot(in.op == op_store ? in.n : sp++);
-            copy_lane(to.v, from.v, padded);
-            for (int i = 0; i < L; ++i) copy_lane(to.d[i], from.d[i], padded);
+            copy(sp - 1, in.n);
             break;
-        }
+        case op_load:
+            loaded = in.n;
+            ++sp;
+            break;
         case op_const:
         case op_param: {
             const DualLanes<L> a = slot(sp++);
@@ -430,7 +385,8 @@ void evaluate_dual_lanes(const std::vector<Program::Instruction>& code, int slot
         case op_div:
         case op_pow:
             --sp;
-            binary_dual_lanes<L>(in.op, slot(sp - 1), slot(sp), padded);
+            binary_dual_lanes<L>(in.op, slot(sp - 1), slot(loaded >= 0 ? loaded : sp), padded);
+            loaded = -1;
             break;
         default:
             unary_dual_lanes<L>(in, slot(sp - 1), f, padded);
@@ -438,6 +394,7 @@ void evaluate_dual_lanes(const std::vector<Program::Instruction>& code, int slot
         }
     }
     assert(sp == 1);
+    if (loaded >= 0) copy(loaded, 0);
     const DualLanes<L> top = slot(0);
     for (std::size_t k = 0; k < m; ++k) {
         values[k] = top.v[k];

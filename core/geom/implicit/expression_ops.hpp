@@ -69,6 +69,7 @@ constexpr int max_nesting = 64;
 constexpr int stack_capacity = 256;
 constexpr int max_int_exponent = 64; // larger integer exponents go through pow
 constexpr std::size_t batch_block = 256;
+constexpr std::size_t batch_rows = 64; // rows in one block of values_on_rows at most
 
 // Common-subexpression elimination on folded postfix code (expression_share.cpp): the
 // first occurrence of a repeated subexpression is followed by op_store into a register slot
@@ -179,17 +180,20 @@ void binary_lane_value(std::uint8_t op, double* __restrict a, double b, std::siz
 void binary_value_lane(std::uint8_t op, double a, const double* __restrict b,
                        double* __restrict out, std::size_t m);
 void unary_lane(const Program::Instruction& in, double* __restrict a, std::size_t m);
-// The dual numbers' tangent rules (expression_dual.cpp):
-// d = d * bv + av * bd (the product rule, with a's old value).
-void product_tangent(double* __restrict d, const double* __restrict bv, const double* __restrict av,
-                     const double* __restrict bd, std::size_t m);
-// d = (d - q * bd) / bv (the quotient rule, q the new value).
-void quotient_tangent(double* __restrict d, const double* __restrict q, const double* __restrict bd,
-                      const double* __restrict bv, std::size_t m);
 void fill_lane(double* __restrict d, double c, std::size_t m);
 void copy_lane(double* __restrict d, const double* __restrict from, std::size_t m);
-void scale_lane(double* __restrict d, const double* __restrict f, std::size_t m);
-void scale_lane_by(double* __restrict d, double f, std::size_t m);
-void divide_lane_by(double* __restrict d, double f, std::size_t m);
+
+// The dual evaluator's slots (expression_dual.cpp): a value lane, then `tangents` tangent
+// lanes (1, 3 or 4), dual_block doubles apart; m a multiple of 4. a = a (op) b for op_add,
+// op_sub, op_mul and op_div; a = f(a) for the unary instructions whose derivative is plain
+// arithmetic (false, nothing done, for the others: their factors go to dual_scale_slots, which
+// multiplies every tangent lane by f).
+constexpr std::size_t dual_block = 256;
+void dual_binary_slots(std::uint8_t op, int tangents, double* __restrict a,
+                       const double* __restrict b, std::size_t m);
+bool dual_unary_slots(const Program::Instruction& in, int tangents, double* __restrict a,
+                      std::size_t m);
+void dual_scale_slots(int tangents, double* __restrict a, const double* __restrict f,
+                      std::size_t m);
 
 } // namespace isoparm::geom::implicit::detail

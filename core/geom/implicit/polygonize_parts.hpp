@@ -1,6 +1,7 @@
-// The polygonizer's parts shared by its files (core/geom/implicit/polygonize.cpp walks the grid,
-// cube_cases.cpp holds the marching-tetrahedra case table, edge_refiner.cpp places the vertices
-// on their edges). Internal: nothing outside these files includes it.
+// The polygonizer's parts shared by its files (polygonize.cpp schedules the work,
+// grid_layers.cpp walks the grid's layers, cell_triangles.cpp makes the cells' triangles from
+// the marching-tetrahedra case table in cube_cases.cpp, edge_refiner.cpp places the vertices on
+// their edges). Internal: nothing outside these files includes it.
 #pragma once
 
 #include <cmath>
@@ -142,10 +143,9 @@ struct Refiner {
     // One Newton step of an edge given g(t) and g'(t); false when the edge is finished.
     static bool step(Edge& e, double v, double slope) {
         ++e.evaluations;
-        if (positive(v))
-            e.lo = e.t;
-        else
-            e.hi = e.t;
+        // The side picked by address, not by a branch: v's sign is as likely one way as the
+        // other, so a branch on it is often mispredicted.
+        (positive(v) ? e.lo : e.hi) = e.t;
         const double step = v / slope;
         if (v == 0.0 || std::fabs(step) <= 1e-12) {
             e.converged = true;
