@@ -325,9 +325,9 @@ void BM_GridPathsInterleaved_isoparm(benchmark::State& state) {
 // processes as this process has cores (tests/bench/competing_load.hpp), started before the
 // first pass and stopped after the last. One- and two-thread passes alternate. Counters: the
 // medians and the means (which hold the rare slow pass: a helper descheduled inside a task)
-// of each, in microseconds, and the speed-ups of both. Two threads must never lose to one
-// here (WorkerPool: dynamic handout, the contention guard). Arguments: net size, kernel path,
-// 0 positions / 1 positions + normals.
+// of each, in microseconds, and the speed-ups of both: the pool's aim (dynamic handout, the
+// contention guard) is that two threads never lose to one here, a speed-up of at least 1.
+// Arguments: net size, kernel path, 0 positions / 1 positions + normals.
 void BM_GridThreadsContended_isoparm(benchmark::State& state) {
     TimedGrid g(static_cast<int>(state.range(0)), static_cast<kernel::Path>(state.range(1)),
                 state.range(2) != 0);
