@@ -11,7 +11,10 @@
 //      values are the same for the whole row (kept in registers), R rows are contiguous (a
 //      ring of the last p + 1 contracted rows, stored twice over).
 // Step 1 costs n_u / samples_u of step 2 per point. Every lane runs the same instructions in
-// the same order whatever the block or thread split, so results do not depend on either.
+// the same order whatever the block or thread split, so results do not depend on either, nor
+// on the path but for the baseline's unfused multiply-adds (AVX2 and AVX-512: the same bits).
+// The paths' speeds against the FMA peak and the divider (1 / w per point; 1 / sqrt with
+// normals), measured in one run: tests/bench/compare/bench_sisl.cpp, core/geom/README.md.
 #pragma once
 
 #include <cstddef>

@@ -77,7 +77,25 @@ inline int bits(const vm& m) {
 // 1 / w, and the lanes where w is zero (one bit each: the points that do not exist).
 inline int reciprocal(vd& r, const vd& w) {
     r = 1.0 / w;
+#if defined(__AVX512F__) && ISOPARM_KERNEL_LANES == 8
+    // Straight into a mask register (a vector comparison would be widened to a vector and
+    // tested back: two more operations on the busy ports).
+    return _mm512_cmp_pd_mask((__m512d)w, _mm512_setzero_pd(), _CMP_EQ_OQ);
+#else
     return bits(w == 0.0);
+#endif
+}
+
+// The lanes of a normal that is good: len2 > 1e-20 big2^2, and finite (len2 - len2 == 0 is
+// false for infinities and NaN: isfinite without a library call).
+inline int good_lanes(const vd& len2, const vd& big2) {
+    const vd least = 1e-20 * big2 * big2, zero = len2 - len2;
+#if defined(__AVX512F__) && ISOPARM_KERNEL_LANES == 8
+    return _mm512_cmp_pd_mask((__m512d)len2, (__m512d)least, _CMP_GT_OQ) &
+           _mm512_cmp_pd_mask((__m512d)zero, _mm512_setzero_pd(), _CMP_EQ_OQ);
+#else
+    return bits((len2 > least) & (zero == 0.0));
+#endif
 }
 
 // 1 / sqrt(x), the normals' length. (AVX-512F's vrsqrt14pd with two Newton steps was measured
@@ -113,12 +131,13 @@ inline void store_xyz4(double* out, const v4& x, const v4& y, const v4& z) {
 
 #if defined(__AVX512F__) && ISOPARM_KERNEL_LANES == 8
 // How 8 lanes of x, y, z (24 consecutive doubles, starting `offset` doubles into a 64-byte
-// line) fall into the 4 lines they touch: per line, the permute indices of x and y (0-7 x,
-// 8-15 y) and of z, the lanes z fills and the lanes that are the chunk's at all.
+// line) fall into the 4 lines they touch: per line, the indices of a permute of x and y (0-7
+// x, 8-15 y), then of one of that and z (0-7 kept, 8-15 z), and the lanes that are the
+// chunk's (lines 1 and 2 always all 8; line 0 the last 8 - offset, line 3 the first offset).
 struct StorePlan {
     alignas(64) long long xy[4][8];
     alignas(64) long long z[4][8];
-    unsigned char z_lanes[4], lanes[4];
+    __mmask16 first, last; // the lanes of lines 0 and 3 (16 bits: what _load_mask16 reads)
 };
 struct StorePlans {
     StorePlan p[8];
@@ -128,23 +147,79 @@ constexpr StorePlans make_store_plans() {
     for (int offset = 0; offset < 8; ++offset)
         for (int k = 0; k < 4; ++k)
             for (int l = 0; l < 8; ++l) {
-                const int q = 8 * k + l - offset; // the double's place among the 24
-                if (q < 0 || q >= 24) continue;
                 StorePlan& p = plans.p[offset];
-                p.lanes[k] |= static_cast<unsigned char>(1 << l);
-                if (q % 3 == 2) {
-                    p.z[k][l] = q / 3;
-                    p.z_lanes[k] |= static_cast<unsigned char>(1 << l);
-                } else {
+                const int q = 8 * k + l - offset; // the double's place among the 24
+                p.z[k][l] = l;
+                if (q < 0 || q >= 24) continue;
+                if (k == 0) p.first = static_cast<__mmask16>(p.first | 1 << l);
+                if (k == 3) p.last = static_cast<__mmask16>(p.last | 1 << l);
+                if (q % 3 == 2)
+                    p.z[k][l] = 8 + q / 3;
+                else
                     p.xy[k][l] = q / 3 + 8 * (q % 3);
-                }
             }
     return plans;
 }
 constexpr StorePlans store_plans = make_store_plans();
+
+// The plan of a row's chunks, chosen once per row: every chunk of a row starts at the same
+// offset in its line (24 doubles = 3 lines apart). Choosing it per chunk, from the address, had
+// cost two mask moves to port 5 per line (8 per chunk, as many as the permutes) on the port
+// that runs every 512-bit operation but the other half of the FMAs, and kept positions at
+// 1.15-1.25x AVX2. RowStore reloads indices and masks per chunk (loads are cheap: index
+// registers held across the normals' loop made it spill its accumulators); RowRegs holds them
+// in registers (positions: few live vectors, no mask move at all per chunk).
+struct RowStore {
+    const StorePlan* plan;
+};
+inline void row_store(RowStore& r, const double* at) {
+    r.plan = &store_plans.p[(reinterpret_cast<std::uintptr_t>(at) >> 3) & 7];
+}
+struct RowRegs {
+    __m512i xy[4], z[4];
+    __mmask8 first, last;
+};
+inline void row_store(RowRegs& r, const double* at) {
+    RowStore s;
+    row_store(s, at);
+    for (int k = 0; k < 4; ++k) {
+        r.xy[k] = _mm512_load_si512(s.plan->xy[k]);
+        r.z[k] = _mm512_load_si512(s.plan->z[k]);
+    }
+    r.first = static_cast<__mmask8>(s.plan->first);
+    r.last = static_cast<__mmask8>(s.plan->last);
+}
+// Lines 0 .. 3 of the 24 doubles (see store_xyz).
+inline __m512d store_line(const RowStore& r, int k, __m512d x, __m512d y, __m512d z) {
+    const __m512d t = _mm512_permutex2var_pd(x, _mm512_load_si512(r.plan->xy[k]), y);
+    return _mm512_permutex2var_pd(t, _mm512_load_si512(r.plan->z[k]), z);
+}
+inline __m512d store_line(const RowRegs& r, int k, __m512d x, __m512d y, __m512d z) {
+    return _mm512_permutex2var_pd(_mm512_permutex2var_pd(x, r.xy[k], y), r.z[k], z);
+}
+inline __mmask8 first_lanes(const RowStore& r) {
+    return static_cast<__mmask8>(_load_mask16(const_cast<__mmask16*>(&r.plan->first)));
+}
+inline __mmask8 last_lanes(const RowStore& r) {
+    return static_cast<__mmask8>(_load_mask16(const_cast<__mmask16*>(&r.plan->last)));
+}
+inline __mmask8 first_lanes(const RowRegs& r) {
+    return r.first;
+}
+inline __mmask8 last_lanes(const RowRegs& r) {
+    return r.last;
+}
+#else
+struct RowStore {};
+struct RowRegs {};
+inline void row_store(RowStore&, const double*) {}
+inline void row_store(RowRegs&, const double*) {}
 #endif
 
-inline void store_xyz(double* out, const vd& x, const vd& y, const vd& z) {
+// out: where a chunk of the row that `r` (a RowStore or RowRegs) was made for starts.
+template <class R>
+inline void store_xyz(double* out, [[maybe_unused]] const R& r, const vd& x, const vd& y,
+                      const vd& z) {
 #if ISOPARM_KERNEL_LANES == 2
     typedef double v2 __attribute__((vector_size(16)));
     const v2 o0 = __builtin_shufflevector(x, y, 0, 2), o1 = __builtin_shufflevector(z, x, 0, 3),
@@ -155,21 +230,17 @@ inline void store_xyz(double* out, const vd& x, const vd& y, const vd& z) {
 #elif ISOPARM_KERNEL_LANES == 4
     store_xyz4(out, x, y, z);
 #elif defined(__AVX512F__) && ISOPARM_KERNEL_LANES == 8
-    // Straight into the cache lines the 24 doubles cover: four aligned (masked where a line
-    // is shared with the neighbours) stores of two permutes each (x and y together, then z
-    // into its lanes), by the plan for the address's offset in its line. Unaligned 64-byte
-    // stores would each touch two lines: the output vectors (16 bytes past a line from
-    // malloc) made such split stores the largest cost of this path.
-    const std::uintptr_t at = reinterpret_cast<std::uintptr_t>(out);
-    const StorePlan& plan = store_plans.p[(at >> 3) & 7];
-    double* line = reinterpret_cast<double*>(at & ~std::uintptr_t{63});
+    // Straight into the cache lines the 24 doubles cover: four aligned stores (masked where a
+    // line is shared with the neighbours) of two permutes each (x and y together, then z into
+    // its lanes). Unaligned 64-byte stores would each touch two lines: the output vectors (16
+    // bytes past a line from malloc) made such split stores the largest cost of this path.
+    double* line =
+        reinterpret_cast<double*>(reinterpret_cast<std::uintptr_t>(out) & ~std::uintptr_t{63});
     const __m512d X = (__m512d)x, Y = (__m512d)y, Z = (__m512d)z;
-    for (int k = 0; k < 4; ++k) {
-        const __m512d t = _mm512_permutex2var_pd(X, _mm512_load_si512(plan.xy[k]), Y);
-        const __m512d o =
-            _mm512_mask_permutexvar_pd(t, plan.z_lanes[k], _mm512_load_si512(plan.z[k]), Z);
-        _mm512_mask_store_pd(line + 8 * k, plan.lanes[k], o);
-    }
+    _mm512_mask_store_pd(line, first_lanes(r), store_line(r, 0, X, Y, Z));
+    _mm512_store_pd(line + 8, store_line(r, 1, X, Y, Z));
+    _mm512_store_pd(line + 16, store_line(r, 2, X, Y, Z));
+    _mm512_mask_store_pd(line + 24, last_lanes(r), store_line(r, 3, X, Y, Z));
 #else
     for (int h = 0; h < W; h += 4) {
         v4 a, b, c;
@@ -189,10 +260,15 @@ struct Lanes {
     bool whole() const { return lo == 0 && hi == W - 1; }
 };
 
-inline void put_xyz(double* row, const Lanes& L, const vd& x, const vd& y, const vd& z) {
-    if (L.whole()) return store_xyz(row + 3L * L.j, x, y, z);
+// r: the row's (row_store of a chunk's start in row).
+template <class R>
+inline void put_xyz(double* row, const R& r, const Lanes& L, const vd& x, const vd& y,
+                    const vd& z) {
+    if (L.whole()) return store_xyz(row + 3L * L.j, r, x, y, z);
     double tmp[3 * W];
-    store_xyz(tmp, x, y, z);
+    RowStore t;
+    row_store(t, tmp);
+    store_xyz(tmp, t, x, y, z);
     for (int l = L.lo; l <= L.hi; ++l)
         for (int c = 0; c < 3; ++c) row[3L * (L.j + l) + c] = tmp[3 * l + c];
 }
@@ -294,12 +370,14 @@ template <int P1> long row_positions(const GridArgs& g, int i, int ch0, int nch,
     vd N[P1 > 0 ? P1 : 1];
     if constexpr (P1 > 0)
         for (int r = 0; r < P1; ++r) N[r] = splat(nu[r]);
+    RowRegs rs;
+    row_store(rs, out + 3L * ch0 * W);
     const auto finish = [&](int k, const vd& x, const vd& y, const vd& z, const vd& w) {
         vd inv;
         const int missing = reciprocal(inv, w);
         const int j = (ch0 + k) * W;
         const Lanes L{j, g.j0 > j ? g.j0 - j : 0, g.j1 < j + W - 1 ? g.j1 - j : W - 1};
-        put_xyz(out, L, x * inv, y * inv, z * inv);
+        put_xyz(out, rs, L, x * inv, y * inv, z * inv);
         if (missing == 0 && L.whole()) {
             __builtin_memset(st + (j - g.j0), 0, W);
         } else {
@@ -347,6 +425,9 @@ long row_normals(const GridArgs& g, int i, int ch0, int nch, const double* R, co
             N[r] = splat(nu[r]);
             dN[r] = splat(dnu[r]);
         }
+    RowStore rs, nrs;
+    row_store(rs, out + 3L * ch0 * W);
+    row_store(nrs, nout + 3L * ch0 * W);
     for (int k = 0; k < nch; ++k) {
         vd x = {}, y = {}, z = {}, w = {};
         vd xu = {}, yu = {}, zu = {}, wu = {};
@@ -387,15 +468,14 @@ long row_normals(const GridArgs& g, int i, int ch0, int nch, const double* R, co
         const vd len2 = nx * nx + ny * ny + nz * nz;
         const vd su2 = ux * ux + uy * uy + uz * uz, sv2 = vx * vx + vy * vy + vz * vz;
         const vd big2 = su2 > sv2 ? su2 : sv2;
-        // len2 - len2 == 0 is false for infinities and NaN (isfinite without a library call).
-        const vm good = (len2 > 1e-20 * big2 * big2) & (len2 - len2 == 0.0);
+        const int good = good_lanes(len2, big2);
         vd rn;
         reciprocal_sqrt(rn, len2);
         const int j = (ch0 + k) * W;
         const Lanes L{j, g.j0 > j ? g.j0 - j : 0, g.j1 < j + W - 1 ? g.j1 - j : W - 1};
-        put_xyz(out, L, sx, sy, sz);
-        put_xyz(nout, L, nx * rn, ny * rn, nz * rn);
-        const int degenerate = ~bits(good) & ((1 << W) - 1);
+        put_xyz(out, rs, L, sx, sy, sz);
+        put_xyz(nout, nrs, L, nx * rn, ny * rn, nz * rn);
+        const int degenerate = ~good & ((1 << W) - 1);
         if ((missing | degenerate) == 0 && L.whole()) {
             __builtin_memset(st + (j - g.j0), 0, W);
         } else {

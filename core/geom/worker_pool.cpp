@@ -70,18 +70,52 @@ bool WorkerPool::solo() const {
            solo_until_.load(std::memory_order_relaxed);
 }
 
-int WorkerPool::work(Job& job) {
-    for (int ran = 0;; ++ran) {
-        // Relaxed is enough: the tasks' inputs were published under m_ before the job was
-        // visible, and their results reach the caller through m_ (active_) or its own thread.
-        const int h = job.next.fetch_add(1, std::memory_order_relaxed);
-        if (h >= job.tasks) return ran;
+int WorkerPool::claim(const Job& job) {
+    // Relaxed is enough: the tasks' inputs were published under m_ before the job was visible,
+    // and their results reach the caller through completed_ (release / acquire) or its own
+    // thread.
+    const std::uint64_t tag = static_cast<std::uint64_t>(job.tag) << 32;
+    std::uint64_t c = claim_.load(std::memory_order_relaxed);
+    do {
+        if ((c & ~std::uint64_t{0xffffffff}) != tag ||
+            static_cast<int>(c & 0xffffffff) >= job.tasks)
+            return -1;
+    } while (!claim_.compare_exchange_weak(c, c + 1, std::memory_order_relaxed));
+    return static_cast<int>(c & 0xffffffff);
+}
+
+void WorkerPool::work(const Job& job, bool helper) {
+    // A helper's CPU time is read once per job (the clock is a system call): its last task is
+    // counted done only after that, so the caller, who waits for the count, reads all of it.
+    const double cpu0 = helper ? thread_cpu_seconds() : 0;
+    const auto count_done = [&] {
+        if (completed_.fetch_add(1, std::memory_order_acq_rel) + 1 == job.tasks && helper) {
+            const std::lock_guard lock(m_); // the caller may be blocked waiting for this one
+            idle_.notify_all();
+        }
+        // (Past the last one the job may be over: only the pool's own members are touched.)
+    };
+    for (bool holding = false;;) {
+        const int h = claim(job);
+        if (h < 0) {
+            if (!holding) return;
+            if (helper) {
+                const double cpu1 = thread_cpu_seconds();
+                // No clock: no verdict (more CPU than any wall time).
+                const double ns = cpu0 >= 0 && cpu1 >= 0 ? 1e9 * (cpu1 - cpu0) : 1e15;
+                helper_cpu_ns_.fetch_add(static_cast<long long>(ns), std::memory_order_relaxed);
+            }
+            return count_done();
+        }
+        if (holding) count_done();
+        holding = true;
+        if (failed_.load(std::memory_order_relaxed)) continue; // a task threw: skip the rest
         try {
             job.call(job.fn, handout_task(h, job.tasks, job.threads));
         } catch (...) {
             const std::lock_guard lock(m_);
-            if (!job.error) job.error = std::current_exception();
-            job.next.store(job.tasks, std::memory_order_relaxed); // hand out no more
+            if (!error_) error_ = std::current_exception();
+            failed_.store(true, std::memory_order_relaxed);
         }
     }
 }
@@ -105,18 +139,12 @@ void WorkerPool::helper_loop() {
         }
         if (stop_) return;
         seen = generation_;
-        Job* job = job_;
-        // A helper that comes after its job ended finds job_ null (or a later job's limit).
-        if (!job || job->joined >= job->max_helpers) continue;
-        ++job->joined;
-        ++active_;
+        // A helper that comes after its job ended finds no job (or a later job's limit).
+        if (!job_.call || job_.joined >= job_.max_helpers) continue;
+        ++job_.joined;
+        const Job job = job_;
         lock.unlock();
-        const double cpu0 = thread_cpu_seconds();
-        work(*job);
-        const double cpu1 = thread_cpu_seconds();
-        lock.lock();
-        job->helper_cpu += cpu0 >= 0 && cpu1 >= 0 ? cpu1 - cpu0 : 1e300; // no clock: no verdict
-        if (--active_ == 0) idle_.notify_all();
+        work(job, true);
     }
 }
 
@@ -134,11 +162,6 @@ void WorkerPool::run_impl(int tasks, int threads, void (*call)(void*, int), void
     const Clock::time_point start = Clock::now();
     const double cpu0 = thread_cpu_seconds();
     Job job;
-    job.call = call;
-    job.fn = fn;
-    job.tasks = tasks;
-    job.threads = threads;
-    job.max_helpers = threads - 1;
     bool sleeping = false;
     {
         const std::lock_guard lock(m_);
@@ -151,28 +174,39 @@ void WorkerPool::run_impl(int tasks, int threads, void (*call)(void*, int), void
                 break;
             }
         }
-        job_ = &job;
-        ++generation_;
+        const unsigned long generation = ++generation_;
+        job = Job{call, fn, tasks, threads, threads - 1, 0, static_cast<std::uint32_t>(generation)};
+        job_ = job;
+        completed_.store(0, std::memory_order_relaxed);
+        failed_.store(false, std::memory_order_relaxed);
+        helper_cpu_ns_.store(0, std::memory_order_relaxed);
+        error_ = nullptr;
+        claim_.store(static_cast<std::uint64_t>(job.tag) << 32, std::memory_order_relaxed);
         sleeping = sleepers_ > 0;
     }
     // Spinning helpers see generation_ change; only blocked ones need the (system) call.
     if (sleeping) wake_.notify_all();
-    work(job);
+    work(job, false);
     const double cpu1 = thread_cpu_seconds();
-    // Every task has been handed out; the helpers still inside the job finish theirs (for
-    // less than a task: spin first). The lock below then also orders their writes before ours.
-    spin_until([&] { return active_.load(std::memory_order_relaxed) == 0; });
+    // Every task has been claimed; tasks a helper still runs are waited for (spinning first:
+    // less than a task's time when the helper is running).
+    const auto all_done = [&] { return completed_.load(std::memory_order_acquire) == tasks; };
     std::exception_ptr error;
-    double helper_cpu = 0;
     {
-        std::unique_lock lock(m_);
-        idle_.wait(lock, [&] { return active_ == 0; });
-        job_ = nullptr;
-        error = job.error;
-        helper_cpu = job.helper_cpu;
+        std::unique_lock lock(m_, std::defer_lock);
+        if (!spin_until(all_done)) {
+            lock.lock();
+            idle_.wait(lock, all_done);
+        } else {
+            lock.lock();
+        }
+        job_ = Job{}; // helpers that wake from now on find nothing to join
+        error = error_;
+        error_ = nullptr;
     }
     // The guard: this call's wall time against its threads' CPU time in the tasks.
     const Clock::time_point done = Clock::now();
+    const double helper_cpu = 1e-9 * static_cast<double>(helper_cpu_ns_.load());
     if (cpu0 >= 0 && cpu1 >= 0) {
         const double wall = std::chrono::duration<double>(done - start).count();
         const double cpu = cpu1 - cpu0 + helper_cpu;

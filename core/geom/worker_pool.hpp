@@ -11,6 +11,7 @@
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <cstdint>
 #include <exception>
 #include <mutex>
 #include <thread>
@@ -37,7 +38,10 @@ public:
     // and returns when every call has returned (their writes are then visible to the caller).
     // Tasks are handed out one at a time, in the order of handout_task: threads that run at
     // the same time work on tasks far apart, not on neighbours (which typically write
-    // neighbouring memory, sharing cache lines at their ends). When the pool is already running
+    // neighbouring memory, sharing cache lines at their ends). Whoever is free claims the next
+    // task, so the caller takes over the tasks of a helper that is late or descheduled; it
+    // waits only for tasks a helper has claimed and not finished, and a helper that has not
+    // claimed one by the time the caller ran out does nothing. When the pool is already running
     // another caller's loop (another thread, or fn itself calling run), the tasks run on the
     // calling thread alone: nested and concurrent calls never wait for each other. The first
     // exception a task throws is rethrown here after the others finished.
@@ -73,32 +77,42 @@ public:
     static int handout_task(int h, int tasks, int threads);
 
 private:
+    // The loop being run: published under m_, copied by each helper as it joins.
     struct Job {
-        void (*call)(void*, int) = nullptr;
+        void (*call)(void*, int) = nullptr; // null: no loop to join
         void* fn = nullptr;
         int tasks = 0;
         int threads = 1; // handout_task's
         int max_helpers = 0;
-        int joined = 0; // guarded by m_
-        std::atomic<int> next{0};
-        std::exception_ptr error; // guarded by m_
-        double helper_cpu = 0;    // seconds of CPU the helpers spent in tasks, guarded by m_
+        int joined = 0;
+        std::uint32_t tag = 0; // the low bits of its generation, as in claim_
     };
     void run_impl(int tasks, int threads, void (*call)(void*, int), void* fn);
-    int work(Job& job); // returns the tasks this thread ran
+    // The next handout of the job, or -1 when none is left (or the job is over).
+    int claim(const Job& job);
+    // Claims and runs the job's tasks until none is left; helper: also counts its CPU time.
+    void work(const Job& job, bool helper);
     void helper_loop();
 
     std::mutex busy_; // held by the caller whose loop the helpers serve
     mutable std::mutex m_;
     std::condition_variable wake_, idle_;
     std::vector<std::thread> threads_; // guarded by m_
-    Job* job_ = nullptr;               // guarded by m_
+    Job job_;                          // guarded by m_
     // Written under m_; also read without it by spinning helpers and a spinning caller (who
     // then take m_ before they act on what they saw).
     std::atomic<unsigned long> generation_{0};
-    std::atomic<int> active_{0}; // helpers inside job_
     std::atomic<bool> stop_{false};
     int sleepers_ = 0; // helpers blocked on wake_, guarded by m_
+    // The handouts: the job's tag (high 32 bits) and the next handout (low 32). A thread claims
+    // a handout only while the tag is its job's, so a helper that joined but was descheduled
+    // before it claimed anything cannot take a later job's tasks, and the caller never waits
+    // for it: the caller waits for its tasks only (completed_), never for helpers as such.
+    std::atomic<std::uint64_t> claim_{0};
+    std::atomic<int> completed_{0};           // the job's tasks run (or skipped after a throw)
+    std::atomic<bool> failed_{false};         // a task threw: the others are skipped
+    std::atomic<long long> helper_cpu_ns_{0}; // the helpers' CPU time in the job's tasks
+    std::exception_ptr error_;                // the first exception, guarded by m_
     // The contention guard (guarded by busy_; solo_until_ also read by solo()).
     std::atomic<std::chrono::steady_clock::rep> solo_until_{0};
     std::chrono::steady_clock::duration solo_span_{0};

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include "core/geom/evaluate.hpp"
 #include "core/geom/grid_tessellator.hpp"
@@ -181,6 +182,33 @@ TEST_P(GridKernelPath, PointsThatDoNotExistAndLocalUpdates) {
         EXPECT_EQ(mesh.positions, full.positions);
         EXPECT_EQ(mesh.normals, full.normals);
     }
+}
+
+// The two FMA paths run the same multiply-adds in the same order (only the lanes per vector
+// and the output's interleaving differ): the same bits, which the protocol recordings
+// (tests/identity) rely on whichever of the two the dispatch takes.
+TEST(GridKernel, Avx2AndAvx512GiveTheSameBits) {
+    if (!kernel::supported(kernel::Path::avx2) || !kernel::supported(kernel::Path::avx512))
+        GTEST_SKIP() << "this CPU (or build) lacks AVX2 or AVX-512";
+    for (const Surface& s : surfaces())
+        for (bool normals : {false, true})
+            for (int threads : {1, 2}) {
+                // 77 columns: partial chunks at the ends; 67 x 256 as the benchmarks' rows.
+                for (auto [su, sv] : {std::pair{37, 77}, {67, 256}}) {
+                    const Grid a = run(s, su, sv, kernel::Path::avx2, false, normals, threads);
+                    const Grid b = run(s, su, sv, kernel::Path::avx512, false, normals, threads);
+                    ASSERT_EQ(a.positions.size(), b.positions.size());
+                    ASSERT_EQ(a.normals.size(), b.normals.size());
+                    const size_t bytes = a.positions.size() * sizeof(glm::dvec3);
+                    EXPECT_EQ(std::memcmp(a.positions.data(), b.positions.data(), bytes), 0)
+                        << s.degree_u << " " << s.degree_v << " " << su << "x" << sv;
+                    if (normals) {
+                        EXPECT_EQ(std::memcmp(a.normals.data(), b.normals.data(), bytes), 0)
+                            << s.degree_u << " " << s.degree_v << " " << su << "x" << sv;
+                    }
+                    EXPECT_EQ(a.exists, b.exists);
+                }
+            }
 }
 
 INSTANTIATE_TEST_SUITE_P(Paths, GridKernelPath,

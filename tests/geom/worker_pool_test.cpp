@@ -27,6 +27,25 @@ TEST(WorkerPool, EveryTaskRunsOnceAndHelpersAreReused) {
     EXPECT_EQ(pool.helpers(), 2); // never more than asked for, never restarted
 }
 
+// Jobs back to back, of every size from 1 to 17 tasks, some slow: a helper that is still
+// looking for work of one job must never take (or count) a task of the next.
+TEST(WorkerPool, BackToBackJobsNeverShareTasks) {
+    WorkerPool pool;
+    for (int round = 0; round < 2000; ++round) {
+        const int tasks = 1 + round % 17;
+        std::vector<std::atomic<int>> hits(tasks);
+        pool.run(tasks, 2 + round % 2, [&](int k) {
+            if (k == round % tasks && round % 5 == 0) { // busy (asleep, the guard would step in)
+                const auto end = std::chrono::steady_clock::now() + std::chrono::microseconds(50);
+                while (std::chrono::steady_clock::now() < end) {
+                }
+            }
+            hits[k].fetch_add(1);
+        });
+        for (int k = 0; k < tasks; ++k) ASSERT_EQ(hits[k].load(), 1) << round << " " << k;
+    }
+}
+
 TEST(WorkerPool, OneThreadRunsOnTheCaller) {
     WorkerPool pool;
     const auto me = std::this_thread::get_id();

@@ -20,6 +20,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "core/geom/evaluate.hpp"
@@ -28,6 +29,7 @@
 #include "core/geom/refine.hpp"
 #include "core/geom/worker_pool.hpp"
 #include "tests/bench/compare/peak_fma.hpp"
+#include "tests/bench/competing_load.hpp"
 #ifdef ISOPARM_BENCH_OCCT
 #include "tests/bench/compare/occt_grid.hpp"
 #endif
@@ -233,24 +235,49 @@ BENCHMARK(BM_GridNormals_occt)->Arg(8)->Arg(32)->Arg(128)->Unit(benchmark::kMill
 // other cases do not have), so no spinning helper runs beside the one-thread pass either.
 // Counters: the medians of each (microseconds) and the speed-ups of the medians. Arguments:
 // net size, kernel path, 0 positions / 1 positions + normals.
+// A 256 x 256 grid of one of the nets through one kernel path, timed pass by pass.
+class TimedGrid {
+public:
+    TimedGrid(int n, kernel::Path path, bool normals)
+        : s_(pair_for(n).ours), t_(s_, grid, grid), normals_(normals) {
+        supported_ = t_.use_kernel(path);
+    }
+    bool supported() const { return supported_; }
+    // Seconds of wall time for one pass with `threads`.
+    double pass(int threads) {
+        using Clock = std::chrono::steady_clock;
+        const auto start = Clock::now();
+        if (normals_)
+            t_.evaluate_vertices(s_, pos_, nrm_, exists_, threads);
+        else
+            t_.evaluate_positions(s_, pos_, exists_, threads);
+        benchmark::DoNotOptimize(pos_.data());
+        return std::chrono::duration<double>(Clock::now() - start).count();
+    }
+
+private:
+    const Surface& s_;
+    GridTessellator t_;
+    bool normals_, supported_ = false;
+    std::vector<glm::dvec3> pos_, nrm_;
+    std::vector<std::uint8_t> exists_;
+};
+
+double median(std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return v[v.size() / 2];
+}
+double mean(const std::vector<double>& v) {
+    double sum = 0;
+    for (double x : v) sum += x;
+    return v.empty() ? 0 : sum / static_cast<double>(v.size());
+}
+
 void BM_GridThreadsInterleaved_isoparm(benchmark::State& state) {
     using Clock = std::chrono::steady_clock;
-    const Surface& s = pair_for(static_cast<int>(state.range(0))).ours;
-    GridTessellator t(s, grid, grid);
-    if (!t.use_kernel(static_cast<kernel::Path>(state.range(1))))
-        return state.SkipWithError("kernel path not supported by this CPU");
-    const bool normals = state.range(2) != 0;
-    std::vector<glm::dvec3> pos, nrm;
-    std::vector<std::uint8_t> exists;
-    const auto pass = [&](int threads) {
-        const auto start = Clock::now();
-        if (normals)
-            t.evaluate_vertices(s, pos, nrm, exists, threads);
-        else
-            t.evaluate_positions(s, pos, exists, threads);
-        benchmark::DoNotOptimize(pos.data());
-        return std::chrono::duration<double>(Clock::now() - start).count();
-    };
+    TimedGrid g(static_cast<int>(state.range(0)), static_cast<kernel::Path>(state.range(1)),
+                state.range(2) != 0);
+    if (!g.supported()) return state.SkipWithError("kernel path not supported by this CPU");
     const auto let_helper_sleep = [] {
         const auto end = Clock::now() + 2 * WorkerPool::spin_time;
         while (Clock::now() < end) {
@@ -259,22 +286,72 @@ void BM_GridThreadsInterleaved_isoparm(benchmark::State& state) {
     std::vector<double> one, asleep, spinning;
     for (auto _ : state) {
         let_helper_sleep();
-        one.push_back(pass(1));
+        one.push_back(g.pass(1));
         let_helper_sleep();
-        asleep.push_back(pass(2));
-        spinning.push_back(pass(2));
+        asleep.push_back(g.pass(2));
+        spinning.push_back(g.pass(2));
         state.SetIterationTime(one.back() + asleep.back() + spinning.back());
     }
-    const auto median = [](std::vector<double>& v) {
-        std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-        return v[v.size() / 2];
-    };
     const double t1 = median(one), t2 = median(asleep), t2s = median(spinning);
     state.counters["1T_us"] = 1e6 * t1;
     state.counters["2T_asleep_us"] = 1e6 * t2;
     state.counters["2T_spinning_us"] = 1e6 * t2s;
     state.counters["speedup_asleep"] = t1 / t2;
     state.counters["speedup_spinning"] = t1 / t2s;
+}
+
+// AVX2 against AVX-512 on one thread, pass after pass (the paths' rows above run seconds
+// apart, and on a shared machine the speed of a core drifts by more than the paths differ).
+// Counters: the medians of each (microseconds) and the ratio of the medians (AVX2 time over
+// AVX-512 time: above 1, AVX-512 is faster). Arguments: net size, 0 positions / 1 normals.
+void BM_GridPathsInterleaved_isoparm(benchmark::State& state) {
+    const int n = static_cast<int>(state.range(0));
+    const bool normals = state.range(1) != 0;
+    TimedGrid avx2(n, kernel::Path::avx2, normals), avx512(n, kernel::Path::avx512, normals);
+    if (!avx2.supported() || !avx512.supported())
+        return state.SkipWithError("this CPU lacks AVX2 or AVX-512");
+    std::vector<double> a, b;
+    for (auto _ : state) {
+        a.push_back(avx2.pass(1));
+        b.push_back(avx512.pass(1));
+        state.SetIterationTime(a.back() + b.back());
+    }
+    state.counters["avx2_us"] = 1e6 * median(a);
+    state.counters["avx512_us"] = 1e6 * median(b);
+    state.counters["avx512_speedup"] = median(a) / median(b);
+}
+
+// One against two threads while other processes compete for every core: as many busy-spinning
+// processes as this process has cores (tests/bench/competing_load.hpp), started before the
+// first pass and stopped after the last. One- and two-thread passes alternate. Counters: the
+// medians and the means (which hold the rare slow pass: a helper descheduled inside a task)
+// of each, in microseconds, and the speed-ups of both: the pool's aim (dynamic handout, the
+// contention guard) is that two threads never lose to one here, a speed-up of at least 1.
+// Arguments: net size, kernel path, 0 positions / 1 positions + normals.
+void BM_GridThreadsContended_isoparm(benchmark::State& state) {
+    TimedGrid g(static_cast<int>(state.range(0)), static_cast<kernel::Path>(state.range(1)),
+                state.range(2) != 0);
+    if (!g.supported()) return state.SkipWithError("kernel path not supported by this CPU");
+    std::vector<double> one, two;
+    {
+        const isoparm::bench::CompetingLoad load(isoparm::bench::available_cores());
+        state.counters["competitors"] = load.running();
+        for (auto _ : state) {
+            one.push_back(g.pass(1));
+            two.push_back(g.pass(2));
+            state.SetIterationTime(one.back() + two.back());
+        }
+    }
+    // The guard's verdict outlives the load by up to WorkerPool::solo_max: wait it out, so
+    // that the benchmarks after this one find the pool as a quiet machine leaves it.
+    while (WorkerPool::shared().solo()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    const double t1 = median(one), t2 = median(two);
+    state.counters["1T_us"] = 1e6 * t1;
+    state.counters["2T_us"] = 1e6 * t2;
+    state.counters["speedup"] = t1 / t2;
+    state.counters["1T_mean_us"] = 1e6 * mean(one);
+    state.counters["2T_mean_us"] = 1e6 * mean(two);
+    state.counters["speedup_mean"] = mean(one) / mean(two);
 }
 
 // --- single points at random parameters ------------------------------------------------
@@ -361,6 +438,20 @@ void BM_PeakFma(benchmark::State& state) {
         benchmark::Counter(static_cast<double>(fmas), benchmark::Counter::kIsRate);
 }
 
+// The divider's ceiling. Arguments: register width in doubles, 0 c / x or 1 c / sqrt(x).
+void BM_PeakDivide(benchmark::State& state) {
+    const int width = static_cast<int>(state.range(0));
+    if (!isoparm::bench::peak_fma_supported(width))
+        return state.SkipWithError("this CPU lacks the instructions of this width");
+    double sink = 0;
+    std::uint64_t divisions = 0;
+    for (auto _ : state)
+        divisions += isoparm::bench::peak_divide_kernel(width, state.range(1) != 0, 1 << 16, &sink);
+    benchmark::DoNotOptimize(sink);
+    state.counters["div/s"] =
+        benchmark::Counter(static_cast<double>(divisions), benchmark::Counter::kIsRate);
+}
+
 constexpr kernel::Path paths[] = {kernel::Path::baseline, kernel::Path::avx2, kernel::Path::avx512};
 
 std::string grid_name(const std::string& kind, int n, kernel::Path path, int threads) {
@@ -371,6 +462,9 @@ std::string grid_name(const std::string& kind, int n, kernel::Path path, int thr
 
 void register_grid_benchmarks() {
     for (int width : {4, 8}) benchmark::RegisterBenchmark("BM_PeakFma", BM_PeakFma)->Arg(width);
+    for (int width : {4, 8})
+        for (int with_sqrt : {0, 1})
+            benchmark::RegisterBenchmark("BM_PeakDivide", BM_PeakDivide)->Args({width, with_sqrt});
     for (auto fn : {BM_GridPositions_isoparm, BM_GridNormals_isoparm}) {
         const char* name =
             fn == BM_GridPositions_isoparm ? "BM_GridPositions_isoparm" : "BM_GridNormals_isoparm";
@@ -396,6 +490,23 @@ void register_grid_benchmarks() {
                         ->Args({n, static_cast<int>(path), normals})
                         ->UseManualTime()
                         ->Unit(benchmark::kMillisecond);
+    for (int n : {8, 32, 128})
+        for (int normals : {0, 1})
+            benchmark::RegisterBenchmark("BM_GridPathsInterleaved_isoparm",
+                                         BM_GridPathsInterleaved_isoparm)
+                ->Args({n, normals})
+                ->UseManualTime()
+                ->Unit(benchmark::kMillisecond);
+    // Under load only the path the dispatch chooses (the one users get), for the nets that
+    // matter; a second of passes each, so that several of the guard's retries fall inside.
+    for (int n : {32, 128})
+        for (int normals : {0, 1})
+            benchmark::RegisterBenchmark("BM_GridThreadsContended_isoparm",
+                                         BM_GridThreadsContended_isoparm)
+                ->Args({n, static_cast<int>(kernel::active_path()), normals})
+                ->UseManualTime()
+                ->MinTime(1.0)
+                ->Unit(benchmark::kMillisecond);
 }
 
 BENCHMARK(BM_GridPositions_sisl_pointwise)
@@ -507,12 +618,28 @@ int main(int argc, char** argv) {
                 peak4 * 1e-9,
                 peak8 > 0 ? (std::to_string(peak8 * 1e-9) + " GFLOP/s").c_str()
                           : "not measurable (this CPU lacks AVX-512)");
+    // The divider's ceiling in points per second: a point takes one division 1 / w, and with
+    // normals also 1 / sqrt(|n|^2) (the kernel, grid_kernel.inl). Correctly rounded (the FMA
+    // paths give the same bits), so no FMA can take the divider's place.
+    const auto divider_ceiling = [&](int width, bool normals) {
+        const std::string w = std::to_string(width);
+        const double div = collector.counters["BM_PeakDivide/" + w + "/0:div/s"],
+                     sqrt_div = collector.counters["BM_PeakDivide/" + w + "/1:div/s"];
+        if (div <= 0 || sqrt_div <= 0) return 0.0;
+        return normals ? 1 / (1 / div + 1 / sqrt_div) : div;
+    };
+    std::printf("Divider (one core): 1/x %.3g and 1/sqrt(x) %.3g per second in AVX2 registers, "
+                "%.3g and %.3g in AVX-512\n",
+                collector.counters["BM_PeakDivide/4/0:div/s"],
+                collector.counters["BM_PeakDivide/4/1:div/s"],
+                collector.counters["BM_PeakDivide/8/0:div/s"],
+                collector.counters["BM_PeakDivide/8/1:div/s"]);
     std::printf("\nSummary (medians; points per second = %d x %d grid points / time per grid; "
                 "kernel chosen here: %s)\n",
                 grid, grid, kernel::name(kernel::active_path()));
-    std::printf("  %-9s %-10s %-14s %11s %11s %11s %11s %8s %8s %8s %9s %8s\n", "net", "case",
+    std::printf("  %-9s %-10s %-14s %11s %11s %11s %11s %8s %8s %8s %9s %8s %7s\n", "net", "case",
                 "path/threads", "isoparm", "SISL s1506", "SISL point", "OCCT", "vs 1506",
-                "vs point", "vs OCCT", "flops/pt", "of peak");
+                "vs point", "vs OCCT", "flops/pt", "of peak", "of div");
     for (int n : {8, 32, 128}) {
         const Surface& s = pair_for(n).ours;
         for (const char* kind : {"Positions", "Normals"}) {
@@ -547,17 +674,47 @@ int main(int argc, char** argv) {
                     const double ours = grid * grid * rate(grid_name(kind, n, path, threads));
                     if (ours == 0) continue;
                     const double peak = (path == kernel::Path::avx512 ? peak8 : peak4) * threads;
+                    const double divider =
+                        divider_ceiling(path == kernel::Path::avx512 ? 8 : 4, normals) * threads;
                     std::printf(
                         "  %3dx%-5d %-10s %-14s %11.4g %11.4g %11.4g %11.4g %7.1fx %7.1fx "
-                        "%7.1fx %9.0f %7.1f%%\n",
+                        "%7.1fx %9.0f %7.1f%% %6.0f%%\n",
                         n, n, kind,
                         (std::string(kernel::name(path)) + "/" + std::to_string(threads)).c_str(),
                         ours, s1506, point, occt, ratio(ours, s1506), ratio(ours, point),
-                        ratio(ours, occt), flops, peak > 0 ? 100 * ours * flops / peak : 0);
+                        ratio(ours, occt), flops, peak > 0 ? 100 * ours * flops / peak : 0,
+                        divider > 0 ? 100 * ours / divider : 0);
                 }
             }
         }
     }
+    if (kernel::supported(kernel::Path::avx512) && kernel::supported(kernel::Path::avx2)) {
+        std::printf("  AVX-512 against AVX2 (this run; the dispatch takes %s):",
+                    kernel::name(kernel::active_path()));
+        for (int n : {8, 32, 128})
+            for (const char* kind : {"Positions", "Normals"})
+                for (int threads : {1, 2}) {
+                    const double a = rate(grid_name(kind, n, kernel::Path::avx512, threads)),
+                                 b = rate(grid_name(kind, n, kernel::Path::avx2, threads));
+                    if (a > 0 && b > 0)
+                        std::printf("%s %d %s/%d %.2fx",
+                                    threads == 1 && kind[0] == 'P' ? "\n   " : ",", n, kind,
+                                    threads, a / b);
+                }
+        std::printf("\n");
+    }
+    for (int n : {8, 32, 128})
+        for (int normals : {0, 1}) {
+            const std::string key = "BM_GridPathsInterleaved_isoparm/" + std::to_string(n) + "/" +
+                                    std::to_string(normals) + "/manual_time:";
+            const auto it = collector.counters.find(key + "avx2_us");
+            if (it == collector.counters.end()) continue;
+            std::printf("  %3dx%-5d %-10s AVX2 %8.1f us, AVX-512 %8.1f us: AVX-512 %.2fx "
+                        "(one thread, interleaved pass by pass)\n",
+                        n, n, normals ? "Normals" : "Positions", it->second,
+                        collector.counters[key + "avx512_us"],
+                        collector.counters[key + "avx512_speedup"]);
+        }
     const double sp_ours = rate("BM_SinglePoint_isoparm"), sp_sisl = rate("BM_SinglePoint_sisl");
     if (sp_ours > 0)
         std::printf("  %-28s %14.4g %14.4g %9.1fx\n", "single point (random)", sp_ours, sp_sisl,
@@ -590,6 +747,29 @@ int main(int argc, char** argv) {
                             collector.counters[key + "speedup_asleep"],
                             collector.counters[key + "speedup_spinning"]);
             }
+    std::printf(
+        "\nOne against two threads under a competing load (as many busy-spinning processes as "
+        "cores, alternating passes; microseconds per %d x %d grid):\n",
+        grid, grid);
+    std::printf("  %-9s %-10s %-9s %11s %9s %9s %11s %9s %9s %8s\n", "net", "case", "path",
+                "competitors", "1T median", "2T median", "speedup", "1T mean", "2T mean",
+                "speedup");
+    for (int n : {32, 128})
+        for (int normals : {0, 1}) {
+            const kernel::Path path = kernel::active_path();
+            const std::string key = "BM_GridThreadsContended_isoparm/" + std::to_string(n) + "/" +
+                                    std::to_string(static_cast<int>(path)) + "/" +
+                                    std::to_string(normals) + "/min_time:1.000/manual_time:";
+            const auto it = collector.counters.find(key + "1T_us");
+            if (it == collector.counters.end()) continue;
+            std::printf("  %3dx%-5d %-10s %-9s %11.0f %9.1f %9.1f %10.2fx %9.1f %9.1f %7.2fx\n", n,
+                        n, normals ? "Normals" : "Positions", kernel::name(path),
+                        collector.counters[key + "competitors"], it->second,
+                        collector.counters[key + "2T_us"], collector.counters[key + "speedup"],
+                        collector.counters[key + "1T_mean_us"],
+                        collector.counters[key + "2T_mean_us"],
+                        collector.counters[key + "speedup_mean"]);
+        }
     std::printf("\nAgreement with SISL (same parameters, s1421 point by point) and OCCT:\n");
     for (int n : {8, 32, 128}) print_agreement(n);
     benchmark::Shutdown();

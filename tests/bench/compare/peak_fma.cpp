@@ -1,7 +1,7 @@
-// Peak FMA kernels, one per register width, compiled for their ISA by target attributes and
-// run only where the CPU has it. Accumulators are separate variables (not an array, which the
-// compiler may keep in memory and so measure store forwarding instead): 12 independent chains
-// cover FMA latency 4-5 cycles x 2 FMA pipes on current x86 cores.
+// Peak FMA kernels and divider kernels, one per register width, compiled for their ISA by
+// target attributes and run only where the CPU has it. Accumulators are separate variables (not an
+// array, which the compiler may keep in memory and so measure store forwarding instead): 12
+// independent chains cover FMA latency 4-5 cycles x 2 FMA pipes on current x86 cores.
 #include "tests/bench/compare/peak_fma.hpp"
 
 #if defined(__x86_64__)
@@ -48,6 +48,64 @@ __attribute__((target("avx512f"))) static std::uint64_t peak8(std::uint64_t roun
     ISOPARM_PEAK_BODY(__m512d, _mm512_fmadd_pd, _mm512_set1_pd, _mm512_add_pd, _mm512_storeu_pd, 8)
 }
 
+// The divider: 8 independent chains of x = c / x (or c / sqrt(x)), enough to keep a divider
+// of 4-16 cycles' throughput and 13-40 cycles' latency busy. c is slightly above 1 and the
+// chains start in [1, 2): the values stay normal numbers (no slow paths).
+#define ISOPARM_DIVIDE_BODY(V, DIV, SQRT, SET1, ADD, STORE, W)                                     \
+    V a0 = SET1(1.10), a1 = SET1(1.21), a2 = SET1(1.32), a3 = SET1(1.43), a4 = SET1(1.54),         \
+      a5 = SET1(1.65), a6 = SET1(1.76), a7 = SET1(1.87);                                           \
+    const V c = SET1(1.0000001);                                                                   \
+    if (with_sqrt) {                                                                               \
+        for (std::uint64_t r = 0; r < rounds; ++r) {                                               \
+            a0 = DIV(c, SQRT(a0));                                                                 \
+            a1 = DIV(c, SQRT(a1));                                                                 \
+            a2 = DIV(c, SQRT(a2));                                                                 \
+            a3 = DIV(c, SQRT(a3));                                                                 \
+            a4 = DIV(c, SQRT(a4));                                                                 \
+            a5 = DIV(c, SQRT(a5));                                                                 \
+            a6 = DIV(c, SQRT(a6));                                                                 \
+            a7 = DIV(c, SQRT(a7));                                                                 \
+        }                                                                                          \
+    } else {                                                                                       \
+        for (std::uint64_t r = 0; r < rounds; ++r) {                                               \
+            a0 = DIV(c, a0);                                                                       \
+            a1 = DIV(c, a1);                                                                       \
+            a2 = DIV(c, a2);                                                                       \
+            a3 = DIV(c, a3);                                                                       \
+            a4 = DIV(c, a4);                                                                       \
+            a5 = DIV(c, a5);                                                                       \
+            a6 = DIV(c, a6);                                                                       \
+            a7 = DIV(c, a7);                                                                       \
+        }                                                                                          \
+    }                                                                                              \
+    V t = ADD(ADD(ADD(a0, a1), ADD(a2, a3)), ADD(ADD(a4, a5), ADD(a6, a7)));                       \
+    double out[W];                                                                                 \
+    STORE(out, t);                                                                                 \
+    double s = 0;                                                                                  \
+    for (double x : out) s += x;                                                                   \
+    *sink = s;                                                                                     \
+    return rounds * 8 * W;
+
+__attribute__((target("avx2"))) static std::uint64_t divide4(std::uint64_t rounds, bool with_sqrt,
+                                                             double* sink) {
+    ISOPARM_DIVIDE_BODY(__m256d, _mm256_div_pd, _mm256_sqrt_pd, _mm256_set1_pd, _mm256_add_pd,
+                        _mm256_storeu_pd, 4)
+}
+
+// The masked square root: GCC 12 warns about _mm512_sqrt_pd's undefined pass-through operand.
+__attribute__((target("avx512f"))) static inline __m512d sqrt8(__m512d x) {
+    return _mm512_mask_sqrt_pd(x, 0xFF, x);
+}
+
+__attribute__((target("avx512f"))) static std::uint64_t divide8(std::uint64_t rounds,
+                                                                bool with_sqrt, double* sink){
+    ISOPARM_DIVIDE_BODY(__m512d, _mm512_div_pd, sqrt8, _mm512_set1_pd, _mm512_add_pd,
+                        _mm512_storeu_pd, 8)}
+
+std::uint64_t peak_divide_kernel(int width, bool with_sqrt, std::uint64_t rounds, double* sink) {
+    return width == 8 ? divide8(rounds, with_sqrt, sink) : divide4(rounds, with_sqrt, sink);
+}
+
 bool peak_fma_supported(int width) {
     if (width == 4) return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
     if (width == 8) return __builtin_cpu_supports("avx512f");
@@ -64,6 +122,10 @@ bool peak_fma_supported(int) {
     return false;
 }
 std::uint64_t peak_fma_kernel(int, std::uint64_t, double* sink) {
+    *sink = 0;
+    return 0;
+}
+std::uint64_t peak_divide_kernel(int, bool, std::uint64_t, double* sink) {
     *sink = 0;
     return 0;
 }

@@ -1,6 +1,7 @@
 // The machine's ceiling: the peak double-precision multiply-add rate of one core, measured
 // the way the roofline model defines it (a kernel of independent FMAs in the widest vector
-// registers the CPU has, enough of them in flight to cover latency x throughput).
+// registers the CPU has, enough of them in flight to cover latency x throughput), and the
+// divider's: correctly rounded divisions (and square roots), which no FMA can stand in for.
 #pragma once
 
 #include <cstdint>
@@ -13,5 +14,10 @@ bool peak_fma_supported(int width);
 // Runs `rounds` rounds of independent fused multiply-adds in `width`-double registers and
 // returns how many scalar multiply-adds were done (2 flops each).
 std::uint64_t peak_fma_kernel(int width, std::uint64_t rounds, double* sink);
+
+// Runs `rounds` rounds of independent divisions c / x (with_sqrt: c / sqrt(x)) in
+// `width`-double registers (supported as peak_fma_supported) and returns how many scalar
+// divisions were done.
+std::uint64_t peak_divide_kernel(int width, bool with_sqrt, std::uint64_t rounds, double* sink);
 
 } // namespace isoparm::bench
