@@ -144,9 +144,13 @@ int run_window(const std::string& scene, const std::string& lesson, int autosave
     {
         // Multisampling costs ~5x on a CPU rasteriser: the window stays responsive without it
         // (lines and points are antialiased in their shaders anyway).
-        const int msaa = ui::software_renderer() ? 0 : 4;
-        ui::Workstation ws(
-            {/*headless=*/false, std::max(xs, ys), ui::ViewMode::workstation, msaa, request_frame});
+        const bool software = ui::software_renderer();
+        const int msaa = software ? 0 : 4;
+        ui::WorkstationOptions options{/*headless=*/false, std::max(xs, ys),
+                                       ui::ViewMode::workstation, msaa, request_frame};
+        // There each unchanged panel would be set up and filled again every frame.
+        options.retained = software;
+        ui::Workstation ws(options);
         ui::AppContext& ctx = ws.context();
         if (!ws.renderer_error().empty()) {
             std::cerr << "isoparm: OpenGL shaders failed: " << ws.renderer_error() << "\n";

@@ -18,6 +18,7 @@
 #include "ui/panels/tab_strip.hpp"
 #include "ui/render/gl.hpp"
 #include "ui/render/renderer.hpp"
+#include "ui/retained_frame.hpp"
 #include "ui/surface_actions.hpp"
 #include "ui/theme.hpp"
 #include "ui/ui_report.hpp"
@@ -189,6 +190,7 @@ Workstation::Workstation(const WorkstationOptions& options) {
     triangles_ = std::make_unique<TriangleMeshes>();
     surfaces_ = std::make_unique<SurfaceMeshes>();
     ctx_.implicit_meshes = implicit_.get();
+    if (options.retained && !options.transparent) retained_ = std::make_unique<RetainedFrame>();
 }
 
 Workstation::~Workstation() {
@@ -316,7 +318,8 @@ void Workstation::frame(unsigned target_framebuffer) {
     // Theme and font atlas follow the scale (HiDPI x presentation); rebuilt between frames.
     ui.presentation_factor = io.DisplaySize.y < 800 ? 1.25f : 1.5f;
     const float scale = ui.scale();
-    if (scale != ui.font_scale_built || ui.presentation != presentation_built_) {
+    const bool restyled = scale != ui.font_scale_built || ui.presentation != presentation_built_;
+    if (restyled) {
         apply_theme(ui.presentation, scale);
         if (std::string note = rebuild_fonts(scale); !note.empty()) ui.status = std::move(note);
         ui.font_scale_built = scale;
@@ -405,27 +408,44 @@ void Workstation::frame(unsigned target_framebuffer) {
     // The 3D view into its texture, with the camera and document of this very frame.
     if (view3d_drawn) render_view3d(scale);
 
-    glBindFramebuffer(GL_FRAMEBUFFER, target_framebuffer);
-    const int fb_w = static_cast<int>(io.DisplaySize.x * io.DisplayFramebufferScale.x);
-    const int fb_h = static_cast<int>(io.DisplaySize.y * io.DisplayFramebufferScale.y);
-    glViewport(0, 0, fb_w, fb_h);
-    const ImVec4 bg = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg); // the panels' background
-    if (transparent_)
-        glClearColor(0, 0, 0, 0);
-    else
-        glClearColor(bg.x, bg.y, bg.z, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    // The 3D picture by a framebuffer copy (OpenGL rows run bottom-up), then ImGui on top.
-    if (view3d_drawn) {
-        const ImVec2 fb_scale = io.DisplayFramebufferScale;
-        const int view_x = static_cast<int>(std::lround(ui.view_rect.x * fb_scale.x));
-        const int view_bottom =
-            static_cast<int>(std::lround((ui.view_rect.y + ui.view_rect.h) * fb_scale.y));
-        renderer_->copy_to(target_framebuffer, view_x, fb_h - view_bottom);
-    }
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    draw_frame(target_framebuffer, view3d_drawn, restyled);
     // The document as it is again: saving, autosave and the next frame's commands see it.
     animation_end_frame(ctx_);
+}
+
+// The 3D picture, then ImGui's drawing on top, into the target (through the kept frame when
+// there is one).
+void Workstation::draw_frame(unsigned target_framebuffer, bool view3d_drawn, bool full) {
+    UiState& ui = ctx_.ui;
+    const ImGuiIO& io = ImGui::GetIO();
+    const int fb_w = static_cast<int>(io.DisplaySize.x * io.DisplayFramebufferScale.x);
+    const int fb_h = static_cast<int>(io.DisplaySize.y * io.DisplayFramebufferScale.y);
+    const ImVec4 bg = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg); // the panels' background
+    const glm::vec4 clear = transparent_ ? glm::vec4(0) : glm::vec4(bg.x, bg.y, bg.z, 1.0f);
+    // The 3D picture by a framebuffer copy (OpenGL rows run bottom-up).
+    const ImVec2 fb_scale = io.DisplayFramebufferScale;
+    const int view_x = static_cast<int>(std::lround(ui.view_rect.x * fb_scale.x));
+    const int view_bottom =
+        static_cast<int>(std::lround((ui.view_rect.y + ui.view_rect.h) * fb_scale.y));
+    if (retained_) {
+        Underlay under;
+        if (view3d_drawn) {
+            under.rect = {view_x, view_bottom - ui.view_fb_height, view_x + ui.view_fb_width,
+                          view_bottom};
+            under.changed = renderer_->stats().redrawn;
+            under.copy = [&](GLuint fbo) { renderer_->copy_to(fbo, view_x, fb_h - view_bottom); };
+        }
+        redrawn_pixels_ =
+            retained_->draw(*ImGui::GetDrawData(), target_framebuffer, clear, under, full);
+        return;
+    }
+    redrawn_pixels_ = static_cast<long>(fb_w) * fb_h;
+    glBindFramebuffer(GL_FRAMEBUFFER, target_framebuffer);
+    glViewport(0, 0, fb_w, fb_h);
+    glClearColor(clear.r, clear.g, clear.b, clear.a);
+    glClear(GL_COLOR_BUFFER_BIT);
+    if (view3d_drawn) renderer_->copy_to(target_framebuffer, view_x, fb_h - view_bottom);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 
 // A frame of a gesture: on a CPU rasteriser, while the mouse drags (in any panel: a point, the

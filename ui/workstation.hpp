@@ -19,6 +19,7 @@ class Renderer;
 class ImplicitMeshes;
 class TriangleMeshes;
 class SurfaceMeshes;
+class RetainedFrame;
 
 struct WorkstationOptions {
     bool headless = false;   // no timings, no settings file, deterministic
@@ -31,6 +32,10 @@ struct WorkstationOptions {
     // Pictures with a transparent background (File > Export picture, `isoparm render
     // --transparent`): the frame is cleared to alpha 0 and everything blends onto that.
     bool transparent = false;
+    // Keep the frame between frames and draw again only what changed (ui/retained_frame.hpp):
+    // for a CPU rasteriser's window, where each panel's triangles cost their set-up and fill
+    // every frame. Off for pictures (nothing to keep) and with `transparent`.
+    bool retained = false;
 };
 
 // Gesture frames on a CPU rasteriser (llvmpipe): while the mouse drags (a point, the indicator,
@@ -67,12 +72,15 @@ public:
     // export's, may have taken its place).
     void make_current();
     GestureFrames& gesture() { return gesture_; }
+    // The pixels of the last frame drawn again (WorkstationOptions::retained; else all).
+    long redrawn_pixels() const { return redrawn_pixels_; }
 
 private:
     void layout_panels();
     void render_view3d(float scale); // the scene into the renderer's texture
     bool gesture_frame();            // this frame is drawn coarse (GestureFrames)
     void splitters();
+    void draw_frame(unsigned target_framebuffer, bool view3d_drawn, bool full);
     AppContext ctx_;
     ImGuiContext* imgui_ = nullptr;
     bool transparent_ = false;
@@ -84,6 +92,8 @@ private:
     std::unique_ptr<TriangleMeshes> triangles_;
     std::unique_ptr<SurfaceMeshes>
         surfaces_; // the surfaces' display meshes (the renderer uploads them)
+    std::unique_ptr<RetainedFrame> retained_; // WorkstationOptions::retained
+    long redrawn_pixels_ = 0;
     bool presentation_built_ = false;
     bool deboor_was_on_ = false; // to bring the de Boor tab forward when it is switched on
     // The indicator and current object of the last frame (subpatch activation); NaN at first,

@@ -44,6 +44,21 @@ TEST(MeshData, SameSurfaceSeesEveryChange) {
     EXPECT_FALSE(same_surface(a, b));
 }
 
+TEST(MeshData, SameBasisIgnoresOnlyThePointsPositions) {
+    const geom::Surface a = doc::make_planar_grid(4, 4, 2, 2, geom::SplineType::nurbs);
+    geom::Surface b = a;
+    b.point(2, 1).z = 0.5; // a point's drag: R_ij stays
+    EXPECT_TRUE(same_basis(a, b));
+    b.weight(1, 1) = 2;
+    EXPECT_FALSE(same_basis(a, b));
+    b = a;
+    b.knots_v[3] = std::nextafter(b.knots_v[3], 0.0);
+    EXPECT_FALSE(same_basis(a, b));
+    b = a;
+    b.type = geom::SplineType::bspline;
+    EXPECT_FALSE(same_basis(a, b));
+}
+
 TEST(MeshData, WireIndicesCoverBoundariesAndSkipMissingVertices) {
     // 3 x 3 grid, every line: 3 rows * 2 + 3 columns * 2 = 12 segments.
     EXPECT_EQ(wire_indices(3, 3, {}, 100).size(), 24u);

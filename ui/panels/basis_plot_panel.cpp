@@ -29,11 +29,12 @@ namespace {
 
 constexpr int heat_resolution = 40;
 
-// Recomputes the heat map only when the surface or the point changed.
+// Recomputes the heat map only when the basis or the point changed (not while a point is
+// dragged: R_ij does not depend on the points' positions).
 const HeatMapCache& heat_map(AppContext& ctx, const geom::Surface& s, int i, int j) {
     HeatMapCache& h = ctx.ui.heat;
     if (h.valid && h.i == i && h.j == j && h.resolution == heat_resolution &&
-        same_surface(h.surface, s))
+        same_basis(h.surface, s))
         return h;
     const int r = heat_resolution;
     h.values.assign(static_cast<std::size_t>(r * r), 0.f);

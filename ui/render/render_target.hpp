@@ -17,7 +17,12 @@ public:
     // ImGui::Image recorded earlier in the frame stays valid.
     void resize(int width, int height);
     void bind_for_drawing() const; // the multisampled framebuffer
-    void resolve() const;          // multisampled -> texture
+    // Without multisampling the depth is a texture (0 otherwise): the overlay then reads it in
+    // one pass, drawn into the colour alone (bind_colour_only), instead of a pass for its
+    // hidden parts and another for its visible ones.
+    GLuint depth_texture() const { return depth_texture_; }
+    void bind_colour_only() const;
+    void resolve() const; // multisampled -> texture
     // The texture's picture into framebuffer `fbo` with its lower-left corner at (x, y), a
     // plain copy; leaves `fbo` bound.
     void copy_to(GLuint fbo, int x, int y) const;
@@ -28,6 +33,7 @@ public:
 private:
     GLuint msaa_fbo_ = 0, msaa_color_ = 0, msaa_depth_ = 0;
     GLuint resolve_fbo_ = 0, texture_ = 0;
+    GLuint depth_texture_ = 0, colour_only_fbo_ = 0;
     int width_ = 0, height_ = 0, samples_ = 0;
 };
 

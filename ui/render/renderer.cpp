@@ -132,6 +132,7 @@ struct Renderer::Impl {
     GlProgram mesh, line, point;
     std::unordered_map<std::uint64_t, MeshEntry> meshes;
     StreamBuffer stream;
+    bool one_pass_overlay = true; // Renderer::set_one_pass_overlay
 
     explicit Impl(int samples)
         : target(samples), mesh(shaders::mesh_vs, shaders::mesh_fs),
@@ -247,9 +248,11 @@ struct Renderer::Impl {
     void draw_wires(const std::vector<SurfaceDraw>& surfaces,
                     const std::vector<MeshEntry*>& entries, const glm::mat4& vp,
                     const float (&viewport)[2]);
-    GLint draw_overlay_lines(const Overlay& overlay);
+    GLint draw_overlay_lines(const Overlay& overlay, bool one_pass);
     void draw_points(const Overlay& overlay, GLint point_base, const glm::mat4& vp,
-                     const float (&viewport)[2]);
+                     const float (&viewport)[2], bool one_pass);
+    bool begin_one_pass_overlay();
+    void end_one_pass_overlay();
 
     void prune() {
         for (auto it = meshes.begin(); it != meshes.end();) {
@@ -281,6 +284,11 @@ Renderer::~Renderer() = default;
 
 void Renderer::copy_to(unsigned fbo, int x, int y) const {
     impl_->target.copy_to(fbo, x, y);
+}
+
+void Renderer::set_one_pass_overlay(bool on) {
+    impl_->one_pass_overlay = on;
+    impl_->last.valid = false;
 }
 
 unsigned Renderer::texture() const {
@@ -342,9 +350,34 @@ void Renderer::Impl::draw_wires(const std::vector<SurfaceDraw>& surfaces,
     }
 }
 
-// Pass 3: overlay lines; hidden parts first (faint), then the visible parts. Uploads the
-// points too; returns where they start in the stream.
-GLint Renderer::Impl::draw_overlay_lines(const Overlay& overlay) {
+// Where the scene's depth is a texture (no multisampling), the overlay is drawn in one pass
+// into the colour alone, each fragment comparing itself with the depth there (shaders.cpp,
+// ISOPARM_OVERLAY_DEPTH): on a CPU rasteriser every overlay triangle is set up and shaded once
+// instead of twice. False where the depth test's two passes are drawn instead.
+bool Renderer::Impl::begin_one_pass_overlay() {
+    if (!one_pass_overlay || !target.depth_texture()) return false;
+    target.bind_colour_only();
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, target.depth_texture());
+    for (const GlProgram* p : {&line, &point}) {
+        glUseProgram(p->id());
+        glUniform1i(p->uniform("u_scene_depth"), 0);
+    }
+    return true;
+}
+
+void Renderer::Impl::end_one_pass_overlay() {
+    glBindTexture(GL_TEXTURE_2D, 0); // never sampled while it is the depth attachment
+    for (const GlProgram* p : {&line, &point}) {
+        glUseProgram(p->id());
+        glUniform1i(p->uniform("u_depth_mode"), 0);
+    }
+    target.bind_for_drawing();
+}
+
+// Pass 3: overlay lines; hidden parts first (faint), then the visible parts (or both in one
+// pass). Uploads the points too; returns where they start in the stream.
+GLint Renderer::Impl::draw_overlay_lines(const Overlay& overlay, bool one_pass) {
     std::vector<OverlayVertex> all;
     std::vector<std::pair<GLint, GLsizei>> ranges;
     for (const LineBatch& b : overlay.lines) {
@@ -364,6 +397,13 @@ GLint Renderer::Impl::draw_overlay_lines(const Overlay& overlay) {
         if (b.vertices.empty()) continue;
         glUniform1f(line.uniform("u_width"), b.width_px);
         stream.segments_from(ranges[k].first);
+        if (one_pass) {
+            glUniform1i(line.uniform("u_depth_mode"), b.faint_when_hidden ? 1 : 2);
+            glUniform1f(line.uniform("u_hidden_alpha"), 0.28f);
+            glUniform1f(line.uniform("u_alpha"), 1.0f);
+            draw_quads(ranges[k].second / 2);
+            continue;
+        }
         if (b.faint_when_hidden) {
             glDepthFunc(GL_GREATER);
             glUniform1f(line.uniform("u_alpha"), 0.28f);
@@ -378,7 +418,7 @@ GLint Renderer::Impl::draw_overlay_lines(const Overlay& overlay) {
 
 // Pass 4: points, the same way (or on top of everything).
 void Renderer::Impl::draw_points(const Overlay& overlay, GLint point_base, const glm::mat4& vp,
-                                 const float (&viewport)[2]) {
+                                 const float (&viewport)[2], bool one_pass) {
     glUseProgram(point.id());
     glUniformMatrix4fv(point.uniform("u_view_proj"), 1, GL_FALSE, glm::value_ptr(vp));
     glUniform2fv(point.uniform("u_viewport"), 1, viewport);
@@ -389,7 +429,12 @@ void Renderer::Impl::draw_points(const Overlay& overlay, GLint point_base, const
         glUniform1f(point.uniform("u_size"), b.size_px);
         glUniform1i(point.uniform("u_sphere"), b.sphere ? 1 : 0);
         stream.points_from(first);
-        if (b.on_top) {
+        if (one_pass) {
+            glUniform1i(point.uniform("u_depth_mode"), b.on_top ? 0 : 1);
+            glUniform1f(point.uniform("u_hidden_alpha"), 0.35f);
+            glUniform1f(point.uniform("u_alpha"), 1.0f);
+            draw_quads(count);
+        } else if (b.on_top) {
             glDisable(GL_DEPTH_TEST);
             glUniform1f(point.uniform("u_alpha"), 1.0f);
             draw_quads(count);
@@ -451,8 +496,11 @@ void Renderer::render(const SceneView& view, const std::vector<SurfaceDraw>& sur
 
     im.draw_shaded(view, surfaces, entries, vp, vmat, aspect);
     im.draw_wires(surfaces, entries, vp, viewport);
-    const GLint point_base = im.draw_overlay_lines(overlay);
-    im.draw_points(overlay, point_base, vp, viewport);
+    const bool one_pass = im.begin_one_pass_overlay();
+    glUseProgram(im.line.id());
+    const GLint point_base = im.draw_overlay_lines(overlay, one_pass);
+    im.draw_points(overlay, point_base, vp, viewport, one_pass);
+    if (one_pass) im.end_one_pass_overlay();
 
     glBindVertexArray(0);
     glUseProgram(0);

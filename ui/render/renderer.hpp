@@ -44,6 +44,9 @@ public:
     // The last picture into framebuffer `fbo`, lower-left corner at (x, y) in its pixels.
     void copy_to(unsigned fbo, int x, int y) const;
     const RenderStats& stats() const { return stats_; }
+    // Without multisampling the overlay's hidden and visible parts are drawn in one pass (on by
+    // default); off: two depth-tested passes, as with multisampling (the reference in tests).
+    void set_one_pass_overlay(bool on);
 
 private:
     struct Impl;

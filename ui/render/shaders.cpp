@@ -136,7 +136,23 @@ void main() {
 }
 )";
 
-const char* const line_fs = R"(
+// The overlay's depth test in one pass where the scene's depth is a texture (no multisampling:
+// RenderTarget::depth_texture): a fragment behind the scene's depth there is drawn at
+// u_hidden_alpha (u_depth_mode 1) or dropped (2), as the GL_GREATER pass and the GL_LEQUAL
+// pass would draw it; 0: the depth test decides (or nothing does).
+#define ISOPARM_OVERLAY_DEPTH                                                                      \
+    "uniform highp sampler2D u_scene_depth;\n"                                                     \
+    "uniform int u_depth_mode;\n"                                                                  \
+    "uniform float u_hidden_alpha;\n"                                                              \
+    "float overlay_alpha(float visible_alpha) {\n"                                                 \
+    "    if (u_depth_mode == 0) return visible_alpha;\n"                                           \
+    "    float scene = texelFetch(u_scene_depth, ivec2(gl_FragCoord.xy), 0).r;\n"                  \
+    "    if (gl_FragCoord.z <= scene) return visible_alpha;\n"                                     \
+    "    if (u_depth_mode == 2) discard;\n"                                                        \
+    "    return u_hidden_alpha;\n"                                                                 \
+    "}\n"
+
+const char* const line_fs = ISOPARM_OVERLAY_DEPTH R"(
 in vec4 f_color;
 in float f_edge;
 uniform float u_alpha;
@@ -146,7 +162,7 @@ out vec4 frag;
 // needs no multisampling.
 void main() {
     float coverage = clamp(u_width * 0.5 + 0.5 - abs(f_edge), 0.0, 1.0);
-    frag = vec4(f_color.rgb, f_color.a * u_alpha * coverage);
+    frag = vec4(f_color.rgb, f_color.a * overlay_alpha(u_alpha) * coverage);
 }
 )";
 
@@ -175,7 +191,7 @@ void main() {
 }
 )";
 
-const char* const point_fs = R"(
+const char* const point_fs = ISOPARM_OVERLAY_DEPTH R"(
 in vec4 f_color;
 in vec2 f_local; // [-1, 1] is the disk's radius
 uniform float u_size;
@@ -200,7 +216,7 @@ void main() {
         float rim = smoothstep(1.0 - 2.5 * px, 1.0 - 1.5 * px, r);
         rgb = mix(f_color.rgb, f_color.rgb * 0.25, rim);
     }
-    frag = vec4(rgb, f_color.a * coverage * u_alpha);
+    frag = vec4(rgb, f_color.a * coverage * overlay_alpha(u_alpha));
 }
 )";
 

@@ -13,6 +13,12 @@ bool same_surface(const geom::Surface& a, const geom::Surface& b) {
            a.points == b.points && a.weights == b.weights;
 }
 
+bool same_basis(const geom::Surface& a, const geom::Surface& b) {
+    return a.type == b.type && a.degree_u == b.degree_u && a.degree_v == b.degree_v &&
+           a.n_u == b.n_u && a.n_v == b.n_v && a.knots_u == b.knots_u && a.knots_v == b.knots_v &&
+           a.weights == b.weights;
+}
+
 std::vector<std::uint32_t> wire_indices(int su, int sv, const std::vector<std::uint8_t>& exists,
                                         int max_lines) {
     std::vector<std::uint32_t> out;

@@ -11,6 +11,9 @@ namespace isoparm::ui {
 
 // Exact equality of everything the tessellation depends on (the cache key).
 bool same_surface(const geom::Surface& a, const geom::Surface& b);
+// Equality of everything the basis functions R_ij depend on (type, degrees, knots, weights),
+// not the points' positions: a point's drag leaves them as they were.
+bool same_basis(const geom::Surface& a, const geom::Surface& b);
 
 // Grid lines of a samples_u x samples_v vertex grid (u-major, as geom::tessellate lays it
 // out) as index pairs: every stride-th line in each direction plus the last one, at most

@@ -139,8 +139,11 @@ void BM_Frame1440x900(benchmark::State& state, const char* name, const char* sce
     ui::OffscreenTarget target(w, h);
     const GLuint fbo = target.fbo();
     {
-        const int msaa = ui::software_renderer() ? 0 : 4; // as the window chooses
-        ui::Workstation ws({/*headless=*/true, 1.f, ui::ViewMode::workstation, msaa, {}});
+        const bool software = ui::software_renderer(); // as the window chooses:
+        ui::WorkstationOptions options{
+            /*headless=*/true, 1.f, ui::ViewMode::workstation, software ? 0 : 4, {}};
+        options.retained = software; // the frame kept, redrawn where it changed
+        ui::Workstation ws(options);
         ui::AppContext& ctx = ws.context();
         ctx.doc = std::move(loaded).value();
         ui::normalize_selection(ctx.doc);
@@ -161,6 +164,7 @@ void BM_Frame1440x900(benchmark::State& state, const char* name, const char* sce
         const int pi = s ? s->n_u / 2 : 0, pj = s ? s->n_v / 2 : 0;
         const glm::dvec3 p0 = s ? s->point(pi, pj) : glm::dvec3(0);
         long n = 0;
+        double redrawn = 0; // the share of the frame's pixels drawn again (the kept frame)
         std::vector<double> wall_ms, cpu_ms;
         for (auto _ : state) {
             const auto wall0 = std::chrono::steady_clock::now();
@@ -184,6 +188,7 @@ void BM_Frame1440x900(benchmark::State& state, const char* name, const char* sce
             }
             ws.frame(fbo);
             glFinish();
+            redrawn += static_cast<double>(ws.redrawn_pixels()) / (double(w) * h);
             cpu_ms.push_back(process_cpu_ms() - cpu0);
             wall_ms.push_back(
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall0)
@@ -197,6 +202,7 @@ void BM_Frame1440x900(benchmark::State& state, const char* name, const char* sce
         state.counters["wall_p95_ms"] = quantile(wall_ms, 0.95);
         state.counters["cpu_med_ms"] = quantile(cpu_ms, 0.5);
         state.counters["cpu_p95_ms"] = quantile(cpu_ms, 0.95);
+        state.counters["redrawn_pct"] = 100 * redrawn / static_cast<double>(std::max(n, 1L));
     }
 }
 
