@@ -5,6 +5,24 @@
 
 namespace isoparm::ui {
 
+namespace {
+
+// A texture read texel for texel (nearest, clamped): the picture and the depth the overlay
+// compares against are both sampled at their own pixels.
+GLuint nearest_texture() {
+    GLuint t = 0;
+    glGenTextures(1, &t);
+    glBindTexture(GL_TEXTURE_2D, t);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    return t;
+}
+
+} // namespace
+
 RenderTarget::RenderTarget(int samples) {
     GLint max_samples = 0;
     glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
@@ -13,22 +31,10 @@ RenderTarget::RenderTarget(int samples) {
     glGenRenderbuffers(1, &msaa_color_);
     glGenRenderbuffers(1, &msaa_depth_);
     glGenFramebuffers(1, &resolve_fbo_);
-    glGenTextures(1, &texture_);
-    glBindTexture(GL_TEXTURE_2D, texture_);
     // Shown 1:1 in the panel: nearest is exact and much cheaper on software renderers.
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glBindTexture(GL_TEXTURE_2D, 0);
+    texture_ = nearest_texture();
     if (samples_ == 0) {
-        glGenTextures(1, &depth_texture_);
-        glBindTexture(GL_TEXTURE_2D, depth_texture_);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        glBindTexture(GL_TEXTURE_2D, 0);
+        depth_texture_ = nearest_texture();
         glGenFramebuffers(1, &colour_only_fbo_);
     }
     resize(16, 16);
