@@ -82,12 +82,15 @@ GridTessellator::Band band(const GridTessellator::Table& t, int n, int lanes) {
 // takes 64: measured on 256 x 256 grids, 32 columns cost 3-5% more per vertex and 16 columns
 // 5-15% more (each block runs its own loop over the rows and forms the band's extra control
 // columns again), while much wider blocks would take the ring of contracted rows out of L1.
-// More threads take narrower blocks, about four per thread, down to 16 columns, so that the
-// others absorb a thread that starts late (a helper that was asleep) or is slowed by other
-// work: the last blocks are then a small part of the whole.
+// More threads take narrower blocks, two per thread, down to 16 columns, so that the others
+// absorb a thread that starts late (a helper that was asleep) or is slowed by other work. Not
+// four per thread: on 256 x 256 grids with two threads (2-core Xeon, AVX-512, interleaved with
+// one thread, tests/bench/compare/bench_sisl.cpp) 32-column blocks cost so much more per vertex
+// than 64-column ones that two threads gained 1.05-1.2x on AVX-512 positions, against
+// 1.35-1.5x (helper asleep) and 1.5-1.7x (helper spinning) with 64 columns.
 int block_columns(int samples_v, int threads) {
     if (threads <= 1) return 64;
-    return std::clamp(samples_v / (4 * threads) / 8 * 8, 16, 64);
+    return std::clamp(samples_v / (2 * threads) / 8 * 8, 16, 64);
 }
 
 } // namespace
