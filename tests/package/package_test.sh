@@ -26,7 +26,7 @@ root=$work/root
 dpkg-deb -x "$deb" "$root"
 for f in usr/bin/isoparm usr/share/man/man1/isoparm.1.gz usr/share/applications/isoparm.desktop \
          usr/share/icons/hicolor/256x256/apps/isoparm.png usr/share/isoparm/scenes/fig8-revolution.json \
-         usr/share/doc/isoparm/README.md; do
+         usr/share/doc/isoparm/README.md usr/lib/isoparm/libisoparm_video.so; do
   [ -e "$root/$f" ] || fail "the package lacks /$f"
 done
 
@@ -41,6 +41,11 @@ esac
 "$bin" render "$root/usr/share/isoparm/scenes/fig8-revolution.json" --size 320x200 -o "$work/x.png"
 [ -s "$work/x.png" ] || fail "render wrote no picture"
 echo "package: the unpacked isoparm renders an unpacked scene"
+# Its video module, unpacked beside it (PREFIX/lib/isoparm), makes an animation.
+"$bin" animate "$root/usr/share/isoparm/scenes/fig4-deboor.json" --deboor --size 160x100 \
+  -o "$work/x.gif" >/dev/null || fail "animate failed"
+[ -s "$work/x.gif" ] || fail "animate wrote no GIF"
+echo "package: the unpacked isoparm animates through its unpacked video module"
 echo '{"op":"basis","degree":2,"knots":[0,0,0,1,1,1],"param":0.5}' | "$bin" geom >/dev/null ||
   fail "isoparm geom failed"
 echo "1 passed, 0 failed"

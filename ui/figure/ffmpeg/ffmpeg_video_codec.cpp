@@ -1,11 +1,13 @@
-// FFmpeg (libavformat, libavcodec, libavfilter, libswscale) behind VideoEncoder. The muxer
-// writes into memory through a custom AVIOContext (the MP4 muxer seeks back to finish its
-// boxes), and the finished bytes go to disk through scene::write_file_atomically.
-#include "ui/figure/video_encoder.hpp"
-
+// The video module (libisoparm_video.so; why a module: ui/figure/video_codec.hpp): FFmpeg
+// (libavformat, libavcodec, libavfilter, libswscale) behind VideoCodec. The muxer writes into
+// memory through a custom AVIOContext (the MP4 muxer seeks back to finish its boxes); the
+// program writes the finished bytes to disk (VideoEncoder::finish, atomically).
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
+#include <memory>
 #include <string_view>
+#include <type_traits>
 
 extern "C" {
 #include <libavcodec/avcodec.h>
@@ -18,7 +20,7 @@ extern "C" {
 #include <libswscale/swscale.h>
 }
 
-#include "core/scene/atomic_file.hpp"
+#include "ui/figure/video_codec.hpp"
 
 namespace isoparm::ui {
 
@@ -75,7 +77,7 @@ constexpr const char* gif_filters = "split[a][b];[a]palettegen=stats_mode=full[p
 
 } // namespace
 
-struct VideoEncoder::Impl {
+struct FfmpegVideoCodec final : VideoCodec {
     VideoSettings settings;
     MemoryOutput memory;
     AVFormatContext* format = nullptr;
@@ -92,7 +94,11 @@ struct VideoEncoder::Impl {
     int added = 0;
     bool header_written = false;
 
-    ~Impl() {
+    std::string add_frame(const std::vector<std::uint8_t>& rgba) override;
+    std::string finish(std::string& bytes) override;
+    int frames() const override { return added; }
+
+    ~FfmpegVideoCodec() override {
         av_packet_free(&packet);
         av_frame_free(&frame);
         av_frame_free(&filtered);
@@ -239,95 +245,57 @@ struct VideoEncoder::Impl {
     }
 };
 
-std::string check_video_settings(const VideoSettings& s) {
-    if (s.width < 16 || s.height < 16 || s.width > 4096 || s.height > 4096)
-        return "the size " + std::to_string(s.width) + "x" + std::to_string(s.height) +
-               " is outside 16x16 .. 4096x4096";
-    if (s.format == VideoFormat::mp4 && (s.width % 2 || s.height % 2))
-        return "an MP4 (H.264, 4:2:0) needs an even width and height, not " +
-               std::to_string(s.width) + "x" + std::to_string(s.height);
-    const int max_fps = s.format == VideoFormat::gif ? 50 : 60;
-    if (s.fps < 1 || s.fps > max_fps)
-        return "the frame rate " + std::to_string(s.fps) + " is outside 1.." +
-               std::to_string(max_fps) +
-               (s.format == VideoFormat::gif ? " (a GIF counts delays in 1/100 s)" : "");
-    return "";
-}
-
-bool video_format_of(const std::string& path, VideoFormat& format) {
-    std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : "";
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (ext == ".gif")
-        format = VideoFormat::gif;
-    else if (ext == ".mp4")
-        format = VideoFormat::mp4;
-    else
-        return false;
-    return true;
-}
-
-std::unique_ptr<VideoEncoder> VideoEncoder::create(const VideoSettings& settings,
-                                                   std::string& error) {
-    error = check_video_settings(settings);
-    if (!error.empty()) return nullptr;
-    av_log_set_level(AV_LOG_ERROR); // x264's banner and statistics are not ours to print
-    auto impl = std::make_unique<Impl>();
-    impl->settings = settings;
-    error = impl->start();
-    if (!error.empty()) return nullptr;
-    return std::unique_ptr<VideoEncoder>(new VideoEncoder(std::move(impl)));
-}
-
-VideoEncoder::VideoEncoder(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
-VideoEncoder::~VideoEncoder() = default;
-
-int VideoEncoder::frames() const {
-    return impl_->added;
-}
-
-std::string VideoEncoder::add_frame(const std::vector<std::uint8_t>& rgba) {
-    Impl& m = *impl_;
-    const int w = m.settings.width, h = m.settings.height;
+std::string FfmpegVideoCodec::add_frame(const std::vector<std::uint8_t>& rgba) {
+    const int w = settings.width, h = settings.height;
     if (rgba.size() != static_cast<std::size_t>(w) * h * 4)
         return "internal error: a frame is not " + std::to_string(w) + "x" + std::to_string(h);
-    if (av_frame_make_writable(m.frame) < 0) return "out of memory";
-    m.frame->pts = m.added;
-    if (m.settings.format == VideoFormat::mp4) {
+    if (av_frame_make_writable(frame) < 0) return "out of memory";
+    frame->pts = added;
+    if (settings.format == VideoFormat::mp4) {
         const std::uint8_t* src[1] = {rgba.data()};
         const int stride[1] = {w * 4};
-        sws_scale(m.sws, src, stride, 0, h, m.frame->data, m.frame->linesize);
-        if (std::string problem = m.encode(m.frame); !problem.empty()) return problem;
+        sws_scale(sws, src, stride, 0, h, frame->data, frame->linesize);
+        if (std::string problem = encode(frame); !problem.empty()) return problem;
     } else {
         for (int y = 0; y < h; ++y)
-            std::memcpy(m.frame->data[0] + static_cast<std::ptrdiff_t>(y) * m.frame->linesize[0],
+            std::memcpy(frame->data[0] + static_cast<std::ptrdiff_t>(y) * frame->linesize[0],
                         rgba.data() + static_cast<std::size_t>(y) * w * 4,
                         static_cast<std::size_t>(w) * 4);
-        if (const int r =
-                av_buffersrc_add_frame_flags(m.source, m.frame, AV_BUFFERSRC_FLAG_KEEP_REF);
+        if (const int r = av_buffersrc_add_frame_flags(source, frame, AV_BUFFERSRC_FLAG_KEEP_REF);
             r < 0)
             return "making the GIF palette failed: " + av_message(r);
-        if (std::string problem = m.drain_filters(); !problem.empty()) return problem;
+        if (std::string problem = drain_filters(); !problem.empty()) return problem;
     }
-    ++m.added;
+    ++added;
     return "";
 }
 
-std::string VideoEncoder::finish(const std::string& path) {
-    Impl& m = *impl_;
-    if (m.added == 0) return "the animation has no frames";
-    if (m.settings.format == VideoFormat::gif) {
-        if (const int r = av_buffersrc_add_frame_flags(m.source, nullptr, 0); r < 0)
+std::string FfmpegVideoCodec::finish(std::string& bytes) {
+    if (added == 0) return "the animation has no frames";
+    if (settings.format == VideoFormat::gif) {
+        if (const int r = av_buffersrc_add_frame_flags(source, nullptr, 0); r < 0)
             return "making the GIF palette failed: " + av_message(r);
-        if (std::string problem = m.drain_filters(); !problem.empty()) return problem;
-        if (!m.codec) return "the GIF palette filters gave no frames";
+        if (std::string problem = drain_filters(); !problem.empty()) return problem;
+        if (!codec) return "the GIF palette filters gave no frames";
     }
-    if (std::string problem = m.encode(nullptr); !problem.empty()) return problem;
-    if (const int r = av_write_trailer(m.format); r < 0)
+    if (std::string problem = encode(nullptr); !problem.empty()) return problem;
+    if (const int r = av_write_trailer(format); r < 0)
         return "cannot finish the file: " + av_message(r);
-    avio_flush(m.io);
-    const geom::Status written = scene::write_file_atomically(path, m.memory.bytes);
-    return written ? std::string{} : written.error().message;
+    avio_flush(io);
+    bytes = std::move(memory.bytes);
+    return "";
 }
 
 } // namespace isoparm::ui
+
+// Exported (the module is built with hidden visibility): the program finds it with dlsym.
+extern "C" __attribute__((visibility("default"))) isoparm::ui::VideoCodec*
+isoparm_video_codec_v1(const isoparm::ui::VideoSettings& settings, std::string& error) {
+    static_assert(
+        std::is_same_v<decltype(&isoparm_video_codec_v1), isoparm::ui::VideoCodecFactory>);
+    av_log_set_level(AV_LOG_ERROR); // x264's banner and statistics are not ours to print
+    auto codec = std::make_unique<isoparm::ui::FfmpegVideoCodec>();
+    codec->settings = settings;
+    error = codec->start();
+    return error.empty() ? codec.release() : nullptr;
+}
