@@ -1,9 +1,10 @@
 // The seam between the program and its video module (libisoparm_video.so, ui/figure/ffmpeg/):
 // FFmpeg and the hundred-odd libraries it brings (codecs, their own dependencies) are mapped
 // and relocated only by a process that makes an animation. Linked into the program they cost
-// every `isoparm` process about 80 ms of start-up (2-core Xeon; `isoparm --version` went
-// from 0.15 s to 0.07 s), every `geom` call and headless render included. The module and the
-// program are built together from one tree, so the interface is plain C++.
+// every `isoparm` process about 80 ms of start-up (2-core Xeon, farm-bench medians:
+// `isoparm --version` went from 0.122 s to 0.044 s), every `geom` call and headless render
+// included. The module and the program are built together from one tree, so the interface is
+// plain C++.
 #pragma once
 
 #include <cstdint>
