@@ -2,11 +2,9 @@
 // (libavformat, libavcodec, libavfilter, libswscale) behind VideoCodec. The muxer writes into
 // memory through a custom AVIOContext (the MP4 muxer seeks back to finish its boxes); the
 // program writes the finished bytes to disk (VideoEncoder::finish, atomically).
-#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <memory>
-#include <string_view>
 #include <type_traits>
 
 extern "C" {
