@@ -25,6 +25,7 @@
 #include "ui/view/current_patch.hpp"
 #include "ui/view/doc_access.hpp"
 #include "ui/view/implicit_meshes.hpp"
+#include "ui/view/implicit_screen_level.hpp"
 #include "ui/view/kinds/kind_view.hpp"
 #include "ui/view/scene_builder.hpp"
 #include "ui/view/surface_meshes.hpp"
@@ -496,6 +497,16 @@ void Workstation::render_view3d(float scale) {
     mode.coarse_id = ui.implicit.dragging ? ui.implicit.object : 0;
     if (request_frame_) mode.wake = request_frame_;
     mode.gesture = gesture_.active;
+    // Each implicit surface at the grid its size on screen needs (implicit_screen_level.hpp);
+    // the wireframe style draws the mesh itself, every triangle. The selected one's own mesh is
+    // always made: its panel tells its triangles.
+    if (ctx_.doc.view.display.style != doc::DisplayStyle::wireframe) {
+        const ScreenScale screen = screen_scale(ui.camera, ui.view_fb_height);
+        mode.screen_level = [screen](const doc::ImplicitObject& im) {
+            return screen_level(im.lo, im.hi, im.cell, screen);
+        };
+    }
+    if (const doc::Object* selected = ctx_.doc.selected()) mode.own_mesh_id = selected->id;
     implicit_->update(ctx_.doc, mode);
     triangles_->update(ctx_.doc, ctx_.doc.view.display.density);
     BuiltScene scene = build_scene(ctx_.doc, style, implicit_.get(), triangles_.get());

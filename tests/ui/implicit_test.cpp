@@ -202,6 +202,119 @@ TEST(ImplicitMeshes, FineGridFinishesInTheBackground) {
     EXPECT_EQ(cache.synchronous_runs(), 0);
 }
 
+// The 3D view's level (implicit_screen_level.hpp): an object drawn coarser is polygonized at
+// that grid only, unless it is the one whose own mesh the panel needs; going back to level 0
+// makes the own mesh, and the coarse one is kept for the next time.
+TEST(ImplicitMeshes, DrawnAtTheViewsLevelOwnMeshOnlyWhereNeeded) {
+    std::uint64_t panel_id = 0;
+    doc::Document d = one_implicit(panel_id);
+    doc::Object other = d.objects[0];
+    other.id = d.allocate_id();
+    d.objects.push_back(other);
+    const double cell = std::get<doc::ImplicitObject>(d.objects[0].shape).cell;
+    ImplicitMeshes cache;
+    ImplicitMeshes::Mode far;
+    far.wait = true;
+    far.screen_level = [](const doc::ImplicitObject&) { return 1; };
+    far.own_mesh_id = panel_id;
+    cache.update(d, far);
+    EXPECT_EQ(cache.synchronous_runs(), 3); // two at 2 x cell, the panel's own one
+    ASSERT_NE(cache.view(panel_id).mesh, nullptr);
+    EXPECT_EQ(cache.view(panel_id).cell, cell);
+    EXPECT_EQ(cache.view(other.id).mesh, nullptr); // never made
+    for (std::uint64_t id : {panel_id, other.id}) {
+        const ImplicitMeshes::View v = cache.drawn(id);
+        ASSERT_NE(v.mesh, nullptr);
+        EXPECT_EQ(v.cell, 2 * cell);
+        EXPECT_EQ(v.seen_side, 1);
+    }
+    // Half the cell across, a quarter of the triangles or so.
+    const double ratio = static_cast<double>(cache.drawn(other.id).mesh->triangles.size()) /
+                         static_cast<double>(cache.view(panel_id).mesh->triangles.size());
+    EXPECT_GT(ratio, 0.2);
+    EXPECT_LT(ratio, 0.3);
+
+    ImplicitMeshes::Mode near = far;
+    near.screen_level = [](const doc::ImplicitObject&) { return 0; };
+    cache.update(d, near);
+    EXPECT_EQ(cache.synchronous_runs(), 4); // the other one's own mesh
+    EXPECT_EQ(cache.drawn(other.id).cell, cell);
+    EXPECT_EQ(cache.drawn(other.id).mesh, cache.view(other.id).mesh);
+
+    cache.update(d, far); // farther again: the coarse mesh is still there
+    EXPECT_EQ(cache.synchronous_runs(), 4);
+    EXPECT_EQ(cache.drawn(other.id).cell, 2 * cell);
+
+    ImplicitMeshes::Mode beyond = far; // levels past the last are the last
+    beyond.screen_level = [](const doc::ImplicitObject&) { return 9; };
+    cache.update(d, beyond);
+    EXPECT_EQ(cache.drawn(other.id).cell, 4 * cell);
+}
+
+// Gesture frames draw a coarse mesh made once, at the first of them, and kept while the object
+// stays as it is, whatever the view's level does meanwhile; twice the view's cell when that is
+// coarser than the usual 2.5 cells.
+TEST(ImplicitMeshes, TheGestureMeshIsMadeOnceAndCoarserThanTheView) {
+    std::uint64_t id = 0;
+    doc::Document d = one_implicit(id);
+    auto& f = std::get<doc::ImplicitObject>(d.objects[0].shape);
+    ASSERT_EQ(f.cell, 0.05); // the sphere preset: 50 cells across
+    ImplicitMeshes cache;
+    ImplicitMeshes::Mode orbit;
+    orbit.wait = true;
+    orbit.gesture = true;
+    orbit.screen_level = [](const doc::ImplicitObject&) { return 0; };
+    cache.update(d, orbit);
+    EXPECT_EQ(cache.synchronous_runs(), 2); // the own mesh and the gesture one
+    EXPECT_EQ(cache.drawn(id).cell, 2.5 * 0.05);
+    EXPECT_EQ(cache.view(id).cell, 0.05); // the panel's is the own mesh
+    cache.end_gesture_frame();
+    EXPECT_EQ(cache.drawn(id).cell, 0.05);
+
+    orbit.screen_level = [](const doc::ImplicitObject&) { return 1; };
+    cache.update(d, orbit); // the view's level changed: only its mesh is new
+    EXPECT_EQ(cache.synchronous_runs(), 3);
+    EXPECT_EQ(cache.drawn(id).cell, 2.5 * 0.05);
+
+    f.parameter_values[0] = 0.9; // the object changed: a new gesture mesh, twice the view's cell
+    cache.update(d, orbit);
+    EXPECT_EQ(cache.drawn(id).cell, 4 * 0.05);
+    cache.end_gesture_frame();
+    EXPECT_EQ(cache.drawn(id).cell, 2 * 0.05);
+}
+
+// While the level's mesh is made in the background, the view draws the object's mesh of the
+// other level (the same surface, another grid) rather than nothing.
+TEST(ImplicitMeshes, TheOtherLevelIsDrawnWhileTheLevelsMeshIsMade) {
+    std::uint64_t id = 0;
+    doc::Document d = one_implicit(id);
+    std::get<doc::ImplicitObject>(d.objects[0].shape).cell = 0.02; // > 48^3 cells
+    ImplicitMeshes cache;
+    ImplicitMeshes::Mode far;
+    far.screen_level = [](const doc::ImplicitObject&) { return 1; }; // 0.04: 63^3 cells
+    ImplicitMeshes::View v;
+    while (!v.mesh || v.progress >= 0) { // no timing: poll until the worker's mesh is adopted
+        std::this_thread::yield();
+        cache.update(d, far);
+        v = cache.drawn(id);
+    }
+    EXPECT_EQ(v.cell, 0.04);
+    ImplicitMeshes::Mode near; // level 0, the own mesh: made in the background
+    cache.update(d, near);
+    v = cache.drawn(id);
+    ASSERT_NE(v.mesh, nullptr);
+    if (cache.view(id).mesh == nullptr) {
+        EXPECT_EQ(v.cell, 0.04); // not made yet: the coarse one
+    }
+    while (v.cell != 0.02) {
+        std::this_thread::yield();
+        cache.update(d, near);
+        v = cache.drawn(id);
+        ASSERT_NE(v.mesh, nullptr);
+    }
+    EXPECT_EQ(cache.synchronous_runs(), 0);
+}
+
 TEST(ImplicitScene, ImplicitObjectsBecomeMeshDrawsWithTheirBox) {
     std::uint64_t id = 0;
     doc::Document d = one_implicit(id);

@@ -135,6 +135,43 @@ def implicit_editor_after_new_implicit(s, ctx):
     ctx.shot(s, "implicit-editor")
 
 
+def implicit_view_grid_follows_the_zoom(s, ctx):
+    """The implicit gallery: the 3D view draws the selected heart with a coarser grid than its
+    own cell while it is small on screen (the panel says so), and with its own cell once the
+    wheel brings it near; the wheel changes nothing in the document."""
+    before = s.save()
+    s.click_named("objects/heart")
+    facts = lambda r: r.get("facts", {})
+    s.wait_for("the heart's meshes in its panel", lambda r: r["selected"] == "heart" and
+               "implicit/drawn_cell" in facts(r))
+    view = s.rect("view3d/image")
+    x, y = view[0] + view[2] // 2, view[1] + view[3] // 2
+
+    def grid(want, button, what):
+        """Wheel notches (4 in, 5 out) until want(own cell, drawn cell); returns that report."""
+        for _ in range(40):
+            since = s.frame()
+            r = s.report()
+            f = facts(r)
+            if r["selected"] == "heart" and want(f["implicit/cell"], f["implicit/drawn_cell"]):
+                return r
+            s.click(x, y, button=button)
+            s.frames_after(since)
+        raise Failure(f"no wheel notch made the 3D view draw the heart {what}; "
+                      f"facts: {facts(s.report())}")
+
+    far = grid(lambda own, drawn: drawn > own, 5, "coarser than its own cell")
+    ctx.shot(s, "implicit-far")
+    f = facts(far)
+    check(f["implicit/drawn_cell"] in (2 * f["implicit/cell"], 4 * f["implicit/cell"]),
+          f"the heart is drawn with cell {f['implicit/drawn_cell']}, not 2 or 4 times its "
+          f"{f['implicit/cell']}")
+    grid(lambda own, drawn: drawn == own, 4, "with its own cell")
+    ctx.shot(s, "implicit-near")
+    after = s.save()
+    check(after["objects"] == before["objects"], "zooming the 3D view changed the objects")
+
+
 def control_points_after_starting_with_a_curve(s, ctx):
     """fig8-revolution starts with its profile curve selected; select the surface and a point,
     then drag the point in the xy plane of the control-point panel."""
@@ -1452,6 +1489,7 @@ SCENARIOS = [
     ("window_size", "fig3b-weight-5.json", window_size_is_remembered),
     ("curve_designer", "fig3b-weight-5.json", curve_designer_after_new_curve),
     ("implicit_editor", "fig3b-weight-5.json", implicit_editor_after_new_implicit),
+    ("implicit_view_grid", "implicit-gallery.json", implicit_view_grid_follows_the_zoom),
     ("control_points_after_curve", "fig8-revolution.json",
      control_points_after_starting_with_a_curve),
     ("construct_revolve", "fig8-revolution.json", construct_revolve_from_the_profile),

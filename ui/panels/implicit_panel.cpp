@@ -15,6 +15,7 @@
 #include "ui/theme.hpp"
 #include "ui/ui_report.hpp"
 #include "ui/view/implicit_meshes.hpp"
+#include "ui/view/implicit_screen_level.hpp"
 #include "ui/view/implicit_support.hpp"
 #include "ui/view/text_wrap.hpp"
 
@@ -162,6 +163,19 @@ void mesh_state(AppContext& ctx, const doc::Object& obj, const doc::ImplicitObje
     } else if (v.mesh) {
         ImGui::TextDisabled("%zu triangles, %zu vertices%s", v.mesh->triangles.size(),
                             v.mesh->positions.size(), v.cell != im.cell ? " (coarse preview)" : "");
+    }
+    // The 3D view's own grid when it draws the surface coarser (implicit_screen_level.hpp).
+    const ImplicitMeshes::View drawn = ctx.implicit_meshes->drawn(obj.id);
+    if (v.mesh && drawn.mesh) {
+        report_fact("implicit/cell", v.cell);
+        report_fact("implicit/drawn_cell", drawn.cell);
+    }
+    if (drawn.mesh && v.mesh && drawn.cell > v.cell && v.error.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        text_wrapped("The 3D view draws it with cell %g (%zu triangles): cell %g is under %g "
+                     "pixels there.",
+                     drawn.cell, drawn.mesh->triangles.size(), v.cell, screen_cell_pixels / 2);
+        ImGui::PopStyleColor();
     }
 }
 

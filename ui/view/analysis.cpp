@@ -101,7 +101,7 @@ AnalysisView analysis_view(const doc::Document& doc, const ImplicitMeshes* impli
             if (std::isfinite(k)) values.push_back(k);
     };
     auto add_implicit = [&](const doc::Object& o, const doc::ImplicitObject& im) {
-        const ImplicitMeshes::View mv = implicit ? implicit->view(o.id) : ImplicitMeshes::View{};
+        const ImplicitMeshes::View mv = implicit ? implicit->drawn(o.id) : ImplicitMeshes::View{};
         if (!mv.mesh || mv.mesh->positions.empty()) return;
         const std::size_t stride = std::max<std::size_t>(mv.mesh->positions.size() / 300, 1);
         for (double k : implicit_vertex_curvature(im, *mv.mesh, v.kind, stride))

@@ -7,6 +7,7 @@
 
 #include "core/geom/implicit/expression.hpp"
 #include "core/geom/implicit/polygonize.hpp"
+#include "ui/view/implicit_screen_level.hpp"
 
 namespace isoparm::ui {
 
@@ -49,35 +50,92 @@ PolygonizeResult polygonize_key(const ImplicitKey& key,
 
 ImplicitMeshes::~ImplicitMeshes() {
     // Ask every worker to stop before joining any of them.
-    for (auto& [id, e] : entries_) e.worker.request_stop();
+    for (auto& [id, e] : entries_) {
+        e.own.worker.request_stop();
+        e.screen.worker.request_stop();
+    }
 }
 
-void ImplicitMeshes::adopt(Entry& e, const ImplicitKey& key, std::optional<geom::Mesh> mesh,
+void ImplicitMeshes::adopt(Slot& s, const ImplicitKey& key, std::optional<geom::Mesh> mesh,
                            std::string error, int seen_side) {
-    e.shown = key;
-    e.seen_side = mesh ? seen_side : 0;
-    e.error = std::move(error);
-    e.mesh = mesh ? std::move(*mesh) : geom::Mesh{};
-    e.revision = next_revision_++;
+    s.shown = key;
+    s.seen_side = mesh ? seen_side : 0;
+    s.error = std::move(error);
+    s.mesh = mesh ? std::move(*mesh) : geom::Mesh{};
+    s.revision = next_revision_++;
 }
 
 // The coarse grid's mesh of the object as it is now; nothing when its full grid is no finer.
 void ImplicitMeshes::update_gesture_mesh(Entry& e, const doc::ImplicitObject& im) {
     // The slider's coarse grid, and never finer than 2.5 cells: an orbit of the implicit
     // gallery on llvmpipe is bound by its triangles (2x: 42 ms a frame, over the 40 ms aimed at).
-    const double cell =
-        im.cell > 0 ? std::max(coarse_cell(im.lo, im.hi, im.cell), 2.5 * im.cell) : im.cell;
+    if (!(im.cell > 0)) return;
+    const double least = std::max(coarse_cell(im.lo, im.hi, im.cell), 2.5 * im.cell);
+    // It stays until the object changes (a new one costs the frame that makes it): made in the
+    // first gesture frame, twice as coarse as the view's mesh then when that is coarser still.
+    if (e.gesture_key && e.gesture_key->cell >= least &&
+        implicit_key(im, e.gesture_key->cell) == *e.gesture_key)
+        return;
+    const double cell = std::max(least, std::ldexp(im.cell, e.level + 1));
     const ImplicitKey key = implicit_key(im, cell);
-    if (e.gesture_key && *e.gesture_key == key) return;
     e.gesture_key = key;
     e.gesture_mesh = {};
     e.gesture_revision = 0;
-    if (!(cell > im.cell)) return; // the full mesh is as coarse
     PolygonizeResult r = polygonize_key(key);
     ++synchronous_runs_;
     if (!r.mesh || !r.error.empty()) return; // the full mesh (or its error) is shown
     e.gesture_mesh = std::move(*r.mesh);
     e.gesture_revision = next_revision_++;
+}
+
+void ImplicitMeshes::drop_stale_job(Slot& s, const ImplicitKey& key) {
+    if (s.job && !(s.job->key == key)) {
+        s.worker = {}; // requests stop and joins
+        s.job.reset();
+    }
+}
+
+void ImplicitMeshes::bring_up_to_date(Slot& s, const ImplicitKey& key, const Mode& mode) {
+    // A finished job: show its mesh if it is still wanted.
+    if (s.job && s.job->done.load()) {
+        std::shared_ptr<Job> job = std::move(s.job);
+        s.worker = {};
+        if (job->key == key) {
+            std::lock_guard lock(job->m);
+            adopt(s, key, std::move(job->mesh), job->error, job->seen_side);
+        }
+    }
+    if (s.shown && *s.shown == key) {
+        drop_stale_job(s, key);
+        return;
+    }
+    if (s.job && s.job->key == key) return; // still running
+
+    s.worker = {}; // cancel a job for another key
+    s.job.reset();
+    if (mode.wait || grid_cells(key) <= synchronous_cells || !(key.cell > 0)) {
+        PolygonizeResult r = polygonize_key(key);
+        ++synchronous_runs_;
+        adopt(s, key, std::move(r.mesh), std::move(r.error), r.seen_side);
+        return;
+    }
+    auto job = std::make_shared<Job>();
+    job->key = key;
+    s.job = job;
+    s.worker = std::jthread([job, wake = mode.wake](std::stop_token stop) {
+        PolygonizeResult r = polygonize_key(job->key, [&](double p) {
+            job->progress.store(p);
+            return !stop.stop_requested();
+        });
+        {
+            std::lock_guard lock(job->m);
+            job->mesh = std::move(r.mesh);
+            job->error = std::move(r.error);
+            job->seen_side = r.seen_side;
+        }
+        job->done.store(true);
+        if (wake && !stop.stop_requested()) wake();
+    });
 }
 
 void ImplicitMeshes::update(const doc::Document& d, const Mode& mode) {
@@ -88,85 +146,79 @@ void ImplicitMeshes::update(const doc::Document& d, const Mode& mode) {
         if (!im || !o.visible) continue;
         Entry& e = entries_[o.id];
         e.used = true;
-        const double cell =
-            o.id == mode.coarse_id ? coarse_cell(im->lo, im->hi, im->cell) : im->cell;
-        const ImplicitKey key = implicit_key(*im, cell);
-        if (mode.gesture && o.id != mode.coarse_id) update_gesture_mesh(e, *im);
-
-        // A finished job: show its mesh if it is still wanted.
-        if (e.job && e.job->done.load()) {
-            std::shared_ptr<Job> job = std::move(e.job);
-            e.worker = {};
-            if (job->key == key) {
-                std::lock_guard lock(job->m);
-                adopt(e, key, std::move(job->mesh), job->error, job->seen_side);
-            }
-        }
-        if (e.shown && *e.shown == key) {
-            if (e.job) {       // a job for an older key: no longer wanted
-                e.worker = {}; // requests stop and joins
-                e.job.reset();
-            }
-            continue;
-        }
-        if (e.job && e.job->key == key) continue; // still running
-
-        e.worker = {}; // cancel a job for another key
-        e.job.reset();
-        if (mode.wait || grid_cells(key) <= synchronous_cells || !(key.cell > 0)) {
-            PolygonizeResult r = polygonize_key(key);
-            ++synchronous_runs_;
-            adopt(e, key, std::move(r.mesh), std::move(r.error), r.seen_side);
-            continue;
-        }
-        auto job = std::make_shared<Job>();
-        job->key = key;
-        e.job = job;
-        e.worker = std::jthread([job, wake = mode.wake](std::stop_token stop) {
-            PolygonizeResult r = polygonize_key(job->key, [&](double p) {
-                job->progress.store(p);
-                return !stop.stop_requested();
-            });
-            {
-                std::lock_guard lock(job->m);
-                job->mesh = std::move(r.mesh);
-                job->error = std::move(r.error);
-                job->seen_side = r.seen_side;
-            }
-            job->done.store(true);
-            if (wake && !stop.stop_requested()) wake();
-        });
+        const bool sliding = o.id == mode.coarse_id;
+        e.own_key = implicit_key(*im, sliding ? coarse_cell(im->lo, im->hi, im->cell) : im->cell);
+        // A slider's coarse grid is drawn as it is (made anew with each step).
+        e.level = sliding || !mode.screen_level || !(im->cell > 0)
+                      ? 0
+                      : std::clamp(mode.screen_level(*im), 0, max_screen_level);
+        if (mode.gesture && !sliding) update_gesture_mesh(e, *im);
+        if (e.level == 0 || o.id == mode.own_mesh_id)
+            bring_up_to_date(e.own, e.own_key, mode);
+        else
+            drop_stale_job(e.own, e.own_key);
+        e.screen_key = implicit_key(*im, std::ldexp(im->cell, e.level));
+        if (e.level > 0)
+            bring_up_to_date(e.screen, e.screen_key, mode);
+        else
+            drop_stale_job(e.screen, e.screen_key);
     }
     for (auto it = entries_.begin(); it != entries_.end();)
         it = it->second.used ? std::next(it) : entries_.erase(it);
 }
 
-ImplicitMeshes::View ImplicitMeshes::view(std::uint64_t id) const {
+ImplicitMeshes::View ImplicitMeshes::slot_view(const Slot& s) const {
     View v;
-    const auto it = entries_.find(id);
-    if (it == entries_.end()) return v;
-    const Entry& e = it->second;
-    if (e.shown) {
-        v.mesh = &e.mesh;
-        v.cell = e.shown->cell;
-        v.seen_side = e.seen_side;
-        v.lo = e.shown->lo;
-        v.hi = e.shown->hi;
+    if (s.shown) {
+        v.mesh = &s.mesh;
+        v.cell = s.shown->cell;
+        v.seen_side = s.seen_side;
+        v.lo = s.shown->lo;
+        v.hi = s.shown->hi;
     }
-    v.revision = e.revision;
-    v.error = e.error;
-    // A gesture frame shows the coarse mesh when there is one and the full one is current.
-    const auto same_object = [&] {
-        ImplicitKey k = *e.gesture_key;
-        k.cell = e.shown->cell;
-        return k == *e.shown;
+    v.revision = s.revision;
+    v.error = s.error;
+    if (s.job && !s.job->done.load()) v.progress = s.job->progress.load();
+    return v;
+}
+
+ImplicitMeshes::View ImplicitMeshes::view(std::uint64_t id) const {
+    const auto it = entries_.find(id);
+    return it == entries_.end() ? View{} : slot_view(it->second.own);
+}
+
+ImplicitMeshes::View ImplicitMeshes::drawn(std::uint64_t id) const {
+    const auto it = entries_.find(id);
+    if (it == entries_.end()) return View{};
+    const Entry& e = it->second;
+    const Slot& wanted = e.level == 0 ? e.own : e.screen;
+    const Slot& other = e.level == 0 ? e.screen : e.own;
+    const ImplicitKey& key = e.level == 0 ? e.own_key : e.screen_key;
+    // While the level's mesh is made: the other one if it shows the object as it is (at
+    // another cell), else whichever there is, older.
+    const auto same_shape = [&](const Slot& s) {
+        if (!s.shown) return false;
+        ImplicitKey k = key;
+        k.cell = s.shown->cell;
+        return k == *s.shown;
     };
-    if (gesture_ && e.gesture_revision != 0 && e.shown && e.gesture_key && same_object()) {
+    const bool wanted_current = wanted.shown && *wanted.shown == key;
+    const Slot& chosen = !wanted_current && (same_shape(other) || !wanted.shown) ? other : wanted;
+    View v = slot_view(chosen);
+    // A gesture frame shows the coarse mesh when there is one, coarser than the mesh chosen
+    // above and of the same object as it.
+    const auto same_object = [&] {
+        if (!chosen.shown) return false;
+        ImplicitKey k = *e.gesture_key;
+        k.cell = chosen.shown->cell;
+        return k == *chosen.shown;
+    };
+    if (gesture_ && e.gesture_revision != 0 && e.gesture_key && e.gesture_key->cell > v.cell &&
+        same_object()) {
         v.mesh = &e.gesture_mesh;
         v.cell = e.gesture_key->cell;
         v.revision = e.gesture_revision;
     }
-    if (e.job && !e.job->done.load()) v.progress = e.job->progress.load();
     return v;
 }
 

@@ -24,7 +24,7 @@ void add_box(LineBatch& b, const glm::dvec3& lo, const glm::dvec3& hi, const glm
 void draw_kind(const doc::ImplicitObject& im, const ObjectLook& look, SceneBatches& out) {
     const doc::Colors& col = *look.colors;
     const ImplicitMeshes::View v =
-        look.implicit_meshes ? look.implicit_meshes->view(look.id) : ImplicitMeshes::View{};
+        look.implicit_meshes ? look.implicit_meshes->drawn(look.id) : ImplicitMeshes::View{};
     if (v.mesh && !v.mesh->triangles.empty()) {
         SurfaceDraw sd;
         sd.id = look.id;
