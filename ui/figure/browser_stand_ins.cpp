@@ -32,13 +32,6 @@ std::string check_video_settings(const VideoSettings&) {
     return no_ffmpeg;
 }
 
-bool video_format_of(const std::string& path, VideoFormat& format) {
-    const std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : "";
-    if (ext != ".gif" && ext != ".mp4") return false;
-    format = ext == ".gif" ? VideoFormat::gif : VideoFormat::mp4;
-    return true;
-}
-
 std::unique_ptr<VideoEncoder> VideoEncoder::create(const VideoSettings&, std::string& error) {
     error = no_ffmpeg;
     return nullptr;

@@ -2,8 +2,6 @@
 // use, ui/figure/video_codec.hpp), the file written here, atomically.
 #include "ui/figure/video_encoder.hpp"
 
-#include <algorithm>
-#include <cctype>
 #include <dlfcn.h>
 #include <mutex>
 
@@ -63,19 +61,6 @@ std::string check_video_settings(const VideoSettings& s) {
                std::to_string(max_fps) +
                (s.format == VideoFormat::gif ? " (a GIF counts delays in 1/100 s)" : "");
     return "";
-}
-
-bool video_format_of(const std::string& path, VideoFormat& format) {
-    std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : "";
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (ext == ".gif")
-        format = VideoFormat::gif;
-    else if (ext == ".mp4")
-        format = VideoFormat::mp4;
-    else
-        return false;
-    return true;
 }
 
 std::unique_ptr<VideoEncoder> VideoEncoder::create(const VideoSettings& settings,
