@@ -348,6 +348,7 @@ struct UiState {
     TransformSliders sliders;
     PlaneDrag plane_drag;
     bool indicator_drag = false;
+    bool hint_waiting = false; // a canvas hint waits for the pointer to rest (canvas_hint.hpp)
     KnotDrag knot_drag;
     TrimDrawing trim_drawing;
     bool smooth_loops = false; // drawn loops are smooth: Surface > Trim, or C while drawing

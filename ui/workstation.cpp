@@ -353,6 +353,7 @@ void Workstation::frame(unsigned target_framebuffer) {
     // De Boor's animation steps on a clock; frames keep coming while it plays.
     if (deboor_tick(ctx_, ImGui::GetTime()) && request_frame_) request_frame_();
     ui.implicit.dragging = false; // set again by the implicit panel while a slider is held
+    ui.hint_waiting = false;      // set again by a canvas whose hint waits (canvas_hint.hpp)
 
     // The teaching view the pointer was over last frame (T stages it).
     ui.stage.hovered = ui.stage.hovered_next;
@@ -389,6 +390,7 @@ void Workstation::frame(unsigned target_framebuffer) {
     }
     draw_detach_question(ctx_); // a drag in the 3D view alone asks too
     ImGui::Render();
+    if (ui.hint_waiting && request_frame_) request_frame_(); // until the hint shows
     gesture_.active = gesture_frame();
     const bool view3d_drawn = ui.view_rect.w > 0;
     if (!view3d_drawn) ui.view_rect = last_view; // its last size, for fit_view's aspect

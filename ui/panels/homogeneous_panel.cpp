@@ -15,6 +15,7 @@
 #include "core/geom/knots.hpp"
 #include "core/geom/rational_picture.hpp"
 #include "core/geom/status.hpp"
+#include "ui/panels/canvas_hint.hpp"
 #include "ui/panels/curve_designer.hpp"
 #include "ui/panels/flow.hpp"
 #include "ui/panels/panels.hpp"
@@ -287,7 +288,7 @@ void draw_homogeneous_panel(AppContext& ctx) {
     }
     if (!staged && ImGui::IsItemHovered() && ImGui::GetIO().MouseWheel != 0)
         hs.zoom = std::clamp(hs.zoom * std::pow(1.15, ImGui::GetIO().MouseWheel), 0.2, 20.0);
-    if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
+    if (!ImGui::IsItemActive() && canvas_hint_due(ctx.ui))
         ImGui::SetTooltip("Drag to turn the picture, wheel to zoom");
     draw_lifted(ctx, *l, h, box, cv);
     if (h.lifted_at_t) {

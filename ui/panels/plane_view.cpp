@@ -13,6 +13,7 @@
 #include "core/doc/commands.hpp"
 #include "core/doc/commands_curve.hpp"
 #include "core/doc/placement.hpp"
+#include "ui/panels/canvas_hint.hpp"
 #include "ui/panels/panels.hpp"
 #include "ui/panels/picture_draw.hpp"
 #include "ui/panels/plane_canvas.hpp"
@@ -127,7 +128,7 @@ void plane_drag(AppContext& ctx, const PlaneFrame& f, int drag_id, const glm::dv
         pd.plane = -1;
         ctx.seal();
     }
-    if (ImGui::IsItemHovered() && pd.plane != drag_id)
+    if (pd.plane != drag_id && canvas_hint_due(ctx.ui))
         ImGui::SetTooltip("Drag a point to move it in %s; wheel: zoom, right-drag: pan, F: fit",
                           f.ax.name);
 }

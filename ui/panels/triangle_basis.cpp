@@ -8,6 +8,7 @@
 
 #include "core/geom/binomial.hpp"
 #include "core/geom/status.hpp"
+#include "ui/panels/canvas_hint.hpp"
 #include "ui/panels/heat_color.hpp"
 #include "ui/panels/picture_draw.hpp"
 #include "ui/panels/triangle_panels.hpp"
@@ -285,7 +286,7 @@ void draw_triangle_basis(AppContext& ctx, const doc::Object& obj, const geom::Tr
         peak = h.peak;
         low = h.low;
         colour_bar(dl, pic, {box.x + box.w + 4 * k, B.y, bar_w, A.y - B.y}, h, k);
-        if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
+        if (!ImGui::IsItemActive() && canvas_hint_due(ctx.ui))
             ImGui::SetTooltip("%s over the domain triangle; press or drag to move the indicator",
                               function_name(t, sel.i, sel.j).c_str());
     }
