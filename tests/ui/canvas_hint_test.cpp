@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include "tests/ui/hand_driven_imgui.hpp"
 #include "ui/panels/canvas_hint.hpp"
 
 using namespace isoparm::ui;
@@ -13,15 +14,7 @@ namespace {
 
 class CanvasHint : public ::testing::Test {
 protected:
-    void SetUp() override {
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        io.DisplaySize = ImVec2(800, 600);
-        unsigned char* pixels = nullptr;
-        int w = 0, h = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-    }
+    void SetUp() override { isoparm::test::create_hand_driven_imgui(); }
     void TearDown() override { ImGui::DestroyContext(); }
 
     // One frame of `dt` seconds with the pointer at (x, y) over two canvases side by side

@@ -10,6 +10,7 @@
 
 #include <imgui.h>
 
+#include "tests/ui/hand_driven_imgui.hpp"
 #include "ui/input_queue.hpp"
 
 using namespace isoparm::ui;
@@ -68,14 +69,8 @@ std::vector<InputEvent> typed_entry() {
 class ImGuiFrames : public ::testing::Test {
 protected:
     void SetUp() override {
-        ImGui::CreateContext();
+        isoparm::test::create_hand_driven_imgui();
         ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        io.DisplaySize = ImVec2(800, 600);
-        io.DeltaTime = 1.0f / 60;
-        unsigned char* pixels = nullptr;
-        int w = 0, h = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
         io.KeyMap[ImGuiKey_A] = key_a;
         io.KeyMap[ImGuiKey_Enter] = key_enter;
         io.KeyMap[ImGuiKey_Backspace] = key_backspace;
