@@ -166,11 +166,10 @@ void mesh_state(AppContext& ctx, const doc::Object& obj, const doc::ImplicitObje
     }
     // The 3D view's own grid when it draws the surface coarser (implicit_screen_level.hpp).
     const ImplicitMeshes::View drawn = ctx.implicit_meshes->drawn(obj.id);
-    if (v.mesh && drawn.mesh) {
-        report_fact("implicit/cell", v.cell);
-        report_fact("implicit/drawn_cell", drawn.cell);
-    }
-    if (drawn.mesh && v.mesh && drawn.cell > v.cell && v.error.empty()) {
+    if (!v.mesh || !drawn.mesh) return;
+    report_fact("implicit/cell", v.cell);
+    report_fact("implicit/drawn_cell", drawn.cell);
+    if (drawn.cell > v.cell && v.error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
         text_wrapped("The 3D view draws it with cell %g (%zu triangles): cell %g is under %g "
                      "pixels there.",

@@ -16,6 +16,12 @@ namespace {
 // Grids up to this many cells polygonize on the UI thread (a few milliseconds).
 constexpr double synchronous_cells = 48.0 * 48.0 * 48.0;
 
+// Whether two keys are of the same surface (expression, parameters, bounds), whatever their cells.
+bool same_surface(ImplicitKey a, const ImplicitKey& b) {
+    a.cell = b.cell;
+    return a == b;
+}
+
 double grid_cells(const ImplicitKey& k) {
     const glm::dvec3 e = k.hi - k.lo;
     return std::ceil(e.x / k.cell) * std::ceil(e.y / k.cell) * std::ceil(e.z / k.cell);
@@ -74,7 +80,7 @@ void ImplicitMeshes::update_gesture_mesh(Entry& e, const doc::ImplicitObject& im
     // It stays until the object changes (a new one costs the frame that makes it): made in the
     // first gesture frame, twice as coarse as the view's mesh then when that is coarser still.
     if (e.gesture_key && e.gesture_key->cell >= least &&
-        implicit_key(im, e.gesture_key->cell) == *e.gesture_key)
+        same_surface(implicit_key(im, least), *e.gesture_key))
         return;
     const double cell = std::max(least, std::ldexp(im.cell, e.level + 1));
     const ImplicitKey key = implicit_key(im, cell);
@@ -196,25 +202,14 @@ ImplicitMeshes::View ImplicitMeshes::drawn(std::uint64_t id) const {
     const ImplicitKey& key = e.level == 0 ? e.own_key : e.screen_key;
     // While the level's mesh is made: the other one if it shows the object as it is (at
     // another cell), else whichever there is, older.
-    const auto same_shape = [&](const Slot& s) {
-        if (!s.shown) return false;
-        ImplicitKey k = key;
-        k.cell = s.shown->cell;
-        return k == *s.shown;
-    };
     const bool wanted_current = wanted.shown && *wanted.shown == key;
-    const Slot& chosen = !wanted_current && (same_shape(other) || !wanted.shown) ? other : wanted;
+    const bool other_same = other.shown && same_surface(key, *other.shown);
+    const Slot& chosen = !wanted_current && (other_same || !wanted.shown) ? other : wanted;
     View v = slot_view(chosen);
     // A gesture frame shows the coarse mesh when there is one, coarser than the mesh chosen
     // above and of the same object as it.
-    const auto same_object = [&] {
-        if (!chosen.shown) return false;
-        ImplicitKey k = *e.gesture_key;
-        k.cell = chosen.shown->cell;
-        return k == *chosen.shown;
-    };
     if (gesture_ && e.gesture_revision != 0 && e.gesture_key && e.gesture_key->cell > v.cell &&
-        same_object()) {
+        chosen.shown && same_surface(*e.gesture_key, *chosen.shown)) {
         v.mesh = &e.gesture_mesh;
         v.cell = e.gesture_key->cell;
         v.revision = e.gesture_revision;
