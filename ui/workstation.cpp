@@ -185,7 +185,7 @@ Workstation::Workstation(const WorkstationOptions& options) {
     ctx_.doc = doc::default_document();
     ctx_.history.mark_clean();
     renderer_ = std::make_unique<Renderer>(options.msaa_samples);
-    software_ = software_renderer();
+    software_ = options.cpu_rasteriser.value_or(software_renderer());
     ctx_.renderer = renderer_.get();
     implicit_ = std::make_unique<ImplicitMeshes>();
     triangles_ = std::make_unique<TriangleMeshes>();
@@ -452,15 +452,16 @@ void Workstation::draw_frame(unsigned target_framebuffer, bool view3d_drawn, boo
 }
 
 // A frame of a gesture: on a CPU rasteriser, while the mouse drags (in any panel: a point, the
-// indicator, an orbit) or the wheel zooms. The frame after it is asked for, so the picture is
-// drawn in full as soon as the mouse stops, even while the button is still held.
+// indicator, an orbit) or the wheel zooms, and for GestureFrames::settle_seconds after either
+// stops; frames are asked for until then, so the picture is drawn in full as soon as the mouse
+// rests, even while the button is still held, and at once on the release.
 bool Workstation::gesture_frame() {
     if (ctx_.ui.headless && !gesture_.forced) return false;
     if (!software_ || !gesture_.coarse) return false;
     const ImGuiIO& io = ImGui::GetIO();
-    const bool moved = io.MouseDelta.x != 0 || io.MouseDelta.y != 0;
     const bool gesture =
-        gesture_.forced || (ImGui::IsAnyMouseDown() && moved) || io.MouseWheel != 0;
+        gesture_.step(ImGui::GetTime(), ImGui::IsAnyMouseDown(),
+                      io.MouseDelta.x != 0 || io.MouseDelta.y != 0, io.MouseWheel != 0);
     if (gesture && request_frame_) request_frame_();
     return gesture;
 }
@@ -513,7 +514,7 @@ void Workstation::render_view3d(float scale) {
     triangles_->update(ctx_.doc, ctx_.doc.view.display.density);
     BuiltScene scene = build_scene(ctx_.doc, style, implicit_.get(), triangles_.get());
     implicit_->end_gesture_frame();
-    surfaces_->update(scene.surfaces, ui.analysis.kind);
+    surfaces_->update(scene.surfaces, ui.analysis.kind, gesture_.active);
     SceneView view;
     view.camera = ui.camera;
     view.width = ui.view_fb_width;

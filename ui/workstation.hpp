@@ -7,9 +7,11 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "ui/app_context.hpp"
+#include "ui/gesture_frames.hpp"
 
 struct ImGuiContext;
 
@@ -36,18 +38,9 @@ struct WorkstationOptions {
     // for a CPU rasteriser's window, where each panel's triangles cost their set-up and fill
     // every frame. Off for pictures (nothing to keep) and with `transparent`.
     bool retained = false;
-};
-
-// Gesture frames on a CPU rasteriser (llvmpipe): while the mouse drags (a point, the indicator,
-// an orbit) or the wheel turns, the implicit objects are drawn from meshes of a coarse grid
-// (2.5 cells or more: a sixth of the triangles; a software rasteriser's orbit of the implicit
-// gallery is bound by triangles, not pixels); every still frame, and the one after the release, is
-// drawn in full. Headless renders are never gestures. (Half-resolution gesture frames were measured
-// and dropped: llvmpipe's scaled blit cost more than the fill they saved.)
-struct GestureFrames {
-    bool coarse = true;  // draw gestures coarse (off: every frame in full, as before)
-    bool forced = false; // a gesture without the mouse (the frame benchmark's drags)
-    bool active = false; // the last frame was drawn coarse
+    // Whether a CPU rasteriser draws (GestureFrames); unset: asked of GL_RENDERER, which a
+    // browser masks (the page asks WebGL's renderer info instead).
+    std::optional<bool> cpu_rasteriser = std::nullopt;
 };
 
 class Workstation {

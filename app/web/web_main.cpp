@@ -175,9 +175,16 @@ int main() {
     glfwMakeContextCurrent(a.window);
     // The settings the last visit kept in local storage (web_pre.js put them in place).
     ui::Settings settings = ui::load_settings(ui::settings_path());
-    a.workstation = std::make_unique<ui::Workstation>(
-        ui::WorkstationOptions{/*headless=*/false, 1.0f, ui::ViewMode::workstation,
-                               web::software_webgl() ? 0 : 4, app::request_frame});
+    const bool software = web::software_webgl() != 0;
+    ui::WorkstationOptions options{/*headless=*/false, 1.0f, ui::ViewMode::workstation,
+                                   software ? 0 : 4, app::request_frame};
+    // As the desktop window on a CPU rasteriser: drags drawn coarse, the frame kept between
+    // frames and drawn again only where it changed. ?gestures=full draws every frame in full
+    // (the browser test's paired figure).
+    const bool lighter = software && web::parameter("gestures") != "full";
+    options.cpu_rasteriser = lighter;
+    options.retained = lighter;
+    a.workstation = std::make_unique<ui::Workstation>(options);
     ui::AppContext& ctx = a.workstation->context();
     ctx.settings = settings;
     ImGui_ImplGlfw_InitForOpenGL(a.window, false);

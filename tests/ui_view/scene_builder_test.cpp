@@ -30,6 +30,18 @@ TEST(Sampling, DensityPerSpanWithinTheBudget) {
     EXPECT_EQ(display_samples(small, 0), (std::pair<int, int>{5, 5})); // at least 2 per span
 }
 
+TEST(Sampling, GestureFramesTakeAtMostEightSamplesASpanAndTheirOwnBudget) {
+    const geom::Surface small = doc::make_planar_grid(5, 5, 3, 3, geom::SplineType::nurbs);
+    EXPECT_EQ(gesture_samples(small, 32), (std::pair<int, int>{17, 17}));
+    EXPECT_EQ(gesture_samples(small, 4), display_samples(small, 4)); // never finer than still
+    const geom::Surface big = doc::make_planar_grid(64, 64, 3, 3, geom::SplineType::nurbs);
+    const auto [su, sv] = gesture_samples(big, 32);
+    EXPECT_LE(static_cast<long>(su) * sv, max_gesture_vertices);
+    EXPECT_GE(static_cast<long>(su) * sv, max_gesture_vertices * 9 / 10);
+    EXPECT_LT(static_cast<long>(su) * sv,
+              static_cast<long>(display_samples(big, 32).first) * display_samples(big, 32).second);
+}
+
 TEST(MeshData, SameSurfaceSeesEveryChange) {
     const geom::Surface a = doc::make_planar_grid(4, 4, 2, 2, geom::SplineType::nurbs);
     geom::Surface b = a;

@@ -10,6 +10,7 @@
 #include "core/geom/trim/trimmed_tessellator.hpp"
 #include "ui/view/mesh_data.hpp"
 #include "ui/view/surface_meshes.hpp"
+#include "ui/view/tessellation_sampling.hpp"
 
 using namespace isoparm;
 using namespace isoparm::ui;
@@ -92,6 +93,43 @@ TEST(SurfaceMeshes, AnAnalysisKindRemakesWholeAndAnUndrawnSurfaceIsDropped) {
     draws = draw_of(s);
     EXPECT_EQ(meshes.update(draws, AnalysisKind::off), 1);
     EXPECT_FALSE(draws[0].display->partial);
+}
+
+TEST(SurfaceMeshes, AGestureDrawsTheCoarseGridAndTheStillFrameTheFullOneAgain) {
+    geom::Surface s = bicubic(8); // 5 spans a side
+    SurfaceMeshes meshes;
+    std::vector<SurfaceDraw> draws = draw_of(s);
+    draws[0].density = 32;
+    meshes.update(draws, AnalysisKind::off);
+    const auto full = display_samples(s, 32);
+    EXPECT_EQ(draws[0].display->mesh.samples_u(), full.first);
+    // A drag on a CPU rasteriser: the coarse grid, remade whole (its triangles too).
+    s.points[static_cast<std::size_t>(4 * 8 + 4)].z += 0.5;
+    std::vector<SurfaceDraw> gesture = draw_of(s);
+    gesture[0].density = 32;
+    EXPECT_EQ(meshes.update(gesture, AnalysisKind::off, /*gesture=*/true), 1);
+    const SurfaceMesh* m = gesture[0].display;
+    EXPECT_EQ(m->mesh.samples_u(), 5 * gesture_density + 1);
+    EXPECT_EQ(m->mesh.samples_v(), 5 * gesture_density + 1);
+    EXPECT_FALSE(m->partial);
+    EXPECT_EQ(m->mesh.mesh().triangles.size(), 2u * (5 * gesture_density) * (5 * gesture_density));
+    // The next gesture frame moves rows of the coarse grid only.
+    s.points[static_cast<std::size_t>(4 * 8 + 4)].z += 0.5;
+    gesture = draw_of(s);
+    gesture[0].density = 32;
+    EXPECT_EQ(meshes.update(gesture, AnalysisKind::off, true), 1);
+    EXPECT_TRUE(gesture[0].display->partial);
+    // Released: the full grid again, the same vertices a fresh mesh has.
+    draws = draw_of(s);
+    draws[0].density = 32;
+    EXPECT_EQ(meshes.update(draws, AnalysisKind::off), 1);
+    EXPECT_FALSE(draws[0].display->partial);
+    SurfaceMeshes fresh;
+    std::vector<SurfaceDraw> again = draw_of(s);
+    again[0].density = 32;
+    fresh.update(again, AnalysisKind::off);
+    EXPECT_EQ(draws[0].display->vertices, again[0].display->vertices);
+    EXPECT_EQ(draws[0].display->wire_pairs, again[0].display->wire_pairs);
 }
 
 namespace {

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <glm/gtc/type_ptr.hpp>
+#include <string>
 
 #include "ui/render/gl.hpp"
 #include "ui/render/gl_program.hpp"
@@ -23,7 +24,6 @@ namespace {
 
 // The mesh program's analysis uniforms (shaders.cpp, mesh_fs).
 void set_analysis_uniforms(const GlProgram& p, const AnalysisView& a) {
-    glUniform1i(p.uniform("u_analysis"), static_cast<int>(a.kind));
     glUniform2f(p.uniform("u_range"), a.lo, a.hi);
     glUniform1i(p.uniform("u_diverging"), a.diverging ? 1 : 0);
     glUniform1f(p.uniform("u_stripes"), static_cast<float>(a.stripes));
@@ -126,17 +126,39 @@ struct LastPicture {
     }
 };
 
+// The mesh programs, one per analysis kind with the kind a constant (shaders.cpp, mesh_fs):
+// llvmpipe runs both sides of a branch on a uniform under a mask, so one program for all the
+// kinds shaded each fragment through the curvature maps, the zebra's asin and the isophotes'
+// acos as well (a third of fig. 3b's shaded pass on one core).
+struct MeshPrograms {
+    static constexpr std::size_t kinds = static_cast<std::size_t>(AnalysisKind::isophote) + 1;
+    std::array<GlProgram, kinds> by_kind;
+    std::array<bool, kinds> compiled{};
+    // Compiled on first use: most sessions never leave `off`.
+    const GlProgram& get(AnalysisKind kind) {
+        const auto k = static_cast<std::size_t>(kind);
+        if (!compiled[k]) {
+            const std::string fs =
+                "#define ISOPARM_ANALYSIS " + std::to_string(k) + "\n" + shaders::mesh_fs;
+            by_kind[k] = GlProgram(shaders::mesh_vs, fs.c_str());
+            compiled[k] = true;
+        }
+        return by_kind[k];
+    }
+};
+
 struct Renderer::Impl {
     RenderTarget target;
     LastPicture last;
-    GlProgram mesh, line, point;
+    MeshPrograms mesh_programs;
+    GlProgram line, point;
     std::unordered_map<std::uint64_t, MeshEntry> meshes;
     StreamBuffer stream;
     bool one_pass_overlay = true; // Renderer::set_one_pass_overlay
 
     explicit Impl(int samples)
-        : target(samples), mesh(shaders::mesh_vs, shaders::mesh_fs),
-          line(shaders::line_vs, shaders::line_fs), point(shaders::point_vs, shaders::point_fs) {
+        : target(samples), line(shaders::line_vs, shaders::line_fs),
+          point(shaders::point_vs, shaders::point_fs) {
         stream.create();
     }
     ~Impl() {
@@ -276,7 +298,9 @@ bool software_renderer() {
 }
 
 Renderer::Renderer(int msaa_samples) : impl_(std::make_unique<Impl>(msaa_samples)) {
-    for (const GlProgram* p : {&impl_->mesh, &impl_->line, &impl_->point})
+    const GlProgram* programs[] = {&impl_->mesh_programs.get(AnalysisKind::off), &impl_->line,
+                                   &impl_->point};
+    for (const GlProgram* p : programs)
         if (!p->ok()) error_ += p->error();
 }
 
@@ -299,6 +323,7 @@ unsigned Renderer::texture() const {
 void Renderer::Impl::draw_shaded(const SceneView& view, const std::vector<SurfaceDraw>& surfaces,
                                  const std::vector<MeshEntry*>& entries, const glm::mat4& vp,
                                  const glm::mat4& vmat, double aspect) {
+    const GlProgram& mesh = mesh_programs.get(view.analysis.kind);
     glUseProgram(mesh.id());
     glUniformMatrix4fv(mesh.uniform("u_view_proj"), 1, GL_FALSE, glm::value_ptr(vp));
     glUniformMatrix4fv(mesh.uniform("u_view"), 1, GL_FALSE, glm::value_ptr(vmat));
@@ -311,6 +336,12 @@ void Renderer::Impl::draw_shaded(const SceneView& view, const std::vector<Surfac
         if (!surfaces[k].shaded) continue;
         const glm::vec4& c = surfaces[k].fill;
         glUniform4f(mesh.uniform("u_color"), c.r, c.g, c.b, c.a);
+        // An opaque surface replaces what is under it: blending would only read the colour
+        // buffer back for every fragment (with alpha 1 the blend gives the source's bits).
+        if (c.a >= 1.0f)
+            glDisable(GL_BLEND);
+        else
+            glEnable(GL_BLEND);
         // Counter-clockwise is OpenGL's front face (never changed here).
         const HiddenFaces hidden = hidden_faces(surfaces[k], eye, near_reach);
         if (hidden == HiddenFaces::none) {
@@ -324,6 +355,7 @@ void Renderer::Impl::draw_shaded(const SceneView& view, const std::vector<Surfac
     }
     glDisable(GL_CULL_FACE);
     glDisable(GL_POLYGON_OFFSET_FILL);
+    glEnable(GL_BLEND);
 }
 
 // Pass 2: wireframes.
@@ -494,6 +526,7 @@ void Renderer::render(const SceneView& view, const std::vector<SurfaceDraw>& sur
     // Keep destination alpha at 1 so the texture stays opaque inside ImGui.
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
 
+    if (const GlProgram& p = im.mesh_programs.get(view.analysis.kind); !p.ok()) error_ = p.error();
     im.draw_shaded(view, surfaces, entries, vp, vmat, aspect);
     im.draw_wires(surfaces, entries, vp, viewport);
     const bool one_pass = im.begin_one_pass_overlay();

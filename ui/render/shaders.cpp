@@ -27,7 +27,9 @@ in vec3 v_eye_pos;
 in vec3 v_eye_normal;
 in float v_scalar;
 uniform vec4 u_color;
-uniform int u_analysis;   // 0 off; 1 K, 2 H, 3 k_max, 4 k_min; 5 zebra; 6 isophotes
+// 0 off; 1 to 4 a curvature (K, H, k_max, k_min); 5 zebra; 6 isophotes. A constant, one program
+// per kind (renderer.cpp), so that only its own branch is compiled.
+const int analysis = ISOPARM_ANALYSIS;
 uniform vec2 u_range;     // the colour bar's [low, high]
 uniform int u_diverging;  // 1: blue - white - red about zero
 uniform float u_stripes;
@@ -56,7 +58,7 @@ void main() {
     float spec = pow(max(dot(n, normalize(key + view_dir)), 0.0), 48.0) * 0.32;
     vec3 base = u_color.rgb;
     float light = 0.24 + diffuse;
-    if (u_analysis >= 1 && u_analysis <= 4) {
+    if (analysis >= 1 && analysis <= 4) {
         if (abs(v_scalar) > 1e20) {
             // Undefined (a pole, a zero denominator): hatched, never a made-up colour.
             float h = mod(floor((gl_FragCoord.x + gl_FragCoord.y) / 6.0), 2.0);
@@ -70,7 +72,7 @@ void main() {
         }
         light = 0.55 + 0.5 * diffuse; // the colour carries the value: lighting only hints shape
         spec *= 0.3;
-    } else if (u_analysis == 5) {
+    } else if (analysis == 5) {
         // Zebra: stripes of the reflected view direction (a striped environment), so a
         // curvature jump kinks them and a tangent jump breaks them.
         vec3 r = reflect(-view_dir, n);
@@ -78,7 +80,7 @@ void main() {
         base = vec3(s < 0.5 ? 0.06 : 0.94);
         light = 1.0;
         spec = 0.0;
-    } else if (u_analysis == 6) {
+    } else if (analysis == 6) {
         // Isophotes: curves of equal angle between the normal and the key light.
         float a = acos(clamp(dot(n, key), -1.0, 1.0)) / 3.14159265 * u_stripes;
         base = fract(a) < 0.5 ? base : base * 0.35;

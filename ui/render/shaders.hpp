@@ -6,6 +6,7 @@ namespace isoparm::ui::shaders {
 
 // Surfaces: Blinn-Phong with two lights fixed to the camera, lit on both sides.
 extern const char* const mesh_vs;
+// mesh_fs needs ISOPARM_ANALYSIS defined first (the analysis kind, see mesh_fs).
 extern const char* const mesh_fs;
 // Lines: each segment widened to a screen-space quad (neither core profile nor WebGL has
 // wide lines), clipped at the near plane first; drawn instanced, one segment an instance, four

@@ -19,7 +19,7 @@ constexpr int wire_lines_per_direction = 24;
 
 } // namespace
 
-int SurfaceMeshes::update(std::vector<SurfaceDraw>& surfaces, AnalysisKind analysis) {
+int SurfaceMeshes::update(std::vector<SurfaceDraw>& surfaces, AnalysisKind analysis, bool gesture) {
     int changed = 0;
     for (SurfaceDraw& d : surfaces) {
         if (!d.surface || d.mesh) continue;
@@ -27,7 +27,7 @@ int SurfaceMeshes::update(std::vector<SurfaceDraw>& surfaces, AnalysisKind analy
         e.used = true;
         const bool updated = d.trim && !d.trim->empty()
                                  ? update_trimmed(e.mesh, *d.surface, *d.trim, d.density, analysis)
-                                 : update_one(e.mesh, *d.surface, d.density, analysis);
+                                 : update_one(e.mesh, *d.surface, d.density, gesture, analysis);
         if (updated) ++changed;
         d.display = &e.mesh;
         d.mesh_revision = e.mesh.revision;
@@ -163,7 +163,7 @@ bool SurfaceMeshes::update_trimmed(SurfaceMesh& m, const geom::Surface& s, const
     return true;
 }
 
-bool SurfaceMeshes::update_one(SurfaceMesh& m, const geom::Surface& s, int density,
+bool SurfaceMeshes::update_one(SurfaceMesh& m, const geom::Surface& s, int density, bool gesture,
                                AnalysisKind analysis) {
     if (m.trimmed) { // trimmed before: start the incremental mesh afresh
         m.trimmed.reset();
@@ -175,8 +175,8 @@ bool SurfaceMeshes::update_one(SurfaceMesh& m, const geom::Surface& s, int densi
     const bool rescalar = want != m.scalar_kind;
     m.scalar_kind = want;
     const auto t0 = std::chrono::steady_clock::now();
-    const auto [su, sv] = display_samples(s, density);
-    const bool resampled = m.density != density;
+    const auto [su, sv] = gesture ? gesture_samples(s, density) : display_samples(s, density);
+    const bool resampled = m.mesh.samples_u() != su || m.mesh.samples_v() != sv;
     m.density = density;
     const MeshChange change = m.mesh.update(s, su, sv);
     if (!change.any && !rescalar) return false;

@@ -51,11 +51,13 @@ class SurfaceMeshes {
 public:
     // Brings the mesh of every surface in `surfaces` (those with SurfaceDraw::surface) up to
     // date under the analysis kind, sets its SurfaceDraw::display and mesh_revision, and drops
-    // the meshes of surfaces not drawn. Returns how many changed.
-    int update(std::vector<SurfaceDraw>& surfaces, AnalysisKind analysis);
+    // the meshes of surfaces not drawn. Returns how many changed. `gesture`: a gesture frame on
+    // a CPU rasteriser, whose untrimmed surfaces are sampled coarser (gesture_samples).
+    int update(std::vector<SurfaceDraw>& surfaces, AnalysisKind analysis, bool gesture = false);
 
 private:
-    bool update_one(SurfaceMesh& m, const geom::Surface& s, int density, AnalysisKind analysis);
+    bool update_one(SurfaceMesh& m, const geom::Surface& s, int density, bool gesture,
+                    AnalysisKind analysis);
     bool update_trimmed(SurfaceMesh& m, const geom::Surface& s, const geom::Trim& trim, int density,
                         AnalysisKind analysis);
     struct Entry {
