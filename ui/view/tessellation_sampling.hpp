@@ -38,11 +38,11 @@ inline std::pair<int, int> display_samples(const geom::Surface& s, int density,
     return {std::max(static_cast<int>(su), 2), std::max(static_cast<int>(sv), 2)};
 }
 
-// Gesture frames on a CPU rasteriser (ui/workstation.hpp, GestureFrames): while the mouse drags,
+// Gesture frames on a CPU rasteriser (ui/gesture_frames.hpp): while the mouse drags,
 // a surface is drawn from at most 8 samples a span and 64 x 64 vertices. llvmpipe's cost there
 // is its fill, and a fine grid's triangles of a few dozen pixels each are shaded in 4 x 4 blocks
 // two or three times over along their edges: fig. 3b's hill at 1440 x 900 costs 13 ms of one
-// core at 64 x 64 quads and about 6 at 16 x 16. Eight samples a span still bend a cubic span
+// core at 64 x 64 quads and about 7 at 16 x 16. Eight samples a span still bend a cubic span
 // smoothly under per-vertex normals; the still frame after the release is drawn in full.
 constexpr int gesture_density = 8;
 constexpr long max_gesture_vertices = 64L * 64L;

@@ -5,8 +5,9 @@
 // Process CPU time per frame (llvmpipe rasterises on worker threads), glFinish'ed; each
 // frame's own times too, as the median and 95th percentile a drag's stutter shows in.
 // coarse:0 draws every gesture frame in full (as before gesture frames existed), coarse:1 the
-// way the window draws a drag or orbit on a CPU rasteriser (ui/workstation.hpp, GestureFrames:
-// the implicit objects from their coarse grid's meshes): before and after in one run.
+// way the window draws a drag or orbit on a CPU rasteriser (ui/gesture_frames.hpp: the implicit
+// objects from their coarse grid's meshes, the surfaces from at most 8 samples a span): before
+// and after in one run.
 // ISOPARM_BENCH_FRAME_DIR=<dir> writes each case's last frame there as a PNG, to look at.
 #include <benchmark/benchmark.h>
 
