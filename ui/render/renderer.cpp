@@ -126,24 +126,30 @@ struct LastPicture {
     }
 };
 
-// The mesh programs, one per analysis kind with the kind a constant (shaders.cpp, mesh_fs):
+// The mesh programs, one per kind of analysis with the kind a constant (shaders.cpp, mesh_fs):
 // llvmpipe runs both sides of a branch on a uniform under a mask, so one program for all the
 // kinds shaded each fragment through the curvature maps, the zebra's asin and the isophotes'
 // acos as well (a third of fig. 3b's shaded pass on one core).
 struct MeshPrograms {
-    static constexpr std::size_t kinds = static_cast<std::size_t>(AnalysisKind::isophote) + 1;
-    std::array<GlProgram, kinds> by_kind;
-    std::array<bool, kinds> compiled{};
-    // Compiled on first use: most sessions never leave `off`.
-    const GlProgram& get(AnalysisKind kind) {
-        const auto k = static_cast<std::size_t>(kind);
-        if (!compiled[k]) {
-            const std::string fs =
-                "#define ISOPARM_ANALYSIS " + std::to_string(k) + "\n" + shaders::mesh_fs;
-            by_kind[k] = GlProgram(shaders::mesh_vs, fs.c_str());
-            compiled[k] = true;
+    // off, the curvature kinds (one code: the scalar attribute carries which), zebra, isophotes
+    std::array<GlProgram, 4> by_class;
+    // All made with the renderer: compiled on first use instead, three GUI scenarios
+    // (blossom_tab, stage_curve, labels_blossom) crashed LeakSanitizer's check at exit under
+    // llvmpipe every time (not understood; compiling at start costs no measurable time in
+    // `isoparm render`).
+    MeshPrograms() {
+        const AnalysisKind first[] = {AnalysisKind::off, AnalysisKind::gaussian,
+                                      AnalysisKind::zebra, AnalysisKind::isophote};
+        for (std::size_t c = 0; c < by_class.size(); ++c) {
+            const std::string fs = "#define ISOPARM_ANALYSIS " +
+                                   std::to_string(static_cast<int>(first[c])) + "\n" +
+                                   shaders::mesh_fs;
+            by_class[c] = GlProgram(shaders::mesh_vs, fs.c_str());
         }
-        return by_kind[k];
+    }
+    const GlProgram& get(AnalysisKind kind) const {
+        if (is_curvature(kind)) return by_class[1];
+        return by_class[kind == AnalysisKind::zebra ? 2 : kind == AnalysisKind::isophote ? 3 : 0];
     }
 };
 
@@ -298,9 +304,9 @@ bool software_renderer() {
 }
 
 Renderer::Renderer(int msaa_samples) : impl_(std::make_unique<Impl>(msaa_samples)) {
-    const GlProgram* programs[] = {&impl_->mesh_programs.get(AnalysisKind::off), &impl_->line,
-                                   &impl_->point};
-    for (const GlProgram* p : programs)
+    for (const GlProgram& p : impl_->mesh_programs.by_class)
+        if (!p.ok()) error_ += p.error();
+    for (const GlProgram* p : {&impl_->line, &impl_->point})
         if (!p->ok()) error_ += p->error();
 }
 
@@ -526,7 +532,6 @@ void Renderer::render(const SceneView& view, const std::vector<SurfaceDraw>& sur
     // Keep destination alpha at 1 so the texture stays opaque inside ImGui.
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
 
-    if (const GlProgram& p = im.mesh_programs.get(view.analysis.kind); !p.ok()) error_ = p.error();
     im.draw_shaded(view, surfaces, entries, vp, vmat, aspect);
     im.draw_wires(surfaces, entries, vp, viewport);
     const bool one_pass = im.begin_one_pass_overlay();
