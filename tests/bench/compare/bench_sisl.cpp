@@ -10,6 +10,8 @@
 // ISOPARM_SIMD does not matter here: each path is chosen explicitly (GridTessellator::
 // use_kernel); it does choose the path of the agreement check at the end.
 #include <benchmark/benchmark.h>
+
+#include <cstdlib>
 #include <glm/geometric.hpp>
 #include <sisl.h>
 
@@ -452,6 +454,28 @@ void BM_PeakDivide(benchmark::State& state) {
         benchmark::Counter(static_cast<double>(divisions), benchmark::Counter::kIsRate);
 }
 
+// One core's store bandwidth into a buffer of a grid's positions (grid x grid x 3 doubles), the
+// memory roof of the positions kernel: points/s is bytes/s over the 25 bytes a point costs it
+// (24 of position, 1 of status). Argument: store width in doubles.
+void BM_PeakStore(benchmark::State& state) {
+    const int width = static_cast<int>(state.range(0));
+    if (!isoparm::bench::peak_fma_supported(width))
+        return state.SkipWithError("this CPU lacks the instructions of this width");
+    const std::size_t doubles = static_cast<std::size_t>(grid) * grid * 3;
+    auto* buffer = static_cast<double*>(std::aligned_alloc(64, doubles * sizeof(double)));
+    std::uint64_t bytes = 0;
+    for (auto _ : state) {
+        bytes += isoparm::bench::peak_store_kernel(width, buffer, doubles, 1);
+        benchmark::DoNotOptimize(buffer);
+        benchmark::ClobberMemory();
+    }
+    std::free(buffer);
+    state.counters["bytes/s"] =
+        benchmark::Counter(static_cast<double>(bytes), benchmark::Counter::kIsRate);
+    state.counters["points/s"] =
+        benchmark::Counter(static_cast<double>(bytes) / 25.0, benchmark::Counter::kIsRate);
+}
+
 constexpr kernel::Path paths[] = {kernel::Path::baseline, kernel::Path::avx2, kernel::Path::avx512};
 
 std::string grid_name(const std::string& kind, int n, kernel::Path path, int threads) {
@@ -465,6 +489,7 @@ void register_grid_benchmarks() {
     for (int width : {4, 8})
         for (int with_sqrt : {0, 1})
             benchmark::RegisterBenchmark("BM_PeakDivide", BM_PeakDivide)->Args({width, with_sqrt});
+    for (int width : {4, 8}) benchmark::RegisterBenchmark("BM_PeakStore", BM_PeakStore)->Arg(width);
     for (auto fn : {BM_GridPositions_isoparm, BM_GridNormals_isoparm}) {
         const char* name =
             fn == BM_GridPositions_isoparm ? "BM_GridPositions_isoparm" : "BM_GridNormals_isoparm";
