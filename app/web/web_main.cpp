@@ -181,7 +181,8 @@ int main() {
     // As the desktop window on a CPU rasteriser: drags drawn coarse, the frame kept between
     // frames and drawn again only where it changed. ?gestures=full draws every frame in full
     // (the browser test's paired figure).
-    const bool lighter = software && web::parameter("gestures") != "full";
+    const std::string gestures = web::parameter("gestures");
+    const bool lighter = software && gestures != "full";
     options.cpu_rasteriser = lighter;
     options.retained = lighter;
     a.workstation = std::make_unique<ui::Workstation>(options);
@@ -210,6 +211,8 @@ int main() {
         else
             ctx.ui.status = "?stage=" + st + " is not a teaching view: " + ui::stage_view_names();
     }
+    if (!gestures.empty() && gestures != "full")
+        ctx.ui.status = "?gestures=" + gestures + " is not known: full draws every frame in full";
     if (web::parameter("layout") == "four" && ctx.ui.stage.view == ui::StageView::none)
         ctx.ui.stage.four_views = true;
     // Work a closed tab or a crash left: the recovery folder came back from IndexedDB.

@@ -27,8 +27,8 @@ in vec3 v_eye_pos;
 in vec3 v_eye_normal;
 in float v_scalar;
 uniform vec4 u_color;
-// 0 off; 1 to 4 a curvature (K, H, k_max, k_min); 5 zebra; 6 isophotes. A constant, one program
-// per kind (renderer.cpp), so that only its own branch is compiled.
+// 0 off; 1 to 4 a curvature (K, H, k_max, k_min); 5 zebra; 6 isophotes. A constant: one program
+// each for off, the curvatures, zebra and isophotes (renderer.cpp), only its own branch compiled.
 const int analysis = ISOPARM_ANALYSIS;
 uniform vec2 u_range;     // the colour bar's [low, high]
 uniform int u_diverging;  // 1: blue - white - red about zero

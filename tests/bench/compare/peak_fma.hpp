@@ -22,8 +22,8 @@ std::uint64_t peak_fma_kernel(int width, std::uint64_t rounds, double* sink);
 // divisions were done.
 std::uint64_t peak_divide_kernel(int width, bool with_sqrt, std::uint64_t rounds, double* sink);
 
-// Writes `doubles` doubles (a multiple of 8, `to` 64-byte aligned) with aligned `width`-double
-// stores, `rounds` times over; returns the bytes written.
+// Writes the first `doubles` doubles of `to` (64-byte aligned), rounded down to a multiple of 16,
+// with aligned `width`-double stores, `rounds` times over; returns the bytes written.
 std::uint64_t peak_store_kernel(int width, double* to, std::uint64_t doubles, std::uint64_t rounds);
 
 } // namespace isoparm::bench
